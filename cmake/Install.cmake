@@ -1,0 +1,19 @@
+include(CMakePackageConfigHelpers)
+install(TARGETS granpipe_core EXPORT granpipeTargets
+        LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+        INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(TARGETS granpipe RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(DIRECTORY core/include/granpipe DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
+        FILES_MATCHING PATTERN "*.hpp")
+install(FILES ${PROJECT_BINARY_DIR}/core/include/granpipe/version.hpp
+        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/granpipe)
+set(config_dir ${CMAKE_INSTALL_LIBDIR}/cmake/granpipe)
+install(EXPORT granpipeTargets NAMESPACE granpipe:: DESTINATION ${config_dir})
+configure_package_config_file(cmake/granpipeConfig.cmake.in
+  ${PROJECT_BINARY_DIR}/granpipeConfig.cmake INSTALL_DESTINATION ${config_dir})
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/granpipeConfigVersion.cmake
+  COMPATIBILITY SameMinorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/granpipeConfig.cmake
+              ${PROJECT_BINARY_DIR}/granpipeConfigVersion.cmake
+              cmake/GranpipePlugin.cmake
+        DESTINATION ${config_dir})

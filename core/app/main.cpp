@@ -1,0 +1,102 @@
+// The granpipe executable. Exit codes: 0 ok, 2 bad input, 1 internal error.
+#include <CLI/CLI.hpp>
+#include <cstring>
+#include <iostream>
+
+#include "commands.hpp"
+#include "granpipe/log.hpp"
+#include "granpipe/pipeline.hpp"
+#include "granpipe/plugin_loader.hpp"
+
+namespace {
+constexpr int kOk = 0, kInternal = 1, kBadInput = 2;
+
+bool is_subcommand(const char* arg) {
+  for (const char* s : {"run", "plugins", "describe", "validate", "inspect"})
+    if (std::strcmp(arg, s) == 0) return true;
+  return false;
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace granpipe;
+  // `granpipe PIPELINE.json ...` is short for `granpipe run PIPELINE.json ...`.
+  std::vector<char*> args(argv, argv + argc);
+  static char run_word[] = "run";
+  if (argc > 1 && argv[1][0] != '-' && !is_subcommand(argv[1])) args.insert(args.begin() + 1, run_word);
+
+  CLI::App app{"granpipe: simulate and analyse granular packings"};
+  app.set_version_flag("--version", std::string("granpipe ") + version() + " (" + git_commit() + ")");
+  app.require_subcommand(1);
+
+  auto* run = app.add_subcommand("run", "run a pipeline (the default: granpipe PIPELINE.json)");
+  std::string pipeline_file;
+  std::vector<std::string> sets;
+  std::string out_dir;
+  int threads = 0;
+  bool overwrite = false, quiet = false;
+  run->add_option("pipeline", pipeline_file, "pipeline JSON file")->required();
+  run->add_option("--set", sets, "override a value: json.path=value (repeatable)");
+  run->add_option("--out", out_dir, "output directory (default: the pipeline's output.dir)");
+  run->add_option("--threads", threads, "threads (default: all cores)")->check(CLI::PositiveNumber);
+  run->add_flag("--overwrite", overwrite, "replace an existing granpipe output directory");
+  run->add_flag("--quiet", quiet, "no progress or log on stderr");
+
+  auto* validate = app.add_subcommand("validate", "check a pipeline without running it");
+  validate->add_option("pipeline", pipeline_file, "pipeline JSON file")->required();
+  validate->add_option("--set", sets, "override a value: json.path=value (repeatable)");
+
+  auto* plugins = app.add_subcommand("plugins", "list the plugins found");
+  auto* describe = app.add_subcommand("describe", "print a plugin's parameters");
+  std::string plugin_name;
+  describe->add_option("plugin", plugin_name, "plugin name")->required();
+
+  auto* inspect = app.add_subcommand("inspect", "summarise a frames file (H5MD)");
+  std::string h5_file;
+  long rows = 20;
+  inspect->add_option("file", h5_file, "H5MD file")->required();
+  inspect->add_option("--rows", rows, "frames to list");
+
+  try {
+    app.parse(static_cast<int>(args.size()), args.data());
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? kOk : kBadInput;
+  }
+
+  try {
+    if (*inspect) {
+      app::inspect(h5_file, rows);
+      return kOk;
+    }
+    Registry registry;
+    load_plugins(registry, plugin_search_path());
+    Log log;
+    if (*plugins) {
+      app::list_plugins(registry);
+    } else if (*describe) {
+      app::describe(registry, plugin_name);
+    } else if (*validate) {
+      const Pipeline p = Pipeline::load(pipeline_file, sets, registry);
+      p.check(log);
+      std::cout << pipeline_file << ": valid, " << p.points() << " point(s)\n";
+    } else if (*run) {
+      const Pipeline p = Pipeline::load(pipeline_file, sets, registry);
+      p.check(log);
+      RunOptions options;
+      if (!out_dir.empty()) options.out = out_dir;
+      options.threads = threads;
+      options.overwrite = overwrite;
+      options.progress = !quiet;
+      log.set_quiet(quiet);
+      p.run(options, log);
+    }
+    return kOk;
+  } catch (const InputError& e) {
+    std::cerr << "granpipe: " << e.what() << "\n";
+    return kBadInput;
+  } catch (const std::exception& e) {
+    std::cerr << "granpipe: internal error: " << e.what() << "\n";
+    return kInternal;
+  }
+}

@@ -1,0 +1,49 @@
+#pragma once
+#include <Eigen/Core>
+#include <array>
+#include <cstdint>
+#include <string>
+
+namespace granpipe {
+
+// What lies at one side of the box along one axis.
+enum class Boundary : std::uint8_t { Wall, Periodic, Open };
+
+enum class ContainerShape : std::uint8_t { Box, Cylinder };
+
+// Walls are numbered so that contacts and support labels can name them.
+enum class Wall : std::uint8_t { XLow = 0, XHigh, YLow, YHigh, ZLow, ZHigh, CylinderSide, Count };
+
+const char* to_string(Boundary b);
+const char* to_string(ContainerShape s);
+const char* to_string(Wall w);
+
+// The vessel the particles are in, at one frame. Gravity points along -axis (dim-1):
+// -y in 2D, -z in 3D, so the flat base is the low wall of that axis.
+struct Container {
+  ContainerShape shape = ContainerShape::Box;
+  // Box extents per axis (only the first dim entries are meaningful).
+  Eigen::Vector3d lo = Eigen::Vector3d::Zero();
+  Eigen::Vector3d hi = Eigen::Vector3d::Ones();
+  // boundary[axis][0] is the low side, [1] the high side.
+  std::array<std::array<Boundary, 2>, 3> boundary{{{Boundary::Wall, Boundary::Wall},
+                                                    {Boundary::Wall, Boundary::Wall},
+                                                    {Boundary::Wall, Boundary::Wall}}};
+  // Vertical cylinder (3D only): axis along z through (center_x, center_y).
+  double cylinder_radius = 0.0;
+  Eigen::Vector2d cylinder_center = Eigen::Vector2d::Zero();
+  // Moving walls (a vibrated base and cylinder) are displaced together by this offset
+  // from their rest geometry above, and move with this velocity, at this frame.
+  Eigen::Vector3d wall_offset = Eigen::Vector3d::Zero();
+  Eigen::Vector3d wall_velocity = Eigen::Vector3d::Zero();
+
+  bool periodic(int axis) const { return boundary[axis][0] == Boundary::Periodic; }
+  double length(int axis) const { return hi[axis] - lo[axis]; }
+
+  // A fully periodic box of the given extents.
+  static Container periodic_box(int dim, const Eigen::Vector3d& lo, const Eigen::Vector3d& hi);
+  // A box with solid walls on every side but an open top.
+  static Container open_top_box(int dim, const Eigen::Vector3d& lo, const Eigen::Vector3d& hi);
+};
+
+}  // namespace granpipe

@@ -1,0 +1,66 @@
+#pragma once
+// frames.h5: frames as H5MD 1.1 plus granpipe's documented extensions
+// (docs/file-format.md). The writer appends and flushes frame by frame in SWMR mode,
+// so a run killed mid-way leaves every completed frame readable.
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "granpipe/frame.hpp"
+
+namespace granpipe {
+
+struct FrameFileInfo {
+  std::string path;
+  std::string group = "all";      // H5MD particles group read
+  long frames = 0;
+  long particles = 0;
+  int dim = 0;
+  bool complete = true;           // false: the writer never closed it (killed or crashed)
+  bool granpipe_file = false;     // written by granpipe (has the extension groups)
+  bool has_velocity = false, has_angular_velocity = false, has_contacts = false,
+       has_supports = false, has_radius = false;
+  std::string creator;            // /h5md/creator name and version
+};
+
+class FrameWriter {
+ public:
+  // Creates `path` (which must not exist). `provenance_json` is stored as an attribute.
+  FrameWriter(const std::filesystem::path& path, const std::string& provenance_json);
+  ~FrameWriter();
+  FrameWriter(const FrameWriter&) = delete;
+  FrameWriter& operator=(const FrameWriter&) = delete;
+
+  // Appends one frame and flushes it to disk. Every frame must have the same N and dim
+  // and carry the same optional arrays as the first.
+  void append(const Frame& frame);
+  // Marks the file complete and closes it. Without close() the file stays marked
+  // incomplete (its frames still read back).
+  void close();
+  long frames() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+class FrameReader {
+ public:
+  // Opens any H5MD file; `group` picks /particles/<group> (empty: the only group, or "all").
+  // `default_radius` is used when the file has no radius (other tools' files).
+  explicit FrameReader(const std::filesystem::path& path, const std::string& group = "",
+                       double default_radius = 0.5);
+  ~FrameReader();
+  FrameReader(const FrameReader&) = delete;
+  FrameReader& operator=(const FrameReader&) = delete;
+
+  const FrameFileInfo& info() const;
+  long frames() const { return info().frames; }
+  Frame read(long index) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace granpipe

@@ -1,0 +1,139 @@
+#pragma once
+// The plugin contract: what a source and an analyzer are, and how a plugin library
+// registers them. Include this (and nothing outside granpipe/) to write a plugin.
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "granpipe/errors.hpp"
+#include "granpipe/frame.hpp"
+#include "granpipe/frame_cache.hpp"
+#include "granpipe/log.hpp"
+#include "granpipe/params.hpp"
+#include "granpipe/progress.hpp"
+#include "granpipe/random.hpp"
+#include "granpipe/results.hpp"
+#include "granpipe/version.hpp"
+
+namespace granpipe {
+
+// What a source's frames carry. dim 0 means "either".
+struct FrameContent {
+  int dim = 0;
+  bool velocities = false;
+  bool contacts = false;
+  bool supports = false;
+};
+
+// Everything a plugin instance gets when it is made: its validated parameters, its own
+// seeds, the thread budget, the log, progress, and the run's output directory.
+struct PluginContext {
+  const Params& params;
+  Seeds seeds;
+  int threads = 1;
+  Log& log;
+  Progress& progress;
+  std::filesystem::path output_dir;  // empty when the run writes nothing
+};
+
+// Produces frames until done. Long sources advance ctx.progress by the units they
+// declared in work(); otherwise the runner advances it by one per frame.
+class Source {
+ public:
+  virtual ~Source() = default;
+  virtual FrameContent content() const = 0;
+  // Fills `frame` with the next configuration; false when there are no more.
+  virtual bool next(Frame& frame) = 0;
+  // Total work for the progress bar, in units the source advances itself, or nothing
+  // when it yields one frame per unit of work.
+  struct Work {
+    double total = 0;
+    std::string unit = "frames";
+    bool reported_by_source = false;
+  };
+  virtual Work work() const { return {}; }
+  // Source-level results (e.g. run statistics); called once after the last frame.
+  virtual void finish(Results&) {}
+};
+
+// Measures frames. Reads each frame (never edits it) and reports in finish().
+// Must not keep every frame it sees unless it has to.
+class Analyzer {
+ public:
+  virtual ~Analyzer() = default;
+  // What a frame must carry for this analyzer (dim 0: either).
+  virtual FrameContent needs() const { return {}; }
+  virtual void consume(const Frame& frame, FrameCache& cache) = 0;
+  virtual void finish(Results& results) = 0;
+};
+
+enum class PluginKind : std::uint8_t { Source, Analyzer };
+const char* to_string(PluginKind k);
+
+struct PluginInfo {
+  std::string name;
+  PluginKind kind = PluginKind::Analyzer;
+  std::string summary;
+  Schema schema;
+  std::function<std::unique_ptr<Source>(const PluginContext&)> make_source;
+  std::function<std::unique_ptr<Analyzer>(const PluginContext&)> make_analyzer;
+  std::string library;  // file it was loaded from; set by the loader
+};
+
+// Holds every known plugin. Built-in and external plugins register the same way.
+class Registry {
+ public:
+  template <class S>
+  void add_source(std::string name, std::string summary, Schema schema) {
+    add({std::move(name), PluginKind::Source, std::move(summary), std::move(schema),
+         [](const PluginContext& c) -> std::unique_ptr<Source> { return std::make_unique<S>(c); },
+         nullptr, ""});
+  }
+  template <class A>
+  void add_analyzer(std::string name, std::string summary, Schema schema) {
+    add({std::move(name), PluginKind::Analyzer, std::move(summary), std::move(schema), nullptr,
+         [](const PluginContext& c) -> std::unique_ptr<Analyzer> { return std::make_unique<A>(c); },
+         ""});
+  }
+  void add(PluginInfo info);
+
+  const PluginInfo* find(const std::string& name) const;
+  const std::vector<PluginInfo>& plugins() const { return plugins_; }
+  // Libraries the loader refused (wrong ABI, missing entry point), with the reason.
+  struct Refusal {
+    std::string library, reason;
+  };
+  const std::vector<Refusal>& refused() const { return refused_; }
+  void refuse(std::string library, std::string reason);
+
+  // Library being loaded, recorded on every plugin it registers.
+  void set_current_library(std::string lib) { current_library_ = std::move(lib); }
+
+ private:
+  std::vector<PluginInfo> plugins_;
+  std::vector<Refusal> refused_;
+  std::string current_library_;
+};
+
+}  // namespace granpipe
+
+// The one exported symbol of a plugin library: a plain descriptor the loader reads
+// (ABI version first) before it calls anything in the library.
+extern "C" struct granpipe_plugin_entry {
+  std::uint32_t abi_version;
+  const char* core_version;
+  void (*register_plugins)(granpipe::Registry&);
+};
+
+// Use once per plugin library:
+//   GRANPIPE_PLUGIN(registry) { registry.add_analyzer<MyAnalyzer>("my", "...", schema()); }
+#define GRANPIPE_PLUGIN(registry)                                                  \
+  static void granpipe_register_plugins(granpipe::Registry& registry);             \
+  extern "C" __attribute__((visibility("default"))) const granpipe_plugin_entry   \
+      granpipe_plugin = {GRANPIPE_ABI_VERSION, GRANPIPE_VERSION,                   \
+                         &granpipe_register_plugins};                              \
+  static void granpipe_register_plugins(granpipe::Registry& registry)

@@ -1,0 +1,31 @@
+#pragma once
+#include <atomic>
+#include <chrono>
+#include <mutex>
+#include <string>
+
+namespace granpipe {
+
+// Progress of a run on stderr: a bar with rate and ETA on a terminal, plain lines
+// every `line_interval` otherwise (logs, CI). Thread-safe; sweep points share one.
+class Progress {
+ public:
+  Progress() = default;
+  void start(std::string label, double total, std::string unit);
+  void advance(double units = 1.0);
+  void finish();
+  void set_enabled(bool on) { enabled_ = on; }
+  double done() const { return done_.load(); }
+
+ private:
+  void print(bool final_line);
+  std::string label_, unit_;
+  double total_ = 0;
+  std::atomic<double> done_{0.0};
+  bool enabled_ = true;
+  bool terminal_ = false;
+  std::chrono::steady_clock::time_point start_, last_print_;
+  std::mutex mutex_;
+};
+
+}  // namespace granpipe

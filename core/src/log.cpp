@@ -1,0 +1,22 @@
+#include "granpipe/log.hpp"
+
+#include <iostream>
+
+namespace granpipe {
+
+void Log::open_file(const std::string& path) {
+  std::lock_guard lock(mutex_);
+  file_.open(path, std::ios::app);
+}
+
+void Log::info(const std::string& message) { write(message); }
+
+void Log::warn(const std::string& message) { write("warning: " + message); }
+
+void Log::write(const std::string& line) {
+  std::lock_guard lock(mutex_);
+  if (!quiet_) std::cerr << line << '\n';
+  if (file_.is_open()) file_ << line << '\n' << std::flush;
+}
+
+}  // namespace granpipe

@@ -1,0 +1,152 @@
+#include "param_validation.hpp"
+
+#include <cmath>
+
+#include "did_you_mean.hpp"
+#include "granpipe/errors.hpp"
+
+namespace granpipe {
+
+JsonLocation JsonLocation::child(const std::string& key) const {
+  return {file, path.empty() ? key : path + "." + key};
+}
+
+JsonLocation JsonLocation::index(std::size_t i) const {
+  return {file, path + "[" + std::to_string(i) + "]"};
+}
+
+std::string json_brief(const nlohmann::json& v) {
+  std::string s = v.dump();
+  if (s.size() > 60) s = s.substr(0, 57) + "...";
+  return s;
+}
+
+nlohmann::json to_json(const ParamValue& v) {
+  return std::visit([](const auto& x) { return nlohmann::json(x); }, v);
+}
+
+namespace {
+
+[[noreturn]] void fail(const JsonLocation& at, const ParamSpec& spec, const nlohmann::json& got) {
+  throw InputError(at.str() + ": expected " + describe_expected(spec) + ", got " + json_brief(got));
+}
+
+bool in_range(const ParamSpec& s, double x) {
+  if (s.min && (s.min_exclusive ? !(x > *s.min) : !(x >= *s.min))) return false;
+  if (s.max && (s.max_exclusive ? !(x < *s.max) : !(x <= *s.max))) return false;
+  return true;
+}
+
+// JSON numbers that are whole (5 or 5.0) are integers; 5.5 and 1e30 are not.
+bool as_integer(const nlohmann::json& v, std::int64_t& out) {
+  if (v.is_number_integer()) {
+    out = v.get<std::int64_t>();
+    return true;
+  }
+  if (v.is_number_float()) {
+    const double d = v.get<double>();
+    if (std::isfinite(d) && std::floor(d) == d && std::fabs(d) < 9.0e15) {
+      out = static_cast<std::int64_t>(d);
+      return true;
+    }
+  }
+  return false;
+}
+
+ParamValue convert(const nlohmann::json& v, const ParamSpec& s, const JsonLocation& at,
+                   const std::filesystem::path& base_dir) {
+  switch (s.type) {
+    case ParamType::Bool:
+      if (!v.is_boolean()) fail(at, s, v);
+      return v.get<bool>();
+    case ParamType::Int: {
+      std::int64_t k;
+      if (!as_integer(v, k) || !in_range(s, static_cast<double>(k))) fail(at, s, v);
+      return k;
+    }
+    case ParamType::Real: {
+      if (!v.is_number() || !std::isfinite(v.get<double>()) || !in_range(s, v.get<double>()))
+        fail(at, s, v);
+      return v.get<double>();
+    }
+    case ParamType::String:
+      if (!v.is_string()) fail(at, s, v);
+      return v.get<std::string>();
+    case ParamType::Choice: {
+      if (!v.is_string()) fail(at, s, v);
+      const auto x = v.get<std::string>();
+      for (const auto& c : s.choices)
+        if (c == x) return x;
+      throw InputError(at.str() + ": expected " + describe_expected(s) + ", got " + json_brief(v) +
+                       did_you_mean(x, s.choices));
+    }
+    case ParamType::Path: {
+      if (!v.is_string() || v.get<std::string>().empty()) fail(at, s, v);
+      std::filesystem::path p = v.get<std::string>();
+      if (p.is_relative() && !std::filesystem::exists(p) && std::filesystem::exists(base_dir / p))
+        p = base_dir / p;
+      if (!std::filesystem::is_regular_file(p)) {
+        throw InputError(at.str() + ": expected an existing file, got " + json_brief(v) +
+                         " (no such file)");
+      }
+      return p.string();
+    }
+    case ParamType::IntList:
+    case ParamType::RealList: {
+      if (!v.is_array() || (s.list_length && v.size() != *s.list_length)) fail(at, s, v);
+      std::vector<std::int64_t> ints;
+      std::vector<double> reals;
+      for (const auto& e : v) {
+        std::int64_t k;
+        if (s.type == ParamType::IntList) {
+          if (!as_integer(e, k) || !in_range(s, static_cast<double>(k))) fail(at, s, v);
+          ints.push_back(k);
+        } else {
+          if (!e.is_number() || !std::isfinite(e.get<double>()) || !in_range(s, e.get<double>()))
+            fail(at, s, v);
+          reals.push_back(e.get<double>());
+        }
+      }
+      if (s.type == ParamType::IntList) return ints;
+      return reals;
+    }
+  }
+  throw InternalError("unknown parameter type");
+}
+
+}  // namespace
+
+Params validate_params(nlohmann::json& object, const Schema& schema, const JsonLocation& where,
+                       const std::filesystem::path& base_dir) {
+  if (object.is_null()) object = nlohmann::json::object();
+  if (!object.is_object()) {
+    throw InputError(where.str() + ": expected an object of parameters, got " + json_brief(object));
+  }
+  std::vector<std::string> known;
+  for (const auto& s : schema.specs()) known.push_back(s.name);
+  for (const auto& [key, value] : object.items()) {
+    if (!schema.find(key)) {
+      throw InputError(where.child(key).str() + ": unknown parameter" + did_you_mean(key, known) +
+                       "; known: " + (known.empty() ? std::string("none") : [&] {
+                         std::string k;
+                         for (const auto& n : known) k += (k.empty() ? "" : ", ") + n;
+                         return k;
+                       }()));
+    }
+  }
+  std::map<std::string, ParamValue> values;
+  for (const auto& s : schema.specs()) {
+    const JsonLocation at = where.child(s.name);
+    if (object.contains(s.name)) {
+      values[s.name] = convert(object[s.name], s, at, base_dir);
+    } else if (s.default_value) {
+      values[s.name] = *s.default_value;
+    } else {
+      throw InputError(at.str() + ": expected " + describe_expected(s) + ", got nothing (required)");
+    }
+    object[s.name] = to_json(values[s.name]);
+  }
+  return Params(std::move(values));
+}
+
+}  // namespace granpipe

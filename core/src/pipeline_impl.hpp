@@ -1,0 +1,40 @@
+#pragma once
+// What a validated pipeline holds; shared by its parsing and its running.
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "granpipe/pipeline.hpp"
+
+namespace granpipe {
+
+struct PointSpec {
+  nlohmann::json assignment;  // {"source.params.A": 1.1, ...}; empty without sweep
+  nlohmann::json resolved;    // the whole pipeline of this point, defaults filled in
+  Params source_params;
+  std::vector<Params> analyzer_params;
+};
+
+struct AnalyzerSpec {
+  const PluginInfo* info = nullptr;
+  std::string name;  // unique within the pipeline
+  std::string where; // "file: analyzers[k]"
+};
+
+struct Pipeline::Impl {
+  std::string origin;  // file name, for messages
+  std::filesystem::path base_dir;
+  std::string name, description;
+  std::uint64_t seed = 1;
+  const PluginInfo* source = nullptr;
+  std::vector<AnalyzerSpec> analyzers;
+  std::filesystem::path output_dir;
+  bool save_frames = true;
+  std::int64_t frame_stride = 1;
+  std::vector<std::string> sweep_paths;
+  std::vector<PointSpec> points;
+  nlohmann::json resolved;  // as run: point 0's values plus the sweep
+};
+
+}  // namespace granpipe

@@ -1,0 +1,258 @@
+// Running a validated pipeline: output directory, plugins per sweep point, frames to
+// frames.h5, results to results.h5, points in parallel.
+#include <algorithm>
+#include <chrono>
+#include <ctime>
+#include <exception>
+#include <fstream>
+#include <mutex>
+#include <thread>
+
+#include "granpipe/frame_store.hpp"
+#include "output_directory.hpp"
+#include "pipeline_impl.hpp"
+
+namespace granpipe {
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+namespace {
+
+struct PointPlugins {
+  std::unique_ptr<Source> source;
+  std::vector<std::unique_ptr<Analyzer>> analyzers;
+};
+
+std::string describe_needs(const FrameContent& need, const FrameContent& have) {
+  if (need.dim && have.dim && need.dim != have.dim)
+    return std::to_string(need.dim) + "D frames, but the source gives " + std::to_string(have.dim) + "D";
+  if (need.contacts && !have.contacts) return "contacts, which the source does not provide";
+  if (need.velocities && !have.velocities) return "velocities, which the source does not provide";
+  if (need.supports && !have.supports) return "support labels, which the source does not provide";
+  return "";
+}
+
+PointPlugins make_plugins(const Pipeline::Impl& p, std::size_t k, int threads, Log& log,
+                          Progress& progress, const fs::path& out) {
+  const PointSpec& point = p.points[k];
+  const Seeds seeds = Seeds(p.seed).derive("point", k);
+  PointPlugins made;
+  made.source = p.source->make_source(
+      {point.source_params, seeds.derive("source:" + p.source->name), threads, log, progress, out});
+  const FrameContent have = made.source->content();
+  for (std::size_t a = 0; a < p.analyzers.size(); ++a) {
+    const AnalyzerSpec& spec = p.analyzers[a];
+    made.analyzers.push_back(spec.info->make_analyzer({point.analyzer_params[a],
+                                                       seeds.derive("analyzer:" + spec.name),
+                                                       threads, log, progress, out}));
+    const std::string missing = describe_needs(made.analyzers.back()->needs(), have);
+    if (!missing.empty()) {
+      throw InputError(spec.where + ": analyzer \"" + spec.info->name + "\" needs " + missing +
+                       " (source \"" + p.source->name + "\")");
+    }
+  }
+  return made;
+}
+
+std::string frames_file(const Pipeline::Impl& p, std::size_t k) {
+  if (p.points.size() == 1) return "frames.h5";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "frames/point_%03zu.h5", k);
+  return buf;
+}
+
+std::string point_prefix(const Pipeline::Impl& p, std::size_t k) {
+  if (p.points.size() == 1) return "";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "point_%03zu/", k);
+  return buf;
+}
+
+struct PointOutcome {
+  ResultSet results;
+  long frames = 0;
+};
+
+PointOutcome run_point(const Pipeline::Impl& p, std::size_t k, int threads, Log& log,
+                       Progress& progress, const fs::path& out) {
+  PointPlugins plugins = make_plugins(p, k, threads, log, progress, out);
+  const bool source_reports = plugins.source->work().reported_by_source;
+
+  std::unique_ptr<FrameWriter> writer;
+  fs::path partial, final_path;
+  if (p.save_frames) {
+    final_path = out / frames_file(p, k);
+    fs::create_directories(final_path.parent_path());
+    // A run that stops early leaves frames.partial.h5 (marked incomplete), never a
+    // frames.h5 that looks finished.
+    partial = final_path;
+    partial.replace_extension(".partial.h5");
+    json provenance = {{"pipeline", p.points[k].resolved},
+                       {"granpipe_version", version()},
+                       {"git_commit", git_commit()},
+                       {"seed", p.seed},
+                       {"sweep_point", k},
+                       {"sweep_assignment", p.points[k].assignment}};
+    writer = std::make_unique<FrameWriter>(partial, provenance.dump());
+  }
+
+  PointOutcome outcome;
+  Frame frame;
+  FrameCache cache;
+  const std::string where = p.origin + ": source \"" + p.source->name + "\"";
+  while (plugins.source->next(frame)) {
+    frame.check(where + " frame " + std::to_string(outcome.frames));
+    if (writer && outcome.frames % p.frame_stride == 0) writer->append(frame);
+    cache.clear();
+    for (auto& a : plugins.analyzers) a->consume(frame, cache);
+    ++outcome.frames;
+    if (!source_reports) progress.advance(1);
+  }
+
+  const std::string prefix = point_prefix(p, k);
+  Results source_results;
+  plugins.source->finish(source_results);
+  if (!source_results.empty()) outcome.results[prefix + "source"] = std::move(source_results);
+  for (std::size_t a = 0; a < plugins.analyzers.size(); ++a) {
+    Results r;
+    plugins.analyzers[a]->finish(r);
+    outcome.results[prefix + p.analyzers[a].name] = std::move(r);
+  }
+  if (writer) {
+    writer->close();
+    fs::rename(partial, final_path);
+  }
+  return outcome;
+}
+
+// One row per sweep point: the swept values, then every scalar of every producer.
+Results sweep_summary(const Pipeline::Impl& p, const ResultSet& all) {
+  std::vector<std::string> cols{"point"};
+  std::vector<std::string> swept;
+  for (const auto& path : p.sweep_paths) {
+    cols.push_back(path);
+    swept.push_back(path);
+  }
+  std::vector<std::pair<std::string, std::string>> scalars;  // producer, scalar
+  const std::string first = point_prefix(p, 0);
+  for (const auto& [group, results] : all) {
+    if (group.rfind(first, 0) != 0) continue;
+    const std::string producer = group.substr(first.size());
+    for (const auto& [name, s] : results.scalars()) {
+      scalars.emplace_back(producer, name);
+      cols.push_back(producer + "." + name);
+      cols.push_back(producer + "." + name + "_err");
+    }
+  }
+  Table table(cols, "one row per sweep point; string-valued parameters as the index in their list");
+  for (std::size_t k = 0; k < p.points.size(); ++k) {
+    std::vector<double> row{static_cast<double>(k)};
+    for (const auto& path : swept) {
+      const json& v = p.points[k].assignment[path];
+      if (v.is_number()) {
+        row.push_back(v.get<double>());
+      } else {
+        const json& list = p.resolved["sweep"]["parameters"][path];
+        row.push_back(static_cast<double>(std::find(list.begin(), list.end(), v) - list.begin()));
+      }
+    }
+    for (const auto& [producer, name] : scalars) {
+      auto it = all.find(point_prefix(p, k) + producer);
+      const bool has = it != all.end() && it->second.scalars().count(name);
+      row.push_back(has ? it->second.scalar(name).value : std::nan(""));
+      row.push_back(has ? it->second.scalar(name).uncertainty : std::nan(""));
+    }
+    table.add_row(row);
+  }
+  Results r;
+  r.add_table("points", std::move(table));
+  return r;
+}
+
+std::string utc_now() {
+  const std::time_t t = std::time(nullptr);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&t));
+  return buf;
+}
+
+}  // namespace
+
+void Pipeline::check(Log& log) const {
+  Progress quiet;
+  quiet.set_enabled(false);
+  for (std::size_t k = 0; k < impl_->points.size(); ++k) make_plugins(*impl_, k, 1, log, quiet, {});
+}
+
+RunSummary Pipeline::run(const RunOptions& options, Log& log) const {
+  const Impl& p = *impl_;
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::string started = utc_now();
+  RunSummary summary;
+  summary.output_dir = options.out.value_or(p.output_dir);
+  prepare_output_directory(summary.output_dir, options.overwrite);
+  log.open_file((summary.output_dir / "run.log").string());
+  write_file_atomically(summary.output_dir / "pipeline.json", resolved_json() + "\n");
+
+  const int hw = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int threads = options.threads > 0 ? options.threads : hw;
+  const std::size_t workers = std::min<std::size_t>(threads, p.points.size());
+  // Points share the thread budget; a single point gets all of it.
+  const int per_point = std::max(1, threads / static_cast<int>(workers));
+  log.info("granpipe " + std::string(version()) + " (" + git_commit() + "): " + p.name + ", " +
+           std::to_string(p.points.size()) + " point(s), seed " + std::to_string(p.seed) + ", " +
+           std::to_string(threads) + " thread(s), output " + summary.output_dir.string());
+
+  Progress progress;
+  progress.set_enabled(options.progress);
+  {
+    double total = 0;
+    std::string unit = "frames";
+    Progress quiet;
+    quiet.set_enabled(false);
+    for (std::size_t k = 0; k < p.points.size(); ++k) {
+      const auto w = make_plugins(p, k, 1, log, quiet, {}).source->work();
+      total += w.total;
+      unit = w.unit;
+    }
+    progress.start(p.name, total, unit);
+  }
+
+  std::vector<PointOutcome> outcomes(p.points.size());
+  std::vector<std::exception_ptr> errors(p.points.size());
+  std::atomic<std::size_t> next{0};
+  auto worker = [&] {
+    for (std::size_t k; (k = next++) < p.points.size();) {
+      try {
+        outcomes[k] = run_point(p, k, per_point, log, progress, summary.output_dir);
+      } catch (...) {
+        errors[k] = std::current_exception();
+        next = p.points.size();  // stop handing out points after a failure
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool) t.join();
+  progress.finish();
+  for (auto& e : errors)
+    if (e) std::rethrow_exception(e);
+
+  for (auto& o : outcomes) {
+    summary.frames += o.frames;
+    for (auto& [group, r] : o.results) summary.results.emplace(group, std::move(r));
+  }
+  if (p.points.size() > 1) summary.results["sweep"] = sweep_summary(p, summary.results);
+  summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  Provenance prov{resolved_json(), version(), git_commit(), p.seed, threads, summary.seconds,
+                  started, true};
+  write_results(summary.output_dir, summary.results, prov);
+  log.info("done: " + std::to_string(summary.frames) + " frame(s) in " +
+           std::to_string(summary.seconds) + " s; results in " +
+           (summary.output_dir / "results.h5").string());
+  return summary;
+}
+
+}  // namespace granpipe

@@ -1,0 +1,116 @@
+#include "granpipe/plugin_loader.hpp"
+
+#include <dlfcn.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <sstream>
+
+#include "did_you_mean.hpp"
+
+namespace granpipe {
+namespace fs = std::filesystem;
+
+namespace {
+constexpr const char* kPrefix = "granpipe_";
+constexpr const char* kEntrySymbol = "granpipe_plugin";
+
+fs::path executable_dir() {
+  std::error_code ec;
+  fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  return ec ? fs::path() : exe.parent_path();
+}
+
+// The plugin name a library file promises, from its name granpipe_<name>.so.
+std::string promised_name(const fs::path& lib) {
+  std::string stem = lib.stem().string();
+  return stem.rfind(kPrefix, 0) == 0 ? stem.substr(std::char_traits<char>::length(kPrefix)) : stem;
+}
+
+void load_library(Registry& registry, const fs::path& file) {
+  void* handle = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (!handle) {
+    const char* err = dlerror();
+    registry.refuse(file.string(), std::string("cannot be loaded: ") + (err ? err : "unknown error"));
+    return;
+  }
+  auto* entry = static_cast<const granpipe_plugin_entry*>(dlsym(handle, kEntrySymbol));
+  if (!entry) {
+    registry.refuse(file.string(), "is not a granpipe plugin (no granpipe_plugin entry point)");
+    dlclose(handle);
+    return;
+  }
+  if (entry->abi_version != GRANPIPE_ABI_VERSION) {
+    std::ostringstream why;
+    why << "was built against granpipe " << (entry->core_version ? entry->core_version : "?")
+        << " (plugin ABI " << entry->abi_version << "), but this is granpipe " << GRANPIPE_VERSION
+        << " (plugin ABI " << GRANPIPE_ABI_VERSION << "): rebuild the plugin against this version";
+    registry.refuse(file.string(), why.str());
+    dlclose(handle);
+    return;
+  }
+  // Plugins stay loaded for the life of the process: their code backs the registry.
+  registry.set_current_library(file.string());
+  entry->register_plugins(registry);
+  registry.set_current_library("");
+}
+}  // namespace
+
+std::vector<fs::path> plugin_search_path() {
+  std::vector<fs::path> dirs;
+  if (const char* env = std::getenv("GRANPIPE_PLUGIN_PATH")) {
+    std::stringstream ss(env);
+    std::string item;
+    while (std::getline(ss, item, ':'))
+      if (!item.empty()) dirs.emplace_back(item);
+  }
+  const fs::path exe = executable_dir();
+  if (!exe.empty()) dirs.push_back((exe / GRANPIPE_PLUGIN_RELDIR).lexically_normal());
+  return dirs;
+}
+
+void load_plugins(Registry& registry, const std::vector<fs::path>& dirs) {
+  std::vector<fs::path> seen;
+  for (const auto& dir : dirs) {
+    std::error_code ec;
+    const fs::path canonical = fs::weakly_canonical(dir, ec);
+    if (std::find(seen.begin(), seen.end(), canonical) != seen.end()) continue;
+    seen.push_back(canonical);
+    if (!fs::is_directory(dir, ec)) continue;
+    std::vector<fs::path> libs;
+    for (const auto& e : fs::directory_iterator(dir, ec)) {
+      const fs::path& p = e.path();
+      if (p.extension() == ".so" && p.filename().string().rfind(kPrefix, 0) == 0) libs.push_back(p);
+    }
+    std::sort(libs.begin(), libs.end());  // a stable order: same search path, same plugins
+    for (const auto& lib : libs) load_library(registry, lib);
+  }
+}
+
+const PluginInfo& require_plugin(const Registry& registry, const std::string& name,
+                                 std::optional<PluginKind> kind, const std::string& where) {
+  const std::string wanted = kind ? std::string("a ") + to_string(*kind) + " plugin" : "a plugin";
+  if (const PluginInfo* p = registry.find(name)) {
+    if (kind && p->kind != *kind) {
+      throw InputError(where + ": expected " + wanted + ", got \"" + name +
+                       "\", which is a " + to_string(p->kind));
+    }
+    return *p;
+  }
+  for (const auto& r : registry.refused()) {
+    if (promised_name(r.library) == name) {
+      throw InputError(where + ": plugin \"" + name + "\" refused: " + r.library + " " + r.reason);
+    }
+  }
+  std::vector<std::string> names;
+  for (const auto& p : registry.plugins())
+    if (!kind || p.kind == *kind) names.push_back(p.name);
+  std::string known;
+  for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
+  throw InputError(where + ": expected " + wanted + ", got unknown \"" +
+                   name + "\"" + did_you_mean(name, names) + "; known: " +
+                   (known.empty() ? "none (is GRANPIPE_PLUGIN_PATH right?)" : known));
+}
+
+}  // namespace granpipe

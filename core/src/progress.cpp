@@ -1,0 +1,79 @@
+#include "granpipe/progress.hpp"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+
+namespace granpipe {
+namespace {
+constexpr double kTerminalInterval = 0.2;  // seconds between bar redraws
+constexpr double kLineInterval = 10.0;     // seconds between plain lines (logs, CI)
+
+std::string format_duration(double s) {
+  if (!std::isfinite(s) || s < 0) return "--:--";
+  char buf[32];
+  const long t = std::lround(s);
+  if (t >= 3600)
+    std::snprintf(buf, sizeof buf, "%ld:%02ld:%02ld", t / 3600, (t / 60) % 60, t % 60);
+  else
+    std::snprintf(buf, sizeof buf, "%02ld:%02ld", t / 60, t % 60);
+  return buf;
+}
+}  // namespace
+
+void Progress::start(std::string label, double total, std::string unit) {
+  std::lock_guard lock(mutex_);
+  label_ = std::move(label);
+  unit_ = std::move(unit);
+  total_ = total;
+  done_ = 0.0;
+  terminal_ = isatty(STDERR_FILENO) != 0;
+  start_ = last_print_ = std::chrono::steady_clock::now();
+}
+
+void Progress::advance(double units) {
+  double old = done_.load();
+  while (!done_.compare_exchange_weak(old, old + units)) {
+  }
+  if (!enabled_) return;
+  const auto now = std::chrono::steady_clock::now();
+  const double since = std::chrono::duration<double>(now - last_print_).count();
+  if (since < (terminal_ ? kTerminalInterval : kLineInterval)) return;
+  std::unique_lock lock(mutex_, std::try_to_lock);
+  if (!lock.owns_lock()) return;  // someone else is printing: skip, never wait
+  last_print_ = now;
+  print(false);
+}
+
+void Progress::finish() {
+  if (!enabled_) return;
+  std::lock_guard lock(mutex_);
+  print(true);
+}
+
+void Progress::print(bool final_line) {
+  const double elapsed =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  const double done = done_.load();
+  const double rate = elapsed > 0 ? done / elapsed : 0.0;
+  const double fraction = total_ > 0 ? std::min(1.0, done / total_) : 0.0;
+  const double eta = rate > 0 ? (total_ - done) / rate : NAN;
+  if (terminal_) {
+    constexpr int width = 30;
+    const int filled = static_cast<int>(fraction * width);
+    std::string bar(filled, '#');
+    bar.resize(width, '.');
+    std::fprintf(stderr, "\r%s [%s] %5.1f%% %.0f/%.0f %s, %.3g %s/s, ETA %s   ", label_.c_str(),
+                 bar.c_str(), 100 * fraction, done, total_, unit_.c_str(), rate, unit_.c_str(),
+                 format_duration(eta).c_str());
+    if (final_line) std::fputc('\n', stderr);
+  } else {
+    std::fprintf(stderr, "%s: %.0f/%.0f %s (%.1f%%), %.3g %s/s, elapsed %s, ETA %s\n",
+                 label_.c_str(), done, total_, unit_.c_str(), 100 * fraction, rate, unit_.c_str(),
+                 format_duration(elapsed).c_str(), final_line ? "done" : format_duration(eta).c_str());
+  }
+  std::fflush(stderr);
+}
+
+}  // namespace granpipe

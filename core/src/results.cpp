@@ -1,0 +1,103 @@
+#include "granpipe/results.hpp"
+
+#include <cmath>
+
+#include "granpipe/errors.hpp"
+
+namespace granpipe {
+
+Table::Table(std::vector<std::string> cols, std::string doc_line)
+    : columns(std::move(cols)), units(columns.size()), data(columns.size()),
+      doc(std::move(doc_line)) {}
+
+void Table::add_row(const std::vector<double>& row) {
+  if (row.size() != columns.size()) {
+    throw InternalError("table row has " + std::to_string(row.size()) + " values for " +
+                        std::to_string(columns.size()) + " columns");
+  }
+  for (std::size_t c = 0; c < row.size(); ++c) data[c].push_back(row[c]);
+}
+
+const std::vector<double>& Table::column(const std::string& name) const {
+  for (std::size_t c = 0; c < columns.size(); ++c)
+    if (columns[c] == name) return data[c];
+  throw InternalError("table has no column '" + name + "'");
+}
+
+void Results::claim(const std::string& name) {
+  if (scalars_.count(name) || tables_.count(name) || histograms_.count(name) ||
+      fits_.count(name) || plots_.count(name)) {
+    throw InternalError("result '" + name + "' reported twice");
+  }
+}
+
+void Results::add_scalar(const std::string& name, double value, double uncertainty,
+                         const std::string& unit, const std::string& doc) {
+  claim(name);
+  scalars_[name] = {value, uncertainty, unit, doc};
+}
+
+void Results::add_table(const std::string& name, Table table) {
+  claim(name);
+  for (const auto& col : table.data) {
+    if (col.size() != table.rows()) throw InternalError("table '" + name + "' is ragged");
+  }
+  table.units.resize(table.columns.size());
+  tables_[name] = std::move(table);
+}
+
+void Results::add_histogram(const std::string& name, Histogram h) {
+  claim(name);
+  if (h.edges.size() != h.values.size() + 1 || (!h.errors.empty() && h.errors.size() != h.values.size())) {
+    throw InternalError("histogram '" + name + "' needs one more edge than bins");
+  }
+  histograms_[name] = std::move(h);
+}
+
+void Results::add_fit(const std::string& name, Fit fit) {
+  claim(name);
+  fits_[name] = std::move(fit);
+}
+
+void Results::add_plot(const std::string& name, Plot plot) {
+  if (plots_.count(name)) throw InternalError("plot '" + name + "' declared twice");
+  plots_[name] = std::move(plot);
+}
+
+void Results::merge(const Results& other, const std::string& prefix) {
+  const std::string p = prefix.empty() ? "" : prefix + ".";
+  for (const auto& [k, v] : other.scalars_) {
+    claim(p + k);
+    scalars_[p + k] = v;
+  }
+  for (const auto& [k, v] : other.tables_) add_table(p + k, v);
+  for (const auto& [k, v] : other.histograms_) add_histogram(p + k, v);
+  for (const auto& [k, v] : other.fits_) add_fit(p + k, v);
+  for (auto [k, v] : other.plots_) {
+    v.table = p + v.table;
+    add_plot(p + k, v);
+  }
+}
+
+const Scalar& Results::scalar(const std::string& name) const {
+  auto it = scalars_.find(name);
+  if (it == scalars_.end()) throw InternalError("no scalar result '" + name + "'");
+  return it->second;
+}
+
+bool Results::empty() const {
+  return scalars_.empty() && tables_.empty() && histograms_.empty() && fits_.empty();
+}
+
+void RunningMean::add(double x) {
+  ++n_;
+  const double d = x - mean_;
+  mean_ += d / static_cast<double>(n_);
+  m2_ += d * (x - mean_);
+}
+
+double RunningMean::standard_error() const {
+  return n_ > 1 ? std::sqrt(variance() / static_cast<double>(n_)) : std::nan("");
+}
+
+}  // namespace granpipe
