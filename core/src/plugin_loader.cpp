@@ -94,7 +94,7 @@ const PluginInfo& require_plugin(const Registry& registry, const std::string& na
   if (const PluginInfo* p = registry.find(name)) {
     if (kind && p->kind != *kind) {
       throw InputError(where + ": expected " + wanted + ", got \"" + name +
-                       "\", which is a " + to_string(p->kind));
+                       "\", which is " + (p->kind == PluginKind::Source ? "a source" : "an analyzer"));
     }
     return *p;
   }

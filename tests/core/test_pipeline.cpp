@@ -1,0 +1,249 @@
+// Pipeline reading and running with small in-test plugins: every class of bad input
+// gives one line naming file, JSON path, expected and found; sweeps expand; runs are
+// reproducible; output directories are never overwritten silently.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "granpipe/frame_store.hpp"
+#include "granpipe/pipeline.hpp"
+
+using namespace granpipe;
+namespace fs = std::filesystem;
+
+namespace {
+
+// Emits `frames` frames of `n` random points in a unit periodic box.
+class RandomSource : public Source {
+ public:
+  explicit RandomSource(const PluginContext& c)
+      : frames_(c.params.integer("frames")), n_(c.params.integer("n")), rng_(c.seeds.stream("points")) {}
+  FrameContent content() const override { return {2, false, false, false}; }
+  bool next(Frame& f) override {
+    if (emitted_ == frames_) return false;
+    f.resize(n_, 2);
+    f.container = Container::periodic_box(2, Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones());
+    for (Eigen::Index i = 0; i < n_; ++i) {
+      f.position(i, 0) = rng_.uniform();
+      f.position(i, 1) = rng_.uniform();
+    }
+    f.radius.setConstant(0.01);
+    f.step = emitted_++;
+    return true;
+  }
+
+ private:
+  std::int64_t frames_, n_, emitted_ = 0;
+  RandomStream rng_;
+};
+
+class MeanXAnalyzer : public Analyzer {
+ public:
+  explicit MeanXAnalyzer(const PluginContext& c) : scale_(c.params.real("scale")) {}
+  void consume(const Frame& f, FrameCache&) override { mean_.add(f.position.col(0).mean() * scale_); }
+  void finish(Results& r) override { r.add_scalar("mean_x", mean_.mean(), mean_.standard_error()); }
+
+ private:
+  double scale_;
+  RunningMean mean_;
+};
+
+class NeedsSupports : public Analyzer {
+ public:
+  explicit NeedsSupports(const PluginContext&) {}
+  FrameContent needs() const override { return {2, false, false, true}; }
+  void consume(const Frame&, FrameCache&) override {}
+  void finish(Results&) override {}
+};
+
+Registry test_registry() {
+  Registry r;
+  Schema s;
+  s.integer("frames", 3, "frames to emit").min(1);
+  s.integer("n", 10, "points per frame").range(1, 1000);
+  r.add_source<RandomSource>("random", "random points", s);
+  Schema a;
+  a.real("scale", 1.0, "factor").min(0, true);
+  r.add_analyzer<MeanXAnalyzer>("meanx", "mean x", a);
+  r.add_analyzer<NeedsSupports>("needs_supports", "needs support labels", Schema{});
+  return r;
+}
+
+std::string error_of(const std::string& text, const std::vector<std::string>& sets = {}) {
+  const Registry r = test_registry();
+  try {
+    Pipeline::parse(text, "p.json", sets, r);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+const char* kGood = R"({
+  "name": "t", "seed": 5,
+  "source": {"plugin": "random", "params": {"frames": 4}},
+  "analyzers": [{"plugin": "meanx", "params": {"scale": 2.0}}]
+})";
+
+fs::path fresh_dir(const std::string& name) {
+  fs::path d = fs::temp_directory_path() / ("granpipe_test_pipeline_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(d);
+  return d;
+}
+
+}  // namespace
+
+TEST(PipelineErrors, MalformedJsonNamesLineAndColumn) {
+  const std::string e = error_of("{\n  \"name\": \"x\",\n  \"seed\": ,\n}");
+  EXPECT_EQ(e.rfind("p.json:3:11: malformed JSON:", 0), 0u) << e;
+}
+
+TEST(PipelineErrors, UnknownTopLevelKeyGetsDidYouMean) {
+  const std::string e = error_of(R"({"source": {"plugin": "random"}, "analyzer": []})");
+  EXPECT_EQ(e, "p.json: analyzer: unknown key (did you mean \"analyzers\"?); known: name, description, "
+               "seed, source, analyzers, output, sweep");
+}
+
+TEST(PipelineErrors, UnknownParameterGetsDidYouMean) {
+  const std::string e = error_of(R"({"source": {"plugin": "random", "params": {"frams": 2}}})");
+  EXPECT_EQ(e, "p.json: source.params.frams: unknown parameter (did you mean \"frames\"?); known: frames, n");
+}
+
+TEST(PipelineErrors, WrongType) {
+  const std::string e = error_of(
+      R"({"source": {"plugin": "random"}, "analyzers": [{"plugin": "meanx"}, {"plugin": "meanx", "name": "b", "params": {"scale": "five"}}]})");
+  EXPECT_EQ(e, "p.json: analyzers[1].params.scale: expected a number > 0, got \"five\"");
+}
+
+TEST(PipelineErrors, OutOfRangeAndNonInteger) {
+  EXPECT_EQ(error_of(R"({"source": {"plugin": "random", "params": {"n": 0}}})"),
+            "p.json: source.params.n: expected an integer in [1, 1000], got 0");
+  EXPECT_EQ(error_of(R"({"source": {"plugin": "random", "params": {"frames": 2.5}}})"),
+            "p.json: source.params.frames: expected an integer >= 1, got 2.5");
+}
+
+TEST(PipelineErrors, UnknownPluginAndWrongKind) {
+  EXPECT_EQ(error_of(R"({"source": {"plugin": "randon"}})"),
+            "p.json: source.plugin: expected a source plugin, got unknown \"randon\" (did you mean "
+            "\"random\"?); known: random");
+  EXPECT_EQ(error_of(R"({"source": {"plugin": "meanx"}})"),
+            "p.json: source.plugin: expected a source plugin, got \"meanx\", which is an analyzer");
+}
+
+TEST(PipelineErrors, DuplicateAnalyzerNames) {
+  EXPECT_EQ(error_of(R"({"source": {"plugin": "random"}, "analyzers": [{"plugin": "meanx"}, {"plugin": "meanx"}]})"),
+            "p.json: analyzers[1].name: expected a name not used by another analyzer, got \"meanx\" again");
+}
+
+TEST(PipelineErrors, SetOverridesAreValidatedToo) {
+  EXPECT_EQ(error_of(kGood, {"source.params.frames=-1"}),
+            "p.json: source.params.frames: expected an integer >= 1, got -1");
+  EXPECT_EQ(error_of(kGood, {"source.params.frames"}),
+            "--set source.params.frames: expected path=value, got no '='");
+}
+
+TEST(PipelineErrors, SweepValueOutOfRangeNamesThePoint) {
+  const std::string e = error_of(
+      R"({"source": {"plugin": "random"}, "sweep": {"parameters": {"source.params.n": [5, 5000]}}})");
+  EXPECT_EQ(e, "p.json: source.params.n: expected an integer in [1, 1000], got 5000 (sweep point 1: "
+               "source.params.n = 5000)");
+}
+
+TEST(PipelineErrors, AnalyzerNeedsWhatTheSourceLacks) {
+  const Registry r = test_registry();
+  const Pipeline p = Pipeline::parse(
+      R"({"source": {"plugin": "random"}, "analyzers": [{"plugin": "needs_supports"}]})", "p.json", {}, r);
+  Log log;
+  log.set_quiet(true);
+  try {
+    p.check(log);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "p.json: analyzers[0]: analyzer \"needs_supports\" needs support labels, "
+                           "which the source does not provide (source \"random\")");
+  }
+}
+
+TEST(Pipeline, DefaultsAreFilledIn) {
+  const Registry r = test_registry();
+  const Pipeline p = Pipeline::parse(R"({"source": {"plugin": "random"}})", "dir/p.json", {}, r);
+  const std::string j = p.resolved_json();
+  EXPECT_NE(j.find("\"frames\": 3"), std::string::npos) << j;
+  EXPECT_NE(j.find("\"dir\": \"out/p\""), std::string::npos) << j;
+  EXPECT_EQ(p.seed(), 1u);
+}
+
+TEST(Pipeline, SweepGridAndZip) {
+  const Registry r = test_registry();
+  const char* grid = R"({"source": {"plugin": "random"}, "analyzers": [{"plugin": "meanx"}],
+    "sweep": {"parameters": {"source.params.n": [1, 2, 3], "analyzers[0].params.scale": [1, 2]}}})";
+  EXPECT_EQ(Pipeline::parse(grid, "p.json", {}, r).points(), 6u);
+  const char* zip = R"({"source": {"plugin": "random"}, "analyzers": [{"plugin": "meanx"}],
+    "sweep": {"mode": "zip", "parameters": {"source.params.n": [1, 2], "analyzers[0].params.scale": [1, 2]}}})";
+  EXPECT_EQ(Pipeline::parse(zip, "p.json", {}, r).points(), 2u);
+}
+
+TEST(Pipeline, SameSeedSameResultsAndSweepPointsIndependentOfThreads) {
+  const Registry r = test_registry();
+  const char* text = R"({"seed": 9, "source": {"plugin": "random"}, "analyzers": [{"plugin": "meanx"}],
+    "output": {"save_frames": false}, "sweep": {"parameters": {"source.params.n": [10, 20, 30]}}})";
+  const Pipeline p = Pipeline::parse(text, "p.json", {}, r);
+  Log log;
+  log.set_quiet(true);
+  RunOptions one, two;
+  one.progress = two.progress = false;
+  one.threads = 1;
+  two.threads = 2;
+  one.out = fresh_dir("one");
+  two.out = fresh_dir("two");
+  const RunSummary a = p.run(one, log), b = p.run(two, log);
+  for (const char* k : {"point_000/meanx", "point_001/meanx", "point_002/meanx"}) {
+    EXPECT_EQ(a.results.at(k).scalar("mean_x").value, b.results.at(k).scalar("mean_x").value) << k;
+  }
+  EXPECT_NE(a.results.at("point_000/meanx").scalar("mean_x").value,
+            a.results.at("point_001/meanx").scalar("mean_x").value);
+  EXPECT_TRUE(fs::exists(*one.out / "results.h5"));
+  EXPECT_TRUE(fs::exists(*one.out / "sweep.points.csv"));
+  fs::remove_all(*one.out);
+  fs::remove_all(*two.out);
+}
+
+TEST(Pipeline, ExistingOutputDirectoryIsNeverOverwrittenSilently) {
+  const Registry r = test_registry();
+  const Pipeline p = Pipeline::parse(kGood, "p.json", {}, r);
+  Log log;
+  log.set_quiet(true);
+  RunOptions o;
+  o.progress = false;
+  o.out = fresh_dir("exists");
+  fs::create_directories(*o.out);
+  std::ofstream(*o.out / "precious.txt") << "mine";
+  EXPECT_THROW(p.run(o, log), InputError);
+  o.overwrite = true;  // still refused: not a granpipe output directory
+  EXPECT_THROW(p.run(o, log), InputError);
+  EXPECT_TRUE(fs::exists(*o.out / "precious.txt"));
+  fs::remove_all(*o.out);
+  o.overwrite = false;
+  p.run(o, log);
+  EXPECT_THROW(p.run(o, log), InputError);
+  o.overwrite = true;
+  EXPECT_NO_THROW(p.run(o, log));
+  fs::remove_all(*o.out);
+}
+
+TEST(Pipeline, SavedFramesReadBackAndCarryProvenance) {
+  const Registry r = test_registry();
+  const Pipeline p = Pipeline::parse(kGood, "p.json", {}, r);
+  Log log;
+  log.set_quiet(true);
+  RunOptions o;
+  o.progress = false;
+  o.out = fresh_dir("frames");
+  p.run(o, log);
+  FrameReader reader(*o.out / "frames.h5");
+  EXPECT_EQ(reader.frames(), 4);
+  EXPECT_TRUE(reader.info().complete);
+  EXPECT_FALSE(fs::exists(*o.out / "frames.partial.h5"));
+  fs::remove_all(*o.out);
+}

@@ -1,0 +1,57 @@
+// Seeded streams: same seed and name give the same bits; names and indices give
+// different, uncorrelated streams; uniform() has the right moments.
+#include <gtest/gtest.h>
+
+#include "granpipe/random.hpp"
+
+using namespace granpipe;
+
+TEST(Random, SameSeedSameBits) {
+  RandomStream a = Seeds(42).stream("tap", 3), b = Seeds(42).stream("tap", 3);
+  for (int k = 0; k < 1000; ++k) ASSERT_EQ(a.bits(), b.bits());
+}
+
+TEST(Random, NamesIndicesAndSeedsGiveDifferentStreams) {
+  const std::uint64_t x = Seeds(42).stream("tap", 3).bits();
+  EXPECT_NE(x, Seeds(42).stream("tap", 4).bits());
+  EXPECT_NE(x, Seeds(42).stream("tab", 3).bits());
+  EXPECT_NE(x, Seeds(43).stream("tap", 3).bits());
+  EXPECT_NE(Seeds(1).derive("point", 0).seed(), Seeds(1).derive("point", 1).seed());
+}
+
+TEST(Random, UniformMomentsAndRange) {
+  RandomStream r = Seeds(7).stream("moments");
+  const int n = 200000;
+  double s = 0, s2 = 0;
+  for (int k = 0; k < n; ++k) {
+    const double u = r.uniform();
+    ASSERT_GE(u, 0.0);
+    ASSERT_LT(u, 1.0);
+    s += u;
+    s2 += u * u;
+  }
+  // Mean 1/2 and variance 1/12, within 5 standard errors.
+  EXPECT_NEAR(s / n, 0.5, 5 * std::sqrt(1.0 / 12 / n));
+  EXPECT_NEAR(s2 / n - (s / n) * (s / n), 1.0 / 12, 5 * 0.0745 / std::sqrt(n));
+}
+
+TEST(Random, BelowIsUniformOverSmallRange) {
+  RandomStream r = Seeds(9).stream("below");
+  int counts[3] = {0, 0, 0};
+  const int n = 30000;
+  for (int k = 0; k < n; ++k) ++counts[r.below(3)];
+  for (int c : counts) EXPECT_NEAR(c, n / 3.0, 5 * std::sqrt(n * (1.0 / 3) * (2.0 / 3)));
+}
+
+TEST(Random, NormalMoments) {
+  RandomStream r = Seeds(11).stream("normal");
+  const int n = 200000;
+  double s = 0, s2 = 0;
+  for (int k = 0; k < n; ++k) {
+    const double g = r.normal();
+    s += g;
+    s2 += g * g;
+  }
+  EXPECT_NEAR(s / n, 0.0, 5 / std::sqrt(n));
+  EXPECT_NEAR(s2 / n, 1.0, 5 * std::sqrt(2.0 / n));
+}

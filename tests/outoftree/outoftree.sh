@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# outoftree.sh BUILD_DIR SOURCE_DIR WORKDIR
+# Installs granpipe, builds example_plugin/ against it with find_package(granpipe),
+# loads it through GRANPIPE_PLUGIN_PATH and runs it in a pipeline.
+set -euo pipefail
+build=$1 src=$2 work=$3
+rm -rf "$work"
+cmake --install "$build" --prefix "$work/prefix" >/dev/null
+cmake -S "$src/tests/outoftree/example_plugin" -B "$work/plugin-build" -G Ninja \
+      -DCMAKE_PREFIX_PATH="$work/prefix" -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$work/plugin-build" >/dev/null
+export GRANPIPE_PLUGIN_PATH="$work/plugin-build"
+"$work/prefix/bin/granpipe" describe radius_stats
+cat >"$work/pipeline.json" <<JSON
+{"source": {"plugin": "lattice", "params": {"lattice": "sc", "cells": [3, 3, 3], "radius": 0.25}},
+ "analyzers": [{"plugin": "radius_stats", "params": {"scale": 2.0}}],
+ "output": {"dir": "$work/out"}}
+JSON
+"$work/prefix/bin/granpipe" "$work/pipeline.json" --quiet
+csv="$work/out/radius_stats.scalars.csv"
+grep -q "^mean_radius,0.5," "$csv" || { echo "FAIL: mean_radius is not 2 x 0.25:"; cat "$csv"; exit 1; }
+grep -q "^particles,27," "$csv" || { echo "FAIL: expected 27 particles:"; cat "$csv"; exit 1; }
+echo "out-of-tree plugin built with find_package(granpipe), loaded and run"
