@@ -17,6 +17,7 @@ function(granpipe_add_plugin name)
     target_link_libraries(granpipe_${name} PRIVATE granpipe_core)
   endif()
   target_compile_options(granpipe_${name} PRIVATE -Wall -Wextra)
+  set_property(GLOBAL APPEND PROPERTY GRANPIPE_PLUGIN_TARGETS granpipe_${name})
   if(DEFINED GRANPIPE_PLUGIN_BUILD_DIR)
     set_target_properties(granpipe_${name} PROPERTIES
       LIBRARY_OUTPUT_DIRECTORY ${GRANPIPE_PLUGIN_BUILD_DIR})

@@ -1,0 +1,113 @@
+#include "granpipe/contacts_by_distance.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "granpipe/cell_list.hpp"
+#include "granpipe/errors.hpp"
+
+namespace granpipe {
+namespace {
+
+struct Found {
+  std::int64_t i, j;
+  double gap;
+};
+
+// Particle-wall contacts of the container's solid walls (moved by wall_offset).
+void find_wall_contacts(const Frame& f, double tolerance, std::vector<Found>& out) {
+  const Container& c = f.container;
+  const Eigen::Index n = f.size();
+  const bool cylinder = c.shape == ContainerShape::Cylinder;
+  for (Eigen::Index k = 0; k < n; ++k) {
+    const double reach = f.radius[k] * (1.0 + tolerance);
+    for (int a = 0; a < f.dim; ++a) {
+      if (cylinder && a < 2) continue;  // the side of a cylinder is one round wall
+      for (int side = 0; side < 2; ++side) {
+        if (c.boundary[a][side] != Boundary::Wall) continue;
+        const double wall = (side == 0 ? c.lo[a] : c.hi[a]) + c.wall_offset[a];
+        const double dist = side == 0 ? f.position(k, a) - wall : wall - f.position(k, a);
+        if (dist <= reach) out.push_back({k, partner::wall(static_cast<Wall>(2 * a + side)),
+                                          dist - f.radius[k]});
+      }
+    }
+    if (cylinder) {
+      const double dx = f.position(k, 0) - c.cylinder_center[0] - c.wall_offset[0];
+      const double dy = f.position(k, 1) - c.cylinder_center[1] - c.wall_offset[1];
+      const double dist = c.cylinder_radius - std::hypot(dx, dy);
+      if (dist <= reach) out.push_back({k, partner::wall(Wall::CylinderSide), dist - f.radius[k]});
+    }
+  }
+}
+
+}  // namespace
+
+IntArray DistanceContacts::coordination(Eigen::Index n, bool with_walls) const {
+  IntArray z = IntArray::Zero(n);
+  for (Eigen::Index k = 0; k < size(); ++k) {
+    if (partner::is_particle(j[k])) {
+      ++z[i[k]];
+      ++z[j[k]];
+    } else if (with_walls) {
+      ++z[i[k]];
+    }
+  }
+  return z;
+}
+
+DistanceContacts find_contacts_by_distance(const Frame& frame, double tolerance) {
+  if (!(tolerance >= 0.0) || !std::isfinite(tolerance)) {
+    throw InputError("contacts by distance: expected a finite tolerance >= 0, got " +
+                     std::to_string(tolerance));
+  }
+  const Eigen::Index n = frame.size();
+  std::vector<Found> pairs, walls;
+  if (n >= 2) {
+    const double cutoff = 2.0 * frame.radius.maxCoeff() * (1.0 + tolerance);
+    const CellList cells(frame.position, frame.container, frame.dim, cutoff);
+    cells.for_each_pair([&](int i, int j, const double*, double r2) {
+      const double contact = (frame.radius[i] + frame.radius[j]) * (1.0 + tolerance);
+      if (r2 <= contact * contact) {
+        pairs.push_back({i, j, std::sqrt(r2) - frame.radius[i] - frame.radius[j]});
+      }
+    });
+    std::sort(pairs.begin(), pairs.end(),
+              [](const Found& a, const Found& b) { return a.i != b.i ? a.i < b.i : a.j < b.j; });
+  }
+  find_wall_contacts(frame, tolerance, walls);
+
+  DistanceContacts out;
+  out.tolerance = tolerance;
+  out.pairs = static_cast<Eigen::Index>(pairs.size());
+  const auto m = static_cast<Eigen::Index>(pairs.size() + walls.size());
+  out.i.resize(m);
+  out.j.resize(m);
+  out.gap.resize(m);
+  Eigen::Index k = 0;
+  for (const auto* list : {&pairs, &walls}) {
+    for (const Found& c : *list) {
+      out.i[k] = c.i;
+      out.j[k] = c.j;
+      out.gap[k] = c.gap;
+      ++k;
+    }
+  }
+  return out;
+}
+
+std::string contacts_by_distance_key(double tolerance) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "contacts_by_distance(tolerance=%.17g)", tolerance);
+  return buf;
+}
+
+const DistanceContacts& contacts_by_distance(const Frame& frame, FrameCache& cache,
+                                             double tolerance) {
+  return cache.get<DistanceContacts>(contacts_by_distance_key(tolerance), [&] {
+    return find_contacts_by_distance(frame, tolerance);
+  });
+}
+
+}  // namespace granpipe

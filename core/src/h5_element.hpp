@@ -1,0 +1,49 @@
+#pragma once
+// An H5MD element as found in any H5MD 1.x file: either a time-dependent group
+// (step, optional time, value) with explicit or fixed ("step increment + offset") clocks,
+// or a time-independent dataset that holds for every frame.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "h5_dataset.hpp"
+
+namespace granpipe::h5 {
+
+class Element {
+ public:
+  // The element at `path`, or nothing when there is none.
+  static std::optional<Element> open(hid_t file, const std::string& path);
+
+  const std::string& path() const { return data_path_; }  // the dataset holding the data
+  bool timed() const { return timed_; }
+  // Samples stored (time-dependent elements; 1 otherwise).
+  hsize_t samples() const { return timed_ ? samples_ : 1; }
+  // Shape of one sample (the value shape without its time axis).
+  Shape item() const;
+  const std::vector<std::int64_t>& steps() const { return steps_; }
+  const std::vector<double>& times() const { return times_; }  // empty: no time stored
+
+  // Frame k is sample k (elements sampled with the frames, e.g. hard-linked clocks).
+  void map_identity();
+  // Frame k is the sample with step frame_steps[k]; false when some frame has no sample.
+  bool map_by_step(const std::vector<std::int64_t>& frame_steps);
+
+  // Reads frame k (all of a time-independent element) as doubles or 64-bit integers.
+  void read(long frame, double* out) const;
+  std::vector<std::int64_t> read_integers(long frame) const;
+
+ private:
+  hsize_t row(long frame) const;
+  std::string data_path_;
+  Object value_;
+  Shape shape_;
+  bool timed_ = false;
+  hsize_t samples_ = 0;
+  std::vector<std::int64_t> steps_;
+  std::vector<double> times_;
+  std::vector<hsize_t> rows_;  // sample of each frame; empty: frame k is sample k
+};
+
+}  // namespace granpipe::h5

@@ -1,0 +1,208 @@
+#include "arches_analyzer.hpp"
+
+#include <cmath>
+#include <set>
+#include <string>
+
+#include "arch_statistics.hpp"
+#include "contact_census.hpp"
+#include "mutual_stability.hpp"
+#include "support_count.hpp"
+#include "svg_writer.hpp"
+
+namespace granpipe::arches {
+
+namespace {
+
+const std::vector<std::string> kPerFrameColumns = {
+    "frame", "tap", "cycle", "arches_per_particle", "p1_over_N", "p2_over_N",
+    "z_support_eq4", "z_support_direct", "base_fraction", "missing_supports_per_particle",
+    "non_supporting_contact_fraction"};
+
+std::string frame_name(long index, const Frame& frame) {
+  std::string name = "arches: frame " + std::to_string(index);
+  if (frame.tap >= 0) name += " (tap " + std::to_string(frame.tap) + ")";
+  return name;
+}
+
+void add_mean(Results& results, const std::string& name, const RunningMean& m,
+              const std::string& doc) {
+  const double nan = std::nan("");
+  results.add_scalar(name, m.count() > 0 ? m.mean() : nan,
+                     m.count() > 0 ? m.standard_error() : nan, "", doc);
+}
+
+}  // namespace
+
+Schema schema() {
+  Schema s;
+  s.real("contact_tolerance", 1e-9,
+         "two disks touch when their centre distance is at most (R_i + R_j)(1 + this); a "
+         "disk and a wall when their distance is at most R_i (1 + this)")
+      .min(0.0);
+  s.real("span_bin", 0.05, "bin width of the span distributions n_s(x)")
+      .min(0.0, true)
+      .unit("mean disk diameters");
+  s.integers("span_sizes", std::vector<std::int64_t>{2, 3, 4},
+             "arch sizes s whose span distribution n_s(x) is reported (all arches always are)")
+      .min(2);
+  s.integer("svg_frames", 1,
+            "how many frames, the first ones consumed, are drawn as arches_<tap>.svg "
+            "(0: none)")
+      .min(0);
+  return s;
+}
+
+ArchesAnalyzer::ArchesAnalyzer(const PluginContext& ctx)
+    : log_(ctx.log),
+      output_dir_(ctx.output_dir),
+      tolerance_(ctx.params.real("contact_tolerance")),
+      span_bin_(ctx.params.real("span_bin")),
+      svg_frames_(static_cast<long>(ctx.params.integer("svg_frames"))),
+      span_all_(span_bin_),
+      per_frame_(kPerFrameColumns, "per-frame values of the arch analysis") {
+  per_frame_.units.assign(kPerFrameColumns.size(), "");
+  std::set<std::int64_t> seen;
+  for (std::int64_t s : ctx.params.integers("span_sizes")) {
+    if (!seen.insert(s).second) {
+      throw InputError("arches.span_sizes: expected distinct arch sizes, got " +
+                       std::to_string(s) + " twice");
+    }
+    span_by_size_.emplace_back(static_cast<long>(s), SpanHistogram(span_bin_));
+  }
+}
+
+void ArchesAnalyzer::add_size_distribution(const std::vector<Eigen::Index>& n, double disks) {
+  // An arch size first seen now was absent (n = 0) from every earlier frame.
+  while (n_per_particle_.size() < n.size()) {
+    RunningMean m;
+    for (long f = 0; f + 1 < measured_frames_; ++f) m.add(0.0);
+    n_per_particle_.push_back(m);
+  }
+  for (std::size_t s = 1; s < n_per_particle_.size(); ++s) {
+    n_per_particle_[s].add(s < n.size() ? static_cast<double>(n[s]) / disks : 0.0);
+  }
+}
+
+void ArchesAnalyzer::consume(const Frame& frame, FrameCache& cache) {
+  const std::string where = frame_name(frames_, frame);
+  ++frames_;
+  check_supports(frame, where);
+  const Eigen::Index n = frame.size();
+  if (n == 0) {
+    log_.warn(where + ": no disks; skipped");
+    return;
+  }
+  ++measured_frames_;
+  const double disks = static_cast<double>(n);
+
+  const std::vector<Arch> arches = find_arches(frame, where);
+  const ArchStatistics st = arch_statistics(n, arches);
+  const SupportCount sc = count_supports(*frame.supports);
+  const ContactCensus cc =
+      census_contacts(*frame.supports, contacts_by_distance(frame, cache, tolerance_));
+
+  const double arches_per_particle = static_cast<double>(st.arches()) / disks;
+  const double p1 = static_cast<double>(st.p1) / disks, p2 = static_cast<double>(st.p2) / disks;
+  const double z_eq4 = st.z_eq4(), z_direct = sc.z_direct();
+  arches_per_particle_.add(arches_per_particle);
+  p1_.add(p1);
+  p2_.add(p2);
+  z_eq4_.add(z_eq4);
+  z_direct_.add(z_direct);
+  z_difference_.add(z_eq4 - z_direct);
+  const double base_fraction = static_cast<double>(sc.base_disks) / disks;
+  const double missing = static_cast<double>(sc.missing_supports()) / disks;
+  base_fraction_.add(base_fraction);
+  missing_supports_.add(missing);
+  const double non_supporting = cc.contacts > 0 ? static_cast<double>(cc.non_supporting()) /
+                                                      static_cast<double>(cc.contacts)
+                                                : std::nan("");
+  if (cc.contacts > 0) non_supporting_.add(non_supporting);
+  if (sc.contacts() > 0) {
+    detached_.add(static_cast<double>(sc.contacts() - cc.supporting) /
+                  static_cast<double>(sc.contacts()));
+  }
+  add_size_distribution(st.n, disks);
+
+  const double diameter = 2.0 * frame.radius.mean();
+  for (const Arch& a : arches) {
+    const double x = a.span / diameter;
+    span_all_.add(x);
+    for (auto& [size, histogram] : span_by_size_) {
+      if (static_cast<long>(a.disks.size()) == size) histogram.add(x);
+    }
+  }
+
+  per_frame_.add_row({static_cast<double>(frames_ - 1), static_cast<double>(frame.tap),
+                      static_cast<double>(frame.cycle), arches_per_particle, p1, p2, z_eq4,
+                      z_direct, base_fraction, missing, non_supporting});
+
+  if (drawn_ < svg_frames_ && !output_dir_.empty()) {
+    const std::string stem =
+        frame.tap >= 0 ? std::to_string(frame.tap) : "frame" + std::to_string(frames_ - 1);
+    write_arches_svg(output_dir_ / ("arches_" + stem + ".svg"), frame, arches,
+                     where + ": " + std::to_string(n) + " disks, " +
+                         std::to_string(st.arches()) + " arches");
+    ++drawn_;
+  }
+}
+
+void ArchesAnalyzer::finish(Results& results) {
+  results.add_scalar("frames", static_cast<double>(measured_frames_), std::nan(""), "",
+                     "frames analysed (frames without disks are skipped)");
+  add_mean(results, "arches_per_particle", arches_per_particle_,
+           "arches of two or more disks per disk");
+  add_mean(results, "p1_over_N", p1_, "end particles of arches per disk, Eq. (1)");
+  add_mean(results, "p2_over_N", p2_, "centre particles of arches per disk, Eq. (2)");
+  add_mean(results, "z_support_eq4", z_eq4_,
+           "<z>_support = 2 [1 + sum_s n(s) / N], Eq. (4): counts base disks as two-supported");
+  add_mean(results, "z_support_direct", z_direct_,
+           "<z>_support = 2 (distinct supporting contacts) / N, the base counted once");
+  add_mean(results, "z_support_eq4_minus_direct", z_difference_,
+           "Eq. (4) minus the direct count: 2 sum_i (2 - k_i) / N, = 2 base_fraction when "
+           "every disk off the base has two supports");
+  add_mean(results, "base_fraction", base_fraction_, "disks resting on the base per disk");
+  add_mean(results, "missing_supports_per_particle", missing_supports_,
+           "sum_i (2 - k_i) / N, k_i the distinct supporting partners of disk i");
+  add_mean(results, "non_supporting_contact_fraction", non_supporting_,
+           "geometric contacts (disk-disk and disk-wall) that support neither disk");
+  add_mean(results, "detached_support_fraction", detached_,
+           "supporting contacts named by the labels whose partners do not touch (0 for a "
+           "consistent source)");
+
+  Table sizes({"s", "n_s_per_N", "err"},
+              "arch size distribution n(s)/N per frame, averaged over frames; s = 1 counts "
+              "disks in no arch");
+  sizes.units.assign(3, "");
+  for (std::size_t s = 1; s < n_per_particle_.size(); ++s) {
+    sizes.add_row({static_cast<double>(s), n_per_particle_[s].mean(),
+                   n_per_particle_[s].standard_error()});
+  }
+  results.add_table("arch_size_distribution", std::move(sizes));
+  Plot plot;
+  plot.table = "arch_size_distribution";
+  plot.x = "s";
+  plot.y = {"n_s_per_N"};
+  plot.xlabel = "arch size s";
+  plot.ylabel = "n(s) / N";
+  plot.title = "arch size distribution";
+  plot.logy = true;
+  results.add_plot("arch_size_distribution_plot", std::move(plot));
+
+  const std::string xlabel = "horizontal span x (mean disk diameters)";
+  for (const auto& [size, histogram] : span_by_size_) {
+    results.add_histogram(
+        "span_s" + std::to_string(size),
+        histogram.density(xlabel, "span distribution n_s(x) of arches of " +
+                                      std::to_string(size) + " disks (" +
+                                      std::to_string(histogram.total()) + " arches)"));
+  }
+  results.add_histogram("span_all",
+                        span_all_.density(xlabel, "span distribution n(x) over all arches (" +
+                                                       std::to_string(span_all_.total()) +
+                                                       " arches)"));
+  results.add_table("per_frame", per_frame_);
+}
+
+}  // namespace granpipe::arches

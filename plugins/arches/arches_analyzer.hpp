@@ -1,0 +1,44 @@
+#pragma once
+// The `arches` analyzer: mutual stability, arches and support coordination of 2D
+// pseudo-dynamics packings (Sections II and III of the 2D tapping paper), per frame and
+// averaged over frames. Memory does not grow with the number of frames, apart from one
+// short row of per-frame values.
+#include <filesystem>
+#include <utility>
+#include <vector>
+
+#include "granpipe/plugin.hpp"
+#include "span_histogram.hpp"
+
+namespace granpipe::arches {
+
+Schema schema();
+
+class ArchesAnalyzer : public Analyzer {
+ public:
+  explicit ArchesAnalyzer(const PluginContext& ctx);
+  FrameContent needs() const override { return {.dim = 2, .supports = true}; }
+  void consume(const Frame& frame, FrameCache& cache) override;
+  void finish(Results& results) override;
+
+ private:
+  void add_size_distribution(const std::vector<Eigen::Index>& n, double disks);
+
+  Log& log_;
+  std::filesystem::path output_dir_;
+  double tolerance_;
+  double span_bin_;
+  long svg_frames_;
+
+  long frames_ = 0;           // frames consumed
+  long measured_frames_ = 0;  // frames with at least one disk
+  long drawn_ = 0;
+  RunningMean arches_per_particle_, p1_, p2_, z_eq4_, z_direct_, z_difference_, base_fraction_,
+      missing_supports_, non_supporting_, detached_;
+  std::vector<RunningMean> n_per_particle_;  // index s
+  std::vector<std::pair<long, SpanHistogram>> span_by_size_;
+  SpanHistogram span_all_;
+  Table per_frame_;
+};
+
+}  // namespace granpipe::arches

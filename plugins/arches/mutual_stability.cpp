@@ -1,0 +1,109 @@
+#include "mutual_stability.hpp"
+
+#include <cmath>
+
+#include "granpipe/errors.hpp"
+
+namespace granpipe::arches {
+
+namespace {
+
+bool is_valid_partner(std::int64_t p, Eigen::Index self, Eigen::Index n) {
+  if (partner::is_particle(p)) return p < n && p != self;
+  return p == partner::none || p == partner::wall(Wall::XLow) ||
+         p == partner::wall(Wall::XHigh) || p == partner::wall(Wall::YLow);
+}
+
+void check_side(const IndexArray& side, const char* name, const std::string& where) {
+  const Eigen::Index n = side.size();
+  for (Eigen::Index i = 0; i < n; ++i) {
+    if (is_valid_partner(side(i), i, n)) continue;
+    throw InputError(where + ": supports." + name + "[" + std::to_string(i) +
+                     "]: expected a disk index in [0, " + std::to_string(n) + ") other than " +
+                     std::to_string(i) + ", " + std::to_string(partner::none) + " (none), " +
+                     std::to_string(partner::wall(Wall::XLow)) + " (left wall), " +
+                     std::to_string(partner::wall(Wall::XHigh)) + " (right wall) or " +
+                     std::to_string(partner::wall(Wall::YLow)) + " (base), got " +
+                     std::to_string(side(i)));
+  }
+}
+
+bool has_left_partner(const Supports& s, Eigen::Index i) {
+  const std::int64_t j = s.left(i);
+  return partner::is_particle(j) && s.right(j) == i;
+}
+
+}  // namespace
+
+double horizontal_separation(const Container& c, double dx) {
+  if (!c.periodic(0)) return dx;
+  const double length = c.length(0);
+  return dx - length * std::round(dx / length);
+}
+
+void check_supports(const Frame& frame, const std::string& where) {
+  if (frame.dim != 2) {
+    throw InputError(where + ": dim: expected a 2D frame, got " + std::to_string(frame.dim) + "D");
+  }
+  if (!frame.supports) {
+    throw InputError(where +
+                     ": supports: expected support labels (from a 2D pseudo-dynamics source), "
+                     "got none");
+  }
+  const Supports& s = *frame.supports;
+  const Eigen::Index n = frame.size();
+  if (s.left.size() != n || s.right.size() != n) {
+    throw InputError(where + ": supports: expected " + std::to_string(n) +
+                     " left and right labels, got " + std::to_string(s.left.size()) + " and " +
+                     std::to_string(s.right.size()));
+  }
+  check_side(s.left, "left", where);
+  check_side(s.right, "right", where);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    if (partner::is_particle(s.left(i)) && s.left(i) == s.right(i)) {
+      throw InputError(where + ": supports[" + std::to_string(i) +
+                       "]: expected two different supporting disks, got disk " +
+                       std::to_string(s.left(i)) + " as both left and right support");
+    }
+  }
+}
+
+std::int64_t right_mutual_partner(const Supports& s, Eigen::Index i) {
+  const std::int64_t j = s.right(i);
+  return partner::is_particle(j) && s.left(j) == i ? j : partner::none;
+}
+
+std::vector<Arch> find_arches(const Frame& frame, const std::string& where) {
+  const Supports& s = *frame.supports;
+  const Eigen::Index n = frame.size();
+  std::vector<Arch> arches;
+  std::vector<char> in_arch(static_cast<std::size_t>(n), 0);
+  // Each disk has at most one mutual partner on each side, so the links form paths (and,
+  // with labels no deposition can produce, rings). A path is walked from its left end,
+  // the disk without a partner on its left, along right partners.
+  for (Eigen::Index first = 0; first < n; ++first) {
+    if (has_left_partner(s, first) || right_mutual_partner(s, first) == partner::none) continue;
+    Arch arch;
+    double dx = 0.0;
+    Eigen::Index k = first;
+    arch.disks.push_back(k);
+    for (std::int64_t j = right_mutual_partner(s, k); j != partner::none;
+         j = right_mutual_partner(s, k)) {
+      dx += horizontal_separation(frame.container, frame.position(j, 0) - frame.position(k, 0));
+      k = j;
+      arch.disks.push_back(k);
+    }
+    arch.span = std::abs(dx);
+    for (Eigen::Index d : arch.disks) in_arch[static_cast<std::size_t>(d)] = 1;
+    arches.push_back(std::move(arch));
+  }
+  for (Eigen::Index i = 0; i < n; ++i) {
+    if (!in_arch[static_cast<std::size_t>(i)] && has_left_partner(s, i)) {
+      throw InputError(where + ": supports: expected chains of mutually stable disks, got a ring "
+                       "of mutual supports through disk " + std::to_string(i));
+    }
+  }
+  return arches;
+}
+
+}  // namespace granpipe::arches

@@ -1,0 +1,38 @@
+#pragma once
+// Mutual stability and arches of a 2D packing built by pseudo-dynamics (support labels).
+// Two disks A and B are mutually stable when A is the left support of B and B the right
+// support of A (or the reverse); arches are the chains of mutually stable disks.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "granpipe/frame.hpp"
+
+namespace granpipe::arches {
+
+// One arch: its disks from the left end to the right end (at least two).
+struct Arch {
+  std::vector<Eigen::Index> disks;
+  // Horizontal span: projection on the x axis of the segment joining the centres of the
+  // two end disks, in length units (minimum image along a periodic x axis).
+  double span = 0.0;
+};
+
+// Checks that `frame` is 2D and carries valid support labels: each is a disk index
+// other than the disk itself, partner::none, or the left wall, right wall or base; and
+// no disk has one disk as both its left and right support. Throws InputError naming
+// `where` otherwise.
+void check_supports(const Frame& frame, const std::string& where);
+
+// The disk mutually stable with disk i on its right: j = right[i] with left[j] == i,
+// or partner::none.
+std::int64_t right_mutual_partner(const Supports& supports, Eigen::Index i);
+
+// x_j - x_i given as `dx`, wrapped to the minimum image when the x axis is periodic.
+double horizontal_separation(const Container& container, double dx);
+
+// Every arch of a frame whose supports passed check_supports. Throws InputError naming
+// `where` when labels close a ring of mutual supports (no chain has two ends).
+std::vector<Arch> find_arches(const Frame& frame, const std::string& where);
+
+}  // namespace granpipe::arches

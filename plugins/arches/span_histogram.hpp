@@ -1,0 +1,26 @@
+#pragma once
+// Histogram of arch spans pooled over frames, with bins of fixed width from 0 that grow
+// as wider spans appear (memory grows with the widest span, not with run length).
+#include <string>
+#include <vector>
+
+#include "granpipe/results.hpp"
+
+namespace granpipe::arches {
+
+class SpanHistogram {
+ public:
+  explicit SpanHistogram(double bin_width) : width_(bin_width) {}
+  void add(double span);
+  long total() const { return total_; }
+  // Probability density n(x): counts / (total * bin width), with the Poisson error of
+  // each count. With no spans at all: one empty bin [0, width) of density 0.
+  Histogram density(const std::string& xlabel, const std::string& doc) const;
+
+ private:
+  double width_;
+  std::vector<long> counts_;
+  long total_ = 0;
+};
+
+}  // namespace granpipe::arches

@@ -1,0 +1,28 @@
+#pragma once
+// `h5md`: saved frames as a source, so that any analyzer can reprocess them without
+// simulating again. Reads granpipe's own frames.h5 bit for bit, and other tools' H5MD
+// files (positions and the box; radii from the `radius` parameter).
+#include "granpipe/frame_store.hpp"
+#include "granpipe/plugin.hpp"
+
+namespace granpipe::h5md {
+
+Schema schema();
+
+class H5mdSource : public Source {
+ public:
+  explicit H5mdSource(const PluginContext& ctx);
+
+  FrameContent content() const override;
+  bool next(Frame& frame) override;
+  Work work() const override;
+  void finish(Results& results) override;
+
+ private:
+  FrameReader reader_;
+  // The selection: first, first + stride, ... up to last (inclusive).
+  long first_ = 0, last_ = 0, stride_ = 1;
+  long next_ = 0, read_ = 0;
+};
+
+}  // namespace granpipe::h5md

@@ -1,0 +1,237 @@
+#include "packing_analyzer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <sstream>
+
+#include "cut_profile.hpp"
+#include "granpipe/contacts_by_distance.hpp"
+
+namespace granpipe::packing {
+
+Schema schema() {
+  Schema s;
+  s.real("tolerance", 1e-9,
+         "contact if the centre distance is at most (R_i + R_j)(1 + tolerance), or the "
+         "centre-wall distance at most R_i (1 + tolerance)")
+      .min(0.0);
+  s.choice("top", {"auto", "surface", "container"}, std::string("auto"),
+           "top of the region before exclude_top: the highest particle top (surface), the "
+           "container's top (container), or surface for an open-top container and container "
+           "otherwise (auto)");
+  s.real("exclude_bottom", 0.0,
+         "the region starts this far above the base (the bottom layers ordered by the wall)")
+      .min(0.0)
+      .unit("mean diameters");
+  s.real("exclude_top", 0.0, "the region ends this far below its top (the loose free surface)")
+      .min(0.0)
+      .unit("mean diameters");
+  s.real("exclude_sides", 0.0, "the region keeps this far from each lateral side")
+      .min(0.0)
+      .unit("mean diameters");
+  s.real("profile_step", 0.05,
+         "spacing of the horizontal cuts of the vertical profile phi(y), from the base up; 0: "
+         "no profile")
+      .min(0.0)
+      .unit("mean diameters");
+  s.real("cuts_step", 0.01,
+         "spacing of the horizontal cuts through the region averaged into phi_cuts (midpoint "
+         "rule: bias O(step^1.5) in 2D, O(step^2) in 3D for layers aligned with the cuts); 0: "
+         "no phi_cuts")
+      .min(0.0)
+      .unit("mean diameters");
+  return s;
+}
+
+namespace {
+
+const char* axis_name(int a) { return a == 0 ? "x" : a == 1 ? "y" : "z"; }
+
+std::string frame_name(const Frame& f) { return "frame at step " + std::to_string(f.step); }
+
+double mean_diameter(const Frame& f) { return f.size() ? 2.0 * f.radius.mean() : 0.0; }
+
+struct Heights {
+  double base = 0.0;  // the container's bottom
+  double top = 0.0;   // the top of the region before exclude_top
+};
+
+Heights vertical_range(const Frame& f, Top top) {
+  const Container& c = f.container;
+  const int v = f.dim - 1;
+  const double offset = c.periodic(v) ? 0.0 : c.wall_offset[v];
+  if (top == Top::Auto) top = c.boundary[v][1] == Boundary::Open ? Top::Surface : Top::Container;
+  if (top == Top::Surface && c.periodic(v)) {
+    throw InputError(std::string("packing.top: expected \"container\" or \"auto\" for a container ") +
+                     "periodic along " + axis_name(v) + " (" + frame_name(f) +
+                     "), got \"surface\"");
+  }
+  Heights h{c.lo[v] + offset, c.hi[v] + offset};
+  if (top == Top::Surface) {
+    h.top = f.size() ? (f.position.col(v) + f.radius).maxCoeff() : h.base;
+  }
+  return h;
+}
+
+double mean_over(const IntArray& z, const std::vector<char>& in, long count) {
+  if (count == 0) return std::nan("");
+  double sum = 0.0;
+  for (Eigen::Index k = 0; k < z.size(); ++k) sum += in[static_cast<std::size_t>(k)] ? z[k] : 0;
+  return sum / static_cast<double>(count);
+}
+
+}  // namespace
+
+Region packing_region(const Frame& frame, const PackingSettings& s) {
+  const Container& c = frame.container;
+  if (c.shape != ContainerShape::Box) {
+    throw InputError("packing: " + frame_name(frame) +
+                     ": expected a box container (the measuring region is a box), got a " +
+                     to_string(c.shape));
+  }
+  const int dim = frame.dim, v = dim - 1;
+  const double d = mean_diameter(frame);
+  const Heights h = vertical_range(frame, s.top);
+  Region r;
+  r.dim = dim;
+  for (int a = 0; a < v; ++a) {
+    const double offset = c.periodic(a) ? 0.0 : c.wall_offset[a];
+    r.lo[a] = c.lo[a] + offset + s.exclude_sides * d;
+    r.hi[a] = c.hi[a] + offset - s.exclude_sides * d;
+  }
+  r.lo[v] = h.base + s.exclude_bottom * d;
+  r.hi[v] = h.top - s.exclude_top * d;
+  for (int a = 0; a < dim; ++a) {
+    if (!(r.hi[a] > r.lo[a])) {
+      std::ostringstream m;
+      m << "packing: " << frame_name(frame) << ": expected a measuring region of positive size, got "
+        << axis_name(a) << " from " << r.lo[a] << " to " << r.hi[a] << " (exclude_bottom "
+        << s.exclude_bottom << ", exclude_top " << s.exclude_top << ", exclude_sides "
+        << s.exclude_sides << " mean diameters of " << d << ")";
+      throw InputError(m.str());
+    }
+  }
+  return r;
+}
+
+PackingMeasurement measure_packing(const Frame& frame, FrameCache& cache,
+                                   const PackingSettings& s) {
+  if (frame.size() == 0) {
+    throw InputError("packing: " + frame_name(frame) + ": expected particles, got none");
+  }
+  PackingMeasurement m;
+  m.diameter = mean_diameter(frame);
+  m.region = packing_region(frame, s);
+  const Region& region = m.region;
+  const double volume = region.volume();
+  m.phi = particle_measure_in(frame, region) / volume;
+
+  const std::vector<char> in = centres_in(frame, region);
+  m.centres = std::count(in.begin(), in.end(), char{1});
+  m.number_density = static_cast<double>(m.centres) / volume;
+
+  const DistanceContacts& contacts = contacts_by_distance(frame, cache, s.tolerance);
+  m.z_mean = mean_over(contacts.coordination(frame.size(), false), in, m.centres);
+  m.z_mean_with_walls = mean_over(contacts.coordination(frame.size(), true), in, m.centres);
+
+  // (A relative 1e-9 keeps rounding from adding a cut just above a top.)
+  if (s.profile_step > 0.0) {
+    const double step = s.profile_step * m.diameter;
+    const Heights h = vertical_range(frame, s.top);
+    const int count = static_cast<int>(std::ceil((h.top - h.base) / step - 1e-9));
+    m.profile = cut_fractions(frame, region, h.base, step, count);
+  }
+  m.phi_cuts = std::nan("");
+  if (s.cuts_step > 0.0) {
+    // The midpoint rule over the region's own height, so that it estimates exactly the
+    // quantity phi measures.
+    const int v = frame.dim - 1;
+    const double height = region.hi[v] - region.lo[v];
+    const int cuts =
+        std::max(1, static_cast<int>(std::ceil(height / (s.cuts_step * m.diameter) - 1e-9)));
+    const std::vector<double> f = cut_fractions(frame, region, region.lo[v], height / cuts, cuts);
+    m.phi_cuts = std::accumulate(f.begin(), f.end(), 0.0) / cuts;
+  }
+  return m;
+}
+
+PackingAnalyzer::PackingAnalyzer(const PluginContext& ctx) : log_(ctx.log) {
+  const Params& p = ctx.params;
+  settings_.tolerance = p.real("tolerance");
+  settings_.exclude_bottom = p.real("exclude_bottom");
+  settings_.exclude_top = p.real("exclude_top");
+  settings_.exclude_sides = p.real("exclude_sides");
+  settings_.profile_step = p.real("profile_step");
+  settings_.cuts_step = p.real("cuts_step");
+  const std::string& top = p.string("top");
+  settings_.top = top == "surface" ? Top::Surface : top == "container" ? Top::Container : Top::Auto;
+}
+
+void PackingAnalyzer::consume(const Frame& frame, FrameCache& cache) {
+  if (frame.size() == 0) {
+    if (skipped_++ == 0) log_.warn("packing: " + frame_name(frame) + " has no particles; skipped");
+    return;
+  }
+  dim_ = frame.dim;
+  const PackingMeasurement m = measure_packing(frame, cache, settings_);
+  phi_.add(m.phi);
+  density_.add(m.number_density);
+  if (m.centres > 0) {
+    z_.add(m.z_mean);
+    z_walls_.add(m.z_mean_with_walls);
+  }
+  if (settings_.cuts_step > 0.0) phi_cuts_.add(m.phi_cuts);
+  if (settings_.profile_step > 0.0) {
+    // Heights a frame does not reach (above its surface) have an empty cut: zeros, so
+    // that the profile is the plain mean over frames.
+    if (m.profile.size() > profile_.size()) {
+      const std::size_t old = profile_.size();
+      profile_.resize(m.profile.size());
+      for (std::size_t k = old; k < profile_.size(); ++k)
+        for (long f = 0; f < frames_; ++f) profile_[k].add(0.0);
+    }
+    for (std::size_t k = 0; k < profile_.size(); ++k)
+      profile_[k].add(k < m.profile.size() ? m.profile[k] : 0.0);
+  }
+  ++frames_;
+}
+
+void PackingAnalyzer::finish(Results& results) {
+  auto mean = [&](const char* name, const RunningMean& x, const std::string& unit,
+                  const std::string& doc) {
+    const bool any = x.count() > 0;
+    results.add_scalar(name, any ? x.mean() : std::nan(""), x.standard_error(), unit, doc);
+  };
+  const std::string per_volume = dim_ == 2 ? "1/length^2" : "1/length^3";
+  mean("phi", phi_, "", "packing fraction of the region, exact (cut particles counted in part)");
+  mean("number_density", density_, per_volume, "particle centres in the region per unit volume");
+  mean("z_mean", z_, "", "mean number of particle contacts of the particles centred in the region");
+  mean("z_mean_with_walls", z_walls_, "", "z_mean with particle-wall contacts counted");
+  if (settings_.cuts_step > 0.0) {
+    mean("phi_cuts", phi_cuts_, "",
+         "mean area fraction of horizontal cuts through the region (stereological estimate of phi)");
+  }
+  results.add_scalar("frames", static_cast<double>(frames_), std::nan(""), "",
+                     "frames measured (frames without particles are skipped)");
+  if (settings_.profile_step > 0.0) {
+    Table t({"height", "phi", "phi_err"},
+            "area fraction of horizontal cuts against height above the base, mean over frames");
+    t.units = {"mean diameters", "", ""};
+    for (std::size_t k = 0; k < profile_.size(); ++k) {
+      t.add_row({(static_cast<double>(k) + 0.5) * settings_.profile_step, profile_[k].mean(),
+                 profile_[k].standard_error()});
+    }
+    results.add_table("profile", std::move(t));
+    Plot plot;
+    plot.table = "profile";
+    plot.x = "height";
+    plot.y = {"phi"};
+    plot.xlabel = "height above the base / mean diameter";
+    plot.ylabel = "area fraction of horizontal cuts";
+    plot.title = "vertical packing-fraction profile";
+    results.add_plot("profile", plot);
+  }
+}
+
+}  // namespace granpipe::packing

@@ -1,0 +1,63 @@
+#pragma once
+// `packing`: packing fraction of a region (exact, cut particles included), number
+// density, coordination numbers from contacts by distance, and the vertical profile of
+// the area fraction of horizontal cuts (stereology), per frame and averaged over frames.
+#include <cstdint>
+#include <vector>
+
+#include "granpipe/plugin.hpp"
+#include "region.hpp"
+
+namespace granpipe::packing {
+
+Schema schema();
+
+enum class Top : std::uint8_t { Auto, Surface, Container };
+
+struct PackingSettings {
+  double tolerance = 1e-9;      // relative contact tolerance
+  double exclude_bottom = 0.0;  // mean diameters above the base
+  double exclude_top = 0.0;     // mean diameters below the top (surface or container)
+  double exclude_sides = 0.0;   // mean diameters from each lateral side
+  Top top = Top::Auto;
+  double profile_step = 0.05;   // mean diameters; 0: no profile
+  double cuts_step = 0.01;      // mean diameters; 0: no phi_cuts
+};
+
+// What one frame measures.
+struct PackingMeasurement {
+  Region region;
+  double diameter = 0.0;        // mean particle diameter, the unit of the settings
+  double phi = 0.0;             // exact volume (area) fraction of the region
+  double number_density = 0.0;  // centres in the region per unit volume (area)
+  long centres = 0;             // particles whose centres lie in the region
+  double z_mean = 0.0;          // contacts per particle centred in the region
+  double z_mean_with_walls = 0.0;
+  double phi_cuts = 0.0;        // mean cut fraction over the region's height (NaN: no cuts)
+  std::vector<double> profile;  // cut fractions at (k + 1/2) profile_step above the base
+};
+
+// The region of a frame: the container shrunk by the settings' margins, its top at the
+// container's top or at the highest particle top. Throws InputError when it is empty.
+Region packing_region(const Frame& frame, const PackingSettings& settings);
+
+// Throws InputError for a frame without particles (the analyzer skips those).
+PackingMeasurement measure_packing(const Frame& frame, FrameCache& cache,
+                                   const PackingSettings& settings);
+
+class PackingAnalyzer : public Analyzer {
+ public:
+  explicit PackingAnalyzer(const PluginContext& ctx);
+  void consume(const Frame& frame, FrameCache& cache) override;
+  void finish(Results& results) override;
+
+ private:
+  PackingSettings settings_;
+  Log& log_;
+  int dim_ = 3;
+  long frames_ = 0, skipped_ = 0;
+  RunningMean phi_, density_, z_, z_walls_, phi_cuts_;
+  std::vector<RunningMean> profile_;
+};
+
+}  // namespace granpipe::packing

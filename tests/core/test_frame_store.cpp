@@ -1,0 +1,601 @@
+// frames.h5: round trips, other tools' H5MD files, damaged files, and a writer killed
+// mid-run (every frame the reader reports must be exactly what was written).
+#include <gtest/gtest.h>
+#include <hdf5.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+
+#include "granpipe/errors.hpp"
+#include "granpipe/frame_store.hpp"
+#include "granpipe/version.hpp"
+
+namespace fs = std::filesystem;
+using namespace granpipe;
+
+namespace {
+
+// Bit patterns, so that -0.0 and NaN payloads count too.
+template <class A, class B>
+bool same_bits(const A& a, const B& b) {
+  return a.rows() == b.rows() && a.cols() == b.cols() &&
+         std::memcmp(a.derived().data(), b.derived().data(),
+                     sizeof(typename A::Scalar) * static_cast<std::size_t>(a.size())) == 0;
+}
+
+// A value with a full mantissa that depends on every index.
+double value(long frame, long i, int a, int salt) {
+  return std::sin(0.37 * static_cast<double>(frame) + 1.13 * static_cast<double>(i) +
+                  0.71 * a + 2.9 * salt) *
+         (1.0 + 1e-3 * static_cast<double>(frame));
+}
+
+struct Optional {
+  bool velocity = true, angular = true, contacts = true, supports = true;
+};
+
+// Frame k of a synthetic run: every value a function of k, every optional array present
+// unless switched off, a container exercising every field.
+Frame make_frame(long k, int dim, Eigen::Index n, Optional with = {}) {
+  Frame f;
+  f.resize(n, dim);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    for (int a = 0; a < dim; ++a) f.position(i, a) = 10.0 * value(k, i, a, 0);
+    f.radius[i] = 0.5 + 0.1 * std::abs(value(k, i, 0, 1));
+    f.id[i] = 1000 + 7 * i;
+    f.species[i] = static_cast<std::int32_t>((i + k) % 3);
+  }
+  if (with.velocity) {
+    f.velocity = Coordinates(n, dim);
+    for (Eigen::Index i = 0; i < n; ++i)
+      for (int a = 0; a < dim; ++a) (*f.velocity)(i, a) = value(k, i, a, 2);
+  }
+  if (with.angular) {
+    const int cols = dim == 3 ? 3 : 1;
+    f.angular_velocity = Coordinates(n, cols);
+    for (Eigen::Index i = 0; i < n; ++i)
+      for (int a = 0; a < cols; ++a) (*f.angular_velocity)(i, a) = value(k, i, a, 3);
+  }
+  if (with.supports) {
+    Supports s;
+    s.left = IndexArray(n);
+    s.right = IndexArray(n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      s.left[i] = i % 3 == 0 ? partner::none : partner::wall(Wall::YLow);
+      s.right[i] = (i + k) % n;
+    }
+    f.supports = s;
+  }
+  if (with.contacts) {
+    // A different number of contacts every frame, none at all in frame 2.
+    const Eigen::Index m = k == 2 ? 0 : 1 + (k * 5) % 7;
+    Contacts c;
+    c.resize(m, dim);
+    for (Eigen::Index q = 0; q < m; ++q) {
+      c.i[q] = q % n;
+      c.j[q] = q % 2 ? (q + 1) % n : partner::wall(Wall::ZLow);
+      c.overlap[q] = 1e-3 * std::abs(value(k, q, 0, 4));
+      for (int a = 0; a < dim; ++a) {
+        c.normal_force(q, a) = value(k, q, a, 5);
+        c.tangential_force(q, a) = value(k, q, a, 6);
+        c.point(q, a) = value(k, q, a, 7);
+      }
+    }
+    f.contacts = c;
+  }
+  Container& box = f.container;
+  box.shape = k % 2 ? ContainerShape::Cylinder : ContainerShape::Box;
+  box.lo = Eigen::Vector3d(-1.0, -2.0, -3.0) * (1.0 + 0.01 * static_cast<double>(k));
+  box.hi = Eigen::Vector3d(4.0, 5.0, 6.0 + value(k, 0, 0, 8));
+  box.boundary = {{{Boundary::Periodic, Boundary::Periodic},
+                   {Boundary::Wall, Boundary::Open},
+                   {Boundary::Wall, Boundary::Wall}}};
+  box.cylinder_radius = 2.5 + 0.1 * static_cast<double>(k);
+  box.cylinder_center = Eigen::Vector2d(0.25, -0.5);
+  box.wall_offset = Eigen::Vector3d(0.0, 0.0, 0.01 * value(k, 0, 0, 9));
+  box.wall_velocity = Eigen::Vector3d(0.0, 0.0, value(k, 0, 0, 10));
+  f.time = 0.001 * static_cast<double>(k) + 1e-12;
+  f.step = 100 * k + 3;
+  f.tap = k / 2;
+  f.cycle = 3 * k;
+  return f;
+}
+
+void expect_same_container(const Container& a, const Container& b) {
+  EXPECT_EQ(a.shape, b.shape);
+  EXPECT_TRUE(same_bits(a.lo, b.lo));
+  EXPECT_TRUE(same_bits(a.hi, b.hi));
+  EXPECT_EQ(a.boundary, b.boundary);
+  EXPECT_EQ(std::memcmp(&a.cylinder_radius, &b.cylinder_radius, sizeof(double)), 0);
+  EXPECT_TRUE(same_bits(a.cylinder_center, b.cylinder_center));
+  EXPECT_TRUE(same_bits(a.wall_offset, b.wall_offset));
+  EXPECT_TRUE(same_bits(a.wall_velocity, b.wall_velocity));
+}
+
+void expect_same_frame(const Frame& a, const Frame& b) {
+  ASSERT_EQ(a.dim, b.dim);
+  EXPECT_TRUE(same_bits(a.position, b.position));
+  EXPECT_TRUE(same_bits(a.radius, b.radius));
+  EXPECT_TRUE(same_bits(a.id, b.id));
+  EXPECT_TRUE(same_bits(a.species, b.species));
+  ASSERT_EQ(a.velocity.has_value(), b.velocity.has_value());
+  if (a.velocity) {
+    EXPECT_TRUE(same_bits(*a.velocity, *b.velocity));
+  }
+  ASSERT_EQ(a.angular_velocity.has_value(), b.angular_velocity.has_value());
+  if (a.angular_velocity) {
+    EXPECT_TRUE(same_bits(*a.angular_velocity, *b.angular_velocity));
+  }
+  ASSERT_EQ(a.supports.has_value(), b.supports.has_value());
+  if (a.supports) {
+    EXPECT_TRUE(same_bits(a.supports->left, b.supports->left));
+    EXPECT_TRUE(same_bits(a.supports->right, b.supports->right));
+  }
+  ASSERT_EQ(a.contacts.has_value(), b.contacts.has_value());
+  if (a.contacts) {
+    const Contacts &p = *a.contacts, &q = *b.contacts;
+    EXPECT_TRUE(same_bits(p.i, q.i));
+    EXPECT_TRUE(same_bits(p.j, q.j));
+    EXPECT_TRUE(same_bits(p.overlap, q.overlap));
+    EXPECT_TRUE(same_bits(p.normal_force, q.normal_force));
+    EXPECT_TRUE(same_bits(p.tangential_force, q.tangential_force));
+    EXPECT_TRUE(same_bits(p.point, q.point));
+  }
+  expect_same_container(a.container, b.container);
+  EXPECT_EQ(std::memcmp(&a.time, &b.time, sizeof(double)), 0);
+  EXPECT_EQ(a.step, b.step);
+  EXPECT_EQ(a.tap, b.tap);
+  EXPECT_EQ(a.cycle, b.cycle);
+}
+
+class FrameStore : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* t = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() /
+           ("granpipe_frame_store_" + std::to_string(getpid()) + "_" + t->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  fs::path file(const std::string& name) const { return dir_ / name; }
+
+  // Writes `frames` frames of make_frame and closes the file.
+  fs::path write(const std::string& name, long frames, int dim, Eigen::Index n,
+                 Optional with = {}) {
+    const fs::path p = file(name);
+    FrameWriter w(p, R"({"name": "test"})");
+    for (long k = 0; k < frames; ++k) w.append(make_frame(k, dim, n, with));
+    w.close();
+    return p;
+  }
+
+  fs::path dir_;
+};
+
+std::string message_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no InputError)";
+}
+
+TEST_F(FrameStore, RoundTripIsBitIdenticalWithEveryOptionalArray) {
+  for (int dim : {2, 3}) {
+    const fs::path p = write("full" + std::to_string(dim) + ".h5", 5, dim, 17);
+    FrameReader r(p);
+    ASSERT_EQ(r.frames(), 5);
+    for (long k = 0; k < 5; ++k) expect_same_frame(make_frame(k, dim, 17), r.read(k));
+    const FrameFileInfo& info = r.info();
+    EXPECT_EQ(info.particles, 17);
+    EXPECT_EQ(info.dim, dim);
+    EXPECT_TRUE(info.complete);
+    EXPECT_TRUE(info.granpipe_file);
+    EXPECT_TRUE(info.has_velocity && info.has_angular_velocity && info.has_contacts &&
+                info.has_supports && info.has_radius);
+    EXPECT_EQ(info.group, "all");
+    EXPECT_EQ(info.creator, std::string("granpipe ") + GRANPIPE_VERSION);
+  }
+}
+
+TEST_F(FrameStore, RoundTripIsBitIdenticalWithNoOptionalArray) {
+  const Optional none{false, false, false, false};
+  const fs::path p = write("bare.h5", 4, 3, 9, none);
+  FrameReader r(p);
+  ASSERT_EQ(r.frames(), 4);
+  for (long k = 0; k < 4; ++k) expect_same_frame(make_frame(k, 3, 9, none), r.read(k));
+  EXPECT_FALSE(r.info().has_velocity || r.info().has_angular_velocity ||
+               r.info().has_contacts || r.info().has_supports);
+}
+
+TEST_F(FrameStore, EmptyAndOneParticleFramesRoundTrip) {
+  for (Eigen::Index n : {0, 1}) {
+    const fs::path p = write("n" + std::to_string(n) + ".h5", 3, 3, n,
+                             {true, true, false, true});
+    FrameReader r(p);
+    ASSERT_EQ(r.frames(), 3);
+    for (long k = 0; k < 3; ++k) {
+      expect_same_frame(make_frame(k, 3, n, {true, true, false, true}), r.read(k));
+    }
+  }
+}
+
+TEST_F(FrameStore, NonFinitePositionsAreStoredAsGiven) {
+  // Rejecting them is Frame::check's job; the store must not hide them.
+  Frame f = make_frame(0, 2, 3);
+  f.position(1, 0) = std::numeric_limits<double>::quiet_NaN();
+  f.position(2, 1) = -std::numeric_limits<double>::infinity();
+  const fs::path p = file("nan.h5");
+  FrameWriter w(p, "{}");
+  w.append(f);
+  w.close();
+  expect_same_frame(f, FrameReader(p).read(0));
+}
+
+TEST_F(FrameStore, WriterThatNeverClosedLeavesAnIncompleteButReadableFile) {
+  const fs::path p = file("open.h5");
+  {
+    FrameWriter w(p, "{}");
+    for (long k = 0; k < 3; ++k) w.append(make_frame(k, 3, 5));
+  }
+  FrameReader r(p);
+  EXPECT_FALSE(r.info().complete);
+  ASSERT_EQ(r.frames(), 3);
+  for (long k = 0; k < 3; ++k) expect_same_frame(make_frame(k, 3, 5), r.read(k));
+}
+
+TEST_F(FrameStore, FileClosedBeforeAnyFrameHasNoFrames) {
+  const fs::path p = file("none.h5");
+  FrameWriter w(p, "{}");
+  w.close();
+  FrameReader r(p);
+  EXPECT_EQ(r.frames(), 0);
+  EXPECT_TRUE(r.info().complete);
+}
+
+TEST_F(FrameStore, WriterRefusesAnExistingFile) {
+  const fs::path p = write("exists.h5", 1, 3, 2);
+  const std::string msg = message_of([&] { FrameWriter w(p, "{}"); });
+  EXPECT_NE(msg.find(p.string()), std::string::npos) << msg;
+  EXPECT_NE(msg.find("already exists"), std::string::npos) << msg;
+  EXPECT_EQ(FrameReader(p).frames(), 1);  // untouched
+}
+
+TEST_F(FrameStore, FramesOfOneFileMustMatchTheFirst) {
+  FrameWriter w(file("mixed.h5"), "{}");
+  w.append(make_frame(0, 3, 5));
+  EXPECT_THROW(w.append(make_frame(1, 3, 6)), InternalError);
+  EXPECT_THROW(w.append(make_frame(1, 2, 5)), InternalError);
+  EXPECT_THROW(w.append(make_frame(1, 3, 5, {false, true, true, true})), InternalError);
+  w.append(make_frame(1, 3, 5));
+  EXPECT_EQ(w.frames(), 2);
+}
+
+// ---- Other tools' files, written here with the HDF5 C API ----
+
+// An HDF5 identifier closed at the end of its scope.
+struct Id {
+  hid_t id;
+  explicit Id(hid_t h) : id(h) {}
+  ~Id() { H5Idec_ref(id); }
+  Id(const Id&) = delete;
+  Id& operator=(const Id&) = delete;
+  operator hid_t() const { return id; }
+};
+
+hid_t make_group(hid_t loc, const char* name) {
+  return H5Gcreate2(loc, name, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+}
+
+void put_dataset(hid_t loc, const char* name, hid_t type, std::vector<hsize_t> dims,
+                 const void* data) {
+  Id space(dims.empty() ? H5Screate(H5S_SCALAR)
+                        : H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr));
+  Id ds(H5Dcreate2(loc, name, type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+  H5Dwrite(ds, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data);
+}
+
+void put_int_attribute(hid_t loc, const char* name, std::vector<int> values, bool scalar) {
+  const hsize_t n = values.size();
+  Id space(scalar ? H5Screate(H5S_SCALAR) : H5Screate_simple(1, &n, nullptr));
+  Id a(H5Acreate2(loc, name, H5T_NATIVE_INT, space, H5P_DEFAULT, H5P_DEFAULT));
+  H5Awrite(a, H5T_NATIVE_INT, values.data());
+}
+
+// Fixed-length, space-padded strings, as a Fortran writer would leave them.
+void put_string_attribute(hid_t loc, const char* name, const std::vector<std::string>& values) {
+  const std::size_t width = 8;
+  std::string buffer;
+  for (const auto& v : values) buffer += v + std::string(width - v.size(), ' ');
+  Id type(H5Tcopy(H5T_C_S1));
+  H5Tset_size(type, width);
+  H5Tset_strpad(type, H5T_STR_SPACEPAD);
+  const hsize_t n = values.size();
+  Id space(H5Screate_simple(1, &n, nullptr));
+  Id a(H5Acreate2(loc, name, type, space, H5P_DEFAULT, H5P_DEFAULT));
+  H5Awrite(a, type, buffer.data());
+}
+
+// An H5MD file as another MD code writes it: float positions, explicit clocks, a fixed
+// box, species fixed in time, velocities sampled every other frame, no id, no radius.
+void write_foreign(const fs::path& p, bool second_group) {
+  Id f(H5Fcreate(p.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT));
+  Id h5md(make_group(f, "h5md"));
+  put_int_attribute(h5md, "version", {1, 0}, false);
+  Id creator(make_group(h5md, "creator"));
+  put_string_attribute(creator, "name", {"othermd"});
+  Id particles(make_group(f, "particles"));
+  Id atoms(make_group(particles, "atoms"));
+  Id box(make_group(atoms, "box"));
+  put_int_attribute(box, "dimension", {3}, true);
+  put_string_attribute(box, "boundary", {"periodic", "periodic", "none"});
+  const double edges[3] = {4.0, 5.0, 6.0};
+  put_dataset(box, "edges", H5T_NATIVE_DOUBLE, {3}, edges);
+
+  Id position(make_group(atoms, "position"));
+  float x[3][4][3];
+  for (int k = 0; k < 3; ++k)
+    for (int i = 0; i < 4; ++i)
+      for (int a = 0; a < 3; ++a) x[k][i][a] = 0.25f * static_cast<float>(k + i + a);
+  put_dataset(position, "value", H5T_NATIVE_FLOAT, {3, 4, 3}, x);
+  const std::int64_t steps[3] = {10, 20, 30};
+  const double times[3] = {0.5, 1.0, 1.5};
+  put_dataset(position, "step", H5T_NATIVE_INT64, {3}, steps);
+  put_dataset(position, "time", H5T_NATIVE_DOUBLE, {3}, times);
+
+  Id velocity(make_group(atoms, "velocity"));
+  const double v[2][4][3] = {};
+  const std::int64_t vsteps[2] = {10, 30};
+  put_dataset(velocity, "value", H5T_NATIVE_DOUBLE, {2, 4, 3}, v);
+  put_dataset(velocity, "step", H5T_NATIVE_INT64, {2}, vsteps);
+
+  const int species[4] = {2, 0, 1, 2};
+  put_dataset(atoms, "species", H5T_NATIVE_INT, {4}, species);
+  if (second_group) Id walls(make_group(particles, "walls"));
+}
+
+TEST_F(FrameStore, ReadsAnotherToolsFile) {
+  const fs::path p = file("foreign.h5");
+  write_foreign(p, false);
+  FrameReader r(p, "", 0.75);
+  const FrameFileInfo& info = r.info();
+  EXPECT_EQ(info.group, "atoms");
+  EXPECT_EQ(info.creator, "othermd");
+  EXPECT_FALSE(info.granpipe_file);
+  EXPECT_TRUE(info.complete);
+  EXPECT_FALSE(info.has_radius || info.has_contacts || info.has_supports);
+  // Velocities exist only at every other step: not at every frame, so not used.
+  EXPECT_FALSE(info.has_velocity);
+  ASSERT_EQ(r.frames(), 3);
+  ASSERT_EQ(info.particles, 4);
+  for (long k = 0; k < 3; ++k) {
+    const Frame f = r.read(k);
+    ASSERT_EQ(f.dim, 3);
+    for (int i = 0; i < 4; ++i) {
+      for (int a = 0; a < 3; ++a) EXPECT_EQ(f.position(i, a), 0.25 * (k + i + a));
+      EXPECT_EQ(f.radius[i], 0.75);
+      EXPECT_EQ(f.id[i], i);  // no id element: ids are the indices
+    }
+    EXPECT_EQ(f.species[0], 2);
+    EXPECT_EQ(f.species[2], 1);
+    EXPECT_EQ(f.step, 10 * (k + 1));
+    EXPECT_EQ(f.time, 0.5 * static_cast<double>(k + 1));
+    EXPECT_EQ(f.tap, -1);
+    EXPECT_EQ(f.container.shape, ContainerShape::Box);
+    EXPECT_EQ(f.container.lo, Eigen::Vector3d::Zero());
+    EXPECT_EQ(f.container.hi.head(3), Eigen::Vector3d(4.0, 5.0, 6.0));
+    EXPECT_TRUE(f.container.periodic(0) && f.container.periodic(1));
+    EXPECT_EQ(f.container.boundary[2][0], Boundary::Wall);
+    EXPECT_EQ(f.container.boundary[2][1], Boundary::Wall);
+    EXPECT_FALSE(f.velocity.has_value());
+  }
+}
+
+TEST_F(FrameStore, GroupChoosesAmongSeveralParticlesGroups) {
+  const fs::path p = file("two_groups.h5");
+  write_foreign(p, true);
+  const std::string ambiguous = message_of([&] { FrameReader r(p); });
+  EXPECT_NE(ambiguous.find("several particles groups (atoms, walls)"), std::string::npos)
+      << ambiguous;
+  EXPECT_EQ(FrameReader(p, "atoms").frames(), 3);
+  const std::string missing = message_of([&] { FrameReader r(p, "grains"); });
+  EXPECT_NE(missing.find("/particles/grains: no such particles group"), std::string::npos)
+      << missing;
+  const std::string no_position = message_of([&] { FrameReader r(p, "walls"); });
+  EXPECT_NE(no_position.find("/particles/walls/position: missing"), std::string::npos)
+      << no_position;
+}
+
+TEST_F(FrameStore, ReadsFixedClocksAndATimeDependentBox) {
+  // H5MD 1.1 "fixed" storage: step and time are increments, their offsets attributes.
+  const fs::path p = file("fixed_clock.h5");
+  {
+    Id f(H5Fcreate(p.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT));
+    Id particles(make_group(f, "particles"));
+    Id all(make_group(particles, "all"));
+    Id position(make_group(all, "position"));
+    const double x[4][2][2] = {};
+    put_dataset(position, "value", H5T_NATIVE_DOUBLE, {4, 2, 2}, x);
+    const std::int64_t step = 5;
+    put_dataset(position, "step", H5T_NATIVE_INT64, {}, &step);
+    put_int_attribute(Id(H5Dopen2(position, "step", H5P_DEFAULT)), "offset", {100}, true);
+    const double dt = 0.25;
+    put_dataset(position, "time", H5T_NATIVE_DOUBLE, {}, &dt);
+    Id box(make_group(all, "box"));
+    put_string_attribute(box, "boundary", {"none", "periodic"});
+    Id edges(make_group(box, "edges"));
+    // A triclinic form of a rectangular box: diagonal matrices.
+    const double e[4][2][2] = {
+        {{1, 0}, {0, 2}}, {{1, 0}, {0, 3}}, {{1, 0}, {0, 4}}, {{1, 0}, {0, 5}}};
+    put_dataset(edges, "value", H5T_NATIVE_DOUBLE, {4, 2, 2}, e);
+    H5Lcreate_hard(position, "step", edges, "step", H5P_DEFAULT, H5P_DEFAULT);
+  }
+  FrameReader r(p);
+  ASSERT_EQ(r.frames(), 4);
+  for (long k = 0; k < 4; ++k) {
+    const Frame fr = r.read(k);
+    EXPECT_EQ(fr.step, 100 + 5 * k);
+    EXPECT_EQ(fr.time, 0.25 * static_cast<double>(k));
+    EXPECT_EQ(fr.container.hi[1], 2.0 + static_cast<double>(k));
+    EXPECT_EQ(fr.container.boundary[0][0], Boundary::Wall);
+    EXPECT_TRUE(fr.container.periodic(1));
+  }
+}
+
+TEST_F(FrameStore, WrongPositionShapeIsAnInputErrorNamingTheDataset) {
+  const fs::path p = file("shape.h5");
+  {
+    Id f(H5Fcreate(p.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT));
+    Id particles(make_group(f, "particles"));
+    Id all(make_group(particles, "all"));
+    Id position(make_group(all, "position"));
+    const double x[2][3][5] = {};
+    put_dataset(position, "value", H5T_NATIVE_DOUBLE, {2, 3, 5}, x);
+    const std::int64_t steps[2] = {0, 1};
+    put_dataset(position, "step", H5T_NATIVE_INT64, {2}, steps);
+  }
+  const std::string msg = message_of([&] { FrameReader r(p); });
+  EXPECT_NE(msg.find(p.string() + ": /particles/all/position/value: expected positions of shape"),
+            std::string::npos)
+      << msg;
+  EXPECT_NE(msg.find("got [3, 5]"), std::string::npos) << msg;
+}
+
+TEST_F(FrameStore, FileWithoutParticlesIsAnInputError) {
+  const fs::path p = file("empty.h5");
+  { Id created(H5Fcreate(p.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT)); }
+  const std::string msg = message_of([&] { FrameReader r(p); });
+  EXPECT_EQ(msg, p.string() + ": /particles: missing (not an H5MD file with particles)");
+}
+
+// Grows (or shrinks) a dataset along its frame axis; new rows hold the fill value.
+void set_rows(hid_t file, const std::string& path, hsize_t rows) {
+  Id ds(H5Dopen2(file, path.c_str(), H5P_DEFAULT));
+  Id space(H5Dget_space(ds));
+  hsize_t dims[4];
+  const int rank = H5Sget_simple_extent_dims(space, dims, nullptr);
+  ASSERT_GT(rank, 0) << path;
+  dims[0] = rows;
+  ASSERT_GE(H5Dset_extent(ds, dims), 0) << path;
+}
+
+TEST_F(FrameStore, CountsOnlyFramesPresentInEveryDataset) {
+  // What a writer killed inside a frame can leave: some datasets a row ahead.
+  const Optional none{false, false, false, false};
+  const fs::path p = write("uneven.h5", 3, 2, 4, none);
+  {
+    Id f(H5Fopen(p.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
+    set_rows(f, "/particles/all/position/value", 4);
+    set_rows(f, "/granpipe/container/lo", 4);
+  }
+  EXPECT_EQ(FrameReader(p).frames(), 3);
+  {
+    Id f(H5Fopen(p.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
+    set_rows(f, "/granpipe/radius", 2);
+  }
+  FrameReader r(p);
+  ASSERT_EQ(r.frames(), 2);
+  expect_same_frame(make_frame(1, 2, 4, none), r.read(1));
+}
+
+TEST_F(FrameStore, RowsWhoseStepWasNeverWrittenAreNotFrames) {
+  // Every dataset holds a fourth row, but the step that commits it was never written.
+  const Optional none{false, false, false, false};
+  const fs::path p = write("uncommitted.h5", 3, 3, 4, none);
+  {
+    Id f(H5Fopen(p.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
+    for (const char* path :
+         {"/particles/all/position/value", "/particles/all/position/step",
+          "/particles/all/position/time", "/particles/all/species/value",
+          "/particles/all/id/value", "/particles/all/box/edges/value", "/granpipe/radius",
+          "/granpipe/tap", "/granpipe/cycle", "/granpipe/container/shape",
+          "/granpipe/container/lo", "/granpipe/container/hi", "/granpipe/container/boundary",
+          "/granpipe/container/cylinder_radius", "/granpipe/container/cylinder_center",
+          "/granpipe/container/wall_offset", "/granpipe/container/wall_velocity"}) {
+      set_rows(f, path, 4);
+    }
+  }
+  FrameReader r(p);
+  EXPECT_EQ(r.frames(), 3);
+  expect_same_frame(make_frame(2, 3, 4, none), r.read(2));
+}
+
+// ---- Damaged and missing files ----
+
+TEST_F(FrameStore, MissingFileIsAnInputError) {
+  const fs::path p = file("nowhere.h5");
+  EXPECT_EQ(message_of([&] { FrameReader r(p); }), p.string() + ": no such file");
+}
+
+TEST_F(FrameStore, NonHdf5FileIsAnInputError) {
+  const fs::path p = file("notes.h5");
+  std::ofstream(p) << "position: 1 2 3\n";
+  const std::string msg = message_of([&] { FrameReader r(p); });
+  EXPECT_EQ(msg, p.string() + ": not an HDF5 file (no HDF5 signature)");
+}
+
+TEST_F(FrameStore, TruncatedFileIsAnInputError) {
+  const fs::path good = write("good.h5", 6, 3, 50);
+  const fs::path cut = file("cut.h5");
+  fs::copy_file(good, cut);
+  fs::resize_file(cut, fs::file_size(good) / 2);
+  const std::string msg = message_of([&] { FrameReader r(cut); });
+  EXPECT_EQ(msg, cut.string() + ": not a readable HDF5 file (truncated or corrupt)");
+}
+
+// ---- Crash safety ----
+
+// A child appends frames for ever, telling the parent after each one; the parent kills
+// it with SIGKILL (no chance to clean up) at an arbitrary point of a later frame.
+TEST_F(FrameStore, EveryFrameOfAKilledWriterReadsBackExactly) {
+  constexpr int kDim = 3;
+  constexpr Eigen::Index kParticles = 300;
+  for (int kill_after : {1, 4, 9}) {
+    const fs::path p = file("killed" + std::to_string(kill_after) + ".h5");
+    int pipe_fd[2];
+    ASSERT_EQ(pipe(pipe_fd), 0);
+    const pid_t child = fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+      close(pipe_fd[0]);
+      try {
+        FrameWriter w(p, "{}");
+        for (long k = 0;; ++k) {
+          w.append(make_frame(k, kDim, kParticles));
+          const char done = 1;
+          if (::write(pipe_fd[1], &done, 1) != 1) _exit(3);
+        }
+      } catch (...) {
+        _exit(2);
+      }
+    }
+    close(pipe_fd[1]);
+    for (int n = 0; n < kill_after; ++n) {
+      char done = 0;
+      ASSERT_EQ(::read(pipe_fd[0], &done, 1), 1) << "the writer died on its own";
+    }
+    kill(child, SIGKILL);
+    int status = 0;
+    waitpid(child, &status, 0);
+    close(pipe_fd[0]);
+    ASSERT_TRUE(WIFSIGNALED(status));
+
+    FrameReader r(p);
+    EXPECT_FALSE(r.info().complete);
+    EXPECT_GE(r.frames(), kill_after);
+    for (long k = 0; k < r.frames(); ++k) {
+      SCOPED_TRACE("frame " + std::to_string(k));
+      expect_same_frame(make_frame(k, kDim, kParticles), r.read(k));
+    }
+  }
+}
+
+}  // namespace

@@ -1,0 +1,127 @@
+// The h5md source: frame selection (first, last, stride) through the Source interface.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+
+#include "granpipe/frame_store.hpp"
+#include "h5md_source.hpp"
+
+namespace fs = std::filesystem;
+using namespace granpipe;
+
+namespace {
+
+class H5mdSourceTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* t = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() /
+           ("granpipe_h5md_" + std::to_string(getpid()) + "_" + t->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    progress_.set_enabled(false);
+    log_.set_quiet(true);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  // Frame k holds step 10 k and particle positions k + i, so a frame names itself.
+  fs::path write(long frames, bool close = true) {
+    const fs::path p = dir_ / "frames.h5";
+    FrameWriter w(p, "{}");
+    for (long k = 0; k < frames; ++k) {
+      Frame f;
+      f.resize(3, 2);
+      for (Eigen::Index i = 0; i < 3; ++i) f.position(i, 0) = static_cast<double>(k + i);
+      f.radius.setConstant(0.5);
+      f.velocity = Coordinates::Zero(3, 2);
+      f.step = 10 * k;
+      w.append(f);
+    }
+    if (close) w.close();
+    return p;
+  }
+
+  std::unique_ptr<h5md::H5mdSource> source(const fs::path& file, std::int64_t first,
+                                           std::int64_t last, std::int64_t stride) {
+    params_ = Params({{"file", file.string()},
+                      {"first", first},
+                      {"last", last},
+                      {"stride", stride},
+                      {"group", std::string("")},
+                      {"radius", 0.5}});
+    return std::make_unique<h5md::H5mdSource>(
+        PluginContext{params_, Seeds{1}, 1, log_, progress_, {}});
+  }
+
+  // Steps of every frame the source yields.
+  static std::vector<std::int64_t> steps_of(Source& s) {
+    std::vector<std::int64_t> steps;
+    Frame f;
+    while (s.next(f)) {
+      EXPECT_EQ(f.position(2, 0), static_cast<double>(f.step / 10 + 2));
+      steps.push_back(f.step);
+    }
+    return steps;
+  }
+
+  fs::path dir_;
+  Params params_;
+  Log log_;
+  Progress progress_;
+};
+
+using Steps = std::vector<std::int64_t>;
+
+TEST_F(H5mdSourceTest, ReadsEveryFrameByDefault) {
+  auto s = source(write(5), 0, -1, 1);
+  EXPECT_EQ(s->work().total, 5.0);
+  EXPECT_EQ(steps_of(*s), (Steps{0, 10, 20, 30, 40}));
+}
+
+TEST_F(H5mdSourceTest, SelectsFirstLastAndStride) {
+  const fs::path p = write(10);
+  auto a = source(p, 2, 8, 3);
+  EXPECT_EQ(a->work().total, 3.0);
+  EXPECT_EQ(steps_of(*a), (Steps{20, 50, 80}));
+  auto b = source(p, 1, 7, 3);  // last is not on the stride: stops before it
+  EXPECT_EQ(b->work().total, 3.0);
+  EXPECT_EQ(steps_of(*b), (Steps{10, 40, 70}));
+  auto c = source(p, 9, -1, 4);
+  EXPECT_EQ(c->work().total, 1.0);
+  EXPECT_EQ(steps_of(*c), (Steps{90}));
+}
+
+TEST_F(H5mdSourceTest, ContentComesFromTheFile) {
+  auto s = source(write(2), 0, -1, 1);
+  const FrameContent c = s->content();
+  EXPECT_EQ(c.dim, 2);
+  EXPECT_TRUE(c.velocities);
+  EXPECT_FALSE(c.contacts);
+  EXPECT_FALSE(c.supports);
+}
+
+TEST_F(H5mdSourceTest, SelectionOutsideTheFileIsAnInputError) {
+  const fs::path p = write(4);
+  auto message = [&](std::int64_t first, std::int64_t last) {
+    try {
+      source(p, first, last, 1);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no InputError)");
+  };
+  EXPECT_EQ(message(4, -1), "h5md.first: expected a frame index below 4, got 4 (" + p.string() +
+                                " holds 4 frames)");
+  EXPECT_EQ(message(0, 4), "h5md.last: expected -1 or a frame index below 4, got 4 (" +
+                               p.string() + " holds 4 frames)");
+  EXPECT_EQ(message(3, 2), "h5md.last: expected -1 or an index >= first (3), got 2");
+}
+
+TEST_F(H5mdSourceTest, ReadsTheFinishedFramesOfAnUnfinishedFile) {
+  const fs::path p = write(3, false);
+  auto s = source(p, 0, -1, 1);
+  EXPECT_EQ(steps_of(*s), (Steps{0, 10, 20}));
+}
+
+}  // namespace

@@ -1,0 +1,335 @@
+// The packing analyzer on crystals from the `lattice` plugin (loaded like any plugin):
+// closed-form packing fractions and coordination numbers, translation invariance of
+// regions cut anywhere, the stereological profile against the exact volume, and the
+// shared contact list.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <random>
+#include <string>
+
+#include "cut_profile.hpp"
+#include "granpipe/contacts_by_distance.hpp"
+#include "granpipe/errors.hpp"
+#include "granpipe/overlap.hpp"
+#include "granpipe/plugin_loader.hpp"
+#include "packing_analyzer.hpp"
+#include "region.hpp"
+
+namespace {
+
+using granpipe::Frame;
+using granpipe::FrameCache;
+using granpipe::ParamValue;
+using granpipe::packing::measure_packing;
+using granpipe::packing::PackingMeasurement;
+using granpipe::packing::PackingSettings;
+using granpipe::packing::Region;
+using Values = std::map<std::string, ParamValue>;
+
+constexpr double kPi = std::numbers::pi;
+
+struct Expected {
+  std::string name;
+  double phi;
+  int z;
+};
+
+const std::vector<Expected>& lattices() {
+  static const std::vector<Expected> all{
+      {"square", kPi / 4, 4},
+      {"triangular", kPi / (2 * std::sqrt(3.0)), 6},
+      {"sc", kPi / 6, 6},
+      {"bcc", kPi * std::sqrt(3.0) / 8, 8},
+      {"fcc", kPi / (3 * std::sqrt(2.0)), 12},
+      {"hcp", kPi / (3 * std::sqrt(2.0)), 12},
+  };
+  return all;
+}
+
+granpipe::Params params_of(const granpipe::Schema& schema, const Values& set) {
+  Values values;
+  for (const auto& spec : schema.specs()) values[spec.name] = *spec.default_value;
+  for (const auto& [k, v] : set) values[k] = v;
+  return granpipe::Params(values);
+}
+
+struct Context {
+  granpipe::Log log;
+  granpipe::Progress progress;
+  Context() { log.set_quiet(true); }
+};
+
+const granpipe::Registry& registry() {
+  static const granpipe::Registry r = [] {
+    granpipe::Registry reg;
+    granpipe::load_plugins(reg, granpipe::plugin_search_path());
+    return reg;
+  }();
+  return r;
+}
+
+// Frames of the `lattice` source plugin with these parameters.
+std::vector<Frame> lattice(const Values& set, std::uint64_t seed = 3) {
+  const granpipe::PluginInfo* info = registry().find("lattice");
+  if (!info) throw std::runtime_error("the lattice plugin is not on GRANPIPE_PLUGIN_PATH");
+  const granpipe::Params params = params_of(info->schema, set);
+  Context c;
+  const granpipe::PluginContext ctx{params, granpipe::Seeds(seed), 1, c.log, c.progress, {}};
+  auto source = info->make_source(ctx);
+  std::vector<Frame> frames;
+  Frame f;
+  while (source->next(f)) {
+    f.check("packing test");
+    frames.push_back(f);
+  }
+  return frames;
+}
+
+Frame one(const std::string& name, const std::string& boundary = "periodic", Values more = {}) {
+  more["lattice"] = name;
+  more["boundary"] = boundary;
+  return lattice(more).at(0);
+}
+
+PackingMeasurement measure(const Frame& f, PackingSettings s = {}) {
+  FrameCache cache;
+  return measure_packing(f, cache, s);
+}
+
+TEST(Packing, PeriodicLatticesHaveTheirPackingFraction) {
+  for (const auto& e : lattices()) {
+    const Frame f = one(e.name, "periodic", {{"radius", 0.3}});
+    const PackingMeasurement m = measure(f);
+    EXPECT_NEAR(m.phi, e.phi, 1e-12 * e.phi) << e.name;
+    double volume = 1;
+    for (int a = 0; a < f.dim; ++a) volume *= f.container.length(a);
+    EXPECT_EQ(m.centres, f.size()) << e.name;
+    EXPECT_DOUBLE_EQ(m.number_density, f.size() / volume) << e.name;
+    // Stereology: the mean cut fraction is the same packing fraction, up to the bias of
+    // cuts at fixed heights through layers aligned with them (largest in 2D: chords).
+    EXPECT_NEAR(m.phi_cuts, e.phi, 5e-4) << e.name;
+  }
+}
+
+TEST(Packing, CoordinationOfExactlyTouchingLattices) {
+  for (const auto& e : lattices()) {
+    Frame f = one(e.name);
+    const PackingMeasurement touching = measure(f);
+    EXPECT_DOUBLE_EQ(touching.z_mean, e.z) << e.name;
+    EXPECT_DOUBLE_EQ(touching.z_mean_with_walls, e.z) << e.name;  // no walls
+    f.radius *= 1 - 1e-6;  // a gap a thousand times the tolerance
+    const PackingMeasurement apart = measure(f);
+    EXPECT_EQ(apart.z_mean, 0.0) << e.name;
+  }
+}
+
+// Contact counts are relative to particle size: the same crystal at any scale.
+TEST(Packing, ContactsDoNotDependOnTheScale) {
+  for (double radius : {1e-4, 1.0, 1e4}) {
+    const Frame f = one("fcc", "periodic", {{"radius", radius}});
+    EXPECT_DOUBLE_EQ(measure(f).z_mean, 12) << radius;
+  }
+}
+
+// Simple cubic crystal of 4 x 4 x 4 in a tight box open at the top: 5 walls with 16
+// particles each, 3 x 3 x 16 pairs along each axis.
+TEST(Packing, WallContactsInATightBox) {
+  const Frame f = one("sc", "walls");
+  const PackingMeasurement m = measure(f);
+  EXPECT_DOUBLE_EQ(m.z_mean, 2.0 * 144 / 64);
+  EXPECT_DOUBLE_EQ(m.z_mean_with_walls, (2.0 * 144 + 80) / 64);
+  EXPECT_NEAR(m.phi, kPi / 6, 1e-12);  // the top is the top of the particles
+  const auto c = granpipe::find_contacts_by_distance(f, 1e-9);
+  EXPECT_EQ(c.pairs, 144);
+  EXPECT_EQ(c.wall_contacts(), 80);
+  for (Eigen::Index k = 0; k < c.size(); ++k) EXPECT_NEAR(c.gap[k], 0.0, 1e-12);
+}
+
+// A region of a whole number of unit cells placed anywhere in a periodic crystal (here
+// across the periodic boundary too) holds exactly the crystal's packing fraction, since
+// the lattice's period integral does not depend on where the period starts. Every
+// particle the region cuts, and every periodic image, must be counted right.
+TEST(Packing, RegionOfWholeCellsAtAnyOffsetHasTheLatticeFraction) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-0.5, 1.0);
+  const std::map<std::string, std::vector<int>> per_axis{
+      {"square", {4, 4}}, {"triangular", {4, 4}}, {"sc", {4, 4, 4}},
+      {"bcc", {4, 4, 4}},  {"fcc", {4, 4, 4}},        {"hcp", {4, 4, 4}}};
+  for (const auto& e : lattices()) {
+    const Frame f = one(e.name, "periodic", {{"radius", 0.8}});
+    const int dim = f.dim;
+    for (int trial = 0; trial < 5; ++trial) {
+      Region region;
+      region.dim = dim;
+      for (int a = 0; a < dim; ++a) {
+        const double cell = f.container.length(a) / per_axis.at(e.name)[a];
+        region.lo[a] = u(rng) * f.container.length(a);
+        region.hi[a] = region.lo[a] + (1 + trial % 3) * cell;
+      }
+      const double phi = granpipe::packing::particle_measure_in(f, region) / region.volume();
+      EXPECT_NEAR(phi, e.phi, 1e-12 * e.phi) << e.name << " trial " << trial;
+    }
+  }
+}
+
+// Two independent computations of the same slab: the exact volume of the particles in
+// it, and the mean area fraction of horizontal cuts through it (2D: chord lengths).
+TEST(Packing, CutProfileIntegratesToTheSlabVolumeFraction) {
+  for (const std::string name : {"triangular", "square", "fcc", "bcc"}) {
+    const Frame f = one(name, "walls", {{"jitter", 0.3}});
+    PackingSettings s;
+    s.exclude_bottom = 0.83;
+    s.exclude_top = 0.61;
+    s.exclude_sides = 0.37;
+    s.cuts_step = 0.001;
+    const PackingMeasurement m = measure(f, s);
+    EXPECT_GT(m.phi, 0.2) << name;  // radii shrunk by the jitter to 0.7
+    EXPECT_NEAR(m.phi_cuts, m.phi, 5e-6 * m.phi) << name;
+    // Coarser cuts: still the same estimate, less precisely.
+    s.cuts_step = 0.05;
+    EXPECT_NEAR(measure(f, s).phi_cuts, m.phi, 3e-3 * m.phi) << name;
+  }
+}
+
+// The cut fraction of a square crystal of touching disks at height h from a row of
+// centres is the chord over the spacing: sqrt(1 - (h/r)^2); of a simple cubic crystal,
+// the disc area over the cell face: pi (r^2 - h^2) / (2r)^2.
+TEST(Packing, ProfileOfCrystalsMatchesChordsAndDiscs) {
+  for (const std::string name : {"square", "sc"}) {
+    const Frame f = one(name, "walls");
+    PackingSettings s;
+    s.profile_step = 0.1;
+    const PackingMeasurement m = measure(f, s);
+    const double r = 0.5, d = 1.0;
+    ASSERT_EQ(m.profile.size(), 40u) << name;  // 4 layers of one diameter
+    for (std::size_t k = 0; k < m.profile.size(); ++k) {
+      const double y = (k + 0.5) * s.profile_step * d;
+      const double h = std::fmod(y, d) - r;  // from the centre of the layer
+      const double expected =
+          name == "square" ? std::sqrt(1 - h * h / (r * r)) : kPi * (r * r - h * h) / (d * d);
+      EXPECT_NEAR(m.profile[k], expected, 1e-12) << name << " cut " << k;
+    }
+  }
+}
+
+TEST(Packing, ContactListIsSharedThroughTheFrameCache) {
+  const Frame f = one("bcc");
+  FrameCache cache;
+  PackingSettings s;
+  s.tolerance = 1e-7;
+  measure_packing(f, cache, s);
+  const auto& shared = cache.get<granpipe::DistanceContacts>(
+      granpipe::contacts_by_distance_key(1e-7), [] {
+        ADD_FAILURE() << "the contacts were not in the cache";
+        return granpipe::DistanceContacts{};
+      });
+  EXPECT_EQ(shared.pairs, 8 * f.size() / 2);
+  EXPECT_EQ(shared.tolerance, 1e-7);
+  EXPECT_NE(granpipe::contacts_by_distance_key(1e-7), granpipe::contacts_by_distance_key(1e-9));
+}
+
+TEST(Packing, ExcludedLayersAndFreeSurface) {
+  // Square crystal, 4 x 4, walls: excluding one diameter at the bottom and at the top of
+  // the surface leaves the two middle rows, whose fraction is pi/4 again.
+  const Frame f = one("square", "walls");
+  PackingSettings s;
+  s.exclude_bottom = 1;
+  s.exclude_top = 1;
+  const PackingMeasurement m = measure(f, s);
+  EXPECT_NEAR(m.phi, kPi / 4, 1e-13);
+  EXPECT_EQ(m.centres, 8);
+  EXPECT_NEAR(m.region.hi[1] - m.region.lo[1], 2.0, 1e-13);
+  // An explicit surface top agrees with auto for an open-top box; a container top
+  // includes the empty space above the particles (none here: the box is tight).
+  s.top = granpipe::packing::Top::Surface;
+  EXPECT_NEAR(measure(f, s).phi, m.phi, 1e-15);
+
+  s.exclude_top = 3.5;  // nothing left
+  EXPECT_THROW(measure(f, s), granpipe::InputError);
+  PackingSettings surface;
+  surface.top = granpipe::packing::Top::Surface;
+  EXPECT_THROW(measure(one("square"), surface), granpipe::InputError);  // periodic top
+}
+
+TEST(Packing, CylinderContainersAreRefused) {
+  Frame f = one("sc", "walls");
+  f.container.shape = granpipe::ContainerShape::Cylinder;
+  f.container.cylinder_radius = 10;
+  try {
+    measure(f);
+    FAIL() << "expected an InputError";
+  } catch (const granpipe::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("expected a box container"), std::string::npos);
+  }
+}
+
+// The analyzer: per-frame values averaged with their standard errors, the profile table
+// and its plot; frames without particles are skipped.
+TEST(Packing, AnalyzerAveragesFrames) {
+  const auto frames = lattice({{"lattice", std::string("triangular")},
+                               {"boundary", std::string("walls")},
+                               {"jitter", 0.2},
+                               {"frames", std::int64_t{4}}});
+  const granpipe::Params params =
+      params_of(granpipe::packing::schema(), {{"exclude_bottom", 0.5}, {"profile_step", 0.25}});
+  Context c;
+  const granpipe::PluginContext ctx{params, granpipe::Seeds(1), 1, c.log, c.progress, {}};
+  granpipe::packing::PackingAnalyzer analyzer(ctx);
+  granpipe::RunningMean phi, z;
+  PackingSettings s;
+  s.exclude_bottom = 0.5;
+  s.profile_step = 0.25;
+  for (const Frame& f : frames) {
+    FrameCache cache;
+    analyzer.consume(f, cache);
+    const auto m = measure(f, s);
+    phi.add(m.phi);
+    z.add(m.z_mean);
+  }
+  Frame empty;
+  empty.resize(0, 2);
+  FrameCache cache;
+  analyzer.consume(empty, cache);
+
+  granpipe::Results r;
+  analyzer.finish(r);
+  EXPECT_EQ(r.scalar("frames").value, 4);
+  EXPECT_DOUBLE_EQ(r.scalar("phi").value, phi.mean());
+  EXPECT_DOUBLE_EQ(r.scalar("phi").uncertainty, phi.standard_error());
+  EXPECT_GT(phi.standard_error(), 0.0);
+  EXPECT_DOUBLE_EQ(r.scalar("z_mean").value, z.mean());
+  EXPECT_NEAR(r.scalar("phi_cuts").value, phi.mean(), 0.01);
+  EXPECT_GT(r.scalar("phi").value, 0.4);  // below the crystal's 0.9069 (0.8)^2 = 0.58: walls
+  EXPECT_LT(r.scalar("phi").value, kPi / (2 * std::sqrt(3.0)) * 0.8 * 0.8);
+  const auto& table = r.tables().at("profile");
+  ASSERT_EQ(table.columns, (std::vector<std::string>{"height", "phi", "phi_err"}));
+  ASSERT_GT(table.rows(), 10u);
+  EXPECT_DOUBLE_EQ(table.column("height")[0], 0.125);
+  EXPECT_EQ(r.plots().at("profile").table, "profile");
+  EXPECT_TRUE(r.scalars().count("number_density"));
+  EXPECT_TRUE(r.scalars().count("z_mean_with_walls"));
+}
+
+// Through a periodic side shorter than two contact distances a pair would touch twice.
+TEST(Packing, TooShortPeriodicBoxIsRefusedForContacts) {
+  const Frame f = lattice({{"lattice", std::string("sc")},
+                           {"cells", std::vector<std::int64_t>{2, 3, 3}}}).at(0);
+  EXPECT_THROW(granpipe::find_contacts_by_distance(f, 1e-9), granpipe::InputError);
+}
+
+TEST(Packing, OneParticle) {
+  Frame f;
+  f.resize(1, 3);
+  f.position.row(0) << 1.0, 1.0, 1.0;
+  f.radius[0] = 1.0;
+  f.container = granpipe::Container::open_top_box(3, {0, 0, 0}, {2, 2, 2});
+  const auto m = measure(f);
+  EXPECT_NEAR(m.phi, kPi / 6, 1e-14);  // sphere in its bounding cube
+  EXPECT_EQ(m.z_mean, 0.0);
+  EXPECT_EQ(m.z_mean_with_walls, 5.0);  // four sides and the base
+}
+
+}  // namespace
