@@ -258,6 +258,16 @@ void write_attribute(hid_t object, const std::string& name, int value) {
   write_raw_attribute(object, name, H5T_STD_I32LE, space.id(), &value);
 }
 
+void write_attribute(hid_t object, const std::string& name, double value) {
+  Object space = owned(H5Screate(H5S_SCALAR), name + ": cannot make the dataspace");
+  write_raw_attribute(object, name, H5T_IEEE_F64LE, space.id(), &value);
+}
+
+void write_attribute(hid_t object, const std::string& name, std::uint64_t value) {
+  Object space = owned(H5Screate(H5S_SCALAR), name + ": cannot make the dataspace");
+  write_raw_attribute(object, name, H5T_STD_U64LE, space.id(), &value);
+}
+
 void write_text_attribute(hid_t object, const std::string& name, const std::string& value) {
   Object type = owned(H5Tcopy(H5T_C_S1), name + ": cannot make a string type");
   check(H5Tset_size(type.id(), H5T_VARIABLE), name + ": cannot make a string type");

@@ -53,6 +53,8 @@ void write_attribute(hid_t object, const std::string& name, const std::string& v
 void write_attribute(hid_t object, const std::string& name, const std::vector<std::string>& values);
 void write_attribute(hid_t object, const std::string& name, const std::vector<int>& values);
 void write_attribute(hid_t object, const std::string& name, int value);
+void write_attribute(hid_t object, const std::string& name, double value);
+void write_attribute(hid_t object, const std::string& name, std::uint64_t value);
 void write_text_attribute(hid_t object, const std::string& name, const std::string& value);
 bool has_attribute(hid_t object, const std::string& name);
 // Any string attribute, fixed or variable length, scalar (one item) or 1-D.

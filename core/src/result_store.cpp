@@ -9,6 +9,8 @@
 #include <sstream>
 
 #include "granpipe/errors.hpp"
+#include "h5_dataset.hpp"
+#include "h5_object.hpp"
 #include "output_directory.hpp"
 
 namespace granpipe {
@@ -16,123 +18,89 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Closes an HDF5 handle on scope exit.
-class H5Handle {
- public:
-  H5Handle(hid_t id, herr_t (*close)(hid_t)) : id_(id), close_(close) {
-    if (id < 0) throw InternalError("HDF5 call failed while writing results");
-  }
-  ~H5Handle() { close_(id_); }
-  H5Handle(const H5Handle&) = delete;
-  H5Handle& operator=(const H5Handle&) = delete;
-  operator hid_t() const { return id_; }
+using h5::Object;
+using h5::owned;
+using h5::write_attribute;
+using h5::write_text_attribute;
 
- private:
-  hid_t id_;
-  herr_t (*close_)(hid_t);
-};
-
-void attr_string(hid_t obj, const char* name, const std::string& value) {
-  H5Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
-  H5Tset_size(type, std::max<std::size_t>(1, value.size()));
-  H5Tset_cset(type, H5T_CSET_UTF8);
-  H5Handle space(H5Screate(H5S_SCALAR), H5Sclose);
-  H5Handle attr(H5Acreate2(obj, name, type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
-  H5Awrite(attr, type, value.empty() ? "" : value.c_str());
-}
-
-void attr_double(hid_t obj, const char* name, double value) {
-  H5Handle space(H5Screate(H5S_SCALAR), H5Sclose);
-  H5Handle attr(H5Acreate2(obj, name, H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
-  H5Awrite(attr, H5T_NATIVE_DOUBLE, &value);
-}
-
-void attr_int(hid_t obj, const char* name, long long value) {
-  H5Handle space(H5Screate(H5S_SCALAR), H5Sclose);
-  H5Handle attr(H5Acreate2(obj, name, H5T_NATIVE_LLONG, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
-  H5Awrite(attr, H5T_NATIVE_LLONG, &value);
-}
-
-void attr_strings(hid_t obj, const char* name, const std::vector<std::string>& values) {
-  std::vector<const char*> ptrs;
-  for (const auto& v : values) ptrs.push_back(v.c_str());
-  H5Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
-  H5Tset_size(type, H5T_VARIABLE);
-  H5Tset_cset(type, H5T_CSET_UTF8);
-  hsize_t n = values.size();
-  H5Handle space(n ? H5Screate_simple(1, &n, nullptr) : H5Screate(H5S_NULL), H5Sclose);
-  H5Handle attr(H5Acreate2(obj, name, type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
-  if (n) H5Awrite(attr, type, ptrs.data());
-}
-
-hid_t make_group(hid_t parent, const std::string& name) {
-  H5Handle lcpl(H5Pcreate(H5P_LINK_CREATE), H5Pclose);
-  H5Pset_create_intermediate_group(lcpl, 1);
-  return H5Gcreate2(parent, name.c_str(), lcpl, H5P_DEFAULT, H5P_DEFAULT);
+Object make_group(hid_t parent, const std::string& name) {
+  Object lcpl = owned(H5Pcreate(H5P_LINK_CREATE), name + ": cannot make a property list");
+  h5::check(H5Pset_create_intermediate_group(lcpl.id(), 1), name + ": cannot make the group");
+  return owned(H5Gcreate2(parent, name.c_str(), lcpl.id(), H5P_DEFAULT, H5P_DEFAULT),
+               name + ": cannot make the group");
 }
 
 void write_vector(hid_t parent, const std::string& name, const std::vector<double>& v) {
   hsize_t n = v.size();
-  H5Handle space(H5Screate_simple(1, &n, nullptr), H5Sclose);
-  H5Handle ds(H5Dcreate2(parent, name.c_str(), H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT,
-                         H5P_DEFAULT), H5Dclose);
-  if (n) H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data());
+  Object space = owned(H5Screate_simple(1, &n, nullptr), name + ": cannot make the dataspace");
+  Object ds = owned(H5Dcreate2(parent, name.c_str(), H5T_NATIVE_DOUBLE, space.id(), H5P_DEFAULT,
+                               H5P_DEFAULT, H5P_DEFAULT), name + ": cannot make the dataset");
+  if (n) h5::check(H5Dwrite(ds.id(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()),
+                   name + ": cannot write");
 }
 
 void write_group(hid_t file, const std::string& group, const Results& r) {
-  H5Handle g(make_group(file, group), H5Gclose);
+  const Object group_obj = make_group(file, group);
+  const hid_t g = group_obj.id();
   for (const auto& [name, s] : r.scalars()) {
-    H5Handle space(H5Screate(H5S_SCALAR), H5Sclose);
-    H5Handle ds(H5Dcreate2(g, name.c_str(), H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT,
-                           H5P_DEFAULT), H5Dclose);
-    H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, &s.value);
-    attr_string(ds, "kind", "scalar");
-    attr_double(ds, "uncertainty", s.uncertainty);
-    attr_string(ds, "unit", s.unit);
-    attr_string(ds, "doc", s.doc);
+    Object space = owned(H5Screate(H5S_SCALAR), name + ": cannot make the dataspace");
+    Object ds_obj = owned(H5Dcreate2(g, name.c_str(), H5T_NATIVE_DOUBLE, space.id(), H5P_DEFAULT,
+                                     H5P_DEFAULT, H5P_DEFAULT), name + ": cannot make the dataset");
+    const hid_t ds = ds_obj.id();
+    h5::check(H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, &s.value),
+              name + ": cannot write");
+    write_text_attribute(ds, "kind", "scalar");
+    write_attribute(ds, "uncertainty", s.uncertainty);
+    write_text_attribute(ds, "unit", s.unit);
+    write_text_attribute(ds, "doc", s.doc);
   }
   for (const auto& [name, t] : r.tables()) {
-    H5Handle tg(make_group(g, name), H5Gclose);
-    attr_string(tg, "kind", "table");
-    attr_strings(tg, "columns", t.columns);
-    attr_strings(tg, "units", t.units);
-    attr_string(tg, "doc", t.doc);
+    const Object tg_obj = make_group(g, name);
+    const hid_t tg = tg_obj.id();
+    write_text_attribute(tg, "kind", "table");
+    write_attribute(tg, "columns", t.columns);
+    write_attribute(tg, "units", t.units);
+    write_text_attribute(tg, "doc", t.doc);
     for (std::size_t c = 0; c < t.columns.size(); ++c) write_vector(tg, t.columns[c], t.data[c]);
   }
   for (const auto& [name, h] : r.histograms()) {
-    H5Handle hg(make_group(g, name), H5Gclose);
-    attr_string(hg, "kind", "histogram");
-    attr_int(hg, "density", h.density);
-    attr_string(hg, "xlabel", h.xlabel);
-    attr_string(hg, "doc", h.doc);
+    const Object hg_obj = make_group(g, name);
+    const hid_t hg = hg_obj.id();
+    write_text_attribute(hg, "kind", "histogram");
+    write_attribute(hg, "density", static_cast<int>(h.density));
+    write_text_attribute(hg, "xlabel", h.xlabel);
+    write_text_attribute(hg, "doc", h.doc);
     write_vector(hg, "edges", h.edges);
     write_vector(hg, "values", h.values);
     if (!h.errors.empty()) write_vector(hg, "errors", h.errors);
   }
   for (const auto& [name, f] : r.fits()) {
-    H5Handle fg(make_group(g, name), H5Gclose);
-    attr_string(fg, "kind", "fit");
-    attr_string(fg, "model", f.model);
-    attr_strings(fg, "names", f.names);
-    attr_double(fg, "chi2", f.chi2);
-    attr_int(fg, "dof", f.dof);
+    const Object fg_obj = make_group(g, name);
+    const hid_t fg = fg_obj.id();
+    write_text_attribute(fg, "kind", "fit");
+    write_text_attribute(fg, "model", f.model);
+    write_attribute(fg, "names", f.names);
+    write_attribute(fg, "chi2", f.chi2);
+    write_attribute(fg, "dof", f.dof);
     write_vector(fg, "values", f.values);
     write_vector(fg, "errors", f.errors);
     std::vector<double> cov(f.covariance.data(), f.covariance.data() + f.covariance.size());
     write_vector(fg, "covariance", cov);  // column-major, names x names
   }
   if (!r.plots().empty()) {
-    H5Handle pg(make_group(g, "_plots"), H5Gclose);
+    const Object pg_obj = make_group(g, "_plots");
+    const hid_t pg = pg_obj.id();
     for (const auto& [name, pl] : r.plots()) {
-      H5Handle one(make_group(pg, name), H5Gclose);
-      attr_string(one, "table", pl.table);
-      attr_string(one, "x", pl.x);
-      attr_strings(one, "y", pl.y);
-      attr_string(one, "xlabel", pl.xlabel);
-      attr_string(one, "ylabel", pl.ylabel);
-      attr_string(one, "title", pl.title);
-      attr_int(one, "logx", pl.logx);
-      attr_int(one, "logy", pl.logy);
+      const Object one_obj = make_group(pg, name);
+    const hid_t one = one_obj.id();
+      write_text_attribute(one, "table", pl.table);
+      write_text_attribute(one, "x", pl.x);
+      write_attribute(one, "y", pl.y);
+      write_text_attribute(one, "xlabel", pl.xlabel);
+      write_text_attribute(one, "ylabel", pl.ylabel);
+      write_text_attribute(one, "title", pl.title);
+      write_attribute(one, "logx", static_cast<int>(pl.logx));
+      write_attribute(one, "logy", static_cast<int>(pl.logy));
     }
   }
 }
@@ -203,15 +171,18 @@ void write_csvs(const fs::path& dir, const std::string& group, const Results& r,
 void write_results(const fs::path& dir, const ResultSet& results, const Provenance& provenance) {
   const fs::path final_path = dir / "results.h5", tmp = dir / "results.h5.tmp";
   {
-    H5Handle file(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
-    attr_string(file, "granpipe_version", provenance.version);
-    attr_string(file, "git_commit", provenance.commit);
-    attr_int(file, "seed", static_cast<long long>(provenance.seed));
-    attr_int(file, "threads", provenance.threads);
-    attr_double(file, "wall_seconds", provenance.wall_seconds);
-    attr_string(file, "started", provenance.started);
-    attr_int(file, "complete", provenance.complete);
-    attr_string(file, "pipeline", provenance.pipeline_json);
+    h5::silence_error_stack();
+    const Object file_obj = owned(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT),
+                                  tmp.string() + ": cannot create");
+    const hid_t file = file_obj.id();
+    write_text_attribute(file, "granpipe_version", provenance.version);
+    write_text_attribute(file, "git_commit", provenance.commit);
+    write_attribute(file, "seed", provenance.seed);
+    write_attribute(file, "threads", provenance.threads);
+    write_attribute(file, "wall_seconds", provenance.wall_seconds);
+    write_text_attribute(file, "started", provenance.started);
+    write_attribute(file, "complete", static_cast<int>(provenance.complete));
+    write_text_attribute(file, "pipeline", provenance.pipeline_json);
     for (const auto& [group, r] : results) write_group(file, group, r);
     H5Fflush(file, H5F_SCOPE_GLOBAL);
   }

@@ -1,0 +1,43 @@
+"""Checks a run of pipelines/lattice_packing.json end to end, through an independent reader
+(h5py): every crystal's packing fraction and coordination number equal the analytic values,
+and results.h5 and the frames carry their provenance (pipeline, version, commit, seed)."""
+import json
+import math
+import sys
+
+import h5py
+
+out = sys.argv[1]
+expected = {  # lattice: (phi, z)
+    "square": (math.pi / 4, 4),
+    "triangular": (math.pi / (2 * math.sqrt(3)), 6),
+    "sc": (math.pi / 6, 6),
+    "bcc": (math.pi * math.sqrt(3) / 8, 8),
+    "fcc": (math.pi / (3 * math.sqrt(2)), 12),
+    "hcp": (math.pi / (3 * math.sqrt(2)), 12),
+}
+failures = []
+with h5py.File(f"{out}/results.h5", "r") as f:
+    pipeline = json.loads(f.attrs["pipeline"])
+    for key in ("granpipe_version", "git_commit", "seed"):
+        if key not in f.attrs:
+            failures.append(f"results.h5 lacks the {key} attribute")
+    if int(f.attrs["seed"]) != pipeline["seed"]:
+        failures.append("results.h5 seed differs from the pipeline's")
+    lattices = pipeline["sweep"]["parameters"]["source.params.lattice"]
+    for k, lattice in enumerate(lattices):
+        group = f[f"point_{k:03d}/packing"]
+        phi, z = float(group["phi"][()]), float(group["z_mean"][()])
+        phi_exact, z_exact = expected[lattice]
+        if abs(phi - phi_exact) > 1e-12 * phi_exact:
+            failures.append(f"{lattice}: phi {phi!r}, expected {phi_exact!r}")
+        if z != z_exact:
+            failures.append(f"{lattice}: z {z}, expected {z_exact}")
+        with h5py.File(f"{out}/frames/point_{k:03d}.h5", "r") as frames:
+            provenance = json.loads(frames["granpipe"].attrs["provenance"])
+            if provenance["pipeline"]["source"]["params"]["lattice"] != lattice:
+                failures.append(f"frames/point_{k:03d}.h5 provenance names the wrong lattice")
+if failures:
+    print("\n".join(failures))
+    sys.exit(1)
+print(f"{len(lattices)} crystals: phi and z exact; provenance present")
