@@ -1,6 +1,9 @@
 #include "h5md_source.hpp"
 
 #include <cmath>
+#include <sstream>
+
+#include "granpipe/contacts_by_distance.hpp"
 
 namespace granpipe::h5md {
 
@@ -16,6 +19,10 @@ Schema schema() {
   s.real("radius", 0.5, "radius of every particle when the file stores none (other tools' files)")
       .min(0.0, true)
       .unit("length");
+  s.real("max_overlap", 1e-6,
+         "largest overlap accepted between two particles, as a fraction of the smaller radius: "
+         "about 0 for hard particles, a few percent for soft-sphere (DEM) data")
+      .min(0.0);
   return s;
 }
 
@@ -23,7 +30,8 @@ H5mdSource::H5mdSource(const PluginContext& ctx)
     : reader_(ctx.params.string("file"), ctx.params.string("group"), ctx.params.real("radius")),
       first_(static_cast<long>(ctx.params.integer("first"))),
       last_(static_cast<long>(ctx.params.integer("last"))),
-      stride_(static_cast<long>(ctx.params.integer("stride"))) {
+      stride_(static_cast<long>(ctx.params.integer("stride"))),
+      max_overlap_(ctx.params.real("max_overlap")) {
   const FrameFileInfo& info = reader_.info();
   const long frames = info.frames;
   const std::string held = " (" + info.path + " holds " + std::to_string(frames) + " frames)";
@@ -46,6 +54,17 @@ H5mdSource::H5mdSource(const PluginContext& ctx)
                  "reading the " + std::to_string(frames) + " frames it completed");
   }
   next_ = first_;
+  // The first frame is read and checked now, so that bad particles stop the pipeline at
+  // validation, before anything runs.
+  first_frame_ = read_checked(first_);
+}
+
+Frame H5mdSource::read_checked(long index) const {
+  Frame frame = reader_.read(index);
+  const std::string where = reader_.info().path + ": frame " + std::to_string(index);
+  frame.check(where);
+  check_overlaps(frame, where);
+  return frame;
 }
 
 FrameContent H5mdSource::content() const {
@@ -59,10 +78,34 @@ Source::Work H5mdSource::work() const {
 
 bool H5mdSource::next(Frame& frame) {
   if (next_ > last_) return false;
-  frame = reader_.read(next_);
+  if (first_frame_) {
+    frame = std::move(*first_frame_);
+    first_frame_.reset();
+  } else {
+    frame = read_checked(next_);
+  }
   next_ += stride_;
   ++read_;
   return true;
+}
+
+void H5mdSource::check_overlaps(const Frame& frame, const std::string& where) const {
+  if (frame.size() < 2) return;
+  // Pairs at zero tolerance are exactly the touching and overlapping ones.
+  const DistanceContacts touching = find_contacts_by_distance(frame, 0.0);
+  for (Eigen::Index k = 0; k < touching.pairs; ++k) {
+    const auto i = touching.i[k], j = touching.j[k];
+    const double smaller = std::min(frame.radius[i], frame.radius[j]);
+    const double overlap = -touching.gap[k] / smaller;
+    if (overlap > max_overlap_) {
+      std::ostringstream msg;
+      msg << where << ": particles " << i << " and " << j << " (ids " << frame.id[i] << ", "
+          << frame.id[j] << ") overlap by " << overlap
+          << " of the smaller radius, expected at most " << max_overlap_
+          << " (raise h5md.max_overlap for soft-particle data)";
+      throw InputError(msg.str());
+    }
+  }
 }
 
 void H5mdSource::finish(Results& results) {

@@ -2,6 +2,8 @@
 // `h5md`: saved frames as a source, so that any analyzer can reprocess them without
 // simulating again. Reads granpipe's own frames.h5 bit for bit, and other tools' H5MD
 // files (positions and the box; radii from the `radius` parameter).
+#include <optional>
+
 #include "granpipe/frame_store.hpp"
 #include "granpipe/plugin.hpp"
 
@@ -19,10 +21,16 @@ class H5mdSource : public Source {
   void finish(Results& results) override;
 
  private:
+  // Hard-particle analyses are meaningless on overlapping particles: such input is refused
+  // with the pair and the size of the overlap, unless max_overlap allows it.
+  void check_overlaps(const Frame& frame, const std::string& where) const;
+  Frame read_checked(long index) const;
   FrameReader reader_;
   // The selection: first, first + stride, ... up to last (inclusive).
   long first_ = 0, last_ = 0, stride_ = 1;
   long next_ = 0, read_ = 0;
+  double max_overlap_;
+  std::optional<Frame> first_frame_;
 };
 
 }  // namespace granpipe::h5md

@@ -43,13 +43,15 @@ class H5mdSourceTest : public ::testing::Test {
   }
 
   std::unique_ptr<h5md::H5mdSource> source(const fs::path& file, std::int64_t first,
-                                           std::int64_t last, std::int64_t stride) {
+                                           std::int64_t last, std::int64_t stride,
+                                           double max_overlap = 1e-6) {
     params_ = Params({{"file", file.string()},
                       {"first", first},
                       {"last", last},
                       {"stride", stride},
                       {"group", std::string("")},
-                      {"radius", 0.5}});
+                      {"radius", 0.5},
+                      {"max_overlap", max_overlap}});
     return std::make_unique<h5md::H5mdSource>(
         PluginContext{params_, Seeds{1}, 1, log_, progress_, {}});
   }
@@ -125,3 +127,51 @@ TEST_F(H5mdSourceTest, ReadsTheFinishedFramesOfAnUnfinishedFile) {
 }
 
 }  // namespace
+
+namespace {
+// One frame of two disks of radius 0.5 whose centres are `distance` apart.
+fs::path write_pair(const fs::path& dir, double distance) {
+  const fs::path p = dir / "pair.h5";
+  FrameWriter w(p, "{}");
+  Frame f;
+  f.resize(2, 2);
+  f.position(1, 0) = distance;
+  f.radius.setConstant(0.5);
+  w.append(f);
+  w.close();
+  return p;
+}
+
+// Makes the source and reads every frame: the first frame is checked when the source is
+// made (at validation), later ones as they are read.
+template <class Make>
+std::string error_of(Make&& make) {
+  try {
+    auto s = make();
+    Frame f;
+    while (s->next(f)) {
+    }
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no InputError)";
+}
+}  // namespace
+
+TEST_F(H5mdSourceTest, OverlappingParticlesAreRefusedWithThePair) {
+  const fs::path p = write_pair(dir_, 0.9);  // overlap 0.1 = 20% of the radius
+  EXPECT_EQ(error_of([&] { return source(p, 0, -1, 1); }),
+            p.string() + ": frame 0: particles 0 and 1 (ids 0, 1) overlap by 0.2 of the smaller "
+                         "radius, expected at most 1e-06 (raise h5md.max_overlap for soft-particle data)");
+  EXPECT_EQ(error_of([&] { return source(p, 0, -1, 1, 0.25); }), "(no InputError)");
+}
+
+TEST_F(H5mdSourceTest, ExactlyTouchingParticlesAreAccepted) {
+  EXPECT_EQ(error_of([&] { return source(write_pair(dir_, 1.0), 0, -1, 1); }), "(no InputError)");
+}
+
+TEST_F(H5mdSourceTest, NanPositionsAreRefusedWithFileAndFrame) {
+  const fs::path p = write_pair(dir_, std::nan(""));
+  EXPECT_EQ(error_of([&] { return source(p, 0, -1, 1); }),
+            p.string() + ": frame 0: particle 1 (id 1): expected a finite position, got nan in coordinate 0");
+}
