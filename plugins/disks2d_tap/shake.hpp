@@ -1,0 +1,40 @@
+#pragma once
+// The tap of the paper: heights multiplied by the amplitude A, then Monte Carlo loops in
+// which every disk in turn tries a jump of random length uniform in (0, A - 1) in a random
+// direction, refused when it would overlap another disk, a side wall or the base.
+#include <cstdint>
+#include <vector>
+
+#include "disk_grid.hpp"
+#include "disk_packing.hpp"
+#include "granpipe/random.hpp"
+
+namespace granpipe::disks2d_tap {
+
+// What the dilation multiplies: centre heights (y -> A y, the paper's wording), or
+// heights above the lowest possible centre (y - r_min -> A (y - r_min)), which keeps
+// disks on the base there. Both only ever separate disks.
+enum class Dilation : std::uint8_t { CentreHeight, HeightAboveContact };
+
+struct ShakeStats {
+  std::uint64_t trials = 0, accepted = 0;
+};
+
+class Shaker {
+ public:
+  Shaker(int mc_loops, Dilation dilation) : loops_(mc_loops), dilation_(dilation) {}
+
+  // Taps `packing` with amplitude A and clears every support label. A <= 1 is no tap:
+  // nothing moves and the labels stay.
+  void tap(DiskPacking& packing, double A, RandomStream& rng);
+  const ShakeStats& stats() const { return stats_; }
+
+ private:
+  int loops_;
+  Dilation dilation_;
+  DiskGrid grid_;
+  std::vector<int> cell_;
+  ShakeStats stats_;
+};
+
+}  // namespace granpipe::disks2d_tap

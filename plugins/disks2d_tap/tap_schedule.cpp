@@ -1,0 +1,54 @@
+#include "tap_schedule.hpp"
+
+namespace granpipe::disks2d_tap {
+
+TapSchedule TapSchedule::constant(double A, std::int64_t equilibration, std::int64_t production,
+                                  std::int64_t save_every) {
+  TapSchedule s;
+  s.A_ = A;
+  s.equilibration_ = equilibration;
+  s.save_every_ = save_every;
+  s.total_ = equilibration + production;
+  return s;
+}
+
+TapSchedule TapSchedule::annealed(double A_min, double A_max, std::int64_t steps,
+                                  std::int64_t taps_per_step, std::int64_t cycles,
+                                  std::int64_t save_every) {
+  TapSchedule s;
+  s.annealed_ = true;
+  s.A_min_ = A_min;
+  s.A_max_ = A_max;
+  s.steps_ = steps;
+  s.taps_per_step_ = taps_per_step;
+  s.save_every_ = save_every;
+  s.total_ = 2 * cycles * steps * taps_per_step;
+  return s;
+}
+
+TapStep TapSchedule::at(std::int64_t tap) const {
+  TapStep step;
+  if (!annealed_) {
+    step.amplitude = A_;
+    step.save = tap > equilibration_ && (tap - equilibration_) % save_every_ == 0;
+    return step;
+  }
+  const std::int64_t half_length = steps_ * taps_per_step_;
+  const std::int64_t q = tap - 1;
+  step.cycle = q / half_length;
+  const std::int64_t within = q % half_length;
+  const std::int64_t k = within / taps_per_step_ + 1;  // 1..steps
+  const double dA = (A_max_ - A_min_) / static_cast<double>(steps_);
+  // The last step of each ramp lands exactly on its end value.
+  const bool rising = step.cycle % 2 == 0;
+  if (k == steps_) {
+    step.amplitude = rising ? A_max_ : A_min_;
+  } else {
+    step.amplitude = rising ? A_min_ + dA * static_cast<double>(k)
+                            : A_max_ - dA * static_cast<double>(k);
+  }
+  step.save = (within % taps_per_step_ + 1) % save_every_ == 0;
+  return step;
+}
+
+}  // namespace granpipe::disks2d_tap

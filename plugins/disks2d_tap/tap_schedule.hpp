@@ -1,0 +1,38 @@
+#pragma once
+// The sequence of taps of a run: which amplitude each tap has, which half-cycle of an
+// annealing it belongs to, and whether its configuration is saved.
+#include <cstdint>
+
+namespace granpipe::disks2d_tap {
+
+struct TapStep {
+  double amplitude = 1.0;
+  std::int64_t cycle = -1;  // annealed: half-cycle index (even: A rising, odd: falling)
+  bool save = false;
+};
+
+class TapSchedule {
+ public:
+  // `equilibration` taps at A, then `production` taps saving every `save_every`-th.
+  static TapSchedule constant(double A, std::int64_t equilibration, std::int64_t production,
+                              std::int64_t save_every);
+  // `cycles` times: A rises from A_min to A_max in `steps` steps of `taps_per_step` taps
+  // (A_min + k dA, k = 1..steps), then falls back the same way (A_max - k dA). Half-cycle
+  // 0 is the very first rise, which the paper keeps apart. Saves every `save_every`-th
+  // tap of each step.
+  static TapSchedule annealed(double A_min, double A_max, std::int64_t steps,
+                              std::int64_t taps_per_step, std::int64_t cycles,
+                              std::int64_t save_every);
+
+  std::int64_t total() const { return total_; }
+  // Tap number `tap`, counted from 1 to total().
+  TapStep at(std::int64_t tap) const;
+
+ private:
+  bool annealed_ = false;
+  double A_ = 1.0, A_min_ = 1.0, A_max_ = 1.0;
+  std::int64_t equilibration_ = 0, steps_ = 1, taps_per_step_ = 1, save_every_ = 1;
+  std::int64_t total_ = 0;
+};
+
+}  // namespace granpipe::disks2d_tap

@@ -1,0 +1,212 @@
+#include "tap_source.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+#include "placement.hpp"
+
+namespace granpipe::disks2d_tap {
+
+Schema schema() {
+  Schema s;
+  s.real("width", 20.0, "box width (distance between the side walls)").min(0.0, true).unit("length");
+  s.integer("N", 2000, "number of disks").min(1);
+  s.real("radius", 0.1 + 1.0 / std::numbers::sqrt2,
+         "disk radius (mean radius when radius_spread > 0); the paper's 0.1 + 1/sqrt2")
+      .min(0.0, true)
+      .unit("length");
+  s.real("radius_spread", 0.0,
+         "polydispersity: radii uniform in radius * [1 - spread, 1 + spread]")
+      .range(0.0, 0.5);
+  s.real("initial_fraction", 0.3,
+         "area fraction of the random initial placement (sets the height it fills)")
+      .min(0.0, true)
+      .max(0.5);
+  s.real("delta", 0.01,
+         "length of one fall, and arc length of one roll (see roll_measure); at most the "
+         "smallest radius")
+      .min(0.0, true)
+      .max(1.0)
+      .unit("length");
+  s.choice("roll_measure", {"centre_path", "support_surface"}, std::string("centre_path"),
+           "what delta measures in a roll: the arc of the rolling disk's centre (radius "
+           "r_i + r_s) or of the contact point on the support (radius r_s)");
+  s.choice("move_order", {"sweeps", "random"}, std::string("sweeps"),
+           "sweeps: every unstable disk moves once per sweep, in shuffled order; random: each "
+           "move picks a random unstable disk");
+  s.choice("support_update", {"drop", "keep_touching"}, std::string("drop"),
+           "when a disk moves, the disks it supports lose it (drop), or keep it while still "
+           "touching to 1e-9 radius and still stable (keep_touching)");
+  s.choice("dilation", {"centre_height", "height_above_contact"}, std::string("centre_height"),
+           "a tap multiplies centre heights y (the paper's wording) or heights above the "
+           "lowest centre position y - r_min by A");
+  s.integer("mc_loops", 20, "Monte Carlo loops over all disks after each dilation").min(0);
+  s.choice("protocol", {"constant", "annealed"}, std::string("constant"),
+           "constant: equilibration then production taps at A; annealed: A ramped up and "
+           "down between anneal_A_min and anneal_A_max (the paper's Fig. 8)");
+  s.real("A", 1.1, "tap amplitude of the constant protocol").min(1.0, true);
+  s.integer("equilibration_taps", 1000, "constant protocol: taps before saving").min(0);
+  s.integer("production_taps", 1000, "constant protocol: taps after equilibration").min(1);
+  s.integer("save_every", 10,
+            "save every k-th production tap (annealed: every k-th tap of each amplitude step)")
+      .min(1);
+  s.real("anneal_A_min", 1.0, "annealed protocol: lowest amplitude (1: a tap that does nothing)")
+      .min(1.0);
+  s.real("anneal_A_max", 2.0, "annealed protocol: highest amplitude").min(1.0, true);
+  s.integer("anneal_steps", 20, "annealed protocol: amplitude steps per rise or fall").min(1);
+  s.integer("anneal_taps_per_step", 100, "annealed protocol: taps at each amplitude").min(1);
+  s.integer("anneal_cycles", 5,
+            "annealed protocol: rise-and-fall cycles (the first rise is kept apart)")
+      .min(1);
+  s.integer("replica", 0,
+            "independent copy of the run: each value draws other random numbers (sweep it to "
+            "average over independent simulations)")
+      .min(0);
+  return s;
+}
+
+namespace {
+
+DepositOptions deposit_options(const Params& p) {
+  DepositOptions o;
+  o.delta = p.real("delta");
+  o.measure = p.string("roll_measure") == "centre_path" ? RollMeasure::CentrePath
+                                                         : RollMeasure::SupportSurface;
+  o.order = p.string("move_order") == "sweeps" ? MoveOrder::Sweeps : MoveOrder::Random;
+  o.update = p.string("support_update") == "drop" ? SupportUpdate::Drop
+                                                   : SupportUpdate::KeepTouching;
+  return o;
+}
+
+TapSchedule tap_schedule(const Params& p) {
+  if (p.string("protocol") == "constant") {
+    return TapSchedule::constant(p.real("A"), p.integer("equilibration_taps"),
+                                 p.integer("production_taps"), p.integer("save_every"));
+  }
+  if (!(p.real("anneal_A_max") > p.real("anneal_A_min"))) {
+    std::ostringstream s;
+    s << "disks2d_tap.anneal_A_max: expected more than anneal_A_min = " << p.real("anneal_A_min")
+      << ", got " << p.real("anneal_A_max");
+    throw InputError(s.str());
+  }
+  return TapSchedule::annealed(p.real("anneal_A_min"), p.real("anneal_A_max"),
+                               p.integer("anneal_steps"), p.integer("anneal_taps_per_step"),
+                               p.integer("anneal_cycles"), p.integer("save_every"));
+}
+
+std::vector<double> disk_radii(const Params& p, RandomStream rng) {
+  const auto n = static_cast<std::size_t>(p.integer("N"));
+  const double r = p.real("radius"), spread = p.real("radius_spread");
+  std::vector<double> radii(n, r);
+  if (spread > 0.0) {
+    for (double& ri : radii) ri = r * (1.0 + spread * (2.0 * rng.uniform() - 1.0));
+  }
+  return radii;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+Seeds replica_seeds(const PluginContext& ctx) {
+  return ctx.seeds.derive("replica", static_cast<std::uint64_t>(ctx.params.integer("replica")));
+}
+
+}  // namespace
+
+TapSource::TapSource(const PluginContext& ctx)
+    : progress_(ctx.progress),
+      deposition_rng_(replica_seeds(ctx).stream("deposition")),
+      tap_rng_(replica_seeds(ctx).stream("tap")),
+      schedule_(tap_schedule(ctx.params)),
+      shaker_(static_cast<int>(ctx.params.integer("mc_loops")),
+              ctx.params.string("dilation") == "centre_height" ? Dilation::CentreHeight
+                                                              : Dilation::HeightAboveContact) {
+  const Params& p = ctx.params;
+  const Seeds seeds = replica_seeds(ctx);
+  const std::vector<double> radii = disk_radii(p, seeds.stream("radii"));
+  const double width = p.real("width");
+  const double r_min = p.real("radius") * (1.0 - p.real("radius_spread"));
+  const double r_max = p.real("radius") * (1.0 + p.real("radius_spread"));
+  if (2.0 * r_max > width) {
+    std::ostringstream s;
+    s << "disks2d_tap.radius: expected disks narrower than the box (width " << width
+      << "), got largest diameter " << 2.0 * r_max;
+    throw InputError(s.str());
+  }
+  if (p.real("delta") > r_min) {
+    std::ostringstream s;
+    s << "disks2d_tap.delta: expected at most the smallest radius " << r_min << ", got "
+      << p.real("delta");
+    throw InputError(s.str());
+  }
+  if (p.string("protocol") == "constant" && p.integer("production_taps") < p.integer("save_every")) {
+    throw InputError("disks2d_tap.production_taps: expected at least save_every = " +
+                     std::to_string(p.integer("save_every")) + " (else nothing is saved), got " +
+                     std::to_string(p.integer("production_taps")));
+  }
+  double area = 0.0;
+  for (double ri : radii) area += std::numbers::pi * ri * ri;
+  const double height = std::max(area / (width * p.real("initial_fraction")), 2.0 * r_max);
+  RandomStream placement = seeds.stream("placement");
+  packing_ = place_at_random(width, height, radii, placement, "disks2d_tap.N");
+  deposit_ = std::make_unique<Deposit>(packing_, deposit_options(p));
+}
+
+void TapSource::deposit() {
+  const auto t0 = std::chrono::steady_clock::now();
+  deposit_->run(deposition_rng_);
+  deposition_seconds_ += seconds_since(t0);
+}
+
+bool TapSource::next(Frame& frame) {
+  if (!started_) {
+    deposit();
+    started_ = true;
+  }
+  while (tap_ < schedule_.total()) {
+    const TapStep step = schedule_.at(++tap_);
+    const auto t0 = std::chrono::steady_clock::now();
+    shaker_.tap(packing_, step.amplitude, tap_rng_);
+    deposit_->reset();
+    tap_seconds_ += seconds_since(t0);
+    deposit();
+    progress_.advance(1.0);
+    if (step.save) {
+      packing_.to_frame(frame);
+      frame.tap = tap_;
+      frame.step = tap_;
+      frame.cycle = step.cycle;
+      frame.time = step.amplitude;
+      return true;
+    }
+  }
+  return false;
+}
+
+void TapSource::finish(Results& results) {
+  const DepositStats& d = deposit_->stats();
+  const ShakeStats& m = shaker_.stats();
+  const auto moves = static_cast<double>(d.moves());
+  results.add_scalar("moves", moves, std::nan(""), "",
+                     "falls and rolls of the deposition pseudo-dynamics, initial deposition included");
+  results.add_scalar("falls", static_cast<double>(d.falls), std::nan(""), "", "free falls");
+  results.add_scalar("rolls", static_cast<double>(d.rolls), std::nan(""), "", "rolls");
+  results.add_scalar("taps", static_cast<double>(tap_), std::nan(""), "", "taps done");
+  results.add_scalar("mc_acceptance",
+                     m.trials ? static_cast<double>(m.accepted) / static_cast<double>(m.trials) : 0.0,
+                     std::nan(""), "", "fraction of accepted Monte Carlo jumps during taps");
+  results.add_scalar("deposition_seconds", deposition_seconds_, std::nan(""), "s",
+                     "wall time spent depositing");
+  results.add_scalar("tap_seconds", tap_seconds_, std::nan(""), "s",
+                     "wall time spent dilating and shaking");
+  results.add_scalar("seconds", deposition_seconds_ + tap_seconds_, std::nan(""), "s",
+                     "wall time of the simulation");
+  results.add_scalar("moves_per_second",
+                     deposition_seconds_ > 0 ? moves / deposition_seconds_ : 0.0, std::nan(""),
+                     "1/s", "deposition speed");
+}
+
+}  // namespace granpipe::disks2d_tap

@@ -1,0 +1,533 @@
+// Tests of the disks2d_tap source: exact contacts of single moves, the support rules of
+// the Manna-Khakhar deposition, whole depositions checked against an independent test
+// of stability, the tap, the schedules and reproducibility.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <set>
+
+#include "deposit.hpp"
+#include "disk_packing.hpp"
+#include "granpipe/errors.hpp"
+#include "granpipe/plugin.hpp"
+#include "placement.hpp"
+#include "random_order.hpp"
+#include "shake.hpp"
+#include "tap_schedule.hpp"
+#include "tap_source.hpp"
+
+namespace dt = granpipe::disks2d_tap;
+using granpipe::Frame;
+using granpipe::InputError;
+using granpipe::RandomStream;
+using granpipe::Seeds;
+using granpipe::Wall;
+namespace partner = granpipe::partner;
+
+namespace {
+
+const double kR = 0.1 + 1.0 / std::numbers::sqrt2;  // the paper's radius
+
+double distance(const dt::DiskPacking& p, std::size_t i, std::size_t j) {
+  return std::hypot(p.x[i] - p.x[j], p.y[i] - p.y[j]);
+}
+
+// Moves disk i until a move of the given kind happens; fails after `limit` moves.
+void move_until(dt::Deposit& d, std::int32_t i, dt::Move wanted, int limit = 100000) {
+  for (int n = 0; n < limit; ++n) {
+    if (d.move(i) == wanted) return;
+  }
+  FAIL() << "disk " << i << " never made move " << static_cast<int>(wanted);
+}
+
+// Independent check of a finished deposition, from the frame's left/right labels:
+// no overlaps, every disk on the base or touching two supports with its centre's x
+// between their contact points.
+void expect_deposited(const dt::DiskPacking& p) {
+  const double tol = 1e-9;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    for (std::size_t j = i + 1; j < p.size(); ++j) {
+      ASSERT_GE(distance(p, i, j), (p.r[i] + p.r[j]) * (1.0 - tol)) << i << " overlaps " << j;
+    }
+    ASSERT_GE(p.x[i] - p.r[i], -tol * p.r[i]);
+    ASSERT_LE(p.x[i] + p.r[i], p.width + tol * p.r[i]);
+    ASSERT_GE(p.y[i] - p.r[i], -tol * p.r[i]);
+  }
+  Frame f;
+  p.to_frame(f);
+  ASSERT_TRUE(f.supports.has_value());
+  for (Eigen::Index k = 0; k < f.size(); ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    const std::int64_t left = f.supports->left[k], right = f.supports->right[k];
+    const std::int64_t base = partner::wall(Wall::YLow);
+    if (left == base || right == base) {
+      EXPECT_EQ(left, base);
+      EXPECT_EQ(right, base);
+      EXPECT_NEAR(p.y[i], p.r[i], 1e-12 * p.r[i]) << "disk " << i << " labelled on the base";
+      continue;
+    }
+    ASSERT_NE(left, partner::none) << "disk " << i << " has no left support";
+    ASSERT_NE(right, partner::none) << "disk " << i << " has no right support";
+    ASSERT_NE(left, right);
+    // Touching, and where: the contact point's x.
+    auto contact_x = [&](std::int64_t s) {
+      if (s == partner::wall(Wall::XLow)) {
+        EXPECT_NEAR(p.x[i], p.r[i], tol * p.r[i]);
+        return 0.0;
+      }
+      if (s == partner::wall(Wall::XHigh)) {
+        EXPECT_NEAR(p.x[i], p.width - p.r[i], tol * p.r[i]);
+        return p.width;
+      }
+      EXPECT_TRUE(partner::is_particle(s));
+      const auto j = static_cast<std::size_t>(s);
+      EXPECT_NEAR(distance(p, i, j), p.r[i] + p.r[j], tol * p.r[i]) << i << " and " << j;
+      return p.x[i] + (p.x[j] - p.x[i]) * p.r[i] / (p.r[i] + p.r[j]);
+    };
+    EXPECT_LE(contact_x(left), p.x[i]) << "disk " << i;
+    EXPECT_GE(contact_x(right), p.x[i]) << "disk " << i;
+  }
+}
+
+// Pairs of disks that are each other's supports.
+int mutual_pairs(const dt::DiskPacking& p) {
+  Frame f;
+  p.to_frame(f);
+  int pairs = 0;
+  for (Eigen::Index i = 0; i < f.size(); ++i) {
+    const std::int64_t r = f.supports->right[i];
+    if (partner::is_particle(r) && f.supports->left[r] == i) ++pairs;
+  }
+  return pairs;
+}
+
+dt::DiskPacking random_bed(std::size_t n, double width, double spread, std::uint64_t seed) {
+  RandomStream rng(seed);
+  std::vector<double> radii(n, kR);
+  for (double& r : radii) r *= 1.0 + spread * (2.0 * rng.uniform() - 1.0);
+  const double height = static_cast<double>(n) * std::numbers::pi * kR * kR / (width * 0.3);
+  return dt::place_at_random(width, height, radii, rng, "test");
+}
+
+}  // namespace
+
+TEST(Disks2dTapFall, StopsExactlyOnTheBase) {
+  dt::DiskPacking p;
+  p.width = 10.0;
+  p.add(5.0, 7.3, kR);
+  dt::Deposit d(p, {});
+  RandomStream rng(1);
+  d.run(rng);
+  EXPECT_EQ(p.y[0], kR);  // placed at contact exactly
+  EXPECT_EQ(p.x[0], 5.0);
+  EXPECT_TRUE(p.on_base(0));
+  // delta = 0.01: 7.3 - r needs ceil((7.3 - r) / 0.01) falls, the last one shortened.
+  EXPECT_EQ(d.stats().falls, static_cast<std::uint64_t>(std::ceil((7.3 - kR) / 0.01)));
+  EXPECT_EQ(d.stats().rolls, 0u);
+}
+
+TEST(Disks2dTapFall, StopsExactlyOnARestingDisk) {
+  for (const double offset : {0.0, 0.3, -1.1, 1.6}) {  // 1.6: a grazing contact (2r = 1.614)
+    dt::DiskPacking p;
+    p.width = 10.0;
+    p.add(5.0, kR, kR);             // on the base
+    p.add(5.0 + offset, 9.0, kR);  // falls onto it
+    dt::Deposit d(p, {});
+    move_until(d, 1, dt::Move::LandOnDisk);
+    EXPECT_NEAR(distance(p, 0, 1), 2.0 * kR, 1e-12 * 2.0 * kR) << "offset " << offset;
+    EXPECT_EQ(p.x[1], 5.0 + offset);
+    EXPECT_EQ(p.first[1], 0);
+    EXPECT_EQ(p.second[1], dt::kNone);
+    ASSERT_EQ(d.supported_by(0).size(), 1u);
+    EXPECT_EQ(d.supported_by(0)[0], 1);
+  }
+}
+
+TEST(Disks2dTapRoll, MovesTheCentreAnArcDeltaAroundItsSupport) {
+  for (const auto measure : {dt::RollMeasure::CentrePath, dt::RollMeasure::SupportSurface}) {
+    dt::DiskPacking p;
+    p.width = 10.0;
+    p.add(5.0, kR, kR);
+    const double angle0 = 1.2;  // from the horizontal
+    p.add(5.0 + 2 * kR * std::cos(angle0), kR + 2 * kR * std::sin(angle0), kR);
+    p.first[1] = 0;
+    dt::DepositOptions o;
+    o.delta = 0.02;
+    o.measure = measure;
+    dt::Deposit d(p, o);
+    ASSERT_EQ(d.move(1), dt::Move::Roll);
+    const double angle1 = std::atan2(p.y[1] - p.y[0], p.x[1] - p.x[0]);
+    const double divisor = measure == dt::RollMeasure::CentrePath ? 2 * kR : kR;
+    EXPECT_NEAR(angle0 - angle1, o.delta / divisor, 1e-12);  // downhill: to the right
+    EXPECT_NEAR(distance(p, 0, 1), 2 * kR, 1e-12 * kR);
+  }
+}
+
+TEST(Disks2dTapRoll, LosesItsSupportAtTheSupportsHeightAndFalls) {
+  dt::DiskPacking p;
+  p.width = 10.0;
+  p.add(5.0, kR, kR);
+  p.add(5.0 - 0.4, 9.0, kR);  // lands left of the top: rolls to the left
+  dt::Deposit d(p, {});
+  move_until(d, 1, dt::Move::LandOnDisk);
+  move_until(d, 1, dt::Move::RollOff);
+  EXPECT_EQ(p.y[1], p.y[0]);  // cut exactly at the support's height
+  EXPECT_NEAR(p.x[1], 5.0 - 2 * kR, 1e-12 * kR);
+  EXPECT_EQ(p.first[1], dt::kNone);
+  EXPECT_TRUE(d.supported_by(0).empty());
+  // Lost it: the next move is a free fall beside it, down to the base.
+  EXPECT_EQ(d.move(1), dt::Move::LandOnBase);
+  EXPECT_EQ(p.y[1], kR);
+  EXPECT_TRUE(d.done());
+}
+
+TEST(Disks2dTapRoll, ComesToRestAgainstAWall) {
+  // A channel 3r wide: a disk lands on one resting against the left wall and rolls into
+  // the right wall, where the wall and the disk below hold it.
+  dt::DiskPacking p;
+  p.width = 3.0 * kR;
+  p.add(kR, kR, kR);
+  p.add(1.6 * kR, 12.0, kR);
+  dt::Deposit d(p, {});
+  RandomStream rng(2);
+  d.run(rng);
+  EXPECT_NEAR(p.x[1], 2.0 * kR, 1e-12 * kR);  // touches the right wall
+  EXPECT_NEAR(p.y[1], kR + std::sqrt(3.0) * kR, 1e-12 * kR);
+  EXPECT_NEAR(distance(p, 0, 1), 2 * kR, 1e-12 * kR);
+  Frame f;
+  p.to_frame(f);
+  EXPECT_EQ(f.supports->left[1], 0);
+  EXPECT_EQ(f.supports->right[1], partner::wall(Wall::XHigh));
+  EXPECT_EQ(f.supports->left[0], partner::wall(Wall::YLow));
+  EXPECT_EQ(f.supports->right[0], partner::wall(Wall::YLow));
+}
+
+TEST(Disks2dTapRoll, ADiskExactlyOnTopRollsAwayFromTheWall) {
+  // Both disks touch the left wall, so the upper lands exactly on top: downhill is
+  // undefined and the disk must not settle against the wall on a single support.
+  dt::DiskPacking p;
+  p.width = 10.0;
+  p.add(kR, kR, kR);
+  p.add(kR, 8.0, kR);
+  dt::Deposit d(p, {});
+  move_until(d, 1, dt::Move::LandOnDisk);
+  EXPECT_EQ(p.x[1], kR);
+  EXPECT_EQ(d.move(1), dt::Move::Roll);
+  EXPECT_GT(p.x[1], kR);
+  RandomStream rng(3);
+  d.run(rng);
+  EXPECT_NEAR(p.x[1], 3.0 * kR, 1e-12 * kR);  // rolled off to the right, onto the base
+  EXPECT_EQ(p.y[1], kR);
+}
+
+TEST(Disks2dTapSupports, DisksRestingOnAMovingDiskLoseIt) {
+  // S on the base; M rolls on S, 20 degrees up; T rests stably on M (30 degrees up it,
+  // out of M's way) and on Q, on the base.
+  dt::DiskPacking p;
+  p.width = 20.0;
+  const double a20 = std::numbers::pi / 9, a30 = std::numbers::pi / 6;
+  p.add(5.0, kR, kR);                                                          // 0: S
+  p.add(5.0 + 2 * kR * std::cos(a20), kR + 2 * kR * std::sin(a20), kR);        // 1: M
+  const double tx = p.x[1] + 2 * kR * std::cos(a30), ty = p.y[1] + 2 * kR * std::sin(a30);
+  p.add(tx + std::sqrt(4 * kR * kR - (ty - kR) * (ty - kR)), kR, kR);          // 2: Q
+  p.add(tx, ty, kR);                                                           // 3: T
+  p.first[1] = 0;
+  p.first[3] = 1;
+  p.second[3] = 2;
+  ASSERT_NEAR(distance(p, 1, 3), 2 * kR, 1e-12);
+  ASSERT_NEAR(distance(p, 2, 3), 2 * kR, 1e-12);
+  ASSERT_TRUE(p.x[3] > p.x[1] && p.x[3] < p.x[2]) << "T must rest stably";
+  dt::Deposit dep(p, {});
+  ASSERT_EQ(dep.unstable().size(), 1u);  // only M
+  ASSERT_EQ(dep.supported_by(1).size(), 1u);
+
+  ASSERT_EQ(dep.move(1), dt::Move::Roll);
+  EXPECT_EQ(p.first[3], 2);  // Q became T's first support
+  EXPECT_EQ(p.second[3], dt::kNone);
+  EXPECT_TRUE(dep.supported_by(1).empty());
+  ASSERT_EQ(dep.supported_by(2).size(), 1u);
+  EXPECT_EQ(dep.supported_by(2)[0], 3);
+  EXPECT_EQ(dep.unstable().size(), 2u);  // M and T
+  RandomStream rng(4);
+  dep.run(rng);
+  expect_deposited(p);
+}
+
+TEST(Disks2dTapSupports, ALoneWallHoldsNothingUp) {
+  // A disk held by a disk and the right wall falls when that disk moves away.
+  dt::DiskPacking p;
+  p.width = 3.0 * kR;
+  p.add(kR, kR + 2.0, kR);  // 0: lifted off the base, about to fall
+  p.add(2.0 * kR, kR + 2.0 + std::sqrt(3.0) * kR, kR);  // 1: against the right wall on 0
+  p.first[1] = 0;
+  p.second[1] = dt::kRightWall;
+  dt::Deposit d(p, {});
+  ASSERT_EQ(d.move(0), dt::Move::Fall);
+  EXPECT_EQ(p.first[1], dt::kNone);
+  EXPECT_EQ(p.second[1], dt::kNone);
+}
+
+TEST(Disks2dTapDeposition, SequentialDepositionMakesNoMutualContacts) {
+  dt::DiskPacking p;
+  p.width = 12.0;
+  RandomStream rng(5);
+  dt::Deposit d(p, {});
+  for (int k = 0; k < 150; ++k) {
+    p.add(rng.uniform(kR, p.width - kR), p.top() + kR + rng.uniform(0.0, 1.0), kR);
+    d.reset();
+    d.run(rng);
+    ASSERT_TRUE(d.done());
+  }
+  expect_deposited(p);
+  EXPECT_EQ(mutual_pairs(p), 0);
+  // With no arches, Eq. (4) gives <z>_support = 2 (1 + n(1)/N) with n(1) = N: 4 exactly;
+  // and the direct count gives two distinct supports per disk off the base.
+  Frame f;
+  p.to_frame(f);
+  for (Eigen::Index i = 0; i < f.size(); ++i) {
+    if (f.supports->left[i] != partner::wall(Wall::YLow)) {
+      EXPECT_NE(f.supports->left[i], f.supports->right[i]);
+    }
+  }
+}
+
+TEST(Disks2dTapDeposition, EndsWithEveryDiskStableAndNoOverlap) {
+  for (const auto order : {dt::MoveOrder::Sweeps, dt::MoveOrder::Random}) {
+    for (const auto update : {dt::SupportUpdate::Drop, dt::SupportUpdate::KeepTouching}) {
+      for (const double spread : {0.0, 0.3}) {
+        dt::DiskPacking p = random_bed(300, 15.0, spread, 6);
+        dt::DepositOptions o;
+        o.delta = 0.05;
+        o.order = order;
+        o.update = update;
+        dt::Deposit d(p, o);
+        RandomStream rng(7);
+        d.run(rng);
+        ASSERT_TRUE(d.done());
+        SCOPED_TRACE(testing::Message() << "order " << int(order) << " update " << int(update)
+                                        << " spread " << spread);
+        expect_deposited(p);
+        EXPECT_NO_THROW(p.check("test", 1e-9));
+        EXPECT_GT(mutual_pairs(p), 0);  // simultaneous deposition builds arches
+      }
+    }
+  }
+}
+
+TEST(Disks2dTapShake, DilationScalesHeightsAndMonteCarloNeverOverlaps) {
+  dt::DiskPacking p = random_bed(300, 15.0, 0.2, 8);
+  dt::Deposit d(p, {.delta = 0.05});
+  RandomStream rng(9);
+  d.run(rng);
+  const std::vector<double> y0 = p.y;
+
+  dt::DiskPacking dilated = p;
+  dt::Shaker(0, dt::Dilation::CentreHeight).tap(dilated, 1.3, rng);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    EXPECT_EQ(dilated.y[i], 1.3 * y0[i]);
+    EXPECT_EQ(dilated.first[i], dt::kNone);
+  }
+  dt::DiskPacking above = p;
+  dt::Shaker(0, dt::Dilation::HeightAboveContact).tap(above, 1.3, rng);
+  const double r_min = p.min_radius();
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    EXPECT_NEAR(above.y[i] - r_min, 1.3 * (y0[i] - r_min), 1e-12 * y0[i]);
+  }
+
+  for (const double A : {1.05, 1.5, 2.0}) {
+    dt::DiskPacking q = p;
+    dt::Shaker shaker(20, dt::Dilation::CentreHeight);
+    shaker.tap(q, A, rng);
+    EXPECT_GT(shaker.stats().accepted, 0u);
+    EXPECT_LT(shaker.stats().accepted, shaker.stats().trials);
+    double moved = 0;
+    for (std::size_t i = 0; i < q.size(); ++i) {
+      moved = std::max(moved, std::abs(q.x[i] - p.x[i]));
+      ASSERT_GE(q.x[i] - q.r[i], 0.0);
+      ASSERT_LE(q.x[i] + q.r[i], q.width);
+      ASSERT_GE(q.y[i] - q.r[i], 0.0);
+      for (std::size_t j = i + 1; j < q.size(); ++j) {
+        // Pairs touching before the tap may keep their distance to rounding.
+        ASSERT_GE(distance(q, i, j), (q.r[i] + q.r[j]) * (1.0 - 1e-12));
+      }
+    }
+    EXPECT_GT(moved, 0.0);
+    EXPECT_LE(moved, 20 * (A - 1.0));
+  }
+}
+
+TEST(Disks2dTapShake, AmplitudeOneIsNoTap) {
+  dt::DiskPacking p = random_bed(100, 10.0, 0.0, 10);
+  dt::Deposit d(p, {.delta = 0.05});
+  RandomStream rng(11);
+  d.run(rng);
+  dt::DiskPacking q = p;
+  dt::Shaker(20, dt::Dilation::CentreHeight).tap(q, 1.0, rng);
+  EXPECT_EQ(q.x, p.x);
+  EXPECT_EQ(q.y, p.y);
+  EXPECT_EQ(q.first, p.first);
+  EXPECT_EQ(q.second, p.second);
+}
+
+TEST(Disks2dTapPacking, CheckRejectsBadConfigurations) {
+  dt::DiskPacking p;
+  p.width = 10.0;
+  p.add(2.0, 2.0, kR);
+  p.add(2.0 + 1.5 * kR, 2.0, kR);  // overlaps the first
+  EXPECT_THROW(p.check("scene", 1e-9), InputError);
+  p.x[1] = 2.0 + 2.0 * kR;
+  EXPECT_NO_THROW(p.check("scene", 1e-9));
+  p.y[1] = std::nan("");
+  EXPECT_THROW(p.check("scene", 1e-9), InputError);
+  p.y[1] = 2.0;
+  p.x[1] = 10.0 - 0.5 * kR;  // through the right wall
+  EXPECT_THROW(p.check("scene", 1e-9), InputError);
+}
+
+TEST(Disks2dTapPlacement, PlacesWithoutOverlapOrSaysWhyNot) {
+  RandomStream rng(12);
+  const dt::DiskPacking p = dt::place_at_random(10.0, 30.0, std::vector<double>(60, kR), rng, "t");
+  EXPECT_EQ(p.size(), 60u);
+  EXPECT_NO_THROW(p.check("placed", 0.0));
+  // A row of a box 2r + 0.1 high holds at most 10 / 2r = 6 disks.
+  EXPECT_THROW(dt::place_at_random(10.0, 2 * kR + 0.1, std::vector<double>(7, kR), rng, "t", 200),
+               InputError);
+}
+
+TEST(Disks2dTapRandomOrder, ShufflesAreUniformPermutations) {
+  // All 6 orders of 3 disks, equally often: chi-square with 5 degrees of freedom stays
+  // below 20.5 (p = 0.001) for an unbiased shuffle.
+  RandomStream rng(13);
+  std::map<std::vector<std::int32_t>, int> seen;
+  const int trials = 60000;
+  for (int t = 0; t < trials; ++t) {
+    std::vector<std::int32_t> v{0, 1, 2};
+    dt::shuffle(v, rng);
+    ++seen[v];
+  }
+  ASSERT_EQ(seen.size(), 6u);
+  double chi2 = 0;
+  for (const auto& [order, count] : seen) chi2 += std::pow(count - trials / 6.0, 2) / (trials / 6.0);
+  EXPECT_LT(chi2, 20.5);
+  std::vector<int> hits(7, 0);
+  for (int t = 0; t < 70000; ++t) ++hits[dt::uniform_below(rng, 7)];
+  chi2 = 0;
+  for (int h : hits) chi2 += std::pow(h - 10000.0, 2) / 10000.0;
+  EXPECT_LT(chi2, 22.5);  // 6 degrees of freedom, p = 0.001
+}
+
+TEST(Disks2dTapSchedule, ConstantSavesEveryKthProductionTap) {
+  const auto s = dt::TapSchedule::constant(1.2, 5, 20, 10);
+  EXPECT_EQ(s.total(), 25);
+  std::vector<std::int64_t> saved;
+  for (std::int64_t t = 1; t <= s.total(); ++t) {
+    EXPECT_EQ(s.at(t).amplitude, 1.2);
+    if (s.at(t).save) saved.push_back(t);
+  }
+  EXPECT_EQ(saved, (std::vector<std::int64_t>{15, 25}));
+}
+
+TEST(Disks2dTapSchedule, AnnealedRampsUpAndDown) {
+  const auto s = dt::TapSchedule::annealed(1.0, 2.0, 4, 3, 2, 3);
+  EXPECT_EQ(s.total(), 2 * 2 * 4 * 3);
+  std::vector<double> amplitudes;
+  std::vector<std::int64_t> cycles;
+  int saves = 0;
+  for (std::int64_t t = 1; t <= s.total(); t += 3) {
+    amplitudes.push_back(s.at(t).amplitude);
+    cycles.push_back(s.at(t).cycle);
+    EXPECT_FALSE(s.at(t).save);
+    EXPECT_TRUE(s.at(t + 2).save);  // the third tap of each step
+  }
+  for (std::int64_t t = 1; t <= s.total(); ++t) saves += s.at(t).save;
+  EXPECT_EQ(saves, 16);
+  EXPECT_EQ(amplitudes, (std::vector<double>{1.25, 1.5, 1.75, 2.0, 1.75, 1.5, 1.25, 1.0, 1.25,
+                                             1.5, 1.75, 2.0, 1.75, 1.5, 1.25, 1.0}));
+  EXPECT_EQ(cycles, (std::vector<std::int64_t>{0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3}));
+}
+
+namespace {
+
+granpipe::Params source_params(const std::map<std::string, granpipe::ParamValue>& overrides) {
+  std::map<std::string, granpipe::ParamValue> values;
+  const granpipe::Schema schema = dt::schema();
+  for (const auto& spec : schema.specs()) values[spec.name] = *spec.default_value;
+  for (const auto& [k, v] : overrides) values[k] = v;
+  return granpipe::Params(values);
+}
+
+std::vector<Frame> run_source(const granpipe::Params& params, std::uint64_t seed,
+                              granpipe::Results* results = nullptr) {
+  granpipe::Log log;
+  log.set_quiet(true);
+  granpipe::Progress progress;
+  progress.set_enabled(false);
+  granpipe::PluginContext ctx{params, Seeds(seed), 1, log, progress, {}};
+  dt::TapSource source(ctx);
+  std::vector<Frame> frames;
+  Frame f;
+  while (source.next(f)) frames.push_back(f);
+  if (results) source.finish(*results);
+  return frames;
+}
+
+}  // namespace
+
+TEST(Disks2dTapSource, SameSeedSameFrames) {
+  const auto params =
+      source_params({{"N", std::int64_t{120}}, {"width", 10.0}, {"delta", 0.05},
+                     {"equilibration_taps", std::int64_t{3}}, {"production_taps", std::int64_t{4}},
+                     {"save_every", std::int64_t{2}}, {"A", 1.3}});
+  granpipe::Results results;
+  const auto a = run_source(params, 77, &results), b = run_source(params, 77);
+  const auto c = run_source(params, 78);
+  auto other_replica = params.values();
+  other_replica["replica"] = std::int64_t{1};
+  const auto d = run_source(granpipe::Params(other_replica), 77);
+  ASSERT_EQ(a.size(), 2u);
+  ASSERT_EQ(b.size(), 2u);
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    EXPECT_EQ(a[k].tap, static_cast<std::int64_t>(5 + 2 * k));
+    EXPECT_EQ(a[k].time, 1.3);
+    EXPECT_EQ(a[k].dim, 2);
+    EXPECT_TRUE((a[k].position == b[k].position).all());
+    EXPECT_TRUE((a[k].supports->left == b[k].supports->left).all());
+    EXPECT_TRUE((a[k].supports->right == b[k].supports->right).all());
+    EXPECT_FALSE((a[k].position == c[k].position).all());
+    EXPECT_FALSE((a[k].position == d[k].position).all());
+    EXPECT_NO_THROW(a[k].check("frame"));
+  }
+  EXPECT_EQ(results.scalar("taps").value, 7.0);
+  EXPECT_EQ(results.scalar("moves").value,
+            results.scalar("falls").value + results.scalar("rolls").value);
+  EXPECT_GT(results.scalar("moves").value, 0.0);
+}
+
+TEST(Disks2dTapSource, AnnealedFramesCarryCycleAndAmplitude) {
+  const auto params = source_params(
+      {{"N", std::int64_t{60}}, {"width", 8.0}, {"delta", 0.05}, {"protocol", std::string("annealed")},
+       {"anneal_steps", std::int64_t{2}}, {"anneal_taps_per_step", std::int64_t{1}},
+       {"anneal_cycles", std::int64_t{1}}, {"save_every", std::int64_t{1}},
+       {"anneal_A_min", 1.0}, {"anneal_A_max", 1.4}});
+  const auto frames = run_source(params, 5);
+  ASSERT_EQ(frames.size(), 4u);
+  const double amplitudes[] = {1.2, 1.4, 1.2, 1.0};
+  const std::int64_t cycles[] = {0, 0, 1, 1};
+  for (std::size_t k = 0; k < 4; ++k) {
+    EXPECT_DOUBLE_EQ(frames[k].time, amplitudes[k]);
+    EXPECT_EQ(frames[k].cycle, cycles[k]);
+    EXPECT_EQ(frames[k].tap, static_cast<std::int64_t>(k + 1));
+  }
+}
+
+TEST(Disks2dTapSource, RejectsImpossibleParameters) {
+  EXPECT_THROW(run_source(source_params({{"delta", 0.9}}), 1), InputError);  // > radius
+  EXPECT_THROW(run_source(source_params({{"width", 1.5}}), 1), InputError);  // disk too wide
+  EXPECT_THROW(run_source(source_params({{"protocol", std::string("annealed")},
+                                         {"anneal_A_min", 2.0}, {"anneal_A_max", 1.5}}),
+                          1),
+               InputError);
+  EXPECT_THROW(run_source(source_params({{"production_taps", std::int64_t{5}}}), 1), InputError);
+}
