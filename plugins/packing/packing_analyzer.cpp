@@ -181,6 +181,7 @@ void PackingAnalyzer::consume(const Frame& frame, FrameCache& cache) {
     z_.add(m.z_mean);
     z_walls_.add(m.z_mean_with_walls);
   }
+  by_cycle_.add(frame, {m.phi, m.z_mean});
   if (settings_.cuts_step > 0.0) phi_cuts_.add(m.phi_cuts);
   if (settings_.profile_step > 0.0) {
     // Heights a frame does not reach (above its surface) have an empty cut: zeros, so
@@ -208,6 +209,18 @@ void PackingAnalyzer::finish(Results& results) {
   mean("number_density", density_, per_volume, "particle centres in the region per unit volume");
   mean("z_mean", z_, "", "mean number of particle contacts of the particles centred in the region");
   mean("z_mean_with_walls", z_walls_, "", "z_mean with particle-wall contacts counted");
+  if (!by_cycle_.empty()) {
+    results.add_table("by_cycle", by_cycle_.table("phi and z_mean averaged over the frames of each "
+                                                  "(cycle, time); annealed tapping: time = A"));
+    Plot plot;
+    plot.table = "by_cycle";
+    plot.x = "time";
+    plot.y = {"phi"};
+    plot.xlabel = "frame time (annealed tapping: amplitude A)";
+    plot.ylabel = "packing fraction";
+    plot.title = "packing fraction per cycle";
+    results.add_plot("by_cycle", plot);
+  }
   if (settings_.cuts_step > 0.0) {
     mean("phi_cuts", phi_cuts_, "",
          "mean area fraction of horizontal cuts through the region (stereological estimate of phi)");

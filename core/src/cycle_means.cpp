@@ -1,0 +1,34 @@
+#include "granpipe/cycle_means.hpp"
+
+#include "granpipe/errors.hpp"
+
+namespace granpipe {
+
+void CycleMeans::add(const Frame& frame, const std::vector<double>& values) {
+  if (frame.cycle < 0) return;
+  if (values.size() != names_.size()) throw InternalError("CycleMeans: one value per quantity expected");
+  auto& means = means_[{frame.cycle, frame.time}];
+  means.resize(names_.size());
+  for (std::size_t q = 0; q < values.size(); ++q) means[q].add(values[q]);
+}
+
+Table CycleMeans::table(const std::string& doc) const {
+  std::vector<std::string> columns{"cycle", "time", "frames"};
+  for (const auto& n : names_) {
+    columns.push_back(n);
+    columns.push_back(n + "_err");
+  }
+  Table t(columns, doc);
+  for (const auto& [key, means] : means_) {
+    std::vector<double> row{static_cast<double>(key.first), key.second,
+                            static_cast<double>(means.front().count())};
+    for (const auto& m : means) {
+      row.push_back(m.mean());
+      row.push_back(m.standard_error());
+    }
+    t.add_row(row);
+  }
+  return t;
+}
+
+}  // namespace granpipe
