@@ -19,14 +19,6 @@ std::uint64_t hash_name(std::string_view s) {
 }
 }  // namespace
 
-std::uint64_t RandomStream::below(std::uint64_t n) {
-  // Rejection keeps the distribution exactly uniform.
-  const std::uint64_t limit = ~std::uint64_t{0} - (~std::uint64_t{0} % n);
-  std::uint64_t x;
-  do x = engine_(); while (x >= limit);
-  return x % n;
-}
-
 double RandomStream::normal() {
   if (has_spare_) {
     has_spare_ = false;

@@ -181,15 +181,10 @@ void ArchesAnalyzer::finish(Results& results) {
                    n_per_particle_[s].standard_error()});
   }
   results.add_table("arch_size_distribution", std::move(sizes));
-  Plot plot;
-  plot.table = "arch_size_distribution";
-  plot.x = "s";
-  plot.y = {"n_s_per_N"};
-  plot.xlabel = "arch size s";
-  plot.ylabel = "n(s) / N";
-  plot.title = "arch size distribution";
-  plot.logy = true;
-  results.add_plot("arch_size_distribution_plot", std::move(plot));
+  results.add_plot("arch_size_distribution_plot",
+                   {.table = "arch_size_distribution", .x = "s", .y = {"n_s_per_N"},
+                    .xlabel = "arch size s", .ylabel = "n(s) / N",
+                    .title = "arch size distribution", .logy = true});
 
   const std::string xlabel = "horizontal span x (mean disk diameters)";
   for (const auto& [size, histogram] : span_by_size_) {

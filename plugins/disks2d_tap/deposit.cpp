@@ -6,7 +6,6 @@
 #include <sstream>
 
 #include "contact_geometry.hpp"
-#include "random_order.hpp"
 #include "granpipe/errors.hpp"
 
 namespace granpipe::disks2d_tap {
@@ -389,12 +388,12 @@ void Deposit::note_zero_move(std::int32_t i, bool moved) {
 
 void Deposit::run(RandomStream& rng) {
   if (options_.order == MoveOrder::Random) {
-    while (!unstable_.empty()) move(unstable_[uniform_below(rng, unstable_.size())]);
+    while (!unstable_.empty()) move(unstable_[rng.below(unstable_.size())]);
     return;
   }
   while (!unstable_.empty()) {
     sweep_.assign(unstable_.begin(), unstable_.end());
-    shuffle(sweep_, rng);
+    rng.shuffle(sweep_);
     for (const std::int32_t i : sweep_) {
       if (slot_[static_cast<std::size_t>(i)] >= 0) move(i);
     }

@@ -212,14 +212,10 @@ void PackingAnalyzer::finish(Results& results) {
   if (!by_cycle_.empty()) {
     results.add_table("by_cycle", by_cycle_.table("phi and z_mean averaged over the frames of each "
                                                   "(cycle, time); annealed tapping: time = A"));
-    Plot plot;
-    plot.table = "by_cycle";
-    plot.x = "time";
-    plot.y = {"phi"};
-    plot.xlabel = "frame time (annealed tapping: amplitude A)";
-    plot.ylabel = "packing fraction";
-    plot.title = "packing fraction per cycle";
-    results.add_plot("by_cycle", plot);
+    results.add_plot("by_cycle", {.table = "by_cycle", .x = "time", .y = {"phi"},
+                                  .xlabel = "frame time (annealed tapping: amplitude A)",
+                                  .ylabel = "packing fraction",
+                                  .title = "packing fraction per cycle"});
   }
   if (settings_.cuts_step > 0.0) {
     mean("phi_cuts", phi_cuts_, "",
@@ -236,14 +232,10 @@ void PackingAnalyzer::finish(Results& results) {
                  profile_[k].standard_error()});
     }
     results.add_table("profile", std::move(t));
-    Plot plot;
-    plot.table = "profile";
-    plot.x = "height";
-    plot.y = {"phi"};
-    plot.xlabel = "height above the base / mean diameter";
-    plot.ylabel = "area fraction of horizontal cuts";
-    plot.title = "vertical packing-fraction profile";
-    results.add_plot("profile", plot);
+    results.add_plot("profile", {.table = "profile", .x = "height", .y = {"phi"},
+                                 .xlabel = "height above the base / mean diameter",
+                                 .ylabel = "area fraction of horizontal cuts",
+                                 .title = "vertical packing-fraction profile"});
   }
 }
 

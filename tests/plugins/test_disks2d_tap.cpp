@@ -13,7 +13,6 @@
 #include "granpipe/errors.hpp"
 #include "granpipe/plugin.hpp"
 #include "placement.hpp"
-#include "random_order.hpp"
 #include "shake.hpp"
 #include "tap_schedule.hpp"
 #include "tap_source.hpp"
@@ -394,28 +393,6 @@ TEST(Disks2dTapPlacement, PlacesWithoutOverlapOrSaysWhyNot) {
   // A row of a box 2r + 0.1 high holds at most 10 / 2r = 6 disks.
   EXPECT_THROW(dt::place_at_random(10.0, 2 * kR + 0.1, std::vector<double>(7, kR), rng, "t", 200),
                InputError);
-}
-
-TEST(Disks2dTapRandomOrder, ShufflesAreUniformPermutations) {
-  // All 6 orders of 3 disks, equally often: chi-square with 5 degrees of freedom stays
-  // below 20.5 (p = 0.001) for an unbiased shuffle.
-  RandomStream rng(13);
-  std::map<std::vector<std::int32_t>, int> seen;
-  const int trials = 60000;
-  for (int t = 0; t < trials; ++t) {
-    std::vector<std::int32_t> v{0, 1, 2};
-    dt::shuffle(v, rng);
-    ++seen[v];
-  }
-  ASSERT_EQ(seen.size(), 6u);
-  double chi2 = 0;
-  for (const auto& [order, count] : seen) chi2 += std::pow(count - trials / 6.0, 2) / (trials / 6.0);
-  EXPECT_LT(chi2, 20.5);
-  std::vector<int> hits(7, 0);
-  for (int t = 0; t < 70000; ++t) ++hits[dt::uniform_below(rng, 7)];
-  chi2 = 0;
-  for (int h : hits) chi2 += std::pow(h - 10000.0, 2) / 10000.0;
-  EXPECT_LT(chi2, 22.5);  // 6 degrees of freedom, p = 0.001
 }
 
 TEST(Disks2dTapSchedule, ConstantSavesEveryKthProductionTap) {

@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <random>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 namespace granpipe {
 
@@ -15,8 +17,20 @@ class RandomStream {
   // Uniform in [0, 1), 53 random bits: the same on every platform (unlike std distributions).
   double uniform() { return static_cast<double>(engine_() >> 11) * 0x1.0p-53; }
   double uniform(double a, double b) { return a + (b - a) * uniform(); }
-  // Uniform integer in [0, n).
-  std::uint64_t below(std::uint64_t n);
+  // Uniform integer in [0, n), n > 0 (Lemire's multiply-and-reject: exactly uniform, and
+  // no division except in the rare rejection check).
+  std::uint64_t below(std::uint64_t n) {
+    unsigned __int128 m = static_cast<unsigned __int128>(engine_()) * n;
+    if (static_cast<std::uint64_t>(m) < n) {
+      const std::uint64_t threshold = (0 - n) % n;
+      while (static_cast<std::uint64_t>(m) < threshold) m = static_cast<unsigned __int128>(engine_()) * n;
+    }
+    return static_cast<std::uint64_t>(m >> 64);
+  }
+  // Fisher-Yates shuffle of fewer than 2^32 items. Each 64-bit draw gives two 32-bit
+  // ones: shuffles sit in hot loops (the move order of a deposition sweep).
+  template <class T>
+  void shuffle(std::vector<T>& v);
   // Standard normal (Marsaglia polar method, platform independent).
   double normal();
   std::mt19937_64& engine() { return engine_; }
@@ -26,6 +40,28 @@ class RandomStream {
   bool has_spare_ = false;
   double spare_ = 0.0;
 };
+
+template <class T>
+void RandomStream::shuffle(std::vector<T>& v) {
+  std::uint64_t bits = 0;
+  int unused = 0;
+  auto draw32 = [&]() -> std::uint32_t {
+    if (unused == 0) {
+      bits = engine_();
+      unused = 2;
+    }
+    return static_cast<std::uint32_t>(bits >> (32 * --unused));
+  };
+  for (std::size_t n = v.size(); n > 1; --n) {
+    const auto n32 = static_cast<std::uint32_t>(n);
+    std::uint64_t m = static_cast<std::uint64_t>(draw32()) * n32;
+    if (static_cast<std::uint32_t>(m) < n32) {
+      const std::uint32_t threshold = (0u - n32) % n32;
+      while (static_cast<std::uint32_t>(m) < threshold) m = static_cast<std::uint64_t>(draw32()) * n32;
+    }
+    std::swap(v[n - 1], v[static_cast<std::size_t>(m >> 32)]);
+  }
+}
 
 class Seeds {
  public:
