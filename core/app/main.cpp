@@ -83,7 +83,6 @@ int main(int argc, char** argv) {
       std::cout << pipeline_file << ": valid, " << p.points() << " point(s)\n";
     } else if (*run) {
       const Pipeline p = Pipeline::load(pipeline_file, sets, registry);
-      p.check(log);
       RunOptions options;
       if (!out_dir.empty()) options.out = out_dir;
       options.threads = threads;

@@ -60,6 +60,24 @@ void Frame::check(const std::string& where) const {
     sized(supports->left.size(), "left supports");
     sized(supports->right.size(), "right supports");
   }
+  if (contacts) {
+    const Eigen::Index m = contacts->size();
+    const bool consistent = contacts->j.size() == m && contacts->overlap.size() == m &&
+                            contacts->normal_force.rows() == m && contacts->tangential_force.rows() == m &&
+                            contacts->point.rows() == m;
+    if (!consistent) {
+      throw InputError(where + ": contact arrays have different lengths (" + std::to_string(m) +
+                       " contacts in i)");
+    }
+    for (Eigen::Index k = 0; k < m; ++k) {
+      const auto a = contacts->i[k], b = contacts->j[k];
+      if (a < 0 || a >= n || b >= n || b == partner::none) {
+        throw InputError(where + ": contact " + std::to_string(k) + ": expected particle indices below " +
+                         std::to_string(n) + " (or a wall as second partner), got " + std::to_string(a) +
+                         " and " + std::to_string(b));
+      }
+    }
+  }
   for (Eigen::Index k = 0; k < n; ++k) {
     for (int a = 0; a < dim; ++a) {
       if (!std::isfinite(position(k, a))) {

@@ -21,8 +21,7 @@ bool is_group(hid_t loc, const std::string& path);
 bool is_dataset(hid_t loc, const std::string& path);
 // Names of the direct members of a group, in name order.
 std::vector<std::string> members(hid_t group, const std::string& path);
-// Whether two open handles refer to one object (e.g. hard-linked step datasets).
-bool same_object(hid_t a, hid_t b);
+
 
 Object open_group(hid_t loc, const std::string& path);
 Object open_dataset(hid_t loc, const std::string& path);

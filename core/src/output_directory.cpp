@@ -30,9 +30,11 @@ void write_file_atomically(const fs::path& path, const std::string& content) {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
     out << content;
     out.flush();
-    if (!out) throw InputError(tmp.string() + ": cannot write");
+    if (!out) throw InputError(path.string() + ": expected a writable file, got a write error");
   }
-  fs::rename(tmp, path);
+  std::error_code ec;
+  fs::rename(tmp, path, ec);
+  if (ec) throw InputError(path.string() + ": expected a writable file, got " + ec.message());
 }
 
 }  // namespace granpipe

@@ -32,16 +32,26 @@ std::string describe_needs(const FrameContent& need, const FrameContent& have) {
   return "";
 }
 
+// The directory a point's plugins write into: the output directory, or a folder per
+// point in a sweep so that points never write the same file.
+fs::path point_directory(const Pipeline::Impl& p, std::size_t k, const fs::path& out) {
+  if (out.empty() || p.points.size() == 1) return out;
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "point_%03zu", k);
+  return out / buf;
+}
+
 PointPlugins make_plugins(const Pipeline::Impl& p, std::size_t k, int threads, Log& log,
                           Progress& progress, const fs::path& out) {
+  const fs::path dir = point_directory(p, k, out);
   const PointSpec& point = p.points[k];
   const Seeds seeds = Seeds(p.seed).derive("point", k);
   PointPlugins made;
   // Plugins check what the schema cannot (one parameter against another, a file's
   // content); their messages get the pipeline's location in front.
   try {
-    made.source = p.source->make_source(
-        {point.source_params, seeds.derive("source:" + p.source->name), threads, log, progress, out});
+    made.source = p.source->make_source({point.source_params, seeds.derive("source:" + p.source->name),
+                                         threads, log, progress, dir, "source"});
   } catch (const InputError& e) {
     throw InputError(p.origin + ": source: " + e.what());
   }
@@ -49,8 +59,9 @@ PointPlugins make_plugins(const Pipeline::Impl& p, std::size_t k, int threads, L
   for (std::size_t a = 0; a < p.analyzers.size(); ++a) {
     const AnalyzerSpec& spec = p.analyzers[a];
     try {
-      made.analyzers.push_back(spec.info->make_analyzer(
-          {point.analyzer_params[a], seeds.derive("analyzer:" + spec.name), threads, log, progress, out}));
+      made.analyzers.push_back(spec.info->make_analyzer({point.analyzer_params[a],
+                                                         seeds.derive("analyzer:" + spec.name), threads,
+                                                         log, progress, dir, spec.name}));
     } catch (const InputError& e) {
       throw InputError(spec.where + ": " + e.what());
     }
@@ -61,13 +72,6 @@ PointPlugins make_plugins(const Pipeline::Impl& p, std::size_t k, int threads, L
     }
   }
   return made;
-}
-
-std::string frames_file(const Pipeline::Impl& p, std::size_t k) {
-  if (p.points.size() == 1) return "frames.h5";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "frames/point_%03zu.h5", k);
-  return buf;
 }
 
 std::string point_prefix(const Pipeline::Impl& p, std::size_t k) {
@@ -82,16 +86,14 @@ struct PointOutcome {
   long frames = 0;
 };
 
-PointOutcome run_point(const Pipeline::Impl& p, std::size_t k, int threads, Log& log,
+PointOutcome run_point(const Pipeline::Impl& p, std::size_t k, PointPlugins plugins,
                        Progress& progress, const fs::path& out) {
-  PointPlugins plugins = make_plugins(p, k, threads, log, progress, out);
   const bool source_reports = plugins.source->work().reported_by_source;
 
   std::unique_ptr<FrameWriter> writer;
   fs::path partial, final_path;
   if (p.save_frames) {
-    final_path = out / frames_file(p, k);
-    fs::create_directories(final_path.parent_path());
+    final_path = point_directory(p, k, out) / "frames.h5";
     // A run that stops early leaves frames.partial.h5 (marked incomplete), never a
     // frames.h5 that looks finished.
     partial = final_path;
@@ -199,33 +201,36 @@ RunSummary Pipeline::run(const RunOptions& options, Log& log) const {
   const std::string started = utc_now();
   RunSummary summary;
   summary.output_dir = options.out.value_or(p.output_dir);
-  prepare_output_directory(summary.output_dir, options.overwrite);
-  log.open_file((summary.output_dir / "run.log").string());
-  write_file_atomically(summary.output_dir / "pipeline.json", resolved_json() + "\n");
 
   const int hw = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   const int threads = options.threads > 0 ? options.threads : hw;
   const std::size_t workers = std::min<std::size_t>(threads, p.points.size());
   // Points share the thread budget; a single point gets all of it.
   const int per_point = std::max(1, threads / static_cast<int>(workers));
+
+  // Every plugin of every point is made (and so checked) before anything is written.
+  Progress progress;
+  progress.set_enabled(options.progress);
+  std::vector<PointPlugins> plugins;
+  double total_work = 0;
+  std::string unit = "frames";
+  for (std::size_t k = 0; k < p.points.size(); ++k) {
+    plugins.push_back(make_plugins(p, k, per_point, log, progress, summary.output_dir));
+    const Source::Work w = plugins.back().source->work();
+    total_work += w.total;
+    unit = w.unit;
+  }
+
+  prepare_output_directory(summary.output_dir, options.overwrite);
+  for (std::size_t k = 0; k < p.points.size(); ++k)
+    fs::create_directories(point_directory(p, k, summary.output_dir));
+  log.open_file((summary.output_dir / "run.log").string());
+  write_file_atomically(summary.output_dir / "pipeline.json", resolved_json() + "\n");
   log.info("granpipe " + std::string(version()) + " (" + git_commit() + "): " + p.name + ", " +
            std::to_string(p.points.size()) + " point(s), seed " + std::to_string(p.seed) + ", " +
            std::to_string(threads) + " thread(s), output " + summary.output_dir.string());
 
-  Progress progress;
-  progress.set_enabled(options.progress);
-  {
-    double total = 0;
-    std::string unit = "frames";
-    Progress quiet;
-    quiet.set_enabled(false);
-    for (std::size_t k = 0; k < p.points.size(); ++k) {
-      const auto w = make_plugins(p, k, 1, log, quiet, {}).source->work();
-      total += w.total;
-      unit = w.unit;
-    }
-    progress.start(p.name, total, unit);
-  }
+  progress.start(p.name, total_work, unit);
 
   std::vector<PointOutcome> outcomes(p.points.size());
   std::vector<std::exception_ptr> errors(p.points.size());
@@ -233,7 +238,7 @@ RunSummary Pipeline::run(const RunOptions& options, Log& log) const {
   auto worker = [&] {
     for (std::size_t k; (k = next++) < p.points.size();) {
       try {
-        outcomes[k] = run_point(p, k, per_point, log, progress, summary.output_dir);
+        outcomes[k] = run_point(p, k, std::move(plugins[k]), progress, summary.output_dir);
       } catch (...) {
         errors[k] = std::current_exception();
         next = p.points.size();  // stop handing out points after a failure

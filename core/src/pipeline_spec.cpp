@@ -114,7 +114,8 @@ std::uint64_t read_seed(const json& root, const JsonLocation& at) {
 std::vector<json> expand_sweep(const json& sweep, const JsonLocation& at,
                                std::vector<std::string>& paths) {
   check_keys(sweep, {"mode", "parameters"}, at);
-  const std::string mode = sweep.value("mode", "grid");
+  const bool mode_is_string = !sweep.contains("mode") || sweep["mode"].is_string();
+  const std::string mode = mode_is_string ? sweep.value("mode", "grid") : "";
   if (mode != "grid" && mode != "zip") {
     throw InputError(at.child("mode").str() + ": expected one of \"grid\", \"zip\", got " +
                      json_brief(sweep["mode"]));
@@ -237,6 +238,18 @@ Pipeline Pipeline::parse(const std::string& text, const std::string& origin,
     }
     AnalyzerSpec spec;
     spec.info = &require_plugin(registry, a["plugin"], PluginKind::Analyzer, at.child("plugin").str());
+    if (a.contains("name")) {
+      // The name becomes an HDF5 group and a file name: keep it plain, and clear of the
+      // runner's own groups.
+      static const std::regex plain("[A-Za-z][A-Za-z0-9_]*");
+      const json& n = a["name"];
+      if (!n.is_string() || !std::regex_match(n.get<std::string>(), plain) || n == "source" ||
+          n == "sweep" || n.get<std::string>().rfind("point_", 0) == 0) {
+        throw InputError(at.child("name").str() +
+                         ": expected a name of letters, digits and _ (not source, sweep or point_*), got " +
+                         json_brief(n));
+      }
+    }
     spec.name = a.value("name", spec.info->name);
     spec.where = at.str();
     if (!names.insert(spec.name).second) {

@@ -28,6 +28,15 @@ std::string promised_name(const fs::path& lib) {
   return stem.rfind(kPrefix, 0) == 0 ? stem.substr(std::char_traits<char>::length(kPrefix)) : stem;
 }
 
+// Releases of one minor version keep the plugin ABI; a plugin of another minor version is
+// refused even when someone forgot to bump GRANPIPE_ABI_VERSION.
+bool same_minor_version(const char* plugin_version) {
+  if (!plugin_version) return false;
+  const std::string ours = GRANPIPE_VERSION, theirs = plugin_version;
+  const auto minor_end = [](const std::string& v) { return v.find('.', v.find('.') + 1); };
+  return ours.substr(0, minor_end(ours)) == theirs.substr(0, minor_end(theirs));
+}
+
 void load_library(Registry& registry, const fs::path& file) {
   void* handle = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (!handle) {
@@ -41,7 +50,7 @@ void load_library(Registry& registry, const fs::path& file) {
     dlclose(handle);
     return;
   }
-  if (entry->abi_version != GRANPIPE_ABI_VERSION) {
+  if (entry->abi_version != GRANPIPE_ABI_VERSION || !same_minor_version(entry->core_version)) {
     std::ostringstream why;
     why << "was built against granpipe " << (entry->core_version ? entry->core_version : "?")
         << " (plugin ABI " << entry->abi_version << "), but this is granpipe " << GRANPIPE_VERSION

@@ -29,7 +29,8 @@ void Progress::start(std::string label, double total, std::string unit) {
   total_ = total;
   done_ = 0.0;
   terminal_ = isatty(STDERR_FILENO) != 0;
-  start_ = last_print_ = std::chrono::steady_clock::now();
+  start_ = std::chrono::steady_clock::now();
+  last_print_ns_ = start_.time_since_epoch().count();
 }
 
 void Progress::advance(double units) {
@@ -37,12 +38,14 @@ void Progress::advance(double units) {
   while (!done_.compare_exchange_weak(old, old + units)) {
   }
   if (!enabled_) return;
-  const auto now = std::chrono::steady_clock::now();
-  const double since = std::chrono::duration<double>(now - last_print_).count();
-  if (since < (terminal_ ? kTerminalInterval : kLineInterval)) return;
+  const std::int64_t now = std::chrono::steady_clock::now().time_since_epoch().count();
+  const double interval = terminal_ ? kTerminalInterval : kLineInterval;
+  const double since = static_cast<double>(now - last_print_ns_.load()) *
+                       std::chrono::steady_clock::period::num / std::chrono::steady_clock::period::den;
+  if (since < interval) return;
   std::unique_lock lock(mutex_, std::try_to_lock);
   if (!lock.owns_lock()) return;  // someone else is printing: skip, never wait
-  last_print_ = now;
+  last_print_ns_ = now;
   print(false);
 }
 

@@ -64,21 +64,6 @@ void Results::add_plot(const std::string& name, Plot plot) {
   plots_[name] = std::move(plot);
 }
 
-void Results::merge(const Results& other, const std::string& prefix) {
-  const std::string p = prefix.empty() ? "" : prefix + ".";
-  for (const auto& [k, v] : other.scalars_) {
-    claim(p + k);
-    scalars_[p + k] = v;
-  }
-  for (const auto& [k, v] : other.tables_) add_table(p + k, v);
-  for (const auto& [k, v] : other.histograms_) add_histogram(p + k, v);
-  for (const auto& [k, v] : other.fits_) add_fit(p + k, v);
-  for (auto [k, v] : other.plots_) {
-    v.table = p + v.table;
-    add_plot(p + k, v);
-  }
-}
-
 const Scalar& Results::scalar(const std::string& name) const {
   auto it = scalars_.find(name);
   if (it == scalars_.end()) throw InternalError("no scalar result '" + name + "'");

@@ -56,6 +56,7 @@ Schema schema() {
 ArchesAnalyzer::ArchesAnalyzer(const PluginContext& ctx)
     : log_(ctx.log),
       output_dir_(ctx.output_dir),
+      file_stem_(ctx.name.empty() ? "arches" : ctx.name),
       tolerance_(ctx.params.real("contact_tolerance")),
       span_bin_(ctx.params.real("span_bin")),
       svg_frames_(static_cast<long>(ctx.params.integer("svg_frames"))),
@@ -142,7 +143,7 @@ void ArchesAnalyzer::consume(const Frame& frame, FrameCache& cache) {
   if (drawn_ < svg_frames_ && !output_dir_.empty()) {
     const std::string stem =
         frame.tap >= 0 ? std::to_string(frame.tap) : "frame" + std::to_string(frames_ - 1);
-    write_arches_svg(output_dir_ / ("arches_" + stem + ".svg"), frame, arches,
+    write_arches_svg(output_dir_ / (file_stem_ + "_" + stem + ".svg"), frame, arches,
                      where + ": " + std::to_string(n) + " disks, " +
                          std::to_string(st.arches()) + " arches");
     ++drawn_;

@@ -27,6 +27,7 @@ class ArchesAnalyzer : public Analyzer {
 
   Log& log_;
   std::filesystem::path output_dir_;
+  std::string file_stem_;  // the analyzer's name in the pipeline
   double tolerance_;
   double span_bin_;
   long svg_frames_;

@@ -1,12 +1,10 @@
 #include "svg_writer.hpp"
 
 #include <algorithm>
-#include <fstream>
 #include <locale>
 #include <sstream>
-#include <system_error>
 
-#include "granpipe/errors.hpp"
+#include "granpipe/atomic_file.hpp"
 
 namespace granpipe::arches {
 
@@ -112,19 +110,7 @@ void write_arches_svg(const std::filesystem::path& path, const Frame& frame,
   }
   out << "</g>\n</g>\n</svg>\n";
 
-  std::filesystem::path tmp = path;
-  tmp += ".tmp";
-  {
-    std::ofstream file(tmp, std::ios::binary | std::ios::trunc);
-    file << out.str();
-    file.flush();
-    if (!file) throw InputError(path.string() + ": expected a writable file, got a write error");
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    throw InputError(path.string() + ": expected a writable file, got " + ec.message());
-  }
+  write_file_atomically(path, out.str());
 }
 
 }  // namespace granpipe::arches

@@ -147,6 +147,11 @@ TapSource::TapSource(const PluginContext& ctx)
                      std::to_string(p.integer("save_every")) + " (else nothing is saved), got " +
                      std::to_string(p.integer("production_taps")));
   }
+  if (p.string("protocol") == "annealed" && p.integer("anneal_taps_per_step") < p.integer("save_every")) {
+    throw InputError("disks2d_tap.anneal_taps_per_step: expected at least save_every = " +
+                     std::to_string(p.integer("save_every")) + " (else nothing is saved), got " +
+                     std::to_string(p.integer("anneal_taps_per_step")));
+  }
   double area = 0.0;
   for (double ri : radii) area += std::numbers::pi * ri * ri;
   const double height = std::max(area / (width * p.real("initial_fraction")), 2.0 * r_max);

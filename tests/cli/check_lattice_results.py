@@ -33,10 +33,10 @@ with h5py.File(f"{out}/results.h5", "r") as f:
             failures.append(f"{lattice}: phi {phi!r}, expected {phi_exact!r}")
         if z != z_exact:
             failures.append(f"{lattice}: z {z}, expected {z_exact}")
-        with h5py.File(f"{out}/frames/point_{k:03d}.h5", "r") as frames:
+        with h5py.File(f"{out}/point_{k:03d}/frames.h5", "r") as frames:
             provenance = json.loads(frames["granpipe"].attrs["provenance"])
             if provenance["pipeline"]["source"]["params"]["lattice"] != lattice:
-                failures.append(f"frames/point_{k:03d}.h5 provenance names the wrong lattice")
+                failures.append(f"point_{k:03d}/frames.h5 provenance names the wrong lattice")
 if failures:
     print("\n".join(failures))
     sys.exit(1)

@@ -136,6 +136,17 @@ TEST(PipelineErrors, DuplicateAnalyzerNames) {
             "p.json: analyzers[1].name: expected a name not used by another analyzer, got \"meanx\" again");
 }
 
+TEST(PipelineErrors, AnalyzerNamesArePlainAndFreeOfRunnerGroups) {
+  for (const char* bad : {R"(5)", R"("")", R"("a/b")", R"("source")", R"("point_001")"}) {
+    const std::string text = std::string(R"({"source": {"plugin": "random"}, "analyzers": [{"plugin": "meanx", "name": )") +
+                             bad + "}]}";
+    EXPECT_EQ(error_of(text), std::string("p.json: analyzers[0].name: expected a name of letters, digits and _ "
+                                          "(not source, sweep or point_*), got ") + bad);
+  }
+  EXPECT_EQ(error_of(R"({"source": {"plugin": "random"}, "sweep": {"mode": 3, "parameters": {"source.params.n": [1]}}})"),
+            "p.json: sweep.mode: expected one of \"grid\", \"zip\", got 3");
+}
+
 TEST(PipelineErrors, SetOverridesAreValidatedToo) {
   EXPECT_EQ(error_of(kGood, {"source.params.frames=-1"}),
             "p.json: source.params.frames: expected an integer >= 1, got -1");
@@ -246,4 +257,24 @@ TEST(Pipeline, SavedFramesReadBackAndCarryProvenance) {
   EXPECT_TRUE(reader.info().complete);
   EXPECT_FALSE(fs::exists(*o.out / "frames.partial.h5"));
   fs::remove_all(*o.out);
+}
+
+TEST(Frame, CheckNamesInconsistentContacts) {
+  Frame f;
+  f.resize(2, 2);
+  f.radius.setConstant(0.5);
+  f.position(1, 0) = 1.0;
+  f.contacts.emplace();
+  f.contacts->resize(1, 2);
+  f.contacts->i[0] = 0;
+  f.contacts->j[0] = 2;  // no particle 2
+  try {
+    f.check("x.h5: frame 3");
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "x.h5: frame 3: contact 0: expected particle indices below 2 (or a wall as second "
+                           "partner), got 0 and 2");
+  }
+  f.contacts->j[0] = partner::wall(Wall::YLow);
+  EXPECT_NO_THROW(f.check("x.h5: frame 3"));
 }

@@ -441,7 +441,7 @@ std::vector<Frame> run_source(const granpipe::Params& params, std::uint64_t seed
   log.set_quiet(true);
   granpipe::Progress progress;
   progress.set_enabled(false);
-  granpipe::PluginContext ctx{params, Seeds(seed), 1, log, progress, {}};
+  granpipe::PluginContext ctx{params, Seeds(seed), 1, log, progress, {}, ""};
   dt::TapSource source(ctx);
   std::vector<Frame> frames;
   Frame f;
@@ -507,4 +507,9 @@ TEST(Disks2dTapSource, RejectsImpossibleParameters) {
                           1),
                InputError);
   EXPECT_THROW(run_source(source_params({{"production_taps", std::int64_t{5}}}), 1), InputError);
+  // An annealed run whose steps are shorter than save_every would save nothing.
+  EXPECT_THROW(run_source(source_params({{"protocol", std::string("annealed")},
+                                         {"anneal_taps_per_step", std::int64_t{5}}}),
+                          1),
+               InputError);
 }

@@ -53,7 +53,7 @@ class H5mdSourceTest : public ::testing::Test {
                       {"radius", 0.5},
                       {"max_overlap", max_overlap}});
     return std::make_unique<h5md::H5mdSource>(
-        PluginContext{params_, Seeds{1}, 1, log_, progress_, {}});
+        PluginContext{params_, Seeds{1}, 1, log_, progress_, {}, ""});
   }
 
   // Steps of every frame the source yields.

@@ -49,7 +49,7 @@ std::vector<Frame> run(std::map<std::string, ParamValue> set, std::uint64_t seed
   granpipe::Log log;
   log.set_quiet(true);
   granpipe::Progress progress;
-  const granpipe::PluginContext ctx{params, granpipe::Seeds(seed), 1, log, progress, {}};
+  const granpipe::PluginContext ctx{params, granpipe::Seeds(seed), 1, log, progress, {}, ""};
   LatticeSource source(ctx);
   std::vector<Frame> frames;
   Frame f;

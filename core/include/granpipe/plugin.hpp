@@ -38,6 +38,9 @@ struct PluginContext {
   Log& log;
   Progress& progress;
   std::filesystem::path output_dir;  // empty when the run writes nothing
+  // The instance's name in the pipeline ("source", or the analyzer's name): files a
+  // plugin writes into output_dir start with it, so two instances never collide.
+  std::string name;
 };
 
 // Produces frames until done. Long sources advance ctx.progress by the units they

@@ -1,6 +1,7 @@
 #pragma once
 #include <atomic>
 #include <chrono>
+#include <cstdint>
 #include <mutex>
 #include <string>
 
@@ -24,7 +25,9 @@ class Progress {
   std::atomic<double> done_{0.0};
   bool enabled_ = true;
   bool terminal_ = false;
-  std::chrono::steady_clock::time_point start_, last_print_;
+  std::chrono::steady_clock::time_point start_;
+  // Read by every advancing thread without the lock: an atomic count of nanoseconds.
+  std::atomic<std::int64_t> last_print_ns_{0};
   std::mutex mutex_;
 };
 

@@ -33,7 +33,6 @@ class RandomStream {
   void shuffle(std::vector<T>& v);
   // Standard normal (Marsaglia polar method, platform independent).
   double normal();
-  std::mt19937_64& engine() { return engine_; }
 
  private:
   std::mt19937_64 engine_;

@@ -66,8 +66,6 @@ class Results {
   void add_histogram(const std::string& name, Histogram h);
   void add_fit(const std::string& name, Fit fit);
   void add_plot(const std::string& name, Plot plot);
-  // Takes everything from `other`, names prefixed by `prefix` when not empty.
-  void merge(const Results& other, const std::string& prefix = "");
 
   const std::map<std::string, Scalar>& scalars() const { return scalars_; }
   const std::map<std::string, Table>& tables() const { return tables_; }
