@@ -135,7 +135,7 @@ void ArchesAnalyzer::consume(const Frame& frame, FrameCache& cache) {
     }
   }
 
-  by_cycle_.add(frame, {z_eq4, z_direct, arches_per_particle});
+  by_ramp_.add(frame, {z_eq4, z_direct, arches_per_particle});
   per_frame_.add_row({static_cast<double>(frames_ - 1), static_cast<double>(frame.tap),
                       static_cast<double>(frame.cycle), arches_per_particle, p1, p2, z_eq4,
                       z_direct, base_fraction, missing, non_supporting});
@@ -200,9 +200,10 @@ void ArchesAnalyzer::finish(Results& results) {
                                                        std::to_string(span_all_.total()) +
                                                        " arches)"));
   results.add_table("per_frame", per_frame_);
-  if (!by_cycle_.empty()) {
-    results.add_table("by_cycle", by_cycle_.table("averages over the frames of each (cycle, time); "
-                                                  "annealed tapping: time = A"));
+  if (!by_ramp_.empty()) {
+    results.add_table("by_ramp", by_ramp_.table("per ramp branch (0 first increase, 1 decreasing, "
+                                                "2 increasing) and time (annealed tapping: the "
+                                                "amplitude A), pooled over cycles"));
   }
 }
 

@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "granpipe/cycle_means.hpp"
+#include "granpipe/ramp_means.hpp"
 #include "granpipe/plugin.hpp"
 #include "span_histogram.hpp"
 
@@ -41,7 +41,7 @@ class ArchesAnalyzer : public Analyzer {
   std::vector<std::pair<long, SpanHistogram>> span_by_size_;
   SpanHistogram span_all_;
   Table per_frame_;
-  CycleMeans by_cycle_{{"z_support_eq4", "z_support_direct", "arches_per_particle"}};
+  RampMeans by_ramp_{{"z_support_eq4", "z_support_direct", "arches_per_particle"}};
 };
 
 }  // namespace granpipe::arches

@@ -181,7 +181,7 @@ void PackingAnalyzer::consume(const Frame& frame, FrameCache& cache) {
     z_.add(m.z_mean);
     z_walls_.add(m.z_mean_with_walls);
   }
-  by_cycle_.add(frame, {m.phi, m.z_mean});
+  by_ramp_.add(frame, {m.phi, m.z_mean});
   if (settings_.cuts_step > 0.0) phi_cuts_.add(m.phi_cuts);
   if (settings_.profile_step > 0.0) {
     // Heights a frame does not reach (above its surface) have an empty cut: zeros, so
@@ -209,13 +209,14 @@ void PackingAnalyzer::finish(Results& results) {
   mean("number_density", density_, per_volume, "particle centres in the region per unit volume");
   mean("z_mean", z_, "", "mean number of particle contacts of the particles centred in the region");
   mean("z_mean_with_walls", z_walls_, "", "z_mean with particle-wall contacts counted");
-  if (!by_cycle_.empty()) {
-    results.add_table("by_cycle", by_cycle_.table("phi and z_mean averaged over the frames of each "
-                                                  "(cycle, time); annealed tapping: time = A"));
-    results.add_plot("by_cycle", {.table = "by_cycle", .x = "time", .y = {"phi"},
-                                  .xlabel = "frame time (annealed tapping: amplitude A)",
-                                  .ylabel = "packing fraction",
-                                  .title = "packing fraction per cycle"});
+  if (!by_ramp_.empty()) {
+    results.add_table("by_ramp", by_ramp_.table("phi and z_mean per ramp branch (0 first increase, "
+                                                "1 decreasing, 2 increasing) and time (annealed "
+                                                "tapping: the amplitude A), pooled over cycles"));
+    results.add_plot("by_ramp", {.table = "by_ramp", .x = "time", .y = {"phi"},
+                                 .xlabel = "frame time (annealed tapping: amplitude A)",
+                                 .ylabel = "packing fraction",
+                                 .title = "packing fraction on the ramp branches"});
   }
   if (settings_.cuts_step > 0.0) {
     mean("phi_cuts", phi_cuts_, "",

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "granpipe/cycle_means.hpp"
+#include "granpipe/ramp_means.hpp"
 #include "granpipe/plugin.hpp"
 #include "region.hpp"
 
@@ -58,7 +58,7 @@ class PackingAnalyzer : public Analyzer {
   int dim_ = 3;
   long frames_ = 0, skipped_ = 0;
   RunningMean phi_, density_, z_, z_walls_, phi_cuts_;
-  CycleMeans by_cycle_{{"phi", "z_mean"}};
+  RampMeans by_ramp_{{"phi", "z_mean"}};
   std::vector<RunningMean> profile_;
 };
 

@@ -3,6 +3,7 @@
 // reproducible; output directories are never overwritten silently.
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 
@@ -218,6 +219,27 @@ TEST(Pipeline, SameSeedSameResultsAndSweepPointsIndependentOfThreads) {
   EXPECT_TRUE(fs::exists(*one.out / "sweep.points.csv"));
   fs::remove_all(*one.out);
   fs::remove_all(*two.out);
+}
+
+TEST(Pipeline, SameSeedAndThreadsTwiceGivesTheSameBits) {
+  const Registry r = test_registry();
+  const Pipeline p = Pipeline::parse(kGood, "p.json", {}, r);
+  Log log;
+  log.set_quiet(true);
+  RunOptions o;
+  o.progress = false;
+  o.threads = 2;
+  o.out = fresh_dir("twice_a");
+  const double a = p.run(o, log).results.at("meanx").scalar("mean_x").value;
+  fs::remove_all(*o.out);
+  o.out = fresh_dir("twice_b");
+  const double b = p.run(o, log).results.at("meanx").scalar("mean_x").value;
+  fs::remove_all(*o.out);
+  EXPECT_EQ(std::memcmp(&a, &b, sizeof a), 0);
+  const Pipeline other_seed = Pipeline::parse(kGood, "p.json", {"seed=6"}, r);
+  o.out = fresh_dir("twice_c");
+  EXPECT_NE(other_seed.run(o, log).results.at("meanx").scalar("mean_x").value, a);
+  fs::remove_all(*o.out);
 }
 
 TEST(Pipeline, ExistingOutputDirectoryIsNeverOverwrittenSilently) {

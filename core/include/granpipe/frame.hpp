@@ -53,7 +53,9 @@ struct Frame {
   double time = 0.0;
   std::int64_t step = 0;
   std::int64_t tap = -1;    // tap index of tapped scenes, -1 when not tapped
-  std::int64_t cycle = -1;  // cycle index of annealing or vibration, -1 when none
+  // Cycle of a cyclic protocol, -1 when none. Ramped protocols (annealed tapping) count
+  // half-cycles: 0 the first increase, odd decreasing, even increasing (ramp_means.hpp).
+  std::int64_t cycle = -1;
 
   Eigen::Index size() const { return position.rows(); }
   // Sizes every per-particle array to n, ids 0..n-1, species 0; drops optional data.

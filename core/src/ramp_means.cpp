@@ -1,19 +1,24 @@
-#include "granpipe/cycle_means.hpp"
+#include "granpipe/ramp_means.hpp"
 
 #include "granpipe/errors.hpp"
 
 namespace granpipe {
 
-void CycleMeans::add(const Frame& frame, const std::vector<double>& values) {
+RampBranch ramp_branch(std::int64_t cycle) {
+  if (cycle == 0) return RampBranch::FirstIncrease;
+  return cycle % 2 == 1 ? RampBranch::Decreasing : RampBranch::Increasing;
+}
+
+void RampMeans::add(const Frame& frame, const std::vector<double>& values) {
   if (frame.cycle < 0) return;
-  if (values.size() != names_.size()) throw InternalError("CycleMeans: one value per quantity expected");
-  auto& means = means_[{frame.cycle, frame.time}];
+  if (values.size() != names_.size()) throw InternalError("RampMeans: one value per quantity expected");
+  auto& means = means_[{ramp_branch(frame.cycle), frame.time}];
   means.resize(names_.size());
   for (std::size_t q = 0; q < values.size(); ++q) means[q].add(values[q]);
 }
 
-Table CycleMeans::table(const std::string& doc) const {
-  std::vector<std::string> columns{"cycle", "time", "frames"};
+Table RampMeans::table(const std::string& doc) const {
+  std::vector<std::string> columns{"branch", "time", "frames"};
   for (const auto& n : names_) {
     columns.push_back(n);
     columns.push_back(n + "_err");

@@ -1,0 +1,38 @@
+#pragma once
+// Per-frame quantities of a ramped protocol averaged per branch and control value. In a
+// ramped run (annealed tapping) a frame's `time` holds the control value (the amplitude A)
+// and its `cycle` the half-cycle: 0 the first increase, odd ones decreasing, even ones
+// (from 2 on) increasing. The paper's Fig. 8 keeps the first increase apart and pools the
+// later increasing and decreasing ramps, each over all its cycles: that is one row per
+// (branch, time) here. Memory grows with the distinct (branch, time) pairs, not with frames.
+#include <cstdint>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "granpipe/frame.hpp"
+#include "granpipe/results.hpp"
+
+namespace granpipe {
+
+enum class RampBranch : std::int8_t { FirstIncrease = 0, Decreasing = 1, Increasing = 2 };
+// The branch of a half-cycle index (cycle >= 0).
+RampBranch ramp_branch(std::int64_t cycle);
+
+class RampMeans {
+ public:
+  explicit RampMeans(std::vector<std::string> quantities) : names_(std::move(quantities)) {}
+  // Adds one frame's values (one per quantity); frames without a cycle (cycle < 0) are ignored.
+  void add(const Frame& frame, const std::vector<double>& values);
+  bool empty() const { return means_.empty(); }
+  // Columns: branch (0 first increase, 1 decreasing, 2 increasing), time, frames, then each
+  // quantity and its standard error.
+  Table table(const std::string& doc) const;
+
+ private:
+  std::vector<std::string> names_;
+  std::map<std::pair<RampBranch, double>, std::vector<RunningMean>> means_;
+};
+
+}  // namespace granpipe

@@ -1,0 +1,49 @@
+// Per-(branch, time) means of a ramped run: the first increase stays apart, later
+// increasing and decreasing ramps pool over their cycles, frames without a cycle are ignored.
+#include <gtest/gtest.h>
+
+#include "granpipe/errors.hpp"
+#include "granpipe/ramp_means.hpp"
+
+using namespace granpipe;
+
+namespace {
+Frame at(std::int64_t cycle, double time) {
+  Frame f;
+  f.cycle = cycle;
+  f.time = time;
+  return f;
+}
+}  // namespace
+
+TEST(RampMeans, BranchesOfHalfCycles) {
+  EXPECT_EQ(ramp_branch(0), RampBranch::FirstIncrease);
+  EXPECT_EQ(ramp_branch(1), RampBranch::Decreasing);
+  EXPECT_EQ(ramp_branch(2), RampBranch::Increasing);
+  EXPECT_EQ(ramp_branch(3), RampBranch::Decreasing);
+}
+
+TEST(RampMeans, GroupsByBranchAndTime) {
+  RampMeans m({"phi"});
+  m.add(at(0, 1.1), {0.80});
+  m.add(at(0, 1.1), {0.82});  // the first rise: kept apart
+  m.add(at(1, 1.1), {0.84});  // decreasing, first cycle
+  m.add(at(3, 1.1), {0.86});  // decreasing, second cycle: pooled with it
+  m.add(at(2, 1.1), {0.83});  // a later increase: its own branch
+  m.add(at(-1, 1.1), {0.10});  // no cycle: not part of any branch
+  const Table t = m.table("doc");
+  ASSERT_EQ(t.rows(), 3u);
+  EXPECT_EQ(t.column("branch"), (std::vector<double>{0, 1, 2}));
+  EXPECT_EQ(t.column("frames"), (std::vector<double>{2, 2, 1}));
+  EXPECT_DOUBLE_EQ(t.column("phi")[0], 0.81);
+  EXPECT_NEAR(t.column("phi_err")[0], 0.01, 1e-15);  // sd 0.01414 / sqrt(2)
+  EXPECT_DOUBLE_EQ(t.column("phi")[1], 0.85);
+  EXPECT_DOUBLE_EQ(t.column("phi")[2], 0.83);
+}
+
+TEST(RampMeans, EmptyWithoutCycles) {
+  RampMeans m({"phi", "z"});
+  m.add(at(-1, 0.0), {1.0, 2.0});
+  EXPECT_TRUE(m.empty());
+  EXPECT_THROW(RampMeans({"phi"}).add(at(0, 1.0), {1.0, 2.0}), InternalError);
+}
