@@ -319,6 +319,27 @@ void FrameReader::Impl::open(const std::string& group) {
   info.has_velocity = velocity.has_value();
 }
 
+// H5MD stores a box's edge lengths but not its origin. Periodic sides need none (positions
+// are wrapped where used); walls do: they go at [0, L] or, as some codes centre their
+// boxes, [-L/2, L/2], whichever holds every particle centre. Anything else is refused
+// rather than measured against walls in the wrong place.
+namespace {
+void place_walls(Container& c, int a, const Frame& f, const std::string& dataset, long k) {
+  const double lo = f.position.col(a).minCoeff(), hi = f.position.col(a).maxCoeff();
+  const double length = c.hi[a];
+  for (double origin : {0.0, -0.5 * length}) {
+    if (lo >= origin && hi <= origin + length) {
+      c.lo[a] = origin;
+      c.hi[a] = origin + length;
+      return;
+    }
+  }
+  throw h5::Error(dataset + ": frame " + std::to_string(k) + ": expected particle centres inside a box of edge " +
+                  std::to_string(length) + " along axis " + std::to_string(a) + " (at [0, L] or [-L/2, L/2]), got " +
+                  std::to_string(lo) + " to " + std::to_string(hi));
+}
+}  // namespace
+
 Container FrameReader::Impl::box_container(long k, const Frame& f) const {
   Container c;
   const int d = info.dim;
@@ -350,6 +371,7 @@ Container FrameReader::Impl::box_container(long k, const Frame& f) const {
     }
     const Boundary b = periodic[a] ? Boundary::Periodic : Boundary::Wall;
     c.boundary[a] = {b, b};
+    if (!periodic[a] && f.size() > 0) place_walls(c, a, f, edges->path(), k);
   }
   return c;
 }

@@ -326,7 +326,8 @@ void put_string_attribute(hid_t loc, const char* name, const std::vector<std::st
 
 // An H5MD file as another MD code writes it: float positions, explicit clocks, a fixed
 // box, species fixed in time, velocities sampled every other frame, no id, no radius.
-void write_foreign(const fs::path& p, bool second_group) {
+// `z_shift` moves every particle along the walled axis z (edge 6).
+void write_foreign(const fs::path& p, bool second_group, float z_shift = 0.0f) {
   Id f(H5Fcreate(p.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT));
   Id h5md(make_group(f, "h5md"));
   put_int_attribute(h5md, "version", {1, 0}, false);
@@ -344,7 +345,7 @@ void write_foreign(const fs::path& p, bool second_group) {
   float x[3][4][3];
   for (int k = 0; k < 3; ++k)
     for (int i = 0; i < 4; ++i)
-      for (int a = 0; a < 3; ++a) x[k][i][a] = 0.25f * static_cast<float>(k + i + a);
+      for (int a = 0; a < 3; ++a) x[k][i][a] = 0.25f * static_cast<float>(k + i + a) + (a == 2 ? z_shift : 0.0f);
   put_dataset(position, "value", H5T_NATIVE_FLOAT, {3, 4, 3}, x);
   const std::int64_t steps[3] = {10, 20, 30};
   const double times[3] = {0.5, 1.0, 1.5};
@@ -396,6 +397,27 @@ TEST_F(FrameStore, ReadsAnotherToolsFile) {
     EXPECT_EQ(f.container.boundary[2][0], Boundary::Wall);
     EXPECT_EQ(f.container.boundary[2][1], Boundary::Wall);
     EXPECT_FALSE(f.velocity.has_value());
+  }
+}
+
+// H5MD boxes have no origin: walls go where the particles are, at [0, L] or [-L/2, L/2].
+TEST_F(FrameStore, WallsOfAnotherToolsCentredBoxHoldItsParticles) {
+  const fs::path centred = file("centred.h5");
+  write_foreign(centred, false, -3.0f);  // z from -2.5 to -1.75: inside [-3, 3]
+  const Frame f = FrameReader(centred).read(0);
+  EXPECT_EQ(f.container.lo[2], -3.0);
+  EXPECT_EQ(f.container.hi[2], 3.0);
+  EXPECT_EQ(f.container.lo[0], 0.0);  // periodic sides keep the origin 0
+  const fs::path outside = file("outside.h5");
+  write_foreign(outside, false, -7.0f);
+  try {
+    FrameReader(outside).read(0);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), (outside.string() +
+                            ": /particles/atoms/box/edges: frame 0: expected particle centres inside a box of "
+                            "edge 6.000000 along axis 2 (at [0, L] or [-L/2, L/2]), got -6.500000 to -5.750000")
+                               .c_str());
   }
 }
 
