@@ -111,11 +111,21 @@ PointOutcome run_point(const Pipeline::Impl& p, std::size_t k, PointPlugins plug
   Frame frame;
   FrameCache cache;
   const std::string where = p.origin + ": source \"" + p.source->name + "\"";
-  while (plugins.source->next(frame)) {
+  // A plugin's complaint about the data names the pipeline part it came from.
+  auto located = [](const std::string& at, auto&& step) {
+    try {
+      return step();
+    } catch (const InputError& e) {
+      throw InputError(at + ": " + e.what());
+    }
+  };
+  while (located(p.origin + ": source", [&] { return plugins.source->next(frame); })) {
     frame.check(where + " frame " + std::to_string(outcome.frames));
     if (writer && outcome.frames % p.frame_stride == 0) writer->append(frame);
     cache.clear();
-    for (auto& a : plugins.analyzers) a->consume(frame, cache);
+    for (std::size_t a = 0; a < plugins.analyzers.size(); ++a) {
+      located(p.analyzers[a].where, [&] { plugins.analyzers[a]->consume(frame, cache); });
+    }
     ++outcome.frames;
     if (!source_reports) progress.advance(1);
   }
