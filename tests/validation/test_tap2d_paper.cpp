@@ -57,4 +57,18 @@ TEST(Tap2dPaper, OrderedAtSmallAmplitudeDisorderedAtLarge) {
   EXPECT_GT(z_small - z_large, 0.05);
   // More arches per particle in the disordered bed (Eq. 4: arches and <z> go together).
   EXPECT_GT(large_arches.scalar("arches_per_particle").value, small_arches.scalar("arches_per_particle").value);
+
+  // On every frame of the real runs, Eq. (4) and the direct count of supporting contacts
+  // differ exactly by 2 N_base / N (Eq. 4 counts a base disk as if it had two supports),
+  // and every disk is stable or on the base: the only supports missing are the second ones
+  // of base disks.
+  for (const Results* r : {&small_arches, &large_arches}) {
+    const Table& t = r->tables().at("per_frame");
+    ASSERT_EQ(t.rows(), 10u);
+    for (std::size_t k = 0; k < t.rows(); ++k) {
+      EXPECT_NEAR(t.column("z_support_eq4")[k] - t.column("z_support_direct")[k],
+                  2.0 * t.column("base_fraction")[k], 1e-12);
+      EXPECT_EQ(t.column("missing_supports_per_particle")[k], t.column("base_fraction")[k]);
+    }
+  }
 }
