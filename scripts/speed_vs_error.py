@@ -1,0 +1,111 @@
+#!/usr/bin/env python3
+"""Run time against error for a resolution sweep (the design's "speed against error").
+
+Reads a sweep's sweep.points.csv, takes the point with the finest resolution in each group
+of the other swept parameters as the converged reference, and writes, beside the CSV,
+speed_vs_error.csv (seconds and |deviation| of each quantity, with the reference's standard
+error for scale) and speed_vs_error.svg (seconds against |deviation|, log-log).
+
+    scripts/speed_vs_error.py out/tap2d_delta_study \
+        --knob source.params.delta --time source.seconds \
+        --quantity packing.phi --quantity arches.z_support_eq4
+"""
+import argparse
+import csv
+import json
+import math
+import os
+
+
+def read_points(path):
+    with open(path) as f:
+        rows = list(csv.reader(line for line in f if not line.startswith("#")))
+    header, body = rows[0], rows[1:]
+    return [{h: float(v) for h, v in zip(header, row)} for row in body], header
+
+
+def svg_plot(series, xlabel, ylabel, path):
+    """Log-log scatter with lines, one series per (group, quantity). Plain SVG, no dependencies."""
+    points = [(x, y) for s in series.values() for x, y, _ in s if x > 0 and y > 0]
+    if not points:
+        return
+    lx = [math.log10(x) for x, _ in points]
+    ly = [math.log10(y) for _, y in points]
+    x0, x1 = math.floor(min(lx)), math.ceil(max(lx))
+    y0, y1 = math.floor(min(ly)), math.ceil(max(ly))
+    x1, y1 = max(x1, x0 + 1), max(y1, y0 + 1)
+    w, h, m, legend = 900, 440, 70, 260
+    right = w - m - legend
+    sx = lambda v: m + (math.log10(v) - x0) / (x1 - x0) * (right - m)
+    sy = lambda v: h - m - (math.log10(v) - y0) / (y1 - y0) * (h - 2 * m)
+    colours = ["#c0392b", "#2471a3", "#229954", "#b9770e", "#7d3c98", "#566573"]
+    out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" font-family="sans-serif" font-size="12">',
+           f'<rect x="{m}" y="{m}" width="{right - m}" height="{h - 2 * m}" fill="none" stroke="black"/>']
+    for e in range(x0, x1 + 1):
+        out.append(f'<text x="{sx(10**e)}" y="{h - m + 18}" text-anchor="middle">1e{e}</text>')
+    for e in range(y0, y1 + 1):
+        out.append(f'<text x="{m - 8}" y="{sy(10**e) + 4}" text-anchor="end">1e{e}</text>')
+    out.append(f'<text x="{(m + right) / 2}" y="{h - 20}" text-anchor="middle">{xlabel}</text>')
+    out.append(f'<text x="18" y="{h / 2}" text-anchor="middle" transform="rotate(-90 18 {h / 2})">{ylabel}</text>')
+    for k, (name, s) in enumerate(sorted(series.items())):
+        c = colours[k % len(colours)]
+        pts = [(sx(x), sy(y), label) for x, y, label in sorted(s) if x > 0 and y > 0]
+        if len(pts) > 1:
+            out.append('<polyline fill="none" stroke="%s" points="%s"/>' % (c, " ".join(f"{x:.1f},{y:.1f}" for x, y, _ in pts)))
+        for x, y, label in pts:
+            out.append(f'<circle cx="{x:.1f}" cy="{y:.1f}" r="3" fill="{c}"><title>{label}</title></circle>')
+        out.append(f'<text x="{right + 15}" y="{m + 10 + 16 * k}" fill="{c}" font-size="11">{name}</text>')
+    out.append("</svg>")
+    with open(path, "w") as f:
+        f.write("\n".join(out) + "\n")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("out", help="output directory of a sweep run")
+    ap.add_argument("--knob", required=True, help="swept resolution column; its smallest value is the reference")
+    ap.add_argument("--time", required=True, help="column holding the run time of a point")
+    ap.add_argument("--quantity", action="append", required=True, help="result column to compare (repeatable)")
+    args = ap.parse_args()
+
+    points, header = read_points(os.path.join(args.out, "sweep.points.csv"))
+    for col in [args.knob, args.time] + args.quantity:
+        if col not in header:
+            raise SystemExit(f"{args.out}/sweep.points.csv: expected a column {col}, got none")
+    swept = [h for h in header[1:header.index(args.knob)] + header[header.index(args.knob) + 1:]
+             if h.startswith(("source.params.", "analyzers["))]
+    # String-valued sweep parameters appear as their index in the sweep list.
+    with open(os.path.join(args.out, "pipeline.json")) as f:
+        lists = json.load(f).get("sweep", {}).get("parameters", {})
+    name_of = lambda s, v: lists[s][int(v)] if s in lists and isinstance(lists[s][0], str) else f"{v:g}"
+    groups = {}
+    for p in points:
+        groups.setdefault(tuple(p[s] for s in swept), []).append(p)
+
+    rows, series = [], {}
+    for key, members in sorted(groups.items()):
+        ref = min(members, key=lambda p: p[args.knob])
+        tag = ", ".join(f"{s.split('.')[-1]}={name_of(s, v)}" for s, v in zip(swept, key)) or "all"
+        for p in sorted(members, key=lambda p: -p[args.knob]):
+            row = {"group": tag, args.knob: p[args.knob], "seconds": p[args.time]}
+            for q in args.quantity:
+                row[q] = p[q]
+                row[q + "_deviation"] = abs(p[q] - ref[q])
+                row[q + "_reference_err"] = ref.get(q + "_err", float("nan"))
+                if p is not ref:
+                    series.setdefault(f"{q} ({tag})", []).append((p[args.time], abs(p[q] - ref[q]), f"{args.knob}={p[args.knob]:g}"))
+            rows.append(row)
+    with open(os.path.join(args.out, "speed_vs_error.csv"), "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+        writer.writeheader()
+        writer.writerows(rows)
+    svg_plot(series, "run time of the point (s)", "|deviation from the finest point|",
+             os.path.join(args.out, "speed_vs_error.svg"))
+    cols = ["group", args.knob, "seconds"] + [q + "_deviation" for q in args.quantity]
+    print("  ".join(f"{c:>24}" for c in cols))
+    for r in rows:
+        print("  ".join(f"{r[c]:>24}" if isinstance(r[c], str) else f"{r[c]:>24.4g}" for c in cols))
+
+
+if __name__ == "__main__":
+    main()
