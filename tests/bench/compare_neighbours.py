@@ -1,7 +1,8 @@
 """Neighbour pairs within a cutoff in a periodic 3D box: granpipe's cell list against
 scipy's cKDTree (query_pairs with boxsize), side by side in one run so that the ratio
-holds on a noisy machine. Both draw uniform random points at the same density (not the
-same points); both pair counts are checked against the expected N(N-1)/2 * 4/3 pi rc^3 / V.
+holds on a noisy machine. Both build their search structure and return the list of pairs;
+both draw uniform random points at the same density (not the same points), and both pair
+counts are checked against the expected N(N-1)/2 * 4/3 pi rc^3 / V.
 
     apt-get install python3-scipy
     /usr/bin/python3 tests/bench/compare_neighbours.py build

@@ -3,6 +3,7 @@
 // sides (minimum image). Building is O(N); a pair loop visits only neighbouring cells.
 #include <Eigen/Core>
 #include <array>
+#include <utility>
 #include <cmath>
 #include <vector>
 
@@ -80,26 +81,36 @@ void CellList::for_each_neighbour_cell(const std::array<int, 3>& c, F&& f) const
 
 template <class F>
 void CellList::for_each_pair(F&& f) const {
+  // Each unordered pair of neighbouring cells once (the cell with the lower index visits
+  // the other), so every particle pair is measured once.
   const double rc2 = cutoff_ * cutoff_;
-  const int n = static_cast<int>(pos_.rows());
   double d[3] = {0, 0, 0};
-  double xi[3] = {0, 0, 0};
+  auto visit = [&](int i, int j) {
+    if (i > j) std::swap(i, j);
+    double r2 = 0;
+    for (int a = 0; a < dim_; ++a) d[a] = pos_(j, a) - pos_(i, a);
+    minimum_image(d);
+    for (int a = 0; a < dim_; ++a) r2 += d[a] * d[a];
+    if (r2 <= rc2) f(i, j, static_cast<const double*>(d), r2);
+  };
   std::array<int, 3> c{};
-  for (int i = 0; i < n; ++i) {
-    for (int a = 0; a < dim_; ++a) xi[a] = pos_(i, a);
-    cell_of(xi, c);
-    for_each_neighbour_cell(c, [&](int cell) {
-      for (int k = cell_start_[cell]; k < cell_start_[cell + 1]; ++k) {
-        const int j = order_[k];
-        if (j <= i) continue;
-        double r2 = 0;
-        for (int a = 0; a < dim_; ++a) d[a] = pos_(j, a) - pos_(i, a);
-        minimum_image(d);
-        for (int a = 0; a < dim_; ++a) r2 += d[a] * d[a];
-        if (r2 <= rc2) f(i, j, static_cast<const double*>(d), r2);
+  for (c[2] = 0; c[2] < ncell_[2]; ++c[2])
+    for (c[1] = 0; c[1] < ncell_[1]; ++c[1])
+      for (c[0] = 0; c[0] < ncell_[0]; ++c[0]) {
+        const int cell = (c[2] * ncell_[1] + c[1]) * ncell_[0] + c[0];
+        const int begin = cell_start_[cell], end = cell_start_[cell + 1];
+        if (begin == end) continue;
+        for_each_neighbour_cell(c, [&](int other) {
+          if (other < cell) return;
+          if (other == cell) {
+            for (int k = begin; k < end; ++k)
+              for (int l = k + 1; l < end; ++l) visit(order_[k], order_[l]);
+            return;
+          }
+          for (int k = begin; k < end; ++k)
+            for (int l = cell_start_[other]; l < cell_start_[other + 1]; ++l) visit(order_[k], order_[l]);
+        });
       }
-    });
-  }
 }
 
 template <class F>
