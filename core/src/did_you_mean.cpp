@@ -33,4 +33,10 @@ std::string did_you_mean(const std::string& word, const std::vector<std::string>
   return best ? " (did you mean \"" + *best + "\"?)" : "";
 }
 
+std::string known_list(const std::vector<std::string>& names, const std::string& if_none) {
+  std::string list;
+  for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+  return "; known: " + (list.empty() ? if_none : list);
+}
+
 }  // namespace granpipe

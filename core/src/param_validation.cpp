@@ -127,11 +127,7 @@ Params validate_params(nlohmann::json& object, const Schema& schema, const JsonL
   for (const auto& [key, value] : object.items()) {
     if (!schema.find(key)) {
       throw InputError(where.child(key).str() + ": unknown parameter" + did_you_mean(key, known) +
-                       "; known: " + (known.empty() ? std::string("none") : [&] {
-                         std::string k;
-                         for (const auto& n : known) k += (k.empty() ? "" : ", ") + n;
-                         return k;
-                       }()));
+                       known_list(known));
     }
   }
   std::map<std::string, ParamValue> values;

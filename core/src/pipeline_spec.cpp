@@ -41,10 +41,8 @@ void check_keys(const json& obj, const std::vector<std::string>& allowed, const 
   if (!obj.is_object()) throw InputError(at.str() + ": expected an object, got " + json_brief(obj));
   for (const auto& [key, v] : obj.items()) {
     if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
-      std::string known;
-      for (const auto& a : allowed) known += (known.empty() ? "" : ", ") + a;
       throw InputError(at.child(key).str() + ": unknown key" + did_you_mean(key, allowed) +
-                       "; known: " + known);
+                       known_list(allowed));
     }
   }
 }

@@ -115,11 +115,8 @@ const PluginInfo& require_plugin(const Registry& registry, const std::string& na
   std::vector<std::string> names;
   for (const auto& p : registry.plugins())
     if (!kind || p.kind == *kind) names.push_back(p.name);
-  std::string known;
-  for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
-  throw InputError(where + ": expected " + wanted + ", got unknown \"" +
-                   name + "\"" + did_you_mean(name, names) + "; known: " +
-                   (known.empty() ? "none (is GRANPIPE_PLUGIN_PATH right?)" : known));
+  throw InputError(where + ": expected " + wanted + ", got unknown \"" + name + "\"" +
+                   did_you_mean(name, names) + known_list(names, "none (is GRANPIPE_PLUGIN_PATH right?)"));
 }
 
 }  // namespace granpipe
