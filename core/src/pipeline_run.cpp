@@ -270,7 +270,7 @@ RunSummary Pipeline::run(const RunOptions& options, Log& log) const {
   if (p.points.size() > 1) summary.results["sweep"] = sweep_summary(p, summary.results);
   summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
-  Provenance prov{resolved_json(), version(), git_commit(), p.seed, threads, summary.seconds,
+  Provenance prov{p.name, resolved_json(), version(), git_commit(), p.seed, threads, summary.seconds,
                   started, true};
   write_results(summary.output_dir, summary.results, prov);
   log.info("done: " + std::to_string(summary.frames) + " frame(s) in " +

@@ -114,7 +114,8 @@ std::string csv_number(double x) {
 }
 
 std::string csv_header(const Provenance& p) {
-  return "# granpipe " + p.version + " commit " + p.commit + " seed " + std::to_string(p.seed) + "\n";
+  return "# granpipe " + p.version + " commit " + p.commit + " pipeline " + p.pipeline_name + " seed " +
+         std::to_string(p.seed) + "\n";
 }
 
 std::string quoted(const std::string& s) {
@@ -183,6 +184,7 @@ void write_results(const fs::path& dir, const ResultSet& results, const Provenan
     write_text_attribute(file, "started", provenance.started);
     write_attribute(file, "complete", static_cast<int>(provenance.complete));
     write_text_attribute(file, "pipeline", provenance.pipeline_json);
+    write_text_attribute(file, "pipeline_name", provenance.pipeline_name);
     for (const auto& [group, r] : results) write_group(file, group, r);
     H5Fflush(file, H5F_SCOPE_GLOBAL);
   }

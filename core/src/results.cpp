@@ -81,6 +81,15 @@ void RunningMean::add(double x) {
   m2_ += d * (x - mean_);
 }
 
+void RunningMean::add(double x, long times) {
+  if (times <= 0) return;
+  const double nb = static_cast<double>(times), na = static_cast<double>(n_);
+  const double d = x - mean_;
+  n_ += times;
+  mean_ += d * nb / static_cast<double>(n_);
+  m2_ += d * d * na * nb / static_cast<double>(n_);
+}
+
 double RunningMean::standard_error() const {
   return n_ > 1 ? std::sqrt(variance() / static_cast<double>(n_)) : std::nan("");
 }

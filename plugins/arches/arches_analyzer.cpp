@@ -77,7 +77,7 @@ void ArchesAnalyzer::add_size_distribution(const std::vector<Eigen::Index>& n, d
   // An arch size first seen now was absent (n = 0) from every earlier frame.
   while (n_per_particle_.size() < n.size()) {
     RunningMean m;
-    for (long f = 0; f + 1 < measured_frames_; ++f) m.add(0.0);
+    m.add(0.0, measured_frames_ - 1);
     n_per_particle_.push_back(m);
   }
   for (std::size_t s = 1; s < n_per_particle_.size(); ++s) {

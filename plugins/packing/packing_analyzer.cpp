@@ -189,8 +189,7 @@ void PackingAnalyzer::consume(const Frame& frame, FrameCache& cache) {
     if (m.profile.size() > profile_.size()) {
       const std::size_t old = profile_.size();
       profile_.resize(m.profile.size());
-      for (std::size_t k = old; k < profile_.size(); ++k)
-        for (long f = 0; f < frames_; ++f) profile_[k].add(0.0);
+      for (std::size_t k = old; k < profile_.size(); ++k) profile_[k].add(0.0, frames_);
     }
     for (std::size_t k = 0; k < profile_.size(); ++k)
       profile_[k].add(k < m.profile.size() ? m.profile[k] : 0.0);

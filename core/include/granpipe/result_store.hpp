@@ -10,6 +10,7 @@
 namespace granpipe {
 
 struct Provenance {
+  std::string pipeline_name;
   std::string pipeline_json;  // the pipeline as run, defaults filled in
   std::string version, commit;
   std::uint64_t seed = 0;

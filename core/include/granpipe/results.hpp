@@ -90,6 +90,9 @@ class Results {
 class RunningMean {
  public:
   void add(double x);
+  // Adds x `times` times at once (Chan et al.'s pairwise update): e.g. the zeros of the
+  // earlier frames for a histogram bin seen for the first time.
+  void add(double x, long times);
   long count() const { return n_; }
   double mean() const { return mean_; }
   double variance() const { return n_ > 1 ? m2_ / static_cast<double>(n_ - 1) : 0.0; }
