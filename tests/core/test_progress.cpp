@@ -1,0 +1,31 @@
+// Progress off a terminal (as in CI and logs): plain lines, the last one complete.
+#include <gtest/gtest.h>
+
+#include "granpipe/progress.hpp"
+
+using namespace granpipe;
+
+TEST(Progress, PlainFinalLineWithCountAndRate) {
+  Progress p;
+  testing::internal::CaptureStderr();
+  p.start("demo", 4, "taps");
+  for (int k = 0; k < 4; ++k) p.advance();
+  p.finish();
+  const std::string out = testing::internal::GetCapturedStderr();
+  EXPECT_NE(out.find("demo: 4/4 taps (100.0%)"), std::string::npos) << out;
+  EXPECT_NE(out.find("taps/s"), std::string::npos) << out;
+  EXPECT_NE(out.find("ETA done"), std::string::npos) << out;
+  EXPECT_EQ(out.find('\r'), std::string::npos) << "no bar redraws off a terminal";
+  EXPECT_EQ(p.done(), 4.0);
+}
+
+TEST(Progress, DisabledPrintsNothingButCounts) {
+  Progress p;
+  p.set_enabled(false);
+  testing::internal::CaptureStderr();
+  p.start("quiet", 2, "frames");
+  p.advance(2);
+  p.finish();
+  EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
+  EXPECT_EQ(p.done(), 2.0);
+}
