@@ -63,7 +63,9 @@ Object open_dataset(hid_t loc, const std::string& path) {
 }
 
 Object create_group(hid_t loc, const std::string& path) {
-  return owned(H5Gcreate2(loc, path.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+  Object lcpl = owned(H5Pcreate(H5P_LINK_CREATE), path + ": cannot create the group");
+  check(H5Pset_create_intermediate_group(lcpl.id(), 1), path + ": cannot create the group");
+  return owned(H5Gcreate2(loc, path.c_str(), lcpl.id(), H5P_DEFAULT, H5P_DEFAULT),
                path + ": cannot create the group");
 }
 

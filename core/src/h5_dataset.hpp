@@ -25,7 +25,7 @@ std::vector<std::string> members(hid_t group, const std::string& path);
 
 Object open_group(hid_t loc, const std::string& path);
 Object open_dataset(hid_t loc, const std::string& path);
-Object create_group(hid_t loc, const std::string& path);
+Object create_group(hid_t loc, const std::string& path);  // with any missing parents
 Shape shape_of(hid_t dataset, const std::string& path);
 
 // An extendable series: zero rows of shape `item`, chunked by `chunk_rows` rows along an

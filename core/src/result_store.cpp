@@ -23,13 +23,6 @@ using h5::owned;
 using h5::write_attribute;
 using h5::write_text_attribute;
 
-Object make_group(hid_t parent, const std::string& name) {
-  Object lcpl = owned(H5Pcreate(H5P_LINK_CREATE), name + ": cannot make a property list");
-  h5::check(H5Pset_create_intermediate_group(lcpl.id(), 1), name + ": cannot make the group");
-  return owned(H5Gcreate2(parent, name.c_str(), lcpl.id(), H5P_DEFAULT, H5P_DEFAULT),
-               name + ": cannot make the group");
-}
-
 void write_vector(hid_t parent, const std::string& name, const std::vector<double>& v) {
   hsize_t n = v.size();
   Object space = owned(H5Screate_simple(1, &n, nullptr), name + ": cannot make the dataspace");
@@ -40,7 +33,7 @@ void write_vector(hid_t parent, const std::string& name, const std::vector<doubl
 }
 
 void write_group(hid_t file, const std::string& group, const Results& r) {
-  const Object group_obj = make_group(file, group);
+  const Object group_obj = h5::create_group(file, group);
   const hid_t g = group_obj.id();
   for (const auto& [name, s] : r.scalars()) {
     Object space = owned(H5Screate(H5S_SCALAR), name + ": cannot make the dataspace");
@@ -55,7 +48,7 @@ void write_group(hid_t file, const std::string& group, const Results& r) {
     write_text_attribute(ds, "doc", s.doc);
   }
   for (const auto& [name, t] : r.tables()) {
-    const Object tg_obj = make_group(g, name);
+    const Object tg_obj = h5::create_group(g, name);
     const hid_t tg = tg_obj.id();
     write_text_attribute(tg, "kind", "table");
     write_attribute(tg, "columns", t.columns);
@@ -64,7 +57,7 @@ void write_group(hid_t file, const std::string& group, const Results& r) {
     for (std::size_t c = 0; c < t.columns.size(); ++c) write_vector(tg, t.columns[c], t.data[c]);
   }
   for (const auto& [name, h] : r.histograms()) {
-    const Object hg_obj = make_group(g, name);
+    const Object hg_obj = h5::create_group(g, name);
     const hid_t hg = hg_obj.id();
     write_text_attribute(hg, "kind", "histogram");
     write_attribute(hg, "density", static_cast<int>(h.density));
@@ -75,7 +68,7 @@ void write_group(hid_t file, const std::string& group, const Results& r) {
     if (!h.errors.empty()) write_vector(hg, "errors", h.errors);
   }
   for (const auto& [name, f] : r.fits()) {
-    const Object fg_obj = make_group(g, name);
+    const Object fg_obj = h5::create_group(g, name);
     const hid_t fg = fg_obj.id();
     write_text_attribute(fg, "kind", "fit");
     write_text_attribute(fg, "model", f.model);
@@ -88,10 +81,10 @@ void write_group(hid_t file, const std::string& group, const Results& r) {
     write_vector(fg, "covariance", cov);  // column-major, names x names
   }
   if (!r.plots().empty()) {
-    const Object pg_obj = make_group(g, "_plots");
+    const Object pg_obj = h5::create_group(g, "_plots");
     const hid_t pg = pg_obj.id();
     for (const auto& [name, pl] : r.plots()) {
-      const Object one_obj = make_group(pg, name);
+      const Object one_obj = h5::create_group(pg, name);
     const hid_t one = one_obj.id();
       write_text_attribute(one, "table", pl.table);
       write_text_attribute(one, "x", pl.x);
