@@ -48,22 +48,22 @@ PointPlugins make_plugins(const Pipeline::Impl& p, std::size_t k, int threads, L
   const Seeds seeds = Seeds(p.seed).derive("point", k);
   PointPlugins made;
   // Plugins check what the schema cannot (one parameter against another, a file's
-  // content); their messages get the pipeline's location in front.
+  // content); their messages name the parameter (ctx.param) and get the file in front.
   try {
     made.source = p.source->make_source({point.source_params, seeds.derive("source:" + p.source->name),
-                                         threads, log, progress, dir, "source"});
+                                         threads, log, progress, dir, "source", "source.params"});
   } catch (const InputError& e) {
-    throw InputError(p.origin + ": source: " + e.what());
+    throw InputError(p.origin + ": " + e.what());
   }
   const FrameContent have = made.source->content();
   for (std::size_t a = 0; a < p.analyzers.size(); ++a) {
     const AnalyzerSpec& spec = p.analyzers[a];
     try {
-      made.analyzers.push_back(spec.info->make_analyzer({point.analyzer_params[a],
-                                                         seeds.derive("analyzer:" + spec.name), threads,
-                                                         log, progress, dir, spec.name}));
+      made.analyzers.push_back(spec.info->make_analyzer(
+          {point.analyzer_params[a], seeds.derive("analyzer:" + spec.name), threads, log, progress, dir,
+           spec.name, "analyzers[" + std::to_string(a) + "].params"}));
     } catch (const InputError& e) {
-      throw InputError(spec.where + ": " + e.what());
+      throw InputError(p.origin + ": " + e.what());
     }
     const std::string missing = describe_needs(made.analyzers.back()->needs(), have);
     if (!missing.empty()) {

@@ -66,7 +66,7 @@ ArchesAnalyzer::ArchesAnalyzer(const PluginContext& ctx)
   std::set<std::int64_t> seen;
   for (std::int64_t s : ctx.params.integers("span_sizes")) {
     if (!seen.insert(s).second) {
-      throw InputError("arches.span_sizes: expected distinct arch sizes, got " +
+      throw InputError(ctx.param("span_sizes") + ": expected distinct arch sizes, got " +
                        std::to_string(s) + " twice");
     }
     span_by_size_.emplace_back(static_cast<long>(s), SpanHistogram(span_bin_));

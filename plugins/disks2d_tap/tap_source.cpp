@@ -80,14 +80,15 @@ DepositOptions deposit_options(const Params& p) {
   return o;
 }
 
-TapSchedule tap_schedule(const Params& p) {
+TapSchedule tap_schedule(const PluginContext& ctx) {
+  const Params& p = ctx.params;
   if (p.string("protocol") == "constant") {
     return TapSchedule::constant(p.real("A"), p.integer("equilibration_taps"),
                                  p.integer("production_taps"), p.integer("save_every"));
   }
   if (!(p.real("anneal_A_max") > p.real("anneal_A_min"))) {
     std::ostringstream s;
-    s << "disks2d_tap.anneal_A_max: expected more than anneal_A_min = " << p.real("anneal_A_min")
+    s << ctx.param("anneal_A_max") << ": expected more than anneal_A_min = " << p.real("anneal_A_min")
       << ", got " << p.real("anneal_A_max");
     throw InputError(s.str());
   }
@@ -120,7 +121,7 @@ TapSource::TapSource(const PluginContext& ctx)
     : progress_(ctx.progress),
       deposition_rng_(replica_seeds(ctx).stream("deposition")),
       tap_rng_(replica_seeds(ctx).stream("tap")),
-      schedule_(tap_schedule(ctx.params)),
+      schedule_(tap_schedule(ctx)),
       shaker_(static_cast<int>(ctx.params.integer("mc_loops")),
               ctx.params.string("dilation") == "centre_height" ? Dilation::CentreHeight
                                                               : Dilation::HeightAboveContact) {
@@ -132,23 +133,23 @@ TapSource::TapSource(const PluginContext& ctx)
   const double r_max = p.real("radius") * (1.0 + p.real("radius_spread"));
   if (2.0 * r_max > width) {
     std::ostringstream s;
-    s << "disks2d_tap.radius: expected disks narrower than the box (width " << width
+    s << ctx.param("radius") << ": expected disks narrower than the box (width " << width
       << "), got largest diameter " << 2.0 * r_max;
     throw InputError(s.str());
   }
   if (p.real("delta") > r_min) {
     std::ostringstream s;
-    s << "disks2d_tap.delta: expected at most the smallest radius " << r_min << ", got "
+    s << ctx.param("delta") << ": expected at most the smallest radius " << r_min << ", got "
       << p.real("delta");
     throw InputError(s.str());
   }
   if (p.string("protocol") == "constant" && p.integer("production_taps") < p.integer("save_every")) {
-    throw InputError("disks2d_tap.production_taps: expected at least save_every = " +
+    throw InputError(ctx.param("production_taps") + ": expected at least save_every = " +
                      std::to_string(p.integer("save_every")) + " (else nothing is saved), got " +
                      std::to_string(p.integer("production_taps")));
   }
   if (p.string("protocol") == "annealed" && p.integer("anneal_taps_per_step") < p.integer("save_every")) {
-    throw InputError("disks2d_tap.anneal_taps_per_step: expected at least save_every = " +
+    throw InputError(ctx.param("anneal_taps_per_step") + ": expected at least save_every = " +
                      std::to_string(p.integer("save_every")) + " (else nothing is saved), got " +
                      std::to_string(p.integer("anneal_taps_per_step")));
   }
@@ -156,7 +157,7 @@ TapSource::TapSource(const PluginContext& ctx)
   for (double ri : radii) area += std::numbers::pi * ri * ri;
   const double height = std::max(area / (width * p.real("initial_fraction")), 2.0 * r_max);
   RandomStream placement = seeds.stream("placement");
-  packing_ = place_at_random(width, height, radii, placement, "disks2d_tap.N");
+  packing_ = place_at_random(width, height, radii, placement, ctx.param("N"));
   deposit_ = std::make_unique<Deposit>(packing_, deposit_options(p));
 }
 

@@ -31,22 +31,23 @@ H5mdSource::H5mdSource(const PluginContext& ctx)
       first_(static_cast<long>(ctx.params.integer("first"))),
       last_(static_cast<long>(ctx.params.integer("last"))),
       stride_(static_cast<long>(ctx.params.integer("stride"))),
-      max_overlap_(ctx.params.real("max_overlap")) {
+      max_overlap_(ctx.params.real("max_overlap")),
+      max_overlap_param_(ctx.param("max_overlap")) {
   const FrameFileInfo& info = reader_.info();
   const long frames = info.frames;
   const std::string held = " (" + info.path + " holds " + std::to_string(frames) + " frames)";
-  if (frames == 0) throw InputError("h5md.file: expected a file with frames, got none" + held);
+  if (frames == 0) throw InputError(ctx.param("file") + ": expected a file with frames, got none" + held);
   if (first_ >= frames) {
-    throw InputError("h5md.first: expected a frame index below " + std::to_string(frames) +
+    throw InputError(ctx.param("first") + ": expected a frame index below " + std::to_string(frames) +
                      ", got " + std::to_string(first_) + held);
   }
   if (last_ == -1) last_ = frames - 1;
   if (last_ >= frames) {
-    throw InputError("h5md.last: expected -1 or a frame index below " + std::to_string(frames) +
+    throw InputError(ctx.param("last") + ": expected -1 or a frame index below " + std::to_string(frames) +
                      ", got " + std::to_string(last_) + held);
   }
   if (last_ < first_) {
-    throw InputError("h5md.last: expected -1 or an index >= first (" + std::to_string(first_) +
+    throw InputError(ctx.param("last") + ": expected -1 or an index >= first (" + std::to_string(first_) +
                      "), got " + std::to_string(last_));
   }
   if (!info.complete) {
@@ -102,7 +103,7 @@ void H5mdSource::check_overlaps(const Frame& frame, const std::string& where) co
       msg << where << ": particles " << i << " and " << j << " (ids " << frame.id[i] << ", "
           << frame.id[j] << ") overlap by " << overlap
           << " of the smaller radius, expected at most " << max_overlap_
-          << " (raise h5md.max_overlap for soft-particle data)";
+          << " (raise " << max_overlap_param_ << " for soft-particle data)";
       throw InputError(msg.str());
     }
   }

@@ -30,6 +30,7 @@ class H5mdSource : public Source {
   long first_ = 0, last_ = 0, stride_ = 1;
   long next_ = 0, read_ = 0;
   double max_overlap_;
+  std::string max_overlap_param_;  // its path in the pipeline, for the message
   std::optional<Frame> first_frame_;
 };
 

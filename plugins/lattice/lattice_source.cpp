@@ -45,7 +45,7 @@ LatticeSource::LatticeSource(const PluginContext& ctx)
   std::vector<std::int64_t> cells = ctx.params.integers("cells");
   if (cells.empty()) cells.assign(dim, 4);
   if (static_cast<int>(cells.size()) != dim) {
-    throw InputError("lattice.cells: expected " + std::to_string(dim) +
+    throw InputError(ctx.param("cells") + ": expected " + std::to_string(dim) +
                      " entries (one per axis of the " + axis_word(dim) + " " +
                      ctx.params.string("lattice") + " lattice), got " +
                      std::to_string(cells.size()));

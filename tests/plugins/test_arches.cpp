@@ -518,7 +518,7 @@ TEST(ArchesAnalyzer, AveragesOverFramesWithStandardErrors) {
   granpipe::Log log;
   log.set_quiet(true);
   granpipe::Progress progress;
-  const granpipe::PluginContext ctx{p, granpipe::Seeds(1), 1, log, progress, dir, ""};
+  const granpipe::PluginContext ctx{p, granpipe::Seeds(1), 1, log, progress, dir, "", ""};
   ga::ArchesAnalyzer analyzer(ctx);
   EXPECT_EQ(analyzer.needs().dim, 2);
   EXPECT_TRUE(analyzer.needs().supports);
@@ -600,7 +600,7 @@ TEST(ArchesAnalyzer, NoPicturesWithoutAnOutputDirectory) {
   granpipe::Log log;
   log.set_quiet(true);
   granpipe::Progress progress;
-  const granpipe::PluginContext ctx{p, granpipe::Seeds(1), 1, log, progress, {}, ""};
+  const granpipe::PluginContext ctx{p, granpipe::Seeds(1), 1, log, progress, {}, "", ""};
   ga::ArchesAnalyzer analyzer(ctx);
   granpipe::FrameCache cache;
   Frame empty = make_frame({}, 2.0);
@@ -620,7 +620,7 @@ TEST(ArchesAnalyzer, DuplicateSpanSizesAreRefused) {
                             {"svg_frames", std::int64_t{0}}});
   granpipe::Log log;
   granpipe::Progress progress;
-  const granpipe::PluginContext ctx{p, granpipe::Seeds(1), 1, log, progress, {}, ""};
+  const granpipe::PluginContext ctx{p, granpipe::Seeds(1), 1, log, progress, {}, "", ""};
   EXPECT_THROW(ga::ArchesAnalyzer{ctx}, granpipe::InputError);
 }
 
@@ -635,7 +635,7 @@ TEST(ArchesPlugin, LoadsAndDeclaresItsSchema) {
   const granpipe::Params p = params(0, 0.05);
   granpipe::Log log;
   granpipe::Progress progress;
-  const granpipe::PluginContext ctx{p, granpipe::Seeds(1), 1, log, progress, {}, ""};
+  const granpipe::PluginContext ctx{p, granpipe::Seeds(1), 1, log, progress, {}, "", ""};
   const auto analyzer = info.make_analyzer(ctx);
   EXPECT_TRUE(analyzer->needs().supports);
   EXPECT_EQ(analyzer->needs().dim, 2);

@@ -441,7 +441,7 @@ std::vector<Frame> run_source(const granpipe::Params& params, std::uint64_t seed
   log.set_quiet(true);
   granpipe::Progress progress;
   progress.set_enabled(false);
-  granpipe::PluginContext ctx{params, Seeds(seed), 1, log, progress, {}, ""};
+  granpipe::PluginContext ctx{params, Seeds(seed), 1, log, progress, {}, "", ""};
   dt::TapSource source(ctx);
   std::vector<Frame> frames;
   Frame f;

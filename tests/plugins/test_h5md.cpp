@@ -53,7 +53,7 @@ class H5mdSourceTest : public ::testing::Test {
                       {"radius", 0.5},
                       {"max_overlap", max_overlap}});
     return std::make_unique<h5md::H5mdSource>(
-        PluginContext{params_, Seeds{1}, 1, log_, progress_, {}, ""});
+        PluginContext{params_, Seeds{1}, 1, log_, progress_, {}, "", ""});
   }
 
   // Steps of every frame the source yields.
@@ -113,11 +113,11 @@ TEST_F(H5mdSourceTest, SelectionOutsideTheFileIsAnInputError) {
     }
     return std::string("(no InputError)");
   };
-  EXPECT_EQ(message(4, -1), "h5md.first: expected a frame index below 4, got 4 (" + p.string() +
+  EXPECT_EQ(message(4, -1), "first: expected a frame index below 4, got 4 (" + p.string() +
                                 " holds 4 frames)");
-  EXPECT_EQ(message(0, 4), "h5md.last: expected -1 or a frame index below 4, got 4 (" +
+  EXPECT_EQ(message(0, 4), "last: expected -1 or a frame index below 4, got 4 (" +
                                p.string() + " holds 4 frames)");
-  EXPECT_EQ(message(3, 2), "h5md.last: expected -1 or an index >= first (3), got 2");
+  EXPECT_EQ(message(3, 2), "last: expected -1 or an index >= first (3), got 2");
 }
 
 TEST_F(H5mdSourceTest, ReadsTheFinishedFramesOfAnUnfinishedFile) {
@@ -162,7 +162,7 @@ TEST_F(H5mdSourceTest, OverlappingParticlesAreRefusedWithThePair) {
   const fs::path p = write_pair(dir_, 0.9);  // overlap 0.1 = 20% of the radius
   EXPECT_EQ(error_of([&] { return source(p, 0, -1, 1); }),
             p.string() + ": frame 0: particles 0 and 1 (ids 0, 1) overlap by 0.2 of the smaller "
-                         "radius, expected at most 1e-06 (raise h5md.max_overlap for soft-particle data)");
+                         "radius, expected at most 1e-06 (raise max_overlap for soft-particle data)");
   EXPECT_EQ(error_of([&] { return source(p, 0, -1, 1, 0.25); }), "(no InputError)");
 }
 

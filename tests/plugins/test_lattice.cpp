@@ -49,7 +49,7 @@ std::vector<Frame> run(std::map<std::string, ParamValue> set, std::uint64_t seed
   granpipe::Log log;
   log.set_quiet(true);
   granpipe::Progress progress;
-  const granpipe::PluginContext ctx{params, granpipe::Seeds(seed), 1, log, progress, {}, ""};
+  const granpipe::PluginContext ctx{params, granpipe::Seeds(seed), 1, log, progress, {}, "", ""};
   LatticeSource source(ctx);
   std::vector<Frame> frames;
   Frame f;
@@ -133,7 +133,7 @@ TEST(Lattice, CellsMustMatchTheDimension) {
     run({{"lattice", std::string("fcc")}, {"cells", std::vector<std::int64_t>{4, 4}}});
     FAIL() << "expected an InputError";
   } catch (const granpipe::InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("lattice.cells: expected 3 entries"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("cells: expected 3 entries"), std::string::npos)
         << e.what();
   }
   EXPECT_THROW(run({{"lattice", std::string("square")}, {"cells", std::vector<std::int64_t>{2, 2, 2}}}),

@@ -77,7 +77,7 @@ std::vector<Frame> lattice(const Values& set, std::uint64_t seed = 3) {
   if (!info) throw std::runtime_error("the lattice plugin is not on GRANPIPE_PLUGIN_PATH");
   const granpipe::Params params = params_of(info->schema, set);
   Context c;
-  const granpipe::PluginContext ctx{params, granpipe::Seeds(seed), 1, c.log, c.progress, {}, ""};
+  const granpipe::PluginContext ctx{params, granpipe::Seeds(seed), 1, c.log, c.progress, {}, "", ""};
   auto source = info->make_source(ctx);
   std::vector<Frame> frames;
   Frame f;
@@ -276,7 +276,7 @@ TEST(Packing, AnalyzerAveragesFrames) {
   const granpipe::Params params =
       params_of(granpipe::packing::schema(), {{"exclude_bottom", 0.5}, {"profile_step", 0.25}});
   Context c;
-  const granpipe::PluginContext ctx{params, granpipe::Seeds(1), 1, c.log, c.progress, {}, ""};
+  const granpipe::PluginContext ctx{params, granpipe::Seeds(1), 1, c.log, c.progress, {}, "", ""};
   granpipe::packing::PackingAnalyzer analyzer(ctx);
   granpipe::RunningMean phi, z;
   PackingSettings s;

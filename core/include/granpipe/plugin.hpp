@@ -41,6 +41,14 @@ struct PluginContext {
   // The instance's name in the pipeline ("source", or the analyzer's name): files a
   // plugin writes into output_dir start with it, so two instances never collide.
   std::string name;
+  // Where the parameters sit in the pipeline, e.g. "source.params" or "analyzers[1].params".
+  std::string params_path;
+
+  // "source.params.cells": the start of a message about one parameter, so that a plugin's
+  // own checks read like the core's ("<file>: source.params.cells: expected ..., got ...").
+  std::string param(const std::string& name) const {
+    return params_path.empty() ? name : params_path + "." + name;
+  }
 };
 
 // Produces frames until done. Long sources advance ctx.progress by the units they
