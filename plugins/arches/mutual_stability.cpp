@@ -35,12 +35,6 @@ bool has_left_partner(const Supports& s, Eigen::Index i) {
 
 }  // namespace
 
-double horizontal_separation(const Container& c, double dx) {
-  if (!c.periodic(0)) return dx;
-  const double length = c.length(0);
-  return dx - length * std::round(dx / length);
-}
-
 void check_supports(const Frame& frame, const std::string& where) {
   if (frame.dim != 2) {
     throw InputError(where + ": dim: expected a 2D frame, got " + std::to_string(frame.dim) + "D");
@@ -89,7 +83,7 @@ std::vector<Arch> find_arches(const Frame& frame, const std::string& where) {
     arch.disks.push_back(k);
     for (std::int64_t j = right_mutual_partner(s, k); j != partner::none;
          j = right_mutual_partner(s, k)) {
-      dx += horizontal_separation(frame.container, frame.position(j, 0) - frame.position(k, 0));
+      dx += frame.container.minimum_image(0, frame.position(j, 0) - frame.position(k, 0));
       k = j;
       arch.disks.push_back(k);
     }

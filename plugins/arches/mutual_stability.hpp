@@ -28,9 +28,6 @@ void check_supports(const Frame& frame, const std::string& where);
 // or partner::none.
 std::int64_t right_mutual_partner(const Supports& supports, Eigen::Index i);
 
-// x_j - x_i given as `dx`, wrapped to the minimum image when the x axis is periodic.
-double horizontal_separation(const Container& container, double dx);
-
 // Every arch of a frame whose supports passed check_supports. Throws InputError naming
 // `where` when labels close a ring of mutual supports (no chain has two ends).
 std::vector<Arch> find_arches(const Frame& frame, const std::string& where);

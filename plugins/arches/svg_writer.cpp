@@ -103,7 +103,7 @@ void write_arches_svg(const std::filesystem::path& path, const Frame& frame,
       const Eigen::Index i = a.disks[k], j = a.disks[k + 1];
       const double x1 = frame.position(i, 0), y1 = frame.position(i, 1);
       const double x2 =
-          x1 + horizontal_separation(frame.container, frame.position(j, 0) - x1);
+          x1 + frame.container.minimum_image(0, frame.position(j, 0) - x1);
       out << "<line x1=\"" << x1 << "\" y1=\"" << y1 << "\" x2=\"" << x2 << "\" y2=\""
           << frame.position(j, 1) << "\"/>\n";
     }

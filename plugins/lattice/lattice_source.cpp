@@ -119,13 +119,7 @@ void LatticeSource::jitter(Frame& frame, std::int64_t index) const {
       }
     } while (r2 > 1.0);
     for (int a = 0; a < dim; ++a) {
-      double x = frame.position(k, a) + reach * u[a];
-      if (c.periodic(a)) {  // back into [lo, hi)
-        const double len = c.length(a);
-        x -= len * std::floor((x - c.lo[a]) / len);
-        if (x >= c.hi[a]) x = c.lo[a];
-      }
-      frame.position(k, a) = x;
+      frame.position(k, a) = c.wrap(a, frame.position(k, a) + reach * u[a]);
     }
   }
 }

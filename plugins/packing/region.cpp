@@ -59,11 +59,7 @@ std::vector<char> centres_in(const Frame& frame, const Region& region) {
   for (Eigen::Index k = 0; k < frame.size(); ++k) {
     bool inside = true;
     for (int a = 0; a < frame.dim && inside; ++a) {
-      double x = frame.position(k, a);
-      if (c.periodic(a)) {
-        x -= c.length(a) * std::floor((x - c.lo[a]) / c.length(a));
-        if (x >= c.hi[a]) x = c.lo[a];
-      }
+      const double x = c.wrap(a, frame.position(k, a));
       inside = region.lo[a] <= x && x < region.hi[a];
     }
     in[static_cast<std::size_t>(k)] = inside;

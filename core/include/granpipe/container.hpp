@@ -1,6 +1,7 @@
 #pragma once
 #include <Eigen/Core>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <string>
 
@@ -39,6 +40,19 @@ struct Container {
 
   bool periodic(int axis) const { return boundary[axis][0] == Boundary::Periodic; }
   double length(int axis) const { return hi[axis] - lo[axis]; }
+  // A separation along `axis` by the minimum-image convention (unchanged on other axes).
+  double minimum_image(int axis, double d) const {
+    return periodic(axis) ? d - length(axis) * std::round(d / length(axis)) : d;
+  }
+  // A coordinate brought back into [lo, hi) along a periodic axis (unchanged on others).
+  double wrap(int axis, double x) const {
+    if (!periodic(axis)) return x;
+    x -= length(axis) * std::floor((x - lo[axis]) / length(axis));
+    // Rounding can leave x a hair below lo (the quotient of a tiny offset rounds to -0)
+    // or exactly on hi; both belong at lo's side of the box.
+    if (x < lo[axis]) x += length(axis);
+    return x >= hi[axis] ? lo[axis] : x;
+  }
 
   // A fully periodic box of the given extents.
   static Container periodic_box(int dim, const Eigen::Vector3d& lo, const Eigen::Vector3d& hi);
