@@ -32,68 +32,65 @@ void write_vector(hid_t parent, const std::string& name, const std::vector<doubl
                    name + ": cannot write");
 }
 
+// A group for one result, tagged with what kind of result it holds.
+Object result_group(hid_t parent, const std::string& name, const char* kind) {
+  Object group = h5::create_group(parent, name);
+  write_text_attribute(group.id(), "kind", kind);
+  return group;
+}
+
 void write_group(hid_t file, const std::string& group, const Results& r) {
-  const Object group_obj = h5::create_group(file, group);
-  const hid_t g = group_obj.id();
+  const Object g = h5::create_group(file, group);
   for (const auto& [name, s] : r.scalars()) {
     Object space = owned(H5Screate(H5S_SCALAR), name + ": cannot make the dataspace");
-    Object ds_obj = owned(H5Dcreate2(g, name.c_str(), H5T_NATIVE_DOUBLE, space.id(), H5P_DEFAULT,
-                                     H5P_DEFAULT, H5P_DEFAULT), name + ": cannot make the dataset");
-    const hid_t ds = ds_obj.id();
-    h5::check(H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, &s.value),
+    Object ds = owned(H5Dcreate2(g.id(), name.c_str(), H5T_NATIVE_DOUBLE, space.id(), H5P_DEFAULT,
+                                 H5P_DEFAULT, H5P_DEFAULT), name + ": cannot make the dataset");
+    h5::check(H5Dwrite(ds.id(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, &s.value),
               name + ": cannot write");
-    write_text_attribute(ds, "kind", "scalar");
-    write_attribute(ds, "uncertainty", s.uncertainty);
-    write_text_attribute(ds, "unit", s.unit);
-    write_text_attribute(ds, "doc", s.doc);
+    write_text_attribute(ds.id(), "kind", "scalar");
+    write_attribute(ds.id(), "uncertainty", s.uncertainty);
+    write_text_attribute(ds.id(), "unit", s.unit);
+    write_text_attribute(ds.id(), "doc", s.doc);
   }
   for (const auto& [name, t] : r.tables()) {
-    const Object tg_obj = h5::create_group(g, name);
-    const hid_t tg = tg_obj.id();
-    write_text_attribute(tg, "kind", "table");
-    write_attribute(tg, "columns", t.columns);
-    write_attribute(tg, "units", t.units);
-    write_text_attribute(tg, "doc", t.doc);
-    for (std::size_t c = 0; c < t.columns.size(); ++c) write_vector(tg, t.columns[c], t.data[c]);
+    const Object tg = result_group(g.id(), name, "table");
+    write_attribute(tg.id(), "columns", t.columns);
+    write_attribute(tg.id(), "units", t.units);
+    write_text_attribute(tg.id(), "doc", t.doc);
+    for (std::size_t c = 0; c < t.columns.size(); ++c) write_vector(tg.id(), t.columns[c], t.data[c]);
   }
   for (const auto& [name, h] : r.histograms()) {
-    const Object hg_obj = h5::create_group(g, name);
-    const hid_t hg = hg_obj.id();
-    write_text_attribute(hg, "kind", "histogram");
-    write_attribute(hg, "density", static_cast<int>(h.density));
-    write_text_attribute(hg, "xlabel", h.xlabel);
-    write_text_attribute(hg, "doc", h.doc);
-    write_vector(hg, "edges", h.edges);
-    write_vector(hg, "values", h.values);
-    if (!h.errors.empty()) write_vector(hg, "errors", h.errors);
+    const Object hg = result_group(g.id(), name, "histogram");
+    write_attribute(hg.id(), "density", static_cast<int>(h.density));
+    write_text_attribute(hg.id(), "xlabel", h.xlabel);
+    write_text_attribute(hg.id(), "doc", h.doc);
+    write_vector(hg.id(), "edges", h.edges);
+    write_vector(hg.id(), "values", h.values);
+    if (!h.errors.empty()) write_vector(hg.id(), "errors", h.errors);
   }
   for (const auto& [name, f] : r.fits()) {
-    const Object fg_obj = h5::create_group(g, name);
-    const hid_t fg = fg_obj.id();
-    write_text_attribute(fg, "kind", "fit");
-    write_text_attribute(fg, "model", f.model);
-    write_attribute(fg, "names", f.names);
-    write_attribute(fg, "chi2", f.chi2);
-    write_attribute(fg, "dof", f.dof);
-    write_vector(fg, "values", f.values);
-    write_vector(fg, "errors", f.errors);
-    std::vector<double> cov(f.covariance.data(), f.covariance.data() + f.covariance.size());
-    write_vector(fg, "covariance", cov);  // column-major, names x names
+    const Object fg = result_group(g.id(), name, "fit");
+    write_text_attribute(fg.id(), "model", f.model);
+    write_attribute(fg.id(), "names", f.names);
+    write_attribute(fg.id(), "chi2", f.chi2);
+    write_attribute(fg.id(), "dof", f.dof);
+    write_vector(fg.id(), "values", f.values);
+    write_vector(fg.id(), "errors", f.errors);
+    const std::vector<double> cov(f.covariance.data(), f.covariance.data() + f.covariance.size());
+    write_vector(fg.id(), "covariance", cov);  // column-major, names x names
   }
   if (!r.plots().empty()) {
-    const Object pg_obj = h5::create_group(g, "_plots");
-    const hid_t pg = pg_obj.id();
+    const Object plots = h5::create_group(g.id(), "_plots");
     for (const auto& [name, pl] : r.plots()) {
-      const Object one_obj = h5::create_group(pg, name);
-    const hid_t one = one_obj.id();
-      write_text_attribute(one, "table", pl.table);
-      write_text_attribute(one, "x", pl.x);
-      write_attribute(one, "y", pl.y);
-      write_text_attribute(one, "xlabel", pl.xlabel);
-      write_text_attribute(one, "ylabel", pl.ylabel);
-      write_text_attribute(one, "title", pl.title);
-      write_attribute(one, "logx", static_cast<int>(pl.logx));
-      write_attribute(one, "logy", static_cast<int>(pl.logy));
+      const Object one = h5::create_group(plots.id(), name);
+      write_text_attribute(one.id(), "table", pl.table);
+      write_text_attribute(one.id(), "x", pl.x);
+      write_attribute(one.id(), "y", pl.y);
+      write_text_attribute(one.id(), "xlabel", pl.xlabel);
+      write_text_attribute(one.id(), "ylabel", pl.ylabel);
+      write_text_attribute(one.id(), "title", pl.title);
+      write_attribute(one.id(), "logx", static_cast<int>(pl.logx));
+      write_attribute(one.id(), "logy", static_cast<int>(pl.logy));
     }
   }
 }
@@ -166,9 +163,9 @@ void write_results(const fs::path& dir, const ResultSet& results, const Provenan
   const fs::path final_path = dir / "results.h5", tmp = dir / "results.h5.tmp";
   {
     h5::silence_error_stack();
-    const Object file_obj = owned(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT),
-                                  tmp.string() + ": cannot create");
-    const hid_t file = file_obj.id();
+    const Object file_object = owned(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT),
+                                     tmp.string() + ": cannot create");
+    const hid_t file = file_object.id();
     write_text_attribute(file, "granpipe_version", provenance.version);
     write_text_attribute(file, "git_commit", provenance.commit);
     write_attribute(file, "seed", provenance.seed);

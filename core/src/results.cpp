@@ -37,6 +37,11 @@ void Results::add_scalar(const std::string& name, double value, double uncertain
   scalars_[name] = {value, uncertainty, unit, doc};
 }
 
+void Results::add_mean(const std::string& name, const RunningMean& mean, const std::string& unit,
+                       const std::string& doc) {
+  add_scalar(name, mean.count() > 0 ? mean.mean() : std::nan(""), mean.standard_error(), unit, doc);
+}
+
 void Results::add_table(const std::string& name, Table table) {
   claim(name);
   for (const auto& col : table.data) {

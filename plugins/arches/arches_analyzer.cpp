@@ -25,12 +25,6 @@ std::string frame_name(long index, const Frame& frame) {
   return name;
 }
 
-void add_mean(Results& results, const std::string& name, const RunningMean& m,
-              const std::string& doc) {
-  const double nan = std::nan("");
-  results.add_scalar(name, m.count() > 0 ? m.mean() : nan,
-                     m.count() > 0 ? m.standard_error() : nan, "", doc);
-}
 
 }  // namespace
 
@@ -153,23 +147,23 @@ void ArchesAnalyzer::consume(const Frame& frame, FrameCache& cache) {
 void ArchesAnalyzer::finish(Results& results) {
   results.add_scalar("frames", static_cast<double>(measured_frames_), std::nan(""), "",
                      "frames analysed (frames without disks are skipped)");
-  add_mean(results, "arches_per_particle", arches_per_particle_,
+  results.add_mean("arches_per_particle", arches_per_particle_, "",
            "arches of two or more disks per disk");
-  add_mean(results, "p1_over_N", p1_, "end particles of arches per disk, Eq. (1)");
-  add_mean(results, "p2_over_N", p2_, "centre particles of arches per disk, Eq. (2)");
-  add_mean(results, "z_support_eq4", z_eq4_,
+  results.add_mean("p1_over_N", p1_, "", "end particles of arches per disk, Eq. (1)");
+  results.add_mean("p2_over_N", p2_, "", "centre particles of arches per disk, Eq. (2)");
+  results.add_mean("z_support_eq4", z_eq4_, "",
            "<z>_support = 2 [1 + sum_s n(s) / N], Eq. (4): counts base disks as two-supported");
-  add_mean(results, "z_support_direct", z_direct_,
+  results.add_mean("z_support_direct", z_direct_, "",
            "<z>_support = 2 (distinct supporting contacts) / N, the base counted once");
-  add_mean(results, "z_support_eq4_minus_direct", z_difference_,
+  results.add_mean("z_support_eq4_minus_direct", z_difference_, "",
            "Eq. (4) minus the direct count: 2 sum_i (2 - k_i) / N, = 2 base_fraction when "
            "every disk off the base has two supports");
-  add_mean(results, "base_fraction", base_fraction_, "disks resting on the base per disk");
-  add_mean(results, "missing_supports_per_particle", missing_supports_,
+  results.add_mean("base_fraction", base_fraction_, "", "disks resting on the base per disk");
+  results.add_mean("missing_supports_per_particle", missing_supports_, "",
            "sum_i (2 - k_i) / N, k_i the distinct supporting partners of disk i");
-  add_mean(results, "non_supporting_contact_fraction", non_supporting_,
+  results.add_mean("non_supporting_contact_fraction", non_supporting_, "",
            "geometric contacts (disk-disk and disk-wall) that support neither disk");
-  add_mean(results, "detached_support_fraction", detached_,
+  results.add_mean("detached_support_fraction", detached_, "",
            "supporting contacts named by the labels whose partners do not touch (0 for a "
            "consistent source)");
 

@@ -198,16 +198,11 @@ void PackingAnalyzer::consume(const Frame& frame, FrameCache& cache) {
 }
 
 void PackingAnalyzer::finish(Results& results) {
-  auto mean = [&](const char* name, const RunningMean& x, const std::string& unit,
-                  const std::string& doc) {
-    const bool any = x.count() > 0;
-    results.add_scalar(name, any ? x.mean() : std::nan(""), x.standard_error(), unit, doc);
-  };
   const std::string per_volume = dim_ == 2 ? "1/length^2" : "1/length^3";
-  mean("phi", phi_, "", "packing fraction of the region, exact (cut particles counted in part)");
-  mean("number_density", density_, per_volume, "particle centres in the region per unit volume");
-  mean("z_mean", z_, "", "mean number of particle contacts of the particles centred in the region");
-  mean("z_mean_with_walls", z_walls_, "", "z_mean with particle-wall contacts counted");
+  results.add_mean("phi", phi_, "", "packing fraction of the region, exact (cut particles counted in part)");
+  results.add_mean("number_density", density_, per_volume, "particle centres in the region per unit volume");
+  results.add_mean("z_mean", z_, "", "mean number of particle contacts of the particles centred in the region");
+  results.add_mean("z_mean_with_walls", z_walls_, "", "z_mean with particle-wall contacts counted");
   if (!by_ramp_.empty()) {
     results.add_table("by_ramp", by_ramp_.table("phi and z_mean per ramp branch (0 first increase, "
                                                 "1 decreasing, 2 increasing) and time (annealed "
@@ -218,7 +213,7 @@ void PackingAnalyzer::finish(Results& results) {
                                  .title = "packing fraction on the ramp branches"});
   }
   if (settings_.cuts_step > 0.0) {
-    mean("phi_cuts", phi_cuts_, "",
+    results.add_mean("phi_cuts", phi_cuts_, "",
          "mean area fraction of horizontal cuts through the region (stereological estimate of phi)");
   }
   results.add_scalar("frames", static_cast<double>(frames_), std::nan(""), "",

@@ -93,6 +93,13 @@ fs::path fresh_dir(const std::string& name) {
   return d;
 }
 
+// Run options without progress output (each test sets its own output directory).
+RunOptions quiet_options() {
+  RunOptions o;
+  o.progress = false;
+  return o;
+}
+
 }  // namespace
 
 TEST(PipelineErrors, MalformedJsonNamesLineAndColumn) {
@@ -226,8 +233,7 @@ TEST(Pipeline, SameSeedAndThreadsTwiceGivesTheSameBits) {
   const Pipeline p = Pipeline::parse(kGood, "p.json", {}, r);
   Log log;
   log.set_quiet(true);
-  RunOptions o;
-  o.progress = false;
+  RunOptions o = quiet_options();
   o.threads = 2;
   o.out = fresh_dir("twice_a");
   const double a = p.run(o, log).results.at("meanx").scalar("mean_x").value;
@@ -247,8 +253,7 @@ TEST(Pipeline, ExistingOutputDirectoryIsNeverOverwrittenSilently) {
   const Pipeline p = Pipeline::parse(kGood, "p.json", {}, r);
   Log log;
   log.set_quiet(true);
-  RunOptions o;
-  o.progress = false;
+  RunOptions o = quiet_options();
   o.out = fresh_dir("exists");
   fs::create_directories(*o.out);
   std::ofstream(*o.out / "precious.txt") << "mine";
@@ -270,8 +275,7 @@ TEST(Pipeline, SavedFramesReadBackAndCarryProvenance) {
   const Pipeline p = Pipeline::parse(kGood, "p.json", {}, r);
   Log log;
   log.set_quiet(true);
-  RunOptions o;
-  o.progress = false;
+  RunOptions o = quiet_options();
   o.out = fresh_dir("frames");
   p.run(o, log);
   FrameReader reader(*o.out / "frames.h5");

@@ -58,10 +58,15 @@ struct Plot {
   bool logx = false, logy = false;
 };
 
+class RunningMean;
+
 class Results {
  public:
   void add_scalar(const std::string& name, double value, double uncertainty = std::nan(""),
                   const std::string& unit = "", const std::string& doc = "");
+  // A mean over frames with its standard error; NaN when no frame contributed.
+  void add_mean(const std::string& name, const RunningMean& mean, const std::string& unit = "",
+                const std::string& doc = "");
   void add_table(const std::string& name, Table table);
   void add_histogram(const std::string& name, Histogram h);
   void add_fit(const std::string& name, Fit fit);

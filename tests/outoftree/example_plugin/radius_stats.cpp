@@ -13,9 +13,8 @@ class RadiusStats : public granpipe::Analyzer {
   }
 
   void finish(granpipe::Results& results) override {
-    results.add_scalar("mean_radius", radius_.mean(), radius_.standard_error(), "length",
-                       "mean particle radius, times scale");
-    results.add_scalar("particles", count_.mean(), count_.standard_error(), "", "particles per frame");
+    results.add_mean("mean_radius", radius_, "length", "mean particle radius, times scale");
+    results.add_mean("particles", count_, "", "particles per frame");
   }
 
  private:
