@@ -1,0 +1,174 @@
+#!/usr/bin/env python3
+"""Pools per-point tables over independent replicas of a sweep (the paper's Fig. 8: "averages
+over 5 independent simulations").
+
+Each replica is a sweep point that differs from the others only in the --over parameter
+(default source.params.replica). For every group of points that share all other swept
+parameters, rows of the table with the same key (default: branch and time, the by_ramp
+tables) are pooled: each quantity q (a column with a q_err partner) becomes the mean of the
+replica means, with the standard error across replicas (the honest error: frames of one run
+are correlated), or the run's own error where only one replica has the row. `frames` adds up,
+and `replicas` counts them. Writes, beside the input:
+
+  pooled.<table>.csv    one row per group and key
+  pooled.<table>.svg    with --plot Q: Q against time, one line per branch and group; with
+                        --reference DIR, the steady-state curve of a constant-amplitude sweep
+                        (DIR/sweep.points.csv: --reference-x against <analyzer>.Q) as points
+
+    scripts/pool_replicas.py out/tap2d_annealed --table packing.by_ramp --plot phi \\
+        --reference out/tap2d_arches
+"""
+import argparse
+import csv
+import json
+import math
+import os
+
+BRANCHES = {0: "first increase", 1: "decreasing", 2: "increasing"}
+
+
+def read_csv(path):
+    with open(path) as f:
+        lines = f.readlines()
+    provenance = lines[0].strip() if lines and lines[0].startswith("#") else ""
+    rows = list(csv.reader(line for line in lines if not line.startswith("#")))
+    if not rows:
+        raise SystemExit(f"{path}: expected a header row, found an empty table")
+    return provenance, rows[0], [[float(v) for v in row] for row in rows[1:]]
+
+
+def pool(tables, keys):
+    """tables: list of (header, rows), one per replica. Returns header and pooled rows."""
+    header = tables[0][0]
+    for h, _ in tables[1:]:
+        if h != header:
+            raise SystemExit(f"replicas disagree on the table's columns: {header} against {h}")
+    quantities = [c for c in header if c + "_err" in header]
+    index = {c: header.index(c) for c in header}
+    by_key = {}
+    for _, rows in tables:
+        for row in rows:
+            by_key.setdefault(tuple(row[index[k]] for k in keys), []).append(row)
+    out_header = list(keys) + ["replicas", "frames"] + [c for q in quantities for c in (q, q + "_err")]
+    out = []
+    for key in sorted(by_key):
+        rows = by_key[key]
+        n = len(rows)
+        line = list(key) + [n, sum(r[index["frames"]] for r in rows) if "frames" in index else math.nan]
+        for q in quantities:
+            values = [r[index[q]] for r in rows]
+            mean = sum(values) / n
+            if n > 1:
+                err = math.sqrt(sum((v - mean) ** 2 for v in values) / (n - 1) / n)
+            else:
+                err = rows[0][index[q + "_err"]]
+            line += [mean, err]
+        out.append(line)
+    return out_header, out
+
+
+def svg_plot(series, reference, xlabel, ylabel, path):
+    """Lines with error bars per series, reference points; plain SVG, no dependencies."""
+    pts = [(x, y) for s in series.values() for x, y, _ in s] + list(reference)
+    if not pts:
+        return
+    x0, x1 = min(x for x, _ in pts), max(x for x, _ in pts)
+    y0, y1 = min(y for _, y in pts), max(y for _, y in pts)
+    pad = 0.05 * (y1 - y0 or 1.0)
+    y0, y1 = y0 - pad, y1 + pad
+    x1 = x1 if x1 > x0 else x0 + 1.0
+    w, h, m, legend = 900, 460, 70, 230
+    right = w - m - legend
+    sx = lambda v: m + (v - x0) / (x1 - x0) * (right - m)
+    sy = lambda v: h - m - (v - y0) / (y1 - y0) * (h - 2 * m)
+    colours = ["#566573", "#c0392b", "#2471a3", "#229954", "#b9770e", "#7d3c98"]
+    out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" font-family="sans-serif" font-size="12">',
+           f'<rect x="{m}" y="{m}" width="{right - m}" height="{h - 2 * m}" fill="none" stroke="black"/>']
+    for k in range(6):
+        xv, yv = x0 + k * (x1 - x0) / 5, y0 + k * (y1 - y0) / 5
+        out.append(f'<text x="{sx(xv):.1f}" y="{h - m + 18}" text-anchor="middle">{xv:.3g}</text>')
+        out.append(f'<text x="{m - 8}" y="{sy(yv) + 4:.1f}" text-anchor="end">{yv:.4g}</text>')
+    out.append(f'<text x="{(m + right) / 2}" y="{h - 20}" text-anchor="middle">{xlabel}</text>')
+    out.append(f'<text x="18" y="{h / 2}" text-anchor="middle" transform="rotate(-90 18 {h / 2})">{ylabel}</text>')
+    legend_rows = list(sorted(series.items()))
+    for k, (name, s) in enumerate(legend_rows):
+        c = colours[k % len(colours)]
+        s = sorted(s)
+        out.append('<polyline fill="none" stroke="%s" points="%s"/>' % (c, " ".join(f"{sx(x):.1f},{sy(y):.1f}" for x, y, _ in s)))
+        for x, y, e in s:
+            if e > 0 and math.isfinite(e):
+                out.append(f'<line x1="{sx(x):.1f}" x2="{sx(x):.1f}" y1="{sy(y - e):.1f}" y2="{sy(y + e):.1f}" stroke="{c}"/>')
+        out.append(f'<text x="{right + 15}" y="{m + 10 + 16 * k}" fill="{c}" font-size="11">{name}</text>')
+    if reference:
+        for x, y in reference:
+            out.append(f'<rect x="{sx(x) - 3:.1f}" y="{sy(y) - 3:.1f}" width="6" height="6" fill="black"/>')
+        out.append(f'<text x="{right + 15}" y="{m + 10 + 16 * len(legend_rows)}" font-size="11">steady state (constant A)</text>')
+    out.append("</svg>")
+    with open(path, "w") as f:
+        f.write("\n".join(out) + "\n")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("out", help="output directory of a sweep run")
+    ap.add_argument("--table", action="append", required=True, help="<analyzer>.<table>, e.g. packing.by_ramp (repeatable)")
+    ap.add_argument("--over", default="source.params.replica", help="the swept parameter that numbers the replicas")
+    ap.add_argument("--key", action="append", help="key columns of a row (default: branch, time)")
+    ap.add_argument("--plot", help="quantity to plot against the last key column")
+    ap.add_argument("--reference", help="output directory of a constant-amplitude sweep to draw beside the plot")
+    ap.add_argument("--reference-x", default="source.params.A", help="column of the reference's sweep.points.csv for x")
+    args = ap.parse_args()
+    keys = args.key or ["branch", "time"]
+
+    _, header, points = read_csv(os.path.join(args.out, "sweep.points.csv"))
+    if args.over not in header:
+        raise SystemExit(f"{args.out}/sweep.points.csv: expected a swept column {args.over}, found {header[1:4]}...")
+    with open(os.path.join(args.out, "pipeline.json")) as f:
+        swept = list(json.load(f).get("sweep", {}).get("parameters", {}).keys())
+    others = [s for s in swept if s != args.over and s in header]
+    groups = {}
+    for p in points:
+        key = tuple(p[header.index(s)] for s in others)
+        groups.setdefault(key, []).append(int(p[header.index("point")]))
+
+    for table in args.table:
+        provenance, out_rows, out_header = "", [], None
+        series = {}
+        for g, (gkey, members) in enumerate(sorted(groups.items())):
+            tables = []
+            for point in members:
+                path = os.path.join(args.out, f"point_{point:03d}.{table}.csv")
+                if not os.path.exists(path):
+                    raise SystemExit(f"{path}: expected the table {table} of point {point}, found no file")
+                provenance, h, rows = read_csv(path)
+                tables.append((h, rows))
+            for k in keys:
+                if k not in tables[0][0]:
+                    raise SystemExit(f"{table}: expected a key column {k}, found {tables[0][0]}")
+            hdr, rows = pool(tables, keys)
+            tag = ", ".join(f"{s.split('.')[-1]}={v:g}" for s, v in zip(others, gkey))
+            out_header = (["group"] if others else []) + hdr
+            for r in rows:
+                out_rows.append(([tag] if others else []) + r)
+                if args.plot and args.plot in hdr:
+                    branch = BRANCHES.get(int(r[hdr.index("branch")]), "") if "branch" in hdr else ""
+                    name = " ".join(x for x in (branch, tag) if x) or "pooled"
+                    series.setdefault(name, []).append((r[hdr.index(keys[-1])], r[hdr.index(args.plot)], r[hdr.index(args.plot + "_err")]))
+        path = os.path.join(args.out, f"pooled.{table}.csv")
+        with open(path, "w", newline="") as f:
+            f.write(f"{provenance} pooled over {args.over} by scripts/pool_replicas.py\n")
+            csv.writer(f).writerows([out_header] + out_rows)
+        print(f"{path}: {len(out_rows)} rows from {sum(len(m) for m in groups.values())} points")
+        if args.plot and series:
+            reference = []
+            if args.reference:
+                _, rh, rrows = read_csv(os.path.join(args.reference, "sweep.points.csv"))
+                column = f"{table.split('.')[0]}.{args.plot}"
+                if args.reference_x not in rh or column not in rh:
+                    raise SystemExit(f"{args.reference}/sweep.points.csv: expected columns {args.reference_x} and {column}")
+                reference = [(r[rh.index(args.reference_x)], r[rh.index(column)]) for r in rrows]
+            svg_plot(series, reference, "A (frame time)" if keys[-1] == "time" else keys[-1], args.plot, os.path.join(args.out, f"pooled.{table}.svg"))
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,62 @@
+"""scripts/pool_replicas.py on hand-made replicas: the pooled value is the mean of the replica
+means and its error the standard error across replicas; a row only one replica has keeps that
+run's own error; frames add up; points of other swept values stay in their own group; replicas
+with different columns are refused."""
+import csv
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+script = sys.argv[1]
+
+
+def write(out, name, lines):
+    with open(os.path.join(out, name), "w") as f:
+        f.write("# granpipe test\n" + "\n".join(lines) + "\n")
+
+
+def run(out, *extra):
+    return subprocess.run([sys.executable, script, out, "--table", "packing.by_ramp", "--plot", "phi", *extra],
+                          capture_output=True, text=True)
+
+
+failures = []
+with tempfile.TemporaryDirectory() as out:
+    with open(os.path.join(out, "pipeline.json"), "w") as f:
+        json.dump({"sweep": {"parameters": {"source.params.N": [100, 200], "source.params.replica": [0, 1]}}}, f)
+    write(out, "sweep.points.csv", ["point,source.params.N,source.params.replica,packing.phi",
+                                    "0,100,0,0.8", "1,100,1,0.8", "2,200,0,0.8", "3,200,1,0.8"])
+    header = "branch,time,frames,phi,phi_err"
+    write(out, "point_000.packing.by_ramp.csv", [header, "1,1.5,10,0.80,0.01", "2,1.5,10,0.70,0.02"])
+    write(out, "point_001.packing.by_ramp.csv", [header, "1,1.5,12,0.84,0.03"])
+    write(out, "point_002.packing.by_ramp.csv", [header, "1,1.5,10,0.50,0.01"])
+    write(out, "point_003.packing.by_ramp.csv", [header, "1,1.5,10,0.50,0.01"])
+    r = run(out)
+    if r.returncode != 0:
+        failures.append(r.stderr)
+    else:
+        rows = list(csv.DictReader(line for line in open(os.path.join(out, "pooled.packing.by_ramp.csv"))
+                                   if not line.startswith("#")))
+        got = {(row["group"], row["branch"]): row for row in rows}
+        a = got[("N=100", "1.0")]
+        # mean of 0.80 and 0.84; standard error across two replicas = |0.84 - 0.80| / 2
+        if abs(float(a["phi"]) - 0.82) > 1e-12 or abs(float(a["phi_err"]) - 0.02) > 1e-12 or float(a["frames"]) != 22:
+            failures.append(f"pooled row {a}")
+        b = got[("N=100", "2.0")]
+        if float(b["replicas"]) != 1 or abs(float(b["phi_err"]) - 0.02) > 1e-12:
+            failures.append(f"single-replica row {b}")
+        c = got[("N=200", "1.0")]
+        if abs(float(c["phi"]) - 0.5) > 1e-12 or float(c["phi_err"]) != 0.0:
+            failures.append(f"second group {c}")
+        if len(rows) != 3 or not os.path.exists(os.path.join(out, "pooled.packing.by_ramp.svg")):
+            failures.append(f"{len(rows)} rows, svg written: {os.path.exists(os.path.join(out, 'pooled.packing.by_ramp.svg'))}")
+    write(out, "point_003.packing.by_ramp.csv", ["branch,time,frames,rho,rho_err", "1,1.5,10,0.50,0.01"])
+    r = run(out)
+    if r.returncode == 0 or "disagree" not in r.stderr:
+        failures.append(f"mismatched columns accepted: {r.returncode} {r.stderr}")
+if failures:
+    print("FAIL", *failures, sep="\n")
+    sys.exit(1)
+print("pool_replicas: means, errors across replicas, groups and frames are right")
