@@ -38,14 +38,19 @@ TapStep TapSchedule::at(std::int64_t tap) const {
   step.cycle = q / half_length;
   const std::int64_t within = q % half_length;
   const std::int64_t k = within / taps_per_step_ + 1;  // 1..steps
-  const double dA = (A_max_ - A_min_) / static_cast<double>(steps_);
-  // The last step of each ramp lands exactly on its end value.
+  // Both ramps visit the levels A_min + (A_max - A_min) j / steps, j = 0..steps, computed
+  // from j alone, so that a level is the same double on the way up and on the way down
+  // (A_min + k dA and A_max - k dA differ in the last bit: 1.7000000000000002 and 1.7),
+  // and tables keyed by A line the two branches up. The ends are exact.
   const bool rising = step.cycle % 2 == 0;
-  if (k == steps_) {
-    step.amplitude = rising ? A_max_ : A_min_;
+  const std::int64_t level = rising ? k : steps_ - k;
+  if (level == steps_) {
+    step.amplitude = A_max_;
+  } else if (level == 0) {
+    step.amplitude = A_min_;
   } else {
-    step.amplitude = rising ? A_min_ + dA * static_cast<double>(k)
-                            : A_max_ - dA * static_cast<double>(k);
+    step.amplitude = A_min_ + (A_max_ - A_min_) * static_cast<double>(level) /
+                                  static_cast<double>(steps_);
   }
   step.save = (within % taps_per_step_ + 1) % save_every_ == 0;
   return step;

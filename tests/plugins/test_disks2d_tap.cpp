@@ -425,6 +425,21 @@ TEST(Disks2dTapSchedule, AnnealedRampsUpAndDown) {
   EXPECT_EQ(cycles, (std::vector<std::int64_t>{0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3}));
 }
 
+TEST(Disks2dTapSchedule, RisingAndFallingRampsVisitTheSameAmplitudes) {
+  // Bug: the rising ramp computed A_min + k dA and the falling one A_max - k dA, so A = 1.7
+  // came out as 1.7000000000000002 going up and 1.7 going down, and tables keyed by A split.
+  const std::int64_t steps = 20;
+  const auto s = dt::TapSchedule::annealed(1.0, 2.0, steps, 1, 1, 1);
+  for (std::int64_t k = 1; k < steps; ++k) {
+    const double up = s.at(k).amplitude;              // level k on the way up
+    const double down = s.at(2 * steps - k).amplitude;  // level k on the way down
+    EXPECT_EQ(up, down) << "level " << k;
+    EXPECT_NEAR(up, 1.0 + 0.05 * static_cast<double>(k), 1e-15);
+  }
+  EXPECT_EQ(s.at(steps).amplitude, 2.0);
+  EXPECT_EQ(s.at(2 * steps).amplitude, 1.0);
+}
+
 namespace {
 
 granpipe::Params source_params(const std::map<std::string, granpipe::ParamValue>& overrides) {
