@@ -24,6 +24,8 @@ import json
 import math
 import os
 
+from svg_chart import COLOURS, Chart
+
 BRANCHES = {0: "first increase", 1: "decreasing", 2: "increasing"}
 
 
@@ -68,44 +70,27 @@ def pool(tables, keys):
 
 
 def svg_plot(series, reference, xlabel, ylabel, path):
-    """Lines with error bars per series, reference points; plain SVG, no dependencies."""
+    """Lines with error bars per series, reference points."""
     pts = [(x, y) for s in series.values() for x, y, _ in s] + list(reference)
     if not pts:
         return
     x0, x1 = min(x for x, _ in pts), max(x for x, _ in pts)
     y0, y1 = min(y for _, y in pts), max(y for _, y in pts)
     pad = 0.05 * (y1 - y0 or 1.0)
-    y0, y1 = y0 - pad, y1 + pad
-    x1 = x1 if x1 > x0 else x0 + 1.0
-    w, h, m, legend = 900, 460, 70, 230
-    right = w - m - legend
-    sx = lambda v: m + (v - x0) / (x1 - x0) * (right - m)
-    sy = lambda v: h - m - (v - y0) / (y1 - y0) * (h - 2 * m)
-    colours = ["#566573", "#c0392b", "#2471a3", "#229954", "#b9770e", "#7d3c98"]
-    out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" font-family="sans-serif" font-size="12">',
-           f'<rect x="{m}" y="{m}" width="{right - m}" height="{h - 2 * m}" fill="none" stroke="black"/>']
-    for k in range(6):
-        xv, yv = x0 + k * (x1 - x0) / 5, y0 + k * (y1 - y0) / 5
-        out.append(f'<text x="{sx(xv):.1f}" y="{h - m + 18}" text-anchor="middle">{xv:.3g}</text>')
-        out.append(f'<text x="{m - 8}" y="{sy(yv) + 4:.1f}" text-anchor="end">{yv:.4g}</text>')
-    out.append(f'<text x="{(m + right) / 2}" y="{h - 20}" text-anchor="middle">{xlabel}</text>')
-    out.append(f'<text x="18" y="{h / 2}" text-anchor="middle" transform="rotate(-90 18 {h / 2})">{ylabel}</text>')
-    legend_rows = list(sorted(series.items()))
-    for k, (name, s) in enumerate(legend_rows):
-        c = colours[k % len(colours)]
+    chart = Chart(xlabel, ylabel, (x0, x1 if x1 > x0 else x0 + 1.0), (y0 - pad, y1 + pad))
+    for k, (name, s) in enumerate(sorted(series.items())):
+        c = COLOURS[k % len(COLOURS)]
         s = sorted(s)
-        out.append('<polyline fill="none" stroke="%s" points="%s"/>' % (c, " ".join(f"{sx(x):.1f},{sy(y):.1f}" for x, y, _ in s)))
+        chart.polyline([(x, y) for x, y, _ in s], c)
         for x, y, e in s:
             if e > 0 and math.isfinite(e):
-                out.append(f'<line x1="{sx(x):.1f}" x2="{sx(x):.1f}" y1="{sy(y - e):.1f}" y2="{sy(y + e):.1f}" stroke="{c}"/>')
-        out.append(f'<text x="{right + 15}" y="{m + 10 + 16 * k}" fill="{c}" font-size="11">{name}</text>')
+                chart.add(f'<line x1="{chart.sx(x):.1f}" x2="{chart.sx(x):.1f}" y1="{chart.sy(y - e):.1f}" y2="{chart.sy(y + e):.1f}" stroke="{c}"/>')
+        chart.legend(name, c)
+    for x, y in reference:
+        chart.add(f'<rect x="{chart.sx(x) - 3:.1f}" y="{chart.sy(y) - 3:.1f}" width="6" height="6" fill="black"/>')
     if reference:
-        for x, y in reference:
-            out.append(f'<rect x="{sx(x) - 3:.1f}" y="{sy(y) - 3:.1f}" width="6" height="6" fill="black"/>')
-        out.append(f'<text x="{right + 15}" y="{m + 10 + 16 * len(legend_rows)}" font-size="11">steady state (constant A)</text>')
-    out.append("</svg>")
-    with open(path, "w") as f:
-        f.write("\n".join(out) + "\n")
+        chart.legend("steady state (constant A)")
+    chart.save(path)
 
 
 def main():

@@ -16,6 +16,8 @@ import json
 import math
 import os
 
+from svg_chart import COLOURS, Chart
+
 
 def read_points(path):
     with open(path) as f:
@@ -25,7 +27,7 @@ def read_points(path):
 
 
 def svg_plot(series, xlabel, ylabel, path):
-    """Log-log scatter with lines, one series per (group, quantity). Plain SVG, no dependencies."""
+    """Log-log scatter with lines, one series per (group, quantity)."""
     points = [(x, y) for s in series.values() for x, y, _ in s if x > 0 and y > 0]
     if not points:
         return
@@ -33,31 +35,15 @@ def svg_plot(series, xlabel, ylabel, path):
     ly = [math.log10(y) for _, y in points]
     x0, x1 = math.floor(min(lx)), math.ceil(max(lx))
     y0, y1 = math.floor(min(ly)), math.ceil(max(ly))
-    x1, y1 = max(x1, x0 + 1), max(y1, y0 + 1)
-    w, h, m, legend = 900, 440, 70, 260
-    right = w - m - legend
-    sx = lambda v: m + (math.log10(v) - x0) / (x1 - x0) * (right - m)
-    sy = lambda v: h - m - (math.log10(v) - y0) / (y1 - y0) * (h - 2 * m)
-    colours = ["#c0392b", "#2471a3", "#229954", "#b9770e", "#7d3c98", "#566573"]
-    out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" font-family="sans-serif" font-size="12">',
-           f'<rect x="{m}" y="{m}" width="{right - m}" height="{h - 2 * m}" fill="none" stroke="black"/>']
-    for e in range(x0, x1 + 1):
-        out.append(f'<text x="{sx(10**e)}" y="{h - m + 18}" text-anchor="middle">1e{e}</text>')
-    for e in range(y0, y1 + 1):
-        out.append(f'<text x="{m - 8}" y="{sy(10**e) + 4}" text-anchor="end">1e{e}</text>')
-    out.append(f'<text x="{(m + right) / 2}" y="{h - 20}" text-anchor="middle">{xlabel}</text>')
-    out.append(f'<text x="18" y="{h / 2}" text-anchor="middle" transform="rotate(-90 18 {h / 2})">{ylabel}</text>')
+    chart = Chart(xlabel, ylabel, (x0, max(x1, x0 + 1)), (y0, max(y1, y0 + 1)), log=True)
     for k, (name, s) in enumerate(sorted(series.items())):
-        c = colours[k % len(colours)]
-        pts = [(sx(x), sy(y), label) for x, y, label in sorted(s) if x > 0 and y > 0]
-        if len(pts) > 1:
-            out.append('<polyline fill="none" stroke="%s" points="%s"/>' % (c, " ".join(f"{x:.1f},{y:.1f}" for x, y, _ in pts)))
+        c = COLOURS[k % len(COLOURS)]
+        pts = [(x, y, label) for x, y, label in sorted(s) if x > 0 and y > 0]
+        chart.polyline([(x, y) for x, y, _ in pts], c)
         for x, y, label in pts:
-            out.append(f'<circle cx="{x:.1f}" cy="{y:.1f}" r="3" fill="{c}"><title>{label}</title></circle>')
-        out.append(f'<text x="{right + 15}" y="{m + 10 + 16 * k}" fill="{c}" font-size="11">{name}</text>')
-    out.append("</svg>")
-    with open(path, "w") as f:
-        f.write("\n".join(out) + "\n")
+            chart.add(f'<circle cx="{chart.sx(x):.1f}" cy="{chart.sy(y):.1f}" r="3" fill="{c}"><title>{label}</title></circle>')
+        chart.legend(name, c)
+    chart.save(path)
 
 
 def main():
