@@ -24,19 +24,10 @@ import json
 import math
 import os
 
+from result_csv import read_table
 from svg_chart import COLOURS, Chart
 
 BRANCHES = {0: "first increase", 1: "decreasing", 2: "increasing"}
-
-
-def read_csv(path):
-    with open(path) as f:
-        lines = f.readlines()
-    provenance = lines[0].strip() if lines and lines[0].startswith("#") else ""
-    rows = list(csv.reader(line for line in lines if not line.startswith("#")))
-    if not rows:
-        raise SystemExit(f"{path}: expected a header row, found an empty table")
-    return provenance, rows[0], [[float(v) for v in row] for row in rows[1:]]
 
 
 def pool(tables, keys):
@@ -105,7 +96,7 @@ def main():
     args = ap.parse_args()
     keys = args.key or ["branch", "time"]
 
-    _, header, points = read_csv(os.path.join(args.out, "sweep.points.csv"))
+    _, header, points = read_table(os.path.join(args.out, "sweep.points.csv"))
     if args.over not in header:
         raise SystemExit(f"{args.out}/sweep.points.csv: expected a swept column {args.over}, found {header[1:4]}...")
     with open(os.path.join(args.out, "pipeline.json")) as f:
@@ -125,7 +116,7 @@ def main():
                 path = os.path.join(args.out, f"point_{point:03d}.{table}.csv")
                 if not os.path.exists(path):
                     raise SystemExit(f"{path}: expected the table {table} of point {point}, found no file")
-                provenance, h, rows = read_csv(path)
+                provenance, h, rows = read_table(path)
                 tables.append((h, rows))
             for k in keys:
                 if k not in tables[0][0]:
@@ -147,7 +138,7 @@ def main():
         if args.plot and series:
             reference = []
             if args.reference:
-                _, rh, rrows = read_csv(os.path.join(args.reference, "sweep.points.csv"))
+                _, rh, rrows = read_table(os.path.join(args.reference, "sweep.points.csv"))
                 column = f"{table.split('.')[0]}.{args.plot}"
                 if args.reference_x not in rh or column not in rh:
                     raise SystemExit(f"{args.reference}/sweep.points.csv: expected columns {args.reference_x} and {column}")

@@ -16,14 +16,13 @@ import json
 import math
 import os
 
+from result_csv import read_table
 from svg_chart import COLOURS, Chart
 
 
 def read_points(path):
-    with open(path) as f:
-        rows = list(csv.reader(line for line in f if not line.startswith("#")))
-    header, body = rows[0], rows[1:]
-    return [{h: float(v) for h, v in zip(header, row)} for row in body], header
+    _, header, rows = read_table(path)
+    return [dict(zip(header, row)) for row in rows], header
 
 
 def svg_plot(series, xlabel, ylabel, path):

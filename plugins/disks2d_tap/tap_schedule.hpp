@@ -17,7 +17,8 @@ class TapSchedule {
   static TapSchedule constant(double A, std::int64_t equilibration, std::int64_t production,
                               std::int64_t save_every);
   // `cycles` times: A rises from A_min to A_max in `steps` steps of `taps_per_step` taps
-  // (A_min + k dA, k = 1..steps), then falls back the same way (A_max - k dA). Half-cycle
+  // (A_min + k dA, k = 1..steps), then falls back through the same levels, each computed
+  // from its index so that it is the same double both ways. Half-cycle
   // 0 is the very first rise, which the paper keeps apart. Saves every `save_every`-th
   // tap of each step.
   static TapSchedule annealed(double A_min, double A_max, std::int64_t steps,
