@@ -8,7 +8,9 @@ parameters, rows of the table with the same key (default: branch and time, the b
 tables) are pooled: each quantity q (a column with a q_err partner) becomes the mean of the
 replica means, with the standard error across replicas (the honest error: frames of one run
 are correlated), or the run's own error where only one replica has the row. `frames` adds up,
-and `replicas` counts them. Writes, beside the input:
+and `replicas` counts them. The table `points` stands for the scalars of each point (its row of
+sweep.points.csv), pooled with no key: the steady state of a constant-amplitude sweep run
+with several replicas per amplitude. Writes, beside the input:
 
   pooled.<table>.csv    one row per group and key
   pooled.<table>.svg    with --plot Q: Q against time, one line per branch and group; with
@@ -17,6 +19,7 @@ and `replicas` counts them. Writes, beside the input:
 
     scripts/pool_replicas.py out/tap2d_annealed --table packing.by_ramp --plot phi \\
         --reference out/tap2d_arches
+    scripts/pool_replicas.py out/tap2d_arches --table points
 """
 import argparse
 import csv
@@ -87,16 +90,15 @@ def svg_plot(series, reference, xlabel, ylabel, path):
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("out", help="output directory of a sweep run")
-    ap.add_argument("--table", action="append", required=True, help="<analyzer>.<table>, e.g. packing.by_ramp (repeatable)")
+    ap.add_argument("--table", action="append", required=True,
+                    help="<analyzer>.<table>, e.g. packing.by_ramp, or points for the scalars of sweep.points.csv (repeatable)")
     ap.add_argument("--over", default="source.params.replica", help="the swept parameter that numbers the replicas")
     ap.add_argument("--key", action="append", help="key columns of a row (default: branch, time)")
     ap.add_argument("--plot", help="quantity to plot against the last key column")
     ap.add_argument("--reference", help="output directory of a constant-amplitude sweep to draw beside the plot")
     ap.add_argument("--reference-x", default="source.params.A", help="column of the reference's sweep.points.csv for x")
     args = ap.parse_args()
-    keys = args.key or ["branch", "time"]
-
-    _, header, points = read_table(os.path.join(args.out, "sweep.points.csv"))
+    points_provenance, header, points = read_table(os.path.join(args.out, "sweep.points.csv"))
     if args.over not in header:
         raise SystemExit(f"{args.out}/sweep.points.csv: expected a swept column {args.over}, found {header[1:4]}...")
     with open(os.path.join(args.out, "pipeline.json")) as f:
@@ -107,29 +109,41 @@ def main():
         key = tuple(p[header.index(s)] for s in others)
         groups.setdefault(key, []).append(int(p[header.index("point")]))
 
+    row_of_point = {int(p[header.index("point")]): p for p in points}
+
     for table in args.table:
+        keys = [] if table == "points" else args.key or ["branch", "time"]
         provenance, out_rows, out_header = "", [], None
         series = {}
         for g, (gkey, members) in enumerate(sorted(groups.items())):
             tables = []
             for point in members:
-                path = os.path.join(args.out, f"point_{point:03d}.{table}.csv")
-                if not os.path.exists(path):
-                    raise SystemExit(f"{path}: expected the table {table} of point {point}, found no file")
-                provenance, h, rows = read_table(path)
+                if table == "points":
+                    provenance, h, rows = points_provenance, header, [row_of_point[point]]
+                else:
+                    path = os.path.join(args.out, f"point_{point:03d}.{table}.csv")
+                    if not os.path.exists(path):
+                        raise SystemExit(f"{path}: expected the table {table} of point {point}, found no file")
+                    provenance, h, rows = read_table(path)
                 tables.append((h, rows))
             for k in keys:
                 if k not in tables[0][0]:
                     raise SystemExit(f"{table}: expected a key column {k}, found {tables[0][0]}")
             hdr, rows = pool(tables, keys)
             tag = ", ".join(f"{s.split('.')[-1]}={v:g}" for s, v in zip(others, gkey))
-            out_header = (["group"] if others else []) + hdr
+            # A point's row keeps its swept values as columns, so the pooled file is a sweep table.
+            label, label_header = (list(gkey), others) if table == "points" else ([tag], ["group"]) if others else ([], [])
+            out_header = label_header + hdr
             for r in rows:
-                out_rows.append(([tag] if others else []) + r)
+                out_rows.append(label + r)
                 if args.plot and args.plot in hdr:
-                    branch = BRANCHES.get(int(r[hdr.index("branch")]), "") if "branch" in hdr else ""
-                    name = " ".join(x for x in (branch, tag) if x) or "pooled"
-                    series.setdefault(name, []).append((r[hdr.index(keys[-1])], r[hdr.index(args.plot)], r[hdr.index(args.plot + "_err")]))
+                    y = (r[hdr.index(args.plot)], r[hdr.index(args.plot + "_err")])
+                    if table == "points":
+                        series.setdefault("pooled", []).append((gkey[0], *y))
+                    else:
+                        branch = BRANCHES.get(int(r[hdr.index("branch")]), "") if "branch" in hdr else ""
+                        name = " ".join(x for x in (branch, tag) if x) or "pooled"
+                        series.setdefault(name, []).append((r[hdr.index(keys[-1])], *y))
         path = os.path.join(args.out, f"pooled.{table}.csv")
         with open(path, "w", newline="") as f:
             f.write(f"{provenance} pooled over {args.over} by scripts/pool_replicas.py\n")
@@ -139,11 +153,12 @@ def main():
             reference = []
             if args.reference:
                 _, rh, rrows = read_table(os.path.join(args.reference, "sweep.points.csv"))
-                column = f"{table.split('.')[0]}.{args.plot}"
+                column = args.plot if table == "points" else f"{table.split('.')[0]}.{args.plot}"
                 if args.reference_x not in rh or column not in rh:
                     raise SystemExit(f"{args.reference}/sweep.points.csv: expected columns {args.reference_x} and {column}")
                 reference = [(r[rh.index(args.reference_x)], r[rh.index(column)]) for r in rrows]
-            svg_plot(series, reference, "A (frame time)" if keys[-1] == "time" else keys[-1], args.plot, os.path.join(args.out, f"pooled.{table}.svg"))
+            xlabel = others[0] if table == "points" else "A (frame time)" if keys[-1] == "time" else keys[-1]
+            svg_plot(series, reference, xlabel, args.plot, os.path.join(args.out, f"pooled.{table}.svg"))
 
 
 if __name__ == "__main__":

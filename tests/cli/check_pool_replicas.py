@@ -1,7 +1,8 @@
 """scripts/pool_replicas.py on hand-made replicas: the pooled value is the mean of the replica
 means and its error the standard error across replicas; a row only one replica has keeps that
 run's own error; frames add up; points of other swept values stay in their own group; replicas
-with different columns are refused."""
+with different columns are refused; the table `points` pools the scalars of sweep.points.csv and
+keeps the swept values as columns."""
 import csv
 import json
 import os
@@ -17,8 +18,8 @@ def write(out, name, lines):
         f.write("# granpipe test\n" + "\n".join(lines) + "\n")
 
 
-def run(out, *extra):
-    return subprocess.run([sys.executable, script, out, "--table", "packing.by_ramp", "--plot", "phi", *extra],
+def run(out, table="packing.by_ramp", plot="phi"):
+    return subprocess.run([sys.executable, script, out, "--table", table, "--plot", plot],
                           capture_output=True, text=True)
 
 
@@ -26,8 +27,8 @@ failures = []
 with tempfile.TemporaryDirectory() as out:
     with open(os.path.join(out, "pipeline.json"), "w") as f:
         json.dump({"sweep": {"parameters": {"source.params.N": [100, 200], "source.params.replica": [0, 1]}}}, f)
-    write(out, "sweep.points.csv", ["point,source.params.N,source.params.replica,packing.phi",
-                                    "0,100,0,0.8", "1,100,1,0.8", "2,200,0,0.8", "3,200,1,0.8"])
+    write(out, "sweep.points.csv", ["point,source.params.N,source.params.replica,packing.phi,packing.phi_err",
+                                    "0,100,0,0.80,0.01", "1,100,1,0.84,0.01", "2,200,0,0.7,0.01", "3,200,1,0.7,0.01"])
     header = "branch,time,frames,phi,phi_err"
     write(out, "point_000.packing.by_ramp.csv", [header, "1,1.5,10,0.80,0.01", "2,1.5,10,0.70,0.02"])
     write(out, "point_001.packing.by_ramp.csv", [header, "1,1.5,12,0.84,0.03"])
@@ -52,6 +53,20 @@ with tempfile.TemporaryDirectory() as out:
             failures.append(f"second group {c}")
         if len(rows) != 3 or not os.path.exists(os.path.join(out, "pooled.packing.by_ramp.svg")):
             failures.append(f"{len(rows)} rows, svg written: {os.path.exists(os.path.join(out, 'pooled.packing.by_ramp.svg'))}")
+    r = run(out, "points", "packing.phi")
+    if r.returncode != 0:
+        failures.append(r.stderr)
+    else:
+        rows = list(csv.DictReader(line for line in open(os.path.join(out, "pooled.points.csv"))
+                                   if not line.startswith("#")))
+        got = {row["source.params.N"]: row for row in rows}
+        a, b = got.get("100.0"), got.get("200.0")
+        if (len(rows) != 2 or a is None or b is None or abs(float(a["packing.phi"]) - 0.82) > 1e-12
+                or abs(float(a["packing.phi_err"]) - 0.02) > 1e-12 or float(a["replicas"]) != 2
+                or abs(float(b["packing.phi"]) - 0.7) > 1e-12 or float(b["packing.phi_err"]) != 0.0):
+            failures.append(f"pooled points {rows}")
+        if not os.path.exists(os.path.join(out, "pooled.points.svg")):
+            failures.append("pooled.points.svg not written")
     write(out, "point_003.packing.by_ramp.csv", ["branch,time,frames,rho,rho_err", "1,1.5,10,0.50,0.01"])
     r = run(out)
     if r.returncode == 0 or "disagree" not in r.stderr:
