@@ -120,4 +120,23 @@ void DiskPacking::to_frame(Frame& frame) const {
                                             Eigen::Vector3d(width, top(), 0));
 }
 
+DiskPacking DiskPacking::from_frame(const Frame& frame, const std::string& where) {
+  if (frame.dim != 2) {
+    throw InputError(where + ": expected a 2D frame, got " + std::to_string(frame.dim) + "D");
+  }
+  if (frame.container.lo.x() != 0.0) {
+    std::ostringstream s;
+    s.precision(17);
+    s << where << ": expected a box whose left wall is at x = 0, got " << frame.container.lo.x();
+    throw InputError(s.str());
+  }
+  DiskPacking p;
+  p.width = frame.container.hi.x();
+  for (Eigen::Index k = 0; k < frame.size(); ++k) {
+    p.add(frame.position(k, 0), frame.position(k, 1), frame.radius[k]);
+  }
+  p.check(where, 1e-9);
+  return p;
+}
+
 }  // namespace granpipe::disks2d_tap

@@ -52,6 +52,10 @@ struct DiskPacking {
   // Fills a 2D frame: positions, radii, ids, the open-top container up to top() and the
   // left/right support labels (the left one touches the disk at the smaller x).
   void to_frame(Frame& frame) const;
+  // The disks of a 2D frame in a box of the frame container's width, without supports
+  // (a deposition finds them again). Throws InputError naming `where` when the frame is
+  // not 2D, its box does not start at x = 0, or check(where, 1e-9) fails.
+  static DiskPacking from_frame(const Frame& frame, const std::string& where);
 };
 
 }  // namespace granpipe::disks2d_tap

@@ -1,10 +1,12 @@
 #include "tap_source.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <numbers>
 #include <sstream>
 
+#include "granpipe/frame_store.hpp"
 #include "placement.hpp"
 
 namespace granpipe::disks2d_tap {
@@ -24,6 +26,12 @@ Schema schema() {
          "area fraction of the random initial placement (sets the height it fills)")
       .min(0.0, true)
       .max(0.5);
+  s.path("initial_file", std::string(""),
+         "start from a frame of this H5MD file (a 2D granpipe frames.h5) instead of a random "
+         "placement: its disks are deposited, then tapped; N and width must match it, radius_spread "
+         "and initial_fraction are not used, radius only if the file stores none. Empty: random "
+         "placement");
+  s.integer("initial_frame", -1, "frame of initial_file to start from (-1: the last)").min(-1);
   s.real("delta", 0.01,
          "length of one fall, and arc length of one roll (see roll_measure); at most the "
          "smallest radius")
@@ -117,6 +125,53 @@ Seeds replica_seeds(const PluginContext& ctx) {
 
 }  // namespace
 
+// The paper's start: disks of the given radii placed at random without overlap.
+DiskPacking random_placement(const PluginContext& ctx, const Seeds& seeds) {
+  const Params& p = ctx.params;
+  const std::vector<double> radii = disk_radii(p, seeds.stream("radii"));
+  const double width = p.real("width");
+  const double r_max = *std::max_element(radii.begin(), radii.end());
+  if (2.0 * r_max > width) {
+    std::ostringstream s;
+    s << ctx.param("radius") << ": expected disks narrower than the box (width " << width
+      << "), got largest diameter " << 2.0 * r_max;
+    throw InputError(s.str());
+  }
+  double area = 0.0;
+  for (double ri : radii) area += std::numbers::pi * ri * ri;
+  const double height = std::max(area / (width * p.real("initial_fraction")), 2.0 * r_max);
+  RandomStream placement = seeds.stream("placement");
+  return place_at_random(width, height, radii, placement, ctx.param("N"));
+}
+
+// A saved bed to continue from, e.g. one cooled slowly through the transition.
+DiskPacking saved_bed(const PluginContext& ctx) {
+  const Params& p = ctx.params;
+  const std::string file = p.string("initial_file");
+  const FrameReader reader(file, "", p.real("radius"));
+  const long frames = reader.frames(), wanted = p.integer("initial_frame");
+  if (frames == 0) throw InputError(ctx.param("initial_file") + ": expected a file with frames, got none");
+  if (wanted >= frames) {
+    throw InputError(ctx.param("initial_frame") + ": expected -1 or a frame index below " +
+                     std::to_string(frames) + " (" + file + " holds " + std::to_string(frames) +
+                     " frames), got " + std::to_string(wanted));
+  }
+  const long index = wanted < 0 ? frames - 1 : wanted;
+  DiskPacking bed = DiskPacking::from_frame(reader.read(index), file + ", frame " + std::to_string(index));
+  if (static_cast<std::int64_t>(bed.size()) != p.integer("N")) {
+    throw InputError(ctx.param("N") + ": expected the " + std::to_string(bed.size()) + " disks of " +
+                     file + ", got " + std::to_string(p.integer("N")));
+  }
+  if (std::abs(bed.width - p.real("width")) > 1e-12 * bed.width) {
+    std::ostringstream s;
+    s.precision(17);
+    s << ctx.param("width") << ": expected the box width of " << file << " (" << bed.width
+      << "), got " << p.real("width");
+    throw InputError(s.str());
+  }
+  return bed;
+}
+
 TapSource::TapSource(const PluginContext& ctx)
     : progress_(ctx.progress),
       deposition_rng_(replica_seeds(ctx).stream("deposition")),
@@ -126,21 +181,11 @@ TapSource::TapSource(const PluginContext& ctx)
               ctx.params.string("dilation") == "centre_height" ? Dilation::CentreHeight
                                                               : Dilation::HeightAboveContact) {
   const Params& p = ctx.params;
-  const Seeds seeds = replica_seeds(ctx);
-  const std::vector<double> radii = disk_radii(p, seeds.stream("radii"));
-  const double width = p.real("width");
-  const double r_min = p.real("radius") * (1.0 - p.real("radius_spread"));
-  const double r_max = p.real("radius") * (1.0 + p.real("radius_spread"));
-  if (2.0 * r_max > width) {
+  packing_ = p.string("initial_file").empty() ? random_placement(ctx, replica_seeds(ctx)) : saved_bed(ctx);
+  if (p.real("delta") > packing_.min_radius()) {
     std::ostringstream s;
-    s << ctx.param("radius") << ": expected disks narrower than the box (width " << width
-      << "), got largest diameter " << 2.0 * r_max;
-    throw InputError(s.str());
-  }
-  if (p.real("delta") > r_min) {
-    std::ostringstream s;
-    s << ctx.param("delta") << ": expected at most the smallest radius " << r_min << ", got "
-      << p.real("delta");
+    s << ctx.param("delta") << ": expected at most the smallest radius " << packing_.min_radius()
+      << ", got " << p.real("delta");
     throw InputError(s.str());
   }
   if (p.string("protocol") == "constant" && p.integer("production_taps") < p.integer("save_every")) {
@@ -153,11 +198,6 @@ TapSource::TapSource(const PluginContext& ctx)
                      std::to_string(p.integer("save_every")) + " (else nothing is saved), got " +
                      std::to_string(p.integer("anneal_taps_per_step")));
   }
-  double area = 0.0;
-  for (double ri : radii) area += std::numbers::pi * ri * ri;
-  const double height = std::max(area / (width * p.real("initial_fraction")), 2.0 * r_max);
-  RandomStream placement = seeds.stream("placement");
-  packing_ = place_at_random(width, height, radii, placement, ctx.param("N"));
   deposit_ = std::make_unique<Deposit>(packing_, deposit_options(p));
 }
 

@@ -1,8 +1,9 @@
 #pragma once
 // `disks2d_tap`: tapped deposits of hard disks in a box with a flat base and two side
 // walls (Pugnaloni et al., "Arching in tapped deposits of hard disks"). Disks are placed
-// at random and deposited by Manna-Khakhar pseudo-dynamics; each tap dilates the bed,
-// shakes it by Monte Carlo and deposits it again. Frames carry the support labels.
+// at random (or read from a saved frame) and deposited by Manna-Khakhar pseudo-dynamics;
+// each tap dilates the bed, shakes it by Monte Carlo and deposits it again. Frames carry
+// the support labels.
 #include <cstdint>
 #include <memory>
 

@@ -3,7 +3,10 @@
 // of stability, the tap, the schedules and reproducibility.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <numbers>
 #include <set>
@@ -11,6 +14,7 @@
 #include "deposit.hpp"
 #include "disk_packing.hpp"
 #include "granpipe/errors.hpp"
+#include "granpipe/frame_store.hpp"
 #include "granpipe/plugin.hpp"
 #include "placement.hpp"
 #include "shake.hpp"
@@ -18,6 +22,7 @@
 #include "tap_source.hpp"
 
 namespace dt = granpipe::disks2d_tap;
+namespace fs = std::filesystem;
 using granpipe::Frame;
 using granpipe::InputError;
 using granpipe::RandomStream;
@@ -385,6 +390,61 @@ TEST(Disks2dTapPacking, CheckRejectsBadConfigurations) {
   EXPECT_THROW(p.check("scene", 1e-9), InputError);
 }
 
+TEST(Disks2dTapPacking, ADepositedBedReadBackFromItsFrameStaysPut) {
+  dt::DiskPacking bed = random_bed(300, 15.0, 0.2, 21);
+  RandomStream deposition(22);
+  dt::Deposit(bed, {.delta = 0.05}).run(deposition);
+  Frame saved;
+  bed.to_frame(saved);
+
+  dt::DiskPacking again = dt::DiskPacking::from_frame(saved, "saved");
+  EXPECT_EQ(again.width, 15.0);
+  EXPECT_EQ(again.x, bed.x);
+  EXPECT_EQ(again.y, bed.y);
+  EXPECT_EQ(again.r, bed.r);
+  EXPECT_EQ(again.first, std::vector<dt::PartnerCode>(300, dt::kNone));
+  // Every disk already rests on its supports: depositing again finds them without moving.
+  dt::Deposit d(again, {.delta = 0.05});
+  RandomStream rng(23);
+  d.run(rng);
+  EXPECT_EQ(again.x, bed.x);
+  EXPECT_EQ(again.y, bed.y);
+  Frame redeposited;
+  again.to_frame(redeposited);
+  expect_deposited(again);
+  // The labels are found again, except where a disk touches more than two others and
+  // another touching pair holds it as well (the contacts found at zero distance tie).
+  for (Eigen::Index k = 0; k < redeposited.size(); ++k) {
+    if (redeposited.supports->left[k] == saved.supports->left[k] &&
+        redeposited.supports->right[k] == saved.supports->right[k]) {
+      continue;
+    }
+    const auto i = static_cast<std::size_t>(k);
+    int touching = 0;
+    for (std::size_t j = 0; j < bed.size(); ++j) {
+      if (j != i && distance(bed, i, j) < (bed.r[i] + bed.r[j]) * (1.0 + 1e-9)) ++touching;
+    }
+    if (bed.x[i] - bed.r[i] < 1e-9 || bed.x[i] + bed.r[i] > bed.width - 1e-9) ++touching;
+    EXPECT_GE(touching, 3) << "disk " << k << " changed its supports";
+  }
+}
+
+TEST(Disks2dTapPacking, FromFrameRejectsWhatIsNotABedOfDisks) {
+  dt::DiskPacking bed = random_bed(40, 10.0, 0.0, 24);
+  Frame f;
+  bed.to_frame(f);
+  Frame three_d = f;
+  three_d.dim = 3;
+  EXPECT_THROW(dt::DiskPacking::from_frame(three_d, "f"), InputError);
+  Frame shifted = f;
+  shifted.container.lo.x() = -1.0;
+  EXPECT_THROW(dt::DiskPacking::from_frame(shifted, "f"), InputError);
+  Frame overlapping = f;
+  overlapping.position.row(1) = overlapping.position.row(0);
+  EXPECT_THROW(dt::DiskPacking::from_frame(overlapping, "f"), InputError);
+  EXPECT_NO_THROW(dt::DiskPacking::from_frame(f, "f"));
+}
+
 TEST(Disks2dTapPlacement, PlacesWithoutOverlapOrSaysWhyNot) {
   RandomStream rng(12);
   const dt::DiskPacking p = dt::place_at_random(10.0, 30.0, std::vector<double>(60, kR), rng, "t");
@@ -527,4 +587,40 @@ TEST(Disks2dTapSource, RejectsImpossibleParameters) {
                                          {"anneal_taps_per_step", std::int64_t{5}}}),
                           1),
                InputError);
+}
+
+TEST(Disks2dTapSource, StartsFromAFrameOfASavedFile) {
+  const fs::path dir = fs::temp_directory_path() / ("granpipe_disks2d_tap_" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  // A polydisperse bed saved by one run...
+  const auto saved = run_source(
+      source_params({{"N", std::int64_t{80}}, {"width", 9.0}, {"delta", 0.05}, {"radius_spread", 0.3},
+                     {"equilibration_taps", std::int64_t{0}}, {"production_taps", std::int64_t{2}},
+                     {"save_every", std::int64_t{1}}, {"A", 1.2}}),
+      3);
+  const fs::path file = dir / "bed.h5";
+  {
+    granpipe::FrameWriter w(file, "{}");
+    for (const Frame& f : saved) w.append(f);
+    w.close();
+  }
+  // ...is what a monodisperse run started from it taps: the file's radii, not its own.
+  const auto from_file = [&](std::map<std::string, granpipe::ParamValue> extra) {
+    extra.insert({{"initial_file", file.string()}, {"N", std::int64_t{80}}, {"width", 9.0},
+                  {"delta", 0.05}, {"equilibration_taps", std::int64_t{0}},
+                  {"production_taps", std::int64_t{1}}, {"save_every", std::int64_t{1}}});
+    return run_source(source_params(extra), 4);
+  };
+  for (const std::int64_t frame : {std::int64_t{0}, std::int64_t{-1}}) {
+    const auto frames = from_file({{"initial_frame", frame}});
+    ASSERT_EQ(frames.size(), 1u);
+    EXPECT_TRUE((frames[0].radius == saved[0].radius).all());
+    EXPECT_FALSE((frames[0].radius == kR).all());
+    EXPECT_NO_THROW(frames[0].check("frame"));
+  }
+  EXPECT_THROW(from_file({{"initial_frame", std::int64_t{2}}}), InputError);  // the file holds 2
+  EXPECT_THROW(from_file({{"N", std::int64_t{81}}}), InputError);
+  EXPECT_THROW(from_file({{"width", 9.5}}), InputError);
+  fs::remove_all(dir);
 }
