@@ -123,8 +123,6 @@ Seeds replica_seeds(const PluginContext& ctx) {
   return ctx.seeds.derive("replica", static_cast<std::uint64_t>(ctx.params.integer("replica")));
 }
 
-}  // namespace
-
 // The paper's start: disks of the given radii placed at random without overlap.
 DiskPacking random_placement(const PluginContext& ctx, const Seeds& seeds) {
   const Params& p = ctx.params;
@@ -171,6 +169,8 @@ DiskPacking saved_bed(const PluginContext& ctx) {
   }
   return bed;
 }
+
+}  // namespace
 
 TapSource::TapSource(const PluginContext& ctx)
     : progress_(ctx.progress),
