@@ -110,6 +110,8 @@ def main():
         groups.setdefault(key, []).append(int(p[header.index("point")]))
 
     row_of_point = {int(p[header.index("point")]): p for p in points}
+    if "points" in args.table and args.plot and not others:
+        raise SystemExit(f"{args.out}: --table points --plot draws against a swept parameter besides {args.over}, found none")
 
     for table in args.table:
         keys = [] if table == "points" else args.key or ["branch", "time"]
