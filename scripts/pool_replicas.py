@@ -13,7 +13,8 @@ sweep.points.csv), pooled with no key: the steady state of a constant-amplitude 
 with several replicas per amplitude. Writes, beside the input:
 
   pooled.<table>.csv    one row per group and key
-  pooled.<table>.svg    with --plot Q: Q against time, one line per branch and group; with
+  pooled.<table>.svg    with --plot Q: Q against time, one line per branch and group (points:
+                        Q against the first other swept parameter); with
                         --reference DIR, the steady-state curve of a constant-amplitude sweep
                         (DIR/sweep.points.csv: --reference-x against <analyzer>.Q) as points
 
@@ -117,7 +118,7 @@ def main():
         keys = [] if table == "points" else args.key or ["branch", "time"]
         provenance, out_rows, out_header = "", [], None
         series = {}
-        for g, (gkey, members) in enumerate(sorted(groups.items())):
+        for gkey, members in sorted(groups.items()):
             tables = []
             for point in members:
                 if table == "points":
