@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "cut_profile.hpp"
+#include "lowest_surface.hpp"
 #include "granpipe/contacts_by_distance.hpp"
 
 namespace granpipe::packing {
@@ -16,10 +17,11 @@ Schema schema() {
          "contact if the centre distance is at most (R_i + R_j)(1 + tolerance), or the "
          "centre-wall distance at most R_i (1 + tolerance)")
       .min(0.0);
-  s.choice("top", {"auto", "surface", "container"}, std::string("auto"),
+  s.choice("top", {"auto", "surface", "lowest_surface", "container"}, std::string("auto"),
            "top of the region before exclude_top: the highest particle top (surface), the "
-           "container's top (container), or surface for an open-top container and container "
-           "otherwise (auto)");
+           "lowest point of the free surface, over columns one mean diameter wide "
+           "(lowest_surface: for heaped beds), the container's top (container), or surface "
+           "for an open-top container and container otherwise (auto)");
   s.real("exclude_bottom", 0.0,
          "the region starts this far above the base (the bottom layers ordered by the wall)")
       .min(0.0)
@@ -57,19 +59,22 @@ struct Heights {
   double top = 0.0;   // the top of the region before exclude_top
 };
 
-Heights vertical_range(const Frame& f, Top top) {
+// `columns`: the horizontal extent of the region, for the lowest surface.
+Heights vertical_range(const Frame& f, Top top, const Region& columns) {
   const Container& c = f.container;
   const int v = f.dim - 1;
   const double offset = c.periodic(v) ? 0.0 : c.wall_offset[v];
   if (top == Top::Auto) top = c.boundary[v][1] == Boundary::Open ? Top::Surface : Top::Container;
-  if (top == Top::Surface && c.periodic(v)) {
+  if (top != Top::Container && c.periodic(v)) {
     throw InputError(std::string("packing.top: expected \"container\" or \"auto\" for a container ") +
-                     "periodic along " + axis_name(v) + " (" + frame_name(f) +
-                     "), got \"surface\"");
+                     "periodic along " + axis_name(v) + " (" + frame_name(f) + "), got \"" +
+                     (top == Top::Surface ? "surface" : "lowest_surface") + "\"");
   }
   Heights h{c.lo[v] + offset, c.hi[v] + offset};
   if (top == Top::Surface) {
     h.top = f.size() ? (f.position.col(v) + f.radius).maxCoeff() : h.base;
+  } else if (top == Top::LowestSurface) {
+    h.top = lowest_surface(f, columns, mean_diameter(f), h.base);
   }
   return h;
 }
@@ -92,7 +97,6 @@ Region packing_region(const Frame& frame, const PackingSettings& s) {
   }
   const int dim = frame.dim, v = dim - 1;
   const double d = mean_diameter(frame);
-  const Heights h = vertical_range(frame, s.top);
   Region r;
   r.dim = dim;
   for (int a = 0; a < v; ++a) {
@@ -100,6 +104,7 @@ Region packing_region(const Frame& frame, const PackingSettings& s) {
     r.lo[a] = c.lo[a] + offset + s.exclude_sides * d;
     r.hi[a] = c.hi[a] + offset - s.exclude_sides * d;
   }
+  const Heights h = vertical_range(frame, s.top, r);
   r.lo[v] = h.base + s.exclude_bottom * d;
   r.hi[v] = h.top - s.exclude_top * d;
   for (int a = 0; a < dim; ++a) {
@@ -138,7 +143,9 @@ PackingMeasurement measure_packing(const Frame& frame, FrameCache& cache,
   // (A relative 1e-9 keeps rounding from adding a cut just above a top.)
   if (s.profile_step > 0.0) {
     const double step = s.profile_step * m.diameter;
-    const Heights h = vertical_range(frame, s.top);
+    // The profile covers the whole bed, also when the region stops at the lowest surface.
+    const Heights h =
+        vertical_range(frame, s.top == Top::LowestSurface ? Top::Surface : s.top, region);
     const int count = static_cast<int>(std::ceil((h.top - h.base) / step - 1e-9));
     m.profile = cut_fractions(frame, region, h.base, step, count);
   }
@@ -165,7 +172,10 @@ PackingAnalyzer::PackingAnalyzer(const PluginContext& ctx) : log_(ctx.log) {
   settings_.profile_step = p.real("profile_step");
   settings_.cuts_step = p.real("cuts_step");
   const std::string& top = p.string("top");
-  settings_.top = top == "surface" ? Top::Surface : top == "container" ? Top::Container : Top::Auto;
+  settings_.top = top == "surface"          ? Top::Surface
+                  : top == "lowest_surface" ? Top::LowestSurface
+                  : top == "container"      ? Top::Container
+                                            : Top::Auto;
 }
 
 void PackingAnalyzer::consume(const Frame& frame, FrameCache& cache) {

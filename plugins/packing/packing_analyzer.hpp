@@ -13,7 +13,7 @@ namespace granpipe::packing {
 
 Schema schema();
 
-enum class Top : std::uint8_t { Auto, Surface, Container };
+enum class Top : std::uint8_t { Auto, Surface, LowestSurface, Container };
 
 struct PackingSettings {
   double tolerance = 1e-9;      // relative contact tolerance
@@ -39,7 +39,7 @@ struct PackingMeasurement {
 };
 
 // The region of a frame: the container shrunk by the settings' margins, its top at the
-// container's top or at the highest particle top. Throws InputError when it is empty.
+// container's top, the highest particle top or the lowest point of the free surface. Throws InputError when it is empty.
 Region packing_region(const Frame& frame, const PackingSettings& settings);
 
 // Throws InputError for a frame without particles (the analyzer skips those).

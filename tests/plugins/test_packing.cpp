@@ -4,6 +4,7 @@
 // shared contact list.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -252,6 +253,78 @@ TEST(Packing, ExcludedLayersAndFreeSurface) {
   PackingSettings surface;
   surface.top = granpipe::packing::Top::Surface;
   EXPECT_THROW(measure(one("square"), surface), granpipe::InputError);  // periodic top
+}
+
+// Stacks of unit disks (or balls) standing in unit columns from the base up, the k-th
+// stack `heights[k]` high: a heaped bed with known surface. 2D: one row of stacks;
+// 3D: heights.size() = side * side stacks.
+Frame stacks(const std::vector<int>& heights, int dim, int side = 0) {
+  std::vector<std::array<double, 3>> centres;
+  for (std::size_t k = 0; k < heights.size(); ++k) {
+    const double x = dim == 2 ? k + 0.5 : static_cast<double>(k % side) + 0.5;
+    const double z = dim == 2 ? 0.0 : static_cast<double>(k / side) + 0.5;
+    for (int j = 0; j < heights[k]; ++j) centres.push_back({x, z, j + 0.5});
+  }
+  Frame f;
+  f.resize(static_cast<Eigen::Index>(centres.size()), dim);
+  f.radius.setConstant(0.5);
+  for (std::size_t i = 0; i < centres.size(); ++i) {
+    const auto k = static_cast<Eigen::Index>(i);
+    f.position(k, 0) = centres[i][0];
+    if (dim == 3) f.position(k, 1) = centres[i][1];
+    f.position(k, dim - 1) = centres[i][2];
+  }
+  const double w = dim == 2 ? static_cast<double>(heights.size()) : side;
+  f.container = granpipe::Container::open_top_box(dim, {0, 0, 0}, {w, dim == 2 ? 20.0 : w, 20});
+  return f;
+}
+
+TEST(Packing, LowestSurfaceKeepsTheRegionInsideAHeapedBed) {
+  // Square stacks 5 4 6 3 5 4 high: the region under the lowest point of the surface
+  // holds whole rows (pi/4); under the highest top it holds air beside the low stacks.
+  const Frame f = stacks({5, 4, 6, 3, 5, 4}, 2);
+  PackingSettings s;
+  s.top = granpipe::packing::Top::LowestSurface;
+  PackingMeasurement m = measure(f, s);
+  EXPECT_DOUBLE_EQ(m.region.hi[1], 3.0);
+  EXPECT_NEAR(m.phi, kPi / 4, 1e-13);
+  EXPECT_EQ(m.centres, 18);
+  s.exclude_top = 1;
+  m = measure(f, s);
+  EXPECT_DOUBLE_EQ(m.region.hi[1], 2.0);
+  EXPECT_NEAR(m.phi, kPi / 4, 1e-13);
+  // The profile still climbs the whole bed (6 rows), as with the highest top.
+  EXPECT_EQ(m.profile.size(), 120u);
+
+  s.top = granpipe::packing::Top::Surface;
+  s.exclude_top = 0;
+  EXPECT_NEAR(measure(f, s).phi, 27 * kPi / 4 / 36, 1e-13);
+
+  // 3D: simple cubic stacks 3 high on a 3 x 3 floor, one of them 2 high. Balls of
+  // neighbouring stacks only touch each other's columns, which does not count.
+  const Frame g = stacks({3, 3, 3, 3, 2, 3, 3, 3, 3}, 3, 3);
+  s.top = granpipe::packing::Top::LowestSurface;
+  m = measure(g, s);
+  EXPECT_DOUBLE_EQ(m.region.hi[2], 2.0);
+  EXPECT_NEAR(m.phi, kPi / 6, 1e-13);
+}
+
+TEST(Packing, LowestSurfaceSeesAcrossPeriodicSidesAndDownEmptyColumns) {
+  // Four unit disks on the base of a box periodic in x, 4 wide, and two on top of them at
+  // x = 0 (across the periodic side) and x = 2: every column of the four is covered up to
+  // 2, the last one only by the image of the disk at x = 0.
+  Frame f;
+  f.resize(6, 2);
+  f.position << 0.5, 0.5, 1.5, 0.5, 2.5, 0.5, 3.5, 0.5, 0.0, 1.5, 2.0, 1.5;
+  f.radius.setConstant(0.5);
+  f.container = granpipe::Container::open_top_box(2, {0, 0, 0}, {4, 20, 1});
+  f.container.boundary[0] = {granpipe::Boundary::Periodic, granpipe::Boundary::Periodic};
+  PackingSettings s;
+  s.top = granpipe::packing::Top::LowestSurface;
+  EXPECT_DOUBLE_EQ(measure(f, s).region.hi[1], 2.0);
+
+  // A stack missing down to the base leaves no bulk below the surface.
+  EXPECT_THROW(measure(stacks({2, 2, 0, 2}, 2), s), granpipe::InputError);
 }
 
 TEST(Packing, CylinderContainersAreRefused) {
