@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <sstream>
 
 #include "disk_grid.hpp"
@@ -22,9 +23,17 @@ DiskPacking place_at_random(double width, double height, const std::vector<doubl
       << " in a box of width " << width << " and height " << height;
     throw InputError(s.str());
   }
+  // The largest disks go first, while there is room for them (ties keep their index
+  // order, so equal disks are placed in index order).
+  std::vector<std::size_t> order(radii.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return radii[a] > radii[b]; });
+  std::vector<double> xs(radii.size()), ys(radii.size());
   DiskGrid grid;
   grid.reset(width, height, std::sqrt(2.0) * r_min * (1.0 - 1e-9), 2.0 * r_max);
-  for (std::size_t i = 0; i < radii.size(); ++i) {
+  for (std::size_t placed_count = 0; placed_count < order.size(); ++placed_count) {
+    const std::size_t i = order[placed_count];
     const double ri = radii[i];
     bool placed = false;
     for (int attempt = 0; attempt < attempts && !placed; ++attempt) {
@@ -33,22 +42,24 @@ DiskPacking place_at_random(double width, double height, const std::vector<doubl
       const double reach = ri + r_max;
       grid.for_each_in(x - reach, x + reach, y - reach, y + reach, [&](std::int32_t j) {
         const auto m = static_cast<std::size_t>(j);
-        const double dx = packing.x[m] - x, dy = packing.y[m] - y, R = ri + packing.r[m];
+        const double dx = xs[m] - x, dy = ys[m] - y, R = ri + radii[m];
         overlap = overlap || dx * dx + dy * dy < R * R;
       });
       if (overlap) continue;
       grid.put(static_cast<std::int32_t>(i), grid.cell_of(x, y));
-      packing.add(x, y, ri);
+      xs[i] = x;
+      ys[i] = y;
       placed = true;
     }
     if (!placed) {
       std::ostringstream s;
-      s << where << ": random placement found no room for disk " << i + 1 << " of "
+      s << where << ": random placement found no room for disk " << placed_count + 1 << " of "
         << radii.size() << " after " << attempts << " attempts in a box of " << width
         << " x " << height << "; expected fewer or smaller disks or a lower initial fraction";
       throw InputError(s.str());
     }
   }
+  for (std::size_t i = 0; i < radii.size(); ++i) packing.add(xs[i], ys[i], radii[i]);
   return packing;
 }
 

@@ -8,9 +8,10 @@
 
 namespace granpipe::disks2d_tap {
 
-// Places disks of the given radii one after another at uniformly random positions in
-// [0, width] x [0, height], each retrying up to `attempts` times when it would overlap
-// one placed before. Throws InputError naming `where` when a disk finds no room.
+// Places disks of the given radii one after another, the largest first, at uniformly
+// random positions in [0, width] x [0, height], each retrying up to `attempts` times when
+// it would overlap one placed before. Throws InputError naming `where` when a disk finds
+// no room.
 DiskPacking place_at_random(double width, double height, const std::vector<double>& radii,
                             RandomStream& rng, const std::string& where, int attempts = 10000);
 

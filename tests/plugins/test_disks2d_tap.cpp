@@ -589,6 +589,27 @@ TEST(Disks2dTapSource, RejectsImpossibleParameters) {
                InputError);
 }
 
+// The largest initial fraction the schema allows must be one the placement reaches (0.5
+// did not: at width 20 the centres reach 92 % of the width and the placement jammed).
+TEST(Disks2dTapSource, PlacesAtTheLargestAllowedInitialFraction) {
+  double largest = 0.0;
+  const granpipe::Schema schema = dt::schema();
+  for (const auto& spec : schema.specs())
+    if (spec.name == "initial_fraction") largest = *spec.max;
+  ASSERT_GT(largest, 0.0);
+  for (const std::uint64_t seed : {1, 2, 3}) {
+    for (const auto& [n, spread] : {std::pair{std::int64_t{2000}, 0.0}, {std::int64_t{500}, 0.5}}) {
+      const auto params = source_params(
+          {{"N", n}, {"radius_spread", spread}, {"initial_fraction", largest},
+           {"equilibration_taps", std::int64_t{0}}, {"production_taps", std::int64_t{1}},
+           {"save_every", std::int64_t{1}}, {"A", 1.02}});
+      const auto frames = run_source(params, seed);
+      ASSERT_EQ(frames.size(), 1u);
+      EXPECT_EQ(frames[0].size(), n);
+    }
+  }
+}
+
 TEST(Disks2dTapSource, StartsFromAFrameOfASavedFile) {
   const fs::path dir = fs::temp_directory_path() / ("granpipe_disks2d_tap_" + std::to_string(getpid()));
   fs::remove_all(dir);
