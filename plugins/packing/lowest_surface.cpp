@@ -8,7 +8,7 @@ namespace granpipe::packing {
 
 namespace {
 
-// Columns along one horizontal axis: n equal intervals of [lo, hi], each at least `width`.
+// The columns along one horizontal axis: n equal intervals of [lo, hi].
 struct Axis {
   double lo = 0.0, step = 1.0;
   long n = 1;
@@ -30,32 +30,36 @@ struct Axis {
 
 double lowest_surface(const Frame& frame, const Region& columns, double width, double base) {
   const int dim = frame.dim, v = dim - 1;
+  for (int a = 0; a < v; ++a) {
+    if (!(columns.hi[a] > columns.lo[a])) return base;
+  }
   const Container& c = frame.container;
+  // Horizontal axes 0 and (in 3D) 1; the vertical axis is the last.
   const Axis ax(columns.lo[0], columns.hi[0], width);
-  const Axis az = dim == 3 ? Axis(columns.lo[1], columns.hi[1], width) : Axis(0.0, 1.0, 1.0);
-  std::vector<double> top(static_cast<std::size_t>(ax.n * az.n), base);
-  std::vector<double> sx, sz{0.0};
+  const Axis ay = dim == 3 ? Axis(columns.lo[1], columns.hi[1], width) : Axis(0.0, 1.0, 1.0);
+  std::vector<double> top(static_cast<std::size_t>(ax.n * ay.n), base);
+  std::vector<double> shifts_x, shifts_y{0.0};
   for (Eigen::Index k = 0; k < frame.size(); ++k) {
     const double r = frame.radius[k], height = frame.position(k, v) + r;
     image_shifts(frame.position(k, 0), r, columns.lo[0], columns.hi[0], c.periodic(0),
-                 c.length(0), sx);
+                 c.length(0), shifts_x);
     if (dim == 3) {
       image_shifts(frame.position(k, 1), r, columns.lo[1], columns.hi[1], c.periodic(1),
-                   c.length(1), sz);
+                   c.length(1), shifts_y);
     }
-    for (const double dz : sz) {
-      for (const double dx : sx) {
-        const double x = frame.position(k, 0) + dx;
-        const double z = dim == 3 ? frame.position(k, 1) + dz : 0.0;
+    for (const double sy : shifts_y) {
+      for (const double sx : shifts_x) {
+        const double x = frame.position(k, 0) + sx;
+        const double y = dim == 3 ? frame.position(k, 1) + sy : 0.5;
         for (long i = ax.first(x, r); i <= ax.last(x, r); ++i) {
-          for (long j = dim == 3 ? az.first(z, r) : 0; j <= (dim == 3 ? az.last(z, r) : 0); ++j) {
+          for (long j = ay.first(y, r); j <= ay.last(y, r); ++j) {
             if (dim == 3) {
               // The disc meets the square column if its nearest point lies within r.
               const double nx = std::clamp(x, ax.column_lo(i), ax.column_lo(i + 1));
-              const double nz = std::clamp(z, az.column_lo(j), az.column_lo(j + 1));
-              if ((nx - x) * (nx - x) + (nz - z) * (nz - z) >= r * r) continue;
+              const double ny = std::clamp(y, ay.column_lo(j), ay.column_lo(j + 1));
+              if ((nx - x) * (nx - x) + (ny - y) * (ny - y) >= r * r) continue;
             }
-            double& t = top[static_cast<std::size_t>(i * az.n + j)];
+            double& t = top[static_cast<std::size_t>(i * ay.n + j)];
             t = std::max(t, height);
           }
         }

@@ -8,11 +8,11 @@
 
 namespace granpipe::packing {
 
-// Splits the horizontal extent of `columns` (its lo..hi along every axis but the
-// vertical one; columns.dim is used) into columns at least `width` wide, takes in each
-// the highest particle top over the particles whose footprint (interval in 2D, disc in
-// 3D) overlaps the column, periodic images included, and returns the lowest of these.
-// A column no particle covers has its surface at `base`.
+// Splits the horizontal extent of `columns` (its lo..hi along every axis of the frame but
+// the vertical one) into equal columns, as many as fit `width` wide (at least one), takes
+// in each the highest particle top over the particles whose footprint (interval in 2D,
+// disc in 3D) meets the column's interior, periodic images included, and returns the
+// lowest of these. A column no particle covers, or an extent of no width, gives `base`.
 double lowest_surface(const Frame& frame, const Region& columns, double width, double base);
 
 }  // namespace granpipe::packing

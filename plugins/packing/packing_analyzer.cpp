@@ -19,7 +19,7 @@ Schema schema() {
       .min(0.0);
   s.choice("top", {"auto", "surface", "lowest_surface", "container"}, std::string("auto"),
            "top of the region before exclude_top: the highest particle top (surface), the "
-           "lowest point of the free surface, over columns one mean diameter wide "
+           "lowest point of the free surface, over columns at least one mean diameter wide "
            "(lowest_surface: for heaped beds), the container's top (container), or surface "
            "for an open-top container and container otherwise (auto)");
   s.real("exclude_bottom", 0.0,

@@ -39,7 +39,8 @@ struct PackingMeasurement {
 };
 
 // The region of a frame: the container shrunk by the settings' margins, its top at the
-// container's top, the highest particle top or the lowest point of the free surface. Throws InputError when it is empty.
+// container's top, the highest particle top or the lowest point of the free surface.
+// Throws InputError when it is empty.
 Region packing_region(const Frame& frame, const PackingSettings& settings);
 
 // Throws InputError for a frame without particles (the analyzer skips those).
