@@ -1,5 +1,8 @@
 #include "tap_schedule.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 namespace granpipe::disks2d_tap {
 
 TapSchedule TapSchedule::constant(double A, std::int64_t equilibration, std::int64_t production,
@@ -9,6 +12,21 @@ TapSchedule TapSchedule::constant(double A, std::int64_t equilibration, std::int
   s.equilibration_ = equilibration;
   s.save_every_ = save_every;
   s.total_ = equilibration + production;
+  return s;
+}
+
+TapSchedule TapSchedule::cooled_constant(double from, double step, std::int64_t taps_per_step,
+                                         double A, std::int64_t equilibration,
+                                         std::int64_t production, std::int64_t save_every) {
+  TapSchedule s = constant(A, equilibration, production, save_every);
+  // Levels from - k step, k = 0, 1, ..., while above A (a hair of rounding tolerated, so
+  // that A itself, reached in whole steps, is not a cooling level).
+  const auto levels = static_cast<std::int64_t>(std::ceil((from - A) / step - 1e-9));
+  s.cool_from_ = from;
+  s.cool_step_ = step;
+  s.taps_per_step_ = taps_per_step;
+  s.cooling_taps_ = std::max<std::int64_t>(levels, 0) * taps_per_step;
+  s.total_ += s.cooling_taps_;
   return s;
 }
 
@@ -29,8 +47,13 @@ TapSchedule TapSchedule::annealed(double A_min, double A_max, std::int64_t steps
 TapStep TapSchedule::at(std::int64_t tap) const {
   TapStep step;
   if (!annealed_) {
+    if (tap <= cooling_taps_) {
+      step.amplitude = cool_from_ - cool_step_ * static_cast<double>((tap - 1) / taps_per_step_);
+      return step;
+    }
+    const std::int64_t t = tap - cooling_taps_;
     step.amplitude = A_;
-    step.save = tap > equilibration_ && (tap - equilibration_) % save_every_ == 0;
+    step.save = t > equilibration_ && (t - equilibration_) % save_every_ == 0;
     return step;
   }
   const std::int64_t half_length = steps_ * taps_per_step_;

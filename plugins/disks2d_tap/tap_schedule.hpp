@@ -16,6 +16,13 @@ class TapSchedule {
   // `equilibration` taps at A, then `production` taps saving every `save_every`-th.
   static TapSchedule constant(double A, std::int64_t equilibration, std::int64_t production,
                               std::int64_t save_every);
+  // The same, after cooling: `taps_per_step` taps at each of the amplitudes
+  // from, from - step, from - 2 step, ... that lie above A (none saved). A bed brought
+  // slowly down from the disordered regime ends in one layered domain, where a bed tapped
+  // at A from a random deposit freezes its domains.
+  static TapSchedule cooled_constant(double from, double step, std::int64_t taps_per_step,
+                                     double A, std::int64_t equilibration,
+                                     std::int64_t production, std::int64_t save_every);
   // `cycles` times: A rises from A_min to A_max in `steps` steps of `taps_per_step` taps
   // (A_min + k dA, k = 1..steps), then falls back through the same levels, each computed
   // from its index so that it is the same double both ways. Half-cycle
@@ -34,6 +41,8 @@ class TapSchedule {
   double A_ = 1.0, A_min_ = 1.0, A_max_ = 1.0;
   std::int64_t equilibration_ = 0, steps_ = 1, taps_per_step_ = 1, save_every_ = 1;
   std::int64_t total_ = 0;
+  double cool_from_ = 1.0, cool_step_ = 0.0;
+  std::int64_t cooling_taps_ = 0;  // taps before the constant part (taps_per_step_ each level)
 };
 
 }  // namespace granpipe::disks2d_tap

@@ -59,6 +59,13 @@ Schema schema() {
   s.real("A", 1.1, "tap amplitude of the constant protocol").min(1.0, true);
   s.integer("equilibration_taps", 1000, "constant protocol: taps before saving").min(0);
   s.integer("production_taps", 1000, "constant protocol: taps after equilibration").min(1);
+  s.real("cool_from", 0.0,
+         "constant protocol: first cool the bed from this amplitude down to A, in steps of "
+         "cool_step with cool_taps_per_step taps each, saving nothing (0: no cooling)")
+      .min(0.0);
+  s.real("cool_step", 0.02, "constant protocol: amplitude step of the cooling").min(0.0, true);
+  s.integer("cool_taps_per_step", 2000, "constant protocol: taps at each cooling amplitude")
+      .min(1);
   s.integer("save_every", 10,
             "save every k-th production tap (annealed: every k-th tap of each amplitude step)")
       .min(1);
@@ -93,8 +100,20 @@ DepositOptions deposit_options(const Params& p) {
 TapSchedule tap_schedule(const PluginContext& ctx) {
   const Params& p = ctx.params;
   if (p.string("protocol") == "constant") {
-    return TapSchedule::constant(p.real("A"), p.integer("equilibration_taps"),
-                                 p.integer("production_taps"), p.integer("save_every"));
+    const double from = p.real("cool_from");
+    if (from == 0.0) {
+      return TapSchedule::constant(p.real("A"), p.integer("equilibration_taps"),
+                                   p.integer("production_taps"), p.integer("save_every"));
+    }
+    if (!(from > p.real("A"))) {
+      std::ostringstream s;
+      s << ctx.param("cool_from") << ": expected 0 (no cooling) or an amplitude above A = "
+        << p.real("A") << ", got " << from;
+      throw InputError(s.str());
+    }
+    return TapSchedule::cooled_constant(from, p.real("cool_step"), p.integer("cool_taps_per_step"),
+                                        p.real("A"), p.integer("equilibration_taps"),
+                                        p.integer("production_taps"), p.integer("save_every"));
   }
   if (!(p.real("anneal_A_max") > p.real("anneal_A_min"))) {
     std::ostringstream s;

@@ -466,6 +466,27 @@ TEST(Disks2dTapSchedule, ConstantSavesEveryKthProductionTap) {
   EXPECT_EQ(saved, (std::vector<std::int64_t>{15, 25}));
 }
 
+TEST(Disks2dTapSchedule, CooledConstantStepsDownToAThenSavesAsConstant) {
+  // From 1.3 down to 1.1 in steps of 0.05: levels 1.3, 1.25, 1.2, 1.15 (1.1 itself is A),
+  // 4 taps each, none saved; then the constant schedule, its taps counted on.
+  const auto s = dt::TapSchedule::cooled_constant(1.3, 0.05, 4, 1.1, 5, 20, 10);
+  EXPECT_EQ(s.total(), 16 + 25);
+  const double levels[] = {1.3, 1.25, 1.2, 1.15};
+  for (std::int64_t t = 1; t <= 16; ++t) {
+    EXPECT_NEAR(s.at(t).amplitude, levels[(t - 1) / 4], 1e-14);
+    EXPECT_FALSE(s.at(t).save);
+    EXPECT_EQ(s.at(t).cycle, -1);
+  }
+  const auto plain = dt::TapSchedule::constant(1.1, 5, 20, 10);
+  for (std::int64_t t = 1; t <= plain.total(); ++t) {
+    EXPECT_EQ(s.at(16 + t).amplitude, 1.1);
+    EXPECT_EQ(s.at(16 + t).save, plain.at(t).save);
+  }
+  // A level a rounding error above A is A, not a cooling level: 1.3 -> 1.1 in 0.02 steps
+  // visits 1.30 ... 1.12, ten levels.
+  EXPECT_EQ(dt::TapSchedule::cooled_constant(1.3, 0.02, 1, 1.1, 0, 1, 1).total(), 10 + 1);
+}
+
 TEST(Disks2dTapSchedule, AnnealedRampsUpAndDown) {
   const auto s = dt::TapSchedule::annealed(1.0, 2.0, 4, 3, 2, 3);
   EXPECT_EQ(s.total(), 2 * 2 * 4 * 3);
@@ -574,6 +595,21 @@ TEST(Disks2dTapSource, AnnealedFramesCarryCycleAndAmplitude) {
   }
 }
 
+TEST(Disks2dTapSource, CoolsBeforeTheConstantTaps) {
+  const auto params = source_params(
+      {{"N", std::int64_t{60}}, {"width", 8.0}, {"delta", 0.05}, {"A", 1.1}, {"cool_from", 1.3},
+       {"cool_step", 0.1}, {"cool_taps_per_step", std::int64_t{2}},
+       {"equilibration_taps", std::int64_t{1}}, {"production_taps", std::int64_t{2}},
+       {"save_every", std::int64_t{1}}});
+  granpipe::Results results;
+  const auto frames = run_source(params, 9, &results);
+  ASSERT_EQ(frames.size(), 2u);
+  EXPECT_EQ(frames[0].tap, 6);  // 2 taps at 1.3 and 2 at 1.2, one to equilibrate
+  EXPECT_EQ(frames[1].tap, 7);
+  EXPECT_EQ(frames[1].time, 1.1);
+  EXPECT_EQ(results.scalar("taps").value, 7.0);
+}
+
 TEST(Disks2dTapSource, RejectsImpossibleParameters) {
   EXPECT_THROW(run_source(source_params({{"delta", 0.9}}), 1), InputError);  // > radius
   EXPECT_THROW(run_source(source_params({{"width", 1.5}}), 1), InputError);  // disk too wide
@@ -582,6 +618,8 @@ TEST(Disks2dTapSource, RejectsImpossibleParameters) {
                           1),
                InputError);
   EXPECT_THROW(run_source(source_params({{"production_taps", std::int64_t{5}}}), 1), InputError);
+  // Cooling must start above A.
+  EXPECT_THROW(run_source(source_params({{"cool_from", 1.05}, {"A", 1.1}}), 1), InputError);
   // An annealed run whose steps are shorter than save_every would save nothing.
   EXPECT_THROW(run_source(source_params({{"protocol", std::string("annealed")},
                                          {"anneal_taps_per_step", std::int64_t{5}}}),
