@@ -30,9 +30,9 @@ Schema schema() {
       .max(0.45);
   s.path("initial_file", std::string(""),
          "start from a frame of this H5MD file (a 2D granpipe frames.h5) instead of a random "
-         "placement: its disks are deposited, then tapped; N and width must match it, radius_spread "
-         "and initial_fraction are not used, radius only if the file stores none. Empty: random "
-         "placement");
+         "placement: its disks are deposited, then tapped; N and width must match it, "
+         "radius_spread and initial_fraction are not used, radius only if the file stores "
+         "none. Empty: random placement");
   s.integer("initial_frame", -1, "frame of initial_file to start from (-1: the last)").min(-1);
   s.real("delta", 0.01,
          "length of one fall, and arc length of one roll (see roll_measure); at most the "
@@ -169,17 +169,20 @@ DiskPacking saved_bed(const PluginContext& ctx) {
   const std::string file = p.string("initial_file");
   const FrameReader reader(file, "", p.real("radius"));
   const long frames = reader.frames(), wanted = p.integer("initial_frame");
-  if (frames == 0) throw InputError(ctx.param("initial_file") + ": expected a file with frames, got none");
+  if (frames == 0) {
+    throw InputError(ctx.param("initial_file") + ": expected a file with frames, got none");
+  }
   if (wanted >= frames) {
     throw InputError(ctx.param("initial_frame") + ": expected -1 or a frame index below " +
                      std::to_string(frames) + " (" + file + " holds " + std::to_string(frames) +
                      " frames), got " + std::to_string(wanted));
   }
   const long index = wanted < 0 ? frames - 1 : wanted;
-  DiskPacking bed = DiskPacking::from_frame(reader.read(index), file + ", frame " + std::to_string(index));
+  DiskPacking bed =
+      DiskPacking::from_frame(reader.read(index), file + ", frame " + std::to_string(index));
   if (static_cast<std::int64_t>(bed.size()) != p.integer("N")) {
-    throw InputError(ctx.param("N") + ": expected the " + std::to_string(bed.size()) + " disks of " +
-                     file + ", got " + std::to_string(p.integer("N")));
+    throw InputError(ctx.param("N") + ": expected the " + std::to_string(bed.size()) +
+                     " disks of " + file + ", got " + std::to_string(p.integer("N")));
   }
   if (std::abs(bed.width - p.real("width")) > 1e-12 * bed.width) {
     std::ostringstream s;
@@ -202,7 +205,8 @@ TapSource::TapSource(const PluginContext& ctx)
               ctx.params.string("dilation") == "centre_height" ? Dilation::CentreHeight
                                                               : Dilation::HeightAboveContact) {
   const Params& p = ctx.params;
-  packing_ = p.string("initial_file").empty() ? random_placement(ctx, replica_seeds(ctx)) : saved_bed(ctx);
+  packing_ = p.string("initial_file").empty() ? random_placement(ctx, replica_seeds(ctx))
+                                               : saved_bed(ctx);
   if (p.real("delta") > packing_.min_radius()) {
     std::ostringstream s;
     s << ctx.param("delta") << ": expected at most the smallest radius " << packing_.min_radius()
