@@ -6,8 +6,9 @@ per row over the width times the row spacing, so counting rows tells which stack
 (12 and 11 alternating in the paper's box) and whether rows lose disks. Rows are clusters of
 centre heights, split where consecutive heights are more than --gap diameters apart; the
 lowest --skip-bottom and highest --skip-top rows are left out (the base layer and the loose
-surface). A cluster holding more disks than a row can (more than width / diameter + 1) is a
-disordered patch, not a row: it is counted apart as `unsplit` and kept out of the mean.
+surface). A cluster holding more disks than a row can (more than width / diameter) is a
+disordered patch or rows not told apart, not a row: it is counted apart as `unsplit` and kept
+out of the mean.
 
     scripts/row_counts.py out/tap2d_arches/point_003/frames.h5 [more frames.h5 ...]
 
@@ -44,7 +45,7 @@ def count_file(path, gap, skip_bottom, skip_top):
     sizes = []
     for frame, r in zip(positions, radii):
         sizes += row_sizes(frame, 2.0 * r.mean(), gap, skip_bottom, skip_top)
-    most = int(width / (2.0 * radii.mean())) + 1
+    most = int(width / (2.0 * radii.mean()))
     rows = [s for s in sizes if s <= most]
     return rows, len(sizes) - len(rows)
 
