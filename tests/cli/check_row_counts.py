@@ -1,7 +1,8 @@
 """scripts/row_counts.py on hand-built stacks of rows in the paper's box (width 20, radius
-0.1 + 1/sqrt(2)): rows of 12 and 11 in their pockets count 11.5 disks per row exactly; a row
-with a disk taken out counts one disk less; the excluded base and surface rows do not count;
-a 3D file is refused with a line naming it."""
+0.1 + 1/sqrt(2)): rows of 12 and 11 in their pockets are counted exactly; a row with a disk
+taken out counts one disk less; the excluded base and surface rows do not count; two rows
+run together are counted apart as unsplit, not as a row; a 3D file is refused with a line
+naming it."""
 import math
 import os
 import subprocess
