@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Disks per row in layered 2D beds (docs/disks2d_tap.md, "Widths near 20").
 
-A layered bed is a stack of horizontal rows; its area fraction is the mean number of disks
-per row over the width times the row spacing, so counting rows tells which stack a bed is
+A layered bed is a stack of horizontal rows; its area fraction is the mean disk area per row
+over the width times the row spacing, so counting rows tells which stack a bed is
 (12 and 11 alternating in the paper's box) and whether rows lose disks. Rows are clusters of
 centre heights, split where consecutive heights are more than --gap diameters apart; the
 lowest --skip-bottom and highest --skip-top rows are left out (the base layer and the loose
