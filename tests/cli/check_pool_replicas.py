@@ -2,7 +2,7 @@
 means and its error the standard error across replicas; a row only one replica has keeps that
 run's own error; frames add up; points of other swept values stay in their own group; replicas
 with different columns are refused; the table `points` pools the scalars of sweep.points.csv and
-keeps the swept values as columns."""
+keeps the swept values as columns; missing or corrupt tables are refused in one line."""
 import csv
 import json
 import os
@@ -71,6 +71,15 @@ with tempfile.TemporaryDirectory() as out:
     r = run(out)
     if r.returncode == 0 or "disagree" not in r.stderr:
         failures.append(f"mismatched columns accepted: {r.returncode} {r.stderr}")
+    # Missing and corrupt tables get one line naming the file, not a traceback.
+    os.remove(os.path.join(out, "sweep.points.csv"))
+    r = run(out)
+    if r.returncode == 0 or "sweep.points.csv: expected a granpipe table" not in r.stderr or "Traceback" in r.stderr:
+        failures.append(f"missing sweep.points.csv: {r.returncode} {r.stderr}")
+    write(out, "sweep.points.csv", ["point,source.params.N,packing.phi", "0,100,nan?"])
+    r = run(out)
+    if r.returncode == 0 or "data row 1: expected numbers" not in r.stderr or "Traceback" in r.stderr:
+        failures.append(f"corrupt sweep.points.csv: {r.returncode} {r.stderr}")
 if failures:
     print("FAIL", *failures, sep="\n")
     sys.exit(1)
