@@ -16,6 +16,12 @@ namespace granpipe::disks2d_tap {
 // disks on the base there. Both only ever separate disks.
 enum class Dilation : std::uint8_t { CentreHeight, HeightAboveContact };
 
+// Loops per tap that put the order-disorder transition where the paper has it (between
+// A = 1.10 and 1.15); the paper's "about 20" of its own, undefined, loops mix as much as
+// about 60 of these, which try one jump per disk (docs/disks2d_tap.md, "How much the tap
+// mixes").
+inline constexpr int kPaperMatchedMcLoops = 60;
+
 struct ShakeStats {
   std::uint64_t trials = 0, accepted = 0;
 };

@@ -52,12 +52,9 @@ Schema schema() {
   s.choice("dilation", {"centre_height", "height_above_contact"}, std::string("centre_height"),
            "a tap multiplies centre heights y (the paper's wording) or heights above the "
            "lowest centre position y - r_min by A");
-  // 60, not the paper's "about 20": with 20 of these loops (one jump tried per disk) the
-  // order-disorder transition comes 0.03-0.05 in A after the paper's; docs/disks2d_tap.md,
-  // "How much the tap mixes".
-  s.integer("mc_loops", 60,
-            "Monte Carlo loops after each dilation, each trying one jump per disk; 60 put the "
-            "order-disorder transition where the paper's 'about 20' do")
+  s.integer("mc_loops", kPaperMatchedMcLoops,
+            "Monte Carlo loops after each dilation, each trying one jump per disk; the "
+            "default puts the order-disorder transition where the paper's 'about 20' do")
       .min(0);
   s.choice("protocol", {"constant", "annealed"}, std::string("constant"),
            "constant: equilibration then production taps at A; annealed: A ramped up and "

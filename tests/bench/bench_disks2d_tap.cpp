@@ -22,7 +22,7 @@ constexpr int kWarmTaps = 20;  // taps before timing, away from the initial depo
 struct Bed {
   dt::DiskPacking packing;
   std::unique_ptr<dt::Deposit> deposit;
-  dt::Shaker shaker{60, dt::Dilation::CentreHeight};
+  dt::Shaker shaker{dt::kPaperMatchedMcLoops, dt::Dilation::CentreHeight};
   granpipe::RandomStream deposition{1}, taps{2};
 
   explicit Bed(std::size_t n) {
