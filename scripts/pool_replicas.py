@@ -115,7 +115,7 @@ def main():
         raise SystemExit(f"{args.out}: --table points --plot draws against a swept parameter besides {args.over}, found none")
 
     for table in args.table:
-        keys = [] if table == "points" else args.key or ["branch", "time"]
+        keys = [] if table == "points" else args.key or ["branch", "amplitude"]
         provenance, out_rows, out_header = "", [], None
         series = {}
         for gkey, members in sorted(groups.items()):
@@ -160,7 +160,7 @@ def main():
                 if args.reference_x not in rh or column not in rh:
                     raise SystemExit(f"{args.reference}/sweep.points.csv: expected columns {args.reference_x} and {column}")
                 reference = [(r[rh.index(args.reference_x)], r[rh.index(column)]) for r in rrows]
-            xlabel = others[0] if table == "points" else "A (frame time)" if keys[-1] == "time" else keys[-1]
+            xlabel = others[0] if table == "points" else "A" if keys[-1] == "amplitude" else keys[-1]
             svg_plot(series, reference, xlabel, args.plot, os.path.join(args.out, f"pooled.{table}.svg"))
 
 

@@ -86,7 +86,7 @@ def check_file(path, fixture):
         fixed_string_attribute(f["h5md/creator"], "version")
 
         ext = f["granpipe"]
-        require(list(ext.attrs["version"]) == [1, 0], "/granpipe@version", "expected [1, 0]")
+        require(list(ext.attrs["version"]) == [2, 0], "/granpipe@version", "expected [2, 0]")
         require(int(ext.attrs["complete"]) == 1, "/granpipe@complete",
                 "expected 1 (a closed file)")
         json.loads(ext.attrs["provenance"])
@@ -103,6 +103,24 @@ def check_file(path, fixture):
             element(all_, "velocity", frames, (n, dim), "f", 8, clock)
         element(all_, "species", frames, (n,), "i", 4, clock)
         element(all_, "id", frames, (n,), "i", 8, clock)
+        element(all_, "radius", frames, (n,), "f", 8, clock)
+        if "angular_velocity" in all_:
+            element(all_, "angular_velocity", frames, (n, 3 if dim == 3 else 1), "f", 8, clock)
+        order = [s.decode() if isinstance(s, bytes) else s for s in ext.attrs["particle_columns"]]
+        require(order[:4] == ["position", "radius", "id", "species"], "/granpipe@particle_columns",
+                f"expected the required columns first, got {order}")
+        for name in order:
+            require(name in all_, f"{all_.name}/{name}", "listed in particle_columns, missing")
+            value = all_[name]["value"]
+            require(value.shape[:2] == (frames, n), value.name, "expected [frames][N]...")
+            if name not in ("position", "velocity", "species", "id"):
+                require("granpipe_components" in value.attrs, value.name,
+                        "expected its granpipe_components attribute")
+        if "observables" in f:
+            for name, o in f["observables"].items():
+                require(o["step"] == clock["step"] and o["time"] == clock["time"], o.name,
+                        "step and time must be hard links to position's")
+                require(o["value"].shape[0] == frames, o.name + "/value", "one row per frame")
 
         box = all_["box"]
         require(int(box.attrs["dimension"]) == dim, box.name + "@dimension", f"expected {dim}")
@@ -111,13 +129,6 @@ def check_file(path, fixture):
                 box.name + "@boundary", f"expected {dim} of periodic/none, got {boundary}")
         edges = element(box, "edges", frames, (dim,), "f", 8, clock)
 
-        dataset(ext, "radius", (frames, n), "f")
-        dataset(ext, "tap", (frames,), "i")
-        dataset(ext, "cycle", (frames,), "i")
-        if "angular_velocity" in ext:
-            dataset(ext, "angular_velocity", (frames, n, 3 if dim == 3 else 1), "f")
-        if "supports" in ext:
-            dataset(ext, "supports", (frames, n, 2), "i")
         c = ext["container"]
         enum_dataset(c, "shape", (frames,), {"box": 0, "cylinder": 1})
         lo = dataset(c, "lo", (frames, 3), "f")

@@ -1,9 +1,38 @@
+#include <cstdio>
 #include <iostream>
 
 #include "commands.hpp"
 #include "granpipe/frame_store.hpp"
 
 namespace granpipe::app {
+
+namespace {
+
+void list_columns(const char* what, const std::vector<Property>& columns) {
+  if (columns.empty()) return;
+  std::cout << what << ":\n";
+  for (const Property& p : columns) {
+    std::printf("  %-20s %-22s %-14s %s\n", p.name.c_str(), describe_type(p).c_str(),
+                p.unit.empty() ? "-" : p.unit.c_str(), p.doc.c_str());
+  }
+}
+
+// One value of a one-row observable, for the per-frame table.
+std::string observable_text(const Frame& f, const Property& p) {
+  const Column* c = f.observables.find(p.name);
+  if (!c || p.components != 1) return "-";
+  char buf[32];
+  if (p.type == ValueType::Real) {
+    std::snprintf(buf, sizeof buf, "%.6g", c->as<Eigen::ArrayXd>()[0]);
+  } else if (p.type == ValueType::Integer) {
+    std::snprintf(buf, sizeof buf, "%lld", static_cast<long long>(c->as<IndexArray>()[0]));
+  } else {
+    std::snprintf(buf, sizeof buf, "%d", c->as<IntArray>()[0]);
+  }
+  return buf;
+}
+
+}  // namespace
 
 void inspect(const std::string& path, long max_rows) {
   FrameReader reader(path);
@@ -12,19 +41,22 @@ void inspect(const std::string& path, long max_rows) {
             << ", dim = " << info.dim << ", particles group \"" << info.group << "\""
             << (info.complete ? "" : ", INCOMPLETE (the writer did not finish)") << "\n"
             << "written by: " << (info.creator.empty() ? "unknown" : info.creator)
-            << (info.granpipe_file ? " (granpipe layout)" : " (plain H5MD)") << "\n"
-            << "each frame holds: position" << (info.has_radius ? ", radius" : "")
-            << (info.has_velocity ? ", velocity" : "")
-            << (info.has_angular_velocity ? ", angular velocity" : "")
-            << (info.has_supports ? ", support labels" : "") << (info.has_contacts ? ", contacts" : "")
-            << "\n";
-  std::cout << "frame      step          time    tap  cycle  contacts\n";
+            << (info.granpipe_file ? " (granpipe layout)" : " (plain H5MD)") << "\n";
+  std::vector<Property> particle{*find_standard("position", Scope::Particle)};
+  particle.insert(particle.end(), info.columns.begin(), info.columns.end());
+  list_columns("particle columns", particle);
+  list_columns("contact columns", info.contact_columns);
+  list_columns("observables", info.observables);
+
+  std::printf("%5s %9s %13s", "frame", "step", "time");
+  for (const Property& o : info.observables) std::printf(" %12s", o.name.c_str());
+  std::printf(" %9s\n", "contacts");
   const long rows = std::min(info.frames, max_rows);
   for (long k = 0; k < rows; ++k) {
     const Frame f = reader.read(k);
-    std::printf("%5ld %9lld %13.6g %6lld %6lld %9lld\n", k, static_cast<long long>(f.step), f.time,
-                static_cast<long long>(f.tap), static_cast<long long>(f.cycle),
-                static_cast<long long>(f.contacts ? f.contacts->size() : 0));
+    std::printf("%5ld %9lld %13.6g", k, static_cast<long long>(f.step), f.time);
+    for (const Property& o : info.observables) std::printf(" %12s", observable_text(f, o).c_str());
+    std::printf(" %9lld\n", static_cast<long long>(f.contacts ? f.contacts->rows() : 0));
   }
   if (rows < info.frames) std::cout << "... (" << info.frames - rows << " more; --rows N shows more)\n";
 }

@@ -22,22 +22,22 @@ void find_wall_contacts(const Frame& f, double tolerance, std::vector<Found>& ou
   const Eigen::Index n = f.size();
   const bool cylinder = c.shape == ContainerShape::Cylinder;
   for (Eigen::Index k = 0; k < n; ++k) {
-    const double reach = f.radius[k] * (1.0 + tolerance);
+    const double reach = f.radius()[k] * (1.0 + tolerance);
     for (int a = 0; a < f.dim; ++a) {
       if (cylinder && a < 2) continue;  // the side of a cylinder is one round wall
       for (int side = 0; side < 2; ++side) {
         if (c.boundary[a][side] != Boundary::Wall) continue;
         const double wall = (side == 0 ? c.lo[a] : c.hi[a]) + c.wall_offset[a];
-        const double dist = side == 0 ? f.position(k, a) - wall : wall - f.position(k, a);
+        const double dist = side == 0 ? f.position()(k, a) - wall : wall - f.position()(k, a);
         if (dist <= reach) out.push_back({k, partner::wall(static_cast<Wall>(2 * a + side)),
-                                          dist - f.radius[k]});
+                                          dist - f.radius()[k]});
       }
     }
     if (cylinder) {
-      const double dx = f.position(k, 0) - c.cylinder_center[0] - c.wall_offset[0];
-      const double dy = f.position(k, 1) - c.cylinder_center[1] - c.wall_offset[1];
+      const double dx = f.position()(k, 0) - c.cylinder_center[0] - c.wall_offset[0];
+      const double dy = f.position()(k, 1) - c.cylinder_center[1] - c.wall_offset[1];
       const double dist = c.cylinder_radius - std::hypot(dx, dy);
-      if (dist <= reach) out.push_back({k, partner::wall(Wall::CylinderSide), dist - f.radius[k]});
+      if (dist <= reach) out.push_back({k, partner::wall(Wall::CylinderSide), dist - f.radius()[k]});
     }
   }
 }
@@ -65,12 +65,12 @@ DistanceContacts find_contacts_by_distance(const Frame& frame, double tolerance)
   const Eigen::Index n = frame.size();
   std::vector<Found> pairs, walls;
   if (n >= 2) {
-    const double cutoff = 2.0 * frame.radius.maxCoeff() * (1.0 + tolerance);
-    const CellList cells(frame.position, frame.container, frame.dim, cutoff);
+    const double cutoff = 2.0 * frame.radius().maxCoeff() * (1.0 + tolerance);
+    const CellList cells(frame.position(), frame.container, frame.dim, cutoff);
     cells.for_each_pair([&](int i, int j, const double*, double r2) {
-      const double contact = (frame.radius[i] + frame.radius[j]) * (1.0 + tolerance);
+      const double contact = (frame.radius()[i] + frame.radius()[j]) * (1.0 + tolerance);
       if (r2 <= contact * contact) {
-        pairs.push_back({i, j, std::sqrt(r2) - frame.radius[i] - frame.radius[j]});
+        pairs.push_back({i, j, std::sqrt(r2) - frame.radius()[i] - frame.radius()[j]});
       }
     });
     std::sort(pairs.begin(), pairs.end(),

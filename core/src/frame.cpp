@@ -7,93 +7,146 @@
 
 namespace granpipe {
 
-void Contacts::resize(Eigen::Index m, int dim) {
-  i.resize(m);
-  j.resize(m);
-  overlap.resize(m);
-  normal_force.resize(m, dim);
-  tangential_force.resize(m, dim);
-  point.resize(m, dim);
-}
-
-void Frame::resize(Eigen::Index n, int dimension) {
-  dim = dimension;
-  position = Coordinates::Zero(n, dimension);
-  radius = Eigen::ArrayXd::Zero(n);
-  id = IndexArray::LinSpaced(n, 0, n - 1);
-  species = IntArray::Zero(n);
-  velocity.reset();
-  angular_velocity.reset();
-  contacts.reset();
-  supports.reset();
-}
-
 namespace {
+
+const Property& standard(std::string_view name, Scope scope) {
+  if (const Property* p = find_standard(name, scope)) return *p;
+  throw InternalError("\"" + std::string(name) + "\" is not a standard " + to_string(scope) +
+                      " property");
+}
+
 std::string describe_particle(const Frame& f, Eigen::Index k) {
   std::ostringstream s;
-  s << "particle " << k << " (id " << f.id[k] << ")";
+  s << "particle " << k << " (id " << f.id()[k] << ")";
   return s.str();
 }
-}  // namespace
 
-void Frame::check(const std::string& where) const {
-  if (dim != 2 && dim != 3) {
-    throw InputError(where + ": expected dimension 2 or 3, got " + std::to_string(dim));
-  }
-  const Eigen::Index n = position.rows();
-  auto sized = [&](Eigen::Index rows, const char* what) {
-    if (rows != n) {
-      throw InputError(where + ": " + what + " has " + std::to_string(rows) +
-                       " entries, expected " + std::to_string(n) + " (one per particle)");
+// Every column of a table has its rows and the components its property asks for.
+void check_table(const PropertyTable& t, int dim, const std::string& where) {
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    const Column& c = t.column(k);
+    if (c.rows() != t.rows()) {
+      throw InputError(where + ": column \"" + c.name() + "\" has " + std::to_string(c.rows()) +
+                       " rows, expected " + std::to_string(t.rows()) + " (one per " +
+                       to_string(t.scope()) + ")");
     }
-  };
-  if (n > 0 && position.cols() != dim) {
-    throw InputError(where + ": positions have " + std::to_string(position.cols()) +
-                     " coordinates, expected " + std::to_string(dim));
-  }
-  sized(radius.size(), "radius");
-  sized(id.size(), "id");
-  sized(species.size(), "species");
-  if (velocity) sized(velocity->rows(), "velocity");
-  if (angular_velocity) sized(angular_velocity->rows(), "angular velocity");
-  if (supports) {
-    sized(supports->left.size(), "left supports");
-    sized(supports->right.size(), "right supports");
-  }
-  if (contacts) {
-    const Eigen::Index m = contacts->size();
-    const bool consistent = contacts->j.size() == m && contacts->overlap.size() == m &&
-                            contacts->normal_force.rows() == m && contacts->tangential_force.rows() == m &&
-                            contacts->point.rows() == m;
-    if (!consistent) {
-      throw InputError(where + ": contact arrays have different lengths (" + std::to_string(m) +
-                       " contacts in i)");
-    }
-    for (Eigen::Index k = 0; k < m; ++k) {
-      const auto a = contacts->i[k], b = contacts->j[k];
-      if (a < 0 || a >= n || b >= n || b == partner::none) {
-        throw InputError(where + ": contact " + std::to_string(k) + ": expected particle indices below " +
-                         std::to_string(n) + " (or a wall as second partner), got " + std::to_string(a) +
-                         " and " + std::to_string(b));
-      }
+    if (c.components() != c.property().components_in(dim)) {
+      throw InputError(where + ": column \"" + c.name() + "\" has " +
+                       std::to_string(c.components()) + " components, expected " +
+                       std::to_string(c.property().components_in(dim)));
     }
   }
-  for (Eigen::Index k = 0; k < n; ++k) {
-    for (int a = 0; a < dim; ++a) {
-      if (!std::isfinite(position(k, a))) {
+}
+
+void check_required_particle_columns(const Frame& f, const std::string& where) {
+  const char* names[] = {"position", "radius", "id", "species"};
+  for (std::size_t k = 0; k < 4; ++k) {
+    if (f.particles.size() <= k || f.particles.column(k).name() != names[k] ||
+        !f.particles.column(k).property().matches(standard(names[k], Scope::Particle))) {
+      throw InternalError(where + ": the particle table does not start with position, radius, "
+                          "id and species");
+    }
+  }
+}
+
+void check_contacts(const Frame& f, const std::string& where) {
+  const Eigen::Index n = f.size();
+  const IndexArray &i = f.contact_i(), &j = f.contact_j();
+  for (Eigen::Index k = 0; k < i.size(); ++k) {
+    if (i[k] < 0 || i[k] >= n || j[k] >= n || j[k] == partner::none) {
+      throw InputError(where + ": contact " + std::to_string(k) +
+                       ": expected particle indices below " + std::to_string(n) +
+                       " (or a wall as second partner), got " + std::to_string(i[k]) + " and " +
+                       std::to_string(j[k]));
+    }
+  }
+}
+
+void check_particles(const Frame& f, const std::string& where) {
+  const Coordinates& x = f.position();
+  const Eigen::ArrayXd& r = f.radius();
+  for (Eigen::Index k = 0; k < f.size(); ++k) {
+    for (int a = 0; a < f.dim; ++a) {
+      if (!std::isfinite(x(k, a))) {
         std::ostringstream s;
-        s << where << ": " << describe_particle(*this, k) << ": expected a finite position, got "
-          << position(k, a) << " in coordinate " << a;
+        s << where << ": " << describe_particle(f, k) << ": expected a finite position, got "
+          << x(k, a) << " in coordinate " << a;
         throw InputError(s.str());
       }
     }
-    if (!(radius[k] > 0.0) || !std::isfinite(radius[k])) {
+    if (!(r[k] > 0.0) || !std::isfinite(r[k])) {
       std::ostringstream s;
-      s << where << ": " << describe_particle(*this, k) << ": expected a finite radius > 0, got "
-        << radius[k];
+      s << where << ": " << describe_particle(f, k) << ": expected a finite radius > 0, got "
+        << r[k];
       throw InputError(s.str());
     }
   }
+}
+
+}  // namespace
+
+void Frame::resize(Eigen::Index n, int dimension) {
+  dim = dimension;
+  particles.clear(n, dimension);
+  for (const char* name : {"position", "radius", "id", "species"}) {
+    particles.add(standard(name, Scope::Particle));
+  }
+  id() = IndexArray::LinSpaced(n, 0, n - 1);
+  contacts.reset();
+  observables.clear(1, dimension);
+}
+
+Column& Frame::add(std::string_view standard_name) {
+  return particles.add(standard(standard_name, Scope::Particle));
+}
+
+PropertyTable& Frame::add_contacts(Eigen::Index m) {
+  contacts.emplace(Scope::Contact, m, dim);
+  contacts->add(standard("i", Scope::Contact));
+  contacts->add(standard("j", Scope::Contact));
+  return *contacts;
+}
+
+void Frame::set_observable(const Property& p, double value) {
+  observables.add<Eigen::ArrayXd>(p)[0] = value;
+}
+
+void Frame::set_observable(const Property& p, std::int64_t value) {
+  observables.add<IndexArray>(p)[0] = value;
+}
+
+std::optional<double> Frame::real_observable(std::string_view name) const {
+  const Column* c = observables.find(name);
+  if (!c || c->property().type != ValueType::Real || c->property().components != 1) return {};
+  return c->as<Eigen::ArrayXd>()[0];
+}
+
+std::optional<std::int64_t> Frame::integer_observable(std::string_view name) const {
+  const Column* c = observables.find(name);
+  if (!c || c->property().type != ValueType::Integer || c->property().components != 1) return {};
+  return c->as<IndexArray>()[0];
+}
+
+void Frame::check_layout(const std::string& where) const {
+  if (dim != 2 && dim != 3) {
+    throw InputError(where + ": expected dimension 2 or 3, got " + std::to_string(dim));
+  }
+  check_required_particle_columns(*this, where);
+  check_table(particles, dim, where);
+  check_table(observables, dim, where);
+  if (contacts) {
+    check_table(*contacts, dim, where + ": contacts");
+    if (contacts->size() < 2 || contacts->column(0).name() != "i" ||
+        contacts->column(1).name() != "j") {
+      throw InternalError(where + ": the contact table does not start with i and j");
+    }
+  }
+}
+
+void Frame::check(const std::string& where) const {
+  check_layout(where);
+  if (contacts) check_contacts(*this, where);
+  check_particles(*this, where);
 }
 
 }  // namespace granpipe

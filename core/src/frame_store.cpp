@@ -11,6 +11,7 @@
 #include "granpipe/errors.hpp"
 #include "granpipe/frame_store.hpp"
 #include "granpipe/version.hpp"
+#include "h5_column.hpp"
 #include "h5_dataset.hpp"
 #include "h5_frame_layout.hpp"
 
@@ -21,54 +22,49 @@ namespace {
 
 using RowMajor = Eigen::Array<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
+// The columns of one table as the writer saw them in the first frame: every later frame
+// must carry the same.
+struct TableLayout {
+  std::vector<std::pair<std::string, int>> columns;  // name, components
+  static TableLayout of(const PropertyTable& t) {
+    TableLayout l;
+    for (std::size_t k = 0; k < t.size(); ++k) {
+      l.columns.emplace_back(t.column(k).name(), t.column(k).components());
+    }
+    return l;
+  }
+  bool operator==(const TableLayout&) const = default;
+};
+
 // What every frame of one file carries, fixed by the first frame.
 struct Layout {
   Eigen::Index particles = 0;
   int dim = 0;
-  bool velocity = false;
-  Eigen::Index angular_columns = 0;  // 0: no angular velocity
-  bool contacts = false;
-  bool supports = false;
+  TableLayout particle_columns, observables;
+  std::optional<TableLayout> contacts;
 
   static Layout of(const Frame& f) {
-    return {f.size(), f.dim, f.velocity.has_value(),
-            f.angular_velocity ? f.angular_velocity->cols() : 0, f.contacts.has_value(),
-            f.supports.has_value()};
+    return {f.size(), f.dim, TableLayout::of(f.particles), TableLayout::of(f.observables),
+            f.contacts ? std::optional(TableLayout::of(*f.contacts)) : std::nullopt};
   }
   bool operator==(const Layout&) const = default;
 };
 
-std::string describe(const Layout& l) {
-  std::string s = std::to_string(l.particles) + " particles in " + std::to_string(l.dim) + "D";
-  if (l.velocity) s += ", velocities";
-  if (l.angular_columns) s += ", angular velocities (" + std::to_string(l.angular_columns) + ")";
-  if (l.contacts) s += ", contacts";
-  if (l.supports) s += ", supports";
-  return s;
+std::string describe(const TableLayout& t) {
+  std::string s;
+  for (const auto& [name, components] : t.columns) {
+    s += (s.empty() ? "" : " ") + name;
+    if (components != 1) s += "[" + std::to_string(components) + "]";
+  }
+  return s.empty() ? "none" : s;
 }
 
-// A frame whose arrays disagree in size would make the writer read out of bounds.
-void check_sizes(const Frame& f, const std::string& where) {
-  const Eigen::Index n = f.size();
-  auto require = [&](bool ok, const char* what) {
-    if (!ok) throw InternalError(where + ": frame arrays disagree in size (" + what + ")");
-  };
-  require(f.dim == 2 || f.dim == 3, "dimension is not 2 or 3");
-  require(f.position.cols() == f.dim, "position columns");
-  require(f.radius.size() == n && f.id.size() == n && f.species.size() == n,
-          "radius, id or species");
-  if (f.velocity) require(f.velocity->rows() == n && f.velocity->cols() == f.dim, "velocity");
-  if (f.angular_velocity) require(f.angular_velocity->rows() == n, "angular velocity");
-  if (f.supports) require(f.supports->left.size() == n && f.supports->right.size() == n,
-                          "supports");
-  if (f.contacts) {
-    const Contacts& c = *f.contacts;
-    const Eigen::Index m = c.size();
-    require(c.j.size() == m && c.overlap.size() == m, "contact i, j, overlap");
-    for (const Coordinates* a : {&c.normal_force, &c.tangential_force, &c.point}) {
-      require(a->rows() == m && a->cols() == f.dim, "contact forces or points");
-    }
-  }
+std::string describe(const Layout& l) {
+  std::string s = std::to_string(l.particles) + " particles in " + std::to_string(l.dim) +
+                  "D (columns: " + describe(l.particle_columns) +
+                  "; observables: " + describe(l.observables);
+  if (l.contacts) s += "; contacts: " + describe(*l.contacts);
+  return s + ")";
 }
 
 // Rows per chunk: about 16 KiB per chunk, at most `max_rows`. Small chunks keep small
@@ -99,15 +95,19 @@ struct FrameWriter::Impl {
       h5::append_rows(dataset.id(), path, mem_type, data, rows);
     }
   };
+  // A column of the frame and the series it is appended to.
+  struct ColumnSeries {
+    std::string name;
+    Series series;
+  };
   // Every dataset of the file, created together when the first frame arrives (SWMR
   // forbids creating objects once it has started).
   struct Datasets {
-    Series step, time, position, velocity, species, id, edges;
-    Series radius, angular_velocity, tap, cycle, supports;
+    Series step, time, edges;
+    std::vector<ColumnSeries> particles, observables, contacts;
     Series shape, lo, hi, boundary, cylinder_radius, cylinder_center, wall_offset,
         wall_velocity;
-    Series contact_offset, contact_count, contact_i, contact_j, contact_overlap,
-        contact_normal, contact_tangential, contact_point;
+    Series contact_offset, contact_count;
   };
 
   std::string name;
@@ -125,6 +125,15 @@ struct FrameWriter::Impl {
                                     chunk_rows(item, H5Tget_size(type), max_rows), fill_type,
                                     fill)};
   }
+  // The series of one column, with the attributes that let it read back as its property.
+  Series column_series(const std::string& path, const Column& c, const h5::Shape& front,
+                       hsize_t max_rows) {
+    h5::Shape item = front;
+    for (hsize_t n : h5::item_shape(c)) item.push_back(n);
+    Series s = series(path, h5::file_type(c.property().type), item, max_rows);
+    h5::write_property_attributes(s.dataset.id(), c.property());
+    return s;
+  }
   // An H5MD time-dependent element sharing position's step and time (hard links, as
   // the H5MD specification asks of elements sampled together).
   void element(const std::string& path) {
@@ -139,7 +148,12 @@ struct FrameWriter::Impl {
 
   void create_file(const std::string& provenance);
   void create_datasets(const Frame& first);
+  void create_particles(const Frame& f, Datasets& s);
+  void create_container(Datasets& s);
+  void create_contacts(const Frame& f, Datasets& s);
   void write(const Frame& f);
+  void write_container(const Container& c);
+  void write_contacts(const PropertyTable& contacts);
 };
 
 void FrameWriter::Impl::create_file(const std::string& provenance) {
@@ -163,48 +177,44 @@ void FrameWriter::Impl::create_file(const std::string& provenance) {
   h5::check(H5Fflush(file.id(), H5F_SCOPE_GLOBAL), "cannot flush");
 }
 
-void FrameWriter::Impl::create_datasets(const Frame& f) {
-  const Layout& l = *layout;
-  const auto n = static_cast<hsize_t>(l.particles), d = static_cast<hsize_t>(l.dim);
-  const hid_t f64 = H5T_IEEE_F64LE, i64 = H5T_STD_I64LE, i32 = H5T_STD_I32LE;
+void FrameWriter::Impl::create_particles(const Frame& f, Datasets& s) {
+  const auto n = static_cast<hsize_t>(f.size()), d = static_cast<hsize_t>(f.dim);
   const std::string all = L::particles(L::kGroup);
-  Datasets s;
-
   h5::create_group(file.id(), L::kParticles);
   h5::create_group(file.id(), all);
   h5::create_group(file.id(), all + "/position");
   const long long unwritten = L::kUnwrittenStep;
-  s.step = series(all + "/position/step", i64, {}, kFrameRows, H5T_NATIVE_LLONG, &unwritten);
-  s.time = series(all + "/position/time", f64, {}, kFrameRows);
-  s.position = series(all + "/position/value", f64, {n, d}, kFrameRows);
-  if (l.velocity) {
-    element(all + "/velocity");
-    s.velocity = series(all + "/velocity/value", f64, {n, d}, kFrameRows);
+  s.step = series(all + "/position/step", H5T_STD_I64LE, {}, kFrameRows, H5T_NATIVE_LLONG,
+                  &unwritten);
+  s.time = series(all + "/position/time", H5T_IEEE_F64LE, {}, kFrameRows);
+  for (std::size_t k = 0; k < f.particles.size(); ++k) {
+    const Column& c = f.particles.column(k);
+    const std::string path = all + "/" + c.name();
+    if (c.name() != "position") element(path);
+    s.particles.push_back({c.name(), column_series(path + "/value", c, {n}, kFrameRows)});
   }
-  element(all + "/species");
-  s.species = series(all + "/species/value", i32, {n}, kFrameRows);
-  element(all + "/id");
-  s.id = series(all + "/id/value", i64, {n}, kFrameRows);
 
   h5::Object box = h5::create_group(file.id(), all + "/box");
-  h5::write_attribute(box.id(), "dimension", l.dim);
+  h5::write_attribute(box.id(), "dimension", f.dim);
   std::vector<std::string> boundary;
-  for (int a = 0; a < l.dim; ++a) {
+  for (int a = 0; a < f.dim; ++a) {
     boundary.push_back(f.container.periodic(a) ? "periodic" : "none");
   }
   h5::write_attribute(box.id(), "boundary", boundary);
   element(all + "/box/edges");
-  s.edges = series(all + "/box/edges/value", f64, {d}, kFrameRows);
+  s.edges = series(all + "/box/edges/value", H5T_IEEE_F64LE, {d}, kFrameRows);
 
-  s.radius = series(L::kRadius, f64, {n}, kFrameRows);
-  if (l.angular_columns) {
-    s.angular_velocity = series(L::kAngularVelocity, f64,
-                                {n, static_cast<hsize_t>(l.angular_columns)}, kFrameRows);
+  if (f.observables.size() > 0) h5::create_group(file.id(), L::kObservables);
+  for (std::size_t k = 0; k < f.observables.size(); ++k) {
+    const Column& c = f.observables.column(k);
+    const std::string path = L::kObservables + "/" + c.name();
+    element(path);
+    s.observables.push_back({c.name(), column_series(path + "/value", c, {}, kFrameRows)});
   }
-  s.tap = series(L::kTap, i64, {}, kFrameRows);
-  s.cycle = series(L::kCycle, i64, {}, kFrameRows);
-  if (l.supports) s.supports = series(L::kSupports, i64, {n, 2}, kFrameRows);
+}
 
+void FrameWriter::Impl::create_container(Datasets& s) {
+  const hid_t f64 = H5T_IEEE_F64LE;
   h5::create_group(file.id(), L::kContainer);
   s.shape = series(L::kShape, shape_type.id(), {}, kFrameRows);
   s.lo = series(L::kLo, f64, {3}, kFrameRows);
@@ -214,53 +224,43 @@ void FrameWriter::Impl::create_datasets(const Frame& f) {
   s.cylinder_center = series(L::kCylinderCenter, f64, {2}, kFrameRows);
   s.wall_offset = series(L::kWallOffset, f64, {3}, kFrameRows);
   s.wall_velocity = series(L::kWallVelocity, f64, {3}, kFrameRows);
+}
 
-  if (l.contacts) {
-    h5::create_group(file.id(), L::kContacts);
-    s.contact_offset = series(L::kContactOffset, i64, {}, kFrameRows);
-    s.contact_count = series(L::kContactCount, i64, {}, kFrameRows);
-    s.contact_i = series(L::kContactI, i64, {}, kContactRows);
-    s.contact_j = series(L::kContactJ, i64, {}, kContactRows);
-    s.contact_overlap = series(L::kContactOverlap, f64, {}, kContactRows);
-    s.contact_normal = series(L::kContactNormal, f64, {d}, kContactRows);
-    s.contact_tangential = series(L::kContactTangential, f64, {d}, kContactRows);
-    s.contact_point = series(L::kContactPoint, f64, {d}, kContactRows);
+void FrameWriter::Impl::create_contacts(const Frame& f, Datasets& s) {
+  h5::create_group(file.id(), L::kContacts);
+  s.contact_offset = series(L::kContactOffset, H5T_STD_I64LE, {}, kFrameRows);
+  s.contact_count = series(L::kContactCount, H5T_STD_I64LE, {}, kFrameRows);
+  for (std::size_t k = 0; k < f.contacts->size(); ++k) {
+    const Column& c = f.contacts->column(k);
+    s.contacts.push_back(
+        {c.name(), column_series(L::kContacts + "/" + c.name(), c, {}, kContactRows)});
   }
+}
+
+namespace {
+// Writes the column order of a table; nothing for an empty one.
+void write_order(hid_t group, const std::string& attribute, const PropertyTable& t) {
+  std::vector<std::string> names;
+  for (std::size_t k = 0; k < t.size(); ++k) names.push_back(t.column(k).name());
+  if (!names.empty()) h5::write_attribute(group, attribute, names);
+}
+}  // namespace
+
+void FrameWriter::Impl::create_datasets(const Frame& f) {
+  h5::Object ext = h5::open_group(file.id(), L::kExtension);
+  write_order(ext.id(), L::kParticleColumnsAttr, f.particles);
+  write_order(ext.id(), L::kObservablesAttr, f.observables);
+  if (f.contacts) write_order(ext.id(), L::kContactColumnsAttr, *f.contacts);
+  Datasets s;
+  create_particles(f, s);
+  create_container(s);
+  if (f.contacts) create_contacts(f, s);
   ds = std::move(s);
 }
 
-void FrameWriter::Impl::write(const Frame& f) {
-  const Layout& l = *layout;
+void FrameWriter::Impl::write_container(const Container& c) {
   const Datasets& s = *ds;
-  const hid_t f64 = H5T_NATIVE_DOUBLE, i64 = H5T_NATIVE_INT64, i32 = H5T_NATIVE_INT32;
-
-  // HDF5 stores C order: rows of particles. Eigen keeps coordinates column by column.
-  const RowMajor position = f.position;
-  s.position.append(f64, position.data());
-  if (l.velocity) {
-    const RowMajor velocity = *f.velocity;
-    s.velocity.append(f64, velocity.data());
-  }
-  s.species.append(i32, f.species.data());
-  s.id.append(i64, f.id.data());
-  const Eigen::Vector3d edges = f.container.hi - f.container.lo;
-  s.edges.append(f64, edges.data());
-
-  s.radius.append(f64, f.radius.data());
-  if (l.angular_columns) {
-    const RowMajor angular = *f.angular_velocity;
-    s.angular_velocity.append(f64, angular.data());
-  }
-  s.tap.append(i64, &f.tap);
-  s.cycle.append(i64, &f.cycle);
-  if (l.supports) {
-    Eigen::Array<std::int64_t, Eigen::Dynamic, 2, Eigen::RowMajor> pairs(l.particles, 2);
-    pairs.col(0) = f.supports->left;
-    pairs.col(1) = f.supports->right;
-    s.supports.append(i64, pairs.data());
-  }
-
-  const Container& c = f.container;
+  const hid_t f64 = H5T_NATIVE_DOUBLE;
   const auto shape = static_cast<unsigned char>(c.shape);
   s.shape.append(shape_type.id(), &shape);
   s.lo.append(f64, c.lo.data());
@@ -276,26 +276,36 @@ void FrameWriter::Impl::write(const Frame& f) {
   s.cylinder_center.append(f64, c.cylinder_center.data());
   s.wall_offset.append(f64, c.wall_offset.data());
   s.wall_velocity.append(f64, c.wall_velocity.data());
+}
 
-  if (l.contacts) {
-    const Contacts& k = *f.contacts;
-    const auto m = static_cast<hsize_t>(k.size());
-    s.contact_i.append(i64, k.i.data(), m);
-    s.contact_j.append(i64, k.j.data(), m);
-    s.contact_overlap.append(f64, k.overlap.data(), m);
-    const RowMajor normal = k.normal_force, tangential = k.tangential_force, point = k.point;
-    s.contact_normal.append(f64, normal.data(), m);
-    s.contact_tangential.append(f64, tangential.data(), m);
-    s.contact_point.append(f64, point.data(), m);
-    const long long offset = contacts_written, count = static_cast<long long>(m);
-    s.contact_offset.append(H5T_NATIVE_LLONG, &offset);
-    s.contact_count.append(H5T_NATIVE_LLONG, &count);
-    contacts_written += count;
+void FrameWriter::Impl::write_contacts(const PropertyTable& contacts) {
+  const Datasets& s = *ds;
+  const auto m = static_cast<hsize_t>(contacts.rows());
+  for (const ColumnSeries& c : s.contacts) {
+    h5::append_column(c.series.dataset.id(), c.series.path, *contacts.find(c.name), m);
   }
+  const long long offset = contacts_written, count = static_cast<long long>(m);
+  s.contact_offset.append(H5T_NATIVE_LLONG, &offset);
+  s.contact_count.append(H5T_NATIVE_LLONG, &count);
+  contacts_written += count;
+}
+
+void FrameWriter::Impl::write(const Frame& f) {
+  const Datasets& s = *ds;
+  for (const ColumnSeries& c : s.particles) {
+    h5::append_column(c.series.dataset.id(), c.series.path, *f.particles.find(c.name), 1);
+  }
+  for (const ColumnSeries& c : s.observables) {
+    h5::append_column(c.series.dataset.id(), c.series.path, *f.observables.find(c.name), 1);
+  }
+  const Eigen::Vector3d edges = f.container.hi - f.container.lo;
+  s.edges.append(H5T_NATIVE_DOUBLE, edges.data());
+  write_container(f.container);
+  if (f.contacts) write_contacts(*f.contacts);
 
   // The step commits the frame: written last, after everything it stands for.
-  s.time.append(f64, &f.time);
-  s.step.append(i64, &f.step);
+  s.time.append(H5T_NATIVE_DOUBLE, &f.time);
+  s.step.append(H5T_NATIVE_INT64, &f.step);
   h5::check(H5Fflush(file.id(), H5F_SCOPE_GLOBAL), "cannot flush (is the disk full?)");
 }
 
@@ -316,7 +326,7 @@ void FrameWriter::append(const Frame& frame) {
   h5::silence_error_stack();
   Impl& w = *impl_;
   if (w.closed) throw InternalError(w.name + ": frame appended after close()");
-  check_sizes(frame, w.name);
+  frame.check_layout(w.name);
   const Layout l = Layout::of(frame);
   if (!w.layout) {
     w.layout = l;

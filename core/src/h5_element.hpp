@@ -30,12 +30,16 @@ class Element {
   // Frame k is the sample with step frame_steps[k]; false when some frame has no sample.
   bool map_by_step(const std::vector<std::int64_t>& frame_steps);
 
+  // The dataset holding the values, and the row of frame k in it (time-dependent
+  // elements; a time-independent one holds every frame whole).
+  hid_t dataset() const { return value_.id(); }
+  hsize_t row(long frame) const;
+
   // Reads frame k (all of a time-independent element) as doubles or 64-bit integers.
   void read(long frame, double* out) const;
   std::vector<std::int64_t> read_integers(long frame) const;
 
  private:
-  hsize_t row(long frame) const;
   std::string data_path_;
   Object value_;
   Shape shape_;

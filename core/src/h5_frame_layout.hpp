@@ -15,18 +15,21 @@ inline const std::string kParticles = "/particles";
 inline const std::string kGroup = "all";
 inline std::string particles(const std::string& group) { return kParticles + "/" + group; }
 
-// granpipe's extension: per-frame datasets, row k belongs to frame k.
+// granpipe's extension: the container and the contacts, row k of a per-frame dataset
+// belongs to frame k. Every particle column is an H5MD element of the particles group.
 inline const std::string kExtension = "/granpipe";
-inline const std::string kVersionAttr = "version";        // int32[2], {1, 0}
+inline const std::string kVersionAttr = "version";        // int32[2], {2, 0}
 inline const std::string kCompleteAttr = "complete";      // int32, 0 until close()
 inline const std::string kProvenanceAttr = "provenance";  // variable-length UTF-8 JSON
-inline constexpr int kVersionMajor = 1, kVersionMinor = 0;
+// The order of the columns of each table, as the writer's frames held them (HDF5 lists
+// group members by name).
+inline const std::string kParticleColumnsAttr = "particle_columns";
+inline const std::string kObservablesAttr = "observables";
+inline const std::string kContactColumnsAttr = "contact_columns";
+inline constexpr int kVersionMajor = 2, kVersionMinor = 0;
 
-inline const std::string kRadius = kExtension + "/radius";
-inline const std::string kAngularVelocity = kExtension + "/angular_velocity";
-inline const std::string kTap = kExtension + "/tap";
-inline const std::string kCycle = kExtension + "/cycle";
-inline const std::string kSupports = kExtension + "/supports";
+// H5MD observables: one element per per-frame observable (tap, cycle, amplitude, ...).
+inline const std::string kObservables = "/observables";
 
 inline const std::string kContainer = kExtension + "/container";
 inline const std::string kShape = kContainer + "/shape";
@@ -41,12 +44,8 @@ inline const std::string kWallVelocity = kContainer + "/wall_velocity";
 inline const std::string kContacts = kExtension + "/contacts";
 inline const std::string kContactOffset = kContacts + "/offset";
 inline const std::string kContactCount = kContacts + "/count";
-inline const std::string kContactI = kContacts + "/i";
-inline const std::string kContactJ = kContacts + "/j";
-inline const std::string kContactOverlap = kContacts + "/overlap";
-inline const std::string kContactNormal = kContacts + "/normal_force";
-inline const std::string kContactTangential = kContacts + "/tangential_force";
-inline const std::string kContactPoint = kContacts + "/point";
+// Then one dataset per contact column (i, j, overlap, normal_force, ...), rows of all
+// frames concatenated: frame k holds rows offset[k] .. offset[k] + count[k].
 
 // The step of a row not yet written: the writer commits a frame by writing its step
 // last, so a reader drops trailing rows that still hold this fill value.

@@ -5,10 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <optional>
 
 #include "granpipe/errors.hpp"
 #include "granpipe/frame_store.hpp"
+#include "h5_column.hpp"
 #include "h5_dataset.hpp"
 #include "h5_element.hpp"
 #include "h5_frame_layout.hpp"
@@ -17,8 +19,6 @@ namespace granpipe {
 namespace L = frame_layout;
 
 namespace {
-
-using RowMajor = Eigen::Array<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
 // Checks that `shape` is [rows][item...] and returns rows.
 hsize_t rows_of(const h5::Shape& shape, const h5::Shape& item, const std::string& path) {
@@ -30,13 +30,6 @@ hsize_t rows_of(const h5::Shape& shape, const h5::Shape& item, const std::string
     throw h5::Error(path + ": expected shape " + want + "], got " + h5::format_shape(shape));
   }
   return shape[0];
-}
-
-void expect_item(const h5::Element& e, const h5::Shape& item) {
-  if (e.item() != item) {
-    throw h5::Error(e.path() + ": expected " + h5::format_shape(item) + " per frame, got " +
-                    h5::format_shape(e.item()));
-  }
 }
 
 // Opens normally, else as a SWMR reader: a file whose writer was killed (or is still
@@ -61,41 +54,88 @@ h5::Object open_file(const std::string& name, bool& swmr) {
   return h5::Object(id);
 }
 
-// The /granpipe extension of one file: per-frame datasets, row k is frame k.
-struct Extension {
-  h5::Object radius, angular_velocity, tap, cycle, supports;
-  h5::Object shape, lo, hi, boundary, cylinder_radius, cylinder_center, wall_offset,
-      wall_velocity;
-  h5::Object contact_i, contact_j, contact_overlap, contact_normal, contact_tangential,
-      contact_point;
-  std::vector<std::int64_t> contact_offset, contact_count;
-  Eigen::Index angular_columns = 0;
+// A particle column or observable stored as an H5MD element.
+struct ElementColumn {
+  Property property;
+  h5::Element element;
 };
 
+// A contact column: rows of every frame concatenated.
+struct ContactColumn {
+  Property property;
+  std::string path;
+  h5::Object dataset;
+};
+
+// The container datasets of a granpipe file, row k for frame k.
+struct ContainerSeries {
+  h5::Object shape, lo, hi, boundary, cylinder_radius, cylinder_center, wall_offset,
+      wall_velocity;
+};
+
+// Puts columns in the order the writer's frames held them (`attribute` of the extension
+// group lists their names); columns it does not list keep their place after those.
+template <class C>
+void restore_order(hid_t file, const std::string& attribute, std::vector<C>& columns) {
+  h5::Object group = h5::open_group(file, L::kExtension);
+  if (!h5::has_attribute(group.id(), attribute)) return;
+  const auto order = h5::read_string_attribute(group.id(), L::kExtension, attribute);
+  auto rank = [&](const C& c) {
+    return std::find(order.begin(), order.end(), c.property.name) - order.begin();
+  };
+  std::stable_sort(columns.begin(), columns.end(),
+                   [&](const C& a, const C& b) { return rank(a) < rank(b); });
+}
+
+// Frame k of an element into a column: one row of a time-dependent element, or the
+// whole of a time-independent one.
+void read_element(const h5::Element& e, long k, Column& c) {
+  if (e.timed()) {
+    h5::read_column(e.dataset(), e.path(), e.row(k), 1, c);
+  } else {
+    h5::read_column(e.dataset(), e.path(), 0, static_cast<hsize_t>(c.rows()), c);
+  }
+}
+
 }  // namespace
+
+bool FrameFileInfo::has(std::string_view column) const {
+  return std::any_of(columns.begin(), columns.end(),
+                     [&](const Property& p) { return p.name == column; });
+}
 
 struct FrameReader::Impl {
   std::string name;
   h5::Object file;
   FrameFileInfo info;
   double default_radius = 0.5;
-  std::optional<h5::Element> position, velocity, species, id, edges;
+  bool ours = false;  // written by granpipe: every element on position's clock
+  std::optional<h5::Element> position, edges;
+  std::vector<ElementColumn> columns, observables;
   std::vector<std::int64_t> steps;
   std::vector<double> times;
   std::array<bool, 3> periodic{};
-  std::optional<Extension> ext;
+  std::optional<ContainerSeries> container_series;
+  std::vector<ContactColumn> contact_columns;
+  std::vector<std::int64_t> contact_offset, contact_count;
 
   void open(const std::string& group);
   std::string choose_group(const std::string& group) const;
-  void open_elements(const std::string& base);
+  void check_version();
+  void open_position(const std::string& base);
+  void open_columns(const std::string& base);
+  std::optional<ElementColumn> open_column(const std::string& base, const std::string& name);
+  void open_observables();
   void open_box(const std::string& base);
-  void open_extension();
-  hsize_t extension_rows(const std::string& path, const h5::Shape& item, h5::Object& out);
+  hsize_t rows(const std::string& path, const h5::Shape& item, h5::Object& out);
+  void open_container(hsize_t& frames);
+  hsize_t open_contacts(hsize_t& frames);
+  void settle_frames();
   void map_foreign_elements();
   Frame read(long k) const;
   Container box_container(long k, const Frame& f) const;
-  Container extension_container(long k) const;
-  Contacts read_contacts(long k) const;
+  Container container_at(long k) const;
+  void read_contacts(long k, Frame& f) const;
 };
 
 std::string FrameReader::Impl::choose_group(const std::string& group) const {
@@ -117,7 +157,26 @@ std::string FrameReader::Impl::choose_group(const std::string& group) const {
                                   : "several particles groups (" + list + "); choose one"));
 }
 
-void FrameReader::Impl::open_elements(const std::string& base) {
+void FrameReader::Impl::check_version() {
+  h5::Object group = h5::open_group(file.id(), L::kExtension);
+  const auto version = h5::read_integer_attribute(group.id(), L::kExtension, L::kVersionAttr);
+  if (version.empty() || version[0] != L::kVersionMajor) {
+    const std::string found = version.empty() ? "no version" : std::to_string(version[0]) + ".x";
+    throw h5::Error(L::kExtension + "@version: expected frames layout " +
+                    std::to_string(L::kVersionMajor) + ".x, got " + found +
+                    " (written by another granpipe version; docs/file-format.md lists the "
+                    "layouts)");
+  }
+  info.granpipe_file = true;
+  if (h5::has_attribute(group.id(), L::kCompleteAttr)) {
+    const auto flag = h5::read_integer_attribute(group.id(), L::kExtension, L::kCompleteAttr);
+    info.complete = info.complete && !flag.empty() && flag[0] == 1;
+  } else {
+    info.complete = false;
+  }
+}
+
+void FrameReader::Impl::open_position(const std::string& base) {
   position = h5::Element::open(file.id(), base + "/position");
   if (!position) throw h5::Error(base + "/position: missing (the file has no particle positions)");
   const h5::Shape item = position->item();
@@ -134,13 +193,51 @@ void FrameReader::Impl::open_elements(const std::string& base) {
   } else {
     steps = {0};
   }
-  const auto n = static_cast<hsize_t>(info.particles), d = static_cast<hsize_t>(info.dim);
-  velocity = h5::Element::open(file.id(), base + "/velocity");
-  if (velocity) expect_item(*velocity, {n, d});
-  species = h5::Element::open(file.id(), base + "/species");
-  if (species) expect_item(*species, {n});
-  id = h5::Element::open(file.id(), base + "/id");
-  if (id) expect_item(*id, {n});
+}
+
+std::optional<ElementColumn> FrameReader::Impl::open_column(const std::string& base,
+                                                            const std::string& column) {
+  const Property* standard = find_standard(column, Scope::Particle);
+  // Other tools' own elements (image, charge, ...) are theirs to interpret.
+  if (!ours && !standard) return std::nullopt;
+  std::optional<h5::Element> e = h5::Element::open(file.id(), base + "/" + column);
+  if (!e) return std::nullopt;
+  const h5::Shape item = e->item();
+  const auto n = static_cast<hsize_t>(info.particles);
+  if (item.empty() || item[0] != n) {
+    throw h5::Error(e->path() + ": expected " + std::to_string(n) +
+                    " rows (one per particle) per frame, got " + h5::format_shape(item));
+  }
+  const h5::Shape rest(item.begin() + 1, item.end());
+  Property p = h5::read_property(e->dataset(), e->path(), column, Scope::Particle, rest, info.dim);
+  const int c = p.components_in(info.dim);
+  const h5::Shape expected = p.components == 1 ? h5::Shape{} : h5::Shape{static_cast<hsize_t>(c)};
+  if (rest != expected) {
+    throw h5::Error(e->path() + ": expected " + h5::format_shape(h5::Shape{n}) +
+                    (expected.empty() ? "" : " x " + h5::format_shape(expected)) +
+                    " per frame, got " + h5::format_shape(item));
+  }
+  return ElementColumn{std::move(p), std::move(*e)};
+}
+
+void FrameReader::Impl::open_columns(const std::string& base) {
+  h5::Object group = h5::open_group(file.id(), base);
+  for (const std::string& column : h5::members(group.id(), base)) {
+    if (column == "position" || column == "box") continue;
+    if (auto c = open_column(base, column)) columns.push_back(std::move(*c));
+  }
+}
+
+void FrameReader::Impl::open_observables() {
+  if (!h5::is_group(file.id(), L::kObservables)) return;
+  h5::Object group = h5::open_group(file.id(), L::kObservables);
+  for (const std::string& o : h5::members(group.id(), L::kObservables)) {
+    std::optional<h5::Element> e = h5::Element::open(file.id(), L::kObservables + "/" + o);
+    if (!e) continue;
+    const h5::Shape item = e->item();
+    Property p = h5::read_property(e->dataset(), e->path(), o, Scope::Frame, item, info.dim);
+    observables.push_back({std::move(p), std::move(*e)});
+  }
 }
 
 void FrameReader::Impl::open_box(const std::string& base) {
@@ -184,81 +281,80 @@ void FrameReader::Impl::open_box(const std::string& base) {
   }
 }
 
-hsize_t FrameReader::Impl::extension_rows(const std::string& path, const h5::Shape& item,
-                                          h5::Object& out) {
+hsize_t FrameReader::Impl::rows(const std::string& path, const h5::Shape& item, h5::Object& out) {
   out = h5::open_dataset(file.id(), path);
   return rows_of(h5::shape_of(out.id(), path), item, path);
 }
 
-void FrameReader::Impl::open_extension() {
-  h5::Object group = h5::open_group(file.id(), L::kExtension);
-  const auto version = h5::read_integer_attribute(group.id(), L::kExtension, L::kVersionAttr);
-  if (version.empty() || version[0] != L::kVersionMajor) {
-    throw h5::Error(L::kExtension + "@version: expected " + std::to_string(L::kVersionMajor) +
-                    ".x, got " + (version.empty() ? "nothing" : std::to_string(version[0])) +
-                    " (written by another granpipe version)");
-  }
-  info.granpipe_file = true;
-  if (h5::has_attribute(group.id(), L::kCompleteAttr)) {
-    const auto flag = h5::read_integer_attribute(group.id(), L::kExtension, L::kCompleteAttr);
-    info.complete = info.complete && !flag.empty() && flag[0] == 1;
-  } else {
-    info.complete = false;
-  }
-  if (!position) return;  // closed before its first frame: no frames at all
-
-  Extension x;
-  const auto n = static_cast<hsize_t>(info.particles), d = static_cast<hsize_t>(info.dim);
-  hsize_t frames = static_cast<hsize_t>(info.frames);
-  auto rows = [&](const std::string& path, const h5::Shape& item, h5::Object& out) {
-    frames = std::min(frames, extension_rows(path, item, out));
+void FrameReader::Impl::open_container(hsize_t& frames) {
+  ContainerSeries x;
+  auto series = [&](const std::string& path, const h5::Shape& item, h5::Object& out) {
+    frames = std::min(frames, rows(path, item, out));
   };
-  rows(L::kRadius, {n}, x.radius);
-  if (h5::is_dataset(file.id(), L::kAngularVelocity)) {
-    h5::Object ds = h5::open_dataset(file.id(), L::kAngularVelocity);
-    const h5::Shape shape = h5::shape_of(ds.id(), L::kAngularVelocity);
-    x.angular_columns = shape.size() == 3 ? static_cast<Eigen::Index>(shape[2]) : 0;
-    rows(L::kAngularVelocity, {n, static_cast<hsize_t>(x.angular_columns)}, x.angular_velocity);
+  series(L::kShape, {}, x.shape);
+  series(L::kLo, {3}, x.lo);
+  series(L::kHi, {3}, x.hi);
+  series(L::kBoundary, {3, 2}, x.boundary);
+  series(L::kCylinderRadius, {}, x.cylinder_radius);
+  series(L::kCylinderCenter, {2}, x.cylinder_center);
+  series(L::kWallOffset, {3}, x.wall_offset);
+  series(L::kWallVelocity, {3}, x.wall_velocity);
+  container_series = std::move(x);
+}
+
+// The contact columns and the frames' offsets into them; returns the contact rows that
+// every column holds.
+hsize_t FrameReader::Impl::open_contacts(hsize_t& frames) {
+  h5::Object offset, count;
+  frames = std::min(frames, rows(L::kContactOffset, {}, offset));
+  frames = std::min(frames, rows(L::kContactCount, {}, count));
+  contact_offset = h5::read_integer_rows(offset.id(), L::kContactOffset, 0, frames);
+  contact_count = h5::read_integer_rows(count.id(), L::kContactCount, 0, frames);
+  h5::Object group = h5::open_group(file.id(), L::kContacts);
+  hsize_t contact_rows = std::numeric_limits<hsize_t>::max();
+  for (const std::string& column : h5::members(group.id(), L::kContacts)) {
+    if (column == "offset" || column == "count") continue;
+    ContactColumn c{{}, L::kContacts + "/" + column, {}};
+    c.dataset = h5::open_dataset(file.id(), c.path);
+    const h5::Shape shape = h5::shape_of(c.dataset.id(), c.path);
+    const h5::Shape item = shape.empty() ? shape : h5::Shape(shape.begin() + 1, shape.end());
+    c.property = h5::read_property(c.dataset.id(), c.path, column, Scope::Contact, item, info.dim);
+    const int k = c.property.components_in(info.dim);
+    const h5::Shape expected =
+        c.property.components == 1 ? h5::Shape{} : h5::Shape{static_cast<hsize_t>(k)};
+    contact_rows = std::min(contact_rows, rows_of(shape, expected, c.path));
+    contact_columns.push_back(std::move(c));
   }
-  rows(L::kTap, {}, x.tap);
-  rows(L::kCycle, {}, x.cycle);
-  if (h5::is_dataset(file.id(), L::kSupports)) rows(L::kSupports, {n, 2}, x.supports);
-  rows(L::kShape, {}, x.shape);
-  rows(L::kLo, {3}, x.lo);
-  rows(L::kHi, {3}, x.hi);
-  rows(L::kBoundary, {3, 2}, x.boundary);
-  rows(L::kCylinderRadius, {}, x.cylinder_radius);
-  rows(L::kCylinderCenter, {2}, x.cylinder_center);
-  rows(L::kWallOffset, {3}, x.wall_offset);
-  rows(L::kWallVelocity, {3}, x.wall_velocity);
+  restore_order(file.id(), L::kContactColumnsAttr, contact_columns);
+  if (contact_columns.size() < 2 || contact_columns[0].property.name != "i" ||
+      contact_columns[1].property.name != "j") {
+    throw h5::Error(L::kContacts + ": expected the contact columns i and j");
+  }
+  return contact_rows;
+}
+
+// A granpipe file: frame k is row k of everything, but a killed writer may leave some
+// datasets a frame ahead of others, and rows it extended but never committed.
+void FrameReader::Impl::settle_frames() {
+  auto frames = static_cast<hsize_t>(info.frames);
+  for (ElementColumn& c : columns) {
+    frames = std::min<hsize_t>(frames, c.element.samples());
+    c.element.map_identity();
+  }
+  for (ElementColumn& o : observables) {
+    frames = std::min<hsize_t>(frames, o.element.samples());
+    o.element.map_identity();
+  }
+  if (edges) {
+    frames = std::min<hsize_t>(frames, edges->samples());
+    edges->map_identity();
+  }
+  open_container(frames);
   const bool contacts = h5::is_group(file.id(), L::kContacts);
-  hsize_t contact_rows = 0;
-  if (contacts) {
-    h5::Object offset, count;
-    rows(L::kContactOffset, {}, offset);
-    rows(L::kContactCount, {}, count);
-    contact_rows = extension_rows(L::kContactI, {}, x.contact_i);
-    contact_rows = std::min(contact_rows, extension_rows(L::kContactJ, {}, x.contact_j));
-    contact_rows = std::min(contact_rows, extension_rows(L::kContactOverlap, {}, x.contact_overlap));
-    contact_rows = std::min(contact_rows, extension_rows(L::kContactNormal, {d}, x.contact_normal));
-    contact_rows =
-        std::min(contact_rows, extension_rows(L::kContactTangential, {d}, x.contact_tangential));
-    contact_rows = std::min(contact_rows, extension_rows(L::kContactPoint, {d}, x.contact_point));
-    x.contact_offset = h5::read_integer_rows(offset.id(), L::kContactOffset, 0, frames);
-    x.contact_count = h5::read_integer_rows(count.id(), L::kContactCount, 0, frames);
-  }
-  // Every element of a granpipe file shares position's clock, so frame k is row k of
-  // everything; a killed writer may leave some datasets a frame ahead of others.
-  for (auto* e : {&velocity, &species, &id, &edges}) {
-    if (*e) {
-      frames = std::min<hsize_t>(frames, (*e)->samples());
-      (*e)->map_identity();
-    }
-  }
-  // A row whose step is still the fill value was extended but never committed.
+  const hsize_t contact_rows = contacts ? open_contacts(frames) : 0;
   while (frames > 0 && steps[frames - 1] == L::kUnwrittenStep) --frames;
   while (contacts && frames > 0 &&
-         x.contact_offset[frames - 1] + x.contact_count[frames - 1] >
+         contact_offset[frames - 1] + contact_count[frames - 1] >
              static_cast<std::int64_t>(contact_rows)) {
     if (info.complete) {
       throw h5::Error(L::kContacts + ": frame " + std::to_string(frames - 1) +
@@ -267,20 +363,14 @@ void FrameReader::Impl::open_extension() {
     --frames;
   }
   info.frames = static_cast<long>(frames);
-  info.has_radius = true;
-  info.has_angular_velocity = x.angular_columns > 0;
-  info.has_supports = x.supports.valid();
   info.has_contacts = contacts;
-  ext = std::move(x);
 }
 
 void FrameReader::Impl::map_foreign_elements() {
   // Other tools may sample elements on their own clocks; an optional element counts
   // only when it has a sample at every frame's step.
   const std::vector<std::int64_t> frame_steps(steps.begin(), steps.begin() + info.frames);
-  for (auto* e : {&velocity, &species, &id}) {
-    if (*e && !(*e)->map_by_step(frame_steps)) e->reset();
-  }
+  std::erase_if(columns, [&](ElementColumn& c) { return !c.element.map_by_step(frame_steps); });
   if (edges && !edges->map_by_step(frame_steps)) {
     throw h5::Error(edges->path() + ": the box is not stored at every step of the positions");
   }
@@ -299,24 +389,31 @@ void FrameReader::Impl::open(const std::string& group) {
       if (!text.empty()) info.creator += (info.creator.empty() ? "" : " ") + text[0];
     }
   }
-  const bool ours = h5::is_group(file.id(), L::kExtension);
-  if (ours && !h5::is_group(file.id(), L::kParticles) && group.empty()) {
-    open_extension();  // a granpipe file closed before its first frame
-    return;
+  const bool extension = h5::is_group(file.id(), L::kExtension);
+  if (extension) check_version();
+  if (extension && !h5::is_group(file.id(), L::kParticles) && group.empty()) {
+    return;  // a granpipe file closed before its first frame
   }
   if (!h5::is_group(file.id(), L::kParticles)) {
     throw h5::Error(L::kParticles + ": missing (not an H5MD file with particles)");
   }
   info.group = choose_group(group);
+  ours = extension && info.group == L::kGroup;
   const std::string base = L::particles(info.group);
-  open_elements(base);
+  open_position(base);
   open_box(base);
-  if (ours && info.group == L::kGroup) {
-    open_extension();
+  open_columns(base);
+  if (ours) {
+    open_observables();
+    settle_frames();
+    restore_order(file.id(), L::kParticleColumnsAttr, columns);
+    restore_order(file.id(), L::kObservablesAttr, observables);
   } else {
     map_foreign_elements();
   }
-  info.has_velocity = velocity.has_value();
+  for (const ElementColumn& c : columns) info.columns.push_back(c.property);
+  for (const ElementColumn& o : observables) info.observables.push_back(o.property);
+  for (const ContactColumn& c : contact_columns) info.contact_columns.push_back(c.property);
 }
 
 // H5MD stores a box's edge lengths but not its origin. Periodic sides need none (positions
@@ -325,7 +422,7 @@ void FrameReader::Impl::open(const std::string& group) {
 // rather than measured against walls in the wrong place.
 namespace {
 void place_walls(Container& c, int a, const Frame& f, const std::string& dataset, long k) {
-  const double lo = f.position.col(a).minCoeff(), hi = f.position.col(a).maxCoeff();
+  const double lo = f.position().col(a).minCoeff(), hi = f.position().col(a).maxCoeff();
   const double length = c.hi[a];
   for (double origin : {0.0, -0.5 * length}) {
     if (lo >= origin && hi <= origin + length) {
@@ -348,8 +445,8 @@ Container FrameReader::Impl::box_container(long k, const Frame& f) const {
     for (int a = 0; a < d; ++a) {
       c.boundary[a] = {Boundary::Open, Boundary::Open};
       if (f.size() > 0) {
-        c.lo[a] = (f.position.col(a) - f.radius).minCoeff();
-        c.hi[a] = (f.position.col(a) + f.radius).maxCoeff();
+        c.lo[a] = (f.position().col(a) - f.radius()).minCoeff();
+        c.hi[a] = (f.position().col(a) + f.radius()).maxCoeff();
       }
     }
     return c;
@@ -376,8 +473,8 @@ Container FrameReader::Impl::box_container(long k, const Frame& f) const {
   return c;
 }
 
-Container FrameReader::Impl::extension_container(long k) const {
-  const Extension& x = *ext;
+Container FrameReader::Impl::container_at(long k) const {
+  const ContainerSeries& x = *container_series;
   const auto row = static_cast<hsize_t>(k);
   Container c;
   const std::int64_t shape = h5::read_integer_rows(x.shape.id(), L::kShape, row, 1).at(0);
@@ -408,74 +505,30 @@ Container FrameReader::Impl::extension_container(long k) const {
   return c;
 }
 
-Contacts FrameReader::Impl::read_contacts(long k) const {
-  const Extension& x = *ext;
-  const auto first = static_cast<hsize_t>(x.contact_offset[k]);
-  const auto m = static_cast<Eigen::Index>(x.contact_count[k]);
-  Contacts c;
-  c.resize(m, info.dim);
-  const auto rows = static_cast<hsize_t>(m);
-  h5::read_rows(x.contact_i.id(), L::kContactI, H5T_NATIVE_INT64, first, rows, c.i.data());
-  h5::read_rows(x.contact_j.id(), L::kContactJ, H5T_NATIVE_INT64, first, rows, c.j.data());
-  h5::read_rows(x.contact_overlap.id(), L::kContactOverlap, H5T_NATIVE_DOUBLE, first, rows,
-                c.overlap.data());
-  RowMajor buffer(m, info.dim);
-  auto vectors = [&](const h5::Object& ds, const std::string& path, Coordinates& out) {
-    h5::read_rows(ds.id(), path, H5T_NATIVE_DOUBLE, first, rows, buffer.data());
-    out = buffer;
-  };
-  vectors(x.contact_normal, L::kContactNormal, c.normal_force);
-  vectors(x.contact_tangential, L::kContactTangential, c.tangential_force);
-  vectors(x.contact_point, L::kContactPoint, c.point);
-  return c;
+void FrameReader::Impl::read_contacts(long k, Frame& f) const {
+  const auto first = static_cast<hsize_t>(contact_offset[k]);
+  const auto m = static_cast<Eigen::Index>(contact_count[k]);
+  PropertyTable& table = f.add_contacts(m);
+  for (const ContactColumn& c : contact_columns) {
+    h5::read_column(c.dataset.id(), c.path, first, static_cast<hsize_t>(m), table.add(c.property));
+  }
 }
 
 Frame FrameReader::Impl::read(long k) const {
-  const Eigen::Index n = info.particles;
-  const int d = info.dim;
   Frame f;
-  f.dim = d;
-  RowMajor buffer(n, d);
-  position->read(k, buffer.data());
-  f.position = buffer;
-  if (velocity) {
-    velocity->read(k, buffer.data());
-    f.velocity = buffer;
-  }
-  f.id = id ? Eigen::Map<const IndexArray>(id->read_integers(k).data(), n).eval()
-            : IndexArray::LinSpaced(n, 0, n - 1);
-  f.species = IntArray::Zero(n);
-  if (species) {
-    const auto s = species->read_integers(k);
-    for (Eigen::Index p = 0; p < n; ++p) f.species[p] = static_cast<std::int32_t>(s[p]);
-  }
+  f.resize(info.particles, info.dim);
+  read_element(*position, k, f.particles.column(0));
+  if (!ours) f.radius().setConstant(default_radius);
+  for (const ElementColumn& c : columns) read_element(c.element, k, f.particles.add(c.property));
+  for (const ElementColumn& o : observables) read_element(o.element, k, f.observables.add(o.property));
   f.step = steps[k];
   if (!times.empty()) f.time = times[k];
-
-  if (!ext) {
-    f.radius = Eigen::ArrayXd::Constant(n, default_radius);
+  if (!ours) {
     f.container = box_container(k, f);
     return f;
   }
-  const Extension& x = *ext;
-  const auto row = static_cast<hsize_t>(k);
-  f.radius.resize(n);
-  h5::read_rows(x.radius.id(), L::kRadius, H5T_NATIVE_DOUBLE, row, 1, f.radius.data());
-  if (x.angular_columns) {
-    RowMajor w(n, x.angular_columns);
-    h5::read_rows(x.angular_velocity.id(), L::kAngularVelocity, H5T_NATIVE_DOUBLE, row, 1,
-                  w.data());
-    f.angular_velocity = w;
-  }
-  f.tap = h5::read_integer_rows(x.tap.id(), L::kTap, row, 1).at(0);
-  f.cycle = h5::read_integer_rows(x.cycle.id(), L::kCycle, row, 1).at(0);
-  if (x.supports.valid()) {
-    Eigen::Array<std::int64_t, Eigen::Dynamic, 2, Eigen::RowMajor> pairs(n, 2);
-    h5::read_rows(x.supports.id(), L::kSupports, H5T_NATIVE_INT64, row, 1, pairs.data());
-    f.supports = Supports{pairs.col(0), pairs.col(1)};
-  }
-  f.container = extension_container(k);
-  if (info.has_contacts) f.contacts = read_contacts(k);
+  f.container = container_at(k);
+  if (info.has_contacts) read_contacts(k, f);
   return f;
 }
 

@@ -23,12 +23,28 @@ struct PointPlugins {
   std::vector<std::unique_ptr<Analyzer>> analyzers;
 };
 
+const Property* provided(const FrameContent& have, const Property& need) {
+  for (const Property& p : have.columns) {
+    if (p.name == need.name && p.scope == need.scope) return &p;
+  }
+  return nullptr;
+}
+
+// What `need` asks that `have` (the source's frames and the columns published by the
+// analyzers before) lacks, or "".
 std::string describe_needs(const FrameContent& need, const FrameContent& have) {
   if (need.dim && have.dim && need.dim != have.dim)
     return std::to_string(need.dim) + "D frames, but the source gives " + std::to_string(have.dim) + "D";
   if (need.contacts && !have.contacts) return "contacts, which the source does not provide";
-  if (need.velocities && !have.velocities) return "velocities, which the source does not provide";
-  if (need.supports && !have.supports) return "support labels, which the source does not provide";
+  for (const Property& p : need.columns) {
+    if (is_required(p)) continue;
+    const std::string column = std::string(to_string(p.scope)) + " column \"" + p.name + "\"";
+    const Property* got = provided(have, p);
+    if (!got) return column + ", which neither the source nor an analyzer before it provides";
+    if (!got->matches(p)) {
+      return column + " as " + describe_type(p) + ", but it is provided as " + describe_type(*got);
+    }
+  }
   return "";
 }
 
@@ -55,7 +71,7 @@ PointPlugins make_plugins(const Pipeline::Impl& p, std::size_t k, int threads, L
   } catch (const InputError& e) {
     throw InputError(p.origin + ": " + e.what());
   }
-  const FrameContent have = made.source->content();
+  FrameContent have = made.source->content();
   for (std::size_t a = 0; a < p.analyzers.size(); ++a) {
     const AnalyzerSpec& spec = p.analyzers[a];
     try {
@@ -70,8 +86,32 @@ PointPlugins make_plugins(const Pipeline::Impl& p, std::size_t k, int threads, L
       throw InputError(spec.where + ": analyzer \"" + spec.info->name + "\" needs " + missing +
                        " (source \"" + p.source->name + "\")");
     }
+    for (const Property& c : made.analyzers.back()->publishes()) {
+      if (provided(have, c) || is_required(c)) {
+        throw InputError(spec.where + ": analyzer \"" + spec.info->name + "\" publishes the column \"" +
+                         c.name + "\", which the frames already carry");
+      }
+      have.columns.push_back(c);
+    }
   }
   return made;
+}
+
+// The columns an analyzer publishes join the frame, for the analyzers after it and the
+// writers; the runner removes them before the source fills the next frame.
+void publish_columns(Analyzer& analyzer, Frame& frame) {
+  const std::vector<Property> declared = analyzer.publishes();
+  if (declared.empty()) return;
+  PropertyTable columns(Scope::Particle, frame.size(), frame.dim);
+  for (const Property& c : declared) columns.add(c);
+  analyzer.publish(columns);
+  for (std::size_t k = 0; k < columns.size(); ++k) {
+    Column& c = columns.column(k);
+    if (c.rows() != frame.size() || c.components() != c.property().components_in(frame.dim)) {
+      throw InternalError("published column \"" + c.name() + "\" was resized");
+    }
+    frame.particles.add(c.property()).storage() = std::move(c.storage());
+  }
 }
 
 std::string point_prefix(const Pipeline::Impl& p, std::size_t k) {
@@ -121,10 +161,16 @@ PointOutcome run_point(const Pipeline::Impl& p, std::size_t k, PointPlugins plug
   };
   while (located(p.origin + ": source", [&] { return plugins.source->next(frame); })) {
     frame.check(where + " frame " + std::to_string(outcome.frames));
-    if (writer && outcome.frames % p.frame_stride == 0) writer->append(frame);
     cache.clear();
     for (std::size_t a = 0; a < plugins.analyzers.size(); ++a) {
-      located(p.analyzers[a].where, [&] { plugins.analyzers[a]->consume(frame, cache); });
+      located(p.analyzers[a].where, [&] {
+        plugins.analyzers[a]->consume(frame, cache);
+        publish_columns(*plugins.analyzers[a], frame);
+      });
+    }
+    if (writer && outcome.frames % p.frame_stride == 0) writer->append(frame);
+    for (const auto& analyzer : plugins.analyzers) {
+      for (const Property& c : analyzer->publishes()) frame.particles.remove(c.name);
     }
     ++outcome.frames;
     if (!source_reports) progress.advance(1);

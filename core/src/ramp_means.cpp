@@ -1,5 +1,7 @@
 #include "granpipe/ramp_means.hpp"
 
+#include <optional>
+
 #include "granpipe/errors.hpp"
 
 namespace granpipe {
@@ -10,15 +12,17 @@ RampBranch ramp_branch(std::int64_t cycle) {
 }
 
 void RampMeans::add(const Frame& frame, const std::vector<double>& values) {
-  if (frame.cycle < 0) return;
+  const std::optional<std::int64_t> cycle = frame.integer_observable("cycle");
+  const std::optional<double> control = frame.real_observable(control_);
+  if (!cycle || *cycle < 0 || !control) return;
   if (values.size() != names_.size()) throw InternalError("RampMeans: one value per quantity expected");
-  auto& means = means_[{ramp_branch(frame.cycle), frame.time}];
+  auto& means = means_[{ramp_branch(*cycle), *control}];
   means.resize(names_.size());
   for (std::size_t q = 0; q < values.size(); ++q) means[q].add(values[q]);
 }
 
 Table RampMeans::table(const std::string& doc) const {
-  std::vector<std::string> columns{"branch", "time", "frames"};
+  std::vector<std::string> columns{"branch", control_, "frames"};
   for (const auto& n : names_) {
     columns.push_back(n);
     columns.push_back(n + "_err");

@@ -21,7 +21,9 @@ const std::vector<std::string> kPerFrameColumns = {
 
 std::string frame_name(long index, const Frame& frame) {
   std::string name = "arches: frame " + std::to_string(index);
-  if (frame.tap >= 0) name += " (tap " + std::to_string(frame.tap) + ")";
+  if (const auto tap = frame.integer_observable("tap")) {
+    name += " (tap " + std::to_string(*tap) + ")";
+  }
   return name;
 }
 
@@ -93,9 +95,10 @@ void ArchesAnalyzer::consume(const Frame& frame, FrameCache& cache) {
 
   const std::vector<Arch> arches = find_arches(frame, where);
   const ArchStatistics st = arch_statistics(n, arches);
-  const SupportCount sc = count_supports(*frame.supports);
+  const Supports supports = Supports::of(frame);
+  const SupportCount sc = count_supports(supports);
   const ContactCensus cc =
-      census_contacts(*frame.supports, contacts_by_distance(frame, cache, tolerance_));
+      census_contacts(supports, contacts_by_distance(frame, cache, tolerance_));
 
   const double arches_per_particle = static_cast<double>(st.arches()) / disks;
   const double p1 = static_cast<double>(st.p1) / disks, p2 = static_cast<double>(st.p2) / disks;
@@ -120,7 +123,7 @@ void ArchesAnalyzer::consume(const Frame& frame, FrameCache& cache) {
   }
   add_size_distribution(st.n, disks);
 
-  const double diameter = 2.0 * frame.radius.mean();
+  const double diameter = 2.0 * frame.radius().mean();
   for (const Arch& a : arches) {
     const double x = a.span / diameter;
     span_all_.add(x);
@@ -130,13 +133,15 @@ void ArchesAnalyzer::consume(const Frame& frame, FrameCache& cache) {
   }
 
   by_ramp_.add(frame, {z_eq4, z_direct, arches_per_particle});
-  per_frame_.add_row({static_cast<double>(frames_ - 1), static_cast<double>(frame.tap),
-                      static_cast<double>(frame.cycle), arches_per_particle, p1, p2, z_eq4,
+  const std::int64_t tap = frame.integer_observable("tap").value_or(-1);
+  per_frame_.add_row({static_cast<double>(frames_ - 1), static_cast<double>(tap),
+                      static_cast<double>(frame.integer_observable("cycle").value_or(-1)),
+                      arches_per_particle, p1, p2, z_eq4,
                       z_direct, base_fraction, missing, non_supporting});
 
   if (drawn_ < svg_frames_ && !output_dir_.empty()) {
     const std::string stem =
-        frame.tap >= 0 ? std::to_string(frame.tap) : "frame" + std::to_string(frames_ - 1);
+        tap >= 0 ? std::to_string(tap) : "frame" + std::to_string(frames_ - 1);
     write_arches_svg(output_dir_ / (file_stem_ + "_" + stem + ".svg"), frame, arches,
                      where + ": " + std::to_string(n) + " disks, " +
                          std::to_string(st.arches()) + " arches");

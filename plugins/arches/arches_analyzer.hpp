@@ -9,6 +9,7 @@
 
 #include "granpipe/ramp_means.hpp"
 #include "granpipe/plugin.hpp"
+#include "mutual_stability.hpp"
 #include "span_histogram.hpp"
 
 namespace granpipe::arches {
@@ -18,7 +19,9 @@ Schema schema();
 class ArchesAnalyzer : public Analyzer {
  public:
   explicit ArchesAnalyzer(const PluginContext& ctx);
-  FrameContent needs() const override { return {.dim = 2, .supports = true}; }
+  FrameContent needs() const override {
+    return {.dim = 2, .columns = {supports_property()}};
+  }
   void consume(const Frame& frame, FrameCache& cache) override;
   void finish(Results& results) override;
 

@@ -4,6 +4,7 @@
 // non-supporting ones.
 #include "granpipe/contacts_by_distance.hpp"
 #include "granpipe/frame.hpp"
+#include "mutual_stability.hpp"
 
 namespace granpipe::arches {
 

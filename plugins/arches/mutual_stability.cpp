@@ -39,12 +39,12 @@ void check_supports(const Frame& frame, const std::string& where) {
   if (frame.dim != 2) {
     throw InputError(where + ": dim: expected a 2D frame, got " + std::to_string(frame.dim) + "D");
   }
-  if (!frame.supports) {
+  if (!frame.has("supports")) {
     throw InputError(where +
                      ": supports: expected support labels (from a 2D pseudo-dynamics source), "
                      "got none");
   }
-  const Supports& s = *frame.supports;
+  const Supports s = Supports::of(frame);
   const Eigen::Index n = frame.size();
   if (s.left.size() != n || s.right.size() != n) {
     throw InputError(where + ": supports: expected " + std::to_string(n) +
@@ -62,13 +62,23 @@ void check_supports(const Frame& frame, const std::string& where) {
   }
 }
 
+Property supports_property() {
+  return {"supports", Scope::Particle, ValueType::Integer, 2, "",
+          "left and right support of each disk (particle index, -1 none, -2 - wall)"};
+}
+
+Supports Supports::of(const Frame& frame) {
+  const ValueTable<std::int64_t>& t = frame.table<std::int64_t>("supports");
+  return {t.col(0), t.col(1)};
+}
+
 std::int64_t right_mutual_partner(const Supports& s, Eigen::Index i) {
   const std::int64_t j = s.right(i);
   return partner::is_particle(j) && s.left(j) == i ? j : partner::none;
 }
 
 std::vector<Arch> find_arches(const Frame& frame, const std::string& where) {
-  const Supports& s = *frame.supports;
+  const Supports s = Supports::of(frame);
   const Eigen::Index n = frame.size();
   std::vector<Arch> arches;
   std::vector<char> in_arch(static_cast<std::size_t>(n), 0);
@@ -83,7 +93,7 @@ std::vector<Arch> find_arches(const Frame& frame, const std::string& where) {
     arch.disks.push_back(k);
     for (std::int64_t j = right_mutual_partner(s, k); j != partner::none;
          j = right_mutual_partner(s, k)) {
-      dx += frame.container.minimum_image(0, frame.position(j, 0) - frame.position(k, 0));
+      dx += frame.container.minimum_image(0, frame.position()(j, 0) - frame.position()(k, 0));
       k = j;
       arch.disks.push_back(k);
     }

@@ -10,6 +10,16 @@
 
 namespace granpipe::arches {
 
+// Support labels of a 2D pseudo-dynamics packing: the particle column "supports" that a
+// source such as disks2d_tap provides, the left and right partner of each disk in the
+// partner encoding (frame.hpp).
+Property supports_property();
+struct Supports {
+  IndexArray left, right;
+  // The labels of a frame that carries them (check_supports first).
+  static Supports of(const Frame& frame);
+};
+
 // One arch: its disks from the left end to the right end (at least two).
 struct Arch {
   std::vector<Eigen::Index> disks;

@@ -3,6 +3,7 @@
 // search: every distinct supporting partner of a disk is one contact, the base included
 // once, and a mutual contact (shared by two disks) is one contact, not two.
 #include "granpipe/frame.hpp"
+#include "mutual_stability.hpp"
 
 namespace granpipe::arches {
 

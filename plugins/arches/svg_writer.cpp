@@ -23,7 +23,7 @@ Bounds picture_bounds(const Frame& frame) {
   if (box.boundary[1][1] != Boundary::Open) b.y1 = hi[1];
   double rmax = 0.0;
   for (Eigen::Index i = 0; i < frame.size(); ++i) {
-    const double x = frame.position(i, 0), y = frame.position(i, 1), r = frame.radius(i);
+    const double x = frame.position()(i, 0), y = frame.position()(i, 1), r = frame.radius()(i);
     b.x0 = std::min(b.x0, x - r);
     b.x1 = std::max(b.x1, x + r);
     b.y0 = std::min(b.y0, y - r);
@@ -64,8 +64,8 @@ void write_circles(std::ostream& out, const Frame& frame, const std::vector<char
                    char wanted) {
   for (Eigen::Index i = 0; i < frame.size(); ++i) {
     if (in_arch[static_cast<std::size_t>(i)] != wanted) continue;
-    out << "<circle cx=\"" << frame.position(i, 0) << "\" cy=\"" << frame.position(i, 1)
-        << "\" r=\"" << frame.radius(i) << "\"/>\n";
+    out << "<circle cx=\"" << frame.position()(i, 0) << "\" cy=\"" << frame.position()(i, 1)
+        << "\" r=\"" << frame.radius()(i) << "\"/>\n";
   }
 }
 
@@ -75,7 +75,7 @@ void write_arches_svg(const std::filesystem::path& path, const Frame& frame,
                       const std::vector<Arch>& arches, const std::string& title) {
   const Bounds b = picture_bounds(frame);
   const double width = b.x1 - b.x0, height = b.y1 - b.y0;
-  const double rmean = frame.size() > 0 ? frame.radius.mean() : 0.01 * width;
+  const double rmean = frame.size() > 0 ? frame.radius().mean() : 0.01 * width;
   std::vector<char> in_arch(static_cast<std::size_t>(frame.size()), 0);
   for (const Arch& a : arches)
     for (Eigen::Index d : a.disks) in_arch[static_cast<std::size_t>(d)] = 1;
@@ -101,11 +101,11 @@ void write_arches_svg(const std::filesystem::path& path, const Frame& frame,
   for (const Arch& a : arches) {
     for (std::size_t k = 0; k + 1 < a.disks.size(); ++k) {
       const Eigen::Index i = a.disks[k], j = a.disks[k + 1];
-      const double x1 = frame.position(i, 0), y1 = frame.position(i, 1);
+      const double x1 = frame.position()(i, 0), y1 = frame.position()(i, 1);
       const double x2 =
-          x1 + frame.container.minimum_image(0, frame.position(j, 0) - x1);
+          x1 + frame.container.minimum_image(0, frame.position()(j, 0) - x1);
       out << "<line x1=\"" << x1 << "\" y1=\"" << y1 << "\" x2=\"" << x2 << "\" y2=\""
-          << frame.position(j, 1) << "\"/>\n";
+          << frame.position()(j, 1) << "\"/>\n";
     }
   }
   out << "</g>\n</g>\n</svg>\n";

@@ -93,17 +93,28 @@ void DiskPacking::check(const std::string& where, double tolerance) const {
   });
 }
 
+Property supports_property() {
+  return {"supports", Scope::Particle, ValueType::Integer, 2, "",
+          "left and right support of each disk (particle index, -1 none, -2 - wall)"};
+}
+Property tap_property() { return {"tap", Scope::Frame, ValueType::Integer, 1, "", "tap number"}; }
+Property cycle_property() {
+  return {"cycle", Scope::Frame, ValueType::Integer, 1, "",
+          "half-cycle of a ramped protocol (0 first increase, odd decreasing), -1 constant"};
+}
+Property amplitude_property() {
+  return {"amplitude", Scope::Frame, ValueType::Real, 1, "1", "tap amplitude A"};
+}
+
 void DiskPacking::to_frame(Frame& frame) const {
   const auto n = static_cast<Eigen::Index>(size());
   frame.resize(n, 2);
-  Supports labels;
-  labels.left.resize(n);
-  labels.right.resize(n);
+  ValueTable<std::int64_t>& labels = frame.particles.add<ValueTable<std::int64_t>>(supports_property());
   for (Eigen::Index k = 0; k < n; ++k) {
     const auto i = static_cast<std::size_t>(k);
-    frame.position(k, 0) = x[i];
-    frame.position(k, 1) = y[i];
-    frame.radius[k] = r[i];
+    frame.position()(k, 0) = x[i];
+    frame.position()(k, 1) = y[i];
+    frame.radius()[k] = r[i];
     PartnerCode left = first[i], right = second[i];
     if (first[i] == kBase) {
       right = kBase;
@@ -112,10 +123,9 @@ void DiskPacking::to_frame(Frame& frame) const {
     } else if (first[i] != kNone && contact_x(i, first[i]) > x[i]) {
       std::swap(left, right);  // a single support (only mid-deposition) on the right side
     }
-    labels.left[k] = left;
-    labels.right[k] = right;
+    labels(k, 0) = left;
+    labels(k, 1) = right;
   }
-  frame.supports = std::move(labels);
   frame.container = Container::open_top_box(2, Eigen::Vector3d(0, 0, 0),
                                             Eigen::Vector3d(width, top(), 0));
 }
@@ -133,7 +143,7 @@ DiskPacking DiskPacking::from_frame(const Frame& frame, const std::string& where
   DiskPacking p;
   p.width = frame.container.hi.x();
   for (Eigen::Index k = 0; k < frame.size(); ++k) {
-    p.add(frame.position(k, 0), frame.position(k, 1), frame.radius[k]);
+    p.add(frame.position()(k, 0), frame.position()(k, 1), frame.radius()[k]);
   }
   p.check(where, 1e-9);
   return p;

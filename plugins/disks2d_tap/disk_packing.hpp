@@ -12,6 +12,14 @@
 
 namespace granpipe::disks2d_tap {
 
+// The columns a tapped frame carries beyond the particles' own: support labels
+// (left, right, in the partner encoding of frame.hpp) and, per frame, the tap number, the
+// half-cycle of a ramped protocol (-1 when constant) and the tap amplitude A.
+Property supports_property();
+Property tap_property();
+Property cycle_property();
+Property amplitude_property();
+
 // What supports a disk: a disk index (>= 0), nothing, or a wall; the partner encoding of
 // frame.hpp narrowed to 32 bits so that the hot loops stay small.
 using PartnerCode = std::int32_t;

@@ -250,10 +250,11 @@ bool TapSource::next(Frame& frame) {
     progress_.advance(1.0);
     if (step.save) {
       packing_.to_frame(frame);
-      frame.tap = tap_;
       frame.step = tap_;
-      frame.cycle = step.cycle;
-      frame.time = step.amplitude;
+      frame.time = static_cast<double>(tap_);  // the scene's clock counts taps
+      frame.set_observable(tap_property(), tap_);
+      frame.set_observable(cycle_property(), step.cycle);
+      frame.set_observable(amplitude_property(), step.amplitude);
       return true;
     }
   }

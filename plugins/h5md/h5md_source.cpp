@@ -70,7 +70,11 @@ Frame H5mdSource::read_checked(long index) const {
 
 FrameContent H5mdSource::content() const {
   const FrameFileInfo& info = reader_.info();
-  return {info.dim, info.has_velocity, info.has_contacts, info.has_supports};
+  FrameContent content{.dim = info.dim, .contacts = info.has_contacts, .columns = info.columns};
+  content.columns.insert(content.columns.end(), info.observables.begin(), info.observables.end());
+  content.columns.insert(content.columns.end(), info.contact_columns.begin(),
+                         info.contact_columns.end());
+  return content;
 }
 
 Source::Work H5mdSource::work() const {
@@ -96,12 +100,12 @@ void H5mdSource::check_overlaps(const Frame& frame, const std::string& where) co
   const DistanceContacts touching = find_contacts_by_distance(frame, 0.0);
   for (Eigen::Index k = 0; k < touching.pairs; ++k) {
     const auto i = touching.i[k], j = touching.j[k];
-    const double smaller = std::min(frame.radius[i], frame.radius[j]);
+    const double smaller = std::min(frame.radius()[i], frame.radius()[j]);
     const double overlap = -touching.gap[k] / smaller;
     if (overlap > max_overlap_) {
       std::ostringstream msg;
-      msg << where << ": particles " << i << " and " << j << " (ids " << frame.id[i] << ", "
-          << frame.id[j] << ") overlap by " << overlap
+      msg << where << ": particles " << i << " and " << j << " (ids " << frame.id()[i] << ", "
+          << frame.id()[j] << ") overlap by " << overlap
           << " of the smaller radius, expected at most " << max_overlap_
           << " (raise " << max_overlap_param_ << " for soft-particle data)";
       throw InputError(msg.str());

@@ -56,7 +56,7 @@ LatticeSource::LatticeSource(const PluginContext& ctx)
   Eigen::Index n = static_cast<Eigen::Index>(cell_.basis.size());
   for (auto c : cells) n *= c;
   perfect_.resize(n, dim);
-  perfect_.radius.setConstant(radius_);
+  perfect_.radius().setConstant(radius_);
   Eigen::Index k = 0;
   const std::int64_t nz = dim == 3 ? cells[2] : 1;
   for (std::int64_t iz = 0; iz < nz; ++iz)
@@ -66,7 +66,7 @@ LatticeSource::LatticeSource(const PluginContext& ctx)
           const Eigen::Vector3d site(static_cast<double>(ix), static_cast<double>(iy),
                                      static_cast<double>(iz));
           for (int a = 0; a < dim; ++a) {
-            perfect_.position(k, a) = spacing * (site[a] * cell_.size[a] + b[a]);
+            perfect_.position()(k, a) = spacing * (site[a] * cell_.size[a] + b[a]);
           }
           ++k;
         }
@@ -79,15 +79,15 @@ LatticeSource::LatticeSource(const PluginContext& ctx)
     // Shift so that the lowest particles touch the low walls at 0; the high walls touch
     // the highest particles (in the rows or layers that reach them).
     for (int a = 0; a < dim; ++a) {
-      const double shift = radius_ - perfect_.position.col(a).minCoeff();
-      perfect_.position.col(a) += shift;
-      hi[a] = perfect_.position.col(a).maxCoeff() + radius_;
+      const double shift = radius_ - perfect_.position().col(a).minCoeff();
+      perfect_.position().col(a) += shift;
+      hi[a] = perfect_.position().col(a).maxCoeff() + radius_;
     }
     perfect_.container = Container::open_top_box(dim, lo, hi);
   }
 }
 
-FrameContent LatticeSource::content() const { return {cell_.dim, false, false, false}; }
+FrameContent LatticeSource::content() const { return {.dim = cell_.dim}; }
 
 Source::Work LatticeSource::work() const { return {static_cast<double>(frames_), "frames", false}; }
 
@@ -108,7 +108,7 @@ void LatticeSource::jitter(Frame& frame, std::int64_t index) const {
   const double reach = jitter_ * radius_;
   const int dim = frame.dim;
   const Container& c = frame.container;
-  frame.radius.setConstant(radius_ * (1.0 - jitter_));
+  frame.radius().setConstant(radius_ * (1.0 - jitter_));
   for (Eigen::Index k = 0; k < frame.size(); ++k) {
     double u[3], r2;
     do {  // uniform in the unit disk/ball by rejection from the cube
@@ -119,7 +119,7 @@ void LatticeSource::jitter(Frame& frame, std::int64_t index) const {
       }
     } while (r2 > 1.0);
     for (int a = 0; a < dim; ++a) {
-      frame.position(k, a) = c.wrap(a, frame.position(k, a) + reach * u[a]);
+      frame.position()(k, a) = c.wrap(a, frame.position()(k, a) + reach * u[a]);
     }
   }
 }

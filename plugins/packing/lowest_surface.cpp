@@ -40,17 +40,17 @@ double lowest_surface(const Frame& frame, const Region& columns, double width, d
   std::vector<double> top(static_cast<std::size_t>(ax.n * ay.n), base);
   std::vector<double> shifts_x, shifts_y{0.0};
   for (Eigen::Index k = 0; k < frame.size(); ++k) {
-    const double r = frame.radius[k], height = frame.position(k, v) + r;
-    image_shifts(frame.position(k, 0), r, columns.lo[0], columns.hi[0], c.periodic(0),
+    const double r = frame.radius()[k], height = frame.position()(k, v) + r;
+    image_shifts(frame.position()(k, 0), r, columns.lo[0], columns.hi[0], c.periodic(0),
                  c.length(0), shifts_x);
     if (dim == 3) {
-      image_shifts(frame.position(k, 1), r, columns.lo[1], columns.hi[1], c.periodic(1),
+      image_shifts(frame.position()(k, 1), r, columns.lo[1], columns.hi[1], c.periodic(1),
                    c.length(1), shifts_y);
     }
     for (const double sy : shifts_y) {
       for (const double sx : shifts_x) {
-        const double x = frame.position(k, 0) + sx;
-        const double y = dim == 3 ? frame.position(k, 1) + sy : 0.5;
+        const double x = frame.position()(k, 0) + sx;
+        const double y = dim == 3 ? frame.position()(k, 1) + sy : 0.5;
         for (long i = ax.first(x, r); i <= ax.last(x, r); ++i) {
           for (long j = ay.first(y, r); j <= ay.last(y, r); ++j) {
             if (dim == 3) {

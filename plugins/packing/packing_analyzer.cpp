@@ -52,7 +52,7 @@ const char* axis_name(int a) { return a == 0 ? "x" : a == 1 ? "y" : "z"; }
 
 std::string frame_name(const Frame& f) { return "frame at step " + std::to_string(f.step); }
 
-double mean_diameter(const Frame& f) { return f.size() ? 2.0 * f.radius.mean() : 0.0; }
+double mean_diameter(const Frame& f) { return f.size() ? 2.0 * f.radius().mean() : 0.0; }
 
 struct Heights {
   double base = 0.0;  // the container's bottom
@@ -72,7 +72,7 @@ Heights vertical_range(const Frame& f, Top top, const Region& columns) {
   }
   Heights h{c.lo[v] + offset, c.hi[v] + offset};
   if (top == Top::Surface) {
-    h.top = f.size() ? (f.position.col(v) + f.radius).maxCoeff() : h.base;
+    h.top = f.size() ? (f.position().col(v) + f.radius()).maxCoeff() : h.base;
   } else if (top == Top::LowestSurface) {
     h.top = lowest_surface(f, columns, mean_diameter(f), h.base);
   }
@@ -217,7 +217,7 @@ void PackingAnalyzer::finish(Results& results) {
     results.add_table("by_ramp", by_ramp_.table("phi and z_mean per ramp branch (0 first increase, "
                                                 "1 decreasing, 2 increasing) and time (annealed "
                                                 "tapping: the amplitude A), pooled over cycles"));
-    results.add_plot("by_ramp", {.table = "by_ramp", .x = "time", .y = {"phi"},
+    results.add_plot("by_ramp", {.table = "by_ramp", .x = "amplitude", .y = {"phi"},
                                  .xlabel = "frame time (annealed tapping: amplitude A)",
                                  .ylabel = "packing fraction",
                                  .title = "packing fraction on the ramp branches"});

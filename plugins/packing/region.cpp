@@ -31,10 +31,10 @@ double particle_measure_in(const Frame& frame, const Region& region) {
   std::vector<double> shifts[3];
   double sum = 0.0;
   for (Eigen::Index k = 0; k < frame.size(); ++k) {
-    const double r = frame.radius[k];
+    const double r = frame.radius()[k];
     bool any = true;
     for (int a = 0; a < dim; ++a) {
-      image_shifts(frame.position(k, a), r, region.lo[a], region.hi[a], c.periodic(a),
+      image_shifts(frame.position()(k, a), r, region.lo[a], region.hi[a], c.periodic(a),
                    c.length(a), shifts[a]);
       any = any && !shifts[a].empty();
     }
@@ -44,9 +44,9 @@ double particle_measure_in(const Frame& frame, const Region& region) {
     for (double sz : shifts[2])
       for (double sy : shifts[1])
         for (double sx : shifts[0]) {
-          x[0] = frame.position(k, 0) + sx;
-          x[1] = frame.position(k, 1) + sy;
-          if (dim == 3) x[2] = frame.position(k, 2) + sz;
+          x[0] = frame.position()(k, 0) + sx;
+          x[1] = frame.position()(k, 1) + sy;
+          if (dim == 3) x[2] = frame.position()(k, 2) + sz;
           sum += overlap::ball_box_measure(dim, x, r, region.lo.data(), region.hi.data());
         }
   }
@@ -59,7 +59,7 @@ std::vector<char> centres_in(const Frame& frame, const Region& region) {
   for (Eigen::Index k = 0; k < frame.size(); ++k) {
     bool inside = true;
     for (int a = 0; a < frame.dim && inside; ++a) {
-      const double x = c.wrap(a, frame.position(k, a));
+      const double x = c.wrap(a, frame.position()(k, a));
       inside = region.lo[a] <= x && x < region.hi[a];
     }
     in[static_cast<std::size_t>(k)] = inside;

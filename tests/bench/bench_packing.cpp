@@ -19,8 +19,8 @@ granpipe::Frame jittered_cube(int n_side) {
   for (int i = 0; i < n_side; ++i)
     for (int j = 0; j < n_side; ++j)
       for (int l = 0; l < n_side; ++l, ++k) {
-        f.position.row(k) << 0.5 + i + u(rng), 0.5 + j + u(rng), 0.5 + l + u(rng);
-        f.radius[k] = 0.4;
+        f.position().row(k) << 0.5 + i + u(rng), 0.5 + j + u(rng), 0.5 + l + u(rng);
+        f.radius()[k] = 0.4;
       }
   f.container = granpipe::Container::open_top_box(3, {0, 0, 0}, {1.0 * n_side, 1.0 * n_side, 1.0 * n_side});
   return f;

@@ -29,7 +29,7 @@ with tempfile.TemporaryDirectory() as out:
         json.dump({"sweep": {"parameters": {"source.params.N": [100, 200], "source.params.replica": [0, 1]}}}, f)
     write(out, "sweep.points.csv", ["point,source.params.N,source.params.replica,packing.phi,packing.phi_err",
                                     "0,100,0,0.80,0.01", "1,100,1,0.84,0.01", "2,200,0,0.7,0.01", "3,200,1,0.7,0.01"])
-    header = "branch,time,frames,phi,phi_err"
+    header = "branch,amplitude,frames,phi,phi_err"
     write(out, "point_000.packing.by_ramp.csv", [header, "1,1.5,10,0.80,0.01", "2,1.5,10,0.70,0.02"])
     write(out, "point_001.packing.by_ramp.csv", [header, "1,1.5,12,0.84,0.03"])
     write(out, "point_002.packing.by_ramp.csv", [header, "1,1.5,10,0.50,0.01"])
@@ -67,7 +67,7 @@ with tempfile.TemporaryDirectory() as out:
             failures.append(f"pooled points {rows}")
         if not os.path.exists(os.path.join(out, "pooled.points.svg")):
             failures.append("pooled.points.svg not written")
-    write(out, "point_003.packing.by_ramp.csv", ["branch,time,frames,rho,rho_err", "1,1.5,10,0.50,0.01"])
+    write(out, "point_003.packing.by_ramp.csv", ["branch,amplitude,frames,rho,rho_err", "1,1.5,10,0.50,0.01"])
     r = run(out)
     if r.returncode == 0 or "disagree" not in r.stderr:
         failures.append(f"mismatched columns accepted: {r.returncode} {r.stderr}")

@@ -40,55 +40,69 @@ struct Optional {
   bool velocity = true, angular = true, contacts = true, supports = true;
 };
 
-// Frame k of a synthetic run: every value a function of k, every optional array present
+// Columns a plugin might add: integer pairs per particle, a real per particle, a real
+// vector per contact, and per-frame observables.
+const Property kSupports{"supports", Scope::Particle, ValueType::Integer, 2, "", "left, right"};
+const Property kVolume{"voronoi_volume", Scope::Particle, ValueType::Real, 1, "length^3", "cell"};
+const Property kHistory{"tangential_history", Scope::Contact, ValueType::Real, kDimComponents,
+                        "length", "tangential spring"};
+const Property kTap{"tap", Scope::Frame, ValueType::Integer, 1, "", "tap number"};
+const Property kAmplitude{"amplitude", Scope::Frame, ValueType::Real, 1, "1", "tap amplitude"};
+
+template <class Fill>
+void fill_columns(Coordinates& c, Fill value) {
+  for (Eigen::Index i = 0; i < c.rows(); ++i)
+    for (int a = 0; a < c.cols(); ++a) c(i, a) = value(i, a);
+}
+
+void add_contacts(Frame& f, long k, Eigen::Index n) {
+  // A different number of contacts every frame, none at all in frame 2.
+  const Eigen::Index m = k == 2 ? 0 : 1 + (k * 5) % 7;
+  PropertyTable& c = f.add_contacts(m);
+  for (Eigen::Index q = 0; q < m; ++q) {
+    f.contact_i()[q] = q % n;
+    f.contact_j()[q] = q % 2 ? (q + 1) % n : partner::wall(Wall::ZLow);
+  }
+  Eigen::ArrayXd& overlap = c.add<Eigen::ArrayXd>(*find_standard("overlap", Scope::Contact));
+  for (Eigen::Index q = 0; q < m; ++q) overlap[q] = 1e-3 * std::abs(value(k, q, 0, 4));
+  int salt = 5;
+  for (const char* name : {"normal_force", "tangential_force", "point"}) {
+    fill_columns(c.add<Coordinates>(*find_standard(name, Scope::Contact)),
+                 [&](Eigen::Index q, int a) { return value(k, q, a, salt); });
+    ++salt;
+  }
+  fill_columns(c.add<Coordinates>(kHistory), [&](Eigen::Index q, int a) { return value(k, q, a, 11); });
+}
+
+// Frame k of a synthetic run: every value a function of k, every optional column present
 // unless switched off, a container exercising every field.
 Frame make_frame(long k, int dim, Eigen::Index n, Optional with = {}) {
   Frame f;
   f.resize(n, dim);
   for (Eigen::Index i = 0; i < n; ++i) {
-    for (int a = 0; a < dim; ++a) f.position(i, a) = 10.0 * value(k, i, a, 0);
-    f.radius[i] = 0.5 + 0.1 * std::abs(value(k, i, 0, 1));
-    f.id[i] = 1000 + 7 * i;
-    f.species[i] = static_cast<std::int32_t>((i + k) % 3);
+    for (int a = 0; a < dim; ++a) f.position()(i, a) = 10.0 * value(k, i, a, 0);
+    f.radius()[i] = 0.5 + 0.1 * std::abs(value(k, i, 0, 1));
+    f.id()[i] = 1000 + 7 * i;
+    f.species()[i] = static_cast<std::int32_t>((i + k) % 3);
   }
   if (with.velocity) {
-    f.velocity = Coordinates(n, dim);
-    for (Eigen::Index i = 0; i < n; ++i)
-      for (int a = 0; a < dim; ++a) (*f.velocity)(i, a) = value(k, i, a, 2);
+    fill_columns(f.add("velocity").as<Coordinates>(),
+                 [&](Eigen::Index i, int a) { return value(k, i, a, 2); });
   }
   if (with.angular) {
-    const int cols = dim == 3 ? 3 : 1;
-    f.angular_velocity = Coordinates(n, cols);
-    for (Eigen::Index i = 0; i < n; ++i)
-      for (int a = 0; a < cols; ++a) (*f.angular_velocity)(i, a) = value(k, i, a, 3);
+    fill_columns(f.add("angular_velocity").as<Coordinates>(),
+                 [&](Eigen::Index i, int a) { return value(k, i, a, 3); });
   }
   if (with.supports) {
-    Supports s;
-    s.left = IndexArray(n);
-    s.right = IndexArray(n);
+    auto& s = f.particles.add<ValueTable<std::int64_t>>(kSupports);
+    Eigen::ArrayXd& volume = f.particles.add<Eigen::ArrayXd>(kVolume);
     for (Eigen::Index i = 0; i < n; ++i) {
-      s.left[i] = i % 3 == 0 ? partner::none : partner::wall(Wall::YLow);
-      s.right[i] = (i + k) % n;
+      s(i, 0) = i % 3 == 0 ? partner::none : partner::wall(Wall::YLow);
+      s(i, 1) = (i + k) % n;
+      volume[i] = value(k, i, 0, 12);
     }
-    f.supports = s;
   }
-  if (with.contacts) {
-    // A different number of contacts every frame, none at all in frame 2.
-    const Eigen::Index m = k == 2 ? 0 : 1 + (k * 5) % 7;
-    Contacts c;
-    c.resize(m, dim);
-    for (Eigen::Index q = 0; q < m; ++q) {
-      c.i[q] = q % n;
-      c.j[q] = q % 2 ? (q + 1) % n : partner::wall(Wall::ZLow);
-      c.overlap[q] = 1e-3 * std::abs(value(k, q, 0, 4));
-      for (int a = 0; a < dim; ++a) {
-        c.normal_force(q, a) = value(k, q, a, 5);
-        c.tangential_force(q, a) = value(k, q, a, 6);
-        c.point(q, a) = value(k, q, a, 7);
-      }
-    }
-    f.contacts = c;
-  }
+  if (with.contacts) add_contacts(f, k, n);
   Container& box = f.container;
   box.shape = k % 2 ? ContainerShape::Cylinder : ContainerShape::Box;
   box.lo = Eigen::Vector3d(-1.0, -2.0, -3.0) * (1.0 + 0.01 * static_cast<double>(k));
@@ -102,8 +116,8 @@ Frame make_frame(long k, int dim, Eigen::Index n, Optional with = {}) {
   box.wall_velocity = Eigen::Vector3d(0.0, 0.0, value(k, 0, 0, 10));
   f.time = 0.001 * static_cast<double>(k) + 1e-12;
   f.step = 100 * k + 3;
-  f.tap = k / 2;
-  f.cycle = 3 * k;
+  f.set_observable(kTap, static_cast<std::int64_t>(k / 2));
+  f.set_observable(kAmplitude, value(k, 0, 0, 13));
   return f;
 }
 
@@ -118,40 +132,33 @@ void expect_same_container(const Container& a, const Container& b) {
   EXPECT_TRUE(same_bits(a.wall_velocity, b.wall_velocity));
 }
 
+// The same columns, in the same order, with the same properties and bits.
+void expect_same_table(const PropertyTable& a, const PropertyTable& b) {
+  ASSERT_EQ(a.rows(), b.rows());
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    const Column &p = a.column(k), &q = b.column(k);
+    ASSERT_EQ(p.name(), q.name());
+    EXPECT_TRUE(p.property().matches(q.property())) << p.name();
+    EXPECT_EQ(p.property().unit, q.property().unit) << p.name();
+    EXPECT_EQ(p.property().doc, q.property().doc) << p.name();
+    ASSERT_EQ(p.storage().index(), q.storage().index()) << p.name();
+    std::visit([&](const auto& x) {
+      using A = std::decay_t<decltype(x)>;
+      EXPECT_TRUE(same_bits(x, std::get<A>(q.storage()))) << p.name();
+    }, p.storage());
+  }
+}
+
 void expect_same_frame(const Frame& a, const Frame& b) {
   ASSERT_EQ(a.dim, b.dim);
-  EXPECT_TRUE(same_bits(a.position, b.position));
-  EXPECT_TRUE(same_bits(a.radius, b.radius));
-  EXPECT_TRUE(same_bits(a.id, b.id));
-  EXPECT_TRUE(same_bits(a.species, b.species));
-  ASSERT_EQ(a.velocity.has_value(), b.velocity.has_value());
-  if (a.velocity) {
-    EXPECT_TRUE(same_bits(*a.velocity, *b.velocity));
-  }
-  ASSERT_EQ(a.angular_velocity.has_value(), b.angular_velocity.has_value());
-  if (a.angular_velocity) {
-    EXPECT_TRUE(same_bits(*a.angular_velocity, *b.angular_velocity));
-  }
-  ASSERT_EQ(a.supports.has_value(), b.supports.has_value());
-  if (a.supports) {
-    EXPECT_TRUE(same_bits(a.supports->left, b.supports->left));
-    EXPECT_TRUE(same_bits(a.supports->right, b.supports->right));
-  }
+  expect_same_table(a.particles, b.particles);
+  expect_same_table(a.observables, b.observables);
   ASSERT_EQ(a.contacts.has_value(), b.contacts.has_value());
-  if (a.contacts) {
-    const Contacts &p = *a.contacts, &q = *b.contacts;
-    EXPECT_TRUE(same_bits(p.i, q.i));
-    EXPECT_TRUE(same_bits(p.j, q.j));
-    EXPECT_TRUE(same_bits(p.overlap, q.overlap));
-    EXPECT_TRUE(same_bits(p.normal_force, q.normal_force));
-    EXPECT_TRUE(same_bits(p.tangential_force, q.tangential_force));
-    EXPECT_TRUE(same_bits(p.point, q.point));
-  }
+  if (a.contacts) expect_same_table(*a.contacts, *b.contacts);
   expect_same_container(a.container, b.container);
   EXPECT_EQ(std::memcmp(&a.time, &b.time, sizeof(double)), 0);
   EXPECT_EQ(a.step, b.step);
-  EXPECT_EQ(a.tap, b.tap);
-  EXPECT_EQ(a.cycle, b.cycle);
 }
 
 class FrameStore : public ::testing::Test {
@@ -199,8 +206,13 @@ TEST_F(FrameStore, RoundTripIsBitIdenticalWithEveryOptionalArray) {
     EXPECT_EQ(info.dim, dim);
     EXPECT_TRUE(info.complete);
     EXPECT_TRUE(info.granpipe_file);
-    EXPECT_TRUE(info.has_velocity && info.has_angular_velocity && info.has_contacts &&
-                info.has_supports && info.has_radius);
+    for (const char* c : {"radius", "velocity", "angular_velocity", "supports", "voronoi_volume"}) {
+      EXPECT_TRUE(info.has(c)) << c;
+    }
+    EXPECT_TRUE(info.has_contacts);
+    ASSERT_EQ(info.observables.size(), 2u);
+    EXPECT_EQ(info.observables[0].name, "tap");
+    EXPECT_EQ(info.observables[1].unit, "1");
     EXPECT_EQ(info.group, "all");
     EXPECT_EQ(info.creator, std::string("granpipe ") + GRANPIPE_VERSION);
   }
@@ -212,8 +224,8 @@ TEST_F(FrameStore, RoundTripIsBitIdenticalWithNoOptionalArray) {
   FrameReader r(p);
   ASSERT_EQ(r.frames(), 4);
   for (long k = 0; k < 4; ++k) expect_same_frame(make_frame(k, 3, 9, none), r.read(k));
-  EXPECT_FALSE(r.info().has_velocity || r.info().has_angular_velocity ||
-               r.info().has_contacts || r.info().has_supports);
+  EXPECT_FALSE(r.info().has("velocity") || r.info().has("angular_velocity") ||
+               r.info().has_contacts || r.info().has("supports"));
 }
 
 TEST_F(FrameStore, EmptyAndOneParticleFramesRoundTrip) {
@@ -231,8 +243,8 @@ TEST_F(FrameStore, EmptyAndOneParticleFramesRoundTrip) {
 TEST_F(FrameStore, NonFinitePositionsAreStoredAsGiven) {
   // Rejecting them is Frame::check's job; the store must not hide them.
   Frame f = make_frame(0, 2, 3);
-  f.position(1, 0) = std::numeric_limits<double>::quiet_NaN();
-  f.position(2, 1) = -std::numeric_limits<double>::infinity();
+  f.position()(1, 0) = std::numeric_limits<double>::quiet_NaN();
+  f.position()(2, 1) = -std::numeric_limits<double>::infinity();
   const fs::path p = file("nan.h5");
   FrameWriter w(p, "{}");
   w.append(f);
@@ -372,31 +384,31 @@ TEST_F(FrameStore, ReadsAnotherToolsFile) {
   EXPECT_EQ(info.creator, "othermd");
   EXPECT_FALSE(info.granpipe_file);
   EXPECT_TRUE(info.complete);
-  EXPECT_FALSE(info.has_radius || info.has_contacts || info.has_supports);
+  EXPECT_FALSE(info.has("radius") || info.has_contacts || info.has("supports"));
   // Velocities exist only at every other step: not at every frame, so not used.
-  EXPECT_FALSE(info.has_velocity);
+  EXPECT_FALSE(info.has("velocity"));
   ASSERT_EQ(r.frames(), 3);
   ASSERT_EQ(info.particles, 4);
   for (long k = 0; k < 3; ++k) {
     const Frame f = r.read(k);
     ASSERT_EQ(f.dim, 3);
     for (int i = 0; i < 4; ++i) {
-      for (int a = 0; a < 3; ++a) EXPECT_EQ(f.position(i, a), 0.25 * (k + i + a));
-      EXPECT_EQ(f.radius[i], 0.75);
-      EXPECT_EQ(f.id[i], i);  // no id element: ids are the indices
+      for (int a = 0; a < 3; ++a) EXPECT_EQ(f.position()(i, a), 0.25 * (k + i + a));
+      EXPECT_EQ(f.radius()[i], 0.75);
+      EXPECT_EQ(f.id()[i], i);  // no id element: ids are the indices
     }
-    EXPECT_EQ(f.species[0], 2);
-    EXPECT_EQ(f.species[2], 1);
+    EXPECT_EQ(f.species()[0], 2);
+    EXPECT_EQ(f.species()[2], 1);
     EXPECT_EQ(f.step, 10 * (k + 1));
     EXPECT_EQ(f.time, 0.5 * static_cast<double>(k + 1));
-    EXPECT_EQ(f.tap, -1);
+    EXPECT_EQ(f.observables.size(), 0u);
     EXPECT_EQ(f.container.shape, ContainerShape::Box);
     EXPECT_EQ(f.container.lo, Eigen::Vector3d::Zero());
     EXPECT_EQ(f.container.hi.head(3), Eigen::Vector3d(4.0, 5.0, 6.0));
     EXPECT_TRUE(f.container.periodic(0) && f.container.periodic(1));
     EXPECT_EQ(f.container.boundary[2][0], Boundary::Wall);
     EXPECT_EQ(f.container.boundary[2][1], Boundary::Wall);
-    EXPECT_FALSE(f.velocity.has_value());
+    EXPECT_FALSE(f.has("velocity"));
   }
 }
 
@@ -521,7 +533,7 @@ TEST_F(FrameStore, CountsOnlyFramesPresentInEveryDataset) {
   EXPECT_EQ(FrameReader(p).frames(), 3);
   {
     Id f(H5Fopen(p.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
-    set_rows(f, "/granpipe/radius", 2);
+    set_rows(f, "/particles/all/radius/value", 2);
   }
   FrameReader r(p);
   ASSERT_EQ(r.frames(), 2);
@@ -537,8 +549,9 @@ TEST_F(FrameStore, RowsWhoseStepWasNeverWrittenAreNotFrames) {
     for (const char* path :
          {"/particles/all/position/value", "/particles/all/position/step",
           "/particles/all/position/time", "/particles/all/species/value",
-          "/particles/all/id/value", "/particles/all/box/edges/value", "/granpipe/radius",
-          "/granpipe/tap", "/granpipe/cycle", "/granpipe/container/shape",
+          "/particles/all/id/value", "/particles/all/box/edges/value",
+          "/particles/all/radius/value", "/observables/tap/value", "/observables/amplitude/value",
+          "/granpipe/container/shape",
           "/granpipe/container/lo", "/granpipe/container/hi", "/granpipe/container/boundary",
           "/granpipe/container/cylinder_radius", "/granpipe/container/cylinder_center",
           "/granpipe/container/wall_offset", "/granpipe/container/wall_velocity"}) {

@@ -20,16 +20,16 @@ class RandomSource : public Source {
  public:
   explicit RandomSource(const PluginContext& c)
       : frames_(c.params.integer("frames")), n_(c.params.integer("n")), rng_(c.seeds.stream("points")) {}
-  FrameContent content() const override { return {2, false, false, false}; }
+  FrameContent content() const override { return {.dim = 2}; }
   bool next(Frame& f) override {
     if (emitted_ == frames_) return false;
     f.resize(n_, 2);
     f.container = Container::periodic_box(2, Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones());
     for (Eigen::Index i = 0; i < n_; ++i) {
-      f.position(i, 0) = rng_.uniform();
-      f.position(i, 1) = rng_.uniform();
+      f.position()(i, 0) = rng_.uniform();
+      f.position()(i, 1) = rng_.uniform();
     }
-    f.radius.setConstant(0.01);
+    f.radius().setConstant(0.01);
     f.step = emitted_++;
     return true;
   }
@@ -42,7 +42,7 @@ class RandomSource : public Source {
 class MeanXAnalyzer : public Analyzer {
  public:
   explicit MeanXAnalyzer(const PluginContext& c) : scale_(c.params.real("scale")) {}
-  void consume(const Frame& f, FrameCache&) override { mean_.add(f.position.col(0).mean() * scale_); }
+  void consume(const Frame& f, FrameCache&) override { mean_.add(f.position().col(0).mean() * scale_); }
   void finish(Results& r) override { r.add_scalar("mean_x", mean_.mean(), mean_.standard_error()); }
 
  private:
@@ -53,7 +53,9 @@ class MeanXAnalyzer : public Analyzer {
 class NeedsSupports : public Analyzer {
  public:
   explicit NeedsSupports(const PluginContext&) {}
-  FrameContent needs() const override { return {2, false, false, true}; }
+  FrameContent needs() const override {
+    return {.dim = 2, .columns = {{"supports", Scope::Particle, ValueType::Integer, 2, "", ""}}};
+  }
   void consume(const Frame&, FrameCache&) override {}
   void finish(Results&) override {}
 };
@@ -179,8 +181,9 @@ TEST(PipelineErrors, AnalyzerNeedsWhatTheSourceLacks) {
     p.check(log);
     FAIL() << "expected an InputError";
   } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(), "p.json: analyzers[0]: analyzer \"needs_supports\" needs support labels, "
-                           "which the source does not provide (source \"random\")");
+    EXPECT_STREQ(e.what(), "p.json: analyzers[0]: analyzer \"needs_supports\" needs particle column "
+                           "\"supports\", which neither the source nor an analyzer before it provides "
+                           "(source \"random\")");
   }
 }
 
@@ -288,12 +291,11 @@ TEST(Pipeline, SavedFramesReadBackAndCarryProvenance) {
 TEST(Frame, CheckNamesInconsistentContacts) {
   Frame f;
   f.resize(2, 2);
-  f.radius.setConstant(0.5);
-  f.position(1, 0) = 1.0;
-  f.contacts.emplace();
-  f.contacts->resize(1, 2);
-  f.contacts->i[0] = 0;
-  f.contacts->j[0] = 2;  // no particle 2
+  f.radius().setConstant(0.5);
+  f.position()(1, 0) = 1.0;
+  f.add_contacts(1);
+  f.contact_i()[0] = 0;
+  f.contact_j()[0] = 2;  // no particle 2
   try {
     f.check("x.h5: frame 3");
     FAIL() << "expected an InputError";
@@ -301,6 +303,6 @@ TEST(Frame, CheckNamesInconsistentContacts) {
     EXPECT_STREQ(e.what(), "x.h5: frame 3: contact 0: expected particle indices below 2 (or a wall as second "
                            "partner), got 0 and 2");
   }
-  f.contacts->j[0] = partner::wall(Wall::YLow);
+  f.contact_j()[0] = partner::wall(Wall::YLow);
   EXPECT_NO_THROW(f.check("x.h5: frame 3"));
 }

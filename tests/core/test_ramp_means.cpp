@@ -8,10 +8,10 @@
 using namespace granpipe;
 
 namespace {
-Frame at(std::int64_t cycle, double time) {
+Frame at(std::int64_t cycle, double amplitude) {
   Frame f;
-  f.cycle = cycle;
-  f.time = time;
+  f.set_observable({"cycle", Scope::Frame, ValueType::Integer, 1, "", ""}, cycle);
+  f.set_observable({"amplitude", Scope::Frame, ValueType::Real, 1, "", ""}, amplitude);
   return f;
 }
 }  // namespace

@@ -44,21 +44,27 @@ struct Disk {
   std::int64_t left, right;
 };
 
+// The support labels of a test frame, added when missing.
+granpipe::ValueTable<std::int64_t>& supports(Frame& f) {
+  return f.particles.add<granpipe::ValueTable<std::int64_t>>(ga::supports_property());
+}
+const granpipe::ValueTable<std::int64_t>& supports(const Frame& f) {
+  return f.table<std::int64_t>("supports");
+}
+
 Frame make_frame(const std::vector<Disk>& disks, double width) {
   Frame f;
   const auto n = static_cast<Eigen::Index>(disks.size());
   f.resize(n, 2);
   f.container = granpipe::Container::open_top_box(2, {0, 0, 0}, {width, 20, 1});
-  f.radius.setConstant(0.5);
-  f.supports = granpipe::Supports{};
-  f.supports->left.resize(n);
-  f.supports->right.resize(n);
+  f.radius().setConstant(0.5);
+  supports(f);
   for (Eigen::Index i = 0; i < n; ++i) {
     const Disk& d = disks[static_cast<std::size_t>(i)];
-    f.position(i, 0) = d.x;
-    f.position(i, 1) = d.y;
-    f.supports->left(i) = d.left;
-    f.supports->right(i) = d.right;
+    f.position()(i, 0) = d.x;
+    f.position()(i, 1) = d.y;
+    supports(f)(i, 0) = d.left;
+    supports(f)(i, 1) = d.right;
   }
   return f;
 }
@@ -71,9 +77,9 @@ Frame mirrored(const Frame& f) {
     return p == kLeftWall ? kRightWall : p == kRightWall ? kLeftWall : p;
   };
   for (Eigen::Index i = 0; i < f.size(); ++i) {
-    m.position(i, 0) = width - f.position(i, 0);
-    m.supports->left(i) = swap_wall(f.supports->right(i));
-    m.supports->right(i) = swap_wall(f.supports->left(i));
+    m.position()(i, 0) = width - f.position()(i, 0);
+    supports(m)(i, 0) = swap_wall(supports(f)(i, 1));
+    supports(m)(i, 1) = swap_wall(supports(f)(i, 0));
   }
   return m;
 }
@@ -148,25 +154,25 @@ std::vector<ga::Arch> arches_of(const Frame& f) {
 }
 
 ga::ContactCensus census_of(const Frame& f) {
-  return ga::census_contacts(*f.supports, granpipe::find_contacts_by_distance(f, kTolerance));
+  return ga::census_contacts(ga::Supports::of(f), granpipe::find_contacts_by_distance(f, kTolerance));
 }
 
 // The same census by brute force over all pairs and walls, with its own contact rule.
 ga::ContactCensus brute_force_census(const Frame& f) {
   ga::ContactCensus c;
-  const auto& s = *f.supports;
+  const auto& s = ga::Supports::of(f);
   auto names = [&](Eigen::Index i, std::int64_t p) { return s.left(i) == p || s.right(i) == p; };
   for (Eigen::Index i = 0; i < f.size(); ++i) {
     for (Eigen::Index j = i + 1; j < f.size(); ++j) {
-      const double dist = std::hypot(f.position(j, 0) - f.position(i, 0),
-                                     f.position(j, 1) - f.position(i, 1));
-      if (dist - f.radius(i) - f.radius(j) > 1e-9) continue;
+      const double dist = std::hypot(f.position()(j, 0) - f.position()(i, 0),
+                                     f.position()(j, 1) - f.position()(i, 1));
+      if (dist - f.radius()(i) - f.radius()(j) > 1e-9) continue;
       ++c.contacts;
       c.supporting += names(i, j) || names(j, i);
     }
-    const double gaps[] = {f.position(i, 0) - f.radius(i) - f.container.lo[0],
-                           f.container.hi[0] - f.position(i, 0) - f.radius(i),
-                           f.position(i, 1) - f.radius(i) - f.container.lo[1]};
+    const double gaps[] = {f.position()(i, 0) - f.radius()(i) - f.container.lo[0],
+                           f.container.hi[0] - f.position()(i, 0) - f.radius()(i),
+                           f.position()(i, 1) - f.radius()(i) - f.container.lo[1]};
     const std::int64_t walls[] = {kLeftWall, kRightWall, kBase};
     for (int w = 0; w < 3; ++w) {
       if (gaps[w] > 1e-9) continue;
@@ -182,7 +188,7 @@ ga::ContactCensus brute_force_census(const Frame& f) {
 void expect_eq4_identity(const Frame& f) {
   const auto arches = arches_of(f);
   const ga::ArchStatistics st = ga::arch_statistics(f.size(), arches);
-  const ga::SupportCount sc = ga::count_supports(*f.supports);
+  const ga::SupportCount sc = ga::count_supports(ga::Supports::of(f));
   EXPECT_EQ(f.size() + st.groups() - sc.contacts(), sc.missing_supports());
   Eigen::Index links = 0;
   for (const auto& a : arches) links += static_cast<Eigen::Index>(a.disks.size()) - 1;
@@ -240,7 +246,7 @@ TEST(Arches, TwoDiskArch) {
   EXPECT_EQ(st.p2, 0);
   EXPECT_EQ(st.arches(), 1);
   EXPECT_DOUBLE_EQ(st.z_eq4(), 3.5);
-  const auto sc = ga::count_supports(*f.supports);
+  const auto sc = ga::count_supports(ga::Supports::of(f));
   EXPECT_EQ(sc.base_disks, 2);
   EXPECT_EQ(sc.mutual_pairs, 1);
   EXPECT_EQ(sc.contacts(), 5);
@@ -295,7 +301,7 @@ TEST(Arches, SequentialDepositionHasNoArchesAndEq4GivesFour) {
   EXPECT_EQ(st.p2, 0);
   EXPECT_EQ(st.z_eq4(), 4.0);
   // The direct count gives the base disks one support: 4 - 2 N_base / N = 3.
-  const auto sc = ga::count_supports(*f.supports);
+  const auto sc = ga::count_supports(ga::Supports::of(f));
   EXPECT_EQ(sc.mutual_pairs, 0);
   EXPECT_DOUBLE_EQ(sc.z_direct(), 3.0);
   const auto cc = census_of(f);
@@ -313,7 +319,7 @@ TEST(Arches, DisksOnTheBaseOnly) {
   const auto st = ga::arch_statistics(f.size(), arches_of(f));
   EXPECT_EQ(st.arches(), 0);
   EXPECT_EQ(st.z_eq4(), 4.0);
-  const auto sc = ga::count_supports(*f.supports);
+  const auto sc = ga::count_supports(ga::Supports::of(f));
   EXPECT_EQ(sc.base_disks, 4);
   EXPECT_EQ(sc.z_direct(), 2.0);
   // Four base contacts and the left wall; the disk at 5.0 is 0.5 from the right wall.
@@ -337,7 +343,7 @@ TEST(Arches, TriangularLatticeArchesHaveAnalyticSpans) {
   EXPECT_EQ(st.p1, 4);
   EXPECT_EQ(st.p2, 1);
   EXPECT_DOUBLE_EQ(st.z_eq4(), 3.5);
-  const auto sc = ga::count_supports(*f.supports);
+  const auto sc = ga::count_supports(ga::Supports::of(f));
   EXPECT_EQ(sc.base_disks, 4);
   EXPECT_EQ(sc.contacts(), 17);
   // Supporting: 4 base, 6 layer 1 on the base, a1-a2, a2-a3, U-a1, W-a2, W-a3, V-U, V-W.
@@ -402,29 +408,29 @@ TEST(Arches, Eq4IdentityHoldsForRandomLabels) {
     SCOPED_TRACE("trial " + std::to_string(trial));
     expect_eq4_identity(f);
     for (const auto& a : arches_of(f)) {
-      EXPECT_DOUBLE_EQ(a.span, f.position(a.disks.back(), 0) - f.position(a.disks.front(), 0));
+      EXPECT_DOUBLE_EQ(a.span, f.position()(a.disks.back(), 0) - f.position()(a.disks.front(), 0));
     }
   }
 }
 
 TEST(Arches, BadSupportLabelsAreInputErrors) {
   Frame f = two_disk_arch();
-  f.supports->left(2) = 4;  // no disk 4
+  supports(f)(2, 0) = 4;  // no disk 4
   EXPECT_THROW(ga::check_supports(f, "test"), granpipe::InputError);
   f = two_disk_arch();
-  f.supports->left(2) = 2;  // itself
+  supports(f)(2, 0) = 2;  // itself
   EXPECT_THROW(ga::check_supports(f, "test"), granpipe::InputError);
   f = two_disk_arch();
-  f.supports->left(2) = partner::wall(Wall::YHigh);
+  supports(f)(2, 0) = partner::wall(Wall::YHigh);
   EXPECT_THROW(ga::check_supports(f, "test"), granpipe::InputError);
   f = two_disk_arch();
-  f.supports->left(2) = 3;  // disk 3 as both supports
+  supports(f)(2, 0) = 3;  // disk 3 as both supports
   EXPECT_THROW(ga::check_supports(f, "test"), granpipe::InputError);
   f = two_disk_arch();
-  f.supports->right.resize(3);
+  supports(f).conservativeResize(3, 2);
   EXPECT_THROW(ga::check_supports(f, "test"), granpipe::InputError);
   f = two_disk_arch();
-  f.supports.reset();
+  f.particles.remove("supports");
   EXPECT_THROW(ga::check_supports(f, "test"), granpipe::InputError);
   f = two_disk_arch();
   f.dim = 3;
@@ -492,7 +498,7 @@ TEST(ArchesSvg, OneCirclePerDiskAndOneLinePerMutualLink) {
   };
   collect(tree);
   std::set<std::pair<double, double>> expected;
-  for (Eigen::Index i : {a1, a2, a3, U, V}) expected.insert({f.position(i, 0), f.position(i, 1)});
+  for (Eigen::Index i : {a1, a2, a3, U, V}) expected.insert({f.position()(i, 0), f.position()(i, 1)});
   ASSERT_EQ(ends.size(), expected.size());
   for (auto e = ends.begin(), x = expected.begin(); e != ends.end(); ++e, ++x) {
     EXPECT_NEAR(e->first, x->first, 1e-6);
@@ -521,11 +527,13 @@ TEST(ArchesAnalyzer, AveragesOverFramesWithStandardErrors) {
   const granpipe::PluginContext ctx{p, granpipe::Seeds(1), 1, log, progress, dir, "", ""};
   ga::ArchesAnalyzer analyzer(ctx);
   EXPECT_EQ(analyzer.needs().dim, 2);
-  EXPECT_TRUE(analyzer.needs().supports);
+  ASSERT_EQ(analyzer.needs().columns.size(), 1u);
+  EXPECT_TRUE(analyzer.needs().columns[0].matches(ga::supports_property()));
 
   Frame first = two_disk_arch(), second = three_disk_chain();
-  first.tap = 7;
-  second.tap = 8;
+  const granpipe::Property tap{"tap", granpipe::Scope::Frame, granpipe::ValueType::Integer, 1, "", ""};
+  first.set_observable(tap, std::int64_t{7});
+  second.set_observable(tap, std::int64_t{8});
   granpipe::FrameCache cache;
   analyzer.consume(first, cache);
   cache.clear();
@@ -637,6 +645,7 @@ TEST(ArchesPlugin, LoadsAndDeclaresItsSchema) {
   granpipe::Progress progress;
   const granpipe::PluginContext ctx{p, granpipe::Seeds(1), 1, log, progress, {}, "", ""};
   const auto analyzer = info.make_analyzer(ctx);
-  EXPECT_TRUE(analyzer->needs().supports);
+  ASSERT_EQ(analyzer->needs().columns.size(), 1u);
+  EXPECT_EQ(analyzer->needs().columns[0].name, "supports");
   EXPECT_EQ(analyzer->needs().dim, 2);
 }

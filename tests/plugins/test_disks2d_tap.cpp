@@ -61,10 +61,10 @@ void expect_deposited(const dt::DiskPacking& p) {
   }
   Frame f;
   p.to_frame(f);
-  ASSERT_TRUE(f.supports.has_value());
+  ASSERT_TRUE(f.has("supports"));
   for (Eigen::Index k = 0; k < f.size(); ++k) {
     const auto i = static_cast<std::size_t>(k);
-    const std::int64_t left = f.supports->left[k], right = f.supports->right[k];
+    const std::int64_t left = f.table<std::int64_t>("supports")(k, 0), right = f.table<std::int64_t>("supports")(k, 1);
     const std::int64_t base = partner::wall(Wall::YLow);
     if (left == base || right == base) {
       EXPECT_EQ(left, base);
@@ -101,8 +101,8 @@ int mutual_pairs(const dt::DiskPacking& p) {
   p.to_frame(f);
   int pairs = 0;
   for (Eigen::Index i = 0; i < f.size(); ++i) {
-    const std::int64_t r = f.supports->right[i];
-    if (partner::is_particle(r) && f.supports->left[r] == i) ++pairs;
+    const std::int64_t r = f.table<std::int64_t>("supports")(i, 1);
+    if (partner::is_particle(r) && f.table<std::int64_t>("supports")(r, 0) == i) ++pairs;
   }
   return pairs;
 }
@@ -202,10 +202,10 @@ TEST(Disks2dTapRoll, ComesToRestAgainstAWall) {
   EXPECT_NEAR(distance(p, 0, 1), 2 * kR, 1e-12 * kR);
   Frame f;
   p.to_frame(f);
-  EXPECT_EQ(f.supports->left[1], 0);
-  EXPECT_EQ(f.supports->right[1], partner::wall(Wall::XHigh));
-  EXPECT_EQ(f.supports->left[0], partner::wall(Wall::YLow));
-  EXPECT_EQ(f.supports->right[0], partner::wall(Wall::YLow));
+  EXPECT_EQ(f.table<std::int64_t>("supports")(1, 0), 0);
+  EXPECT_EQ(f.table<std::int64_t>("supports")(1, 1), partner::wall(Wall::XHigh));
+  EXPECT_EQ(f.table<std::int64_t>("supports")(0, 0), partner::wall(Wall::YLow));
+  EXPECT_EQ(f.table<std::int64_t>("supports")(0, 1), partner::wall(Wall::YLow));
 }
 
 TEST(Disks2dTapRoll, ADiskExactlyOnTopRollsAwayFromTheWall) {
@@ -291,8 +291,8 @@ TEST(Disks2dTapDeposition, SequentialDepositionMakesNoMutualContacts) {
   Frame f;
   p.to_frame(f);
   for (Eigen::Index i = 0; i < f.size(); ++i) {
-    if (f.supports->left[i] != partner::wall(Wall::YLow)) {
-      EXPECT_NE(f.supports->left[i], f.supports->right[i]);
+    if (f.table<std::int64_t>("supports")(i, 0) != partner::wall(Wall::YLow)) {
+      EXPECT_NE(f.table<std::int64_t>("supports")(i, 0), f.table<std::int64_t>("supports")(i, 1));
     }
   }
 }
@@ -415,8 +415,8 @@ TEST(Disks2dTapPacking, ADepositedBedReadBackFromItsFrameStaysPut) {
   // The labels are found again, except where a disk touches more than two others and
   // another touching pair holds it as well (the contacts found at zero distance tie).
   for (Eigen::Index k = 0; k < redeposited.size(); ++k) {
-    if (redeposited.supports->left[k] == saved.supports->left[k] &&
-        redeposited.supports->right[k] == saved.supports->right[k]) {
+    if (redeposited.table<std::int64_t>("supports")(k, 0) == saved.table<std::int64_t>("supports")(k, 0) &&
+        redeposited.table<std::int64_t>("supports")(k, 1) == saved.table<std::int64_t>("supports")(k, 1)) {
       continue;
     }
     const auto i = static_cast<std::size_t>(k);
@@ -440,7 +440,7 @@ TEST(Disks2dTapPacking, FromFrameRejectsWhatIsNotABedOfDisks) {
   shifted.container.lo.x() = -1.0;
   EXPECT_THROW(dt::DiskPacking::from_frame(shifted, "f"), InputError);
   Frame overlapping = f;
-  overlapping.position.row(1) = overlapping.position.row(0);
+  overlapping.position().row(1) = overlapping.position().row(0);
   EXPECT_THROW(dt::DiskPacking::from_frame(overlapping, "f"), InputError);
   EXPECT_NO_THROW(dt::DiskPacking::from_frame(f, "f"));
 }
@@ -562,14 +562,14 @@ TEST(Disks2dTapSource, SameSeedSameFrames) {
   ASSERT_EQ(a.size(), 2u);
   ASSERT_EQ(b.size(), 2u);
   for (std::size_t k = 0; k < a.size(); ++k) {
-    EXPECT_EQ(a[k].tap, static_cast<std::int64_t>(5 + 2 * k));
-    EXPECT_EQ(a[k].time, 1.3);
+    EXPECT_EQ(a[k].integer_observable("tap").value(), static_cast<std::int64_t>(5 + 2 * k));
+    EXPECT_EQ(a[k].real_observable("amplitude").value(), 1.3);
+    EXPECT_EQ(a[k].time, static_cast<double>(5 + 2 * k));  // time counts taps
     EXPECT_EQ(a[k].dim, 2);
-    EXPECT_TRUE((a[k].position == b[k].position).all());
-    EXPECT_TRUE((a[k].supports->left == b[k].supports->left).all());
-    EXPECT_TRUE((a[k].supports->right == b[k].supports->right).all());
-    EXPECT_FALSE((a[k].position == c[k].position).all());
-    EXPECT_FALSE((a[k].position == d[k].position).all());
+    EXPECT_TRUE((a[k].position() == b[k].position()).all());
+    EXPECT_TRUE((a[k].table<std::int64_t>("supports") == b[k].table<std::int64_t>("supports")).all());
+    EXPECT_FALSE((a[k].position() == c[k].position()).all());
+    EXPECT_FALSE((a[k].position() == d[k].position()).all());
     EXPECT_NO_THROW(a[k].check("frame"));
   }
   EXPECT_EQ(results.scalar("taps").value, 7.0);
@@ -589,9 +589,9 @@ TEST(Disks2dTapSource, AnnealedFramesCarryCycleAndAmplitude) {
   const double amplitudes[] = {1.2, 1.4, 1.2, 1.0};
   const std::int64_t cycles[] = {0, 0, 1, 1};
   for (std::size_t k = 0; k < 4; ++k) {
-    EXPECT_DOUBLE_EQ(frames[k].time, amplitudes[k]);
-    EXPECT_EQ(frames[k].cycle, cycles[k]);
-    EXPECT_EQ(frames[k].tap, static_cast<std::int64_t>(k + 1));
+    EXPECT_DOUBLE_EQ(frames[k].real_observable("amplitude").value(), amplitudes[k]);
+    EXPECT_EQ(frames[k].integer_observable("cycle").value(), cycles[k]);
+    EXPECT_EQ(frames[k].integer_observable("tap").value(), static_cast<std::int64_t>(k + 1));
   }
 }
 
@@ -604,9 +604,9 @@ TEST(Disks2dTapSource, CoolsBeforeTheConstantTaps) {
   granpipe::Results results;
   const auto frames = run_source(params, 9, &results);
   ASSERT_EQ(frames.size(), 2u);
-  EXPECT_EQ(frames[0].tap, 6);  // 2 taps at 1.3 and 2 at 1.2, one to equilibrate
-  EXPECT_EQ(frames[1].tap, 7);
-  EXPECT_EQ(frames[1].time, 1.1);
+  EXPECT_EQ(frames[0].integer_observable("tap").value(), 6);  // 2 taps at 1.3 and 2 at 1.2, one to equilibrate
+  EXPECT_EQ(frames[1].integer_observable("tap").value(), 7);
+  EXPECT_EQ(frames[1].real_observable("amplitude").value(), 1.1);
   EXPECT_EQ(results.scalar("taps").value, 7.0);
 }
 
@@ -674,8 +674,8 @@ TEST(Disks2dTapSource, StartsFromAFrameOfASavedFile) {
   for (const std::int64_t frame : {std::int64_t{0}, std::int64_t{-1}}) {
     const auto frames = from_file({{"initial_frame", frame}});
     ASSERT_EQ(frames.size(), 1u);
-    EXPECT_TRUE((frames[0].radius == saved[0].radius).all());
-    EXPECT_FALSE((frames[0].radius == kR).all());
+    EXPECT_TRUE((frames[0].radius() == saved[0].radius()).all());
+    EXPECT_FALSE((frames[0].radius() == kR).all());
     EXPECT_NO_THROW(frames[0].check("frame"));
   }
   EXPECT_THROW(from_file({{"initial_frame", std::int64_t{2}}}), InputError);  // the file holds 2

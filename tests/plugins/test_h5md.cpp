@@ -32,9 +32,9 @@ class H5mdSourceTest : public ::testing::Test {
     for (long k = 0; k < frames; ++k) {
       Frame f;
       f.resize(3, 2);
-      for (Eigen::Index i = 0; i < 3; ++i) f.position(i, 0) = static_cast<double>(k + i);
-      f.radius.setConstant(0.5);
-      f.velocity = Coordinates::Zero(3, 2);
+      for (Eigen::Index i = 0; i < 3; ++i) f.position()(i, 0) = static_cast<double>(k + i);
+      f.radius().setConstant(0.5);
+      f.add("velocity");
       f.step = 10 * k;
       w.append(f);
     }
@@ -61,7 +61,7 @@ class H5mdSourceTest : public ::testing::Test {
     std::vector<std::int64_t> steps;
     Frame f;
     while (s.next(f)) {
-      EXPECT_EQ(f.position(2, 0), static_cast<double>(f.step / 10 + 2));
+      EXPECT_EQ(f.position()(2, 0), static_cast<double>(f.step / 10 + 2));
       steps.push_back(f.step);
     }
     return steps;
@@ -98,9 +98,10 @@ TEST_F(H5mdSourceTest, ContentComesFromTheFile) {
   auto s = source(write(2), 0, -1, 1);
   const FrameContent c = s->content();
   EXPECT_EQ(c.dim, 2);
-  EXPECT_TRUE(c.velocities);
+  std::vector<std::string> names;
+  for (const auto& p : c.columns) names.push_back(p.name);
+  EXPECT_EQ(names, (std::vector<std::string>{"radius", "id", "species", "velocity"}));
   EXPECT_FALSE(c.contacts);
-  EXPECT_FALSE(c.supports);
 }
 
 TEST_F(H5mdSourceTest, SelectionOutsideTheFileIsAnInputError) {
@@ -135,8 +136,8 @@ fs::path write_pair(const fs::path& dir, double distance) {
   FrameWriter w(p, "{}");
   Frame f;
   f.resize(2, 2);
-  f.position(1, 0) = distance;
-  f.radius.setConstant(0.5);
+  f.position()(1, 0) = distance;
+  f.radius().setConstant(0.5);
   w.append(f);
   w.close();
   return p;

@@ -64,7 +64,7 @@ std::vector<Frame> run(std::map<std::string, ParamValue> set, std::uint64_t seed
 double distance(const Frame& f, Eigen::Index i, Eigen::Index j) {
   double r2 = 0;
   for (int a = 0; a < f.dim; ++a) {
-    double d = f.position(j, a) - f.position(i, a);
+    double d = f.position()(j, a) - f.position()(i, a);
     if (f.container.periodic(a)) d -= f.container.length(a) * std::round(d / f.container.length(a));
     r2 += d * d;
   }
@@ -120,8 +120,8 @@ TEST(Lattice, WallsBoxIsTightAndOpenAtTheTop) {
     EXPECT_EQ(c.boundary[v][1], granpipe::Boundary::Open) << e.name;
     EXPECT_EQ(c.boundary[v][0], granpipe::Boundary::Wall) << e.name;
     for (int a = 0; a < e.dim; ++a) {
-      const double low = (f.position.col(a) - f.radius).minCoeff();
-      const double high = (f.position.col(a) + f.radius).maxCoeff();
+      const double low = (f.position().col(a) - f.radius()).minCoeff();
+      const double high = (f.position().col(a) + f.radius()).maxCoeff();
       EXPECT_NEAR(low, c.lo[a], 1e-12) << e.name << " axis " << a;
       EXPECT_NEAR(high, c.hi[a], 1e-12) << e.name << " axis " << a;
     }
@@ -149,27 +149,27 @@ TEST(Lattice, JitteredFramesNeverOverlap) {
                                {"jitter", 0.4}, {"frames", std::int64_t{3}}});
       ASSERT_EQ(frames.size(), 3u);
       for (const Frame& f : frames) {
-        EXPECT_DOUBLE_EQ(f.radius[0], 0.5 * 0.6);
+        EXPECT_DOUBLE_EQ(f.radius()[0], 0.5 * 0.6);
         double closest = 1e300;
         for (Eigen::Index i = 0; i < f.size(); ++i)
           for (Eigen::Index j = i + 1; j < f.size(); ++j)
-            closest = std::min(closest, distance(f, i, j) - f.radius[i] - f.radius[j]);
+            closest = std::min(closest, distance(f, i, j) - f.radius()[i] - f.radius()[j]);
         EXPECT_GT(closest, 0.0) << name << " " << boundary;
         EXPECT_LT(closest, 0.4) << name << " " << boundary;  // still a dense packing
         for (int a = 0; a < f.dim; ++a) {
           const auto& c = f.container;
           for (Eigen::Index i = 0; i < f.size(); ++i) {
             if (c.periodic(a)) {
-              EXPECT_GE(f.position(i, a), c.lo[a]);
-              EXPECT_LT(f.position(i, a), c.hi[a]);
+              EXPECT_GE(f.position()(i, a), c.lo[a]);
+              EXPECT_LT(f.position()(i, a), c.hi[a]);
             } else {
-              EXPECT_GE(f.position(i, a) - f.radius[i], c.lo[a]);
-              EXPECT_LE(f.position(i, a) + f.radius[i], c.hi[a]);
+              EXPECT_GE(f.position()(i, a) - f.radius()[i], c.lo[a]);
+              EXPECT_LE(f.position()(i, a) + f.radius()[i], c.hi[a]);
             }
           }
         }
       }
-      EXPECT_FALSE(frames[0].position.isApprox(frames[1].position));
+      EXPECT_FALSE(frames[0].position().isApprox(frames[1].position()));
     }
   }
 }
@@ -180,16 +180,16 @@ TEST(Lattice, SameSeedSameFramesOtherSeedOtherFrames) {
                                             {"frames", std::int64_t{2}}};
   const auto a = run(p, 42), b = run(p, 42), c = run(p, 43);
   for (int k = 0; k < 2; ++k) {
-    EXPECT_TRUE((a[k].position == b[k].position).all());
-    EXPECT_FALSE((a[k].position == c[k].position).all());
+    EXPECT_TRUE((a[k].position() == b[k].position()).all());
+    EXPECT_FALSE((a[k].position() == c[k].position()).all());
     EXPECT_EQ(a[k].step, k);
     EXPECT_EQ(a[k].time, k);
-    EXPECT_EQ(a[k].id[5], 5);
-    EXPECT_EQ(a[k].species[5], 0);
+    EXPECT_EQ(a[k].id()[5], 5);
+    EXPECT_EQ(a[k].species()[5], 0);
   }
   // Without jitter the seed plays no part.
   const auto d = run({{"lattice", std::string("hcp")}}, 1), e = run({{"lattice", std::string("hcp")}}, 2);
-  EXPECT_TRUE((d[0].position == e[0].position).all());
+  EXPECT_TRUE((d[0].position() == e[0].position()).all());
 }
 
 }  // namespace

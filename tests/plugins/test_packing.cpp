@@ -121,7 +121,7 @@ TEST(Packing, CoordinationOfExactlyTouchingLattices) {
     const PackingMeasurement touching = measure(f);
     EXPECT_DOUBLE_EQ(touching.z_mean, e.z) << e.name;
     EXPECT_DOUBLE_EQ(touching.z_mean_with_walls, e.z) << e.name;  // no walls
-    f.radius *= 1 - 1e-6;  // a gap a thousand times the tolerance
+    f.radius() *= 1 - 1e-6;  // a gap a thousand times the tolerance
     const PackingMeasurement apart = measure(f);
     EXPECT_EQ(apart.z_mean, 0.0) << e.name;
   }
@@ -267,12 +267,12 @@ Frame stacks(const std::vector<int>& heights, int dim, int side = 0) {
   }
   Frame f;
   f.resize(static_cast<Eigen::Index>(centres.size()), dim);
-  f.radius.setConstant(0.5);
+  f.radius().setConstant(0.5);
   for (std::size_t i = 0; i < centres.size(); ++i) {
     const auto k = static_cast<Eigen::Index>(i);
-    f.position(k, 0) = centres[i][0];
-    if (dim == 3) f.position(k, 1) = centres[i][1];
-    f.position(k, dim - 1) = centres[i][2];
+    f.position()(k, 0) = centres[i][0];
+    if (dim == 3) f.position()(k, 1) = centres[i][1];
+    f.position()(k, dim - 1) = centres[i][2];
   }
   const double w = dim == 2 ? static_cast<double>(heights.size()) : side;
   f.container = granpipe::Container::open_top_box(dim, {0, 0, 0}, {w, dim == 2 ? 20.0 : w, 20});
@@ -321,9 +321,9 @@ TEST(Packing, LowestSurfaceIn3DCountsTheDiscNotItsSquare) {
   centres.push_back({0.6, 0.6, 2.5});
   Frame f;
   f.resize(static_cast<Eigen::Index>(centres.size()), 3);
-  f.radius.setConstant(0.5);
+  f.radius().setConstant(0.5);
   for (std::size_t n = 0; n < centres.size(); ++n)
-    for (int a = 0; a < 3; ++a) f.position(static_cast<Eigen::Index>(n), a) = centres[n][a];
+    for (int a = 0; a < 3; ++a) f.position()(static_cast<Eigen::Index>(n), a) = centres[n][a];
   f.container = granpipe::Container::open_top_box(3, {0, 0, 0}, {4, 2, 20});
   f.check("floor");
   PackingSettings s;
@@ -339,8 +339,8 @@ TEST(Packing, LowestSurfaceSeesAcrossPeriodicSidesAndDownEmptyColumns) {
   // 2, the last one only by the image of the disk at x = 0.
   Frame f;
   f.resize(6, 2);
-  f.position << 0.5, 0.5, 1.5, 0.5, 2.5, 0.5, 3.5, 0.5, 0.0, 1.5, 2.0, 1.5;
-  f.radius.setConstant(0.5);
+  f.position() << 0.5, 0.5, 1.5, 0.5, 2.5, 0.5, 3.5, 0.5, 0.0, 1.5, 2.0, 1.5;
+  f.radius().setConstant(0.5);
   f.container = granpipe::Container::open_top_box(2, {0, 0, 0}, {4, 20, 1});
   f.container.boundary[0] = {granpipe::Boundary::Periodic, granpipe::Boundary::Periodic};
   PackingSettings s;
@@ -425,8 +425,8 @@ TEST(Packing, TooShortPeriodicBoxIsRefusedForContacts) {
 TEST(Packing, OneParticle) {
   Frame f;
   f.resize(1, 3);
-  f.position.row(0) << 1.0, 1.0, 1.0;
-  f.radius[0] = 1.0;
+  f.position().row(0) << 1.0, 1.0, 1.0;
+  f.radius()[0] = 1.0;
   f.container = granpipe::Container::open_top_box(3, {0, 0, 0}, {2, 2, 2});
   const auto m = measure(f);
   EXPECT_NEAR(m.phi, kPi / 6, 1e-14);  // sphere in its bounding cube

@@ -21,10 +21,10 @@ Frame sample(long k, int dim, Eigen::Index n, bool optional_arrays) {
   f.resize(n, dim);
   for (Eigen::Index i = 0; i < n; ++i) {
     for (int a = 0; a < dim; ++a) {
-      f.position(i, a) = static_cast<double>(k) + 0.01 * static_cast<double>(i) + 0.001 * a;
+      f.position()(i, a) = static_cast<double>(k) + 0.01 * static_cast<double>(i) + 0.001 * a;
     }
-    f.radius[i] = 0.5 + 0.01 * static_cast<double>(i);
-    f.species[i] = static_cast<std::int32_t>(i % 2);
+    f.radius()[i] = 0.5 + 0.01 * static_cast<double>(i);
+    f.species()[i] = static_cast<std::int32_t>(i % 2);
   }
   f.step = 10 * k;
   f.time = 0.5 * static_cast<double>(k);
@@ -32,24 +32,24 @@ Frame sample(long k, int dim, Eigen::Index n, bool optional_arrays) {
     f.container = Container::periodic_box(dim, Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones());
     return f;
   }
-  f.tap = k;
-  f.cycle = 2 * k;
-  f.velocity = -f.position;
-  f.angular_velocity = Coordinates::Constant(n, dim == 3 ? 3 : 1, 0.25);
-  f.supports = Supports{IndexArray::Constant(n, partner::none),
-                        IndexArray::Constant(n, partner::wall(Wall::ZLow))};
-  Contacts c;
+  f.set_observable({"tap", Scope::Frame, ValueType::Integer, 1, "", "tap number"}, k);
+  f.set_observable({"cycle", Scope::Frame, ValueType::Integer, 1, "", "half-cycle"}, 2 * k);
+  f.add("velocity").as<Coordinates>() = -f.position();
+  f.add("angular_velocity").as<Coordinates>().setConstant(0.25);
+  auto& supports = f.particles.add<ValueTable<std::int64_t>>(
+      {"supports", Scope::Particle, ValueType::Integer, 2, "", "left, right support"});
+  supports.col(0).setConstant(partner::none);
+  supports.col(1).setConstant(partner::wall(Wall::ZLow));
   const Eigen::Index m = k + 1;  // frame k has k + 1 contacts
-  c.resize(m, dim);
+  PropertyTable& c = f.add_contacts(m);
   for (Eigen::Index q = 0; q < m; ++q) {
-    c.i[q] = q;
-    c.j[q] = q % 2 ? q + 1 : partner::wall(Wall::ZLow);
-    c.overlap[q] = 1e-3;
+    f.contact_i()[q] = q;
+    f.contact_j()[q] = q % 2 ? q + 1 : partner::wall(Wall::ZLow);
   }
-  c.normal_force.setConstant(1.0);
-  c.tangential_force.setZero();
-  c.point.setConstant(0.5);
-  f.contacts = c;
+  c.add<Eigen::ArrayXd>(*find_standard("overlap", Scope::Contact)).setConstant(1e-3);
+  c.add<Coordinates>(*find_standard("normal_force", Scope::Contact)).setConstant(1.0);
+  c.add(*find_standard("tangential_force", Scope::Contact));
+  c.add<Coordinates>(*find_standard("point", Scope::Contact)).setConstant(0.5);
   f.container.shape = ContainerShape::Cylinder;
   f.container.lo = Eigen::Vector3d(-2, -2, 0);
   f.container.hi = Eigen::Vector3d(2, 2, 10);

@@ -1,19 +1,23 @@
 #pragma once
+// One configuration of particles: a particle table, an optional contact table, the
+// container and per-frame observables, each table a set of named, typed columns
+// (property_table.hpp) described by the standard properties or by the plugin that adds
+// them (property.hpp).
 #include <Eigen/Core>
 #include <cstdint>
 #include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
 
 #include "granpipe/container.hpp"
+#include "granpipe/property.hpp"
+#include "granpipe/property_table.hpp"
 
 namespace granpipe {
 
-// N x dim, column-major: each coordinate is one contiguous array (structure of arrays).
-using Coordinates = Eigen::Array<double, Eigen::Dynamic, Eigen::Dynamic>;
-using IndexArray = Eigen::Array<std::int64_t, Eigen::Dynamic, 1>;
-using IntArray = Eigen::Array<std::int32_t, Eigen::Dynamic, 1>;
-
 // What a particle touches or leans on: a particle index (>= 0), nothing, or a wall.
-// One encoding serves contacts and 2D support labels alike.
+// One encoding serves contacts and support labels alike.
 namespace partner {
 constexpr std::int64_t none = -1;
 constexpr std::int64_t wall(Wall w) { return -2 - static_cast<std::int64_t>(w); }
@@ -22,47 +26,79 @@ constexpr bool is_wall(std::int64_t p) { return p <= -2; }
 constexpr Wall wall_of(std::int64_t p) { return static_cast<Wall>(-2 - p); }
 }  // namespace partner
 
-// Contacts of one frame, structure of arrays. Particle-wall contacts have j a wall partner.
-struct Contacts {
-  IndexArray i, j;
-  Eigen::ArrayXd overlap;
-  Coordinates normal_force;      // M x dim
-  Coordinates tangential_force;  // M x dim
-  Coordinates point;             // M x dim
-  Eigen::Index size() const { return i.size(); }
-  void resize(Eigen::Index m, int dim);
-};
-
-// 2D pseudo-dynamics: which particle or wall supports each disk on its left and right.
-struct Supports {
-  IndexArray left, right;  // partner encoding
-};
-
-// One configuration of particles.
 struct Frame {
   int dim = 3;
-  Coordinates position;  // N x dim
-  Eigen::ArrayXd radius;
-  IndexArray id;
-  IntArray species;
-  std::optional<Coordinates> velocity;          // N x dim
-  std::optional<Coordinates> angular_velocity;  // N x 3 in 3D, N x 1 in 2D
+  // position, radius, id and species always, in that order; any other column may follow.
+  PropertyTable particles{Scope::Particle};
+  // i and j always (j a particle or a wall partner); overlap, forces, contact point and
+  // plugin columns as the source provides them.
+  std::optional<PropertyTable> contacts;
+  // One row: tap, cycle, amplitude, energy, ... whatever the source counts per frame.
+  PropertyTable observables{Scope::Frame, 1};
   Container container;
-  std::optional<Contacts> contacts;
-  std::optional<Supports> supports;
   double time = 0.0;
   std::int64_t step = 0;
-  std::int64_t tap = -1;    // tap index of tapped scenes, -1 when not tapped
-  // Cycle of a cyclic protocol, -1 when none. Ramped protocols (annealed tapping) count
-  // half-cycles: 0 the first increase, odd decreasing, even increasing (ramp_means.hpp).
-  std::int64_t cycle = -1;
 
-  Eigen::Index size() const { return position.rows(); }
-  // Sizes every per-particle array to n, ids 0..n-1, species 0; drops optional data.
+  Frame() { resize(0, 3); }
+
+  Eigen::Index size() const { return particles.rows(); }
+  // Sizes the frame to n particles in `dimension` dimensions with the required columns
+  // only (zero positions and radii, ids 0..n-1, species 0); drops every other column,
+  // the contacts and the observables.
   void resize(Eigen::Index n, int dimension);
+
+  // The required columns, by position in the table (no look-up by name).
+  Coordinates& position() { return particles.column(0).as<Coordinates>(); }
+  const Coordinates& position() const { return particles.column(0).as<Coordinates>(); }
+  Eigen::ArrayXd& radius() { return particles.column(1).as<Eigen::ArrayXd>(); }
+  const Eigen::ArrayXd& radius() const { return particles.column(1).as<Eigen::ArrayXd>(); }
+  IndexArray& id() { return particles.column(2).as<IndexArray>(); }
+  const IndexArray& id() const { return particles.column(2).as<IndexArray>(); }
+  IntArray& species() { return particles.column(3).as<IntArray>(); }
+  const IntArray& species() const { return particles.column(3).as<IntArray>(); }
+
+  // Any other per-particle column: has("velocity"), get<double>("voronoi_volume") for
+  // one component, table<double>("velocity") for several.
+  bool has(std::string_view name) const { return particles.has(name); }
+  template <class T>
+  Values<T>& get(std::string_view name) {
+    return particles.get<Values<T>>(name);
+  }
+  template <class T>
+  const Values<T>& get(std::string_view name) const {
+    return particles.get<Values<T>>(name);
+  }
+  template <class T>
+  ValueTable<T>& table(std::string_view name) {
+    return particles.get<ValueTable<T>>(name);
+  }
+  template <class T>
+  const ValueTable<T>& table(std::string_view name) const {
+    return particles.get<ValueTable<T>>(name);
+  }
+  // Adds a standard particle column (velocity, angular_velocity, force, ...) zero-filled.
+  Column& add(std::string_view standard_name);
+
+  // A contact table of m rows with i and j, replacing any earlier one.
+  PropertyTable& add_contacts(Eigen::Index m);
+  IndexArray& contact_i() { return contacts->column(0).as<IndexArray>(); }
+  const IndexArray& contact_i() const { return contacts->column(0).as<IndexArray>(); }
+  IndexArray& contact_j() { return contacts->column(1).as<IndexArray>(); }
+  const IndexArray& contact_j() const { return contacts->column(1).as<IndexArray>(); }
+
+  // Per-frame observables: set (adding it when new) and read back (nothing when absent).
+  void set_observable(const Property& p, double value);
+  void set_observable(const Property& p, std::int64_t value);
+  std::optional<double> real_observable(std::string_view name) const;
+  std::optional<std::int64_t> integer_observable(std::string_view name) const;
+
   // Throws InputError naming `where` on NaN/inf positions or radii, non-positive radii,
-  // or inconsistent array sizes.
+  // missing required columns, columns of the wrong type or size, or contacts naming a
+  // particle that does not exist.
   void check(const std::string& where) const;
+  // The structural part of check(): dimension, required columns, every column's rows and
+  // components. Values are not looked at (a frame store keeps NaNs as given).
+  void check_layout(const std::string& where) const;
 };
 
 }  // namespace granpipe

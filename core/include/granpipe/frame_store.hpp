@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "granpipe/frame.hpp"
 
@@ -18,8 +20,11 @@ struct FrameFileInfo {
   int dim = 0;
   bool complete = true;           // false: the writer never closed it (killed or crashed)
   bool granpipe_file = false;     // written by granpipe (has the extension groups)
-  bool has_velocity = false, has_angular_velocity = false, has_contacts = false,
-       has_supports = false, has_radius = false;
+  // What each frame holds beyond positions: particle columns (radius, velocity, a
+  // plugin's own), per-frame observables, and the contact columns (when it has contacts).
+  std::vector<Property> columns, observables, contact_columns;
+  bool has_contacts = false;
+  bool has(std::string_view column) const;
   std::string creator;            // /h5md/creator name and version
 };
 

@@ -21,12 +21,14 @@
 
 namespace granpipe {
 
-// What a source's frames carry. dim 0 means "either".
+// What a source's frames carry beyond the required columns (position, radius, id,
+// species), or what an analyzer needs of them. dim 0 means "either". `columns` lists
+// particle, contact and per-frame (observable) properties; a contact column implies
+// contacts.
 struct FrameContent {
   int dim = 0;
-  bool velocities = false;
   bool contacts = false;
-  bool supports = false;
+  std::vector<Property> columns{};
 };
 
 // Everything a plugin instance gets when it is made: its validated parameters, its own
@@ -80,6 +82,13 @@ class Analyzer {
   virtual FrameContent needs() const { return {}; }
   virtual void consume(const Frame& frame, FrameCache& cache) = 0;
   virtual void finish(Results& results) = 0;
+
+  // Per-particle columns this analyzer adds to each frame (arch membership, a local
+  // packing fraction): analyzers after it in the pipeline, and the writers, see them.
+  virtual std::vector<Property> publishes() const { return {}; }
+  // Called right after consume() when publishes() is not empty: fill `columns` (a table
+  // of the frame's particles holding exactly the declared columns, zero-filled).
+  virtual void publish(PropertyTable& /*columns*/) {}
 };
 
 enum class PluginKind : std::uint8_t { Source, Analyzer };

@@ -1,10 +1,11 @@
 #pragma once
-// Per-frame quantities of a ramped protocol averaged per branch and control value. In a
-// ramped run (annealed tapping) a frame's `time` holds the control value (the amplitude A)
-// and its `cycle` the half-cycle: 0 the first increase, odd ones decreasing, even ones
-// (from 2 on) increasing. The paper's Fig. 8 keeps the first increase apart and pools the
-// later increasing and decreasing ramps, each over all its cycles: that is one row per
-// (branch, time) here. Memory grows with the distinct (branch, time) pairs, not with frames.
+// Per-frame quantities of a ramped protocol averaged per branch and control value, for
+// the analyzers that opt in. A ramped source (annealed tapping) stores two observables
+// per frame: the control value (the amplitude A) and the half-cycle `cycle`: 0 the first
+// increase, odd ones decreasing, even ones (from 2 on) increasing. The 2D paper's Fig. 8
+// keeps the first increase apart and pools the later increasing and decreasing ramps,
+// each over all its cycles: that is one row per (branch, control value) here. Memory
+// grows with the distinct (branch, value) pairs, not with frames.
 #include <cstdint>
 #include <map>
 #include <string>
@@ -22,16 +23,20 @@ RampBranch ramp_branch(std::int64_t cycle);
 
 class RampMeans {
  public:
-  explicit RampMeans(std::vector<std::string> quantities) : names_(std::move(quantities)) {}
-  // Adds one frame's values (one per quantity); frames without a cycle (cycle < 0) are ignored.
+  explicit RampMeans(std::vector<std::string> quantities, std::string control = "amplitude")
+      : names_(std::move(quantities)), control_(std::move(control)) {}
+  // Adds one frame's values (one per quantity); frames without a cycle and a control
+  // value among their observables are ignored.
   void add(const Frame& frame, const std::vector<double>& values);
   bool empty() const { return means_.empty(); }
-  // Columns: branch (0 first increase, 1 decreasing, 2 increasing), time, frames, then each
+  // Columns: branch (0 first increase, 1 decreasing, 2 increasing), the control value
+  // (named after its observable), frames, then each
   // quantity and its standard error.
   Table table(const std::string& doc) const;
 
  private:
   std::vector<std::string> names_;
+  std::string control_;
   std::map<std::pair<RampBranch, double>, std::vector<RunningMean>> means_;
 };
 

@@ -8,7 +8,7 @@ class RadiusStats : public granpipe::Analyzer {
   explicit RadiusStats(const granpipe::PluginContext& ctx) : scale_(ctx.params.real("scale")) {}
 
   void consume(const granpipe::Frame& frame, granpipe::FrameCache&) override {
-    if (frame.size() > 0) radius_.add(scale_ * frame.radius.mean());
+    if (frame.size() > 0) radius_.add(scale_ * frame.radius().mean());
     count_.add(static_cast<double>(frame.size()));
   }
 

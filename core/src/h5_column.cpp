@@ -1,0 +1,106 @@
+#include "h5_column.hpp"
+
+#include <type_traits>
+
+namespace granpipe::h5 {
+
+namespace {
+
+const char* const kComponentsAttr = "granpipe_components";
+const char* const kUnitAttr = "unit";
+const char* const kDocAttr = "description";
+
+template <class T>
+hid_t memory_type() {
+  if constexpr (std::is_same_v<T, double>) return H5T_NATIVE_DOUBLE;
+  if constexpr (std::is_same_v<T, std::int64_t>) return H5T_NATIVE_INT64;
+  if constexpr (std::is_same_v<T, std::int32_t>) return H5T_NATIVE_INT32;
+}
+
+template <class T>
+using RowMajor = Eigen::Array<T, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+}  // namespace
+
+hid_t file_type(ValueType t) {
+  switch (t) {
+    case ValueType::Real: return H5T_IEEE_F64LE;
+    case ValueType::Integer: return H5T_STD_I64LE;
+    case ValueType::Small: return H5T_STD_I32LE;
+  }
+  return H5T_IEEE_F64LE;
+}
+
+ValueType value_type_of(hid_t dataset, const std::string& path) {
+  Object type = owned(H5Dget_type(dataset), path + ": cannot read the type");
+  switch (H5Tget_class(type.id())) {
+    case H5T_FLOAT: return ValueType::Real;
+    case H5T_INTEGER: return H5Tget_size(type.id()) > 4 ? ValueType::Integer : ValueType::Small;
+    case H5T_ENUM: return ValueType::Small;
+    default: throw Error(path + ": expected numbers, got another HDF5 type");
+  }
+}
+
+Shape item_shape(const Column& c) {
+  if (c.property().components == 1) return {};
+  return {static_cast<hsize_t>(c.components())};
+}
+
+void append_column(hid_t dataset, const std::string& path, const Column& c, hsize_t rows) {
+  std::visit(
+      [&](const auto& a) {
+        using A = std::decay_t<decltype(a)>;
+        using T = typename A::Scalar;
+        if constexpr (A::ColsAtCompileTime == 1) {
+          append_rows(dataset, path, memory_type<T>(), a.data(), rows);
+        } else {
+          const RowMajor<T> rows_first = a;  // HDF5 stores C order, Eigen column by column
+          append_rows(dataset, path, memory_type<T>(), rows_first.data(), rows);
+        }
+      },
+      c.storage());
+}
+
+void read_column(hid_t dataset, const std::string& path, hsize_t first, hsize_t count,
+                 Column& c) {
+  std::visit(
+      [&](auto& a) {
+        using A = std::decay_t<decltype(a)>;
+        using T = typename A::Scalar;
+        if constexpr (A::ColsAtCompileTime == 1) {
+          read_rows(dataset, path, memory_type<T>(), first, count, a.data());
+        } else {
+          RowMajor<T> rows_first(a.rows(), a.cols());
+          read_rows(dataset, path, memory_type<T>(), first, count, rows_first.data());
+          a = rows_first;
+        }
+      },
+      c.storage());
+}
+
+void write_property_attributes(hid_t dataset, const Property& p) {
+  write_attribute(dataset, kComponentsAttr, p.components);
+  if (!p.unit.empty()) write_attribute(dataset, kUnitAttr, p.unit);
+  if (!p.doc.empty()) write_text_attribute(dataset, kDocAttr, p.doc);
+}
+
+Property read_property(hid_t dataset, const std::string& path, const std::string& name,
+                       Scope scope, const Shape& item, int dim) {
+  if (const Property* p = find_standard(name, scope)) return *p;
+  Property p{name, scope, value_type_of(dataset, path), 1, "", ""};
+  if (has_attribute(dataset, kComponentsAttr)) {
+    p.components = static_cast<int>(read_integer_attribute(dataset, path, kComponentsAttr).at(0));
+  } else if (item.size() == 1) {
+    p.components = static_cast<int>(item[0]);
+  }
+  if (item.size() > 1 || (item.empty() != (p.components == 1)) ||
+      (!item.empty() && static_cast<int>(item[0]) != p.components_in(dim))) {
+    throw Error(path + ": expected one value or one vector per " + std::string(to_string(scope)) +
+                ", got rows of shape " + format_shape(item));
+  }
+  if (has_attribute(dataset, kUnitAttr)) p.unit = read_string_attribute(dataset, path, kUnitAttr).at(0);
+  if (has_attribute(dataset, kDocAttr)) p.doc = read_string_attribute(dataset, path, kDocAttr).at(0);
+  return p;
+}
+
+}  // namespace granpipe::h5
