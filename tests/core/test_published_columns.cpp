@@ -1,0 +1,144 @@
+// Columns that plugins add: published by an analyzer, seen by the analyzers after it,
+// written to frames.h5, read back by the h5md source, and refused before a run when an
+// analyzer needs one that nobody provides.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+
+#include "granpipe/frame_store.hpp"
+#include "granpipe/pipeline.hpp"
+#include "granpipe/plugin_loader.hpp"
+
+using namespace granpipe;
+namespace fs = std::filesystem;
+
+namespace {
+
+const Property kLabel{"label", Scope::Particle, ValueType::Integer, 1, "", "particle index times 3"};
+
+// A fixed frame of 5 particles along x, one per frame.
+class LineSource : public Source {
+ public:
+  explicit LineSource(const PluginContext&) {}
+  FrameContent content() const override { return {.dim = 3}; }
+  bool next(Frame& f) override {
+    if (emitted_ == 2) return false;
+    f.resize(5, 3);
+    f.container = Container::periodic_box(3, Eigen::Vector3d::Zero(), Eigen::Vector3d(10, 3, 3));
+    for (Eigen::Index i = 0; i < 5; ++i) f.position()(i, 0) = 2.0 * static_cast<double>(i);
+    f.radius().setConstant(0.5);
+    f.step = emitted_++;
+    return true;
+  }
+
+ private:
+  std::int64_t emitted_ = 0;
+};
+
+// Publishes label = 3 * index, computed in consume as a real analyzer would.
+class Labeller : public Analyzer {
+ public:
+  explicit Labeller(const PluginContext&) {}
+  void consume(const Frame& f, FrameCache&) override {
+    labels_ = 3 * IndexArray::LinSpaced(f.size(), 0, f.size() - 1);
+  }
+  void finish(Results&) override {}
+  std::vector<Property> publishes() const override { return {kLabel}; }
+  void publish(PropertyTable& columns) override { columns.get<IndexArray>("label") = labels_; }
+
+ private:
+  IndexArray labels_;
+};
+
+// Needs the label column and reports the sum of labels over all frames it saw.
+class LabelSum : public Analyzer {
+ public:
+  explicit LabelSum(const PluginContext&) {}
+  FrameContent needs() const override { return {.columns = {kLabel}}; }
+  void consume(const Frame& f, FrameCache&) override { sum_ += f.get<std::int64_t>("label").sum(); }
+  void finish(Results& r) override { r.add_scalar("label_sum", static_cast<double>(sum_)); }
+
+ private:
+  std::int64_t sum_ = 0;
+};
+
+Registry registry_with_h5md() {
+  Registry r;
+  load_plugins(r, plugin_search_path());  // the real h5md source
+  r.add_source<LineSource>("line", "five particles on a line", Schema{});
+  r.add_analyzer<Labeller>("labeller", "publishes label", Schema{});
+  r.add_analyzer<LabelSum>("label_sum", "sums label", Schema{});
+  return r;
+}
+
+fs::path fresh_dir(const std::string& name) {
+  fs::path d = fs::temp_directory_path() /
+               ("granpipe_test_columns_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(d);
+  return d;
+}
+
+double run_label_sum(const std::string& text, const Registry& r, const fs::path& out) {
+  const Pipeline p = Pipeline::parse(text, "p.json", {}, r);
+  Log log;
+  log.set_quiet(true);
+  RunOptions o;
+  o.progress = false;
+  o.out = out;
+  return p.run(o, log).results.at("label_sum").scalar("label_sum").value;
+}
+
+}  // namespace
+
+TEST(PublishedColumns, SeenByLaterAnalyzersWrittenAndReadBackByTheH5mdSource) {
+  const Registry r = registry_with_h5md();
+  const fs::path first = fresh_dir("first"), second = fresh_dir("second");
+  // 2 frames x (0 + 3 + 6 + 9 + 12)
+  EXPECT_EQ(run_label_sum(R"({"source": {"plugin": "line"},
+      "analyzers": [{"plugin": "labeller"}, {"plugin": "label_sum"}]})", r, first), 60.0);
+
+  FrameReader saved(first / "frames.h5");
+  ASSERT_TRUE(saved.info().has("label"));
+  const Frame f = saved.read(1);
+  EXPECT_EQ(f.get<std::int64_t>("label")[4], 12);
+  EXPECT_EQ(f.particles.find("label")->property().doc, kLabel.doc);
+
+  const std::string reprocess = R"({"source": {"plugin": "h5md", "params": {"file": ")" +
+                                (first / "frames.h5").string() +
+                                R"("}}, "analyzers": [{"plugin": "label_sum"}]})";
+  EXPECT_EQ(run_label_sum(reprocess, r, second), 60.0);
+  fs::remove_all(first);
+  fs::remove_all(second);
+}
+
+TEST(PublishedColumns, PipelineOrderDecidesWhoSeesAColumn) {
+  const Registry r = registry_with_h5md();
+  const Pipeline p = Pipeline::parse(R"({"source": {"plugin": "line"},
+      "analyzers": [{"plugin": "label_sum"}, {"plugin": "labeller"}]})", "p.json", {}, r);
+  Log log;
+  log.set_quiet(true);
+  try {
+    p.check(log);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "p.json: analyzers[0]: analyzer \"label_sum\" needs particle column "
+                           "\"label\", which neither the source nor an analyzer before it provides "
+                           "(source \"line\")");
+  }
+}
+
+TEST(PublishedColumns, AColumnTheFramesCarryCannotBePublishedAgain) {
+  const Registry r = registry_with_h5md();
+  const Pipeline p = Pipeline::parse(R"({"source": {"plugin": "line"},
+      "analyzers": [{"plugin": "labeller"}, {"plugin": "labeller", "name": "again"}]})", "p.json", {}, r);
+  Log log;
+  log.set_quiet(true);
+  try {
+    p.check(log);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "p.json: analyzers[1]: analyzer \"labeller\" publishes the column "
+                           "\"label\", which the frames already carry");
+  }
+}
