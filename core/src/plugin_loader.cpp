@@ -50,11 +50,24 @@ void load_library(Registry& registry, const fs::path& file) {
     dlclose(handle);
     return;
   }
+  // Before ABI 2 the descriptor had another layout: only its first field can be read.
+  const bool readable = entry->abi_version >= 2;
   if (entry->abi_version != GRANPIPE_ABI_VERSION || !same_minor_version(entry->core_version)) {
     std::ostringstream why;
-    why << "was built against granpipe " << (entry->core_version ? entry->core_version : "?")
-        << " (plugin ABI " << entry->abi_version << "), but this is granpipe " << GRANPIPE_VERSION
-        << " (plugin ABI " << GRANPIPE_ABI_VERSION << "): rebuild the plugin against this version";
+    why << "was built against granpipe "
+        << (readable && entry->core_version ? entry->core_version : "of another version")
+        << " (plugin ABI " << (entry->abi_version & 0xffffffffu) << "), but this is granpipe "
+        << GRANPIPE_VERSION << " (plugin ABI " << GRANPIPE_ABI_VERSION
+        << "): rebuild the plugin against this version";
+    registry.refuse(file.string(), why.str());
+    dlclose(handle);
+    return;
+  }
+  if (entry->layout_fingerprint != kLayoutFingerprint) {
+    std::ostringstream why;
+    why << "was built against granpipe headers whose public types have another memory layout "
+        << "(layout fingerprint " << std::hex << entry->layout_fingerprint << ", this granpipe "
+        << kLayoutFingerprint << "): rebuild the plugin against this version";
     registry.refuse(file.string(), why.str());
     dlclose(handle);
     return;

@@ -7,4 +7,4 @@
 static void register_nothing(granpipe::Registry&) { std::abort(); }
 
 extern "C" __attribute__((visibility("default"))) const granpipe_plugin_entry granpipe_plugin = {
-    GRANPIPE_ABI_VERSION + 1, "99.0.0", &register_nothing};
+    GRANPIPE_ABI_VERSION + 1, granpipe::kLayoutFingerprint, "99.0.0", &register_nothing};

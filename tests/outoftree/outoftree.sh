@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # outoftree.sh BUILD_DIR SOURCE_DIR WORKDIR
 # Installs granpipe, builds example_plugin/ against it with find_package(granpipe),
-# loads it through GRANPIPE_PLUGIN_PATH and runs it in a pipeline.
+# loads it through GRANPIPE_PLUGIN_PATH and runs it in a pipeline whose frames.h5 must
+# hold the column the plugin publishes.
 set -euo pipefail
 build=$1 src=$2 work=$3
 rm -rf "$work"
@@ -20,4 +21,8 @@ JSON
 csv="$work/out/radius_stats.scalars.csv"
 grep -q "^mean_radius,0.5," "$csv" || { echo "FAIL: mean_radius is not 2 x 0.25:"; cat "$csv"; exit 1; }
 grep -q "^particles,27," "$csv" || { echo "FAIL: expected 27 particles:"; cat "$csv"; exit 1; }
+# The published column is in frames.h5, with its type, unit and description.
+"$work/prefix/bin/granpipe" inspect "$work/out/frames.h5" >"$work/inspect.txt"
+grep -Eq "^  scaled_radius +real +length +particle radius times scale$" "$work/inspect.txt" ||
+  { echo "FAIL: frames.h5 lacks the published column scaled_radius:"; cat "$work/inspect.txt"; exit 1; }
 echo "out-of-tree plugin built with find_package(granpipe), loaded and run"

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "granpipe/abi_fingerprint.hpp"
 #include "granpipe/errors.hpp"
 #include "granpipe/frame.hpp"
 #include "granpipe/frame_cache.hpp"
@@ -142,9 +143,12 @@ class Registry {
 }  // namespace granpipe
 
 // The one exported symbol of a plugin library: a plain descriptor the loader reads
-// (ABI version first) before it calls anything in the library.
+// (ABI version first, then the layout of the public types) before it calls anything in
+// the library. Every field is 8 bytes, so that the loader reads it right whatever packing
+// the plugin was compiled with; from ABI 2 on the first three fields never change.
 extern "C" struct granpipe_plugin_entry {
-  std::uint32_t abi_version;
+  std::uint64_t abi_version;
+  std::uint64_t layout_fingerprint;  // granpipe::kLayoutFingerprint as the plugin saw it
   const char* core_version;
   void (*register_plugins)(granpipe::Registry&);
 };
@@ -154,6 +158,7 @@ extern "C" struct granpipe_plugin_entry {
 #define GRANPIPE_PLUGIN(registry)                                                  \
   static void granpipe_register_plugins(granpipe::Registry& registry);             \
   extern "C" __attribute__((visibility("default"))) const granpipe_plugin_entry   \
-      granpipe_plugin = {GRANPIPE_ABI_VERSION, GRANPIPE_VERSION,                   \
+      granpipe_plugin = {GRANPIPE_ABI_VERSION, granpipe::kLayoutFingerprint,         \
+                         GRANPIPE_VERSION,                                         \
                          &granpipe_register_plugins};                              \
   static void granpipe_register_plugins(granpipe::Registry& registry)

@@ -1,4 +1,5 @@
-// Mean particle radius and particle count per frame: the smallest useful analyzer.
+// Mean particle radius and particle count per frame, and each particle's scaled radius
+// published as a column: the smallest useful analyzer.
 #include <granpipe/plugin.hpp>
 
 namespace {
@@ -10,6 +11,13 @@ class RadiusStats : public granpipe::Analyzer {
   void consume(const granpipe::Frame& frame, granpipe::FrameCache&) override {
     if (frame.size() > 0) radius_.add(scale_ * frame.radius().mean());
     count_.add(static_cast<double>(frame.size()));
+    scaled_ = scale_ * frame.radius();
+  }
+
+  // A per-particle result that later analyzers and frames.h5 see.
+  std::vector<granpipe::Property> publishes() const override { return {scaled_radius()}; }
+  void publish(granpipe::PropertyTable& columns) override {
+    columns.get<Eigen::ArrayXd>("scaled_radius") = scaled_;
   }
 
   void finish(granpipe::Results& results) override {
@@ -18,8 +26,13 @@ class RadiusStats : public granpipe::Analyzer {
   }
 
  private:
+  static granpipe::Property scaled_radius() {
+    return {"scaled_radius", granpipe::Scope::Particle, granpipe::ValueType::Real, 1, "length",
+            "particle radius times scale"};
+  }
   double scale_;
   granpipe::RunningMean radius_, count_;
+  Eigen::ArrayXd scaled_;
 };
 
 granpipe::Schema schema() {
