@@ -10,6 +10,7 @@
 
 #include "granpipe/frame_store.hpp"
 #include "output_directory.hpp"
+#include "result_stream.hpp"
 #include "pipeline_impl.hpp"
 
 namespace granpipe {
@@ -57,17 +58,31 @@ fs::path point_directory(const Pipeline::Impl& p, std::size_t k, const fs::path&
   return out / buf;
 }
 
+std::string point_prefix(const Pipeline::Impl& p, std::size_t k) {
+  if (p.points.size() == 1) return "";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "point_%03zu/", k);
+  return buf;
+}
+
 PointPlugins make_plugins(const Pipeline::Impl& p, std::size_t k, int threads, Log& log,
-                          Progress& progress, const fs::path& out) {
+                          Progress& progress, const fs::path& out, ResultStreams* streams) {
   const fs::path dir = point_directory(p, k, out);
   const PointSpec& point = p.points[k];
   const Seeds seeds = Seeds(p.seed).derive("point", k);
   PointPlugins made;
   // Plugins check what the schema cannot (one parameter against another, a file's
   // content); their messages name the parameter (ctx.param) and get the file in front.
+  auto context = [&](const Params& params, Seeds s, const std::string& name,
+                     const std::string& params_path) {
+    PluginContext c{params, s, threads, log, progress, dir, name, params_path};
+    c.streams = streams;
+    c.results_group = point_prefix(p, k) + name;
+    return c;
+  };
   try {
-    made.source = p.source->make_source({point.source_params, seeds.derive("source:" + p.source->name),
-                                         threads, log, progress, dir, "source", "source.params"});
+    made.source = p.source->make_source(context(
+        point.source_params, seeds.derive("source:" + p.source->name), "source", "source.params"));
   } catch (const InputError& e) {
     throw InputError(p.origin + ": " + e.what());
   }
@@ -76,8 +91,8 @@ PointPlugins make_plugins(const Pipeline::Impl& p, std::size_t k, int threads, L
     const AnalyzerSpec& spec = p.analyzers[a];
     try {
       made.analyzers.push_back(spec.info->make_analyzer(
-          {point.analyzer_params[a], seeds.derive("analyzer:" + spec.name), threads, log, progress, dir,
-           spec.name, "analyzers[" + std::to_string(a) + "].params"}));
+          context(point.analyzer_params[a], seeds.derive("analyzer:" + spec.name), spec.name,
+                  "analyzers[" + std::to_string(a) + "].params")));
     } catch (const InputError& e) {
       throw InputError(p.origin + ": " + e.what());
     }
@@ -112,13 +127,6 @@ void publish_columns(Analyzer& analyzer, Frame& frame) {
     }
     frame.particles.add(c.property()).storage() = std::move(c.storage());
   }
-}
-
-std::string point_prefix(const Pipeline::Impl& p, std::size_t k) {
-  if (p.points.size() == 1) return "";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "point_%03zu/", k);
-  return buf;
 }
 
 struct PointOutcome {
@@ -248,7 +256,9 @@ std::string utc_now() {
 void Pipeline::check(Log& log) const {
   Progress quiet;
   quiet.set_enabled(false);
-  for (std::size_t k = 0; k < impl_->points.size(); ++k) make_plugins(*impl_, k, 1, log, quiet, {});
+  for (std::size_t k = 0; k < impl_->points.size(); ++k) {
+    make_plugins(*impl_, k, 1, log, quiet, {}, nullptr);
+  }
 }
 
 RunSummary Pipeline::run(const RunOptions& options, Log& log) const {
@@ -268,10 +278,11 @@ RunSummary Pipeline::run(const RunOptions& options, Log& log) const {
   Progress progress;
   progress.set_enabled(options.progress);
   std::vector<PointPlugins> plugins;
+  ResultStream stream;
   double total_work = 0;
   std::string unit = "frames";
   for (std::size_t k = 0; k < p.points.size(); ++k) {
-    plugins.push_back(make_plugins(p, k, per_point, log, progress, summary.output_dir));
+    plugins.push_back(make_plugins(p, k, per_point, log, progress, summary.output_dir, &stream));
     const Source::Work w = plugins.back().source->work();
     total_work += w.total;
     unit = w.unit;
@@ -282,6 +293,9 @@ RunSummary Pipeline::run(const RunOptions& options, Log& log) const {
     fs::create_directories(point_directory(p, k, summary.output_dir));
   log.open_file((summary.output_dir / "run.log").string());
   write_file_atomically(summary.output_dir / "pipeline.json", resolved_json() + "\n");
+  // Until the run ends, results.h5 holds the streamed tables and says it is incomplete.
+  stream.open(summary.output_dir / "results.h5",
+              {p.name, resolved_json(), version(), git_commit(), p.seed, threads, 0.0, started, false});
   log.info("granpipe " + std::string(version()) + " (" + git_commit() + "): " + p.name + ", " +
            std::to_string(p.points.size()) + " point(s), seed " + std::to_string(p.seed) + ", " +
            std::to_string(threads) + " thread(s), output " + summary.output_dir.string());
@@ -306,6 +320,7 @@ RunSummary Pipeline::run(const RunOptions& options, Log& log) const {
   worker();
   for (auto& t : pool) t.join();
   progress.finish();
+  stream.close();
   for (auto& e : errors)
     if (e) std::rethrow_exception(e);
 

@@ -12,6 +12,7 @@
 #include "h5_dataset.hpp"
 #include "h5_object.hpp"
 #include "output_directory.hpp"
+#include "result_stream.hpp"
 
 namespace granpipe {
 namespace fs = std::filesystem;
@@ -159,6 +160,18 @@ void write_csvs(const fs::path& dir, const std::string& group, const Results& r,
 
 }  // namespace
 
+void write_provenance(hid_t file, const Provenance& provenance) {
+  write_text_attribute(file, "granpipe_version", provenance.version);
+  write_text_attribute(file, "git_commit", provenance.commit);
+  write_attribute(file, "seed", provenance.seed);
+  write_attribute(file, "threads", provenance.threads);
+  write_attribute(file, "wall_seconds", provenance.wall_seconds);
+  write_text_attribute(file, "started", provenance.started);
+  write_attribute(file, "complete", static_cast<int>(provenance.complete));
+  write_text_attribute(file, "pipeline", provenance.pipeline_json);
+  write_text_attribute(file, "pipeline_name", provenance.pipeline_name);
+}
+
 void write_results(const fs::path& dir, const ResultSet& results, const Provenance& provenance) {
   const fs::path final_path = dir / "results.h5", tmp = dir / "results.h5.tmp";
   {
@@ -166,15 +179,7 @@ void write_results(const fs::path& dir, const ResultSet& results, const Provenan
     const Object file_object = owned(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT),
                                      tmp.string() + ": cannot create");
     const hid_t file = file_object.id();
-    write_text_attribute(file, "granpipe_version", provenance.version);
-    write_text_attribute(file, "git_commit", provenance.commit);
-    write_attribute(file, "seed", provenance.seed);
-    write_attribute(file, "threads", provenance.threads);
-    write_attribute(file, "wall_seconds", provenance.wall_seconds);
-    write_text_attribute(file, "started", provenance.started);
-    write_attribute(file, "complete", static_cast<int>(provenance.complete));
-    write_text_attribute(file, "pipeline", provenance.pipeline_json);
-    write_text_attribute(file, "pipeline_name", provenance.pipeline_name);
+    write_provenance(file, provenance);
     for (const auto& [group, r] : results) write_group(file, group, r);
     H5Fflush(file, H5F_SCOPE_GLOBAL);
   }

@@ -99,4 +99,9 @@ double RunningMean::standard_error() const {
   return n_ > 1 ? std::sqrt(variance() / static_cast<double>(n_)) : std::nan("");
 }
 
+void StreamedTable::add_row(const std::vector<double>& row) {
+  table_.add_row(row);
+  if (streams_) streams_->append(id_, row);
+}
+
 }  // namespace granpipe

@@ -57,8 +57,8 @@ ArchesAnalyzer::ArchesAnalyzer(const PluginContext& ctx)
       span_bin_(ctx.params.real("span_bin")),
       svg_frames_(static_cast<long>(ctx.params.integer("svg_frames"))),
       span_all_(span_bin_),
-      per_frame_(kPerFrameColumns, "per-frame values of the arch analysis") {
-  per_frame_.units.assign(kPerFrameColumns.size(), "");
+      per_frame_(ctx.stream_table("per_frame",
+                                  Table(kPerFrameColumns, "per-frame values of the arch analysis"))) {
   std::set<std::int64_t> seen;
   for (std::int64_t s : ctx.params.integers("span_sizes")) {
     if (!seen.insert(s).second) {
@@ -198,7 +198,7 @@ void ArchesAnalyzer::finish(Results& results) {
                         span_all_.density(xlabel, "span distribution n(x) over all arches (" +
                                                        std::to_string(span_all_.total()) +
                                                        " arches)"));
-  results.add_table("per_frame", per_frame_);
+  results.add_table("per_frame", per_frame_.table());
   if (!by_ramp_.empty()) {
     results.add_table("by_ramp", by_ramp_.table("per ramp branch (0 first increase, 1 decreasing, "
                                                 "2 increasing) and time (annealed tapping: the "

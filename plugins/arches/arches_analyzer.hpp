@@ -43,7 +43,7 @@ class ArchesAnalyzer : public Analyzer {
   std::vector<RunningMean> n_per_particle_;  // index s
   std::vector<std::pair<long, SpanHistogram>> span_by_size_;
   SpanHistogram span_all_;
-  Table per_frame_;
+  StreamedTable per_frame_;
   RampMeans by_ramp_{{"z_support_eq4", "z_support_direct", "arches_per_particle"}};
 };
 

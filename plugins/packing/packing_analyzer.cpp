@@ -163,7 +163,11 @@ PackingMeasurement measure_packing(const Frame& frame, FrameCache& cache,
   return m;
 }
 
-PackingAnalyzer::PackingAnalyzer(const PluginContext& ctx) : log_(ctx.log) {
+PackingAnalyzer::PackingAnalyzer(const PluginContext& ctx)
+    : log_(ctx.log),
+      per_frame_(ctx.stream_table(
+          "per_frame", Table({"frame", "step", "time", "phi", "number_density", "z_mean"},
+                             "per-frame packing fraction, number density and coordination"))) {
   const Params& p = ctx.params;
   settings_.tolerance = p.real("tolerance");
   settings_.exclude_bottom = p.real("exclude_bottom");
@@ -192,6 +196,8 @@ void PackingAnalyzer::consume(const Frame& frame, FrameCache& cache) {
     z_walls_.add(m.z_mean_with_walls);
   }
   by_ramp_.add(frame, {m.phi, m.z_mean});
+  per_frame_.add_row({static_cast<double>(frames_), static_cast<double>(frame.step), frame.time,
+                      m.phi, m.number_density, m.centres > 0 ? m.z_mean : std::nan("")});
   if (settings_.cuts_step > 0.0) phi_cuts_.add(m.phi_cuts);
   if (settings_.profile_step > 0.0) {
     // Heights a frame does not reach (above its surface) have an empty cut: zeros, so
@@ -215,10 +221,10 @@ void PackingAnalyzer::finish(Results& results) {
   results.add_mean("z_mean_with_walls", z_walls_, "", "z_mean with particle-wall contacts counted");
   if (!by_ramp_.empty()) {
     results.add_table("by_ramp", by_ramp_.table("phi and z_mean per ramp branch (0 first increase, "
-                                                "1 decreasing, 2 increasing) and time (annealed "
-                                                "tapping: the amplitude A), pooled over cycles"));
+                                                "1 decreasing, 2 increasing) and the tap amplitude "
+                                                "A, pooled over cycles"));
     results.add_plot("by_ramp", {.table = "by_ramp", .x = "amplitude", .y = {"phi"},
-                                 .xlabel = "frame time (annealed tapping: amplitude A)",
+                                 .xlabel = "tap amplitude A",
                                  .ylabel = "packing fraction",
                                  .title = "packing fraction on the ramp branches"});
   }
@@ -226,6 +232,7 @@ void PackingAnalyzer::finish(Results& results) {
     results.add_mean("phi_cuts", phi_cuts_, "",
          "mean area fraction of horizontal cuts through the region (stereological estimate of phi)");
   }
+  results.add_table("per_frame", per_frame_.table());
   results.add_scalar("frames", static_cast<double>(frames_), std::nan(""), "",
                      "frames measured (frames without particles are skipped)");
   if (settings_.profile_step > 0.0) {

@@ -60,6 +60,7 @@ class PackingAnalyzer : public Analyzer {
   long frames_ = 0, skipped_ = 0;
   RunningMean phi_, density_, z_, z_walls_, phi_cuts_;
   RampMeans by_ramp_{{"phi", "z_mean"}};
+  StreamedTable per_frame_;
   std::vector<RunningMean> profile_;
 };
 

@@ -47,6 +47,18 @@ struct PluginContext {
   // Where the parameters sit in the pipeline, e.g. "source.params" or "analyzers[1].params".
   std::string params_path;
 
+  // Where streamed tables go, and the results group they belong to ("arches",
+  // "point_002/arches"); no streams when a pipeline is only checked.
+  ResultStreams* streams = nullptr;
+  std::string results_group{};
+
+  // A table whose rows reach results.h5 as they are added: for per-frame series, so that
+  // a run killed after hours keeps them. Report it in finish() with table() as usual.
+  StreamedTable stream_table(const std::string& table, Table empty) const {
+    const std::size_t id = streams ? streams->declare(results_group, table, empty) : 0;
+    return {std::move(empty), streams, id};
+  }
+
   // "source.params.cells": the start of a message about one parameter, so that a plugin's
   // own checks read like the core's ("<file>: source.params.cells: expected ..., got ...").
   std::string param(const std::string& name) const {

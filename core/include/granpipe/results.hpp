@@ -58,6 +58,34 @@ struct Plot {
   bool logx = false, logy = false;
 };
 
+// Where the rows of streamed tables go while a run goes: the run's results.h5, flushed
+// row by row, so that a run killed after hours keeps every row added before the kill.
+class ResultStreams {
+ public:
+  virtual ~ResultStreams() = default;
+  // Declares table `name` of producer `group` (before the run starts); returns its id.
+  virtual std::size_t declare(const std::string& group, const std::string& name,
+                              const Table& empty) = 0;
+  virtual void append(std::size_t id, const std::vector<double>& row) = 0;
+};
+
+// A table whose rows reach results.h5 as they are added (a per-frame time series). Made
+// by PluginContext::stream_table; it also keeps its rows, for the table a plugin reports
+// in finish() as usual.
+class StreamedTable {
+ public:
+  StreamedTable() = default;
+  StreamedTable(Table empty, ResultStreams* streams, std::size_t id)
+      : table_(std::move(empty)), streams_(streams), id_(id) {}
+  void add_row(const std::vector<double>& row);
+  const Table& table() const { return table_; }
+
+ private:
+  Table table_;
+  ResultStreams* streams_ = nullptr;  // none when a pipeline is only checked
+  std::size_t id_ = 0;
+};
+
 class RunningMean;
 
 class Results {

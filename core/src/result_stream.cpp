@@ -1,0 +1,90 @@
+#include "result_stream.hpp"
+
+#include "granpipe/errors.hpp"
+#include "h5_dataset.hpp"
+#include "h5_object.hpp"
+
+namespace granpipe {
+
+namespace {
+
+struct Declared {
+  std::string group, name;
+  Table empty;
+  std::vector<h5::Object> columns;  // one extendable dataset per column, once open
+};
+
+constexpr hsize_t kChunkRows = 256;
+
+}  // namespace
+
+struct ResultStream::Impl {
+  std::vector<Declared> tables;
+  std::string name;
+  h5::Object file;
+
+  void create(const Provenance& provenance);
+};
+
+void ResultStream::Impl::create(const Provenance& provenance) {
+  h5::Object fapl = h5::owned(H5Pcreate(H5P_FILE_ACCESS), "cannot make the file access list");
+  // SWMR needs the latest file format.
+  h5::check(H5Pset_libver_bounds(fapl.id(), H5F_LIBVER_LATEST, H5F_LIBVER_LATEST),
+            "cannot ask for the latest file format");
+  file = h5::owned(H5Fcreate(name.c_str(), H5F_ACC_EXCL, H5P_DEFAULT, fapl.id()),
+                   "cannot create the file (does its directory exist and is it writable?)");
+  write_provenance(file.id(), provenance);
+  for (Declared& t : tables) {
+    const std::string path = "/" + t.group + "/" + t.name;
+    h5::Object g = h5::create_group(file.id(), path);
+    h5::write_text_attribute(g.id(), "kind", "table");
+    h5::write_attribute(g.id(), "columns", t.empty.columns);
+    h5::write_attribute(g.id(), "units", t.empty.units);
+    h5::write_text_attribute(g.id(), "doc", t.empty.doc);
+    for (const std::string& c : t.empty.columns) {
+      t.columns.push_back(
+          h5::create_series(file.id(), path + "/" + c, H5T_IEEE_F64LE, {}, kChunkRows));
+    }
+  }
+  h5::check(H5Fstart_swmr_write(file.id()), "cannot start SWMR writing");
+}
+
+ResultStream::ResultStream() : impl_(std::make_unique<Impl>()) {}
+ResultStream::~ResultStream() = default;
+
+std::size_t ResultStream::declare(const std::string& group, const std::string& name,
+                                  const Table& empty) {
+  std::lock_guard lock(mutex_);
+  if (impl_->file.valid()) throw InternalError(name + ": streamed table declared after the run began");
+  impl_->tables.push_back({group, name, empty, {}});
+  return impl_->tables.size() - 1;
+}
+
+void ResultStream::open(const std::filesystem::path& path, const Provenance& provenance) {
+  std::lock_guard lock(mutex_);
+  h5::silence_error_stack();
+  impl_->name = path.string();
+  h5::input_errors_of(impl_->name, [&] { impl_->create(provenance); });
+}
+
+void ResultStream::append(std::size_t id, const std::vector<double>& row) {
+  std::lock_guard lock(mutex_);
+  if (!impl_->file.valid()) return;
+  Declared& t = impl_->tables.at(id);
+  if (row.size() != t.columns.size()) return;  // Table::add_row has refused it already
+  h5::input_errors_of(impl_->name, [&] {
+    for (std::size_t c = 0; c < row.size(); ++c) {
+      const std::string path = "/" + t.group + "/" + t.name + "/" + t.empty.columns[c];
+      h5::append_rows(t.columns[c].id(), path, H5T_NATIVE_DOUBLE, &row[c], 1);
+    }
+    h5::check(H5Fflush(impl_->file.id(), H5F_SCOPE_GLOBAL), "cannot flush (is the disk full?)");
+  });
+}
+
+void ResultStream::close() {
+  std::lock_guard lock(mutex_);
+  for (Declared& t : impl_->tables) t.columns.clear();
+  impl_->file = h5::Object();
+}
+
+}  // namespace granpipe

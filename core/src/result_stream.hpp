@@ -1,0 +1,45 @@
+#pragma once
+// results.h5 while a run goes. Streamed tables are declared while the plugins are made;
+// open() creates the file with every one of them (as extendable datasets, in the layout
+// of the final results.h5) and starts HDF5's SWMR mode, in which the file is consistent on
+// disk after every flush; append() adds one row and flushes. The file is marked
+// incomplete: at the end of the run write_results() replaces it whole, atomically.
+#include <filesystem>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include <hdf5.h>
+
+#include "granpipe/result_store.hpp"
+#include "granpipe/results.hpp"
+
+namespace granpipe {
+
+// The provenance attributes of results.h5 (result_store.cpp), shared by the streamed and
+// the final file.
+void write_provenance(hid_t file, const Provenance& provenance);
+
+class ResultStream : public ResultStreams {
+ public:
+  ResultStream();
+  ~ResultStream() override;
+  std::size_t declare(const std::string& group, const std::string& name,
+                      const Table& empty) override;
+  // Safe from several threads (sweep points run in parallel); rows are dropped until
+  // open(), as when a pipeline is only checked.
+  void append(std::size_t id, const std::vector<double>& row) override;
+  // Creates `path` (results.h5 of the output directory) with every declared table;
+  // `provenance.complete` should be false.
+  void open(const std::filesystem::path& path, const Provenance& provenance);
+  // Closes the file, which stays marked incomplete.
+  void close();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  std::mutex mutex_;
+};
+
+}  // namespace granpipe
