@@ -1,5 +1,6 @@
 // Reading a pipeline: JSON parsing with line/column errors, --set overrides, the
 // top-level schema, the plugins' parameter schemas, and sweep expansion.
+#include <cctype>
 #include <fstream>
 #include <regex>
 #include <set>
@@ -9,33 +10,13 @@
 #include "granpipe/plugin_loader.hpp"
 #include "param_validation.hpp"
 #include "pipeline_impl.hpp"
+#include "strict_json.hpp"
 
 namespace granpipe {
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
 namespace {
-
-json parse_json(const std::string& text, const std::string& origin) {
-  try {
-    return json::parse(text, nullptr, true, /*ignore_comments=*/true);
-  } catch (const json::parse_error& e) {
-    std::size_t line = 1, col = 1;
-    for (std::size_t k = 0; k + 1 < e.byte && k < text.size(); ++k) {
-      if (text[k] == '\n') {
-        ++line;
-        col = 1;
-      } else {
-        ++col;
-      }
-    }
-    std::string reason = e.what();
-    const auto colon = reason.find(": ", reason.find("parse error"));
-    if (colon != std::string::npos) reason = reason.substr(colon + 2);
-    throw InputError(origin + ":" + std::to_string(line) + ":" + std::to_string(col) +
-                     ": malformed JSON: " + reason);
-  }
-}
 
 void check_keys(const json& obj, const std::vector<std::string>& allowed, const JsonLocation& at) {
   if (!obj.is_object()) throw InputError(at.str() + ": expected an object, got " + json_brief(obj));
@@ -47,21 +28,37 @@ void check_keys(const json& obj, const std::vector<std::string>& allowed, const 
   }
 }
 
-// "a.b[2].c" -> JSON pointer parts.
+bool is_name_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
+bool is_name_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+bool is_digit(char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }
+
+// "a.b[2].c" -> JSON pointer parts: keys, and list indices as digit strings.
 std::vector<std::string> split_path(const std::string& path, const std::string& where) {
-  static const std::regex token(R"(([A-Za-z_][A-Za-z0-9_]*)|\[(\d+)\])");
+  const auto malformed = [&] {
+    return InputError(where + ": expected a path like source.params.name or analyzers[0].params.name, got " +
+                      json_brief(path));
+  };
   std::vector<std::string> parts;
   std::size_t pos = 0;
   while (pos < path.size()) {
-    if (path[pos] == '.' && pos > 0) ++pos;
-    std::smatch m;
-    std::string rest = path.substr(pos);
-    if (!std::regex_search(rest, m, token, std::regex_constants::match_continuous)) {
-      throw InputError(where + ": expected a path like source.params.name or analyzers[0].params.name, got \"" +
-                       path + "\"");
+    if (parts.size() == kMaxJsonDepth) {
+      throw InputError(where + ": expected a path of at most " + std::to_string(kMaxJsonDepth) +
+                       " parts, got more");
     }
-    parts.push_back(m[1].matched ? m[1].str() : m[2].str());
-    pos += m.length(0);
+    std::size_t end = pos;
+    if (path[pos] == '[') {
+      ++pos;
+      for (end = pos; end < path.size() && is_digit(path[end]);) ++end;
+      if (end == pos || end == path.size() || path[end] != ']') throw malformed();
+      parts.push_back(path.substr(pos, end - pos));
+      pos = end + 1;
+      continue;
+    }
+    if (!parts.empty() && path[pos++] != '.') throw malformed();
+    if (pos == path.size() || !is_name_start(path[pos])) throw malformed();
+    for (end = pos + 1; end < path.size() && is_name_char(path[end]);) ++end;
+    parts.push_back(path.substr(pos, end - pos));
+    pos = end;
   }
   if (parts.empty()) throw InputError(where + ": expected a parameter path, got \"\"");
   return parts;
@@ -85,18 +82,20 @@ json& locate(json& root, const std::vector<std::string>& parts, const std::strin
   return *node;
 }
 
+// "--set a=b", cut short if long, to start a message about that --set.
+std::string set_origin(const std::string& assignment) {
+  return "--set " + (assignment.size() > 80 ? assignment.substr(0, 77) + "..." : assignment);
+}
+
 void apply_set(json& root, const std::string& assignment) {
   const auto eq = assignment.find('=');
-  const std::string where = "--set " + assignment;
+  const std::string where = set_origin(assignment);
   if (eq == std::string::npos) throw InputError(where + ": expected path=value, got no '='");
   const std::string path = assignment.substr(0, eq), text = assignment.substr(eq + 1);
-  json value;
-  try {
-    value = json::parse(text);
-  } catch (const json::parse_error&) {
-    value = text;  // a bare word is a string: --set source.params.lattice=fcc
-  }
-  locate(root, split_path(path, where), where) = value;
+  const std::vector<std::string> parts = split_path(path, where);
+  // A bare word is a string: --set source.params.lattice=fcc
+  const json value = parse_strict_json_if_json(text, where, parts.size()).value_or(json(text));
+  locate(root, parts, where) = value;
 }
 
 std::uint64_t read_seed(const json& root, const JsonLocation& at) {
@@ -190,7 +189,7 @@ Pipeline Pipeline::load(const fs::path& file, const std::vector<std::string>& se
 
 Pipeline Pipeline::parse(const std::string& text, const std::string& origin,
                          const std::vector<std::string>& sets, const Registry& registry) {
-  json root = parse_json(text, origin);
+  json root = parse_strict_json(text, origin);
   const JsonLocation top{origin, ""};
   if (!root.is_object()) throw InputError(origin + ": expected a JSON object, got " + json_brief(root));
   for (const auto& s : sets) apply_set(root, s);

@@ -107,6 +107,29 @@ TEST(PipelineErrors, MalformedJsonNamesLineAndColumn) {
   EXPECT_EQ(e.rfind("p.json:3:11: malformed JSON:", 0), 0u) << e;
 }
 
+// 64 levels are read; the 65th is refused by a parser that never recurses, so that a
+// file nested a hundred thousand levels deep cannot overflow the stack.
+TEST(PipelineErrors, NestingDeeperThan64LevelsIsRefused) {
+  const auto repeat = [](const std::string& s, int n) {
+    std::string out;
+    for (int k = 0; k < n; ++k) out += s;
+    return out;
+  };
+  const auto nested = [](int levels) { return std::string(levels, '[') + std::string(levels, ']'); };
+  EXPECT_EQ(error_of("{\"description\": " + nested(63) + "}"),
+            "p.json: description: expected a string, got " + repeat("[", 57) + "...");
+  const std::string deepest = "p.json: description" + repeat("[0]", 63) +
+                              ": expected JSON nested at most 64 levels deep, got deeper";
+  EXPECT_EQ(error_of("{\"description\": " + nested(64) + "}"), deepest);
+  EXPECT_EQ(error_of("{\"description\": " + nested(100000) + "}"), deepest);
+  // A --set value sits under its path's levels (source, params, n).
+  EXPECT_EQ(error_of(kGood, {"source.params.n=" + nested(100000)}),
+            "--set source.params.n=" + repeat("[", 61) + "...: " + repeat("[0]", 61) +
+                ": expected JSON nested at most 64 levels deep, got deeper");
+  EXPECT_EQ(error_of(kGood, {"source.params" + repeat(".a", 100) + "=1"}),
+            "--set source.params" + repeat(".a", 32) + "...: expected a path of at most 64 parts, got more");
+}
+
 TEST(PipelineErrors, UnknownTopLevelKeyGetsDidYouMean) {
   const std::string e = error_of(R"({"source": {"plugin": "random"}, "analyzer": []})");
   EXPECT_EQ(e, "p.json: analyzer: unknown key (did you mean \"analyzers\"?); known: name, description, "
