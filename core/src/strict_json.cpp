@@ -1,5 +1,6 @@
 #include "strict_json.hpp"
 
+#include <unordered_set>
 #include <vector>
 
 #include "granpipe/errors.hpp"
@@ -21,7 +22,7 @@ class StrictReader {
     switch (event) {
       case E::object_start:
       case E::array_start: open(event == E::array_start); break;
-      case E::key: levels_.back().key = parsed.get<std::string>(); break;
+      case E::key: read_key(parsed.get<std::string>()); break;
       case E::value: element_done(); break;
       case E::object_end:
       case E::array_end:
@@ -38,6 +39,7 @@ class StrictReader {
     std::string path;
     std::size_t index = 0;  // of the element being read, in an array
     std::string key;        // of the element being read, in an object
+    std::unordered_set<std::string> keys;  // read so far, in an object
   };
 
   std::string where(const std::string& path) const { return path.empty() ? origin_ : origin_ + ": " + path; }
@@ -56,7 +58,17 @@ class StrictReader {
       throw InputError(where(path) + ": expected JSON nested at most " + std::to_string(kMaxJsonDepth) +
                        " levels deep, got deeper");
     }
-    levels_.push_back({is_array, path, 0, {}});
+    levels_.push_back({is_array, path, 0, {}, {}});
+  }
+
+  // The JSON library would keep the last of two equal keys; the user meant one of them.
+  void read_key(const std::string& key) {
+    Level& top = levels_.back();
+    top.key = key;
+    if (!top.keys.insert(key).second) {
+      throw InputError(where(element_path()) + ": expected each key once in an object, got \"" + key +
+                       "\" again");
+    }
   }
 
   void element_done() {

@@ -130,6 +130,16 @@ TEST(PipelineErrors, NestingDeeperThan64LevelsIsRefused) {
             "--set source.params" + repeat(".a", 32) + "...: expected a path of at most 64 parts, got more");
 }
 
+TEST(PipelineErrors, DuplicateKeysAreRefusedNotOverwritten) {
+  EXPECT_EQ(error_of(R"({"name": "a", "source": {"plugin": "random"}, "name": "b"})"),
+            "p.json: name: expected each key once in an object, got \"name\" again");
+  EXPECT_EQ(error_of(R"({"source": {"plugin": "random"}, "analyzers": [{"plugin": "meanx"},
+                        {"plugin": "meanx", "name": "b", "params": {"scale": 1, "scale": 2}}]})"),
+            "p.json: analyzers[1].params.scale: expected each key once in an object, got \"scale\" again");
+  EXPECT_EQ(error_of(kGood, {R"(source.params={"n": 1, "n": 2})"}),
+            R"(--set source.params={"n": 1, "n": 2}: n: expected each key once in an object, got "n" again)");
+}
+
 TEST(PipelineErrors, UnknownTopLevelKeyGetsDidYouMean) {
   const std::string e = error_of(R"({"source": {"plugin": "random"}, "analyzer": []})");
   EXPECT_EQ(e, "p.json: analyzer: unknown key (did you mean \"analyzers\"?); known: name, description, "
