@@ -33,6 +33,14 @@ class StrictReader {
     return true;
   }
 
+  // The JSON library's "number overflow parsing '1e400'", said with the number's path.
+  InputError number_overflow(const json::out_of_range& e) const {
+    const std::string what = e.what();
+    const auto open = what.find('\''), close = what.rfind('\'');
+    const std::string token = open < close ? what.substr(open + 1, close - open - 1) : "?";
+    return InputError(where(element_path()) + ": expected a number of magnitude below 1.8e308, got " + token);
+  }
+
  private:
   struct Level {
     bool is_array = false;
@@ -82,9 +90,14 @@ class StrictReader {
 
 json parse_or_throw(const std::string& text, const std::string& origin, std::size_t outer_depth) {
   StrictReader reader(origin, outer_depth);
-  return json::parse(
-      text, [&reader](int d, json::parse_event_t e, json& v) { return reader(d, e, v); }, true,
-      /*ignore_comments=*/true);
+  try {
+    return json::parse(
+        text, [&reader](int d, json::parse_event_t e, json& v) { return reader(d, e, v); }, true,
+        /*ignore_comments=*/true);
+  } catch (const json::out_of_range& e) {
+    if (e.id == 406) throw reader.number_overflow(e);
+    throw;
+  }
 }
 
 }  // namespace

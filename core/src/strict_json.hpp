@@ -1,7 +1,7 @@
 #pragma once
 // Reading JSON text strictly, before a DOM is built that later code could trip on:
-// nesting at most kMaxJsonDepth levels deep, no key twice in one object. Every refusal
-// is an InputError naming the JSON path.
+// nesting at most kMaxJsonDepth levels deep, no key twice in one object, numbers that fit
+// a double. Every refusal is an InputError naming the JSON path.
 #include <cstddef>
 #include <nlohmann/json.hpp>
 #include <optional>

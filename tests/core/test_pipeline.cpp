@@ -140,6 +140,15 @@ TEST(PipelineErrors, DuplicateKeysAreRefusedNotOverwritten) {
             R"(--set source.params={"n": 1, "n": 2}: n: expected each key once in an object, got "n" again)");
 }
 
+TEST(PipelineErrors, NumbersBeyondDoubleRangeNameTheirPath) {
+  EXPECT_EQ(error_of(R"({"source": {"plugin": "random", "params": {"n": 1e400}}})"),
+            "p.json: source.params.n: expected a number of magnitude below 1.8e308, got 1e400");
+  EXPECT_EQ(error_of(R"({"source": {"plugin": "random"}, "sweep": {"parameters": {"source.params.n": [1, -2E+999]}}})"),
+            "p.json: sweep.parameters.source.params.n[1]: expected a number of magnitude below 1.8e308, got -2E+999");
+  EXPECT_EQ(error_of(kGood, {"source.params.n=1e400"}),
+            "--set source.params.n=1e400: expected a number of magnitude below 1.8e308, got 1e400");
+}
+
 TEST(PipelineErrors, UnknownTopLevelKeyGetsDidYouMean) {
   const std::string e = error_of(R"({"source": {"plugin": "random"}, "analyzer": []})");
   EXPECT_EQ(e, "p.json: analyzer: unknown key (did you mean \"analyzers\"?); known: name, description, "
