@@ -8,11 +8,36 @@
 namespace granpipe {
 
 JsonLocation JsonLocation::child(const std::string& key) const {
-  return {file, path.empty() ? key : path + "." + key};
+  return {file, path.empty() ? key : path + "." + key, overrides};
 }
 
 JsonLocation JsonLocation::index(std::size_t i) const {
-  return {file, path + "[" + std::to_string(i) + "]"};
+  return {file, path + "[" + std::to_string(i) + "]", overrides};
+}
+
+namespace {
+// "a.b" covers "a.b", "a.b.c" and "a.b[0]", not "a.bc".
+bool covers(const std::string& outer, const std::string& path) {
+  return path.compare(0, outer.size(), outer) == 0 &&
+         (path.size() == outer.size() || path[outer.size()] == '.' || path[outer.size()] == '[');
+}
+}  // namespace
+
+std::string JsonLocation::str() const {
+  if (overrides) {
+    for (auto o = overrides->rbegin(); o != overrides->rend(); ++o) {
+      if (!covers(o->path, path)) continue;
+      if (o->origin.empty()) break;
+      return path == o->path ? o->origin : o->origin + ": " + path;
+    }
+  }
+  return file + ": " + path;
+}
+
+std::string located_message(const JsonLocation& top, const std::string& message) {
+  const auto colon = message.find(": ");
+  if (colon == std::string::npos) return top.str() + message;
+  return top.child(message.substr(0, colon)).str() + message.substr(colon);
 }
 
 std::string json_brief(const nlohmann::json& v) {

@@ -1,6 +1,7 @@
 // Reading a pipeline: JSON parsing with line/column errors, --set overrides, the
 // top-level schema, the plugins' parameter schemas, and sweep expansion.
 #include <cctype>
+#include <charconv>
 #include <fstream>
 #include <regex>
 #include <set>
@@ -67,9 +68,10 @@ std::vector<std::string> split_path(const std::string& path, const std::string& 
 json& locate(json& root, const std::vector<std::string>& parts, const std::string& where) {
   json* node = &root;
   for (const auto& p : parts) {
-    if (!p.empty() && std::isdigit(static_cast<unsigned char>(p[0]))) {
-      const std::size_t k = std::stoul(p);
-      if (!node->is_array() || k >= node->size()) {
+    if (is_digit(p[0])) {
+      std::size_t k = 0;
+      const auto [end, error] = std::from_chars(p.data(), p.data() + p.size(), k);
+      if (error != std::errc{} || end != p.data() + p.size() || !node->is_array() || k >= node->size()) {
         throw InputError(where + ": expected an existing list entry [" + p + "], got none");
       }
       node = &(*node)[k];
@@ -87,7 +89,15 @@ std::string set_origin(const std::string& assignment) {
   return "--set " + (assignment.size() > 80 ? assignment.substr(0, 77) + "..." : assignment);
 }
 
-void apply_set(json& root, const std::string& assignment) {
+// "a.b[2].c" again, from its parts, as JsonLocation paths read.
+std::string join_path(const std::vector<std::string>& parts) {
+  std::string path;
+  for (const auto& p : parts) path += is_digit(p[0]) ? "[" + p + "]" : (path.empty() ? "" : ".") + p;
+  return path;
+}
+
+// Applies `--set path=value` and says where the value came from.
+Override apply_set(json& root, const std::string& assignment) {
   const auto eq = assignment.find('=');
   const std::string where = set_origin(assignment);
   if (eq == std::string::npos) throw InputError(where + ": expected path=value, got no '='");
@@ -96,6 +106,7 @@ void apply_set(json& root, const std::string& assignment) {
   // A bare word is a string: --set source.params.lattice=fcc
   const json value = parse_strict_json_if_json(text, where, parts.size()).value_or(json(text));
   locate(root, parts, where) = value;
+  return {join_path(parts), where};
 }
 
 std::uint64_t read_seed(const json& root, const JsonLocation& at) {
@@ -190,13 +201,13 @@ Pipeline Pipeline::load(const fs::path& file, const std::vector<std::string>& se
 Pipeline Pipeline::parse(const std::string& text, const std::string& origin,
                          const std::vector<std::string>& sets, const Registry& registry) {
   json root = parse_strict_json(text, origin);
-  const JsonLocation top{origin, ""};
   if (!root.is_object()) throw InputError(origin + ": expected a JSON object, got " + json_brief(root));
-  for (const auto& s : sets) apply_set(root, s);
-  check_keys(root, {"name", "description", "seed", "source", "analyzers", "output", "sweep"}, top);
-
   auto impl = std::make_unique<Impl>();
   impl->origin = origin;
+  for (const auto& s : sets) impl->overrides.push_back(apply_set(root, s));
+  const JsonLocation top = impl->top();
+  check_keys(root, {"name", "description", "seed", "source", "analyzers", "output", "sweep"}, top);
+
   impl->base_dir = fs::path(origin).parent_path();
   for (const char* key : {"name", "description"}) {
     if (root.contains(key) && !root[key].is_string()) {
@@ -279,6 +290,8 @@ Pipeline Pipeline::parse(const std::string& text, const std::string& origin,
 
   std::vector<json> assignments{json::object()};
   if (root.contains("sweep")) assignments = expand_sweep(root["sweep"], top.child("sweep"), impl->sweep_paths);
+  // A swept value comes from the file's sweep, even where a --set put one before.
+  for (const auto& path : impl->sweep_paths) impl->overrides.push_back({path, ""});
 
   for (std::size_t k = 0; k < assignments.size(); ++k) {
     PointSpec point;

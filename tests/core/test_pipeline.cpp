@@ -199,9 +199,29 @@ TEST(PipelineErrors, AnalyzerNamesArePlainAndFreeOfRunnerGroups) {
 
 TEST(PipelineErrors, SetOverridesAreValidatedToo) {
   EXPECT_EQ(error_of(kGood, {"source.params.frames=-1"}),
-            "p.json: source.params.frames: expected an integer >= 1, got -1");
+            "--set source.params.frames=-1: expected an integer >= 1, got -1");
   EXPECT_EQ(error_of(kGood, {"source.params.frames"}),
             "--set source.params.frames: expected path=value, got no '='");
+  EXPECT_EQ(error_of(kGood, {"seed=-1", "source.params.n=2"}), "--set seed=-1: expected an integer >= 0, got -1");
+  EXPECT_EQ(error_of(kGood, {R"(analyzers[0]={"plugin": "meanx", "params": {"scale": 0}})"}),
+            R"(--set analyzers[0]={"plugin": "meanx", "params": {"scale": 0}}: analyzers[0].params.scale: )"
+            "expected a number > 0, got 0");
+  // What the file says, and what the --set did not touch, is still the file's.
+  EXPECT_EQ(error_of(R"({"source": {"plugin": "random", "params": {"n": 0}}})", {"source.params.frames=2"}),
+            "p.json: source.params.n: expected an integer in [1, 1000], got 0");
+  // The sweep's value replaces the --set's.
+  EXPECT_EQ(error_of(R"({"source": {"plugin": "random"}, "sweep": {"parameters": {"source.params.n": [5000]}}})",
+                     {"source.params.n=5"}),
+            "p.json: source.params.n: expected an integer in [1, 1000], got 5000 (sweep point 0: "
+            "source.params.n = 5000)");
+}
+
+TEST(PipelineErrors, SetListIndexBeyond64BitsIsNoEntry) {
+  EXPECT_EQ(error_of(kGood, {"analyzers[99999999999999999999999].params.scale=1"}),
+            "--set analyzers[99999999999999999999999].params.scale=1: expected an existing list entry "
+            "[99999999999999999999999], got none");
+  EXPECT_EQ(error_of(kGood, {"analyzers[1].params.scale=1"}),
+            "--set analyzers[1].params.scale=1: expected an existing list entry [1], got none");
 }
 
 TEST(PipelineErrors, SweepValueOutOfRangeNamesThePoint) {
