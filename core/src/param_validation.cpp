@@ -1,5 +1,6 @@
 #include "param_validation.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "did_you_mean.hpp"
@@ -42,7 +43,7 @@ std::string located_message(const JsonLocation& top, const std::string& message)
 
 std::string json_brief(const nlohmann::json& v) {
   std::string s = v.dump();
-  if (s.size() > 60) s = s.substr(0, 57) + "...";
+  if (s.size() > 60) s = s.substr(0, 57) + (v.is_string() ? "...\"" : "...");
   return s;
 }
 
@@ -140,6 +141,16 @@ ParamValue convert(const nlohmann::json& v, const ParamSpec& s, const JsonLocati
 }
 
 }  // namespace
+
+void check_keys(const nlohmann::json& obj, const std::vector<std::string>& allowed, const JsonLocation& at) {
+  if (!obj.is_object()) throw InputError(at.str() + ": expected an object, got " + json_brief(obj));
+  for (const auto& [key, v] : obj.items()) {
+    if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
+      throw InputError(at.child(key).str() + ": unknown key" + did_you_mean(key, allowed) +
+                       known_list(allowed));
+    }
+  }
+}
 
 Params validate_params(nlohmann::json& object, const Schema& schema, const JsonLocation& where,
                        const std::filesystem::path& base_dir) {

@@ -33,6 +33,9 @@ std::string located_message(const JsonLocation& top, const std::string& message)
 // Short rendering of a JSON value for "got ..." (strings quoted, long values cut).
 std::string json_brief(const nlohmann::json& v);
 
+// Refuses an `obj` that is not an object or has a key not in `allowed` (with a did-you-mean).
+void check_keys(const nlohmann::json& obj, const std::vector<std::string>& allowed, const JsonLocation& at);
+
 // Checks `object` against `schema` and returns the values with defaults filled in;
 // `object` is rewritten to its filled-in form (what pipeline.json records). Relative
 // paths are resolved against the working directory, then `base_dir`.

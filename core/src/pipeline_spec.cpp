@@ -1,17 +1,16 @@
 // Reading a pipeline: JSON parsing with line/column errors, --set overrides, the
 // top-level schema, the plugins' parameter schemas, and sweep expansion.
-#include <cctype>
-#include <charconv>
 #include <fstream>
 #include <regex>
 #include <set>
 #include <sstream>
 
-#include "did_you_mean.hpp"
 #include "granpipe/plugin_loader.hpp"
+#include "json_path.hpp"
 #include "param_validation.hpp"
 #include "pipeline_impl.hpp"
 #include "strict_json.hpp"
+#include "sweep.hpp"
 
 namespace granpipe {
 namespace fs = std::filesystem;
@@ -19,81 +18,9 @@ using json = nlohmann::json;
 
 namespace {
 
-void check_keys(const json& obj, const std::vector<std::string>& allowed, const JsonLocation& at) {
-  if (!obj.is_object()) throw InputError(at.str() + ": expected an object, got " + json_brief(obj));
-  for (const auto& [key, v] : obj.items()) {
-    if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
-      throw InputError(at.child(key).str() + ": unknown key" + did_you_mean(key, allowed) +
-                       known_list(allowed));
-    }
-  }
-}
-
-bool is_name_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
-bool is_name_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
-bool is_digit(char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }
-
-// "a.b[2].c" -> JSON pointer parts: keys, and list indices as digit strings.
-std::vector<std::string> split_path(const std::string& path, const std::string& where) {
-  const auto malformed = [&] {
-    return InputError(where + ": expected a path like source.params.name or analyzers[0].params.name, got " +
-                      json_brief(path));
-  };
-  std::vector<std::string> parts;
-  std::size_t pos = 0;
-  while (pos < path.size()) {
-    if (parts.size() == kMaxJsonDepth) {
-      throw InputError(where + ": expected a path of at most " + std::to_string(kMaxJsonDepth) +
-                       " parts, got more");
-    }
-    std::size_t end = pos;
-    if (path[pos] == '[') {
-      ++pos;
-      for (end = pos; end < path.size() && is_digit(path[end]);) ++end;
-      if (end == pos || end == path.size() || path[end] != ']') throw malformed();
-      parts.push_back(path.substr(pos, end - pos));
-      pos = end + 1;
-      continue;
-    }
-    if (!parts.empty() && path[pos++] != '.') throw malformed();
-    if (pos == path.size() || !is_name_start(path[pos])) throw malformed();
-    for (end = pos + 1; end < path.size() && is_name_char(path[end]);) ++end;
-    parts.push_back(path.substr(pos, end - pos));
-    pos = end;
-  }
-  if (parts.empty()) throw InputError(where + ": expected a parameter path, got \"\"");
-  return parts;
-}
-
-json& locate(json& root, const std::vector<std::string>& parts, const std::string& where) {
-  json* node = &root;
-  for (const auto& p : parts) {
-    if (is_digit(p[0])) {
-      std::size_t k = 0;
-      const auto [end, error] = std::from_chars(p.data(), p.data() + p.size(), k);
-      if (error != std::errc{} || end != p.data() + p.size() || !node->is_array() || k >= node->size()) {
-        throw InputError(where + ": expected an existing list entry [" + p + "], got none");
-      }
-      node = &(*node)[k];
-    } else {
-      if (node->is_null()) *node = json::object();
-      if (!node->is_object()) throw InputError(where + ": expected an object at \"" + p + "\"");
-      node = &(*node)[p];
-    }
-  }
-  return *node;
-}
-
 // "--set a=b", cut short if long, to start a message about that --set.
 std::string set_origin(const std::string& assignment) {
   return "--set " + (assignment.size() > 80 ? assignment.substr(0, 77) + "..." : assignment);
-}
-
-// "a.b[2].c" again, from its parts, as JsonLocation paths read.
-std::string join_path(const std::vector<std::string>& parts) {
-  std::string path;
-  for (const auto& p : parts) path += is_digit(p[0]) ? "[" + p + "]" : (path.empty() ? "" : ".") + p;
-  return path;
 }
 
 // Applies `--set path=value` and says where the value came from.
@@ -116,65 +43,6 @@ std::uint64_t read_seed(const json& root, const JsonLocation& at) {
     throw InputError(at.child("seed").str() + ": expected an integer >= 0, got " + json_brief(s));
   }
   return s.get<std::uint64_t>();
-}
-
-// Each sweep point as {path: value}: grid = cartesian product, zip = element-wise.
-std::vector<json> expand_sweep(const json& sweep, const JsonLocation& at,
-                               std::vector<std::string>& paths) {
-  check_keys(sweep, {"mode", "parameters"}, at);
-  const bool mode_is_string = !sweep.contains("mode") || sweep["mode"].is_string();
-  const std::string mode = mode_is_string ? sweep.value("mode", "grid") : "";
-  if (mode != "grid" && mode != "zip") {
-    throw InputError(at.child("mode").str() + ": expected one of \"grid\", \"zip\", got " +
-                     json_brief(sweep["mode"]));
-  }
-  const JsonLocation pat = at.child("parameters");
-  if (!sweep.contains("parameters") || !sweep["parameters"].is_object() || sweep["parameters"].empty()) {
-    throw InputError(pat.str() + ": expected an object of \"path\": [values...], got " +
-                     (sweep.contains("parameters") ? json_brief(sweep["parameters"]) : "nothing"));
-  }
-  std::vector<const json*> lists;
-  for (const auto& [path, values] : sweep["parameters"].items()) {
-    if (!values.is_array() || values.empty()) {
-      throw InputError(pat.str() + "[\"" + path + "\"]: expected a non-empty list of values, got " +
-                       json_brief(values));
-    }
-    static const std::regex param_path(R"((source|analyzers\[\d+\])\.params\.[A-Za-z_]\w*)");
-    if (!std::regex_match(path, param_path)) {
-      throw InputError(pat.str() + "[\"" + path + "\"]: expected a plugin parameter path like "
-                       "source.params.name or analyzers[0].params.name, got \"" + path + "\"");
-    }
-    paths.push_back(path);
-    lists.push_back(&values);
-  }
-  std::vector<json> points;
-  if (mode == "zip") {
-    for (std::size_t k = 1; k < lists.size(); ++k) {
-      if (lists[k]->size() != lists[0]->size()) {
-        throw InputError(pat.str() + "[\"" + paths[k] + "\"]: expected " +
-                         std::to_string(lists[0]->size()) + " values (zip mode), got " +
-                         std::to_string(lists[k]->size()));
-      }
-    }
-    for (std::size_t i = 0; i < lists[0]->size(); ++i) {
-      json p = json::object();
-      for (std::size_t k = 0; k < lists.size(); ++k) p[paths[k]] = (*lists[k])[i];
-      points.push_back(p);
-    }
-  } else {
-    points.push_back(json::object());
-    for (std::size_t k = 0; k < lists.size(); ++k) {
-      std::vector<json> next;
-      for (const auto& p : points)
-        for (const auto& v : *lists[k]) {
-          json q = p;
-          q[paths[k]] = v;
-          next.push_back(q);
-        }
-      points = std::move(next);
-    }
-  }
-  return points;
 }
 
 }  // namespace
@@ -292,12 +160,15 @@ Pipeline Pipeline::parse(const std::string& text, const std::string& origin,
   if (root.contains("sweep")) assignments = expand_sweep(root["sweep"], top.child("sweep"), impl->sweep_paths);
   // A swept value comes from the file's sweep, even where a --set put one before.
   for (const auto& path : impl->sweep_paths) impl->overrides.push_back({path, ""});
+  // Each point starts from the pipeline without its sweep, whose length would make
+  // copying it per point quadratic.
+  const json sweep = root.contains("sweep") ? root["sweep"] : json();
+  root.erase("sweep");
 
   for (std::size_t k = 0; k < assignments.size(); ++k) {
     PointSpec point;
     point.assignment = assignments[k];
     json p = root;
-    p.erase("sweep");
     std::string note;
     for (const auto& [path, value] : assignments[k].items()) {
       locate(p, split_path(path, "sweep"), top.child("sweep").str()) = value;
@@ -320,7 +191,7 @@ Pipeline Pipeline::parse(const std::string& text, const std::string& origin,
     impl->points.push_back(std::move(point));
   }
   impl->resolved = impl->points.front().resolved;
-  if (root.contains("sweep")) impl->resolved["sweep"] = root["sweep"];
+  if (!sweep.is_null()) impl->resolved["sweep"] = sweep;
   return Pipeline(std::move(impl));
 }
 

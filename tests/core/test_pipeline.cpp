@@ -231,6 +231,39 @@ TEST(PipelineErrors, SweepValueOutOfRangeNamesThePoint) {
                "source.params.n = 5000)");
 }
 
+// A sweep's size is known from its lists' lengths: too many points are refused before
+// any is made (a small file could ask for 10^9).
+TEST(PipelineErrors, SweepOfTooManyPointsIsRefusedBeforeExpanding) {
+  const auto list = [](int n) {
+    std::string s = "[1";
+    for (int k = 1; k < n; ++k) s += ", 1";
+    return s + "]";
+  };
+  EXPECT_EQ(error_of(R"({"source": {"plugin": "random"}, "analyzers": [{"plugin": "meanx"}], "sweep": {"parameters": {
+                        "source.params.n": )" + list(1000) + R"(, "source.params.frames": )" + list(1000) +
+                     R"(, "analyzers[0].params.scale": )" + list(1000) + "}}}"),
+            "p.json: sweep.parameters: expected at most 100000 sweep points, got 1e+09 (grid of 1000 x 1000 x 1000 values)");
+  EXPECT_EQ(error_of(R"({"source": {"plugin": "random"}, "sweep": {"mode": "zip", "parameters": {"source.params.n": )" +
+                     list(100001) + "}}}"),
+            "p.json: sweep.parameters: expected at most 100000 sweep points, got 100001 (zip of 100001 values)");
+  const Registry r = test_registry();
+  const std::string at_limit = R"({"source": {"plugin": "random"}, "sweep": {"parameters": {"source.params.n": )" +
+                               list(100) + R"(, "source.params.frames": )" + list(1000) + "}}}";
+  EXPECT_EQ(Pipeline::parse(at_limit, "p.json", {}, r).points(), 100000u);
+}
+
+TEST(PipelineErrors, SweepPathsAreCheckedWithoutRecursion) {
+  const std::string name(200000, 'a');
+  EXPECT_EQ(error_of(R"({"source": {"plugin": "random"}, "sweep": {"parameters": {"source.params.)" + name +
+                     R"(": [1]}}})"),
+            "p.json: source.params." + name + ": unknown parameter; known: frames, n (sweep point 0: source.params." +
+                name + " = 1)");
+  EXPECT_EQ(error_of(R"({"source": {"plugin": "random"}, "sweep": {"parameters": {"source.params.n-)" + name +
+                     R"(": [1]}}})"),
+            "p.json: sweep.parameters[\"source.params.n-aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa...\"]: expected a plugin "
+            "parameter path like source.params.name or analyzers[0].params.name, got \"source.params.n-aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa...\"");
+}
+
 TEST(PipelineErrors, AnalyzerNeedsWhatTheSourceLacks) {
   const Registry r = test_registry();
   const Pipeline p = Pipeline::parse(
