@@ -1,12 +1,12 @@
 // Reading a pipeline: JSON parsing with line/column errors, --set overrides, the
 // top-level schema, the plugins' parameter schemas, and sweep expansion.
 #include <fstream>
-#include <regex>
 #include <set>
 #include <sstream>
 
 #include "granpipe/plugin_loader.hpp"
 #include "json_path.hpp"
+#include "names.hpp"
 #include "param_validation.hpp"
 #include "pipeline_impl.hpp"
 #include "strict_json.hpp"
@@ -77,12 +77,10 @@ Pipeline Pipeline::parse(const std::string& text, const std::string& origin,
   check_keys(root, {"name", "description", "seed", "source", "analyzers", "output", "sweep"}, top);
 
   impl->base_dir = fs::path(origin).parent_path();
-  for (const char* key : {"name", "description"}) {
-    if (root.contains(key) && !root[key].is_string()) {
-      throw InputError(top.child(key).str() + ": expected a string, got " + json_brief(root[key]));
-    }
+  if (root.contains("description") && !root["description"].is_string()) {
+    throw InputError(top.child("description").str() + ": expected a string, got " + json_brief(root["description"]));
   }
-  impl->name = root.value("name", fs::path(origin).stem().string());
+  impl->name = read_pipeline_name(root, top, origin);
   impl->description = root.value("description", "");
   impl->seed = read_seed(root, top);
   root["name"] = impl->name;
@@ -114,18 +112,7 @@ Pipeline Pipeline::parse(const std::string& text, const std::string& origin,
     }
     AnalyzerSpec spec;
     spec.info = &require_plugin(registry, a["plugin"], PluginKind::Analyzer, at.child("plugin").str());
-    if (a.contains("name")) {
-      // The name becomes an HDF5 group and a file name: keep it plain, and clear of the
-      // runner's own groups.
-      static const std::regex plain("[A-Za-z][A-Za-z0-9_]*");
-      const json& n = a["name"];
-      if (!n.is_string() || !std::regex_match(n.get<std::string>(), plain) || n == "source" ||
-          n == "sweep" || n.get<std::string>().rfind("point_", 0) == 0) {
-        throw InputError(at.child("name").str() +
-                         ": expected a name of letters, digits and _ (not source, sweep or point_*), got " +
-                         json_brief(n));
-      }
-    }
+    if (a.contains("name")) check_analyzer_name(a["name"], at.child("name"));
     spec.name = a.value("name", spec.info->name);
     spec.where = at.str();
     if (!names.insert(spec.name).second) {

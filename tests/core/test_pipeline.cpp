@@ -187,14 +187,37 @@ TEST(PipelineErrors, DuplicateAnalyzerNames) {
 }
 
 TEST(PipelineErrors, AnalyzerNamesArePlainAndFreeOfRunnerGroups) {
-  for (const char* bad : {R"(5)", R"("")", R"("a/b")", R"("source")", R"("point_001")"}) {
-    const std::string text = std::string(R"({"source": {"plugin": "random"}, "analyzers": [{"plugin": "meanx", "name": )") +
+  const std::string too_long = "\"" + std::string(101, 'a') + "\"";
+  for (const std::string bad : {R"(5)", R"("")", R"("a/b")", R"("..")", R"("a\nb")", R"("a.b")", R"("source")",
+                                R"("point_001")", too_long.c_str()}) {
+    const std::string text = R"({"source": {"plugin": "random"}, "analyzers": [{"plugin": "meanx", "name": )" +
                              bad + "}]}";
-    EXPECT_EQ(error_of(text), std::string("p.json: analyzers[0].name: expected a name of letters, digits and _ "
-                                          "(not source, sweep or point_*), got ") + bad);
+    EXPECT_EQ(error_of(text), "p.json: analyzers[0].name: expected a name of at most 100 letters, digits and _, "
+                              "starting with a letter (not source, sweep or point_*), got " +
+                                  (bad.size() > 60 ? bad.substr(0, 57) + "...\"" : bad));
   }
   EXPECT_EQ(error_of(R"({"source": {"plugin": "random"}, "sweep": {"mode": 3, "parameters": {"source.params.n": [1]}}})"),
             "p.json: sweep.mode: expected one of \"grid\", \"zip\", got 3");
+}
+
+// The run's name is the default output directory and goes into every CSV header line.
+TEST(PipelineErrors, PipelineNamesCannotLeaveTheOutputFolderOrAddLines) {
+  for (const std::string bad : {R"("")", R"("../up")", R"("a/b")", R"("..")", R"(".hidden")", R"("a\nb")",
+                                R"("a\u0001b")", R"("a b")", R"(3)"}) {
+    EXPECT_EQ(error_of(R"({"source": {"plugin": "random"}, "name": )" + bad + "}"),
+              "p.json: name: expected a name of at most 100 letters, digits, _, - and . (not first), got " + bad);
+  }
+  EXPECT_EQ(error_of(kGood, {R"(name="x\ny")"}),
+            R"(--set name="x\ny": expected a name of at most 100 letters, digits, _, - and . (not first), got "x\ny")");
+  const Registry r = test_registry();
+  EXPECT_EQ(Pipeline::parse(R"({"source": {"plugin": "random"}, "name": "run-2.b_3"})", "p.json", {}, r).points(), 1u);
+  try {
+    Pipeline::parse(R"({"source": {"plugin": "random"}})", "my pipeline.json", {}, r);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "my pipeline.json: name: expected a name of at most 100 letters, digits, _, - and . "
+                           "(not first), got none, and the file name \"my pipeline\" is not one");
+  }
 }
 
 TEST(PipelineErrors, SetOverridesAreValidatedToo) {
