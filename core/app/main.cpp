@@ -1,5 +1,6 @@
 // The granpipe executable. Exit codes: 0 ok, 2 bad input, 1 internal error.
 #include <CLI/CLI.hpp>
+#include <charconv>
 #include <cstring>
 #include <iostream>
 
@@ -10,6 +11,17 @@
 
 namespace {
 constexpr int kOk = 0, kInternal = 1, kBadInput = 2;
+
+// More threads than any machine granpipe runs on has cores.
+constexpr int kMaxThreads = 1024;
+
+// --threads N: CLI11's own check prints its range as a 309-digit number.
+std::string check_threads(const std::string& text) {
+  int n = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), n);
+  if (error == std::errc{} && end == text.data() + text.size() && n >= 1 && n <= kMaxThreads) return "";
+  return "expected an integer in [1, " + std::to_string(kMaxThreads) + "], got \"" + text + "\"";
+}
 
 bool is_subcommand(const char* arg) {
   for (const char* s : {"run", "plugins", "describe", "validate", "inspect"})
@@ -38,7 +50,8 @@ int main(int argc, char** argv) {
   run->add_option("pipeline", pipeline_file, "pipeline JSON file")->required();
   run->add_option("--set", sets, "override a value: json.path=value (repeatable)");
   run->add_option("--out", out_dir, "output directory (default: the pipeline's output.dir)");
-  run->add_option("--threads", threads, "threads (default: all cores)")->check(CLI::PositiveNumber);
+  run->add_option("--threads", threads, "threads, 1 to " + std::to_string(kMaxThreads) + " (default: all cores)")
+      ->check(CLI::Validator(check_threads, ""));
   run->add_flag("--overwrite", overwrite, "replace an existing granpipe output directory");
   run->add_flag("--quiet", quiet, "no progress or log on stderr");
 
