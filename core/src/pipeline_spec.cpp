@@ -2,7 +2,6 @@
 // top-level schema, the plugins' parameter schemas, and sweep expansion.
 #include <fstream>
 #include <set>
-#include <sstream>
 
 #include "granpipe/plugin_loader.hpp"
 #include "json_path.hpp"
@@ -17,6 +16,9 @@ namespace fs = std::filesystem;
 using json = nlohmann::json;
 
 namespace {
+
+// Far more than the longest sweep list needs; a bound on what reading a file may take.
+constexpr std::size_t kMaxPipelineBytes = std::size_t{64} << 20;
 
 // "--set a=b", cut short if long, to start a message about that --set.
 std::string set_origin(const std::string& assignment) {
@@ -54,14 +56,22 @@ Pipeline& Pipeline::operator=(Pipeline&&) noexcept = default;
 
 Pipeline Pipeline::load(const fs::path& file, const std::vector<std::string>& sets,
                         const Registry& registry) {
+  const std::string expected = file.string() + ": expected a pipeline JSON file";
+  std::error_code ec;
+  if (fs::is_directory(file, ec)) throw InputError(expected + ", got a directory");
   std::ifstream in(file, std::ios::binary);
-  if (!in) {
-    throw InputError(file.string() + ": expected a pipeline JSON file, got " +
-                     (fs::exists(file) ? "a file that cannot be read" : "no such file"));
+  if (!in) throw InputError(expected + ", got " + (fs::exists(file, ec) ? "a file that cannot be read" : "no such file"));
+  // Read in chunks up to one byte past the limit: a longer file (or /dev/zero) is
+  // known without reading it all.
+  std::string text;
+  char chunk[1 << 16];
+  while (text.size() <= kMaxPipelineBytes && in.read(chunk, sizeof chunk).gcount() > 0) {
+    text.append(chunk, static_cast<std::size_t>(in.gcount()));
   }
-  std::stringstream ss;
-  ss << in.rdbuf();
-  Pipeline p = parse(ss.str(), file.string(), sets, registry);
+  if (text.size() > kMaxPipelineBytes) {
+    throw InputError(expected + " of at most " + std::to_string(kMaxPipelineBytes >> 20) + " MB, got a longer one");
+  }
+  Pipeline p = parse(text, file.string(), sets, registry);
   p.impl_->base_dir = file.parent_path();
   return p;
 }
