@@ -41,7 +41,7 @@ CellList::CellList(const Coordinates& position, const Container& container, int 
     : pos_(position), dim_(dim), cutoff_(cutoff) {
   const std::string at = (where.empty() ? "" : where + ": ") + "neighbour search: ";
   if (!(cutoff >= kMinRange && cutoff <= kMaxRange)) {
-    throw InputError(at + "expected a contact range (twice the largest radius) from " + number(kMinRange) +
+    throw InputError(at + "expected a contact range (largest contact distance) from " + number(kMinRange) +
                      " to " + number(kMaxRange) + ", got " + number(cutoff));
   }
   const Eigen::Index n = position.rows();

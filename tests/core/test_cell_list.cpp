@@ -175,7 +175,7 @@ TEST(CellList, AbsurdScalesAreInputErrors) {
             "spread over 1e+12");
   const Container unit = Container::periodic_box(2, Eigen::Vector3d::Zero(), Eigen::Vector3d(1, 1, 0));
   EXPECT_EQ(error_of(x, unit, 2, 2e-200),
-            "frame 3: neighbour search: expected a contact range (twice the largest radius) from 1e-100 to 1e+100, "
+            "frame 3: neighbour search: expected a contact range (largest contact distance) from 1e-100 to 1e+100, "
             "got 2e-200");
 }
 
