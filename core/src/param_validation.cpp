@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "did_you_mean.hpp"
 #include "granpipe/errors.hpp"
@@ -65,6 +66,8 @@ bool in_range(const ParamSpec& s, double x) {
 
 // JSON numbers that are whole (5 or 5.0) are integers; 5.5 and 1e30 are not.
 bool as_integer(const nlohmann::json& v, std::int64_t& out) {
+  // Above 2^63 - 1 a JSON integer is stored unsigned, and would wrap to a negative.
+  if (v.is_number_unsigned() && v.get<std::uint64_t>() > std::numeric_limits<std::int64_t>::max()) return false;
   if (v.is_number_integer()) {
     out = v.get<std::int64_t>();
     return true;
