@@ -1,6 +1,7 @@
 // The granpipe executable. Exit codes: 0 ok, 2 bad input, 1 internal error.
 #include <CLI/CLI.hpp>
 #include <charconv>
+#include <cstdio>
 #include <cstring>
 #include <iostream>
 
@@ -21,6 +22,25 @@ std::string check_threads(const std::string& text) {
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), n);
   if (error == std::errc{} && end == text.data() + text.size() && n >= 1 && n <= kMaxThreads) return "";
   return "expected an integer in [1, " + std::to_string(kMaxThreads) + "], got \"" + text + "\"";
+}
+
+// A message is one line whatever the input put in it (a key or a plugin name with a
+// newline): control characters are written as escapes.
+std::string one_line(const std::string& message) {
+  std::string out;
+  for (const char c : message) {
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '\n') {
+      out += "\\n";
+    } else if (u < 0x20 || u == 0x7f) {
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "\\x%02x", u);
+      out += hex;
+    } else {
+      out += c;
+    }
+  }
+  return out;
 }
 
 bool is_subcommand(const char* arg) {
@@ -74,7 +94,7 @@ int main(int argc, char** argv) {
     app.parse(static_cast<int>(args.size()), args.data());
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
-    std::cerr << "granpipe: " << e.what() << " (see granpipe --help)\n";
+    std::cerr << "granpipe: " << one_line(e.what()) << " (see granpipe --help)\n";
     return kBadInput;
   }
 
@@ -106,10 +126,10 @@ int main(int argc, char** argv) {
     }
     return kOk;
   } catch (const InputError& e) {
-    std::cerr << "granpipe: " << e.what() << "\n";
+    std::cerr << "granpipe: " << one_line(e.what()) << "\n";
     return kBadInput;
   } catch (const std::exception& e) {
-    std::cerr << "granpipe: internal error: " << e.what() << "\n";
+    std::cerr << "granpipe: internal error: " << one_line(e.what()) << "\n";
     return kInternal;
   }
 }
