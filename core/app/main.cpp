@@ -1,5 +1,7 @@
 // The granpipe executable. Exit codes: 0 ok, 2 bad input, 1 internal error.
 #include <CLI/CLI.hpp>
+#include <charconv>
+#include <cstdio>
 #include <cstring>
 #include <iostream>
 
@@ -10,6 +12,36 @@
 
 namespace {
 constexpr int kOk = 0, kInternal = 1, kBadInput = 2;
+
+// More threads than any machine granpipe runs on has cores.
+constexpr int kMaxThreads = 1024;
+
+// --threads N: CLI11's own check prints its range as a 309-digit number.
+std::string check_threads(const std::string& text) {
+  int n = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), n);
+  if (error == std::errc{} && end == text.data() + text.size() && n >= 1 && n <= kMaxThreads) return "";
+  return "expected an integer in [1, " + std::to_string(kMaxThreads) + "], got \"" + text + "\"";
+}
+
+// A message is one line whatever the input put in it (a key or a plugin name with a
+// newline): control characters are written as escapes.
+std::string one_line(const std::string& message) {
+  std::string out;
+  for (const char c : message) {
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '\n') {
+      out += "\\n";
+    } else if (u < 0x20 || u == 0x7f) {
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "\\x%02x", u);
+      out += hex;
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
 
 bool is_subcommand(const char* arg) {
   for (const char* s : {"run", "plugins", "describe", "validate", "inspect"})
@@ -38,7 +70,8 @@ int main(int argc, char** argv) {
   run->add_option("pipeline", pipeline_file, "pipeline JSON file")->required();
   run->add_option("--set", sets, "override a value: json.path=value (repeatable)");
   run->add_option("--out", out_dir, "output directory (default: the pipeline's output.dir)");
-  run->add_option("--threads", threads, "threads (default: all cores)")->check(CLI::PositiveNumber);
+  run->add_option("--threads", threads, "threads, 1 to " + std::to_string(kMaxThreads) + " (default: all cores)")
+      ->check(CLI::Validator(check_threads, ""));
   run->add_flag("--overwrite", overwrite, "replace an existing granpipe output directory");
   run->add_flag("--quiet", quiet, "no progress or log on stderr");
 
@@ -61,7 +94,7 @@ int main(int argc, char** argv) {
     app.parse(static_cast<int>(args.size()), args.data());
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
-    std::cerr << "granpipe: " << e.what() << " (see granpipe --help)\n";
+    std::cerr << "granpipe: " << one_line(e.what()) << " (see granpipe --help)\n";
     return kBadInput;
   }
 
@@ -93,10 +126,10 @@ int main(int argc, char** argv) {
     }
     return kOk;
   } catch (const InputError& e) {
-    std::cerr << "granpipe: " << e.what() << "\n";
+    std::cerr << "granpipe: " << one_line(e.what()) << "\n";
     return kBadInput;
   } catch (const std::exception& e) {
-    std::cerr << "granpipe: internal error: " << e.what() << "\n";
+    std::cerr << "granpipe: internal error: " << one_line(e.what()) << "\n";
     return kInternal;
   }
 }

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 #include "granpipe/errors.hpp"
 
@@ -9,14 +11,38 @@ namespace granpipe {
 namespace {
 // Enough cells to be fast, few enough that a sparse, tall system does not allocate
 // a huge grid: cells beyond this are merged (each cell gets larger than the cutoff).
-constexpr long kMaxCells = 1 << 22;
+constexpr double kMaxCells = 1 << 22;
+// Beyond this many contact ranges per box length, positions carry fewer than 7
+// significant digits at the particles' scale (doubles have 16): an infinite box or a
+// radius of 1e-200 is nonsense to measure, not a packing.
+constexpr double kMaxLengthInRanges = 1e9;
+// Squared distances must stay normal doubles (from about 1e-308 to 1e308).
+constexpr double kMinRange = 1e-100, kMaxRange = 1e100;
+
+const char* axis_name(int a) { return a == 0 ? "x" : a == 1 ? "y" : "z"; }
+
+// %g, with as many digits as it takes to tell `x` from `other` (up to 17).
+std::string number(double x, double other) {
+  char buf[40];
+  for (int digits = 6;; ++digits) {
+    std::snprintf(buf, sizeof buf, "%.*g", digits, x);
+    char b[40];
+    std::snprintf(b, sizeof b, "%.*g", digits, other);
+    if (x == other || std::string(buf) != b || digits == 17) return buf;
+  }
+}
+
+std::string number(double x) { return number(x, x); }
+
 }  // namespace
 
 CellList::CellList(const Coordinates& position, const Container& container, int dim,
-                   double cutoff)
+                   double cutoff, const std::string& where)
     : pos_(position), dim_(dim), cutoff_(cutoff) {
-  if (!(cutoff > 0) || !std::isfinite(cutoff)) {
-    throw InternalError("CellList: cutoff must be finite and > 0");
+  const std::string at = (where.empty() ? "" : where + ": ") + "neighbour search: ";
+  if (!(cutoff >= kMinRange && cutoff <= kMaxRange)) {
+    throw InputError(at + "expected a contact range (largest contact distance) from " + number(kMinRange) +
+                     " to " + number(kMaxRange) + ", got " + number(cutoff));
   }
   const Eigen::Index n = position.rows();
   for (int a = 0; a < dim; ++a) {
@@ -24,11 +50,10 @@ CellList::CellList(const Coordinates& position, const Container& container, int 
     if (periodic_[a]) {
       lo_[a] = container.lo[a];
       length_[a] = container.length(a);
-      if (length_[a] < 2 * cutoff) {
-        throw InputError("neighbour search: periodic box length " + std::to_string(length_[a]) +
-                         " along axis " + std::to_string(a) +
-                         " is shorter than twice the interaction range " +
-                         std::to_string(cutoff));
+      if (!(length_[a] >= 2 * cutoff)) {
+        throw InputError(at + "expected a periodic box of length at least " + number(2 * cutoff, length_[a]) +
+                         " (twice the contact range) along " + axis_name(a) + ", got " +
+                         number(length_[a], 2 * cutoff));
       }
     } else {
       // Non-periodic axes span the particles (they may leave an open top).
@@ -36,24 +61,36 @@ CellList::CellList(const Coordinates& position, const Container& container, int 
       lo_[a] = mn;
       length_[a] = std::max(mx - mn, cutoff);
     }
+    if (!(length_[a] <= kMaxLengthInRanges * cutoff)) {
+      throw InputError(at + "expected a box at most " + number(kMaxLengthInRanges) + " contact ranges (" +
+                       number(cutoff) + ") long along " + axis_name(a) + ", got " +
+                       (periodic_[a] ? "a periodic box of length " : "particles spread over ") +
+                       number(length_[a]));
+    }
   }
-  long total = 1;
+  // Cells per axis, estimated in double (their product could overflow an integer).
+  std::array<double, 3> cells{1, 1, 1};
+  double total = 1;
   for (int a = 0; a < dim; ++a) {
-    ncell_[a] = std::max(1, static_cast<int>(std::floor(length_[a] / cutoff)));
-    total *= ncell_[a];
+    cells[a] = std::max(1.0, std::floor(length_[a] / cutoff));
+    total *= cells[a];
   }
   while (total > kMaxCells) {
     total = 1;
     for (int a = 0; a < dim; ++a) {
-      ncell_[a] = std::max(1, ncell_[a] / 2);
-      total *= ncell_[a];
+      cells[a] = std::max(1.0, std::floor(cells[a] / 2));
+      total *= cells[a];
     }
   }
-  for (int a = 0; a < dim; ++a) cell_size_[a] = length_[a] / ncell_[a];
+  for (int a = 0; a < dim; ++a) {
+    ncell_[a] = static_cast<int>(cells[a]);
+    cell_size_[a] = length_[a] / ncell_[a];
+  }
+  const long ncells = static_cast<long>(total);
 
   // Counting sort of particles by cell.
   std::vector<int> cell(n);
-  cell_start_.assign(total + 1, 0);
+  cell_start_.assign(ncells + 1, 0);
   std::array<int, 3> c{};
   double x[3] = {0, 0, 0};
   for (Eigen::Index i = 0; i < n; ++i) {
@@ -61,7 +98,7 @@ CellList::CellList(const Coordinates& position, const Container& container, int 
     cell[i] = cell_of(x, c);
     ++cell_start_[cell[i] + 1];
   }
-  for (long k = 0; k < total; ++k) cell_start_[k + 1] += cell_start_[k];
+  for (long k = 0; k < ncells; ++k) cell_start_[k + 1] += cell_start_[k];
   order_.resize(n);
   std::vector<int> fill(cell_start_.begin(), cell_start_.end() - 1);
   for (Eigen::Index i = 0; i < n; ++i) order_[fill[cell[i]]++] = static_cast<int>(i);

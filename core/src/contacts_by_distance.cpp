@@ -58,6 +58,10 @@ IntArray DistanceContacts::coordination(Eigen::Index n, bool with_walls) const {
 }
 
 DistanceContacts find_contacts_by_distance(const Frame& frame, double tolerance) {
+  return find_contacts_by_distance(frame, tolerance, "frame at step " + std::to_string(frame.step));
+}
+
+DistanceContacts find_contacts_by_distance(const Frame& frame, double tolerance, const std::string& where) {
   if (!(tolerance >= 0.0) || !std::isfinite(tolerance)) {
     throw InputError("contacts by distance: expected a finite tolerance >= 0, got " +
                      std::to_string(tolerance));
@@ -66,7 +70,7 @@ DistanceContacts find_contacts_by_distance(const Frame& frame, double tolerance)
   std::vector<Found> pairs, walls;
   if (n >= 2) {
     const double cutoff = 2.0 * frame.radius().maxCoeff() * (1.0 + tolerance);
-    const CellList cells(frame.position(), frame.container, frame.dim, cutoff);
+    const CellList cells(frame.position(), frame.container, frame.dim, cutoff, where);
     cells.for_each_pair([&](int i, int j, const double*, double r2) {
       const double contact = (frame.radius()[i] + frame.radius()[j]) * (1.0 + tolerance);
       if (r2 <= contact * contact) {

@@ -1,6 +1,8 @@
 #include "param_validation.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "did_you_mean.hpp"
 #include "granpipe/errors.hpp"
@@ -8,16 +10,41 @@
 namespace granpipe {
 
 JsonLocation JsonLocation::child(const std::string& key) const {
-  return {file, path.empty() ? key : path + "." + key};
+  return {file, path.empty() ? key : path + "." + key, overrides};
 }
 
 JsonLocation JsonLocation::index(std::size_t i) const {
-  return {file, path + "[" + std::to_string(i) + "]"};
+  return {file, path + "[" + std::to_string(i) + "]", overrides};
+}
+
+namespace {
+// "a.b" covers "a.b", "a.b.c" and "a.b[0]", not "a.bc".
+bool covers(const std::string& outer, const std::string& path) {
+  return path.compare(0, outer.size(), outer) == 0 &&
+         (path.size() == outer.size() || path[outer.size()] == '.' || path[outer.size()] == '[');
+}
+}  // namespace
+
+std::string JsonLocation::str() const {
+  if (overrides) {
+    for (auto o = overrides->rbegin(); o != overrides->rend(); ++o) {
+      if (!covers(o->path, path)) continue;
+      if (o->origin.empty()) break;
+      return path == o->path ? o->origin : o->origin + ": " + path;
+    }
+  }
+  return file + ": " + path;
+}
+
+std::string located_message(const JsonLocation& top, const std::string& message) {
+  const auto colon = message.find(": ");
+  if (colon == std::string::npos) return top.str() + message;
+  return top.child(message.substr(0, colon)).str() + message.substr(colon);
 }
 
 std::string json_brief(const nlohmann::json& v) {
   std::string s = v.dump();
-  if (s.size() > 60) s = s.substr(0, 57) + "...";
+  if (s.size() > 60) s = s.substr(0, 57) + (v.is_string() ? "...\"" : "...");
   return s;
 }
 
@@ -39,6 +66,8 @@ bool in_range(const ParamSpec& s, double x) {
 
 // JSON numbers that are whole (5 or 5.0) are integers; 5.5 and 1e30 are not.
 bool as_integer(const nlohmann::json& v, std::int64_t& out) {
+  // Above 2^63 - 1 a JSON integer is stored unsigned, and would wrap to a negative.
+  if (v.is_number_unsigned() && v.get<std::uint64_t>() > std::numeric_limits<std::int64_t>::max()) return false;
   if (v.is_number_integer()) {
     out = v.get<std::int64_t>();
     return true;
@@ -115,6 +144,16 @@ ParamValue convert(const nlohmann::json& v, const ParamSpec& s, const JsonLocati
 }
 
 }  // namespace
+
+void check_keys(const nlohmann::json& obj, const std::vector<std::string>& allowed, const JsonLocation& at) {
+  if (!obj.is_object()) throw InputError(at.str() + ": expected an object, got " + json_brief(obj));
+  for (const auto& [key, v] : obj.items()) {
+    if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
+      throw InputError(at.child(key).str() + ": unknown key" + did_you_mean(key, allowed) +
+                       known_list(allowed));
+    }
+  }
+}
 
 Params validate_params(nlohmann::json& object, const Schema& schema, const JsonLocation& where,
                        const std::filesystem::path& base_dir) {

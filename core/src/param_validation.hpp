@@ -3,22 +3,38 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "granpipe/params.hpp"
 
 namespace granpipe {
 
-// Where a JSON value sits, for error messages: "pipelines/x.json: analyzers[1].params".
+// A value put into the pipeline after reading its file, by `--set path=value` or by a
+// sweep: a message about it (or about what it holds) names its origin, not the file.
+struct Override {
+  std::string path;    // "source.params.radius", as JsonLocation paths read
+  std::string origin;  // "--set source.params.radius=0", or "" for the file itself
+};
+
+// Where a JSON value sits, for error messages: "pipelines/x.json: analyzers[1].params",
+// or "--set analyzers[1].params.r=0" when the last override covering it says so.
 struct JsonLocation {
   std::string file;
   std::string path;
+  const std::vector<Override>* overrides = nullptr;  // later ones win
   JsonLocation child(const std::string& key) const;
   JsonLocation index(std::size_t i) const;
-  std::string str() const { return file + ": " + path; }
+  std::string str() const;
 };
+
+// `message` ("source.params.cells: expected ...", from a plugin) with its origin in front.
+std::string located_message(const JsonLocation& top, const std::string& message);
 
 // Short rendering of a JSON value for "got ..." (strings quoted, long values cut).
 std::string json_brief(const nlohmann::json& v);
+
+// Refuses an `obj` that is not an object or has a key not in `allowed` (with a did-you-mean).
+void check_keys(const nlohmann::json& obj, const std::vector<std::string>& allowed, const JsonLocation& at);
 
 // Checks `object` against `schema` and returns the values with defaults filled in;
 // `object` is rewritten to its filled-in form (what pipeline.json records). Relative

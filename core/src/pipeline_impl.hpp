@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "granpipe/pipeline.hpp"
+#include "param_validation.hpp"
 
 namespace granpipe {
 
@@ -33,6 +34,8 @@ struct Pipeline::Impl {
   bool save_frames = true;
   std::int64_t frame_stride = 1;
   std::vector<std::string> sweep_paths;
+  std::vector<Override> overrides;  // --set values, then the sweep's paths
+  JsonLocation top() const { return {origin, "", &overrides}; }
   std::vector<PointSpec> points;
   nlohmann::json resolved;  // as run: point 0's values plus the sweep
 };

@@ -84,7 +84,7 @@ PointPlugins make_plugins(const Pipeline::Impl& p, std::size_t k, int threads, L
     made.source = p.source->make_source(context(
         point.source_params, seeds.derive("source:" + p.source->name), "source", "source.params"));
   } catch (const InputError& e) {
-    throw InputError(p.origin + ": " + e.what());
+    throw InputError(located_message(p.top(), e.what()));
   }
   FrameContent have = made.source->content();
   for (std::size_t a = 0; a < p.analyzers.size(); ++a) {
@@ -94,7 +94,7 @@ PointPlugins make_plugins(const Pipeline::Impl& p, std::size_t k, int threads, L
           context(point.analyzer_params[a], seeds.derive("analyzer:" + spec.name), spec.name,
                   "analyzers[" + std::to_string(a) + "].params")));
     } catch (const InputError& e) {
-      throw InputError(p.origin + ": " + e.what());
+      throw InputError(located_message(p.top(), e.what()));
     }
     const std::string missing = describe_needs(made.analyzers.back()->needs(), have);
     if (!missing.empty()) {

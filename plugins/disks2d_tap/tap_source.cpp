@@ -13,11 +13,15 @@ namespace granpipe::disks2d_tap {
 
 Schema schema() {
   Schema s;
-  s.real("width", 20.0, "box width (distance between the side walls)").min(0.0, true).unit("length");
-  s.integer("N", 2000, "number of disks").min(1);
+  // Lengths whose squares stay normal doubles; a bed of 10^6 disks already takes hours a tap.
+  s.real("width", 20.0,
+         "box width (distance between the side walls), at most 10^6 diameters of the smallest disk")
+      .range(1e-50, 1e50)
+      .unit("length");
+  s.integer("N", 2000, "number of disks").range(1, 1000000);
   s.real("radius", 0.1 + 1.0 / std::numbers::sqrt2,
          "disk radius (mean radius when radius_spread > 0); the paper's 0.1 + 1/sqrt2")
-      .min(0.0, true)
+      .range(1e-50, 1e50)
       .unit("length");
   s.real("radius_spread", 0.0,
          "polydispersity: radii uniform in radius * [1 - spread, 1 + spread]")
@@ -89,6 +93,8 @@ Schema schema() {
 
 namespace {
 
+constexpr double kMaxWidthInDiameters = 1e6;
+
 DepositOptions deposit_options(const Params& p) {
   DepositOptions o;
   o.delta = p.real("delta");
@@ -157,6 +163,15 @@ DiskPacking random_placement(const PluginContext& ctx, const Seeds& seeds) {
     std::ostringstream s;
     s << ctx.param("radius") << ": expected disks narrower than the box (width " << width
       << "), got largest diameter " << 2.0 * r_max;
+    throw InputError(s.str());
+  }
+  // The simulation's grids have a cell per disk across the width: bound them before
+  // they are allocated.
+  const double d_min = 2.0 * *std::min_element(radii.begin(), radii.end());
+  if (width > kMaxWidthInDiameters * d_min) {
+    std::ostringstream s;
+    s << ctx.param("width") << ": expected at most " << kMaxWidthInDiameters
+      << " diameters of the smallest disk (" << d_min << "), got " << width;
     throw InputError(s.str());
   }
   double area = 0.0;

@@ -17,7 +17,7 @@ Schema schema() {
   s.string("group", std::string(""),
            "particles group of the file (/particles/<group>); empty: \"all\" or the only one");
   s.real("radius", 0.5, "radius of every particle when the file stores none (other tools' files)")
-      .min(0.0, true)
+      .range(1e-50, 1e50)
       .unit("length");
   s.real("max_overlap", 1e-6,
          "largest overlap accepted between two particles, as a fraction of the smaller radius: "
@@ -50,6 +50,12 @@ H5mdSource::H5mdSource(const PluginContext& ctx)
     throw InputError(ctx.param("last") + ": expected -1 or an index >= first (" + std::to_string(first_) +
                      "), got " + std::to_string(last_));
   }
+  // A longer stride reads the first frame only, as this one does; it would overflow the
+  // frame index.
+  if (stride_ > frames) {
+    throw InputError(ctx.param("stride") + ": expected at most the number of frames, got " +
+                     std::to_string(stride_) + held);
+  }
   if (!info.complete) {
     ctx.log.warn(info.path + ": the writer never finished this file (stopped or crashed); "
                  "reading the " + std::to_string(frames) + " frames it completed");
@@ -64,6 +70,8 @@ Frame H5mdSource::read_checked(long index) const {
   Frame frame = reader_.read(index);
   const std::string where = reader_.info().path + ": frame " + std::to_string(index);
   frame.check(where);
+  // Every measure of an empty frame is 0/0.
+  if (frame.size() == 0) throw InputError(where + ": expected particles, got none");
   check_overlaps(frame, where);
   return frame;
 }
@@ -97,7 +105,7 @@ bool H5mdSource::next(Frame& frame) {
 void H5mdSource::check_overlaps(const Frame& frame, const std::string& where) const {
   if (frame.size() < 2) return;
   // Pairs at zero tolerance are exactly the touching and overlapping ones.
-  const DistanceContacts touching = find_contacts_by_distance(frame, 0.0);
+  const DistanceContacts touching = find_contacts_by_distance(frame, 0.0, where);
   for (Eigen::Index k = 0; k < touching.pairs; ++k) {
     const auto i = touching.i[k], j = touching.j[k];
     const double smaller = std::min(frame.radius()[i], frame.radius()[j]);

@@ -1,6 +1,7 @@
 #include "lattice_source.hpp"
 
 #include <cmath>
+#include <sstream>
 
 namespace granpipe::lattice {
 
@@ -11,10 +12,11 @@ Schema schema() {
   s.integers("cells", std::vector<std::int64_t>{},
              "unit cells per axis, one entry per axis (2 in 2D, 3 in 3D); empty: 4 per axis. "
              "Cells are rectangular: triangular 1 x sqrt3 (2 particles), hcp 1 x sqrt3 x "
-             "sqrt(8/3) (4 particles), in nearest-neighbour distances")
+             "sqrt(8/3) (4 particles), in nearest-neighbour distances; at most 10^7 particles in all")
       .min(1);
+  // Squared distances and volumes of any lattice must stay normal doubles.
   s.real("radius", 0.5, "particle radius; nearest neighbours touch (their distance is 2 radius)")
-      .min(0.0, true)
+      .range(1e-50, 1e50)
       .unit("length");
   s.choice("boundary", {"periodic", "walls"}, std::string("periodic"),
            "periodic: the box is exactly the periodic repeat; walls: a box tight around the "
@@ -32,6 +34,10 @@ Schema schema() {
 namespace {
 
 std::string axis_word(int dim) { return dim == 2 ? "2D" : "3D"; }
+
+// A frame takes about 40 bytes per particle, is built when the pipeline is checked and is
+// copied for every frame emitted: 10^7 particles take about a gigabyte already.
+constexpr double kMaxParticles = 1e7;
 
 }  // namespace
 
@@ -53,6 +59,14 @@ LatticeSource::LatticeSource(const PluginContext& ctx)
   const bool periodic = ctx.params.string("boundary") == "periodic";
   const double spacing = 2.0 * radius_;  // nearest-neighbour distance
 
+  double estimate = static_cast<double>(cell_.basis.size());
+  for (auto c : cells) estimate *= static_cast<double>(c);
+  if (estimate > kMaxParticles) {
+    std::ostringstream s;
+    s << ctx.param("cells") << ": expected at most " << kMaxParticles << " particles ("
+      << cell_.basis.size() << " per cell), got " << estimate;
+    throw InputError(s.str());
+  }
   Eigen::Index n = static_cast<Eigen::Index>(cell_.basis.size());
   for (auto c : cells) n *= c;
   perfect_.resize(n, dim);

@@ -109,6 +109,48 @@ TEST(PipelineErrors, MalformedJsonNamesLineAndColumn) {
   EXPECT_EQ(e.rfind("p.json:3:11: malformed JSON:", 0), 0u) << e;
 }
 
+// 64 levels are read; the 65th is refused by a parser that never recurses, so that a
+// file nested a hundred thousand levels deep cannot overflow the stack.
+TEST(PipelineErrors, NestingDeeperThan64LevelsIsRefused) {
+  const auto repeat = [](const std::string& s, int n) {
+    std::string out;
+    for (int k = 0; k < n; ++k) out += s;
+    return out;
+  };
+  const auto nested = [](int levels) { return std::string(levels, '[') + std::string(levels, ']'); };
+  EXPECT_EQ(error_of("{\"description\": " + nested(63) + "}"),
+            "p.json: description: expected a string, got " + repeat("[", 57) + "...");
+  const std::string deepest = "p.json: description" + repeat("[0]", 63) +
+                              ": expected JSON nested at most 64 levels deep, got deeper";
+  EXPECT_EQ(error_of("{\"description\": " + nested(64) + "}"), deepest);
+  EXPECT_EQ(error_of("{\"description\": " + nested(100000) + "}"), deepest);
+  // A --set value sits under its path's levels (source, params, n).
+  EXPECT_EQ(error_of(kGood, {"source.params.n=" + nested(100000)}),
+            "--set source.params.n=" + repeat("[", 61) + "...: " + repeat("[0]", 61) +
+                ": expected JSON nested at most 64 levels deep, got deeper");
+  EXPECT_EQ(error_of(kGood, {"source.params" + repeat(".a", 100) + "=1"}),
+            "--set source.params" + repeat(".a", 32) + "...: expected a path of at most 64 parts, got more");
+}
+
+TEST(PipelineErrors, DuplicateKeysAreRefusedNotOverwritten) {
+  EXPECT_EQ(error_of(R"({"name": "a", "source": {"plugin": "random"}, "name": "b"})"),
+            "p.json: name: expected each key once in an object, got \"name\" again");
+  EXPECT_EQ(error_of(R"({"source": {"plugin": "random"}, "analyzers": [{"plugin": "meanx"},
+                        {"plugin": "meanx", "name": "b", "params": {"scale": 1, "scale": 2}}]})"),
+            "p.json: analyzers[1].params.scale: expected each key once in an object, got \"scale\" again");
+  EXPECT_EQ(error_of(kGood, {R"(source.params={"n": 1, "n": 2})"}),
+            R"(--set source.params={"n": 1, "n": 2}: n: expected each key once in an object, got "n" again)");
+}
+
+TEST(PipelineErrors, NumbersBeyondDoubleRangeNameTheirPath) {
+  EXPECT_EQ(error_of(R"({"source": {"plugin": "random", "params": {"n": 1e400}}})"),
+            "p.json: source.params.n: expected a number of magnitude below 1.8e308, got 1e400");
+  EXPECT_EQ(error_of(R"({"source": {"plugin": "random"}, "sweep": {"parameters": {"source.params.n": [1, -2E+999]}}})"),
+            "p.json: sweep.parameters.source.params.n[1]: expected a number of magnitude below 1.8e308, got -2E+999");
+  EXPECT_EQ(error_of(kGood, {"source.params.n=1e400"}),
+            "--set source.params.n=1e400: expected a number of magnitude below 1.8e308, got 1e400");
+}
+
 TEST(PipelineErrors, UnknownTopLevelKeyGetsDidYouMean) {
   const std::string e = error_of(R"({"source": {"plugin": "random"}, "analyzer": []})");
   EXPECT_EQ(e, "p.json: analyzer: unknown key (did you mean \"analyzers\"?); known: name, description, "
@@ -147,21 +189,64 @@ TEST(PipelineErrors, DuplicateAnalyzerNames) {
 }
 
 TEST(PipelineErrors, AnalyzerNamesArePlainAndFreeOfRunnerGroups) {
-  for (const char* bad : {R"(5)", R"("")", R"("a/b")", R"("source")", R"("point_001")"}) {
-    const std::string text = std::string(R"({"source": {"plugin": "random"}, "analyzers": [{"plugin": "meanx", "name": )") +
+  const std::string too_long = "\"" + std::string(101, 'a') + "\"";
+  for (const std::string bad : {R"(5)", R"("")", R"("a/b")", R"("..")", R"("a\nb")", R"("a.b")", R"("source")",
+                                R"("point_001")", too_long.c_str()}) {
+    const std::string text = R"({"source": {"plugin": "random"}, "analyzers": [{"plugin": "meanx", "name": )" +
                              bad + "}]}";
-    EXPECT_EQ(error_of(text), std::string("p.json: analyzers[0].name: expected a name of letters, digits and _ "
-                                          "(not source, sweep or point_*), got ") + bad);
+    EXPECT_EQ(error_of(text), "p.json: analyzers[0].name: expected a name of at most 100 letters, digits and _, "
+                              "starting with a letter (not source, sweep or point_*), got " +
+                                  (bad.size() > 60 ? bad.substr(0, 57) + "...\"" : bad));
   }
   EXPECT_EQ(error_of(R"({"source": {"plugin": "random"}, "sweep": {"mode": 3, "parameters": {"source.params.n": [1]}}})"),
             "p.json: sweep.mode: expected one of \"grid\", \"zip\", got 3");
 }
 
+// The run's name is the default output directory and goes into every CSV header line.
+TEST(PipelineErrors, PipelineNamesCannotLeaveTheOutputFolderOrAddLines) {
+  for (const std::string bad : {R"("")", R"("../up")", R"("a/b")", R"("..")", R"(".hidden")", R"("a\nb")",
+                                R"("a\u0001b")", R"("a b")", R"(3)"}) {
+    EXPECT_EQ(error_of(R"({"source": {"plugin": "random"}, "name": )" + bad + "}"),
+              "p.json: name: expected a name of at most 100 letters, digits, _, - and . (not first), got " + bad);
+  }
+  EXPECT_EQ(error_of(kGood, {R"(name="x\ny")"}),
+            R"(--set name="x\ny": expected a name of at most 100 letters, digits, _, - and . (not first), got "x\ny")");
+  const Registry r = test_registry();
+  EXPECT_EQ(Pipeline::parse(R"({"source": {"plugin": "random"}, "name": "run-2.b_3"})", "p.json", {}, r).points(), 1u);
+  try {
+    Pipeline::parse(R"({"source": {"plugin": "random"}})", "my pipeline.json", {}, r);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "my pipeline.json: name: expected a name of at most 100 letters, digits, _, - and . "
+                           "(not first), got none, and the file name \"my pipeline\" is not one");
+  }
+}
+
 TEST(PipelineErrors, SetOverridesAreValidatedToo) {
   EXPECT_EQ(error_of(kGood, {"source.params.frames=-1"}),
-            "p.json: source.params.frames: expected an integer >= 1, got -1");
+            "--set source.params.frames=-1: expected an integer >= 1, got -1");
   EXPECT_EQ(error_of(kGood, {"source.params.frames"}),
             "--set source.params.frames: expected path=value, got no '='");
+  EXPECT_EQ(error_of(kGood, {"seed=-1", "source.params.n=2"}), "--set seed=-1: expected an integer >= 0, got -1");
+  EXPECT_EQ(error_of(kGood, {R"(analyzers[0]={"plugin": "meanx", "params": {"scale": 0}})"}),
+            R"(--set analyzers[0]={"plugin": "meanx", "params": {"scale": 0}}: analyzers[0].params.scale: )"
+            "expected a number > 0, got 0");
+  // What the file says, and what the --set did not touch, is still the file's.
+  EXPECT_EQ(error_of(R"({"source": {"plugin": "random", "params": {"n": 0}}})", {"source.params.frames=2"}),
+            "p.json: source.params.n: expected an integer in [1, 1000], got 0");
+  // The sweep's value replaces the --set's.
+  EXPECT_EQ(error_of(R"({"source": {"plugin": "random"}, "sweep": {"parameters": {"source.params.n": [5000]}}})",
+                     {"source.params.n=5"}),
+            "p.json: source.params.n: expected an integer in [1, 1000], got 5000 (sweep point 0: "
+            "source.params.n = 5000)");
+}
+
+TEST(PipelineErrors, SetListIndexBeyond64BitsIsNoEntry) {
+  EXPECT_EQ(error_of(kGood, {"analyzers[99999999999999999999999].params.scale=1"}),
+            "--set analyzers[99999999999999999999999].params.scale=1: expected an existing list entry "
+            "[99999999999999999999999], got none");
+  EXPECT_EQ(error_of(kGood, {"analyzers[1].params.scale=1"}),
+            "--set analyzers[1].params.scale=1: expected an existing list entry [1], got none");
 }
 
 TEST(PipelineErrors, SweepValueOutOfRangeNamesThePoint) {
@@ -169,6 +254,39 @@ TEST(PipelineErrors, SweepValueOutOfRangeNamesThePoint) {
       R"({"source": {"plugin": "random"}, "sweep": {"parameters": {"source.params.n": [5, 5000]}}})");
   EXPECT_EQ(e, "p.json: source.params.n: expected an integer in [1, 1000], got 5000 (sweep point 1: "
                "source.params.n = 5000)");
+}
+
+// A sweep's size is known from its lists' lengths: too many points are refused before
+// any is made (a small file could ask for 10^9).
+TEST(PipelineErrors, SweepOfTooManyPointsIsRefusedBeforeExpanding) {
+  const auto list = [](int n) {
+    std::string s = "[1";
+    for (int k = 1; k < n; ++k) s += ", 1";
+    return s + "]";
+  };
+  EXPECT_EQ(error_of(R"({"source": {"plugin": "random"}, "analyzers": [{"plugin": "meanx"}], "sweep": {"parameters": {
+                        "source.params.n": )" + list(1000) + R"(, "source.params.frames": )" + list(1000) +
+                     R"(, "analyzers[0].params.scale": )" + list(1000) + "}}}"),
+            "p.json: sweep.parameters: expected at most 100000 sweep points, got 1e+09 (grid of 1000 x 1000 x 1000 values)");
+  EXPECT_EQ(error_of(R"({"source": {"plugin": "random"}, "sweep": {"mode": "zip", "parameters": {"source.params.n": )" +
+                     list(100001) + "}}}"),
+            "p.json: sweep.parameters: expected at most 100000 sweep points, got 100001 (zip of 100001 values)");
+  const Registry r = test_registry();
+  const std::string at_limit = R"({"source": {"plugin": "random"}, "sweep": {"parameters": {"source.params.n": )" +
+                               list(100) + R"(, "source.params.frames": )" + list(1000) + "}}}";
+  EXPECT_EQ(Pipeline::parse(at_limit, "p.json", {}, r).points(), 100000u);
+}
+
+TEST(PipelineErrors, SweepPathsAreCheckedWithoutRecursion) {
+  const std::string name(200000, 'a');
+  EXPECT_EQ(error_of(R"({"source": {"plugin": "random"}, "sweep": {"parameters": {"source.params.)" + name +
+                     R"(": [1]}}})"),
+            "p.json: source.params." + name + ": unknown parameter; known: frames, n (sweep point 0: source.params." +
+                name + " = 1)");
+  EXPECT_EQ(error_of(R"({"source": {"plugin": "random"}, "sweep": {"parameters": {"source.params.n-)" + name +
+                     R"(": [1]}}})"),
+            "p.json: sweep.parameters[\"source.params.n-aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa...\"]: expected a plugin "
+            "parameter path like source.params.name or analyzers[0].params.name, got \"source.params.n-aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa...\"");
 }
 
 TEST(PipelineErrors, AnalyzerNeedsWhatTheSourceLacks) {

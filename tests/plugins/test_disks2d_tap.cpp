@@ -627,6 +627,17 @@ TEST(Disks2dTapSource, RejectsImpossibleParameters) {
                InputError);
 }
 
+// A box so wide that the simulation's grids would take gigabytes (a radius of 1e-200
+// in a box of 20 is one) is refused before they are allocated.
+TEST(Disks2dTapSource, WidthIsBoundedInDiametersBeforeAllocating) {
+  try {
+    run_source(source_params({{"width", 1e9}, {"radius", 0.5}}), 1);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "width: expected at most 1e+06 diameters of the smallest disk (1), got 1e+09");
+  }
+}
+
 // The largest initial fraction the schema allows must be one the placement reaches (0.5
 // did not: at width 20 the centres reach 92 % of the width and the placement jammed).
 TEST(Disks2dTapSource, PlacesAtTheLargestAllowedInitialFraction) {

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <limits>
 
 #include "granpipe/frame_store.hpp"
 #include "h5md_source.hpp"
@@ -121,6 +122,20 @@ TEST_F(H5mdSourceTest, SelectionOutsideTheFileIsAnInputError) {
   EXPECT_EQ(message(3, 2), "last: expected -1 or an index >= first (3), got 2");
 }
 
+// A stride past the end reads the first frame only; one that would overflow the frame
+// index is refused (it read frame -2^63, an internal error).
+TEST_F(H5mdSourceTest, StrideIsAtMostTheNumberOfFrames) {
+  const fs::path p = write(4);
+  EXPECT_EQ(steps_of(*source(p, 1, -1, 4)), (Steps{10}));
+  try {
+    source(p, 1, -1, std::numeric_limits<std::int64_t>::max());
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "stride: expected at most the number of frames, got 9223372036854775807 (" +
+                                         p.string() + " holds 4 frames)");
+  }
+}
+
 TEST_F(H5mdSourceTest, ReadsTheFinishedFramesOfAnUnfinishedFile) {
   const fs::path p = write(3, false);
   auto s = source(p, 0, -1, 1);
@@ -169,6 +184,33 @@ TEST_F(H5mdSourceTest, OverlappingParticlesAreRefusedWithThePair) {
 
 TEST_F(H5mdSourceTest, ExactlyTouchingParticlesAreAccepted) {
   EXPECT_EQ(error_of([&] { return source(write_pair(dir_, 1.0), 0, -1, 1); }), "(no InputError)");
+}
+
+// Every measure of an empty frame would be NaN.
+TEST_F(H5mdSourceTest, FramesWithoutParticlesAreRefused) {
+  const fs::path p = dir_ / "empty.h5";
+  FrameWriter w(p, "{}");
+  Frame f;
+  f.resize(0, 2);
+  w.append(f);
+  w.close();
+  EXPECT_EQ(error_of([&] { return source(p, 0, -1, 1); }), p.string() + ": frame 0: expected particles, got none");
+}
+
+// An infinite periodic box gave phi = 0 with exit 0.
+TEST_F(H5mdSourceTest, AnInfiniteBoxIsRefusedWithFileAndFrame) {
+  const fs::path p = dir_ / "infinite.h5";
+  FrameWriter w(p, "{}");
+  Frame f;
+  f.resize(2, 2);
+  f.position()(1, 0) = 2.0;
+  f.radius().setConstant(0.5);
+  f.container = Container::periodic_box(2, Eigen::Vector3d::Zero(), Eigen::Vector3d(1e308, 1e308, 0));
+  w.append(f);
+  w.close();
+  EXPECT_EQ(error_of([&] { return source(p, 0, -1, 1); }),
+            p.string() + ": frame 0: neighbour search: expected a box at most 1e+09 contact ranges (1) long along x, "
+                         "got a periodic box of length 1e+308");
 }
 
 TEST_F(H5mdSourceTest, NanPositionsAreRefusedWithFileAndFrame) {

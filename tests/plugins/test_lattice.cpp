@@ -142,6 +142,19 @@ TEST(Lattice, CellsMustMatchTheDimension) {
   EXPECT_EQ(f.size(), 4 * 2 * 3 * 5);
 }
 
+// The size is estimated from the cells before the frame is allocated (10^15 particles
+// was a std::bad_alloc, exit 1).
+TEST(Lattice, TooManyParticlesAreRefusedBeforeAllocating) {
+  try {
+    run({{"lattice", std::string("fcc")}, {"cells", std::vector<std::int64_t>{100000, 100000, 100000}}});
+    FAIL() << "expected an InputError";
+  } catch (const granpipe::InputError& e) {
+    EXPECT_STREQ(e.what(), "cells: expected at most 1e+07 particles (4 per cell), got 4e+15");
+  }
+  EXPECT_THROW(run({{"lattice", std::string("sc")}, {"cells", std::vector<std::int64_t>{216, 216, 216}}}),
+               granpipe::InputError);
+}
+
 TEST(Lattice, JitteredFramesNeverOverlap) {
   for (const std::string name : {"triangular", "fcc", "bcc"}) {
     for (const std::string boundary : {"periodic", "walls"}) {

@@ -5,6 +5,7 @@
 #include <array>
 #include <utility>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "granpipe/container.hpp"
@@ -15,8 +16,12 @@ namespace granpipe {
 class CellList {
  public:
   // `cutoff` is the largest centre distance any query will ask for. Along a periodic
-  // axis the box must be at least 2 * cutoff long (minimum image).
-  CellList(const Coordinates& position, const Container& container, int dim, double cutoff);
+  // axis the box must be at least 2 * cutoff long (minimum image), and along every axis
+  // at most 1e9 * cutoff. An InputError says so, after `where` (e.g. the frame).
+  CellList(const Coordinates& position, const Container& container, int dim, double cutoff,
+           const std::string& where);
+  CellList(const Coordinates& position, const Container& container, int dim, double cutoff)
+      : CellList(position, container, dim, cutoff, "") {}
 
   // Calls f(i, j, d, r2) once for every pair i < j with |d|^2 = r2 <= cutoff^2, where
   // d = x_j - x_i (minimum image) is a const double* of length dim.

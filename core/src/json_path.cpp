@@ -1,0 +1,93 @@
+#include "json_path.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+
+#include "granpipe/errors.hpp"
+#include "param_validation.hpp"
+#include "strict_json.hpp"
+
+namespace granpipe {
+using json = nlohmann::json;
+
+namespace {
+
+bool is_name_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
+bool is_name_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+bool is_digit(char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }
+
+// Whether `s` from `pos` to its end is a parameter name.
+bool is_name_from(const std::string& s, std::size_t pos) {
+  return pos < s.size() && is_name_start(s[pos]) && std::all_of(s.begin() + pos + 1, s.end(), is_name_char);
+}
+
+}  // namespace
+
+std::vector<std::string> split_path(const std::string& path, const std::string& where) {
+  const auto malformed = [&] {
+    return InputError(where + ": expected a path like source.params.name or analyzers[0].params.name, got " +
+                      json_brief(path));
+  };
+  std::vector<std::string> parts;
+  std::size_t pos = 0;
+  while (pos < path.size()) {
+    if (parts.size() == kMaxJsonDepth) {
+      throw InputError(where + ": expected a path of at most " + std::to_string(kMaxJsonDepth) +
+                       " parts, got more");
+    }
+    std::size_t end = pos;
+    if (path[pos] == '[') {
+      ++pos;
+      for (end = pos; end < path.size() && is_digit(path[end]);) ++end;
+      if (end == pos || end == path.size() || path[end] != ']') throw malformed();
+      parts.push_back(path.substr(pos, end - pos));
+      pos = end + 1;
+      continue;
+    }
+    if (!parts.empty() && path[pos++] != '.') throw malformed();
+    if (pos == path.size() || !is_name_start(path[pos])) throw malformed();
+    for (end = pos + 1; end < path.size() && is_name_char(path[end]);) ++end;
+    parts.push_back(path.substr(pos, end - pos));
+    pos = end;
+  }
+  if (parts.empty()) throw InputError(where + ": expected a parameter path, got \"\"");
+  return parts;
+}
+
+json& locate(json& root, const std::vector<std::string>& parts, const std::string& where) {
+  json* node = &root;
+  for (const auto& p : parts) {
+    if (is_digit(p[0])) {
+      std::size_t k = 0;
+      const auto [end, error] = std::from_chars(p.data(), p.data() + p.size(), k);
+      if (error != std::errc{} || end != p.data() + p.size() || !node->is_array() || k >= node->size()) {
+        throw InputError(where + ": expected an existing list entry [" + p + "], got none");
+      }
+      node = &(*node)[k];
+    } else {
+      if (node->is_null()) *node = json::object();
+      if (!node->is_object()) throw InputError(where + ": expected an object at \"" + p + "\"");
+      node = &(*node)[p];
+    }
+  }
+  return *node;
+}
+
+std::string join_path(const std::vector<std::string>& parts) {
+  std::string path;
+  for (const auto& p : parts) path += is_digit(p[0]) ? "[" + p + "]" : (path.empty() ? "" : ".") + p;
+  return path;
+}
+
+bool is_plugin_param_path(const std::string& path) {
+  static const std::string source = "source.params.", analyzers = "analyzers[", params = "].params.";
+  if (path.rfind(source, 0) == 0) return is_name_from(path, source.size());
+  if (path.rfind(analyzers, 0) != 0) return false;
+  std::size_t end = analyzers.size();
+  while (end < path.size() && is_digit(path[end])) ++end;
+  return end > analyzers.size() && path.compare(end, params.size(), params) == 0 &&
+         is_name_from(path, end + params.size());
+}
+
+}  // namespace granpipe

@@ -1,0 +1,135 @@
+#include "strict_json.hpp"
+
+#include <unordered_set>
+#include <vector>
+
+#include "granpipe/errors.hpp"
+
+namespace granpipe {
+using json = nlohmann::json;
+
+namespace {
+
+// Follows the parser's events to know the JSON path of what is being read, and refuses
+// what the DOM must not hold.
+class StrictReader {
+ public:
+  StrictReader(std::string origin, std::size_t outer_depth)
+      : origin_(std::move(origin)), outer_depth_(outer_depth) {}
+
+  bool operator()(int /*depth*/, json::parse_event_t event, json& parsed) {
+    using E = json::parse_event_t;
+    switch (event) {
+      case E::object_start:
+      case E::array_start: open(event == E::array_start); break;
+      case E::key: read_key(parsed.get<std::string>()); break;
+      case E::value: element_done(); break;
+      case E::object_end:
+      case E::array_end:
+        levels_.pop_back();
+        element_done();
+        break;
+    }
+    return true;
+  }
+
+  // The JSON library's "number overflow parsing '1e400'", said with the number's path.
+  InputError number_overflow(const json::out_of_range& e) const {
+    const std::string what = e.what();
+    const auto open = what.find('\''), close = what.rfind('\'');
+    const std::string token = open < close ? what.substr(open + 1, close - open - 1) : "?";
+    return InputError(where(element_path()) + ": expected a number of magnitude below 1.8e308, got " + token);
+  }
+
+ private:
+  struct Level {
+    bool is_array = false;
+    std::string path;
+    std::size_t index = 0;  // of the element being read, in an array
+    std::string key;        // of the element being read, in an object
+    std::unordered_set<std::string> keys;  // read so far, in an object
+  };
+
+  std::string where(const std::string& path) const { return path.empty() ? origin_ : origin_ + ": " + path; }
+
+  // The path of the element being read now.
+  std::string element_path() const {
+    if (levels_.empty()) return "";
+    const Level& top = levels_.back();
+    if (top.is_array) return top.path + "[" + std::to_string(top.index) + "]";
+    return top.path.empty() ? top.key : top.path + "." + top.key;
+  }
+
+  void open(bool is_array) {
+    const std::string path = element_path();
+    if (outer_depth_ + levels_.size() >= kMaxJsonDepth) {
+      throw InputError(where(path) + ": expected JSON nested at most " + std::to_string(kMaxJsonDepth) +
+                       " levels deep, got deeper");
+    }
+    levels_.push_back({is_array, path, 0, {}, {}});
+  }
+
+  // The JSON library would keep the last of two equal keys; the user meant one of them.
+  void read_key(const std::string& key) {
+    Level& top = levels_.back();
+    top.key = key;
+    if (!top.keys.insert(key).second) {
+      throw InputError(where(element_path()) + ": expected each key once in an object, got \"" + key +
+                       "\" again");
+    }
+  }
+
+  void element_done() {
+    if (!levels_.empty() && levels_.back().is_array) ++levels_.back().index;
+  }
+
+  std::string origin_;
+  std::size_t outer_depth_;
+  std::vector<Level> levels_;
+};
+
+json parse_or_throw(const std::string& text, const std::string& origin, std::size_t outer_depth) {
+  StrictReader reader(origin, outer_depth);
+  try {
+    return json::parse(
+        text, [&reader](int d, json::parse_event_t e, json& v) { return reader(d, e, v); }, true,
+        /*ignore_comments=*/true);
+  } catch (const json::out_of_range& e) {
+    if (e.id == 406) throw reader.number_overflow(e);
+    throw;
+  }
+}
+
+}  // namespace
+
+json parse_strict_json(const std::string& text, const std::string& origin, std::size_t outer_depth) {
+  try {
+    return parse_or_throw(text, origin, outer_depth);
+  } catch (const json::parse_error& e) {
+    std::size_t line = 1, col = 1;
+    for (std::size_t k = 0; k + 1 < e.byte && k < text.size(); ++k) {
+      if (text[k] == '\n') {
+        ++line;
+        col = 1;
+      } else {
+        ++col;
+      }
+    }
+    std::string reason = e.what();
+    const auto colon = reason.find(": ", reason.find("parse error"));
+    if (colon != std::string::npos) reason = reason.substr(colon + 2);
+    throw InputError(origin + ":" + std::to_string(line) + ":" + std::to_string(col) +
+                     ": malformed JSON: " + reason);
+  }
+}
+
+std::optional<json> parse_strict_json_if_json(const std::string& text, const std::string& origin,
+                                              std::size_t outer_depth) {
+  try {
+    return parse_or_throw(text, origin, outer_depth);
+  } catch (const json::parse_error&) {
+    return std::nullopt;
+  }
+}
+
+}  // namespace granpipe
