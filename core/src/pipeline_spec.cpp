@@ -185,6 +185,7 @@ Pipeline Pipeline::load(const fs::path& file, const std::vector<std::string>& se
   ss << in.rdbuf();
   Pipeline p = parse(ss.str(), file.string(), sets, registry);
   p.impl_->base_dir = file.parent_path();
+  p.impl_->file = file;
   return p;
 }
 

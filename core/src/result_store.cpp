@@ -8,10 +8,10 @@
 #include <fstream>
 #include <sstream>
 
+#include "granpipe/atomic_file.hpp"
 #include "granpipe/errors.hpp"
 #include "h5_dataset.hpp"
 #include "h5_object.hpp"
-#include "output_directory.hpp"
 
 namespace granpipe {
 namespace fs = std::filesystem;
