@@ -56,8 +56,14 @@ OutputDirectory::OutputDirectory(const fs::path& dir, bool overwrite, const std:
 
 OutputDirectory::~OutputDirectory() = default;
 
+// Every writer of a marker holds the directory's lock, so the marker is read under it.
 void OutputDirectory::check_earlier_run(bool overwrite) {
   const std::string shown = final_.string();
+  earlier_lock_ = DirectoryLock::try_lock(final_);
+  if (!earlier_lock_) {
+    throw InputError(shown + ": another granpipe run is writing or replacing this output directory; wait "
+                     "for it to end or choose another --out");
+  }
   const std::optional<RunMarker> earlier = read_run_marker(final_);
   if (!earlier && !overwrite) {
     throw InputError(shown + ": expected a new or empty output directory, got a non-empty one that granpipe "
@@ -69,11 +75,6 @@ void OutputDirectory::check_earlier_run(bool overwrite) {
                                  : "";
     throw InputError(shown + ": --overwrite replaces only directories granpipe made (they hold a " +
                      kRunMarkerName + " file), got one without" + hint + "; nothing was changed");
-  }
-  earlier_lock_ = DirectoryLock::try_lock(final_);
-  if (!earlier_lock_) {
-    throw InputError(shown + ": another granpipe run is writing or replacing this output directory; wait "
-                     "for it to end or choose another --out");
   }
   if (!overwrite) {
     throw InputError(shown + ": expected a new or empty output directory, got one holding " +
