@@ -159,7 +159,7 @@ struct FrameWriter::Impl {
 void FrameWriter::Impl::create_file(const std::string& provenance) {
   h5::Object fapl = h5::owned(file_access_latest(), "cannot make the file access list");
   file = h5::owned(H5Fcreate(name.c_str(), H5F_ACC_EXCL, H5P_DEFAULT, fapl.id()),
-                   "cannot create the file (does its directory exist and is it writable?)");
+                   "cannot create the file (does its directory exist, is it writable, is the disk full?)");
   h5::Object h5md = h5::create_group(file.id(), "/h5md");
   h5::write_attribute(h5md.id(), "version", std::vector<int>{1, 1});
   h5::Object author = h5::create_group(file.id(), "/h5md/author");
@@ -332,7 +332,7 @@ void FrameWriter::append(const Frame& frame) {
     w.layout = l;
     h5::input_errors_of(w.name, [&] {
       w.create_datasets(frame);
-      h5::check(H5Fstart_swmr_write(w.file.id()), "cannot start SWMR writing");
+      h5::check(H5Fstart_swmr_write(w.file.id()), "cannot start SWMR writing (is the disk full?)");
     });
   } else if (!(l == *w.layout)) {
     throw InternalError(w.name + ": frame " + std::to_string(w.frames) + " has " + describe(l) +

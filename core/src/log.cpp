@@ -6,6 +6,9 @@ namespace granpipe {
 
 void Log::open_file(const std::string& path) {
   std::lock_guard lock(mutex_);
+  // A Log used for several runs writes each run's lines into that run's log only.
+  if (file_.is_open()) file_.close();
+  file_.clear();
   file_.open(path, std::ios::app);
 }
 

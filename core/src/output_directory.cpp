@@ -1,40 +1,212 @@
 #include "output_directory.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <fstream>
 
 #include "granpipe/errors.hpp"
+#include "granpipe/log.hpp"
+#include "output_path_checks.hpp"
 
 namespace granpipe {
 namespace fs = std::filesystem;
 
-void prepare_output_directory(const fs::path& dir, bool overwrite) {
-  std::error_code ec;
-  if (fs::exists(dir, ec) && !fs::is_empty(dir, ec)) {
-    if (!overwrite) {
-      throw InputError(dir.string() + ": expected a new or empty output directory, got an existing one "
-                       "(choose another with --out, or pass --overwrite to replace it)");
-    }
-    if (!fs::exists(dir / "pipeline.json")) {
-      throw InputError(dir.string() + ": --overwrite replaces only granpipe output directories "
-                       "(with a pipeline.json), got a directory without one");
-    }
-    fs::remove_all(dir);
+namespace {
+
+std::string describe_earlier(const RunMarker& m) {
+  switch (m.status) {
+    case RunStatus::Complete: return "the output of an earlier run";
+    case RunStatus::Failed: return "a failed run (its run.log says why)";
+    case RunStatus::Interrupted: return "an interrupted run";
+    case RunStatus::Running: return "a run that stopped before it finished (killed?)";
   }
-  fs::create_directories(dir, ec);
-  if (ec) throw InputError(dir.string() + ": cannot create the output directory: " + ec.message());
+  return "an earlier run";
 }
 
-void write_file_atomically(const fs::path& path, const std::string& content) {
-  const fs::path tmp = path.string() + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    out << content;
-    out.flush();
-    if (!out) throw InputError(path.string() + ": expected a writable file, got a write error");
+// A sibling of `dir` for this run, named after it (its run id is unique).
+fs::path beside(const fs::path& dir, const char* what, const RunMarker& run) {
+  return dir.string() + ".granpipe-" + what + "-" + run.run_id;
+}
+
+bool is_empty_directory(const fs::path& dir) {
+  std::error_code ec;
+  const bool empty = fs::is_empty(dir, ec);
+  if (ec) throw InputError(dir.string() + ": cannot read the output directory: " + ec.message());
+  return empty;
+}
+
+void append_line(const fs::path& file, const std::string& line) {
+  std::ofstream out(file, std::ios::app);
+  out << line << '\n';
+}
+
+}  // namespace
+
+OutputDirectory::OutputDirectory(const fs::path& dir, bool overwrite, const std::vector<InputFile>& inputs)
+    : final_(without_trailing_separators(dir)), work_(final_), marker_(new_run_marker()) {
+  check_output_kind(final_);
+  check_output_place(final_, inputs);
+  std::error_code ec;
+  if (fs::exists(final_, ec) && !is_empty_directory(final_)) check_earlier_run(overwrite);
+}
+
+OutputDirectory::~OutputDirectory() = default;
+
+// Every writer of a marker holds the directory's lock, so the marker is read under it.
+void OutputDirectory::check_earlier_run(bool overwrite) {
+  const std::string shown = final_.string();
+  earlier_lock_ = DirectoryLock::try_lock(final_);
+  if (!earlier_lock_) {
+    throw InputError(shown + ": another granpipe run is writing or replacing this output directory; wait "
+                     "for it to end or choose another --out");
+  }
+  const std::optional<RunMarker> earlier = read_run_marker(final_);
+  if (!earlier && !overwrite) {
+    throw InputError(shown + ": expected a new or empty output directory, got a non-empty one that granpipe "
+                     "did not make; choose another --out");
+  }
+  if (!earlier) {
+    const std::string hint = fs::exists(final_ / "pipeline.json")
+                                 ? " (if an older granpipe, which wrote no marker, made it: remove it yourself)"
+                                 : "";
+    throw InputError(shown + ": --overwrite replaces only directories granpipe made (they hold a " +
+                     kRunMarkerName + " file), got one without" + hint + "; nothing was changed");
+  }
+  if (!overwrite) {
+    throw InputError(shown + ": expected a new or empty output directory, got one holding " +
+                     describe_earlier(*earlier) +
+                     "; pass --overwrite to replace it, or choose another --out");
+  }
+  check_removable(final_);
+  earlier_run_id_ = earlier->run_id;
+  replacing_ = true;
+  work_ = beside(final_, "new", marker_);
+}
+
+void OutputDirectory::claim() {
+  std::error_code ec;
+  if (final_.has_parent_path()) fs::create_directories(final_.parent_path(), ec);
+  if (ec) throw InputError(final_.string() + ": cannot create its parent directory: " + ec.message());
+  if (replacing_)
+    claim_beside();
+  else
+    claim_in_place();
+  claimed_ = true;
+  RunMarker interrupted = marker_;
+  interrupted.status = RunStatus::Interrupted;
+  const std::string outcome = replacing_ ? "the earlier run in " + final_.string() +
+                                               " is untouched; this one is in " + work_.string() +
+                                               ", marked interrupted"
+                                         : final_.string() + " is marked interrupted (rerun with --overwrite)";
+  interruption_ = std::make_unique<InterruptionRecord>(work_, run_marker_text(interrupted), outcome);
+}
+
+// A new or empty directory is claimed by its lock: a second run cannot take the lock,
+// or takes it only after the first has written its marker.
+void OutputDirectory::claim_in_place() {
+  const bool made = mkdir(final_.c_str(), 0777) == 0;
+  if (!made && errno != EEXIST)
+    throw InputError(final_.string() + ": cannot create the output directory: " + std::strerror(errno));
+  check_output_kind(final_);  // a symlink made since the checks
+  own_lock_ = DirectoryLock::try_lock(final_);
+  if (!own_lock_ || !is_empty_directory(final_)) {
+    own_lock_.reset();
+    throw InputError(final_.string() + ": another granpipe run has just claimed this output directory; "
+                     "choose another --out");
+  }
+  try {
+    write_run_marker(final_, marker_);
+  } catch (const InputError&) {
+    std::error_code ignored;
+    fs::remove(final_ / kRunMarkerName, ignored);
+    if (made) fs::remove(final_, ignored);  // ours, and empty again
+    own_lock_.reset();
+    throw;
+  }
+}
+
+// A replacing run builds beside the earlier one, whose lock it holds since the checks.
+void OutputDirectory::claim_beside() {
+  if (mkdir(work_.c_str(), 0777) != 0) {
+    throw InputError(final_.string() + ": cannot create the new run's directory " + work_.string() + ": " +
+                     std::strerror(errno) + "; nothing was changed");
+  }
+  own_lock_ = DirectoryLock::try_lock(work_);
+  try {
+    write_run_marker(work_, marker_);
+  } catch (const InputError&) {
+    std::error_code ignored;
+    fs::remove_all(work_, ignored);  // ours, made just now
+    own_lock_.reset();
+    throw;
+  }
+}
+
+void OutputDirectory::complete(Log& log) {
+  interruption_.reset();
+  marker_.status = RunStatus::Complete;
+  write_run_marker(work_, marker_);
+  if (replacing_) remove_earlier(swap_in(), log);
+}
+
+// Returns where the earlier run is now.
+fs::path OutputDirectory::swap_in() {
+  const fs::path built = work_;
+  auto refuse = [&](int why) {
+    throw InputError(final_.string() + ": cannot swap the new run in (" + std::strerror(why) +
+                     "); the earlier run is untouched and this one is in " + built.string());
+  };
+  if (renameat2(AT_FDCWD, built.c_str(), AT_FDCWD, final_.c_str(), RENAME_EXCHANGE) == 0) {
+    work_ = final_;
+    return built;
+  }
+  if (errno != EINVAL && errno != ENOSYS) refuse(errno);
+  // A file system without atomic exchange: two renames, the first undone if the second fails.
+  const fs::path aside = beside(final_, "old", marker_);
+  if (std::rename(final_.c_str(), aside.c_str()) != 0) refuse(errno);
+  if (std::rename(built.c_str(), final_.c_str()) != 0) {
+    const int second = errno;
+    std::rename(aside.c_str(), final_.c_str());
+    refuse(second);
+  }
+  work_ = final_;
+  return aside;
+}
+
+void OutputDirectory::remove_earlier(const fs::path& dir, Log& log) {
+  earlier_lock_.reset();
+  std::optional<RunMarker> earlier;
+  try {
+    earlier = read_run_marker(dir);
+  } catch (const InputError&) {
+  }
+  if (!earlier || earlier->run_id != earlier_run_id_) {
+    log.warn(dir.string() + ": expected the earlier run replaced by this one, got something else; "
+             "left in place");
+    return;
   }
   std::error_code ec;
-  fs::rename(tmp, path, ec);
-  if (ec) throw InputError(path.string() + ": expected a writable file, got " + ec.message());
+  fs::remove_all(dir, ec);
+  if (ec) {
+    log.warn(dir.string() + ": could not remove the earlier run (" + ec.message() + "); remove it yourself");
+  }
+}
+
+void OutputDirectory::fail(const std::string& error) noexcept {
+  if (!claimed_) return;
+  interruption_.reset();
+  try {
+    append_line(work_ / "run.log", "failed: " + error);
+    if (replacing_) append_line(work_ / "run.log", "the earlier run in " + final_.string() + " is untouched");
+    marker_.status = RunStatus::Failed;
+    write_run_marker(work_, marker_);
+  } catch (...) {
+    // A full disk may refuse these too; the error itself still reaches the user.
+  }
 }
 
 }  // namespace granpipe

@@ -25,6 +25,7 @@ struct AnalyzerSpec {
 
 struct Pipeline::Impl {
   std::string origin;  // file name, for messages
+  std::filesystem::path file;  // the pipeline file, when read from one
   std::filesystem::path base_dir;
   std::string name, description;
   std::uint64_t seed = 1;

@@ -8,6 +8,7 @@
 #include <mutex>
 #include <thread>
 
+#include "granpipe/atomic_file.hpp"
 #include "granpipe/frame_store.hpp"
 #include "output_directory.hpp"
 #include "result_stream.hpp"
@@ -135,6 +136,7 @@ struct PointOutcome {
 };
 
 PointOutcome run_point(const Pipeline::Impl& p, std::size_t k, PointPlugins plugins,
+                       const ResultStream& stream,
                        Progress& progress, const fs::path& out) {
   const bool source_reports = plugins.source->work().reported_by_source;
 
@@ -180,6 +182,7 @@ PointOutcome run_point(const Pipeline::Impl& p, std::size_t k, PointPlugins plug
     for (const auto& analyzer : plugins.analyzers) {
       for (const Property& c : analyzer->publishes()) frame.particles.remove(c.name);
     }
+    stream.throw_if_failed();  // a full disk is the output's fault, not an analyzer's
     ++outcome.frames;
     if (!source_reports) progress.advance(1);
   }
@@ -244,6 +247,31 @@ Results sweep_summary(const Pipeline::Impl& p, const ResultSet& all) {
   return r;
 }
 
+// Every file the run reads: the pipeline file and each parameter of type path.
+std::vector<InputFile> input_files(const Pipeline::Impl& p) {
+  std::vector<InputFile> files;
+  if (!p.file.empty()) files.push_back({p.origin, p.file});
+  auto add = [&](const Schema& schema, const Params& params, const std::string& at) {
+    for (const ParamSpec& s : schema.specs())
+      if (s.type == ParamType::Path && params.has(s.name))
+        files.push_back({p.origin + ": " + at + "." + s.name, params.string(s.name)});
+  };
+  for (const PointSpec& point : p.points) {
+    add(p.source->schema, point.source_params, "source.params");
+    for (std::size_t a = 0; a < p.analyzers.size(); ++a) {
+      const std::string at = "analyzers[" + std::to_string(a) + "].params";
+      add(p.analyzers[a].info->schema, point.analyzer_params[a], at);
+    }
+  }
+  return files;
+}
+
+void create_point_directory(const fs::path& dir) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw InputError(dir.string() + ": cannot create the directory: " + ec.message());
+}
+
 std::string utc_now() {
   const std::time_t t = std::time(nullptr);
   char buf[32];
@@ -266,7 +294,9 @@ RunSummary Pipeline::run(const RunOptions& options, Log& log) const {
   const auto t0 = std::chrono::steady_clock::now();
   const std::string started = utc_now();
   RunSummary summary;
-  summary.output_dir = options.out.value_or(p.output_dir);
+  OutputDirectory out(options.out.value_or(p.output_dir), options.overwrite, input_files(p));
+  summary.output_dir = out.final_path();
+  const fs::path dir = out.work_path();  // beside output_dir while replacing an earlier run
 
   const int hw = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   const int threads = options.threads > 0 ? options.threads : hw;
@@ -282,61 +312,71 @@ RunSummary Pipeline::run(const RunOptions& options, Log& log) const {
   double total_work = 0;
   std::string unit = "frames";
   for (std::size_t k = 0; k < p.points.size(); ++k) {
-    plugins.push_back(make_plugins(p, k, per_point, log, progress, summary.output_dir, &stream));
+    plugins.push_back(make_plugins(p, k, per_point, log, progress, dir, &stream));
     const Source::Work w = plugins.back().source->work();
     total_work += w.total;
     unit = w.unit;
   }
 
-  prepare_output_directory(summary.output_dir, options.overwrite);
-  for (std::size_t k = 0; k < p.points.size(); ++k)
-    fs::create_directories(point_directory(p, k, summary.output_dir));
-  log.open_file((summary.output_dir / "run.log").string());
-  write_file_atomically(summary.output_dir / "pipeline.json", resolved_json() + "\n");
-  // Until the run ends, results.h5 holds the streamed tables and says it is incomplete.
-  stream.open(summary.output_dir / "results.h5",
-              {p.name, resolved_json(), version(), git_commit(), p.seed, threads, 0.0, started, false});
-  log.info("granpipe " + std::string(version()) + " (" + git_commit() + "): " + p.name + ", " +
-           std::to_string(p.points.size()) + " point(s), seed " + std::to_string(p.seed) + ", " +
-           std::to_string(threads) + " thread(s), output " + summary.output_dir.string());
+  out.claim();
+  try {
+    for (std::size_t k = 0; k < p.points.size(); ++k) create_point_directory(point_directory(p, k, dir));
+    log.open_file((dir / "run.log").string());
+    write_file_atomically(dir / "pipeline.json", resolved_json() + "\n");
+    // Until the run ends the streamed tables go to results.partial.h5, marked incomplete
+    // (as frames.partial.h5): a file named results.h5 is always a finished one.
+    stream.open(dir / "results.partial.h5", {p.name, resolved_json(), version(), git_commit(),
+                                             p.seed, threads, 0.0, started, false});
+    log.info("granpipe " + std::string(version()) + " (" + git_commit() + "): " + p.name + ", " +
+             std::to_string(p.points.size()) + " point(s), seed " + std::to_string(p.seed) + ", " +
+             std::to_string(threads) + " thread(s), output " + summary.output_dir.string());
 
-  progress.start(p.name, total_work, unit);
+    progress.start(p.name, total_work, unit);
 
-  std::vector<PointOutcome> outcomes(p.points.size());
-  std::vector<std::exception_ptr> errors(p.points.size());
-  std::atomic<std::size_t> next{0};
-  auto worker = [&] {
-    for (std::size_t k; (k = next++) < p.points.size();) {
-      try {
-        outcomes[k] = run_point(p, k, std::move(plugins[k]), progress, summary.output_dir);
-      } catch (...) {
-        errors[k] = std::current_exception();
-        next = p.points.size();  // stop handing out points after a failure
+    std::vector<PointOutcome> outcomes(p.points.size());
+    std::vector<std::exception_ptr> errors(p.points.size());
+    std::atomic<std::size_t> next{0};
+    auto worker = [&] {
+      for (std::size_t k; (k = next++) < p.points.size();) {
+        try {
+          outcomes[k] = run_point(p, k, std::move(plugins[k]), stream, progress, dir);
+        } catch (...) {
+          errors[k] = std::current_exception();
+          next = p.points.size();  // stop handing out points after a failure
+        }
       }
+    };
+    std::vector<std::thread> pool;
+    for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(worker);
+    worker();
+    for (auto& t : pool) t.join();
+    progress.finish();
+    stream.close();
+    for (auto& e : errors)
+      if (e) std::rethrow_exception(e);
+
+    for (auto& o : outcomes) {
+      summary.frames += o.frames;
+      for (auto& [group, r] : o.results) summary.results.emplace(group, std::move(r));
     }
-  };
-  std::vector<std::thread> pool;
-  for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
-  progress.finish();
-  stream.close();
-  for (auto& e : errors)
-    if (e) std::rethrow_exception(e);
+    if (p.points.size() > 1) summary.results["sweep"] = sweep_summary(p, summary.results);
+    summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
-  for (auto& o : outcomes) {
-    summary.frames += o.frames;
-    for (auto& [group, r] : o.results) summary.results.emplace(group, std::move(r));
+    Provenance prov{p.name, resolved_json(), version(), git_commit(), p.seed, threads, summary.seconds,
+                    started, true};
+    write_results(dir, summary.results, prov);
+    fs::remove(dir / "results.partial.h5");
+    log.info("done: " + std::to_string(summary.frames) + " frame(s) in " +
+             std::to_string(summary.seconds) + " s; results in " +
+             (summary.output_dir / "results.h5").string());
+    out.complete(log);
+  } catch (const std::exception& e) {
+    out.fail(e.what());
+    throw;
+  } catch (...) {
+    out.fail("an unknown error");
+    throw;
   }
-  if (p.points.size() > 1) summary.results["sweep"] = sweep_summary(p, summary.results);
-  summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-
-  Provenance prov{p.name, resolved_json(), version(), git_commit(), p.seed, threads, summary.seconds,
-                  started, true};
-  write_results(summary.output_dir, summary.results, prov);
-  log.info("done: " + std::to_string(summary.frames) + " frame(s) in " +
-           std::to_string(summary.seconds) + " s; results in " +
-           (summary.output_dir / "results.h5").string());
   return summary;
 }
 

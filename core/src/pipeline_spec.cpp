@@ -73,6 +73,7 @@ Pipeline Pipeline::load(const fs::path& file, const std::vector<std::string>& se
   }
   Pipeline p = parse(text, file.string(), sets, registry);
   p.impl_->base_dir = file.parent_path();
+  p.impl_->file = file;
   return p;
 }
 

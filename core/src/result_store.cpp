@@ -7,11 +7,12 @@
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 #include "granpipe/errors.hpp"
 #include "h5_dataset.hpp"
 #include "h5_object.hpp"
-#include "output_directory.hpp"
 #include "result_stream.hpp"
 
 namespace granpipe {
@@ -116,7 +117,10 @@ std::string quoted(const std::string& s) {
   return q + "\"";
 }
 
-void write_csvs(const fs::path& dir, const std::string& group, const Results& r, const Provenance& p) {
+using TextFiles = std::vector<std::pair<fs::path, std::string>>;
+
+void collect_csvs(const fs::path& dir, const std::string& group, const Results& r, const Provenance& p,
+                  TextFiles& csvs) {
   std::string base = group;
   for (char& c : base)
     if (c == '/') c = '.';
@@ -125,7 +129,7 @@ void write_csvs(const fs::path& dir, const std::string& group, const Results& r,
     for (const auto& [name, s] : r.scalars())
       csv += quoted(name) + "," + csv_number(s.value) + "," + csv_number(s.uncertainty) + "," +
              quoted(s.unit) + "\n";
-    write_file_atomically(dir / (base + ".scalars.csv"), csv);
+    csvs.emplace_back(dir / (base + ".scalars.csv"), csv);
   }
   for (const auto& [name, t] : r.tables()) {
     std::string csv = csv_header(p);
@@ -141,21 +145,52 @@ void write_csvs(const fs::path& dir, const std::string& group, const Results& r,
       }
       csv += "\n";
     }
-    write_file_atomically(dir / (base + "." + name + ".csv"), csv);
+    csvs.emplace_back(dir / (base + "." + name + ".csv"), csv);
   }
   for (const auto& [name, h] : r.histograms()) {
     std::string csv = csv_header(p) + "lo,hi,value,error\n";
     for (std::size_t b = 0; b < h.values.size(); ++b)
       csv += csv_number(h.edges[b]) + "," + csv_number(h.edges[b + 1]) + "," + csv_number(h.values[b]) +
              "," + csv_number(h.errors.empty() ? std::nan("") : h.errors[b]) + "\n";
-    write_file_atomically(dir / (base + "." + name + ".csv"), csv);
+    csvs.emplace_back(dir / (base + "." + name + ".csv"), csv);
   }
   for (const auto& [name, f] : r.fits()) {
     std::string csv = csv_header(p) + "# model: " + f.model + "\nparameter,value,error\n";
     for (std::size_t k = 0; k < f.names.size(); ++k)
       csv += quoted(f.names[k]) + "," + csv_number(f.values[k]) + "," + csv_number(f.errors[k]) + "\n";
-    write_file_atomically(dir / (base + "." + name + ".csv"), csv);
+    csvs.emplace_back(dir / (base + "." + name + ".csv"), csv);
   }
+}
+
+void write_h5(const fs::path& tmp, const fs::path& final_path, const ResultSet& results,
+              const Provenance& provenance) {
+  h5::silence_error_stack();
+  h5::input_errors_of(final_path.string(), [&] {
+    Object file_object =
+        owned(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), "cannot create");
+    const hid_t file = file_object.id();
+    write_provenance(file, provenance);
+    for (const auto& [group, r] : results) write_group(file, group, r);
+    h5::check(H5Fflush(file, H5F_SCOPE_GLOBAL), "cannot flush (is the disk full?)");
+    h5::check(H5Fclose(file_object.release()), "cannot close (is the disk full?)");
+  });
+}
+
+void write_text(const fs::path& tmp, const fs::path& final_path, const std::string& text) {
+  std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+  out << text;
+  out.close();
+  if (!out) {
+    throw InputError(final_path.string() + ": expected a writable file, got a write error (is the disk full?)");
+  }
+}
+
+fs::path temporary(const fs::path& path) { return path.string() + ".tmp"; }
+
+void rename_into_place(const fs::path& path) {
+  std::error_code ec;
+  fs::rename(temporary(path), path, ec);
+  if (ec) throw InputError(path.string() + ": expected a writable file, got " + ec.message());
 }
 
 }  // namespace
@@ -172,19 +207,27 @@ void write_provenance(hid_t file, const Provenance& provenance) {
   write_text_attribute(file, "pipeline_name", provenance.pipeline_name);
 }
 
+// Every file is written under a temporary name and renamed only once all are written,
+// so a run that fails here (a full disk) leaves no results file under its final name.
 void write_results(const fs::path& dir, const ResultSet& results, const Provenance& provenance) {
-  const fs::path final_path = dir / "results.h5", tmp = dir / "results.h5.tmp";
-  {
-    h5::silence_error_stack();
-    const Object file_object = owned(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT),
-                                     tmp.string() + ": cannot create");
-    const hid_t file = file_object.id();
-    write_provenance(file, provenance);
-    for (const auto& [group, r] : results) write_group(file, group, r);
-    H5Fflush(file, H5F_SCOPE_GLOBAL);
+  const fs::path final_path = dir / "results.h5";
+  TextFiles csvs;
+  for (const auto& [group, r] : results) collect_csvs(dir, group, r, provenance, csvs);
+  std::vector<fs::path> written;
+  try {
+    written.push_back(temporary(final_path));
+    write_h5(written.back(), final_path, results, provenance);
+    for (const auto& [path, text] : csvs) {
+      written.push_back(temporary(path));
+      write_text(written.back(), path, text);
+    }
+  } catch (...) {
+    std::error_code ignored;
+    for (const fs::path& f : written) fs::remove(f, ignored);
+    throw;
   }
-  for (const auto& [group, r] : results) write_csvs(dir, group, r, provenance);
-  fs::rename(tmp, final_path);
+  for (const auto& csv : csvs) rename_into_place(csv.first);
+  rename_into_place(final_path);
 }
 
 }  // namespace granpipe

@@ -32,7 +32,7 @@ void ResultStream::Impl::create(const Provenance& provenance) {
   h5::check(H5Pset_libver_bounds(fapl.id(), H5F_LIBVER_LATEST, H5F_LIBVER_LATEST),
             "cannot ask for the latest file format");
   file = h5::owned(H5Fcreate(name.c_str(), H5F_ACC_EXCL, H5P_DEFAULT, fapl.id()),
-                   "cannot create the file (does its directory exist and is it writable?)");
+                   "cannot create the file (does its directory exist, is it writable, is the disk full?)");
   write_provenance(file.id(), provenance);
   for (Declared& t : tables) {
     const std::string path = "/" + t.group + "/" + t.name;
@@ -46,7 +46,7 @@ void ResultStream::Impl::create(const Provenance& provenance) {
           h5::create_series(file.id(), path + "/" + c, H5T_IEEE_F64LE, {}, kChunkRows));
     }
   }
-  h5::check(H5Fstart_swmr_write(file.id()), "cannot start SWMR writing");
+  h5::check(H5Fstart_swmr_write(file.id()), "cannot start SWMR writing (is the disk full?)");
 }
 
 ResultStream::ResultStream() : impl_(std::make_unique<Impl>()) {}
@@ -69,16 +69,26 @@ void ResultStream::open(const std::filesystem::path& path, const Provenance& pro
 
 void ResultStream::append(std::size_t id, const std::vector<double>& row) {
   std::lock_guard lock(mutex_);
-  if (!impl_->file.valid()) return;
+  if (!impl_->file.valid() || !failure_.empty()) return;
   Declared& t = impl_->tables.at(id);
   if (row.size() != t.columns.size()) return;  // Table::add_row has refused it already
-  h5::input_errors_of(impl_->name, [&] {
-    for (std::size_t c = 0; c < row.size(); ++c) {
-      const std::string path = "/" + t.group + "/" + t.name + "/" + t.empty.columns[c];
-      h5::append_rows(t.columns[c].id(), path, H5T_NATIVE_DOUBLE, &row[c], 1);
-    }
-    h5::check(H5Fflush(impl_->file.id(), H5F_SCOPE_GLOBAL), "cannot flush (is the disk full?)");
-  });
+  try {
+    h5::input_errors_of(impl_->name, [&] {
+      for (std::size_t c = 0; c < row.size(); ++c) {
+        const std::string path = "/" + t.group + "/" + t.name + "/" + t.empty.columns[c];
+        h5::append_rows(t.columns[c].id(), path, H5T_NATIVE_DOUBLE, &row[c], 1);
+      }
+      h5::check(H5Fflush(impl_->file.id(), H5F_SCOPE_GLOBAL), "cannot flush (is the disk full?)");
+    });
+  } catch (const InputError& e) {
+    // Reported by the runner (throw_if_failed), not as the error of the plugin adding the row.
+    failure_ = e.what();
+  }
+}
+
+void ResultStream::throw_if_failed() const {
+  std::lock_guard lock(mutex_);
+  if (!failure_.empty()) throw InputError(failure_);
 }
 
 void ResultStream::close() {

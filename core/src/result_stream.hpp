@@ -1,9 +1,9 @@
 #pragma once
-// results.h5 while a run goes. Streamed tables are declared while the plugins are made;
-// open() creates the file with every one of them (as extendable datasets, in the layout
-// of the final results.h5) and starts HDF5's SWMR mode, in which the file is consistent on
-// disk after every flush; append() adds one row and flushes. The file is marked
-// incomplete: at the end of the run write_results() replaces it whole, atomically.
+// results.partial.h5 while a run goes. Streamed tables are declared while the plugins are
+// made; open() creates the file with every one of them (as extendable datasets, in the
+// layout of the final results.h5) and starts HDF5's SWMR mode, in which the file is
+// consistent on disk after every flush; append() adds one row and flushes. The file is
+// marked incomplete; a run that finishes writes results.h5 whole and removes it.
 #include <filesystem>
 #include <memory>
 #include <mutex>
@@ -35,11 +35,14 @@ class ResultStream : public ResultStreams {
   void open(const std::filesystem::path& path, const Provenance& provenance);
   // Closes the file, which stays marked incomplete.
   void close();
+  // A write that failed (a full disk) stops the streaming; this throws its InputError.
+  void throw_if_failed() const;
 
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
-  std::mutex mutex_;
+  mutable std::mutex mutex_;
+  std::string failure_;
 };
 
 }  // namespace granpipe

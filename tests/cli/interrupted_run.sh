@@ -2,7 +2,7 @@
 # interrupted_run.sh GRANPIPE WORKDIR
 # Before/after of a run killed with SIGKILL: every frame written before the kill reads
 # back, the file is marked incomplete, and it can be reprocessed by a pipeline; results.h5
-# holds the per-frame rows streamed before the kill, marked incomplete too.
+# holds the per-frame rows streamed before the kill (results.partial.h5, marked incomplete).
 set -eu
 exe=$1 work=$2
 here=$(cd "$(dirname "$0")" && pwd)
@@ -24,7 +24,8 @@ wait "$pid" 2>/dev/null || true
 echo "before the kill: $frames frames were readable while the run was going"
 [ "${frames:-0}" -ge 5 ] || { echo "FAIL: the run never wrote 5 frames"; exit 1; }
 [ ! -e "$work/run/frames.h5" ] || { echo "FAIL: a killed run left a frames.h5 that looks complete"; exit 1; }
-/usr/bin/python3 - "$work/run/results.h5" "$frames" <<'PY' || { echo "FAIL: results.h5 of the killed run"; exit 1; }
+[ ! -e "$work/run/results.h5" ] || { echo "FAIL: a killed run left a results.h5 that looks complete"; exit 1; }
+/usr/bin/python3 - "$work/run/results.partial.h5" "$frames" <<'PY' || { echo "FAIL: results.partial.h5 of the killed run"; exit 1; }
 import sys, h5py, numpy as np
 path, frames_before = sys.argv[1], int(sys.argv[2])
 with h5py.File(path, "r", swmr=True) as f:  # the writer died in SWMR mode
@@ -35,7 +36,7 @@ with h5py.File(path, "r", swmr=True) as f:  # the writer died in SWMR mode
     assert n >= frames_before - 1, f"{n} rows streamed, {frames_before} frames written"
     assert np.array_equal(rows[:n], np.arange(n)), "rows are frames 0, 1, 2, ... in order"
     assert np.all((phi[:n] > 0.6) & (phi[:n] < 0.75)), "each row holds a jittered fcc packing fraction"
-    print(f"results.h5 of the killed run: {n} per-frame rows, marked incomplete")
+    print(f"results.partial.h5 of the killed run: {n} per-frame rows, marked incomplete")
 PY
 
 echo "after the kill:"

@@ -16,7 +16,7 @@ namespace granpipe {
 struct RunOptions {
   std::optional<std::filesystem::path> out;  // overrides output.dir
   int threads = 0;                           // 0: all hardware threads
-  bool overwrite = false;                    // replace an existing output directory
+  bool overwrite = false;                    // replace an earlier run's output directory
   bool progress = true;
 };
 
@@ -48,6 +48,9 @@ class Pipeline {
   // Instantiates every plugin of every point (catching cross-parameter errors and
   // source/analyzer mismatches) without running anything.
   void check(Log& log) const;
+  // Runs into the output directory (docs/pipelines.md, "Output directory"): refused with
+  // an InputError when unsafe or taken, replaced all at once with `overwrite`. While it
+  // runs, SIGINT and SIGTERM mark the directory interrupted before ending the process.
   RunSummary run(const RunOptions& options, Log& log) const;
 
   struct Impl;  // opaque: defined inside the core library

@@ -1,0 +1,93 @@
+#include "interruption_record.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <csignal>
+
+#include "run_marker.hpp"
+
+namespace granpipe {
+namespace {
+
+constexpr int kSignals[] = {SIGINT, SIGTERM};
+
+struct Prepared {
+  int log_fd = -1;
+  std::string marker_path, marker_text;
+  std::string log_line[2], stderr_line[2];  // per entry of kSignals
+  struct sigaction previous[2] {};
+  bool handled[2] = {false, false};
+};
+
+std::atomic<bool> taken{false};           // by a live InterruptionRecord
+std::atomic<Prepared*> armed{nullptr};    // set once everything is prepared
+Prepared prepared;
+
+void write_all(int fd, const std::string& text) {
+  const char* p = text.data();
+  std::size_t left = text.size();
+  while (left > 0) {
+    const ssize_t n = write(fd, p, left);
+    if (n <= 0) return;
+    p += n;
+    left -= static_cast<std::size_t>(n);
+  }
+}
+
+extern "C" void record_and_die(int sig) {
+  const int k = sig == SIGINT ? 0 : 1;
+  if (const Prepared* p = armed.load()) {
+    write_all(p->log_fd, p->log_line[k]);
+    // Markers all have one size: the new status overwrites the old in place.
+    const int fd = open(p->marker_path.c_str(), O_WRONLY | O_CLOEXEC);
+    if (fd >= 0) {
+      write_all(fd, p->marker_text);
+      close(fd);
+    }
+    write_all(STDERR_FILENO, p->stderr_line[k]);
+  }
+  // The action from before takes over; the signal stays blocked until we return.
+  sigaction(sig, &prepared.previous[k], nullptr);
+  raise(sig);
+}
+
+}  // namespace
+
+InterruptionRecord::InterruptionRecord(const std::filesystem::path& dir, std::string marker_text,
+                                       const std::string& outcome) {
+  if (taken.exchange(true)) return;
+  const std::filesystem::path log = dir / "run.log";
+  prepared.log_fd = open(log.c_str(), O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC, 0644);
+  prepared.marker_path = (dir / kRunMarkerName).string();
+  prepared.marker_text = std::move(marker_text);
+  for (int k = 0; k < 2; ++k) {
+    const std::string name = kSignals[k] == SIGINT ? "SIGINT" : "SIGTERM";
+    prepared.log_line[k] = "interrupted by " + name + " before the run finished\n";
+    prepared.stderr_line[k] = "granpipe: interrupted by " + name + "; " + outcome + "\n";
+  }
+  armed = &prepared;
+  armed_ = true;
+  struct sigaction action {};
+  action.sa_handler = record_and_die;
+  sigfillset(&action.sa_mask);
+  for (int k = 0; k < 2; ++k) {
+    sigaction(kSignals[k], nullptr, &prepared.previous[k]);
+    // A signal the caller ignores (a background job's SIGINT) stays ignored.
+    prepared.handled[k] = prepared.previous[k].sa_handler != SIG_IGN;
+    if (prepared.handled[k]) sigaction(kSignals[k], &action, nullptr);
+  }
+}
+
+InterruptionRecord::~InterruptionRecord() {
+  if (!armed_) return;
+  for (int k = 0; k < 2; ++k)
+    if (prepared.handled[k]) sigaction(kSignals[k], &prepared.previous[k], nullptr);
+  armed = nullptr;
+  if (prepared.log_fd >= 0) close(prepared.log_fd);
+  prepared.log_fd = -1;
+  taken = false;
+}
+
+}  // namespace granpipe

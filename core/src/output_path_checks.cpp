@@ -1,0 +1,114 @@
+#include "output_path_checks.hpp"
+
+#include <pwd.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+
+#include "granpipe/errors.hpp"
+#include "output_directory.hpp"
+
+namespace granpipe {
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string describe_kind(fs::file_type type) {
+  switch (type) {
+    case fs::file_type::regular: return "a regular file";
+    case fs::file_type::symlink: return "a symlink";
+    case fs::file_type::fifo: return "a named pipe";
+    case fs::file_type::socket: return "a socket";
+    case fs::file_type::block:
+    case fs::file_type::character: return "a device file";
+    default: return "a special file";
+  }
+}
+
+// Absolute, with every symlink resolved (as far as the path exists), or empty.
+fs::path resolved(const fs::path& p) {
+  std::error_code ec;
+  fs::path r = fs::weakly_canonical(fs::absolute(p, ec), ec);
+  return ec ? fs::path() : r;
+}
+
+// True when `outer` is `inner` or one of its ancestors (both resolved).
+bool holds(const fs::path& outer, const fs::path& inner) {
+  auto i = inner.begin();
+  for (const fs::path& part : outer) {
+    if (part.empty()) continue;
+    if (i == inner.end() || *i != part) return false;
+    ++i;
+  }
+  return true;
+}
+
+fs::path home_directory() {
+  if (const char* home = std::getenv("HOME"); home && *home) return home;
+  if (const passwd* pw = getpwuid(getuid()); pw && pw->pw_dir) return pw->pw_dir;
+  return {};
+}
+
+}  // namespace
+
+fs::path without_trailing_separators(const fs::path& dir) {
+  std::string s = dir.string();
+  while (s.size() > 1 && s.back() == '/') s.pop_back();
+  return s;
+}
+
+void check_output_kind(const fs::path& dir) {
+  std::error_code ec;
+  const fs::file_status st = fs::symlink_status(dir, ec);
+  if (st.type() == fs::file_type::not_found) return;
+  if (ec) throw InputError(dir.string() + ": cannot read what it is: " + ec.message());
+  if (fs::is_symlink(st)) {
+    throw InputError(dir.string() + ": expected a directory, got a symlink (to " +
+                     fs::read_symlink(dir, ec).string() + "); give the directory itself as --out");
+  }
+  if (!fs::is_directory(st))
+    throw InputError(dir.string() + ": expected a directory, got " + describe_kind(st.type()));
+}
+
+void check_output_place(const fs::path& dir, const std::vector<InputFile>& inputs) {
+  const fs::path out = resolved(dir);
+  if (out.empty()) throw InputError(dir.string() + ": cannot resolve the output directory's path");
+  std::error_code ec;
+  const std::pair<fs::path, const char*> places[] = {
+      {out.root_path(), "the root directory"},
+      {resolved(fs::current_path(ec)), "the working directory"},
+      {resolved(home_directory()), "the home directory"}};
+  for (const auto& [place, name] : places) {
+    if (place.empty() || !holds(out, place)) continue;
+    throw InputError(dir.string() + ": expected a directory of the run's own, got " + out.string() +
+                     ", which " + (out == place ? "is " : "holds ") + name + "; choose another --out");
+  }
+  for (const InputFile& input : inputs) {
+    const fs::path file = resolved(input.file);
+    if (file.empty() || !holds(out, file)) continue;
+    throw InputError(input.where + ": expected a file outside the output directory " + dir.string() +
+                     ", got \"" + input.file.string() +
+                     "\" inside it; granpipe never writes where it reads (choose another --out)");
+  }
+}
+
+void check_removable(const fs::path& dir) {
+  auto refuse = [&](const fs::path& where, const std::string& why) {
+    throw InputError(where.string() + ": --overwrite would have to remove the earlier run in " +
+                     dir.string() + " but cannot (" + why + "); nothing was changed");
+  };
+  if (access(dir.parent_path().empty() ? "." : dir.parent_path().c_str(), W_OK | X_OK) != 0)
+    refuse(dir.parent_path(), std::strerror(errno));
+  if (access(dir.c_str(), W_OK | X_OK) != 0) refuse(dir, std::strerror(errno));
+  std::error_code ec;
+  for (fs::recursive_directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    std::error_code kind;
+    const bool folder = it->symlink_status(kind).type() == fs::file_type::directory;
+    if (folder && access(it->path().c_str(), W_OK | X_OK) != 0) refuse(it->path(), std::strerror(errno));
+  }
+  if (ec) refuse(dir, ec.message());
+}
+
+}  // namespace granpipe

@@ -1,0 +1,73 @@
+#!/usr/bin/env bash
+# interrupted_marker.sh GRANPIPE EXPECT WORKDIR
+# SIGINT and SIGTERM end a run with their usual status (130, 143), and now run.log and
+# the directory's marker say the run was interrupted; a SIGKILLed run's marker still
+# says running. Reusing such a directory is refused with the way to rerun
+# (--overwrite). A replacing run that is interrupted leaves the earlier run whole.
+set -eu
+set -m  # background runs take SIGINT as a foreground run would, instead of ignoring it
+exe=$1 expect=$2 work=$3
+here=$(cd "$(dirname "$0")" && pwd)
+long=$here/long_lattice.json
+rm -rf "$work"
+mkdir -p "$work"
+
+# start_long OUT [ARGS...]: starts a long run and waits until it writes frames.
+start_long() {
+  "$exe" "$long" --quiet --out "$@" 2>"$work/stderr" &
+  pid=$!
+  for _ in $(seq 1 600); do
+    compgen -G "$1*/frames.partial.h5" >/dev/null && return
+    sleep 0.1
+  done
+  echo "FAIL: the run wrote no frames in 60 s"
+  exit 1
+}
+# stop SIGNAL CODE: sends SIGNAL to the run started last and checks its exit status.
+stop() {
+  kill "-$1" "$pid"
+  local code=0
+  wait "$pid" || code=$?
+  [ "$code" -eq "$2" ] || { echo "FAIL: exit status $code after SIG$1, expected $2"; exit 1; }
+}
+status_is() {  # status_is DIR STATUS
+  grep -q "\"status\":\"$2\"" "$1/.granpipe-run" || { echo "FAIL: $1 is not marked $2: $(cat "$1/.granpipe-run")"; exit 1; }
+}
+last_log_line_is() {  # last_log_line_is DIR LINE
+  [ "$(tail -n 1 "$1/run.log")" = "$2" ] || { echo "FAIL: $1/run.log ends with \"$(tail -n 1 "$1/run.log")\""; exit 1; }
+}
+
+for signal in INT:130 TERM:143; do
+  name=${signal%:*} code=${signal#*:}
+  out=$work/sig$name
+  start_long "$out"
+  stop "$name" "$code"
+  status_is "$out" interrupted
+  last_log_line_is "$out" "interrupted by SIG$name before the run finished"
+  [ "$(cat "$work/stderr")" = "granpipe: interrupted by SIG$name; $out is marked interrupted (rerun with --overwrite)" ] ||
+    { echo "FAIL: stderr after SIG$name: $(cat "$work/stderr")"; exit 1; }
+  "$expect" 2 "sig$name: expected a new or empty output directory, got one holding an interrupted run; pass --overwrite to replace it" \
+    -- "$exe" "$long" --quiet --out "$out"
+done
+
+out=$work/killed
+start_long "$out"
+stop KILL 137
+status_is "$out" running
+"$expect" 2 "killed: expected a new or empty output directory, got one holding a run that stopped before it finished \(killed\?\); pass --overwrite" \
+  -- "$exe" "$long" --quiet --out "$out"
+"$exe" "$long" --quiet --set source.params.frames=2 --out "$out" --overwrite
+status_is "$out" complete
+
+# Interrupting a replacing run: the earlier run is untouched, the new one beside it says why.
+earlier=$work/killed
+sum() { (cd "$1" && find . -type f -print0 | sort -z | xargs -0 md5sum); }
+sum "$earlier" >"$work/earlier.sum"
+start_long "$earlier" --overwrite
+stop INT 130
+sum "$earlier" | cmp -s - "$work/earlier.sum" || { echo "FAIL: an interrupted --overwrite changed the earlier run"; exit 1; }
+beside=$(compgen -G "$earlier.granpipe-new-*")
+status_is "$beside" interrupted
+grep -q "^granpipe: interrupted by SIGINT; the earlier run in $earlier is untouched; this one is in $beside, marked interrupted$" "$work/stderr" ||
+  { echo "FAIL: stderr: $(cat "$work/stderr")"; exit 1; }
+echo "interruptions recorded in run.log and the marker; the earlier run kept whole"

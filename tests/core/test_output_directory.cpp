@@ -1,0 +1,220 @@
+// The output directory and its safety: what --out and --overwrite refuse, a failed run
+// recorded in run.log and the marker, and a replacing run that fails leaving the earlier
+// run whole. Runs use the real lattice and h5md plugins plus small failing ones.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+#include "granpipe/pipeline.hpp"
+#include "granpipe/plugin_loader.hpp"
+
+using namespace granpipe;
+namespace fs = std::filesystem;
+
+namespace {
+
+// A simulation that fails on its first step.
+class DivergingSource : public Source {
+ public:
+  explicit DivergingSource(const PluginContext&) {}
+  FrameContent content() const override { return {}; }
+  bool next(Frame&) override { throw std::runtime_error("the simulation diverged"); }
+};
+
+// An analyzer that finds its second frame unacceptable.
+class PickyAnalyzer : public Analyzer {
+ public:
+  explicit PickyAnalyzer(const PluginContext&) {}
+  void consume(const Frame&, FrameCache&) override {
+    if (++frames_ == 2) throw InputError("frame 1: expected nothing like it");
+  }
+  void finish(Results&) override {}
+
+ private:
+  int frames_ = 0;
+};
+
+Registry registry() {
+  Registry r;
+  load_plugins(r, plugin_search_path());
+  r.add_source<DivergingSource>("diverging", "fails at once", Schema{});
+  r.add_analyzer<PickyAnalyzer>("picky", "fails on frame 1", Schema{});
+  return r;
+}
+
+const char* kLattice = R"({"seed": 1, "source": {"plugin": "lattice",
+  "params": {"lattice": "sc", "cells": [2, 2, 2], "jitter": 0.01, "frames": 3}}})";
+const char* kDiverging = R"({"source": {"plugin": "diverging"}})";
+const char* kPicky = R"({"source": {"plugin": "lattice",
+  "params": {"lattice": "sc", "cells": [2, 2, 2], "jitter": 0.01, "frames": 3}},
+  "analyzers": [{"plugin": "picky"}]})";
+
+fs::path fresh_dir(const std::string& name) {
+  fs::path d = fs::temp_directory_path() / ("granpipe_test_outdir_" + name + "_" + std::to_string(getpid()));
+  fs::remove_all(d);
+  return d;
+}
+
+std::string read(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string last_line(const fs::path& file) {
+  std::string text = read(file);
+  while (!text.empty() && text.back() == '\n') text.pop_back();
+  return text.substr(text.rfind('\n') + 1);
+}
+
+// Every file below `dir` with its content.
+std::map<std::string, std::string> snapshot(const fs::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& e : fs::recursive_directory_iterator(dir))
+    if (e.is_regular_file()) files[fs::relative(e.path(), dir).string()] = read(e.path());
+  return files;
+}
+
+// Runs `pipeline` into `out`; the InputError's message, or "" when it ran.
+std::string run(const std::string& pipeline, const fs::path& out, bool overwrite = false) {
+  const Registry r = registry();
+  Log log;
+  log.set_quiet(true);
+  RunOptions o;
+  o.progress = false;
+  o.out = out;
+  o.overwrite = overwrite;
+  try {
+    Pipeline::parse(pipeline, "p.json", {}, r).run(o, log);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// The one directory beside `out` that a run of granpipe built, or nothing.
+fs::path only_sibling(const fs::path& out) {
+  fs::path found;
+  for (const auto& e : fs::directory_iterator(out.parent_path())) {
+    if (e.path().filename().string().rfind(out.filename().string() + ".granpipe-", 0) != 0) continue;
+    EXPECT_EQ(found, fs::path()) << "two directories beside " << out;
+    found = e.path();
+  }
+  return found;
+}
+
+bool marked(const fs::path& dir, const std::string& status) {
+  return read(dir / ".granpipe-run").find("\"status\":\"" + status + "\"") != std::string::npos;
+}
+
+}  // namespace
+
+TEST(FailedRun, AnErrorFromNextIsInRunLogAndMarksTheDirectoryFailed) {
+  const fs::path out = fresh_dir("diverging");
+  EXPECT_THROW(run(kDiverging, out), std::runtime_error);
+  EXPECT_EQ(last_line(out / "run.log"), "failed: the simulation diverged");
+  EXPECT_TRUE(marked(out, "failed"));
+  EXPECT_EQ(run(kLattice, out), out.string() + ": expected a new or empty output directory, got one holding a "
+                                "failed run (its run.log says why); pass --overwrite to replace it, or choose "
+                                "another --out");
+  EXPECT_EQ(run(kLattice, out, true), "");
+  EXPECT_TRUE(marked(out, "complete"));
+  fs::remove_all(out);
+}
+
+TEST(FailedRun, AnErrorFromConsumeIsInRunLogAndLeavesNoResults) {
+  const fs::path out = fresh_dir("picky");
+  const std::string error = run(kPicky, out);
+  EXPECT_EQ(error, "p.json: analyzers[0]: frame 1: expected nothing like it");
+  EXPECT_EQ(last_line(out / "run.log"), "failed: " + error);
+  EXPECT_TRUE(marked(out, "failed"));
+  EXPECT_FALSE(fs::exists(out / "results.h5"));
+  EXPECT_FALSE(fs::exists(out / "frames.h5"));
+  fs::remove_all(out);
+}
+
+TEST(ReplacingRun, AFailureLeavesTheEarlierRunWholeAndItsOwnFilesBeside) {
+  const fs::path out = fresh_dir("replace_fails");
+  ASSERT_EQ(run(kLattice, out), "");
+  const auto before = snapshot(out);
+  EXPECT_THROW(run(kDiverging, out, true), std::runtime_error);
+  EXPECT_EQ(snapshot(out), before);
+  const fs::path beside = only_sibling(out);
+  EXPECT_TRUE(marked(beside, "failed"));
+  EXPECT_EQ(last_line(beside / "run.log"), "the earlier run in " + out.string() + " is untouched");
+  fs::remove_all(beside);
+  EXPECT_EQ(run(kPicky, out, true), "p.json: analyzers[0]: frame 1: expected nothing like it");
+  EXPECT_EQ(snapshot(out), before);
+  EXPECT_TRUE(marked(only_sibling(out), "failed"));
+  fs::remove_all(only_sibling(out));
+  fs::remove_all(out);
+}
+
+TEST(ReplacingRun, SuccessSwapsTheNewRunInAndRemovesTheEarlierOne) {
+  const fs::path out = fresh_dir("replace_works");
+  ASSERT_EQ(run(kLattice, out), "");
+  const std::string earlier = read(out / ".granpipe-run");
+  ASSERT_EQ(run(std::string(kLattice).replace(std::string(kLattice).find("\"seed\": 1"), 9, "\"seed\": 2"), out,
+                true),
+            "");
+  EXPECT_NE(read(out / ".granpipe-run"), earlier);
+  EXPECT_NE(read(out / "pipeline.json").find("\"seed\": 2"), std::string::npos);
+  EXPECT_TRUE(marked(out, "complete"));
+  EXPECT_EQ(only_sibling(out), fs::path());
+  fs::remove_all(out);
+}
+
+TEST(OutputDirectory, OverwriteRefusesADirectoryWithoutTheMarker) {
+  const fs::path out = fresh_dir("users");
+  fs::create_directories(out);
+  std::ofstream(out / "pipeline.json") << "{}";
+  EXPECT_EQ(run(kLattice, out, true),
+            out.string() + ": --overwrite replaces only directories granpipe made (they hold a .granpipe-run "
+                           "file), got one without (if an older granpipe, which wrote no marker, made it: remove "
+                           "it yourself); nothing was changed");
+  EXPECT_EQ(read(out / "pipeline.json"), "{}");
+  fs::remove_all(out);
+}
+
+TEST(OutputDirectory, RefusesAFileASymlinkAndWhatHoldsTheWorkingDirectory) {
+  const fs::path dir = fresh_dir("kinds");
+  fs::create_directories(dir / "real");
+  std::ofstream(dir / "file") << "mine";
+  fs::create_directory_symlink(dir / "real", dir / "link");
+  EXPECT_EQ(run(kLattice, dir / "file"), (dir / "file").string() + ": expected a directory, got a regular file");
+  const std::string symlink = (dir / "link").string() + ": expected a directory, got a symlink (to " +
+                              (dir / "real").string() + "); give the directory itself as --out";
+  EXPECT_EQ(run(kLattice, dir / "link"), symlink);
+  EXPECT_EQ(run(kLattice, (dir / "link").string() + "/", true), symlink);
+  const fs::path cwd = fs::current_path();
+  fs::current_path(dir / "real");
+  EXPECT_EQ(run(kLattice, ".", true), ".: expected a directory of the run's own, got " +
+                                          fs::canonical(dir / "real").string() +
+                                          ", which is the working directory; choose another --out");
+  EXPECT_EQ(run(kLattice, "..", true), "..: expected a directory of the run's own, got " +
+                                           fs::canonical(dir).string() +
+                                           ", which holds the working directory; choose another --out");
+  fs::current_path(cwd);
+  EXPECT_TRUE(fs::is_empty(dir / "real"));
+  EXPECT_EQ(read(dir / "file"), "mine");
+  fs::remove_all(dir);
+}
+
+TEST(OutputDirectory, RefusesToReplaceADirectoryHoldingAnInputFile) {
+  const fs::path out = fresh_dir("input_inside");
+  ASSERT_EQ(run(R"({"source": {"plugin": "lattice", "params": {"lattice": "sc", "cells": [2, 2, 2]}}})", out), "");
+  const std::string frames = (out / "frames.h5").string();
+  const std::string reprocess = R"({"source": {"plugin": "h5md", "params": {"file": ")" + frames + R"("}}})";
+  const auto before = snapshot(out);
+  EXPECT_EQ(run(reprocess, out, true),
+            "p.json: source.params.file: expected a file outside the output directory " + out.string() + ", got \"" +
+                frames + "\" inside it; granpipe never writes where it reads (choose another --out)");
+  EXPECT_EQ(snapshot(out), before);
+  fs::remove_all(out);
+}
