@@ -28,12 +28,19 @@ void list_plugins(const Registry& registry) {
       std::cout << "  " << std::left << std::setw(16) << p.name << " " << p.summary << "\n";
     }
   }
-  if (!registry.refused().empty()) {
+  const LoadReport& report = load_report(registry);
+  if (!report.refused.empty()) {
     std::cout << "refused libraries:\n";
-    for (const auto& r : registry.refused()) std::cout << "  " << r.library << " " << r.reason << "\n";
+    for (const auto& r : report.refused) std::cout << "  " << r.library << " " << r.reason << "\n";
   }
-  std::cout << "search path:";
-  for (const auto& d : plugin_search_path()) std::cout << " " << d.string();
+  if (!report.shadowed.empty()) {
+    std::cout << "ignored (a library earlier on the search path provides the name):\n";
+    for (const auto& s : report.shadowed) {
+      std::cout << "  " << s.name << " of " << s.ignored << " (used: " << s.used << ")\n";
+    }
+  }
+  std::cout << "search path (GRANPIPE_PLUGIN_PATH, then the plugins beside granpipe):";
+  for (const auto& d : report.searched) std::cout << " " << d.string();
   std::cout << "\n";
 }
 

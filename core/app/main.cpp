@@ -105,6 +105,9 @@ int main(int argc, char** argv) {
     }
     Registry registry;
     load_plugins(registry, plugin_search_path());
+    for (const std::string& w : load_report(registry).warnings()) {
+      std::cerr << "granpipe: warning: " << one_line(w) << "\n";
+    }
     Log log;
     if (*plugins) {
       app::list_plugins(registry);

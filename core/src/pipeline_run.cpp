@@ -161,19 +161,22 @@ PointOutcome run_point(const Pipeline::Impl& p, std::size_t k, PointPlugins plug
   Frame frame;
   FrameCache cache;
   const std::string where = p.origin + ": source \"" + p.source->name + "\"";
-  // A plugin's complaint about the data names the pipeline part it came from.
-  auto located = [](const std::string& at, auto&& step) {
+  // A plugin's complaint about the data names the pipeline part it came from, once: a
+  // message that starts with the part's own path (ctx.param("x")) gets only the file.
+  auto located = [&](const std::string& part, auto&& step) {
     try {
       return step();
     } catch (const InputError& e) {
-      throw InputError(at + ": " + e.what());
+      const std::string m = e.what();
+      const bool names_part = m.rfind(part + ".", 0) == 0 || m.rfind(part + ":", 0) == 0;
+      throw InputError(p.origin + ": " + (names_part ? m : part + ": " + m));
     }
   };
-  while (located(p.origin + ": source", [&] { return plugins.source->next(frame); })) {
+  while (located("source", [&] { return plugins.source->next(frame); })) {
     frame.check(where + " frame " + std::to_string(outcome.frames));
     cache.clear();
     for (std::size_t a = 0; a < plugins.analyzers.size(); ++a) {
-      located(p.analyzers[a].where, [&] {
+      located("analyzers[" + std::to_string(a) + "]", [&] {
         plugins.analyzers[a]->consume(frame, cache);
         publish_columns(*plugins.analyzers[a], frame);
       });

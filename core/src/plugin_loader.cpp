@@ -37,16 +37,16 @@ bool same_minor_version(const char* plugin_version) {
   return ours.substr(0, minor_end(ours)) == theirs.substr(0, minor_end(theirs));
 }
 
-void load_library(Registry& registry, const fs::path& file) {
+void load_library(Registry& registry, LoadReport& report, const fs::path& file) {
   void* handle = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (!handle) {
     const char* err = dlerror();
-    registry.refuse(file.string(), std::string("cannot be loaded: ") + (err ? err : "unknown error"));
+    report.refused.push_back({file.string(), std::string("cannot be loaded: ") + (err ? err : "unknown error")});
     return;
   }
   auto* entry = static_cast<const granpipe_plugin_entry*>(dlsym(handle, kEntrySymbol));
   if (!entry) {
-    registry.refuse(file.string(), "is not a granpipe plugin (no granpipe_plugin entry point)");
+    report.refused.push_back({file.string(), "is not a granpipe plugin (no granpipe_plugin entry point)"});
     dlclose(handle);
     return;
   }
@@ -59,7 +59,7 @@ void load_library(Registry& registry, const fs::path& file) {
         << " (plugin ABI " << (entry->abi_version & 0xffffffffu) << "), but this is granpipe "
         << GRANPIPE_VERSION << " (plugin ABI " << GRANPIPE_ABI_VERSION
         << "): rebuild the plugin against this version";
-    registry.refuse(file.string(), why.str());
+    report.refused.push_back({file.string(), why.str()});
     dlclose(handle);
     return;
   }
@@ -68,14 +68,26 @@ void load_library(Registry& registry, const fs::path& file) {
     why << "was built against granpipe headers whose public types have another memory layout "
         << "(layout fingerprint " << std::hex << entry->layout_fingerprint << ", this granpipe "
         << kLayoutFingerprint << "): rebuild the plugin against this version";
-    registry.refuse(file.string(), why.str());
+    report.refused.push_back({file.string(), why.str()});
     dlclose(handle);
     return;
   }
   // Plugins stay loaded for the life of the process: their code backs the registry.
-  registry.set_current_library(file.string());
-  entry->register_plugins(registry);
-  registry.set_current_library("");
+  Registry found;
+  try {
+    entry->register_plugins(found);
+  } catch (const std::exception& e) {
+    report.refused.push_back({file.string(), std::string("failed to register: ") + e.what()});
+    return;
+  }
+  for (PluginInfo info : found.plugins()) {
+    info.library = file.string();
+    if (const PluginInfo* earlier = registry.find(info.name)) {
+      report.shadowed.push_back({info.name, earlier->library, file.string()});
+    } else {
+      registry.add(std::move(info));
+    }
+  }
 }
 }  // namespace
 
@@ -92,27 +104,51 @@ std::vector<fs::path> plugin_search_path() {
   return dirs;
 }
 
+std::vector<std::string> LoadReport::warnings() const {
+  std::vector<std::string> lines;
+  for (const fs::path& d : without_plugins) {
+    lines.push_back("plugin directory " + d.string() + " holds no granpipe_*.so plugin library");
+  }
+  for (const Shadowed& s : shadowed) {
+    lines.push_back("plugin \"" + s.name + "\" of " + s.ignored + " ignored: " + s.used +
+                    ", earlier on the search path, provides it");
+  }
+  return lines;
+}
+
 void load_plugins(Registry& registry, const std::vector<fs::path>& dirs) {
+  auto report = std::make_shared<LoadReport>();
   std::vector<fs::path> seen;
   for (const auto& dir : dirs) {
     std::error_code ec;
     const fs::path canonical = fs::weakly_canonical(dir, ec);
     if (std::find(seen.begin(), seen.end(), canonical) != seen.end()) continue;
     seen.push_back(canonical);
-    if (!fs::is_directory(dir, ec)) continue;
+    report->searched.push_back(dir);
     std::vector<fs::path> libs;
-    for (const auto& e : fs::directory_iterator(dir, ec)) {
-      const fs::path& p = e.path();
-      if (p.extension() == ".so" && p.filename().string().rfind(kPrefix, 0) == 0) libs.push_back(p);
+    if (fs::is_directory(dir, ec)) {
+      for (const auto& e : fs::directory_iterator(dir, ec)) {
+        const fs::path& p = e.path();
+        if (p.extension() == ".so" && p.filename().string().rfind(kPrefix, 0) == 0) libs.push_back(p);
+      }
     }
+    if (libs.empty()) report->without_plugins.push_back(dir);
     std::sort(libs.begin(), libs.end());  // a stable order: same search path, same plugins
-    for (const auto& lib : libs) load_library(registry, lib);
+    for (const auto& lib : libs) load_library(registry, *report, lib);
   }
+  registry.report_ = std::move(report);
+}
+
+const LoadReport& load_report(const Registry& registry) {
+  static const LoadReport none;
+  return registry.report_ ? *registry.report_ : none;
 }
 
 const PluginInfo& require_plugin(const Registry& registry, const std::string& name,
                                  std::optional<PluginKind> kind, const std::string& where) {
-  const std::string wanted = kind ? std::string("a ") + to_string(*kind) + " plugin" : "a plugin";
+  const std::string wanted = !kind                        ? "a plugin"
+                             : *kind == PluginKind::Source ? "a source plugin"
+                                                           : "an analyzer plugin";
   if (const PluginInfo* p = registry.find(name)) {
     if (kind && p->kind != *kind) {
       throw InputError(where + ": expected " + wanted + ", got \"" + name +
@@ -120,7 +156,8 @@ const PluginInfo& require_plugin(const Registry& registry, const std::string& na
     }
     return *p;
   }
-  for (const auto& r : registry.refused()) {
+  const LoadReport& report = load_report(registry);
+  for (const auto& r : report.refused) {
     if (promised_name(r.library) == name) {
       throw InputError(where + ": plugin \"" + name + "\" refused: " + r.library + " " + r.reason);
     }
@@ -128,8 +165,15 @@ const PluginInfo& require_plugin(const Registry& registry, const std::string& na
   std::vector<std::string> names;
   for (const auto& p : registry.plugins())
     if (!kind || p.kind == *kind) names.push_back(p.name);
+  std::string searched;
+  for (const fs::path& d : report.searched) searched += (searched.empty() ? "" : ", ") + d.string();
+  const std::string where_searched =
+      report.searched.empty() ? ""
+                              : "; searched " + searched +
+                                    " (GRANPIPE_PLUGIN_PATH, then the plugins beside granpipe)";
   throw InputError(where + ": expected " + wanted + ", got unknown \"" + name + "\"" +
-                   did_you_mean(name, names) + known_list(names, "none (is GRANPIPE_PLUGIN_PATH right?)"));
+                   did_you_mean(name, names) +
+                   known_list(names, "none (is GRANPIPE_PLUGIN_PATH right?)") + where_searched);
 }
 
 }  // namespace granpipe

@@ -132,24 +132,18 @@ class Registry {
          [](const PluginContext& c) -> std::unique_ptr<Analyzer> { return std::make_unique<A>(c); },
          ""});
   }
+  // Registers a plugin; a second plugin of one name is an InternalError.
   void add(PluginInfo info);
 
   const PluginInfo* find(const std::string& name) const;
   const std::vector<PluginInfo>& plugins() const { return plugins_; }
-  // Libraries the loader refused (wrong ABI, missing entry point), with the reason.
-  struct Refusal {
-    std::string library, reason;
-  };
-  const std::vector<Refusal>& refused() const { return refused_; }
-  void refuse(std::string library, std::string reason);
-
-  // Library being loaded, recorded on every plugin it registers.
-  void set_current_library(std::string lib) { current_library_ = std::move(lib); }
 
  private:
+  // What the loader saw (plugin_loader.hpp); only the loader writes it.
+  friend void load_plugins(Registry&, const std::vector<std::filesystem::path>&);
+  friend const struct LoadReport& load_report(const Registry&);
   std::vector<PluginInfo> plugins_;
-  std::vector<Refusal> refused_;
-  std::string current_library_;
+  std::shared_ptr<struct LoadReport> report_;
 };
 
 }  // namespace granpipe

@@ -11,11 +11,30 @@ namespace granpipe {
 // separated), then the plugin directory of the executable's own prefix (build or install).
 std::vector<std::filesystem::path> plugin_search_path();
 
+// What the loader saw, for the messages of `granpipe plugins` and of a plugin not found.
+struct LoadReport {
+  std::vector<std::filesystem::path> searched;  // the directories, in order
+  // Directories that do not exist or hold no granpipe_*.so library.
+  std::vector<std::filesystem::path> without_plugins;
+  struct Refusal {
+    std::string library, reason;
+  };
+  std::vector<Refusal> refused;  // wrong ABI or layout, no entry point, not loadable
+  struct Shadowed {
+    std::string name, used, ignored;  // plugin name, the library kept, the one ignored
+  };
+  std::vector<Shadowed> shadowed;
+  // One line per empty directory and shadowed plugin, for stderr.
+  std::vector<std::string> warnings() const;
+};
+
 // Loads every granpipe_*.so in `dirs` into `registry`. A library built against another
-// ABI is refused (recorded in registry.refused()) without calling into it. When two
-// libraries provide the same plugin name the first found wins, so a user's directory on
-// GRANPIPE_PLUGIN_PATH can override an installed plugin.
+// ABI or layout is refused without calling into it. When two libraries provide the same
+// plugin name the first found wins (so a user's directory on GRANPIPE_PLUGIN_PATH can
+// override an installed plugin) and the other is reported as shadowed.
 void load_plugins(Registry& registry, const std::vector<std::filesystem::path>& dirs);
+// The report of the last load into `registry` (empty when none).
+const LoadReport& load_report(const Registry& registry);
 
 // The plugin `name` (of `kind`, when given), or an InputError naming `where` with a
 // did-you-mean, or the refusal of a library that would have provided it.
