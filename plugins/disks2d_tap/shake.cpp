@@ -19,13 +19,15 @@ void Shaker::tap(DiskPacking& p, double A, RandomStream& rng) {
   const double cell = std::sqrt(2.0) * r_min * (1.0 - 1e-9);
   grid_.reset(p.width, p.top() + loops_ * jump + cell, cell, 2.0 * r_max);
   cell_.resize(n);
+  order_.reset(n);
   for (std::size_t i = 0; i < n; ++i) {
     cell_[i] = grid_.cell_of(p.x[i], p.y[i]);
     grid_.put(static_cast<std::int32_t>(i), cell_[i]);
   }
 
   for (int loop = 0; loop < loops_; ++loop) {
-    for (std::size_t i = 0; i < n; ++i) {
+    for (const std::int32_t disk : order_.next(rng)) {
+      const auto i = static_cast<std::size_t>(disk);
       const double length = jump * rng.uniform();
       const double angle = 2.0 * std::numbers::pi * rng.uniform();
       const double x = p.x[i] + length * std::cos(angle), y = p.y[i] + length * std::sin(angle);

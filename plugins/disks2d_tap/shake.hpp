@@ -1,13 +1,15 @@
 #pragma once
 // The tap of the paper: heights multiplied by the amplitude A, then Monte Carlo loops in
-// which every disk in turn tries a jump of random length uniform in (0, A - 1) in a random
-// direction, refused when it would overlap another disk, a side wall or the base.
+// which every disk in turn (in index or shuffled order: visit_order.hpp) tries a jump of
+// random length uniform in (0, A - 1) in a random direction, refused when it would
+// overlap another disk, a side wall or the base.
 #include <cstdint>
 #include <vector>
 
 #include "disk_grid.hpp"
 #include "disk_packing.hpp"
 #include "granpipe/random.hpp"
+#include "visit_order.hpp"
 
 namespace granpipe::disks2d_tap {
 
@@ -28,7 +30,8 @@ struct ShakeStats {
 
 class Shaker {
  public:
-  Shaker(int mc_loops, Dilation dilation) : loops_(mc_loops), dilation_(dilation) {}
+  Shaker(int mc_loops, Dilation dilation, McOrder order = McOrder::Index)
+      : loops_(mc_loops), dilation_(dilation), order_(order) {}
 
   // Taps `packing` with amplitude A and clears every support label. A <= 1 is no tap:
   // nothing moves and the labels stay.
@@ -38,6 +41,7 @@ class Shaker {
  private:
   int loops_;
   Dilation dilation_;
+  VisitOrder order_;
   DiskGrid grid_;
   std::vector<int> cell_;
   ShakeStats stats_;

@@ -60,6 +60,9 @@ Schema schema() {
             "Monte Carlo loops after each dilation, each trying one jump per disk; the "
             "default puts the order-disorder transition where the paper's 'about 20' do")
       .min(0);
+  s.choice("mc_order", {"index", "shuffled"}, std::string("index"),
+           "order in which a Monte Carlo loop visits the disks: by index, the same in every "
+           "loop, or a fresh random permutation per loop");
   s.choice("protocol", {"constant", "annealed"}, std::string("constant"),
            "constant: equilibration then production taps at A; annealed: A ramped up and "
            "down between anneal_A_min and anneal_A_max (the paper's Fig. 8)");
@@ -221,7 +224,8 @@ TapSource::TapSource(const PluginContext& ctx)
       schedule_(tap_schedule(ctx)),
       shaker_(static_cast<int>(ctx.params.integer("mc_loops")),
               ctx.params.string("dilation") == "centre_height" ? Dilation::CentreHeight
-                                                              : Dilation::HeightAboveContact) {
+                                                              : Dilation::HeightAboveContact,
+              ctx.params.string("mc_order") == "index" ? McOrder::Index : McOrder::Shuffled) {
   const Params& p = ctx.params;
   packing_ = p.string("initial_file").empty() ? random_placement(ctx, replica_seeds(ctx))
                                                : saved_bed(ctx);

@@ -5,10 +5,12 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <map>
 #include <numbers>
+#include <numeric>
 #include <set>
 
 #include "deposit.hpp"
@@ -20,6 +22,7 @@
 #include "shake.hpp"
 #include "tap_schedule.hpp"
 #include "tap_source.hpp"
+#include "visit_order.hpp"
 
 namespace dt = granpipe::disks2d_tap;
 namespace fs = std::filesystem;
@@ -375,6 +378,110 @@ TEST(Disks2dTapShake, AmplitudeOneIsNoTap) {
   EXPECT_EQ(q.second, p.second);
 }
 
+TEST(Disks2dTapVisitOrder, IndexOrderIsTheSameInEveryLoopAndDrawsNothing) {
+  dt::VisitOrder order(dt::McOrder::Index);
+  order.reset(40);
+  std::vector<std::int32_t> by_index(40);
+  std::iota(by_index.begin(), by_index.end(), 0);
+  RandomStream rng(1), untouched(1);
+  for (int loop = 0; loop < 3; ++loop) EXPECT_EQ(order.next(rng), by_index);
+  EXPECT_EQ(rng.bits(), untouched.bits());
+}
+
+TEST(Disks2dTapVisitOrder, ShuffledVisitsEveryDiskOncePerLoopInAFreshOrder) {
+  const std::size_t n = 50;
+  std::vector<std::int32_t> by_index(n);
+  std::iota(by_index.begin(), by_index.end(), 0);
+  auto loops = [&](std::uint64_t seed) {
+    dt::VisitOrder order(dt::McOrder::Shuffled);
+    order.reset(n);
+    RandomStream rng(seed);
+    const std::int32_t* buffer = order.next(rng).data();
+    std::vector<std::vector<std::int32_t>> seen;
+    for (int loop = 0; loop < 20; ++loop) {
+      const std::vector<std::int32_t>& disks = order.next(rng);
+      EXPECT_EQ(disks.data(), buffer) << "loop " << loop << " reallocated the order";
+      seen.push_back(disks);
+    }
+    order.reset(n);  // the next tap reuses the buffer too
+    EXPECT_EQ(order.next(rng).data(), buffer);
+    return seen;
+  };
+  const auto a = loops(5), b = loops(5), c = loops(6);
+  EXPECT_EQ(a, b);
+  EXPECT_NE(a, c);
+  for (std::size_t loop = 0; loop < a.size(); ++loop) {
+    std::vector<std::int32_t> sorted = a[loop];
+    std::sort(sorted.begin(), sorted.end());
+    EXPECT_EQ(sorted, by_index) << "loop " << loop << " is not a permutation";
+    EXPECT_NE(a[loop], by_index);
+    if (loop > 0) {
+      EXPECT_NE(a[loop], a[loop - 1]);
+    }
+  }
+}
+
+// Fresh means uniform: each of the 3! orders of three disks comes up about equally often,
+// not a fixed cycle of a few (expected 1000 each, standard deviation 29).
+TEST(Disks2dTapVisitOrder, ShuffledOrdersAreUniform) {
+  dt::VisitOrder order(dt::McOrder::Shuffled);
+  order.reset(3);
+  RandomStream rng(7);
+  std::map<std::vector<std::int32_t>, int> count;
+  for (int loop = 0; loop < 6000; ++loop) ++count[order.next(rng)];
+  ASSERT_EQ(count.size(), 6u);
+  for (const auto& [disks, n] : count) {
+    EXPECT_GT(n, 850);
+    EXPECT_LT(n, 1150);
+  }
+}
+
+TEST(Disks2dTapShake, ShuffledOrderIsReproducibleAndDiffersFromIndexOrder) {
+  dt::DiskPacking p = random_bed(200, 12.0, 0.0, 12);
+  dt::Deposit d(p, {.delta = 0.05});
+  RandomStream rng(13);
+  d.run(rng);
+  auto tapped = [&](dt::McOrder order, std::uint64_t seed) {
+    dt::DiskPacking q = p;
+    RandomStream tap_rng(seed);
+    dt::Shaker(20, dt::Dilation::CentreHeight, order).tap(q, 1.2, tap_rng);
+    return q;
+  };
+  const dt::DiskPacking a = tapped(dt::McOrder::Shuffled, 3), b = tapped(dt::McOrder::Shuffled, 3);
+  const dt::DiskPacking by_index = tapped(dt::McOrder::Index, 3);
+  EXPECT_EQ(a.x, b.x);
+  EXPECT_EQ(a.y, b.y);
+  EXPECT_NE(a.x, by_index.x);
+  EXPECT_NE(a.y, by_index.y);
+}
+
+TEST(Disks2dTapShake, TapsInShuffledOrderLeaveNoOverlap) {
+  dt::DiskPacking p = random_bed(300, 15.0, 0.2, 14);
+  dt::Deposit d(p, {.delta = 0.05});
+  RandomStream rng(15);
+  d.run(rng);
+  dt::Shaker shaker(20, dt::Dilation::CentreHeight, dt::McOrder::Shuffled);
+  for (const double A : {1.05, 1.2, 1.5, 1.1}) {
+    SCOPED_TRACE(testing::Message() << "A = " << A);
+    shaker.tap(p, A, rng);
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      ASSERT_GE(p.x[i] - p.r[i], 0.0);
+      ASSERT_LE(p.x[i] + p.r[i], p.width);
+      ASSERT_GE(p.y[i] - p.r[i], 0.0);
+      for (std::size_t j = i + 1; j < p.size(); ++j) {
+        // Pairs touching before the tap may keep their distance to rounding.
+        ASSERT_GE(distance(p, i, j), (p.r[i] + p.r[j]) * (1.0 - 1e-12)) << i << " and " << j;
+      }
+    }
+    d.reset();
+    d.run(rng);
+    ASSERT_TRUE(d.done());
+    expect_deposited(p);
+  }
+  EXPECT_GT(shaker.stats().accepted, 0u);
+  EXPECT_LT(shaker.stats().accepted, shaker.stats().trials);
+}
+
 TEST(Disks2dTapPacking, CheckRejectsBadConfigurations) {
   dt::DiskPacking p;
   p.width = 10.0;
@@ -576,6 +683,23 @@ TEST(Disks2dTapSource, SameSeedSameFrames) {
   EXPECT_EQ(results.scalar("moves").value,
             results.scalar("falls").value + results.scalar("rolls").value);
   EXPECT_GT(results.scalar("moves").value, 0.0);
+}
+
+TEST(Disks2dTapSource, ShuffledMonteCarloOrderIsReproducibleAndChangesTheRun) {
+  auto params = [](const std::string& order) {
+    return source_params({{"N", std::int64_t{120}}, {"width", 10.0}, {"delta", 0.05},
+                          {"equilibration_taps", std::int64_t{2}}, {"production_taps", std::int64_t{2}},
+                          {"save_every", std::int64_t{1}}, {"A", 1.2}, {"mc_order", order}});
+  };
+  const auto a = run_source(params("shuffled"), 21), b = run_source(params("shuffled"), 21);
+  const auto by_index = run_source(params("index"), 21);
+  ASSERT_EQ(a.size(), 2u);
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    EXPECT_TRUE((a[k].position == b[k].position).all());
+    EXPECT_TRUE((a[k].supports->left == b[k].supports->left).all());
+    EXPECT_FALSE((a[k].position == by_index[k].position).all());
+    EXPECT_NO_THROW(a[k].check("frame"));
+  }
 }
 
 TEST(Disks2dTapSource, AnnealedFramesCarryCycleAndAmplitude) {
