@@ -695,9 +695,9 @@ TEST(Disks2dTapSource, ShuffledMonteCarloOrderIsReproducibleAndChangesTheRun) {
   const auto by_index = run_source(params("index"), 21);
   ASSERT_EQ(a.size(), 2u);
   for (std::size_t k = 0; k < a.size(); ++k) {
-    EXPECT_TRUE((a[k].position == b[k].position).all());
-    EXPECT_TRUE((a[k].supports->left == b[k].supports->left).all());
-    EXPECT_FALSE((a[k].position == by_index[k].position).all());
+    EXPECT_TRUE((a[k].position() == b[k].position()).all());
+    EXPECT_TRUE((a[k].table<std::int64_t>("supports") == b[k].table<std::int64_t>("supports")).all());
+    EXPECT_FALSE((a[k].position() == by_index[k].position()).all());
     EXPECT_NO_THROW(a[k].check("frame"));
   }
 }
