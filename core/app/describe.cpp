@@ -21,8 +21,8 @@ void describe(const Registry& registry, const std::string& name) {
 }
 
 void list_plugins(const Registry& registry) {
-  for (PluginKind kind : {PluginKind::Source, PluginKind::Analyzer}) {
-    std::cout << (kind == PluginKind::Source ? "sources:\n" : "analyzers:\n");
+  for (PluginKind kind : {PluginKind::Source, PluginKind::Analyzer, PluginKind::Writer}) {
+    std::cout << to_string(kind) << "s:\n";
     for (const auto& p : registry.plugins()) {
       if (p.kind != kind) continue;
       std::cout << "  " << std::left << std::setw(16) << p.name << " " << p.summary << "\n";

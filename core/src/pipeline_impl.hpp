@@ -14,12 +14,13 @@ struct PointSpec {
   nlohmann::json assignment;  // {"source.params.A": 1.1, ...}; empty without sweep
   nlohmann::json resolved;    // the whole pipeline of this point, defaults filled in
   Params source_params;
-  std::vector<Params> analyzer_params;
+  std::vector<Params> analyzer_params, writer_params;
 };
 
-struct AnalyzerSpec {
+// An analyzer or writer of the pipeline.
+struct PluginSpec {
   const PluginInfo* info = nullptr;
-  std::string name;  // unique within the pipeline
+  std::string name;  // unique among the analyzers and writers
   std::string where; // "file: analyzers[k]"
 };
 
@@ -30,7 +31,7 @@ struct Pipeline::Impl {
   std::string name, description;
   std::uint64_t seed = 1;
   const PluginInfo* source = nullptr;
-  std::vector<AnalyzerSpec> analyzers;
+  std::vector<PluginSpec> analyzers, writers;
   std::filesystem::path output_dir;
   bool save_frames = true;
   std::int64_t frame_stride = 1;

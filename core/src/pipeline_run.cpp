@@ -10,6 +10,7 @@
 
 #include "granpipe/atomic_file.hpp"
 #include "granpipe/frame_store.hpp"
+#include "frames_file_writer.hpp"
 #include "output_directory.hpp"
 #include "result_stream.hpp"
 #include "pipeline_impl.hpp"
@@ -23,6 +24,7 @@ namespace {
 struct PointPlugins {
   std::unique_ptr<Source> source;
   std::vector<std::unique_ptr<Analyzer>> analyzers;
+  std::vector<std::unique_ptr<Writer>> writers;  // the pipeline's, then the core's frames.h5
 };
 
 const Property* provided(const FrameContent& have, const Property& need) {
@@ -89,7 +91,7 @@ PointPlugins make_plugins(const Pipeline::Impl& p, std::size_t k, int threads, L
   }
   FrameContent have = made.source->content();
   for (std::size_t a = 0; a < p.analyzers.size(); ++a) {
-    const AnalyzerSpec& spec = p.analyzers[a];
+    const PluginSpec& spec = p.analyzers[a];
     try {
       made.analyzers.push_back(spec.info->make_analyzer(
           context(point.analyzer_params[a], seeds.derive("analyzer:" + spec.name), spec.name,
@@ -110,7 +112,30 @@ PointPlugins make_plugins(const Pipeline::Impl& p, std::size_t k, int threads, L
       have.columns.push_back(c);
     }
   }
+  for (std::size_t w = 0; w < p.writers.size(); ++w) {
+    const PluginSpec& spec = p.writers[w];
+    try {
+      made.writers.push_back(spec.info->make_writer(context(
+          point.writer_params[w], seeds.derive("writer:" + spec.name), spec.name,
+          "writers[" + std::to_string(w) + "].params")));
+    } catch (const InputError& e) {
+      throw InputError(located_message(p.top(), e.what()));
+    }
+  }
   return made;
+}
+
+// frames.h5 of a point, when the pipeline saves frames.
+std::unique_ptr<Writer> frames_file(const Pipeline::Impl& p, std::size_t k, const fs::path& out) {
+  if (!p.save_frames) return nullptr;
+  json provenance = {{"pipeline", p.points[k].resolved},
+                     {"granpipe_version", version()},
+                     {"git_commit", git_commit()},
+                     {"seed", p.seed},
+                     {"sweep_point", k},
+                     {"sweep_assignment", p.points[k].assignment}};
+  return std::make_unique<FramesFileWriter>(point_directory(p, k, out) / "frames.h5",
+                                            provenance.dump());
 }
 
 // The columns an analyzer publishes join the frame, for the analyzers after it and the
@@ -139,23 +164,7 @@ PointOutcome run_point(const Pipeline::Impl& p, std::size_t k, PointPlugins plug
                        const ResultStream& stream,
                        Progress& progress, const fs::path& out) {
   const bool source_reports = plugins.source->work().reported_by_source;
-
-  std::unique_ptr<FrameWriter> writer;
-  fs::path partial, final_path;
-  if (p.save_frames) {
-    final_path = point_directory(p, k, out) / "frames.h5";
-    // A run that stops early leaves frames.partial.h5 (marked incomplete), never a
-    // frames.h5 that looks finished.
-    partial = final_path;
-    partial.replace_extension(".partial.h5");
-    json provenance = {{"pipeline", p.points[k].resolved},
-                       {"granpipe_version", version()},
-                       {"git_commit", git_commit()},
-                       {"seed", p.seed},
-                       {"sweep_point", k},
-                       {"sweep_assignment", p.points[k].assignment}};
-    writer = std::make_unique<FrameWriter>(partial, provenance.dump());
-  }
+  if (auto frames = frames_file(p, k, out)) plugins.writers.push_back(std::move(frames));
 
   PointOutcome outcome;
   Frame frame;
@@ -181,7 +190,13 @@ PointOutcome run_point(const Pipeline::Impl& p, std::size_t k, PointPlugins plug
         publish_columns(*plugins.analyzers[a], frame);
       });
     }
-    if (writer && outcome.frames % p.frame_stride == 0) writer->append(frame);
+    if (outcome.frames % p.frame_stride == 0) {
+      for (std::size_t w = 0; w < plugins.writers.size(); ++w) {
+        // The core's frames.h5 names its own file in its messages.
+        if (w == p.writers.size()) plugins.writers[w]->write(frame);
+        else located("writers[" + std::to_string(w) + "]", [&] { plugins.writers[w]->write(frame); });
+      }
+    }
     for (const auto& analyzer : plugins.analyzers) {
       for (const Property& c : analyzer->publishes()) frame.particles.remove(c.name);
     }
@@ -199,10 +214,7 @@ PointOutcome run_point(const Pipeline::Impl& p, std::size_t k, PointPlugins plug
     plugins.analyzers[a]->finish(r);
     outcome.results[prefix + p.analyzers[a].name] = std::move(r);
   }
-  if (writer) {
-    writer->close();
-    fs::rename(partial, final_path);
-  }
+  for (const auto& writer : plugins.writers) writer->close();
   return outcome;
 }
 

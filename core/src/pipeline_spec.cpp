@@ -77,6 +77,44 @@ Pipeline Pipeline::load(const fs::path& file, const std::vector<std::string>& se
   return p;
 }
 
+namespace {
+
+// The analyzers or writers of a pipeline ("analyzers": [{"plugin": ..., "name": ...,
+// "params": {...}}, ...]), each name unique among both (the files they write start with it).
+std::vector<PluginSpec> parse_plugin_list(json& root, const std::string& key, PluginKind kind,
+                                          const JsonLocation& top, const Registry& registry,
+                                          std::set<std::string>& names) {
+  const JsonLocation list_at = top.child(key);
+  if (!root.contains(key)) root[key] = json::array();
+  if (!root[key].is_array()) {
+    throw InputError(list_at.str() + ": expected a list of " + key + ", got " + json_brief(root[key]));
+  }
+  std::vector<PluginSpec> specs;
+  for (std::size_t k = 0; k < root[key].size(); ++k) {
+    json& a = root[key][k];
+    const JsonLocation at = list_at.index(k);
+    check_keys(a, {"plugin", "name", "params"}, at);
+    if (!a.contains("plugin") || !a["plugin"].is_string()) {
+      throw InputError(at.child("plugin").str() + ": expected a plugin name, got " +
+                       json_brief(a.value("plugin", json())));
+    }
+    PluginSpec spec;
+    spec.info = &require_plugin(registry, a["plugin"], kind, at.child("plugin").str());
+    if (a.contains("name")) check_analyzer_name(a["name"], at.child("name"));
+    spec.name = a.value("name", spec.info->name);
+    spec.where = at.str();
+    if (!names.insert(spec.name).second) {
+      throw InputError(at.child("name").str() + ": expected a name not used by another analyzer or "
+                       "writer, got \"" + spec.name + "\" again");
+    }
+    a["name"] = spec.name;
+    specs.push_back(spec);
+  }
+  return specs;
+}
+
+}  // namespace
+
 Pipeline Pipeline::parse(const std::string& text, const std::string& origin,
                          const std::vector<std::string>& sets, const Registry& registry) {
   json root = parse_strict_json(text, origin);
@@ -85,7 +123,8 @@ Pipeline Pipeline::parse(const std::string& text, const std::string& origin,
   impl->origin = origin;
   for (const auto& s : sets) impl->overrides.push_back(apply_set(root, s));
   const JsonLocation top = impl->top();
-  check_keys(root, {"name", "description", "seed", "source", "analyzers", "output", "sweep"}, top);
+  check_keys(root, {"name", "description", "seed", "source", "analyzers", "writers", "output", "sweep"},
+             top);
 
   impl->base_dir = fs::path(origin).parent_path();
   if (root.contains("description") && !root["description"].is_string()) {
@@ -107,32 +146,10 @@ Pipeline Pipeline::parse(const std::string& text, const std::string& origin,
   impl->source = &require_plugin(registry, root["source"]["plugin"], PluginKind::Source,
                                  src_at.child("plugin").str());
 
-  const JsonLocation an_at = top.child("analyzers");
-  if (!root.contains("analyzers")) root["analyzers"] = json::array();
-  if (!root["analyzers"].is_array()) {
-    throw InputError(an_at.str() + ": expected a list of analyzers, got " + json_brief(root["analyzers"]));
-  }
+  const JsonLocation an_at = top.child("analyzers"), wr_at = top.child("writers");
   std::set<std::string> names;
-  for (std::size_t k = 0; k < root["analyzers"].size(); ++k) {
-    json& a = root["analyzers"][k];
-    const JsonLocation at = an_at.index(k);
-    check_keys(a, {"plugin", "name", "params"}, at);
-    if (!a.contains("plugin") || !a["plugin"].is_string()) {
-      throw InputError(at.child("plugin").str() + ": expected a plugin name, got " +
-                       json_brief(a.value("plugin", json())));
-    }
-    AnalyzerSpec spec;
-    spec.info = &require_plugin(registry, a["plugin"], PluginKind::Analyzer, at.child("plugin").str());
-    if (a.contains("name")) check_analyzer_name(a["name"], at.child("name"));
-    spec.name = a.value("name", spec.info->name);
-    spec.where = at.str();
-    if (!names.insert(spec.name).second) {
-      throw InputError(at.child("name").str() + ": expected a name not used by another analyzer, got \"" +
-                       spec.name + "\" again");
-    }
-    a["name"] = spec.name;
-    impl->analyzers.push_back(spec);
-  }
+  impl->analyzers = parse_plugin_list(root, "analyzers", PluginKind::Analyzer, top, registry, names);
+  impl->writers = parse_plugin_list(root, "writers", PluginKind::Writer, top, registry, names);
 
   const JsonLocation out_at = top.child("output");
   if (!root.contains("output")) root["output"] = json::object();
@@ -181,6 +198,11 @@ Pipeline Pipeline::parse(const std::string& text, const std::string& origin,
         point.analyzer_params.push_back(validate_params(p["analyzers"][a]["params"],
                                                         impl->analyzers[a].info->schema,
                                                         an_at.index(a).child("params"), impl->base_dir));
+      }
+      for (std::size_t w = 0; w < impl->writers.size(); ++w) {
+        point.writer_params.push_back(validate_params(p["writers"][w]["params"],
+                                                      impl->writers[w].info->schema,
+                                                      wr_at.index(w).child("params"), impl->base_dir));
       }
     } catch (const InputError& e) {
       throw InputError(e.what() + note);

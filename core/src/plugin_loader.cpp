@@ -144,15 +144,18 @@ const LoadReport& load_report(const Registry& registry) {
   return registry.report_ ? *registry.report_ : none;
 }
 
+namespace {
+const char* article(PluginKind k) { return k == PluginKind::Analyzer ? "an" : "a"; }
+}  // namespace
+
 const PluginInfo& require_plugin(const Registry& registry, const std::string& name,
                                  std::optional<PluginKind> kind, const std::string& where) {
-  const std::string wanted = !kind                        ? "a plugin"
-                             : *kind == PluginKind::Source ? "a source plugin"
-                                                           : "an analyzer plugin";
+  const std::string wanted = kind ? std::string(article(*kind)) + " " + to_string(*kind) + " plugin"
+                                  : "a plugin";
   if (const PluginInfo* p = registry.find(name)) {
     if (kind && p->kind != *kind) {
       throw InputError(where + ": expected " + wanted + ", got \"" + name +
-                       "\", which is " + (p->kind == PluginKind::Source ? "a source" : "an analyzer"));
+                       "\", which is " + article(p->kind) + " " + to_string(p->kind));
     }
     return *p;
   }

@@ -2,13 +2,23 @@
 
 namespace granpipe {
 
-const char* to_string(PluginKind k) { return k == PluginKind::Source ? "source" : "analyzer"; }
+const char* to_string(PluginKind k) {
+  switch (k) {
+    case PluginKind::Source: return "source";
+    case PluginKind::Analyzer: return "analyzer";
+    case PluginKind::Writer: return "writer";
+  }
+  return "?";
+}
 
 void Registry::add(PluginInfo info) {
   if (find(info.name)) {
     throw InternalError("plugin \"" + info.name + "\" registered twice in one registry");
   }
-  if (info.kind == PluginKind::Source ? !info.make_source : !info.make_analyzer) {
+  const bool made = info.kind == PluginKind::Source     ? bool(info.make_source)
+                    : info.kind == PluginKind::Analyzer ? bool(info.make_analyzer)
+                                                        : bool(info.make_writer);
+  if (!made) {
     throw InternalError("plugin '" + info.name + "' registered without a factory");
   }
   plugins_.push_back(std::move(info));

@@ -154,7 +154,7 @@ TEST(PipelineErrors, NumbersBeyondDoubleRangeNameTheirPath) {
 TEST(PipelineErrors, UnknownTopLevelKeyGetsDidYouMean) {
   const std::string e = error_of(R"({"source": {"plugin": "random"}, "analyzer": []})");
   EXPECT_EQ(e, "p.json: analyzer: unknown key (did you mean \"analyzers\"?); known: name, description, "
-               "seed, source, analyzers, output, sweep");
+               "seed, source, analyzers, writers, output, sweep");
 }
 
 TEST(PipelineErrors, UnknownParameterGetsDidYouMean) {
@@ -185,7 +185,7 @@ TEST(PipelineErrors, UnknownPluginAndWrongKind) {
 
 TEST(PipelineErrors, DuplicateAnalyzerNames) {
   EXPECT_EQ(error_of(R"({"source": {"plugin": "random"}, "analyzers": [{"plugin": "meanx"}, {"plugin": "meanx"}]})"),
-            "p.json: analyzers[1].name: expected a name not used by another analyzer, got \"meanx\" again");
+            "p.json: analyzers[1].name: expected a name not used by another analyzer or writer, got \"meanx\" again");
 }
 
 TEST(PipelineErrors, AnalyzerNamesArePlainAndFreeOfRunnerGroups) {

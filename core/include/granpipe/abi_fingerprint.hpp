@@ -9,6 +9,7 @@
 #include <initializer_list>
 
 #include "granpipe/container.hpp"
+#include "granpipe/plugin.hpp"
 #include "granpipe/frame.hpp"
 #include "granpipe/frame_cache.hpp"
 #include "granpipe/log.hpp"
@@ -45,6 +46,8 @@ inline constexpr std::uint64_t kLayoutFingerprint = abi_detail::fnv1a({
     GRANPIPE_LAYOUT_OF(RandomStream), GRANPIPE_LAYOUT_OF(Seeds), GRANPIPE_LAYOUT_OF(Scalar),
     GRANPIPE_LAYOUT_OF(Table), GRANPIPE_LAYOUT_OF(Histogram), GRANPIPE_LAYOUT_OF(Fit),
     GRANPIPE_LAYOUT_OF(Plot), GRANPIPE_LAYOUT_OF(Results), GRANPIPE_LAYOUT_OF(RunningMean),
+    GRANPIPE_LAYOUT_OF(StreamedTable), GRANPIPE_LAYOUT_OF(FrameContent),
+    GRANPIPE_LAYOUT_OF(PluginContext), GRANPIPE_LAYOUT_OF(PluginInfo), GRANPIPE_LAYOUT_OF(Registry),
 });
 #undef GRANPIPE_LAYOUT_OF
 

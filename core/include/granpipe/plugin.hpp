@@ -9,7 +9,6 @@
 #include <string>
 #include <vector>
 
-#include "granpipe/abi_fingerprint.hpp"
 #include "granpipe/errors.hpp"
 #include "granpipe/frame.hpp"
 #include "granpipe/frame_cache.hpp"
@@ -104,7 +103,20 @@ class Analyzer {
   virtual void publish(PropertyTable& /*columns*/) {}
 };
 
-enum class PluginKind : std::uint8_t { Source, Analyzer };
+// Saves frames: the H5MD frame store (frames.h5) is one; VTK or extended XYZ others.
+// Sees every frame (every output.frame_stride-th) after the analyzers, with the columns
+// they published. Files it writes into ctx.output_dir start with ctx.name; it creates
+// them at the first write (plugins are also made to check a pipeline, which writes nothing).
+class Writer {
+ public:
+  virtual ~Writer() = default;
+  virtual void write(const Frame& frame) = 0;
+  // The run finished: complete the files. A writer that is never closed (a run killed or
+  // failed) must leave them marked or named as incomplete.
+  virtual void close() = 0;
+};
+
+enum class PluginKind : std::uint8_t { Source, Analyzer, Writer };
 const char* to_string(PluginKind k);
 
 struct PluginInfo {
@@ -112,9 +124,10 @@ struct PluginInfo {
   PluginKind kind = PluginKind::Analyzer;
   std::string summary;
   Schema schema;
-  std::function<std::unique_ptr<Source>(const PluginContext&)> make_source;
-  std::function<std::unique_ptr<Analyzer>(const PluginContext&)> make_analyzer;
-  std::string library;  // file it was loaded from; set by the loader
+  std::function<std::unique_ptr<Source>(const PluginContext&)> make_source{};
+  std::function<std::unique_ptr<Analyzer>(const PluginContext&)> make_analyzer{};
+  std::function<std::unique_ptr<Writer>(const PluginContext&)> make_writer{};
+  std::string library{};  // file it was loaded from; set by the loader
 };
 
 // Holds every known plugin. Built-in and external plugins register the same way.
@@ -122,15 +135,27 @@ class Registry {
  public:
   template <class S>
   void add_source(std::string name, std::string summary, Schema schema) {
-    add({std::move(name), PluginKind::Source, std::move(summary), std::move(schema),
-         [](const PluginContext& c) -> std::unique_ptr<Source> { return std::make_unique<S>(c); },
-         nullptr, ""});
+    PluginInfo info{std::move(name), PluginKind::Source, std::move(summary), std::move(schema)};
+    info.make_source = [](const PluginContext& c) -> std::unique_ptr<Source> {
+      return std::make_unique<S>(c);
+    };
+    add(std::move(info));
   }
   template <class A>
   void add_analyzer(std::string name, std::string summary, Schema schema) {
-    add({std::move(name), PluginKind::Analyzer, std::move(summary), std::move(schema), nullptr,
-         [](const PluginContext& c) -> std::unique_ptr<Analyzer> { return std::make_unique<A>(c); },
-         ""});
+    PluginInfo info{std::move(name), PluginKind::Analyzer, std::move(summary), std::move(schema)};
+    info.make_analyzer = [](const PluginContext& c) -> std::unique_ptr<Analyzer> {
+      return std::make_unique<A>(c);
+    };
+    add(std::move(info));
+  }
+  template <class W>
+  void add_writer(std::string name, std::string summary, Schema schema) {
+    PluginInfo info{std::move(name), PluginKind::Writer, std::move(summary), std::move(schema)};
+    info.make_writer = [](const PluginContext& c) -> std::unique_ptr<Writer> {
+      return std::make_unique<W>(c);
+    };
+    add(std::move(info));
   }
   // Registers a plugin; a second plugin of one name is an InternalError.
   void add(PluginInfo info);
@@ -146,7 +171,10 @@ class Registry {
   std::shared_ptr<struct LoadReport> report_;
 };
 
+
 }  // namespace granpipe
+
+#include "granpipe/abi_fingerprint.hpp"  // of every type above
 
 // The one exported symbol of a plugin library: a plain descriptor the loader reads
 // (ABI version first, then the layout of the public types) before it calls anything in
