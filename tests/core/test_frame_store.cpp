@@ -634,3 +634,19 @@ TEST_F(FrameStore, EveryFrameOfAKilledWriterReadsBackExactly) {
 }
 
 }  // namespace
+
+// Files of frames layout 1.x (granpipe before core v2) are refused in one line that names
+// the version, not misread.
+TEST_F(FrameStore, AFileOfAnotherLayoutVersionIsRefusedNamingIt) {
+  const Optional none{false, false, false, false};
+  const fs::path p = write("layout1.h5", 2, 3, 4, none);
+  {
+    Id f(H5Fopen(p.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
+    Id ext(H5Gopen2(f, "/granpipe", H5P_DEFAULT));
+    H5Adelete(ext, "version");
+    put_int_attribute(ext, "version", {1, 0}, false);
+  }
+  EXPECT_EQ(message_of([&] { FrameReader r(p); }),
+            p.string() + ": /granpipe@version: expected frames layout 2.x, got 1.x (written by "
+                         "another granpipe version; docs/file-format.md lists the layouts)");
+}
