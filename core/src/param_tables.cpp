@@ -42,18 +42,21 @@ std::pair<std::size_t, std::size_t> pair_of(const std::string& key, const Specie
   const std::string a = key.substr(0, dash), b = dash == std::string::npos ? "" : key.substr(dash + 1);
   std::vector<std::string> names;
   for (std::size_t i = 0; i < species.size(); ++i) names.push_back(species.name(i));
+  const JsonLocation at = table.child(key);
   if (!is_species_name(a) || !is_species_name(b)) {
     std::string list;
     for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
-    throw InputError(table.str() + ": expected keys \"a-b\" naming two species (of " + list +
-                     ") or \"*\", got " + json_brief(key));
+    // A key from the file is shown quoted only: it may hold any character.
+    const std::string where = at.key_str() == at.str() ? table.str() : at.key_str();
+    throw InputError(where + ": expected keys \"a-b\" naming two species (of " + list + ") or \"*\", got " +
+                     json_brief(key));
   }
   std::size_t ends[2];
   for (int k = 0; k < 2; ++k) {
     const std::string& name = k == 0 ? a : b;
     const auto i = species.find(name);
     if (!i) {
-      throw InputError(table.child(key).str() + ": unknown species \"" + name + "\"" +
+      throw InputError(at.key_str() + ": unknown species \"" + name + "\"" +
                        did_you_mean(name, names) + known_list(names));
     }
     ends[k] = *i;

@@ -41,6 +41,16 @@ std::string JsonLocation::str() const {
   return file + ": " + path;
 }
 
+std::string JsonLocation::key_str() const {
+  if (overrides) {
+    for (auto o = overrides->rbegin(); o != overrides->rend(); ++o) {
+      if (covers(o->path, path)) break;  // str() says who set the key itself
+      if (covers(path, o->path) && !o->origin.empty()) return o->origin + ": " + path;
+    }
+  }
+  return str();
+}
+
 std::string located_message(const JsonLocation& top, const std::string& message) {
   const auto colon = message.find(": ");
   if (colon == std::string::npos) return top.str() + message;
@@ -186,7 +196,7 @@ void check_keys(const nlohmann::json& obj, const std::vector<std::string>& allow
   if (!obj.is_object()) throw InputError(at.str() + ": expected an object, got " + json_brief(obj));
   for (const auto& [key, v] : obj.items()) {
     if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
-      throw InputError(at.child(key).str() + ": unknown key" + did_you_mean(key, allowed) +
+      throw InputError(at.child(key).key_str() + ": unknown key" + did_you_mean(key, allowed) +
                        known_list(allowed));
     }
   }
@@ -213,7 +223,7 @@ Params read_params(const nlohmann::json& object, const Schema& schema, const Jso
   for (const auto& s : schema.specs()) known.push_back(s.name);
   for (const auto& [key, value] : object.items()) {
     if (!schema.find(key)) {
-      throw InputError(where.child(key).str() + ": unknown parameter" + did_you_mean(key, known) +
+      throw InputError(where.child(key).key_str() + ": unknown parameter" + did_you_mean(key, known) +
                        known_list(known));
     }
   }

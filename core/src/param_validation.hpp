@@ -26,6 +26,9 @@ struct JsonLocation {
   JsonLocation child(const std::string& key) const;
   JsonLocation index(std::size_t i) const;
   std::string str() const;
+  // str() for a key that may not be in the file: an override that set a value inside it
+  // (--set source.params.walls.bse.k_n=1) made it.
+  std::string key_str() const;
 };
 
 // `message` ("source.params.cells: expected ...", from a plugin) with its origin in front.

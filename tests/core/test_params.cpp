@@ -135,6 +135,10 @@ TEST(ObjectParams, ValuesInsideAreValidatedWithTheirPath) {
             "p.json: source.params.walls: expected an object of parameters, got [1]");
   EXPECT_EQ(error_of(with(kAllPairs), {"source.params.walls.base.k_n=0"}),
             "--set source.params.walls.base.k_n=0: expected a number > 0, got 0");
+  // A key that only a --set made is the --set's.
+  EXPECT_EQ(error_of(with(kAllPairs), {"source.params.walls.bse.k_n=1"}),
+            "--set source.params.walls.bse.k_n=1: source.params.walls.bse: unknown parameter (did you mean "
+            "\"base\"?); known: base, cylinder");
 }
 
 TEST(SpeciesParams, ReadInTheirOrder) {
@@ -196,6 +200,15 @@ TEST(PairParams, KeysNameDeclaredSpecies) {
   EXPECT_EQ(error_of(with(R"({"*": {"k_n": 1}, "small_large": {"mu": 0.1}})")),
             "p.json: source.params.contacts: expected keys \"a-b\" naming two species (of small, large) or "
             "\"*\", got \"small_large\"");
+  EXPECT_EQ(error_of(with(R"({"*": {"k_n": 1}, "sm\nall-large": {}})")),
+            "p.json: source.params.contacts: expected keys \"a-b\" naming two species (of small, large) or "
+            "\"*\", got \"sm\\nall-large\"");
+  EXPECT_EQ(error_of(with(kAllPairs), {"source.params.contacts.small-larg.mu=1"}),
+            "--set source.params.contacts.small-larg.mu=1: source.params.contacts.small-larg: unknown species "
+            "\"larg\" (did you mean \"large\"?); known: small, large");
+  EXPECT_EQ(error_of(with(kAllPairs), {"source.params.contacts.small_large.mu=1"}),
+            "--set source.params.contacts.small_large.mu=1: source.params.contacts.small_large: expected keys "
+            "\"a-b\" naming two species (of small, large) or \"*\", got \"small_large\"");
   EXPECT_EQ(error_of(with(R"({"*": {"k_n": 1}, "small-large": {"mu": -1}})")),
             "p.json: source.params.contacts.small-large.mu: expected a number >= 0, got -1");
   EXPECT_EQ(error_of(with(R"({"*": {"k_n": 1, "m": 0}})")),
