@@ -1,23 +1,46 @@
 #include <iomanip>
 #include <iostream>
+#include <string>
 
 #include "commands.hpp"
 #include "granpipe/plugin_loader.hpp"
 
 namespace granpipe::app {
 
+namespace {
+
+void print_params(const Schema& schema, const std::string& indent);
+
+std::string default_text(const ParamSpec& s) {
+  if (s.default_value) return format_value(*s.default_value);
+  return s.default_json.value_or("(required)");
+}
+
+// The parameter's line, its default and doc indented below, then the keys of its objects.
+void print_param(const ParamSpec& s, const std::string& indent) {
+  std::cout << indent << s.name << "  " << describe_expected(s);
+  if (!s.unit.empty()) std::cout << "  [" << s.unit << "]";
+  const std::string inner = indent + "    ";
+  std::cout << "\n";
+  if (s.type != ParamType::Object) std::cout << inner << "default: " << default_text(s) << "\n";
+  std::cout << inner << s.doc << "\n";
+  if (s.type == ParamType::Species) std::cout << inner << "each species:\n";
+  if (s.type == ParamType::Pairs) std::cout << inner << "each pair (its keys override \"*\"'s):\n";
+  if (s.fields) print_params(*s.fields, s.type == ParamType::Object ? inner : inner + "  ");
+}
+
+void print_params(const Schema& schema, const std::string& indent) {
+  for (const auto& s : schema.specs()) print_param(s, indent);
+}
+
+}  // namespace
+
 void describe(const Registry& registry, const std::string& name) {
   const PluginInfo* info = &require_plugin(registry, name, std::nullopt, "describe");
   std::cout << info->name << " (" << to_string(info->kind) << "): " << info->summary << "\n"
             << "library: " << info->library << "\n\nparameters:\n";
   if (info->schema.specs().empty()) std::cout << "  (none)\n";
-  for (const auto& s : info->schema.specs()) {
-    std::cout << "  " << s.name << "  " << describe_expected(s);
-    if (!s.unit.empty()) std::cout << "  [" << s.unit << "]";
-    std::cout << "\n      default: "
-              << (s.default_value ? format_value(*s.default_value) : std::string("(required)"))
-              << "\n      " << s.doc << "\n";
-  }
+  print_params(info->schema, "  ");
 }
 
 void list_plugins(const Registry& registry) {

@@ -1,6 +1,5 @@
 #include "json_path.hpp"
 
-#include <algorithm>
 #include <cctype>
 #include <charconv>
 
@@ -17,10 +16,8 @@ bool is_name_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) 
 bool is_name_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 bool is_digit(char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }
 
-// Whether `s` from `pos` to its end is a parameter name.
-bool is_name_from(const std::string& s, std::size_t pos) {
-  return pos < s.size() && is_name_start(s[pos]) && std::all_of(s.begin() + pos + 1, s.end(), is_name_char);
-}
+// A key in a path: a name, which may hold '-' after its start (a pair table's "small-large").
+bool is_key_char(char c) { return is_name_char(c) || c == '-'; }
 
 }  // namespace
 
@@ -46,8 +43,12 @@ std::vector<std::string> split_path(const std::string& path, const std::string& 
       continue;
     }
     if (!parts.empty() && path[pos++] != '.') throw malformed();
-    if (pos == path.size() || !is_name_start(path[pos])) throw malformed();
-    for (end = pos + 1; end < path.size() && is_name_char(path[end]);) ++end;
+    if (pos < path.size() && path[pos] == '*') {
+      end = pos + 1;  // a pair table's entry for every pair
+    } else {
+      if (pos == path.size() || !is_name_start(path[pos])) throw malformed();
+      for (end = pos + 1; end < path.size() && is_key_char(path[end]);) ++end;
+    }
     parts.push_back(path.substr(pos, end - pos));
     pos = end;
   }
@@ -80,14 +81,28 @@ std::string join_path(const std::vector<std::string>& parts) {
   return path;
 }
 
+namespace {
+// Whether `s` from `pos` to its end is a parameter name, or a path into a parameter's
+// value (walls.base.mu, species[1].density).
+bool is_param_path_from(const std::string& s, std::size_t pos) {
+  if (pos >= s.size() || !is_name_start(s[pos])) return false;
+  try {
+    split_path(s.substr(pos), "");
+    return true;
+  } catch (const InputError&) {
+    return false;
+  }
+}
+}  // namespace
+
 bool is_plugin_param_path(const std::string& path) {
   static const std::string source = "source.params.", analyzers = "analyzers[", params = "].params.";
-  if (path.rfind(source, 0) == 0) return is_name_from(path, source.size());
+  if (path.rfind(source, 0) == 0) return is_param_path_from(path, source.size());
   if (path.rfind(analyzers, 0) != 0) return false;
   std::size_t end = analyzers.size();
   while (end < path.size() && is_digit(path[end])) ++end;
   return end > analyzers.size() && path.compare(end, params.size(), params) == 0 &&
-         is_name_from(path, end + params.size());
+         is_param_path_from(path, end + params.size());
 }
 
 }  // namespace granpipe

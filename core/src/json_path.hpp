@@ -17,7 +17,8 @@ std::string join_path(const std::vector<std::string>& parts);
 // must exist.
 nlohmann::json& locate(nlohmann::json& root, const std::vector<std::string>& parts, const std::string& where);
 
-// Whether `path` is source.params.NAME or analyzers[K].params.NAME.
+// Whether `path` is source.params.NAME or analyzers[K].params.NAME, or a path into such a
+// parameter's value (source.params.walls.base.mu).
 bool is_plugin_param_path(const std::string& path);
 
 }  // namespace granpipe

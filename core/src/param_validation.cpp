@@ -3,9 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <memory>
+#include <optional>
+#include <type_traits>
 
 #include "did_you_mean.hpp"
 #include "granpipe/errors.hpp"
+#include "param_tables.hpp"
 
 namespace granpipe {
 
@@ -36,6 +41,16 @@ std::string JsonLocation::str() const {
   return file + ": " + path;
 }
 
+std::string JsonLocation::key_str() const {
+  if (overrides) {
+    for (auto o = overrides->rbegin(); o != overrides->rend(); ++o) {
+      if (covers(o->path, path)) break;  // str() says who set the key itself
+      if (covers(path, o->path) && !o->origin.empty()) return o->origin + ": " + path;
+    }
+  }
+  return str();
+}
+
 std::string located_message(const JsonLocation& top, const std::string& message) {
   const auto colon = message.find(": ");
   if (colon == std::string::npos) return top.str() + message;
@@ -48,8 +63,32 @@ std::string json_brief(const nlohmann::json& v) {
   return s;
 }
 
+nlohmann::json to_json(const Params& p) {
+  nlohmann::json object = nlohmann::json::object();
+  for (const auto& [name, value] : p.values()) object[name] = to_json(value);
+  return object;
+}
+
 nlohmann::json to_json(const ParamValue& v) {
-  return std::visit([](const auto& x) { return nlohmann::json(x); }, v);
+  return std::visit(
+      [](const auto& x) -> nlohmann::json {
+        using T = std::decay_t<decltype(x)>;
+        if constexpr (std::is_same_v<T, std::shared_ptr<const Params>>) {
+          return to_json(*x);
+        } else if constexpr (std::is_same_v<T, std::shared_ptr<const SpeciesTable>>) {
+          nlohmann::json list = nlohmann::json::array();
+          for (std::size_t i = 0; i < x->size(); ++i) list.push_back(to_json((*x)[i]));
+          return list;
+        } else if constexpr (std::is_same_v<T, std::shared_ptr<const PairTable>>) {
+          nlohmann::json pairs = nlohmann::json::object();
+          for (std::size_t i = 0; i < x->size(); ++i)
+            for (std::size_t j = i; j < x->size(); ++j) pairs[x->key(i, j)] = to_json(x->at(i, j));
+          return pairs;
+        } else {
+          return nlohmann::json(x);
+        }
+      },
+      v);
 }
 
 namespace {
@@ -82,9 +121,17 @@ bool as_integer(const nlohmann::json& v, std::int64_t& out) {
   return false;
 }
 
+// `earlier`: the values read before this one in its object (a pair table's species).
 ParamValue convert(const nlohmann::json& v, const ParamSpec& s, const JsonLocation& at,
-                   const std::filesystem::path& base_dir) {
+                   const std::filesystem::path& base_dir, const std::map<std::string, ParamValue>& earlier) {
   switch (s.type) {
+    case ParamType::Object:
+      return std::make_shared<const Params>(read_params(v, *s.fields, at, base_dir));
+    case ParamType::Species:
+      return read_species_table(v, s, at, base_dir);
+    case ParamType::Pairs:
+      return read_pair_table(v, s, *std::get<std::shared_ptr<const SpeciesTable>>(earlier.at(s.species)),
+                             at, base_dir);
     case ParamType::Bool:
       if (!v.is_boolean()) fail(at, s, v);
       return v.get<bool>();
@@ -149,15 +196,26 @@ void check_keys(const nlohmann::json& obj, const std::vector<std::string>& allow
   if (!obj.is_object()) throw InputError(at.str() + ": expected an object, got " + json_brief(obj));
   for (const auto& [key, v] : obj.items()) {
     if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
-      throw InputError(at.child(key).str() + ": unknown key" + did_you_mean(key, allowed) +
+      throw InputError(at.child(key).key_str() + ": unknown key" + did_you_mean(key, allowed) +
                        known_list(allowed));
     }
   }
 }
 
-Params validate_params(nlohmann::json& object, const Schema& schema, const JsonLocation& where,
-                       const std::filesystem::path& base_dir) {
-  if (object.is_null()) object = nlohmann::json::object();
+namespace {
+
+// What a parameter left out stands for when it has no plain default: an object's {} (its
+// fields' defaults), a table's default.
+std::optional<nlohmann::json> implied_json(const ParamSpec& s) {
+  if (s.type == ParamType::Object) return nlohmann::json::object();
+  if (s.default_json) return nlohmann::json::parse(*s.default_json);
+  return std::nullopt;
+}
+
+}  // namespace
+
+Params read_params(const nlohmann::json& object, const Schema& schema, const JsonLocation& where,
+                   const std::filesystem::path& base_dir, Missing missing) {
   if (!object.is_object()) {
     throw InputError(where.str() + ": expected an object of parameters, got " + json_brief(object));
   }
@@ -165,7 +223,7 @@ Params validate_params(nlohmann::json& object, const Schema& schema, const JsonL
   for (const auto& s : schema.specs()) known.push_back(s.name);
   for (const auto& [key, value] : object.items()) {
     if (!schema.find(key)) {
-      throw InputError(where.child(key).str() + ": unknown parameter" + did_you_mean(key, known) +
+      throw InputError(where.child(key).key_str() + ": unknown parameter" + did_you_mean(key, known) +
                        known_list(known));
     }
   }
@@ -173,15 +231,26 @@ Params validate_params(nlohmann::json& object, const Schema& schema, const JsonL
   for (const auto& s : schema.specs()) {
     const JsonLocation at = where.child(s.name);
     if (object.contains(s.name)) {
-      values[s.name] = convert(object[s.name], s, at, base_dir);
+      values[s.name] = convert(object[s.name], s, at, base_dir, values);
+    } else if (missing == Missing::Skip) {
+      continue;
     } else if (s.default_value) {
       values[s.name] = *s.default_value;
+    } else if (const auto def = implied_json(s)) {
+      values[s.name] = convert(*def, s, at, base_dir, values);
     } else {
       throw InputError(at.str() + ": expected " + describe_expected(s) + ", got nothing (required)");
     }
-    object[s.name] = to_json(values[s.name]);
   }
   return Params(std::move(values));
+}
+
+Params validate_params(nlohmann::json& object, const Schema& schema, const JsonLocation& where,
+                       const std::filesystem::path& base_dir) {
+  if (object.is_null()) object = nlohmann::json::object();
+  Params params = read_params(object, schema, where, base_dir);
+  object = to_json(params);
+  return params;
 }
 
 }  // namespace granpipe

@@ -1,5 +1,6 @@
 #pragma once
 // Validation of a JSON parameter object against a plugin's schema.
+#include <cstdint>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -25,6 +26,9 @@ struct JsonLocation {
   JsonLocation child(const std::string& key) const;
   JsonLocation index(std::size_t i) const;
   std::string str() const;
+  // str() for a key that may not be in the file: an override that set a value inside it
+  // (--set source.params.walls.bse.k_n=1) made it.
+  std::string key_str() const;
 };
 
 // `message` ("source.params.cells: expected ...", from a plugin) with its origin in front.
@@ -42,7 +46,17 @@ void check_keys(const nlohmann::json& obj, const std::vector<std::string>& allow
 Params validate_params(nlohmann::json& object, const Schema& schema, const JsonLocation& where,
                        const std::filesystem::path& base_dir);
 
-// The JSON form of a parameter value (for defaults written back into the pipeline).
+// What read_params does about a parameter the object leaves out: take its default (or
+// refuse it when required), or leave it out of the result (a pair table's entries, whose
+// keys "*" may give).
+enum class Missing : std::uint8_t { Default, Skip };
+
+// validate_params without the rewriting, for an object nested in the parameters.
+Params read_params(const nlohmann::json& object, const Schema& schema, const JsonLocation& where,
+                   const std::filesystem::path& base_dir, Missing missing = Missing::Default);
+
+// The JSON form of parameter values (for defaults written back into the pipeline).
 nlohmann::json to_json(const ParamValue& v);
+nlohmann::json to_json(const Params& p);
 
 }  // namespace granpipe

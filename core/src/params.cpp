@@ -1,9 +1,13 @@
 #include "granpipe/params.hpp"
 
 #include <cmath>
+#include <memory>
 #include <sstream>
+#include <type_traits>
 
 #include "granpipe/errors.hpp"
+#include "param_tables.hpp"
+#include "param_validation.hpp"
 
 namespace granpipe {
 
@@ -17,6 +21,9 @@ const char* to_string(ParamType t) {
     case ParamType::Path: return "path";
     case ParamType::IntList: return "list of integers";
     case ParamType::RealList: return "list of numbers";
+    case ParamType::Object: return "object";
+    case ParamType::Species: return "species table";
+    case ParamType::Pairs: return "pair table";
   }
   return "?";
 }
@@ -27,41 +34,54 @@ Schema::Entry Schema::add(ParamSpec spec) {
   return Entry(specs_.back());
 }
 
+namespace {
+ParamSpec new_spec(const std::string& name, ParamType type, const std::string& doc) {
+  ParamSpec s;
+  s.name = name;
+  s.type = type;
+  s.doc = doc;
+  return s;
+}
+}  // namespace
+
 Schema::Entry Schema::boolean(const std::string& name, bool def, const std::string& doc) {
-  return add({name, ParamType::Bool, ParamValue(def), {}, {}, false, false, {}, {}, "", doc});
+  ParamSpec s = new_spec(name, ParamType::Bool, doc);
+  s.default_value = def;
+  return add(std::move(s));
 }
 
 Schema::Entry Schema::integer(const std::string& name, std::optional<std::int64_t> def,
                               const std::string& doc) {
-  ParamSpec s{name, ParamType::Int, {}, {}, {}, false, false, {}, {}, "", doc};
+  ParamSpec s = new_spec(name, ParamType::Int, doc);
   if (def) s.default_value = *def;
   return add(std::move(s));
 }
 
 Schema::Entry Schema::real(const std::string& name, std::optional<double> def,
                            const std::string& doc) {
-  ParamSpec s{name, ParamType::Real, {}, {}, {}, false, false, {}, {}, "", doc};
+  ParamSpec s = new_spec(name, ParamType::Real, doc);
   if (def) s.default_value = *def;
   return add(std::move(s));
 }
 
 Schema::Entry Schema::string(const std::string& name, std::optional<std::string> def,
                              const std::string& doc) {
-  ParamSpec s{name, ParamType::String, {}, {}, {}, false, false, {}, {}, "", doc};
+  ParamSpec s = new_spec(name, ParamType::String, doc);
   if (def) s.default_value = *def;
   return add(std::move(s));
 }
 
-Schema::Entry Schema::choice(const std::string& name, std::vector<std::string> choices,
-                             std::optional<std::string> def, const std::string& doc) {
-  ParamSpec s{name, ParamType::Choice, {}, {}, {}, false, false, std::move(choices), {}, "", doc};
+Schema::Entry Schema::add_choice(const std::string& name, std::vector<std::string> choices,
+                                 std::optional<std::string> def, const std::string& doc) {
+  ParamSpec s = new_spec(name, ParamType::Choice, doc);
+  s.choices = std::move(choices);
   if (def) s.default_value = *def;
   return add(std::move(s));
 }
 
 Schema::Entry Schema::path(const std::string& name, std::optional<std::string> def,
                            const std::string& doc) {
-  ParamSpec s{name, ParamType::Path, {}, {}, {}, false, false, {}, {}, "", doc};
+  ParamSpec s = new_spec(name, ParamType::Path, doc);
   if (def) s.default_value = *def;
   return add(std::move(s));
 }
@@ -69,15 +89,68 @@ Schema::Entry Schema::path(const std::string& name, std::optional<std::string> d
 Schema::Entry Schema::integers(const std::string& name,
                                std::optional<std::vector<std::int64_t>> def,
                                const std::string& doc) {
-  ParamSpec s{name, ParamType::IntList, {}, {}, {}, false, false, {}, {}, "", doc};
+  ParamSpec s = new_spec(name, ParamType::IntList, doc);
   if (def) s.default_value = *def;
   return add(std::move(s));
 }
 
 Schema::Entry Schema::reals(const std::string& name, std::optional<std::vector<double>> def,
                             const std::string& doc) {
-  ParamSpec s{name, ParamType::RealList, {}, {}, {}, false, false, {}, {}, "", doc};
+  ParamSpec s = new_spec(name, ParamType::RealList, doc);
   if (def) s.default_value = *def;
+  return add(std::move(s));
+}
+
+namespace {
+// The runner checks path parameters against the output directory, and sees only the top
+// level of a schema.
+void refuse_nested_paths(const Schema& fields, const std::string& name) {
+  for (const auto& f : fields.specs()) {
+    if (f.type == ParamType::Path) {
+      throw InternalError("schema: '" + name + "' holds the path parameter '" + f.name +
+                          "'; paths are top-level parameters only");
+    }
+    if (f.fields) refuse_nested_paths(*f.fields, name);
+  }
+}
+}  // namespace
+
+Schema::Entry Schema::object(const std::string& name, Schema fields, const std::string& doc) {
+  refuse_nested_paths(fields, name);
+  ParamSpec s = new_spec(name, ParamType::Object, doc);
+  s.fields = std::make_shared<const Schema>(std::move(fields));
+  return add(std::move(s));
+}
+
+Schema::Entry Schema::species_table(const std::string& name, Schema fields,
+                                    std::optional<std::string> default_json, const std::string& doc) {
+  refuse_nested_paths(fields, name);
+  if (fields.find("name")) {
+    throw InternalError("schema: species table '" + name + "' declares 'name', which every species has");
+  }
+  Schema species;
+  species.string("name", std::nullopt, "the species' name (a letter, then letters, digits and _)");
+  for (auto& f : fields.specs_) species.add(std::move(f));
+  ParamSpec s = new_spec(name, ParamType::Species, doc);
+  s.fields = std::make_shared<const Schema>(std::move(species));
+  s.default_json = std::move(default_json);
+  check_table_default(s, *this);
+  return add(std::move(s));
+}
+
+Schema::Entry Schema::pair_table(const std::string& name, const std::string& species, Schema fields,
+                                 std::optional<std::string> default_json, const std::string& doc) {
+  refuse_nested_paths(fields, name);
+  const ParamSpec* table = find(species);
+  if (!table || table->type != ParamType::Species) {
+    throw InternalError("schema: pair table '" + name + "' names '" + species +
+                        "', which is not a species table declared before it");
+  }
+  ParamSpec s = new_spec(name, ParamType::Pairs, doc);
+  s.fields = std::make_shared<const Schema>(std::move(fields));
+  s.species = species;
+  s.default_json = std::move(default_json);
+  check_table_default(s, *this);
   return add(std::move(s));
 }
 
@@ -117,6 +190,15 @@ const std::vector<std::int64_t>& Params::integers(const std::string& n) const {
 const std::vector<double>& Params::reals(const std::string& n) const {
   return typed<std::vector<double>>(get(n), n, "list of numbers");
 }
+const Params& Params::object(const std::string& n) const {
+  return *typed<std::shared_ptr<const Params>>(get(n), n, "object");
+}
+const SpeciesTable& Params::species(const std::string& n) const {
+  return *typed<std::shared_ptr<const SpeciesTable>>(get(n), n, "species table");
+}
+const PairTable& Params::pairs(const std::string& n) const {
+  return *typed<std::shared_ptr<const PairTable>>(get(n), n, "pair table");
+}
 
 namespace {
 std::string number(double x) {
@@ -144,7 +226,9 @@ std::string format_value(const ParamValue& v) {
         else if constexpr (std::is_same_v<T, std::int64_t>) return std::to_string(x);
         else if constexpr (std::is_same_v<T, double>) return number(x);
         else if constexpr (std::is_same_v<T, std::string>) return "\"" + x + "\"";
-        else return list(x);
+        else if constexpr (std::is_same_v<T, std::vector<std::int64_t>> ||
+                           std::is_same_v<T, std::vector<double>>) return list(x);
+        else return to_json(x).dump();
       },
       v);
 }
@@ -163,6 +247,10 @@ std::string describe_expected(const ParamSpec& spec) {
         what += (k ? ", \"" : "\"") + spec.choices[k] + "\"";
       return what;
     }
+    case ParamType::Object: return "an object";
+    case ParamType::Species: return "a list of species, each an object with a \"name\"";
+    case ParamType::Pairs:
+      return "an object with a key \"a-b\" per pair of " + spec.species + " (\"*\": the pairs not listed)";
     case ParamType::IntList:
     case ParamType::RealList:
       what = spec.list_length ? "a list of " + std::to_string(*spec.list_length) + " "

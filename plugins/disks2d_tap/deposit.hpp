@@ -12,6 +12,7 @@
 
 #include "disk_grid.hpp"
 #include "disk_packing.hpp"
+#include "granpipe/params.hpp"
 #include "granpipe/random.hpp"
 
 namespace granpipe::disks2d_tap {
@@ -25,6 +26,17 @@ enum class MoveOrder : std::uint8_t { Random, Sweeps };
 // What happens to the supports a disk gives when it moves: dropped on any displacement,
 // or kept while the two still touch (to 1e-9 of the radius) and the pair stays stable.
 enum class SupportUpdate : std::uint8_t { Drop, KeepTouching };
+
+// The names pipelines give them (parameters roll_measure, move_order, support_update).
+inline ChoiceNames<RollMeasure> choice_names(RollMeasure) {
+  return {{"centre_path", RollMeasure::CentrePath}, {"support_surface", RollMeasure::SupportSurface}};
+}
+inline ChoiceNames<MoveOrder> choice_names(MoveOrder) {
+  return {{"sweeps", MoveOrder::Sweeps}, {"random", MoveOrder::Random}};
+}
+inline ChoiceNames<SupportUpdate> choice_names(SupportUpdate) {
+  return {{"drop", SupportUpdate::Drop}, {"keep_touching", SupportUpdate::KeepTouching}};
+}
 
 struct DepositOptions {
   double delta = 0.01;

@@ -8,6 +8,7 @@
 
 #include "disk_grid.hpp"
 #include "disk_packing.hpp"
+#include "granpipe/params.hpp"
 #include "granpipe/random.hpp"
 #include "visit_order.hpp"
 
@@ -17,6 +18,9 @@ namespace granpipe::disks2d_tap {
 // heights above the lowest possible centre (y - r_min -> A (y - r_min)), which keeps
 // disks on the base there. Both only ever separate disks.
 enum class Dilation : std::uint8_t { CentreHeight, HeightAboveContact };
+inline ChoiceNames<Dilation> choice_names(Dilation) {  // parameter dilation
+  return {{"centre_height", Dilation::CentreHeight}, {"height_above_contact", Dilation::HeightAboveContact}};
+}
 
 // Loops per tap that put the order-disorder transition where the paper has it (between
 // A = 1.10 and 1.15); the paper's "about 20" of its own, undefined, loops mix as much as

@@ -11,6 +11,14 @@
 
 namespace granpipe::disks2d_tap {
 
+namespace {
+// How the amplitude goes: one value, or ramped up and down (parameter protocol).
+enum class Protocol : std::uint8_t { Constant, Annealed };
+ChoiceNames<Protocol> choice_names(Protocol) {
+  return {{"constant", Protocol::Constant}, {"annealed", Protocol::Annealed}};
+}
+}  // namespace
+
 Schema schema() {
   Schema s;
   // Lengths whose squares stay normal doubles; a bed of 10^6 disks already takes hours a tap.
@@ -44,26 +52,26 @@ Schema schema() {
       .min(0.0, true)
       .max(1.0)
       .unit("length");
-  s.choice("roll_measure", {"centre_path", "support_surface"}, std::string("centre_path"),
+  s.choice<RollMeasure>("roll_measure", RollMeasure::CentrePath,
            "what delta measures in a roll: the arc of the rolling disk's centre (radius "
            "r_i + r_s) or of the contact point on the support (radius r_s)");
-  s.choice("move_order", {"sweeps", "random"}, std::string("sweeps"),
+  s.choice<MoveOrder>("move_order", MoveOrder::Sweeps,
            "sweeps: every unstable disk moves once per sweep, in shuffled order; random: each "
            "move picks a random unstable disk");
-  s.choice("support_update", {"drop", "keep_touching"}, std::string("drop"),
+  s.choice<SupportUpdate>("support_update", SupportUpdate::Drop,
            "when a disk moves, the disks it supports lose it (drop), or keep it while still "
            "touching to 1e-9 radius and still stable (keep_touching)");
-  s.choice("dilation", {"centre_height", "height_above_contact"}, std::string("centre_height"),
+  s.choice<Dilation>("dilation", Dilation::CentreHeight,
            "a tap multiplies centre heights y (the paper's wording) or heights above the "
            "lowest centre position y - r_min by A");
   s.integer("mc_loops", kPaperMatchedMcLoops,
             "Monte Carlo loops after each dilation, each trying one jump per disk; the "
             "default puts the order-disorder transition where the paper's 'about 20' do")
       .min(0);
-  s.choice("mc_order", {"index", "shuffled"}, std::string("index"),
-           "order in which a Monte Carlo loop visits the disks: by index, the same in every "
-           "loop, or a fresh random permutation per loop");
-  s.choice("protocol", {"constant", "annealed"}, std::string("constant"),
+  s.choice<McOrder>("mc_order", McOrder::Index,
+                    "order in which a Monte Carlo loop visits the disks: by index, the same in "
+                    "every loop, or a fresh random permutation per loop");
+  s.choice<Protocol>("protocol", Protocol::Constant,
            "constant: equilibration then production taps at A; annealed: A ramped up and "
            "down between anneal_A_min and anneal_A_max (the paper's Fig. 8)");
   s.real("A", 1.1, "tap amplitude of the constant protocol").min(1.0, true);
@@ -101,17 +109,15 @@ constexpr double kMaxWidthInDiameters = 1e6;
 DepositOptions deposit_options(const Params& p) {
   DepositOptions o;
   o.delta = p.real("delta");
-  o.measure = p.string("roll_measure") == "centre_path" ? RollMeasure::CentrePath
-                                                         : RollMeasure::SupportSurface;
-  o.order = p.string("move_order") == "sweeps" ? MoveOrder::Sweeps : MoveOrder::Random;
-  o.update = p.string("support_update") == "drop" ? SupportUpdate::Drop
-                                                   : SupportUpdate::KeepTouching;
+  o.measure = p.choice<RollMeasure>("roll_measure");
+  o.order = p.choice<MoveOrder>("move_order");
+  o.update = p.choice<SupportUpdate>("support_update");
   return o;
 }
 
 TapSchedule tap_schedule(const PluginContext& ctx) {
   const Params& p = ctx.params;
-  if (p.string("protocol") == "constant") {
+  if (p.choice<Protocol>("protocol") == Protocol::Constant) {
     const double from = p.real("cool_from");
     if (from == 0.0) {
       return TapSchedule::constant(p.real("A"), p.integer("equilibration_taps"),
@@ -223,9 +229,7 @@ TapSource::TapSource(const PluginContext& ctx)
       tap_rng_(replica_seeds(ctx).stream("tap")),
       schedule_(tap_schedule(ctx)),
       shaker_(static_cast<int>(ctx.params.integer("mc_loops")),
-              ctx.params.string("dilation") == "centre_height" ? Dilation::CentreHeight
-                                                              : Dilation::HeightAboveContact,
-              ctx.params.string("mc_order") == "index" ? McOrder::Index : McOrder::Shuffled) {
+              ctx.params.choice<Dilation>("dilation"), ctx.params.choice<McOrder>("mc_order")) {
   const Params& p = ctx.params;
   packing_ = p.string("initial_file").empty() ? random_placement(ctx, replica_seeds(ctx))
                                                : saved_bed(ctx);
@@ -235,12 +239,13 @@ TapSource::TapSource(const PluginContext& ctx)
       << ", got " << p.real("delta");
     throw InputError(s.str());
   }
-  if (p.string("protocol") == "constant" && p.integer("production_taps") < p.integer("save_every")) {
+  const auto protocol = p.choice<Protocol>("protocol");
+  if (protocol == Protocol::Constant && p.integer("production_taps") < p.integer("save_every")) {
     throw InputError(ctx.param("production_taps") + ": expected at least save_every = " +
                      std::to_string(p.integer("save_every")) + " (else nothing is saved), got " +
                      std::to_string(p.integer("production_taps")));
   }
-  if (p.string("protocol") == "annealed" && p.integer("anneal_taps_per_step") < p.integer("save_every")) {
+  if (protocol == Protocol::Annealed && p.integer("anneal_taps_per_step") < p.integer("save_every")) {
     throw InputError(ctx.param("anneal_taps_per_step") + ": expected at least save_every = " +
                      std::to_string(p.integer("save_every")) + " (else nothing is saved), got " +
                      std::to_string(p.integer("anneal_taps_per_step")));

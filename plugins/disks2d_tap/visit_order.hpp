@@ -6,11 +6,15 @@
 #include <numeric>
 #include <vector>
 
+#include "granpipe/params.hpp"
 #include "granpipe/random.hpp"
 
 namespace granpipe::disks2d_tap {
 
 enum class McOrder : std::uint8_t { Index, Shuffled };
+inline ChoiceNames<McOrder> choice_names(McOrder) {
+  return {{"index", McOrder::Index}, {"shuffled", McOrder::Shuffled}};
+}
 
 class VisitOrder {
  public:

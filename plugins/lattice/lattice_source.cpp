@@ -5,9 +5,15 @@
 
 namespace granpipe::lattice {
 
+namespace {
+// The box around the crystal (parameter boundary).
+enum class Sides : std::uint8_t { Periodic, Walls };
+ChoiceNames<Sides> choice_names(Sides) { return {{"periodic", Sides::Periodic}, {"walls", Sides::Walls}}; }
+}  // namespace
+
 Schema schema() {
   Schema s;
-  s.choice("lattice", lattice_names(), std::string("fcc"),
+  s.choice<Lattice>("lattice", Lattice::Fcc,
            "crystal: square, triangular (2D); sc, bcc, fcc, hcp (3D, hcp stacked along z)");
   s.integers("cells", std::vector<std::int64_t>{},
              "unit cells per axis, one entry per axis (2 in 2D, 3 in 3D); empty: 4 per axis. "
@@ -18,7 +24,7 @@ Schema schema() {
   s.real("radius", 0.5, "particle radius; nearest neighbours touch (their distance is 2 radius)")
       .range(1e-50, 1e50)
       .unit("length");
-  s.choice("boundary", {"periodic", "walls"}, std::string("periodic"),
+  s.choice<Sides>("boundary", Sides::Periodic,
            "periodic: the box is exactly the periodic repeat; walls: a box tight around the "
            "particles with walls on every side but an open top");
   s.real("jitter", 0.0,
@@ -43,7 +49,7 @@ constexpr double kMaxParticles = 1e7;
 
 LatticeSource::LatticeSource(const PluginContext& ctx)
     : seeds_(ctx.seeds),
-      cell_(unit_cell(ctx.params.string("lattice"))),
+      cell_(unit_cell(ctx.params.choice<Lattice>("lattice"))),
       radius_(ctx.params.real("radius")),
       jitter_(ctx.params.real("jitter")),
       frames_(ctx.params.integer("frames")) {
@@ -56,7 +62,7 @@ LatticeSource::LatticeSource(const PluginContext& ctx)
                      ctx.params.string("lattice") + " lattice), got " +
                      std::to_string(cells.size()));
   }
-  const bool periodic = ctx.params.string("boundary") == "periodic";
+  const bool periodic = ctx.params.choice<Sides>("boundary") == Sides::Periodic;
   const double spacing = 2.0 * radius_;  // nearest-neighbour distance
 
   double estimate = static_cast<double>(cell_.basis.size());

@@ -3,8 +3,10 @@
 // nearest-neighbour distance. The last axis is vertical (gravity along -y in 2D, -z in
 // 3D): close-packed rows (2D) and planes (hcp) are horizontal.
 #include <Eigen/Core>
-#include <string>
+#include <cstdint>
 #include <vector>
+
+#include "granpipe/params.hpp"
 
 namespace granpipe::lattice {
 
@@ -14,10 +16,14 @@ struct UnitCell {
   std::vector<Eigen::Vector3d> basis;              // sites in the cell
 };
 
-// The names accepted by unit_cell(), 2D ones first.
-const std::vector<std::string>& lattice_names();
+enum class Lattice : std::uint8_t { Square, Triangular, Sc, Bcc, Fcc, Hcp };
+// Their names in pipelines, 2D ones first.
+inline ChoiceNames<Lattice> choice_names(Lattice) {
+  return {{"square", Lattice::Square}, {"triangular", Lattice::Triangular}, {"sc", Lattice::Sc},
+          {"bcc", Lattice::Bcc},       {"fcc", Lattice::Fcc},               {"hcp", Lattice::Hcp}};
+}
 
-// square, triangular (2D); sc, bcc, fcc, hcp (3D). Throws InternalError on another name.
-UnitCell unit_cell(const std::string& name);
+// square, triangular (2D); sc, bcc, fcc, hcp (3D).
+UnitCell unit_cell(Lattice lattice);
 
 }  // namespace granpipe::lattice

@@ -17,7 +17,7 @@ Schema schema() {
          "contact if the centre distance is at most (R_i + R_j)(1 + tolerance), or the "
          "centre-wall distance at most R_i (1 + tolerance)")
       .min(0.0);
-  s.choice("top", {"auto", "surface", "lowest_surface", "container"}, std::string("auto"),
+  s.choice<Top>("top", Top::Auto,
            "top of the region before exclude_top: the highest particle top (surface), the "
            "lowest point of the free surface, over columns at least one mean diameter wide "
            "(lowest_surface: for heaped beds), the container's top (container), or surface "
@@ -68,7 +68,7 @@ Heights vertical_range(const Frame& f, Top top, const Region& columns) {
   if (top != Top::Container && c.periodic(v)) {
     throw InputError(std::string("packing.top: expected \"container\" or \"auto\" for a container ") +
                      "periodic along " + axis_name(v) + " (" + frame_name(f) + "), got \"" +
-                     (top == Top::Surface ? "surface" : "lowest_surface") + "\"");
+                     choice_name(top) + "\"");
   }
   Heights h{c.lo[v] + offset, c.hi[v] + offset};
   if (top == Top::Surface) {
@@ -175,11 +175,7 @@ PackingAnalyzer::PackingAnalyzer(const PluginContext& ctx)
   settings_.exclude_sides = p.real("exclude_sides");
   settings_.profile_step = p.real("profile_step");
   settings_.cuts_step = p.real("cuts_step");
-  const std::string& top = p.string("top");
-  settings_.top = top == "surface"          ? Top::Surface
-                  : top == "lowest_surface" ? Top::LowestSurface
-                  : top == "container"      ? Top::Container
-                                            : Top::Auto;
+  settings_.top = p.choice<Top>("top");
 }
 
 void PackingAnalyzer::consume(const Frame& frame, FrameCache& cache) {

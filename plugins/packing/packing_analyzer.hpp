@@ -14,6 +14,10 @@ namespace granpipe::packing {
 Schema schema();
 
 enum class Top : std::uint8_t { Auto, Surface, LowestSurface, Container };
+inline ChoiceNames<Top> choice_names(Top) {  // parameter top
+  return {{"auto", Top::Auto}, {"surface", Top::Surface}, {"lowest_surface", Top::LowestSurface},
+          {"container", Top::Container}};
+}
 
 struct PackingSettings {
   double tolerance = 1e-9;      // relative contact tolerance

@@ -283,10 +283,10 @@ TEST(PipelineErrors, SweepPathsAreCheckedWithoutRecursion) {
                      R"(": [1]}}})"),
             "p.json: source.params." + name + ": unknown parameter; known: frames, n (sweep point 0: source.params." +
                 name + " = 1)");
-  EXPECT_EQ(error_of(R"({"source": {"plugin": "random"}, "sweep": {"parameters": {"source.params.n-)" + name +
+  EXPECT_EQ(error_of(R"({"source": {"plugin": "random"}, "sweep": {"parameters": {"source.params.n+)" + name +
                      R"(": [1]}}})"),
-            "p.json: sweep.parameters[\"source.params.n-aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa...\"]: expected a plugin "
-            "parameter path like source.params.name or analyzers[0].params.name, got \"source.params.n-aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa...\"");
+            "p.json: sweep.parameters[\"source.params.n+aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa...\"]: expected a plugin "
+            "parameter path like source.params.name or analyzers[0].params.name, got \"source.params.n+aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa...\"");
 }
 
 TEST(PipelineErrors, AnalyzerNeedsWhatTheSourceLacks) {
