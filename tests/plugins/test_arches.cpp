@@ -20,6 +20,7 @@
 #include "granpipe/errors.hpp"
 #include "granpipe/plugin_loader.hpp"
 #include "mutual_stability.hpp"
+#include "plugin_harness.hpp"
 #include "support_count.hpp"
 #include "svg_writer.hpp"
 
@@ -509,23 +510,23 @@ TEST(ArchesSvg, OneCirclePerDiskAndOneLinePerMutualLink) {
 
 namespace {
 
-granpipe::Params params(std::int64_t svg_frames, double span_bin) {
-  return granpipe::Params({{"contact_tolerance", kTolerance},
-                           {"span_bin", span_bin},
-                           {"span_sizes", std::vector<std::int64_t>{2, 3, 4}},
-                           {"svg_frames", svg_frames}});
+// The context of the installed arches plugin, as a pipeline makes it.
+std::unique_ptr<granpipe::test::PluginHarness> context(std::int64_t svg_frames, double span_bin,
+                                                       const std::filesystem::path& dir = {}) {
+  return granpipe::test::make_context("arches",
+                                      {{"contact_tolerance", kTolerance},
+                                       {"span_bin", span_bin},
+                                       {"span_sizes", {2, 3, 4}},
+                                       {"svg_frames", svg_frames}},
+                                      1, dir);
 }
 
 }  // namespace
 
 TEST(ArchesAnalyzer, AveragesOverFramesWithStandardErrors) {
   const auto dir = fresh_directory("arches_analyzer");
-  const granpipe::Params p = params(1, 0.25);
-  granpipe::Log log;
-  log.set_quiet(true);
-  granpipe::Progress progress;
-  const granpipe::PluginContext ctx{p, granpipe::Seeds(1), 1, log, progress, dir, "", ""};
-  ga::ArchesAnalyzer analyzer(ctx);
+  const auto ctx = context(1, 0.25, dir);
+  ga::ArchesAnalyzer analyzer(*ctx);
   EXPECT_EQ(analyzer.needs().dim, 2);
   ASSERT_EQ(analyzer.needs().columns.size(), 1u);
   EXPECT_TRUE(analyzer.needs().columns[0].matches(ga::supports_property()));
@@ -604,12 +605,8 @@ TEST(ArchesAnalyzer, AveragesOverFramesWithStandardErrors) {
 }
 
 TEST(ArchesAnalyzer, NoPicturesWithoutAnOutputDirectory) {
-  const granpipe::Params p = params(3, 0.05);
-  granpipe::Log log;
-  log.set_quiet(true);
-  granpipe::Progress progress;
-  const granpipe::PluginContext ctx{p, granpipe::Seeds(1), 1, log, progress, {}, "", ""};
-  ga::ArchesAnalyzer analyzer(ctx);
+  const auto ctx = context(3, 0.05);
+  ga::ArchesAnalyzer analyzer(*ctx);
   granpipe::FrameCache cache;
   Frame empty = make_frame({}, 2.0);
   analyzer.consume(empty, cache);  // skipped
@@ -622,14 +619,9 @@ TEST(ArchesAnalyzer, NoPicturesWithoutAnOutputDirectory) {
 }
 
 TEST(ArchesAnalyzer, DuplicateSpanSizesAreRefused) {
-  const granpipe::Params p({{"contact_tolerance", kTolerance},
-                            {"span_bin", 0.05},
-                            {"span_sizes", std::vector<std::int64_t>{2, 3, 2}},
-                            {"svg_frames", std::int64_t{0}}});
-  granpipe::Log log;
-  granpipe::Progress progress;
-  const granpipe::PluginContext ctx{p, granpipe::Seeds(1), 1, log, progress, {}, "", ""};
-  EXPECT_THROW(ga::ArchesAnalyzer{ctx}, granpipe::InputError);
+  const auto ctx = granpipe::test::make_context(
+      "arches", {{"contact_tolerance", kTolerance}, {"span_sizes", {2, 3, 2}}});
+  EXPECT_THROW(ga::ArchesAnalyzer{*ctx}, granpipe::InputError);
 }
 
 TEST(ArchesPlugin, LoadsAndDeclaresItsSchema) {
@@ -640,11 +632,8 @@ TEST(ArchesPlugin, LoadsAndDeclaresItsSchema) {
   for (const char* name : {"contact_tolerance", "span_bin", "span_sizes", "svg_frames"}) {
     EXPECT_NE(info.schema.find(name), nullptr) << name;
   }
-  const granpipe::Params p = params(0, 0.05);
-  granpipe::Log log;
-  granpipe::Progress progress;
-  const granpipe::PluginContext ctx{p, granpipe::Seeds(1), 1, log, progress, {}, "", ""};
-  const auto analyzer = info.make_analyzer(ctx);
+  const auto ctx = context(0, 0.05);
+  const auto analyzer = info.make_analyzer(*ctx);
   ASSERT_EQ(analyzer->needs().columns.size(), 1u);
   EXPECT_EQ(analyzer->needs().columns[0].name, "supports");
   EXPECT_EQ(analyzer->needs().dim, 2);

@@ -19,6 +19,7 @@
 #include "granpipe/frame_store.hpp"
 #include "granpipe/plugin.hpp"
 #include "placement.hpp"
+#include "plugin_harness.hpp"
 #include "shake.hpp"
 #include "tap_schedule.hpp"
 #include "tap_source.hpp"
@@ -630,22 +631,11 @@ TEST(Disks2dTapSchedule, RisingAndFallingRampsVisitTheSameAmplitudes) {
 
 namespace {
 
-granpipe::Params source_params(const std::map<std::string, granpipe::ParamValue>& overrides) {
-  std::map<std::string, granpipe::ParamValue> values;
-  const granpipe::Schema schema = dt::schema();
-  for (const auto& spec : schema.specs()) values[spec.name] = *spec.default_value;
-  for (const auto& [k, v] : overrides) values[k] = v;
-  return granpipe::Params(values);
-}
-
-std::vector<Frame> run_source(const granpipe::Params& params, std::uint64_t seed,
+// The frames of the source made as a pipeline makes it: `params` over the schema's defaults.
+std::vector<Frame> run_source(const nlohmann::json& params, std::uint64_t seed,
                               granpipe::Results* results = nullptr) {
-  granpipe::Log log;
-  log.set_quiet(true);
-  granpipe::Progress progress;
-  progress.set_enabled(false);
-  granpipe::PluginContext ctx{params, Seeds(seed), 1, log, progress, {}, "", ""};
-  dt::TapSource source(ctx);
+  const auto ctx = granpipe::test::make_context(dt::schema(), params, seed);
+  dt::TapSource source(*ctx);
   std::vector<Frame> frames;
   Frame f;
   while (source.next(f)) frames.push_back(f);
@@ -657,15 +647,15 @@ std::vector<Frame> run_source(const granpipe::Params& params, std::uint64_t seed
 
 TEST(Disks2dTapSource, SameSeedSameFrames) {
   const auto params =
-      source_params({{"N", std::int64_t{120}}, {"width", 10.0}, {"delta", 0.05},
+      nlohmann::json({{"N", std::int64_t{120}}, {"width", 10.0}, {"delta", 0.05},
                      {"equilibration_taps", std::int64_t{3}}, {"production_taps", std::int64_t{4}},
                      {"save_every", std::int64_t{2}}, {"A", 1.3}});
   granpipe::Results results;
   const auto a = run_source(params, 77, &results), b = run_source(params, 77);
   const auto c = run_source(params, 78);
-  auto other_replica = params.values();
-  other_replica["replica"] = std::int64_t{1};
-  const auto d = run_source(granpipe::Params(other_replica), 77);
+  auto other_replica = params;
+  other_replica["replica"] = 1;
+  const auto d = run_source(other_replica, 77);
   ASSERT_EQ(a.size(), 2u);
   ASSERT_EQ(b.size(), 2u);
   for (std::size_t k = 0; k < a.size(); ++k) {
@@ -687,7 +677,7 @@ TEST(Disks2dTapSource, SameSeedSameFrames) {
 
 TEST(Disks2dTapSource, ShuffledMonteCarloOrderIsReproducibleAndChangesTheRun) {
   auto params = [](const std::string& order) {
-    return source_params({{"N", std::int64_t{120}}, {"width", 10.0}, {"delta", 0.05},
+    return nlohmann::json({{"N", std::int64_t{120}}, {"width", 10.0}, {"delta", 0.05},
                           {"equilibration_taps", std::int64_t{2}}, {"production_taps", std::int64_t{2}},
                           {"save_every", std::int64_t{1}}, {"A", 1.2}, {"mc_order", order}});
   };
@@ -703,7 +693,7 @@ TEST(Disks2dTapSource, ShuffledMonteCarloOrderIsReproducibleAndChangesTheRun) {
 }
 
 TEST(Disks2dTapSource, AnnealedFramesCarryCycleAndAmplitude) {
-  const auto params = source_params(
+  const auto params = nlohmann::json(
       {{"N", std::int64_t{60}}, {"width", 8.0}, {"delta", 0.05}, {"protocol", std::string("annealed")},
        {"anneal_steps", std::int64_t{2}}, {"anneal_taps_per_step", std::int64_t{1}},
        {"anneal_cycles", std::int64_t{1}}, {"save_every", std::int64_t{1}},
@@ -720,7 +710,7 @@ TEST(Disks2dTapSource, AnnealedFramesCarryCycleAndAmplitude) {
 }
 
 TEST(Disks2dTapSource, CoolsBeforeTheConstantTaps) {
-  const auto params = source_params(
+  const auto params = nlohmann::json(
       {{"N", std::int64_t{60}}, {"width", 8.0}, {"delta", 0.05}, {"A", 1.1}, {"cool_from", 1.3},
        {"cool_step", 0.1}, {"cool_taps_per_step", std::int64_t{2}},
        {"equilibration_taps", std::int64_t{1}}, {"production_taps", std::int64_t{2}},
@@ -735,17 +725,17 @@ TEST(Disks2dTapSource, CoolsBeforeTheConstantTaps) {
 }
 
 TEST(Disks2dTapSource, RejectsImpossibleParameters) {
-  EXPECT_THROW(run_source(source_params({{"delta", 0.9}}), 1), InputError);  // > radius
-  EXPECT_THROW(run_source(source_params({{"width", 1.5}}), 1), InputError);  // disk too wide
-  EXPECT_THROW(run_source(source_params({{"protocol", std::string("annealed")},
+  EXPECT_THROW(run_source(nlohmann::json({{"delta", 0.9}}), 1), InputError);  // > radius
+  EXPECT_THROW(run_source(nlohmann::json({{"width", 1.5}}), 1), InputError);  // disk too wide
+  EXPECT_THROW(run_source(nlohmann::json({{"protocol", std::string("annealed")},
                                          {"anneal_A_min", 2.0}, {"anneal_A_max", 1.5}}),
                           1),
                InputError);
-  EXPECT_THROW(run_source(source_params({{"production_taps", std::int64_t{5}}}), 1), InputError);
+  EXPECT_THROW(run_source(nlohmann::json({{"production_taps", std::int64_t{5}}}), 1), InputError);
   // Cooling must start above A.
-  EXPECT_THROW(run_source(source_params({{"cool_from", 1.05}, {"A", 1.1}}), 1), InputError);
+  EXPECT_THROW(run_source(nlohmann::json({{"cool_from", 1.05}, {"A", 1.1}}), 1), InputError);
   // An annealed run whose steps are shorter than save_every would save nothing.
-  EXPECT_THROW(run_source(source_params({{"protocol", std::string("annealed")},
+  EXPECT_THROW(run_source(nlohmann::json({{"protocol", std::string("annealed")},
                                          {"anneal_taps_per_step", std::int64_t{5}}}),
                           1),
                InputError);
@@ -755,10 +745,10 @@ TEST(Disks2dTapSource, RejectsImpossibleParameters) {
 // in a box of 20 is one) is refused before they are allocated.
 TEST(Disks2dTapSource, WidthIsBoundedInDiametersBeforeAllocating) {
   try {
-    run_source(source_params({{"width", 1e9}, {"radius", 0.5}}), 1);
+    run_source(nlohmann::json({{"width", 1e9}, {"radius", 0.5}}), 1);
     FAIL() << "expected an InputError";
   } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(), "width: expected at most 1e+06 diameters of the smallest disk (1), got 1e+09");
+    EXPECT_STREQ(e.what(), "params.width: expected at most 1e+06 diameters of the smallest disk (1), got 1e+09");
   }
 }
 
@@ -772,7 +762,7 @@ TEST(Disks2dTapSource, PlacesAtTheLargestAllowedInitialFraction) {
   ASSERT_GT(largest, 0.0);
   for (const std::uint64_t seed : {1, 2, 3}) {
     for (const auto& [n, spread] : {std::pair{std::int64_t{2000}, 0.0}, {std::int64_t{500}, 0.5}}) {
-      const auto params = source_params(
+      const auto params = nlohmann::json(
           {{"N", n}, {"radius_spread", spread}, {"initial_fraction", largest},
            {"equilibration_taps", std::int64_t{0}}, {"production_taps", std::int64_t{1}},
            {"save_every", std::int64_t{1}}, {"A", 1.02}});
@@ -789,7 +779,7 @@ TEST(Disks2dTapSource, StartsFromAFrameOfASavedFile) {
   fs::create_directories(dir);
   // A polydisperse bed saved by one run...
   const auto saved = run_source(
-      source_params({{"N", std::int64_t{80}}, {"width", 9.0}, {"delta", 0.05}, {"radius_spread", 0.3},
+      nlohmann::json({{"N", std::int64_t{80}}, {"width", 9.0}, {"delta", 0.05}, {"radius_spread", 0.3},
                      {"equilibration_taps", std::int64_t{0}}, {"production_taps", std::int64_t{2}},
                      {"save_every", std::int64_t{1}}, {"A", 1.2}}),
       3);
@@ -800,11 +790,11 @@ TEST(Disks2dTapSource, StartsFromAFrameOfASavedFile) {
     w.close();
   }
   // ...is what a monodisperse run started from it taps: the file's radii, not its own.
-  const auto from_file = [&](std::map<std::string, granpipe::ParamValue> extra) {
-    extra.insert({{"initial_file", file.string()}, {"N", std::int64_t{80}}, {"width", 9.0},
-                  {"delta", 0.05}, {"equilibration_taps", std::int64_t{0}},
-                  {"production_taps", std::int64_t{1}}, {"save_every", std::int64_t{1}}});
-    return run_source(source_params(extra), 4);
+  const auto from_file = [&](const nlohmann::json& extra) {
+    nlohmann::json params{{"initial_file", file.string()}, {"N", 80}, {"width", 9.0}, {"delta", 0.05},
+                          {"equilibration_taps", 0}, {"production_taps", 1}, {"save_every", 1}};
+    params.update(extra);
+    return run_source(params, 4);
   };
   for (const std::int64_t frame : {std::int64_t{0}, std::int64_t{-1}}) {
     const auto frames = from_file({{"initial_frame", frame}});

@@ -7,6 +7,7 @@
 
 #include "granpipe/frame_store.hpp"
 #include "h5md_source.hpp"
+#include "plugin_harness.hpp"
 
 namespace fs = std::filesystem;
 using namespace granpipe;
@@ -21,8 +22,6 @@ class H5mdSourceTest : public ::testing::Test {
            ("granpipe_h5md_" + std::to_string(getpid()) + "_" + t->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
-    progress_.set_enabled(false);
-    log_.set_quiet(true);
   }
   void TearDown() override { fs::remove_all(dir_); }
 
@@ -46,15 +45,12 @@ class H5mdSourceTest : public ::testing::Test {
   std::unique_ptr<h5md::H5mdSource> source(const fs::path& file, std::int64_t first,
                                            std::int64_t last, std::int64_t stride,
                                            double max_overlap = 1e-6) {
-    params_ = Params({{"file", file.string()},
-                      {"first", first},
-                      {"last", last},
-                      {"stride", stride},
-                      {"group", std::string("")},
-                      {"radius", 0.5},
-                      {"max_overlap", max_overlap}});
-    return std::make_unique<h5md::H5mdSource>(
-        PluginContext{params_, Seeds{1}, 1, log_, progress_, {}, "", ""});
+    harness_ = granpipe::test::make_context("h5md", {{"file", file.string()},
+                                                     {"first", first},
+                                                     {"last", last},
+                                                     {"stride", stride},
+                                                     {"max_overlap", max_overlap}});
+    return std::make_unique<h5md::H5mdSource>(*harness_);
   }
 
   // Steps of every frame the source yields.
@@ -69,9 +65,7 @@ class H5mdSourceTest : public ::testing::Test {
   }
 
   fs::path dir_;
-  Params params_;
-  Log log_;
-  Progress progress_;
+  std::unique_ptr<granpipe::test::PluginHarness> harness_;  // outlives the source it made
 };
 
 using Steps = std::vector<std::int64_t>;
@@ -115,11 +109,11 @@ TEST_F(H5mdSourceTest, SelectionOutsideTheFileIsAnInputError) {
     }
     return std::string("(no InputError)");
   };
-  EXPECT_EQ(message(4, -1), "first: expected a frame index below 4, got 4 (" + p.string() +
+  EXPECT_EQ(message(4, -1), "params.first: expected a frame index below 4, got 4 (" + p.string() +
                                 " holds 4 frames)");
-  EXPECT_EQ(message(0, 4), "last: expected -1 or a frame index below 4, got 4 (" +
+  EXPECT_EQ(message(0, 4), "params.last: expected -1 or a frame index below 4, got 4 (" +
                                p.string() + " holds 4 frames)");
-  EXPECT_EQ(message(3, 2), "last: expected -1 or an index >= first (3), got 2");
+  EXPECT_EQ(message(3, 2), "params.last: expected -1 or an index >= first (3), got 2");
 }
 
 // A stride past the end reads the first frame only; one that would overflow the frame
@@ -131,7 +125,7 @@ TEST_F(H5mdSourceTest, StrideIsAtMostTheNumberOfFrames) {
     source(p, 1, -1, std::numeric_limits<std::int64_t>::max());
     FAIL() << "expected an InputError";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), "stride: expected at most the number of frames, got 9223372036854775807 (" +
+    EXPECT_EQ(std::string(e.what()), "params.stride: expected at most the number of frames, got 9223372036854775807 (" +
                                          p.string() + " holds 4 frames)");
   }
 }
@@ -178,7 +172,7 @@ TEST_F(H5mdSourceTest, OverlappingParticlesAreRefusedWithThePair) {
   const fs::path p = write_pair(dir_, 0.9);  // overlap 0.1 = 20% of the radius
   EXPECT_EQ(error_of([&] { return source(p, 0, -1, 1); }),
             p.string() + ": frame 0: particles 0 and 1 (ids 0, 1) overlap by 0.2 of the smaller "
-                         "radius, expected at most 1e-06 (raise max_overlap for soft-particle data)");
+                         "radius, expected at most 1e-06 (raise params.max_overlap for soft-particle data)");
   EXPECT_EQ(error_of([&] { return source(p, 0, -1, 1, 0.25); }), "(no InputError)");
 }
 

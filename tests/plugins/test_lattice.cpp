@@ -3,18 +3,17 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <map>
 #include <numbers>
 #include <string>
 
 #include "granpipe/errors.hpp"
 #include "granpipe/overlap.hpp"
 #include "lattice_source.hpp"
+#include "plugin_harness.hpp"
 
 namespace {
 
 using granpipe::Frame;
-using granpipe::ParamValue;
 using granpipe::lattice::LatticeSource;
 
 constexpr double kPi = std::numbers::pi;
@@ -39,18 +38,11 @@ const std::vector<Expected>& lattices() {
   return all;
 }
 
-// Builds the source with the schema's defaults and `set` on top, and returns its frames.
-std::vector<Frame> run(std::map<std::string, ParamValue> set, std::uint64_t seed = 1) {
-  const granpipe::Schema schema = granpipe::lattice::schema();
-  std::map<std::string, ParamValue> values;
-  for (const auto& spec : schema.specs()) values[spec.name] = *spec.default_value;
-  for (auto& [k, v] : set) values[k] = v;
-  const granpipe::Params params(values);
-  granpipe::Log log;
-  log.set_quiet(true);
-  granpipe::Progress progress;
-  const granpipe::PluginContext ctx{params, granpipe::Seeds(seed), 1, log, progress, {}, "", ""};
-  LatticeSource source(ctx);
+// Builds the source as a pipeline would, with `set` on the schema's defaults, and returns
+// its frames.
+std::vector<Frame> run(const nlohmann::json& set, std::uint64_t seed = 1) {
+  const auto ctx = granpipe::test::make_context(granpipe::lattice::schema(), set, seed);
+  LatticeSource source(*ctx);
   std::vector<Frame> frames;
   Frame f;
   while (source.next(f)) {
@@ -149,7 +141,7 @@ TEST(Lattice, TooManyParticlesAreRefusedBeforeAllocating) {
     run({{"lattice", std::string("fcc")}, {"cells", std::vector<std::int64_t>{100000, 100000, 100000}}});
     FAIL() << "expected an InputError";
   } catch (const granpipe::InputError& e) {
-    EXPECT_STREQ(e.what(), "cells: expected at most 1e+07 particles (4 per cell), got 4e+15");
+    EXPECT_STREQ(e.what(), "params.cells: expected at most 1e+07 particles (4 per cell), got 4e+15");
   }
   EXPECT_THROW(run({{"lattice", std::string("sc")}, {"cells", std::vector<std::int64_t>{216, 216, 216}}}),
                granpipe::InputError);
@@ -188,9 +180,7 @@ TEST(Lattice, JitteredFramesNeverOverlap) {
 }
 
 TEST(Lattice, SameSeedSameFramesOtherSeedOtherFrames) {
-  const std::map<std::string, ParamValue> p{{"lattice", std::string("hcp")},
-                                            {"jitter", 0.2},
-                                            {"frames", std::int64_t{2}}};
+  const nlohmann::json p{{"lattice", "hcp"}, {"jitter", 0.2}, {"frames", 2}};
   const auto a = run(p, 42), b = run(p, 42), c = run(p, 43);
   for (int k = 0; k < 2; ++k) {
     EXPECT_TRUE((a[k].position() == b[k].position()).all());

@@ -15,20 +15,18 @@
 #include "granpipe/contacts_by_distance.hpp"
 #include "granpipe/errors.hpp"
 #include "granpipe/overlap.hpp"
-#include "granpipe/plugin_loader.hpp"
 #include "packing_analyzer.hpp"
+#include "plugin_harness.hpp"
 #include "region.hpp"
 
 namespace {
 
 using granpipe::Frame;
 using granpipe::FrameCache;
-using granpipe::ParamValue;
 using granpipe::packing::measure_packing;
 using granpipe::packing::PackingMeasurement;
 using granpipe::packing::PackingSettings;
 using granpipe::packing::Region;
-using Values = std::map<std::string, ParamValue>;
 
 constexpr double kPi = std::numbers::pi;
 
@@ -50,36 +48,10 @@ const std::vector<Expected>& lattices() {
   return all;
 }
 
-granpipe::Params params_of(const granpipe::Schema& schema, const Values& set) {
-  Values values;
-  for (const auto& spec : schema.specs()) values[spec.name] = *spec.default_value;
-  for (const auto& [k, v] : set) values[k] = v;
-  return granpipe::Params(values);
-}
-
-struct Context {
-  granpipe::Log log;
-  granpipe::Progress progress;
-  Context() { log.set_quiet(true); }
-};
-
-const granpipe::Registry& registry() {
-  static const granpipe::Registry r = [] {
-    granpipe::Registry reg;
-    granpipe::load_plugins(reg, granpipe::plugin_search_path());
-    return reg;
-  }();
-  return r;
-}
-
-// Frames of the `lattice` source plugin with these parameters.
-std::vector<Frame> lattice(const Values& set, std::uint64_t seed = 3) {
-  const granpipe::PluginInfo* info = registry().find("lattice");
-  if (!info) throw std::runtime_error("the lattice plugin is not on GRANPIPE_PLUGIN_PATH");
-  const granpipe::Params params = params_of(info->schema, set);
-  Context c;
-  const granpipe::PluginContext ctx{params, granpipe::Seeds(seed), 1, c.log, c.progress, {}, "", ""};
-  auto source = info->make_source(ctx);
+// Frames of the installed `lattice` source plugin with these parameters.
+std::vector<Frame> lattice(const nlohmann::json& set, std::uint64_t seed = 3) {
+  const auto ctx = granpipe::test::make_context("lattice", set, seed);
+  auto source = granpipe::test::installed_plugins().find("lattice")->make_source(*ctx);
   std::vector<Frame> frames;
   Frame f;
   while (source->next(f)) {
@@ -89,7 +61,8 @@ std::vector<Frame> lattice(const Values& set, std::uint64_t seed = 3) {
   return frames;
 }
 
-Frame one(const std::string& name, const std::string& boundary = "periodic", Values more = {}) {
+Frame one(const std::string& name, const std::string& boundary = "periodic",
+          nlohmann::json more = nlohmann::json::object()) {
   more["lattice"] = name;
   more["boundary"] = boundary;
   return lattice(more).at(0);
@@ -375,11 +348,9 @@ TEST(Packing, AnalyzerAveragesFrames) {
                                {"boundary", std::string("walls")},
                                {"jitter", 0.2},
                                {"frames", std::int64_t{4}}});
-  const granpipe::Params params =
-      params_of(granpipe::packing::schema(), {{"exclude_bottom", 0.5}, {"profile_step", 0.25}});
-  Context c;
-  const granpipe::PluginContext ctx{params, granpipe::Seeds(1), 1, c.log, c.progress, {}, "", ""};
-  granpipe::packing::PackingAnalyzer analyzer(ctx);
+  const auto ctx = granpipe::test::make_context(granpipe::packing::schema(),
+                                                {{"exclude_bottom", 0.5}, {"profile_step", 0.25}});
+  granpipe::packing::PackingAnalyzer analyzer(*ctx);
   granpipe::RunningMean phi, z;
   PackingSettings s;
   s.exclude_bottom = 0.5;

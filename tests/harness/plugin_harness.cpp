@@ -1,0 +1,39 @@
+#include "plugin_harness.hpp"
+
+#include "granpipe/plugin_loader.hpp"
+#include "param_validation.hpp"
+
+namespace granpipe::test {
+
+PluginHarness::PluginHarness(const Schema& schema, nlohmann::json params, std::uint64_t seed,
+                             std::filesystem::path output_dir, std::string name) {
+  log_.set_quiet(true);
+  progress_.set_enabled(false);
+  params_ = validate_params(params, schema, JsonLocation{"test", "params"}, std::filesystem::current_path());
+  context_ = std::make_unique<PluginContext>(PluginContext{
+      params_, Seeds(seed), 1, log_, progress_, std::move(output_dir), std::move(name), "params"});
+}
+
+std::unique_ptr<PluginHarness> make_context(const Schema& schema, nlohmann::json params,
+                                            std::uint64_t seed, std::filesystem::path output_dir) {
+  return std::make_unique<PluginHarness>(schema, std::move(params), seed, std::move(output_dir),
+                                         "test");
+}
+
+const Registry& installed_plugins() {
+  static const Registry registry = [] {
+    Registry r;
+    load_plugins(r, plugin_search_path());
+    return r;
+  }();
+  return registry;
+}
+
+std::unique_ptr<PluginHarness> make_context(const std::string& plugin, nlohmann::json params,
+                                            std::uint64_t seed, std::filesystem::path output_dir) {
+  const PluginInfo& info = require_plugin(installed_plugins(), plugin, std::nullopt, "test");
+  return std::make_unique<PluginHarness>(info.schema, std::move(params), seed,
+                                         std::move(output_dir), plugin);
+}
+
+}  // namespace granpipe::test

@@ -1,0 +1,50 @@
+#pragma once
+// What a pipeline gives a plugin, for plugin tests: the parameters validated through the
+// plugin's schema exactly as a pipeline validates them (defaults filled in, a bad value
+// refused with the pipeline's message), its seeds, one thread, a quiet log and no progress
+// bar. Tests then make the plugin from the context, or have the harness make it.
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "granpipe/plugin.hpp"
+
+namespace granpipe::test {
+
+class PluginHarness {
+ public:
+  // `params` as a pipeline file gives them, e.g. {{"cells", {3, 3, 3}}}; an InputError as
+  // the pipeline would report it ("test: params.cells: expected ...").
+  // `name` is the instance's name (the files it writes start with it).
+  PluginHarness(const Schema& schema, nlohmann::json params, std::uint64_t seed,
+                std::filesystem::path output_dir, std::string name);
+  PluginHarness(const PluginHarness&) = delete;
+  PluginHarness& operator=(const PluginHarness&) = delete;
+
+  const PluginContext& context() const { return *context_; }
+  operator const PluginContext&() const { return *context_; }  // NOLINT: a context is what it is for
+  const Params& params() const { return params_; }
+  Log& log() { return log_; }
+
+ private:
+  Log log_;
+  Progress progress_;
+  Params params_;
+  std::unique_ptr<PluginContext> context_;
+};
+
+// The context of a plugin with this schema.
+std::unique_ptr<PluginHarness> make_context(const Schema& schema, nlohmann::json params = {},
+                                            std::uint64_t seed = 1,
+                                            std::filesystem::path output_dir = {});
+// The context of the installed plugin `plugin`, named after it (found on GRANPIPE_PLUGIN_PATH by the real
+// loader, whose registry stays loaded for the test program).
+std::unique_ptr<PluginHarness> make_context(const std::string& plugin, nlohmann::json params = {},
+                                            std::uint64_t seed = 1,
+                                            std::filesystem::path output_dir = {});
+// The installed plugins, loaded once.
+const Registry& installed_plugins();
+
+}  // namespace granpipe::test
