@@ -32,6 +32,19 @@ hsize_t rows_of(const h5::Shape& shape, const h5::Shape& item, const std::string
   return shape[0];
 }
 
+// A SWMR reader re-reads metadata whose checksum fails (a live writer may be half-way
+// through flushing it), sleeping between attempts for twice as long each time, from 1 ns.
+// HDF5's default of 100 attempts makes a file with one damaged checksum hang for good;
+// 20 attempts wait about a millisecond in all.
+constexpr unsigned kSwmrReadAttempts = 20;
+
+h5::Object swmr_read_access() {
+  h5::Object fapl = h5::owned(H5Pcreate(H5P_FILE_ACCESS), "cannot make the file access list");
+  h5::check(H5Pset_metadata_read_attempts(fapl.id(), kSwmrReadAttempts),
+            "cannot set the metadata read attempts");
+  return fapl;
+}
+
 // Opens normally, else as a SWMR reader: a file whose writer was killed (or is still
 // running) refuses a normal open but reads back every frame it flushed.
 h5::Object open_file(const std::string& name, bool& swmr) {
@@ -48,7 +61,8 @@ h5::Object open_file(const std::string& name, bool& swmr) {
   hid_t id = H5Fopen(name.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   if (id < 0) {
     swmr = true;
-    id = H5Fopen(name.c_str(), H5F_ACC_RDONLY | H5F_ACC_SWMR_READ, H5P_DEFAULT);
+    const h5::Object fapl = swmr_read_access();
+    id = H5Fopen(name.c_str(), H5F_ACC_RDONLY | H5F_ACC_SWMR_READ, fapl.id());
   }
   if (id < 0) throw InputError(name + ": not a readable HDF5 file (truncated or corrupt)");
   return h5::Object(id);
