@@ -296,7 +296,7 @@ void FrameReader::Impl::open_box(const std::string& base) {
 }
 
 hsize_t FrameReader::Impl::rows(const std::string& path, const h5::Shape& item, h5::Object& out) {
-  out = h5::open_dataset(file.id(), path);
+  out = h5::open_stored_dataset(file.id(), path);
   return rows_of(h5::shape_of(out.id(), path), item, path);
 }
 
@@ -329,7 +329,7 @@ hsize_t FrameReader::Impl::open_contacts(hsize_t& frames) {
   for (const std::string& column : h5::members(group.id(), L::kContacts)) {
     if (column == "offset" || column == "count") continue;
     ContactColumn c{{}, L::kContacts + "/" + column, {}};
-    c.dataset = h5::open_dataset(file.id(), c.path);
+    c.dataset = h5::open_stored_dataset(file.id(), c.path);
     const h5::Shape shape = h5::shape_of(c.dataset.id(), c.path);
     const h5::Shape item = shape.empty() ? shape : h5::Shape(shape.begin() + 1, shape.end());
     c.property = h5::read_property(c.dataset.id(), c.path, column, Scope::Contact, item, info.dim);
@@ -367,14 +367,20 @@ void FrameReader::Impl::settle_frames() {
   const bool contacts = h5::is_group(file.id(), L::kContacts);
   const hsize_t contact_rows = contacts ? open_contacts(frames) : 0;
   while (frames > 0 && steps[frames - 1] == L::kUnwrittenStep) --frames;
-  while (contacts && frames > 0 &&
-         contact_offset[frames - 1] + contact_count[frames - 1] >
-             static_cast<std::int64_t>(contact_rows)) {
-    if (info.complete) {
-      throw h5::Error(L::kContacts + ": frame " + std::to_string(frames - 1) +
-                      " points past the end of the contact arrays (damaged file)");
-    }
-    --frames;
+  // A killed writer may not have written its last frames' contacts; anywhere else, contacts
+  // outside the arrays are damage (and a count to allocate from).
+  auto within = [&](hsize_t k) {
+    const std::int64_t offset = contact_offset[k], count = contact_count[k];
+    const auto rows = static_cast<std::int64_t>(contact_rows);
+    return offset >= 0 && count >= 0 && count <= rows && offset <= rows - count;
+  };
+  while (contacts && !info.complete && frames > 0 && !within(frames - 1)) --frames;
+  for (hsize_t k = 0; contacts && k < frames; ++k) {
+    if (within(k)) continue;
+    throw h5::Error(L::kContacts + ": frame " + std::to_string(k) + ": expected rows within the " +
+                    std::to_string(contact_rows) + " contact rows, got offset " +
+                    std::to_string(contact_offset[k]) + " and count " +
+                    std::to_string(contact_count[k]) + " (damaged file)");
   }
   info.frames = static_cast<long>(frames);
   info.has_contacts = contacts;
