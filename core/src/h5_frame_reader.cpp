@@ -441,7 +441,10 @@ void FrameReader::Impl::open(const std::string& group) {
 // boxes, [-L/2, L/2], whichever holds every particle centre. Anything else is refused
 // rather than measured against walls in the wrong place.
 namespace {
-void place_walls(Container& c, int a, const Frame& f, const std::string& dataset, long k) {
+void place_walls(Container& c, int a, const Frame& f, const std::string& file,
+                 const std::string& dataset, long k) {
+  // The frame check names the particle, where min and max of a NaN depend on its place.
+  if (!f.position().col(a).allFinite()) f.check(file + ": frame " + std::to_string(k));
   const double lo = f.position().col(a).minCoeff(), hi = f.position().col(a).maxCoeff();
   const double length = c.hi[a];
   for (double origin : {0.0, -0.5 * length}) {
@@ -452,7 +455,7 @@ void place_walls(Container& c, int a, const Frame& f, const std::string& dataset
     }
   }
   throw h5::Error(dataset + ": frame " + std::to_string(k) + ": expected particle centres inside a box of edge " +
-                  std::to_string(length) + " along axis " + std::to_string(a) + " (at [0, L] or [-L/2, L/2]), got " +
+                  std::to_string(length) + " along " + "xyz"[a] + " (at [0, L] or [-L/2, L/2]), got " +
                   std::to_string(lo) + " to " + std::to_string(hi));
 }
 }  // namespace
@@ -488,7 +491,7 @@ Container FrameReader::Impl::box_container(long k, const Frame& f) const {
     }
     const Boundary b = periodic[a] ? Boundary::Periodic : Boundary::Wall;
     c.boundary[a] = {b, b};
-    if (!periodic[a] && f.size() > 0) place_walls(c, a, f, edges->path(), k);
+    if (!periodic[a] && f.size() > 0) place_walls(c, a, f, name, edges->path(), k);
   }
   return c;
 }
