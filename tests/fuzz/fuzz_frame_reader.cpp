@@ -32,6 +32,12 @@ void read_checked(const granpipe::FrameReader& reader, long k) {
 
 }  // namespace
 
+// As in a normal build, an absurd allocation fails instead of stopping the process: HDF5
+// meets the sizes of a damaged file with a failed malloc and an error, which granpipe turns
+// into an InputError; an allocation of granpipe's own throws std::bad_alloc, a finding.
+// HDF5 1.10 leaks a few bytes on some damaged object headers: not granpipe's to find.
+extern "C" const char* __asan_default_options() { return "allocator_may_return_null=1:detect_leaks=0"; }
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   {
     std::ofstream out(input_file(), std::ios::binary | std::ios::trunc);
