@@ -24,6 +24,14 @@ std::string check_threads(const std::string& text) {
   return "expected an integer in [1, " + std::to_string(kMaxThreads) + "], got \"" + text + "\"";
 }
 
+// --rows N: a negative count listed no frame and said that all of them were more.
+std::string check_rows(const std::string& text) {
+  long n = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), n);
+  if (error == std::errc{} && end == text.data() + text.size() && n >= 0) return "";
+  return "expected an integer >= 0, got \"" + text + "\"";
+}
+
 // A message is one line whatever the input put in it (a key or a plugin name with a
 // newline): control characters are written as escapes.
 std::string one_line(const std::string& message) {
@@ -88,7 +96,7 @@ int main(int argc, char** argv) {
   std::string h5_file;
   long rows = 20;
   inspect->add_option("file", h5_file, "H5MD file")->required();
-  inspect->add_option("--rows", rows, "frames to list");
+  inspect->add_option("--rows", rows, "frames to list (default 20)")->check(CLI::Validator(check_rows, ""));
 
   try {
     app.parse(static_cast<int>(args.size()), args.data());

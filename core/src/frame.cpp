@@ -70,7 +70,7 @@ void check_particles(const Frame& f, const std::string& where) {
       if (!std::isfinite(x(k, a))) {
         std::ostringstream s;
         s << where << ": " << describe_particle(f, k) << ": expected a finite position, got "
-          << x(k, a) << " in coordinate " << a;
+          << x(k, a) << " in coordinate " << "xyz"[a];
         throw InputError(s.str());
       }
     }

@@ -1,6 +1,7 @@
 #include "h5_dataset.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
 #include <sstream>
 
@@ -60,6 +61,61 @@ Object open_group(hid_t loc, const std::string& path) {
 
 Object open_dataset(hid_t loc, const std::string& path) {
   return owned(H5Dopen2(loc, path.c_str(), H5P_DEFAULT), path + ": cannot open the dataset");
+}
+
+Object open_stored_dataset(hid_t loc, const std::string& path) {
+  Object dataset = open_dataset(loc, path);
+  check_stored(dataset.id(), path);
+  return dataset;
+}
+
+namespace {
+// What a reader may find beyond the stored data: a killed writer's extended but unwritten
+// last frame, a small dataset never written (HDF5 allocates storage on the first write).
+constexpr double kUnstoredAllowance = 16.0 * 1024 * 1024;
+constexpr double kUnfilteredRatio = 2.0, kFilteredRatio = 1032.0;
+
+std::string count_text(double n) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", n);
+  return buf;
+}
+
+// Bytes of the dataset in the file, at most the file's size (a crafted chunk index or
+// contiguous extent may claim more).
+double stored_bytes(hid_t dataset, const std::string& path) {
+  Object file = owned(H5Iget_file_id(dataset), path + ": cannot find the file");
+  hsize_t file_size = 0;
+  check(H5Fget_filesize(file.id(), &file_size), path + ": cannot read the file size");
+  return static_cast<double>(std::min<hsize_t>(H5Dget_storage_size(dataset), file_size));
+}
+
+bool filtered(hid_t dataset, const std::string& path) {
+  Object dcpl = owned(H5Dget_create_plist(dataset), path + ": cannot read the storage layout");
+  return H5Pget_nfilters(dcpl.id()) > 0;
+}
+}  // namespace
+
+void check_stored(hid_t dataset, const std::string& path) {
+  const Shape shape = shape_of(dataset, path);
+  Object type = owned(H5Dget_type(dataset), path + ": cannot read the data type");
+  double bytes = static_cast<double>(H5Tget_size(type.id()));
+  for (hsize_t n : shape) bytes *= static_cast<double>(n);
+  const double rows = shape.empty() ? 1.0 : static_cast<double>(shape[0]);
+  const double stored = stored_bytes(dataset, path);
+  const double ratio = filtered(dataset, path) ? kFilteredRatio : kUnfilteredRatio;
+  const double allowed = kUnstoredAllowance + ratio * stored;
+  const std::string found = " for the " + count_text(stored) + " bytes stored in the file, got shape " +
+                            format_shape(shape);
+  if (bytes > allowed) {
+    throw Error(path + ": expected at most " + count_text(allowed) + " bytes of data" + found + " (" +
+                count_text(bytes) + " bytes; damaged or crafted file)");
+  }
+  // Rows of an empty item take no bytes, but a reader keeps a step and a time for each.
+  if (rows > allowed) {
+    throw Error(path + ": expected at most " + count_text(allowed) + " rows" + found +
+                " (damaged or crafted file)");
+  }
 }
 
 Object create_group(hid_t loc, const std::string& path) {

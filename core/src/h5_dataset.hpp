@@ -25,6 +25,14 @@ std::vector<std::string> members(hid_t group, const std::string& path);
 
 Object open_group(hid_t loc, const std::string& path);
 Object open_dataset(hid_t loc, const std::string& path);
+// A dataset to read from a file that may be damaged or crafted: refused when its shape
+// declares far more data than the file stores (see check_stored).
+Object open_stored_dataset(hid_t loc, const std::string& path);
+// HDF5 reads what a file never stored as the fill value, so an 8 KB file may declare
+// gigabytes, which a reader would allocate before reading. Refuses a dataset whose
+// declared bytes (or rows) exceed 16 MB beyond twice what it stores, or 1032 times (the
+// most deflate compresses) when it is filtered, counting no more than the file's size.
+void check_stored(hid_t dataset, const std::string& path);
 Object create_group(hid_t loc, const std::string& path);  // with any missing parents
 Shape shape_of(hid_t dataset, const std::string& path);
 

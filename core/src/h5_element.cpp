@@ -13,7 +13,7 @@ template <class T>
 std::vector<T> read_clock(hid_t file, const std::string& path, hsize_t samples) {
   constexpr bool integer = std::is_integral_v<T>;
   const hid_t mem_type = integer ? H5T_NATIVE_INT64 : H5T_NATIVE_DOUBLE;
-  Object ds = open_dataset(file, path);
+  Object ds = open_stored_dataset(file, path);
   const Shape shape = shape_of(ds.id(), path);
   std::vector<T> out;
   if (shape.size() == 1) {
@@ -51,7 +51,7 @@ std::optional<Element> Element::open(hid_t file, const std::string& path) {
   Element e;
   if (is_dataset(file, path)) {
     e.data_path_ = path;
-    e.value_ = open_dataset(file, path);
+    e.value_ = open_stored_dataset(file, path);
     e.shape_ = shape_of(e.value_.id(), path);
     return e;
   }
@@ -60,7 +60,7 @@ std::optional<Element> Element::open(hid_t file, const std::string& path) {
   if (!is_dataset(file, e.data_path_)) {
     throw Error(e.data_path_ + ": missing (a time-dependent H5MD element holds step and value)");
   }
-  e.value_ = open_dataset(file, e.data_path_);
+  e.value_ = open_stored_dataset(file, e.data_path_);
   e.shape_ = shape_of(e.value_.id(), e.data_path_);
   if (e.shape_.empty()) throw Error(e.data_path_ + ": expected an array over time, got a scalar");
   e.timed_ = true;

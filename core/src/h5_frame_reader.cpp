@@ -32,6 +32,19 @@ hsize_t rows_of(const h5::Shape& shape, const h5::Shape& item, const std::string
   return shape[0];
 }
 
+// A SWMR reader re-reads metadata whose checksum fails (a live writer may be half-way
+// through flushing it), sleeping between attempts for twice as long each time, from 1 ns.
+// HDF5's default of 100 attempts makes a file with one damaged checksum hang for good;
+// 20 attempts wait about a millisecond in all.
+constexpr unsigned kSwmrReadAttempts = 20;
+
+h5::Object swmr_read_access() {
+  h5::Object fapl = h5::owned(H5Pcreate(H5P_FILE_ACCESS), "cannot make the file access list");
+  h5::check(H5Pset_metadata_read_attempts(fapl.id(), kSwmrReadAttempts),
+            "cannot set the metadata read attempts");
+  return fapl;
+}
+
 // Opens normally, else as a SWMR reader: a file whose writer was killed (or is still
 // running) refuses a normal open but reads back every frame it flushed.
 h5::Object open_file(const std::string& name, bool& swmr) {
@@ -48,7 +61,8 @@ h5::Object open_file(const std::string& name, bool& swmr) {
   hid_t id = H5Fopen(name.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   if (id < 0) {
     swmr = true;
-    id = H5Fopen(name.c_str(), H5F_ACC_RDONLY | H5F_ACC_SWMR_READ, H5P_DEFAULT);
+    const h5::Object fapl = swmr_read_access();
+    id = H5Fopen(name.c_str(), H5F_ACC_RDONLY | H5F_ACC_SWMR_READ, fapl.id());
   }
   if (id < 0) throw InputError(name + ": not a readable HDF5 file (truncated or corrupt)");
   return h5::Object(id);
@@ -282,7 +296,7 @@ void FrameReader::Impl::open_box(const std::string& base) {
 }
 
 hsize_t FrameReader::Impl::rows(const std::string& path, const h5::Shape& item, h5::Object& out) {
-  out = h5::open_dataset(file.id(), path);
+  out = h5::open_stored_dataset(file.id(), path);
   return rows_of(h5::shape_of(out.id(), path), item, path);
 }
 
@@ -315,7 +329,7 @@ hsize_t FrameReader::Impl::open_contacts(hsize_t& frames) {
   for (const std::string& column : h5::members(group.id(), L::kContacts)) {
     if (column == "offset" || column == "count") continue;
     ContactColumn c{{}, L::kContacts + "/" + column, {}};
-    c.dataset = h5::open_dataset(file.id(), c.path);
+    c.dataset = h5::open_stored_dataset(file.id(), c.path);
     const h5::Shape shape = h5::shape_of(c.dataset.id(), c.path);
     const h5::Shape item = shape.empty() ? shape : h5::Shape(shape.begin() + 1, shape.end());
     c.property = h5::read_property(c.dataset.id(), c.path, column, Scope::Contact, item, info.dim);
@@ -353,14 +367,20 @@ void FrameReader::Impl::settle_frames() {
   const bool contacts = h5::is_group(file.id(), L::kContacts);
   const hsize_t contact_rows = contacts ? open_contacts(frames) : 0;
   while (frames > 0 && steps[frames - 1] == L::kUnwrittenStep) --frames;
-  while (contacts && frames > 0 &&
-         contact_offset[frames - 1] + contact_count[frames - 1] >
-             static_cast<std::int64_t>(contact_rows)) {
-    if (info.complete) {
-      throw h5::Error(L::kContacts + ": frame " + std::to_string(frames - 1) +
-                      " points past the end of the contact arrays (damaged file)");
-    }
-    --frames;
+  // A killed writer may not have written its last frames' contacts; anywhere else, contacts
+  // outside the arrays are damage (and a count to allocate from).
+  auto within = [&](hsize_t k) {
+    const std::int64_t offset = contact_offset[k], count = contact_count[k];
+    const auto rows = static_cast<std::int64_t>(contact_rows);
+    return offset >= 0 && count >= 0 && count <= rows && offset <= rows - count;
+  };
+  while (contacts && !info.complete && frames > 0 && !within(frames - 1)) --frames;
+  for (hsize_t k = 0; contacts && k < frames; ++k) {
+    if (within(k)) continue;
+    throw h5::Error(L::kContacts + ": frame " + std::to_string(k) + ": expected rows within the " +
+                    std::to_string(contact_rows) + " contact rows, got offset " +
+                    std::to_string(contact_offset[k]) + " and count " +
+                    std::to_string(contact_count[k]) + " (damaged file)");
   }
   info.frames = static_cast<long>(frames);
   info.has_contacts = contacts;
@@ -421,7 +441,10 @@ void FrameReader::Impl::open(const std::string& group) {
 // boxes, [-L/2, L/2], whichever holds every particle centre. Anything else is refused
 // rather than measured against walls in the wrong place.
 namespace {
-void place_walls(Container& c, int a, const Frame& f, const std::string& dataset, long k) {
+void place_walls(Container& c, int a, const Frame& f, const std::string& file,
+                 const std::string& dataset, long k) {
+  // The frame check names the particle, where min and max of a NaN depend on its place.
+  if (!f.position().col(a).allFinite()) f.check(file + ": frame " + std::to_string(k));
   const double lo = f.position().col(a).minCoeff(), hi = f.position().col(a).maxCoeff();
   const double length = c.hi[a];
   for (double origin : {0.0, -0.5 * length}) {
@@ -432,7 +455,7 @@ void place_walls(Container& c, int a, const Frame& f, const std::string& dataset
     }
   }
   throw h5::Error(dataset + ": frame " + std::to_string(k) + ": expected particle centres inside a box of edge " +
-                  std::to_string(length) + " along axis " + std::to_string(a) + " (at [0, L] or [-L/2, L/2]), got " +
+                  std::to_string(length) + " along " + "xyz"[a] + " (at [0, L] or [-L/2, L/2]), got " +
                   std::to_string(lo) + " to " + std::to_string(hi));
 }
 }  // namespace
@@ -468,7 +491,7 @@ Container FrameReader::Impl::box_container(long k, const Frame& f) const {
     }
     const Boundary b = periodic[a] ? Boundary::Periodic : Boundary::Wall;
     c.boundary[a] = {b, b};
-    if (!periodic[a] && f.size() > 0) place_walls(c, a, f, edges->path(), k);
+    if (!periodic[a] && f.size() > 0) place_walls(c, a, f, name, edges->path(), k);
   }
   return c;
 }

@@ -1,5 +1,6 @@
 // Reading a pipeline: JSON parsing with line/column errors, --set overrides, the
 // top-level schema, the plugins' parameter schemas, and sweep expansion.
+#include <cstdio>
 #include <fstream>
 #include <set>
 
@@ -25,8 +26,19 @@ std::string set_origin(const std::string& assignment) {
   return "--set " + (assignment.size() > 80 ? assignment.substr(0, 77) + "..." : assignment);
 }
 
+// A --set goes into the pipeline's JSON, whose keys and strings are UTF-8.
+void check_utf8(const std::string& assignment) {
+  const std::size_t bad = first_invalid_utf8(assignment);
+  if (bad == std::string::npos) return;
+  char byte[8];
+  std::snprintf(byte, sizeof byte, "0x%02x", static_cast<unsigned char>(assignment[bad]));
+  throw InputError(set_origin(assignment.substr(0, bad)) + "...: expected UTF-8 text, got the byte " +
+                   byte + " next");
+}
+
 // Applies `--set path=value` and says where the value came from.
 Override apply_set(json& root, const std::string& assignment) {
+  check_utf8(assignment);
   const auto eq = assignment.find('=');
   const std::string where = set_origin(assignment);
   if (eq == std::string::npos) throw InputError(where + ": expected path=value, got no '='");

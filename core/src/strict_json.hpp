@@ -18,6 +18,10 @@ inline constexpr std::size_t kMaxJsonDepth = 64;
 nlohmann::json parse_strict_json(const std::string& text, const std::string& origin,
                                  std::size_t outer_depth = 0);
 
+// The offset of the first byte of `text` that is not well-formed UTF-8, or npos. JSON
+// strings are UTF-8: a string holding anything else throws when it is written out.
+std::size_t first_invalid_utf8(const std::string& text);
+
 // Like parse_strict_json, but text that is not JSON at all gives nothing.
 std::optional<nlohmann::json> parse_strict_json_if_json(const std::string& text, const std::string& origin,
                                                         std::size_t outer_depth = 0);

@@ -1,5 +1,6 @@
-"""Writes two small H5MD files the way another tool would (h5py, no granpipe group):
-one with two overlapping particles, one with a NaN position."""
+"""Writes small H5MD files the way another tool would (h5py, no granpipe group): one
+with two overlapping particles, two with a NaN position (in the first particle, the one
+minimum and maximum meet first, and in another)."""
 import sys
 
 import h5py
@@ -28,3 +29,4 @@ def write(path, positions):
 out = sys.argv[1]
 write(f"{out}/overlapping.h5", [[2.0, 2.0, 2.0], [2.5, 2.0, 2.0], [6.0, 6.0, 6.0]])
 write(f"{out}/nan.h5", [[2.0, 2.0, 2.0], [float("nan"), 5.0, 5.0]])
+write(f"{out}/nan_first.h5", [[float("nan"), 2.0, 2.0], [5.0, 5.0, 5.0]])

@@ -428,8 +428,36 @@ TEST_F(FrameStore, WallsOfAnotherToolsCentredBoxHoldItsParticles) {
   } catch (const InputError& e) {
     EXPECT_STREQ(e.what(), (outside.string() +
                             ": /particles/atoms/box/edges: frame 0: expected particle centres inside a box of "
-                            "edge 6.000000 along axis 2 (at [0, L] or [-L/2, L/2]), got -6.500000 to -5.750000")
+                            "edge 6.000000 along z (at [0, L] or [-L/2, L/2]), got -6.500000 to -5.750000")
                                .c_str());
+  }
+}
+
+// Walls are placed from the particle centres: a NaN among them is reported by the frame
+// check, on its own axis, not as a box of range nan to nan (or on another axis).
+TEST_F(FrameStore, NanPositionInAWalledBoxIsNamedByTheFrameCheck) {
+  const double nan = std::nan("");
+  for (const auto& [particle, axis] : {std::pair{0, 0}, {1, 0}, {0, 1}, {1, 2}}) {
+    const fs::path p = file("nan_" + std::to_string(particle) + std::to_string(axis) + ".h5");
+    {
+      Id f(H5Fcreate(p.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT));
+      Id particles(make_group(f, "particles"));
+      Id all(make_group(particles, "all"));
+      Id box(make_group(all, "box"));
+      put_string_attribute(box, "boundary", {"none", "none", "none"});
+      const double edges[3] = {10.0, 10.0, 10.0};
+      put_dataset(box, "edges", H5T_NATIVE_DOUBLE, {3}, edges);
+      Id position(make_group(all, "position"));
+      double x[1][2][3] = {{{2.0, 2.0, 2.0}, {5.0, 5.0, 5.0}}};
+      x[0][particle][axis] = nan;
+      put_dataset(position, "value", H5T_NATIVE_DOUBLE, {1, 2, 3}, x);
+      const std::int64_t step = 0;
+      put_dataset(position, "step", H5T_NATIVE_INT64, {1}, &step);
+    }
+    EXPECT_EQ(message_of([&] { FrameReader(p).read(0); }),
+              p.string() + ": frame 0: particle " + std::to_string(particle) + " (id " +
+                  std::to_string(particle) + "): expected a finite position, got nan in coordinate " +
+                  "xyz"[axis]);
   }
 }
 
@@ -584,6 +612,96 @@ TEST_F(FrameStore, TruncatedFileIsAnInputError) {
   fs::resize_file(cut, fs::file_size(good) / 2);
   const std::string msg = message_of([&] { FrameReader r(cut); });
   EXPECT_EQ(msg, cut.string() + ": not a readable HDF5 file (truncated or corrupt)");
+}
+
+// A chunked dataset of `dims`, of which only `written` leading elements are written
+// (zeros); `deflate` compresses it.
+void put_chunked(hid_t loc, const char* name, std::vector<hsize_t> dims, std::vector<hsize_t> chunk,
+                 hsize_t written, bool deflate = false) {
+  Id space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr));
+  Id dcpl(H5Pcreate(H5P_DATASET_CREATE));
+  H5Pset_chunk(dcpl, static_cast<int>(chunk.size()), chunk.data());
+  if (deflate) H5Pset_deflate(dcpl, 9);
+  Id ds(H5Dcreate2(loc, name, H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, dcpl, H5P_DEFAULT));
+  if (written == 0) return;
+  const std::vector<double> zeros(written, 0.0);
+  Id memory(H5Screate_simple(1, &written, nullptr));
+  H5Dwrite(ds, H5T_NATIVE_DOUBLE, memory, H5S_ALL, H5P_DEFAULT, zeros.data());
+}
+
+// An H5MD file of one particles group without a box whose positions `position` makes.
+template <class F>
+void write_positions(const fs::path& p, F position) {
+  Id f(H5Fcreate(p.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT));
+  Id particles(make_group(f, "particles"));
+  Id all(make_group(particles, "all"));
+  Id box(make_group(all, "box"));
+  put_string_attribute(box, "boundary", {"none", "none", "none"});
+  Id group(make_group(all, "position"));
+  const std::int64_t step = 1;
+  put_dataset(group, "step", H5T_NATIVE_INT64, {}, &step);
+  position(group);
+}
+
+// HDF5 reads what was never written as the fill value: an 8 KB file declaring 5e7
+// particles took gigabytes before it was found to hold none.
+TEST_F(FrameStore, DeclaredDataTheFileDoesNotStoreIsRefusedBeforeReading) {
+  const fs::path p = file("unstored.h5");
+  write_positions(p, [](hid_t g) { put_chunked(g, "value", {1, 50000000, 3}, {1, 100000, 3}, 0); });
+  ASSERT_LT(fs::file_size(p), 10000u);
+  EXPECT_EQ(message_of([&] { FrameReader r(p); }),
+            p.string() + ": /particles/all/position/value: expected at most 1.68e+07 bytes of data for "
+                         "the 0 bytes stored in the file, got shape [1, 50000000, 3] (1.2e+09 bytes; "
+                         "damaged or crafted file)");
+}
+
+// Rows of zero particles take no bytes, but a fixed clock would be a step per row.
+TEST_F(FrameStore, DeclaredRowsTheFileDoesNotStoreAreRefused) {
+  const fs::path p = file("unstored_rows.h5");
+  write_positions(p, [](hid_t g) { put_chunked(g, "value", {1000000000000, 0, 3}, {1000, 1, 3}, 0); });
+  EXPECT_EQ(message_of([&] { FrameReader r(p); }),
+            p.string() + ": /particles/all/position/value: expected at most 1.68e+07 rows for the 0 bytes "
+                         "stored in the file, got shape [1000000000000, 0, 3] (damaged or crafted file)");
+}
+
+// 24 MB of zeros deflate to a few kilobytes, and are data the file does hold.
+TEST_F(FrameStore, CompressedDataIsStoredData) {
+  const fs::path p = file("deflated.h5");
+  write_positions(p, [](hid_t g) {
+    put_chunked(g, "value", {1, 1000000, 3}, {1, 100000, 3}, 3000000, true);
+  });
+  ASSERT_LT(fs::file_size(p), 1000000u);
+  FrameReader r(p);
+  EXPECT_EQ(r.info().particles, 1000000);
+}
+
+// Overwrites row `row` of a 1-D integer dataset.
+void put_row(hid_t file, const std::string& path, hsize_t row, std::int64_t value) {
+  Id ds(H5Dopen2(file, path.c_str(), H5P_DEFAULT));
+  Id space(H5Dget_space(ds));
+  const hsize_t one = 1;
+  H5Sselect_hyperslab(space, H5S_SELECT_SET, &row, nullptr, &one, nullptr);
+  Id memory(H5Screate_simple(1, &one, nullptr));
+  ASSERT_GE(H5Dwrite(ds, H5T_NATIVE_INT64, memory, space, H5P_DEFAULT, &value), 0) << path;
+}
+
+// A frame's contact count is what the reader allocates: checked against the arrays first.
+TEST_F(FrameStore, ContactsOutsideTheContactArraysAreRefused) {
+  const fs::path good = write("contacts.h5", 3, 3, 5);  // 1, 6 and 0 contacts: 7 rows
+  for (const auto& [offset, count] : {std::pair<std::int64_t, std::int64_t>{1, 1LL << 62},
+                                      {1, -1}, {-6, 6}, {1LL << 62, 1LL << 62}}) {
+    const fs::path p = file("bad_contacts.h5");
+    fs::copy_file(good, p, fs::copy_options::overwrite_existing);
+    {
+      Id f(H5Fopen(p.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
+      put_row(f, "/granpipe/contacts/offset", 1, offset);
+      put_row(f, "/granpipe/contacts/count", 1, count);
+    }
+    EXPECT_EQ(message_of([&] { FrameReader r(p); }),
+              p.string() + ": /granpipe/contacts: frame 1: expected rows within the 7 contact rows, "
+                           "got offset " + std::to_string(offset) + " and count " + std::to_string(count) +
+                           " (damaged file)");
+  }
 }
 
 // ---- Crash safety ----

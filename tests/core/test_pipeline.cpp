@@ -249,6 +249,18 @@ TEST(PipelineErrors, SetListIndexBeyond64BitsIsNoEntry) {
             "--set analyzers[1].params.scale=1: expected an existing list entry [1], got none");
 }
 
+// Found by fuzz_pipeline: a bare-word --set value that is not UTF-8 became a JSON string
+// that threw when written out (exit 1, "internal error").
+TEST(PipelineErrors, SetThatIsNotUtf8IsRefused) {
+  EXPECT_EQ(error_of(kGood, {"name=ab\x98\x98n"}), "--set name=ab...: expected UTF-8 text, got the byte 0x98 next");
+  EXPECT_EQ(error_of(kGood, {"source.params.\xc3=1"}),
+            "--set source.params....: expected UTF-8 text, got the byte 0xc3 next");
+  // Overlong forms and surrogates are not UTF-8 either; the rest of Unicode is.
+  EXPECT_EQ(error_of(kGood, {"name=\xc0\xaf"}), "--set name=...: expected UTF-8 text, got the byte 0xc0 next");
+  EXPECT_EQ(error_of(kGood, {"name=\xed\xa0\x80"}), "--set name=...: expected UTF-8 text, got the byte 0xed next");
+  EXPECT_EQ(error_of(kGood, {"description=caf\xc3\xa9 \xe2\x82\xac \xf0\x9f\x8e\xb2"}), "no error");
+}
+
 TEST(PipelineErrors, SweepValueOutOfRangeNamesThePoint) {
   const std::string e = error_of(
       R"({"source": {"plugin": "random"}, "sweep": {"parameters": {"source.params.n": [5, 5000]}}})");

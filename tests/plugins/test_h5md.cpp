@@ -210,5 +210,5 @@ TEST_F(H5mdSourceTest, AnInfiniteBoxIsRefusedWithFileAndFrame) {
 TEST_F(H5mdSourceTest, NanPositionsAreRefusedWithFileAndFrame) {
   const fs::path p = write_pair(dir_, std::nan(""));
   EXPECT_EQ(error_of([&] { return source(p, 0, -1, 1); }),
-            p.string() + ": frame 0: particle 1 (id 1): expected a finite position, got nan in coordinate 0");
+            p.string() + ": frame 0: particle 1 (id 1): expected a finite position, got nan in coordinate x");
 }
