@@ -8,14 +8,14 @@
 namespace granpipe::dem {
 
 Eigen::Vector3d Drive::offset(double t) const {
-  if (!moves() || t <= start) return Eigen::Vector3d::Zero();
+  if (!moves() || t < start) return Eigen::Vector3d::Zero();
   const double phase = angular_frequency * (t - start);
   const double s = form == Form::Sine ? std::sin(phase) : 1.0 - std::cos(phase);
   return amplitude * s * direction;
 }
 
 Eigen::Vector3d Drive::velocity(double t) const {
-  if (!moves() || t <= start) return Eigen::Vector3d::Zero();
+  if (!moves() || t < start) return Eigen::Vector3d::Zero();
   const double phase = angular_frequency * (t - start);
   const double s = form == Form::Sine ? std::cos(phase) : std::sin(phase);
   return amplitude * angular_frequency * s * direction;
