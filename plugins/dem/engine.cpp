@@ -66,7 +66,21 @@ Engine::Engine(const Model& model, const WallSet& walls, const Settings& setting
   const double smallest = p_.size() > 0 ? 2.0 * p_.radius.minCoeff() : 1.0;
   list_ = NeighborList(settings_.skin * smallest, kernels_.reaction_stride, settings_.friction);
   rebuild();
+  refuse_coincident_centres();
   evaluate_forces(0.0, 0.0, time());
+}
+
+void Engine::refuse_coincident_centres() const {
+  for (int i = 0; i < p_.size(); ++i) {
+    for (std::int32_t k = list_.first[i]; k < list_.first[i + 1]; ++k) {
+      const int j = list_.partner[k];
+      if (p_.x.col(i) != p_.x.col(j)) continue;
+      const auto [a, b] = std::minmax(p_.tag[i], p_.tag[j]);
+      throw InputError("dem: particles " + std::to_string(a) + " and " + std::to_string(b) +
+                       ": expected distinct centres, got the same position (no contact "
+                       "normal exists)");
+    }
+  }
 }
 
 void Engine::load_particles(const InitialState& in) {

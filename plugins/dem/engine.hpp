@@ -46,7 +46,8 @@ struct Settings {
 class Engine {
  public:
   // Throws InputError on invalid settings, materials, walls or particles (sizes, NaN,
-  // radius <= 0, species out of range), naming what and which particle.
+  // radius <= 0, species out of range, two centres at one point), naming what and which
+  // particle.
   Engine(const Model& model, const WallSet& walls, const Settings& settings,
          const InitialState& initial);
 
@@ -91,6 +92,7 @@ class Engine {
  private:
   void load_particles(const InitialState& initial);
   void prepare_materials();
+  void refuse_coincident_centres() const;
   void rebuild();
   // Forces at the current positions (walls displaced to the current time, moving with
   // their velocity at velocity_time), then the half kick of length kick_dt.

@@ -6,14 +6,19 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <algorithm>
 #include <numbers>
+#include <numeric>
+#include <set>
 #include <string>
+#include <utility>
 
 #include "diagnostics.hpp"
 #include "engine.hpp"
 #include "frame_output.hpp"
 #include "granpipe/errors.hpp"
 #include "granpipe/frame.hpp"
+#include "granpipe/random.hpp"
 #include "loose_lattice.hpp"
 #include "time_step.hpp"
 
@@ -347,4 +352,185 @@ TEST(DemWalls, SphereOnAVibratedBaseFollowsItWithoutDrift) {
     EXPECT_LT(std::abs(position(e, 0).x()) + std::abs(position(e, 0).y()), 1e-12);
   }
   EXPECT_LT(worst, 0.01);  // of the static overlap
+}
+
+namespace {
+
+// A bed of n unit spheres dropped from a loose lattice into a cylinder of radius R, with
+// friction, spin and damping (e = 0.5), each sphere given a random velocity of up to
+// `stir` per component.
+dem::Engine dropped_bed(int n, double R, dem::Settings s, const dem::Drive& drive = {},
+                        double stir = 0.0) {
+  dem::InitialState bed = dem::loose_lattice({.count = n, .radius = 0.5, .cylinder_radius = R,
+                                              .spacing = 1.03, .seed = 7});
+  // In random order, so that tags say nothing about where a sphere is.
+  granpipe::RandomStream random(11);
+  std::vector<int> order(static_cast<std::size_t>(n));
+  std::iota(order.begin(), order.end(), 0);
+  random.shuffle(order);
+  const dem::Vectors lattice = bed.position;
+  bed.velocity.resize(3, n);
+  for (int i = 0; i < n; ++i) {
+    bed.position.col(i) = lattice.col(order[static_cast<std::size_t>(i)]);
+    for (int c = 0; c < 3; ++c) bed.velocity(c, i) = random.uniform(-stir, stir);
+  }
+  dem::ContactMaterial m = material(kKn, dem::damping_for_restitution(0.5, kKn, 0.5), 0.5);
+  return dem::Engine(one_species(m), dem::WallSet(cylinder(R), drive), s, bed);
+}
+
+void expect_same_state(const dem::Engine& a, const dem::Engine& b, double tolerance) {
+  ASSERT_EQ(a.particles().size(), b.particles().size());
+  double worst = 0.0;
+  for (int tag = 0; tag < a.particles().size(); ++tag) {
+    worst = std::max({worst, (position(a, tag) - position(b, tag)).lpNorm<Eigen::Infinity>(),
+                      (velocity(a, tag) - velocity(b, tag)).lpNorm<Eigen::Infinity>(),
+                      (spin(a, tag) - spin(b, tag)).lpNorm<Eigen::Infinity>()});
+  }
+  EXPECT_LE(worst, tolerance);
+}
+
+}  // namespace
+
+TEST(DemHistory, ContactThatOpensAndClosesWithinOneListIntervalStartsAfresh) {
+  // Two spheres rattling in a small box; the skin is so wide that the list is never
+  // rebuilt, so the pair stays listed between its contacts.
+  dem::ContactMaterial m = material(kKn, dem::damping_for_restitution(0.9, kKn, 0.5), 0.5);
+  dem::Settings s = settings(1e-4);
+  s.skin = 5.0;
+  dem::Engine e(one_species(m), dem::WallSet(box(0, 2.2), {}), s,
+                spheres({{0.6, 0.6, 0.6}, {1.6, 1.5, 1.6}}, {{1.0, 0.8, 0.3}, {-0.7, -1.0, 0.5}}));
+  const auto touching = [&] { return (position(e, 0) - position(e, 1)).norm() < 1.0; };
+  int contacts = 0;
+  double longest = 0.0;  // the largest displacement a contact built up
+  bool before = touching();
+  for (int k = 0; k < 100000; ++k) {
+    e.run(1);
+    const bool now = touching();
+    const Vector3d u = *e.pair_history(0, 1);
+    if (!now) {
+      EXPECT_EQ(u, Vector3d::Zero()) << "step " << e.step();
+    } else if (!before) {
+      // A new contact holds one step of tangential slip, v_t dt, and nothing older.
+      ++contacts;
+      const double slip = (velocity(e, 0) - velocity(e, 1)).norm() +
+                          0.5 * (spin(e, 0).norm() + spin(e, 1).norm());
+      EXPECT_LE(u.norm(), 1.5 * slip * s.dt) << "contact " << contacts;
+    }
+    longest = std::max(longest, u.norm());
+    before = now;
+  }
+  EXPECT_EQ(e.neighbors().builds(), 1);
+  EXPECT_GE(contacts, 3);
+  EXPECT_GT(longest, 10 * 2.0 * s.dt);  // contacts did build up history worth leaking
+}
+
+TEST(DemHistory, SurvivesNeighbourListRebuildsAndReordering) {
+  // The same settling bed with a skin so thin that the list is rebuilt (and the particles
+  // re-sorted) every few steps, and one so wide that it never is: the same trajectories.
+  dem::Settings thin = settings(1e-4, -Vector3d::UnitZ()), wide = thin;
+  thin.skin = 0.002;
+  wide.skin = 2.0;
+  dem::Engine a = dropped_bed(60, 2.5, thin), b = dropped_bed(60, 2.5, wide);
+  a.run(10000);
+  b.run(10000);
+  EXPECT_GT(a.neighbors().builds(), 100);
+  EXPECT_EQ(b.neighbors().builds(), 1);
+  EXPECT_GT(dem::energy(a).tangential_elastic, 0.0);
+  expect_same_state(a, b, 1e-12);
+}
+
+TEST(DemThreads, OneAndTwoThreadsGiveBitIdenticalRuns) {
+  // A stirred bed on a base that moves up at once (a sine drive), listed with a thin skin
+  // so that the list is rebuilt and the particles re-sorted several times. (Few steps: on
+  // a loaded machine every step's barriers can wait for a descheduled thread.)
+  dem::Drive drive;
+  drive.form = dem::Drive::Form::Sine;
+  drive.amplitude = 0.5;
+  drive.angular_frequency = 2.0;
+  dem::Settings one = settings(1e-4, -Vector3d::UnitZ()), two = one;
+  one.skin = two.skin = 0.002;
+  two.threads = 2;
+  dem::Engine a = dropped_bed(400, 4.0, one, drive, 1.0), b = dropped_bed(400, 4.0, two, drive, 1.0);
+  a.run(600);
+  b.run(600);
+  EXPECT_GT(a.neighbors().builds(), 5);
+  EXPECT_GT(dem::energy(a).tangential_elastic, 0.0);
+  expect_same_state(a, b, 0.0);
+}
+
+TEST(DemNeighbours, HalfListHoldsEveryNearPairOnceWithBigParticlesAmongSmallOnes) {
+  // Small spheres of two sizes and four intruders 3.16 times larger, scattered at random.
+  granpipe::RandomStream random(3);
+  dem::InitialState s;
+  const int n = 400;
+  s.position.resize(3, n);
+  s.radius.resize(n);
+  for (int i = 0; i < n; ++i) {
+    s.position.col(i) = Vector3d(random.uniform(0, 12), random.uniform(0, 12), random.uniform(0, 12));
+    s.radius[i] = i % 100 == 0 ? 1.58 : i % 2 ? 0.5 : 0.6;
+  }
+  s.species = Eigen::ArrayXi::Zero(n);
+  dem::Settings st = settings(1e-4);
+  dem::Engine e(one_species(material(kKn, 0.0, 0.5)), dem::WallSet(no_walls(), {}), st, s);
+  const dem::Particles& p = e.particles();
+  const double skin = e.skin();
+  EXPECT_DOUBLE_EQ(skin, 0.2 * 1.0);
+  std::set<std::pair<int, int>> listed;
+  for (int i = 0; i < p.size(); ++i) {
+    for (std::int32_t k = e.neighbors().first[i]; k < e.neighbors().first[i + 1]; ++k) {
+      const int j = e.neighbors().partner[k];
+      EXPECT_TRUE(listed.insert(std::minmax(p.tag[i], p.tag[j])).second) << "listed twice";
+    }
+  }
+  std::set<std::pair<int, int>> near;
+  for (int i = 0; i < n; ++i) {
+    for (int j = i + 1; j < n; ++j) {
+      const double reach = s.radius[i] + s.radius[j] + skin;
+      if ((s.position.col(i) - s.position.col(j)).squaredNorm() < reach * reach) near.insert({i, j});
+    }
+  }
+  EXPECT_EQ(listed, near);
+  EXPECT_GT(near.size(), 100u);
+}
+
+TEST(DemNeighbours, IntruderOnABedFeelsTheSumOfItsManyContacts) {
+  // One sphere of diameter 3.16 (221 times heavier) dropped on a bed of small ones: its
+  // force is the sum of its contacts in the emitted table, and the forces on all
+  // particles add up to the wall forces alone (each pair's reaction reached its partner).
+  // The intruder sits on the base at the axis, in a loose bed that settles around it.
+  const double big = 1.58;
+  const dem::InitialState lattice = dem::loose_lattice(
+      {.count = 300, .radius = 0.5, .cylinder_radius = 3.0, .spacing = 1.03, .seed = 2});
+  const Vector3d centre(0, 0, big);
+  std::vector<Vector3d> x{centre};
+  for (Eigen::Index k = 0; k < lattice.radius.size(); ++k) {
+    if ((lattice.position.col(k) - centre).norm() > big + 0.55) x.push_back(lattice.position.col(k));
+  }
+  dem::InitialState bed = spheres(x, {});
+  bed.radius[0] = big;
+  bed.species[0] = 1;
+  const int n = 0;  // the intruder's tag
+  dem::ContactMaterial m = material(kKn, 40.0, 0.5);
+  dem::Model model = dem::Model::uniform(2, 1.91, m, m);
+  model.density[1] = 13.54;
+  dem::Engine e(model, dem::WallSet(cylinder(3.0), {}), settings(2e-4, -Vector3d::UnitZ()), bed);
+  e.record_contacts(true);
+  e.run(20000);
+  Frame f;
+  dem::fill_frame(e, f);
+  Vector3d on_intruder = Vector3d::Zero(), on_walls = Vector3d::Zero();
+  int intruder_contacts = 0;
+  for (Eigen::Index k = 0; k < f.contacts->rows(); ++k) {
+    const Vector3d force = contact_vector(f, "normal_force", k) + contact_vector(f, "tangential_force", k);
+    if (f.contact_i()[k] == n || f.contact_j()[k] == n) {
+      ++intruder_contacts;
+      on_intruder += f.contact_i()[k] == n ? force : Vector3d(-force);
+    }
+    if (partner::is_wall(f.contact_j()[k])) on_walls += force;
+  }
+  const double weight = 221.0;
+  EXPECT_GE(intruder_contacts, 10);
+  EXPECT_LT((e.particles().force.col(e.index_of(n)) - on_intruder).norm(),
+            1e-12 * weight);
+  EXPECT_LT((e.particles().force.rowwise().sum() - on_walls).norm(), 1e-12 * weight);
 }
