@@ -334,8 +334,9 @@ TEST(DemWalls, SphereWedgedBetweenCylinderAndBaseComesToRest) {
 }
 
 TEST(DemWalls, SphereOnAVibratedBaseFollowsItWithoutDrift) {
-  // Peak acceleration A w^2 = 0.5 g: the sphere never leaves the base, and rides on it at
-  // the height of rest (overlap m (g + base acceleration) / k_n) for 10^5 steps.
+  // Peak acceleration A w^2 = 0.5 g: the frictional sphere never leaves the base, and
+  // rides on it at the height of rest (overlap m (g + base acceleration) / k_n) for 10^6
+  // steps, without drifting sideways.
   dem::ContactMaterial m = material(kKn, 40.0, 0.5);
   dem::Drive drive;
   drive.form = dem::Drive::Form::Sine;
@@ -345,7 +346,7 @@ TEST(DemWalls, SphereOnAVibratedBaseFollowsItWithoutDrift) {
                 spheres({{0, 0, 0.5 - 1.0 / kKn}}, {{0, 0, 0.5}}));
   double worst = 0.0;
   for (int k = 0; k < 100; ++k) {
-    e.run(1000);
+    e.run(10000);
     const double base = drive.offset(e.time()).z();
     const double load = 1.0 + 0.5 * -std::sin(e.time());  // g + base acceleration
     worst = std::max(worst, std::abs(0.5 - (position(e, 0).z() - base) - load / kKn) * kKn);
@@ -533,4 +534,200 @@ TEST(DemNeighbours, IntruderOnABedFeelsTheSumOfItsManyContacts) {
   EXPECT_LT((e.particles().force.col(e.index_of(n)) - on_intruder).norm(),
             1e-12 * weight);
   EXPECT_LT((e.particles().force.rowwise().sum() - on_walls).norm(), 1e-12 * weight);
+}
+
+namespace {
+
+// The Brazil-nut materials of the paper's Table I: small spheres (d = 1, density 1.91,
+// mass 1.0) and the intruder (d = 3.16, density 13.54, mass 221).
+dem::Model bnp_model() {
+  const dem::ContactMaterial m{2e5, 2.0 / 7.0 * 2e5, 40.0, 0.0, 0.5};
+  dem::Model model = dem::Model::uniform(2, 1.91, m, {2e5, 2.0 / 7.0 * 2e5, 40.0, 20.0, 0.5});
+  model.density[1] = 13.54;
+  return model;
+}
+
+}  // namespace
+
+TEST(DemTimeStep, ShortestContactIsBetweenTheLightestSpheres) {
+  Eigen::ArrayXd radius(3);
+  radius << 0.5, 1.58, 0.5;
+  Eigen::ArrayXi species(3);
+  species << 0, 1, 0;
+  const dem::ContactTime t = dem::smallest_contact_time(
+      bnp_model(), dem::WallSet(cylinder(6.125), {}), radius, species, dem::ContactLaw::Linear, 0.0);
+  const double small = 1.91 * std::numbers::pi / 6.0;
+  EXPECT_DOUBLE_EQ(t.t_c, dem::linear_contact_time(2e5, 40.0, small / 2));
+  EXPECT_NEAR(t.t_c, 4.97e-3, 1e-5);
+  EXPECT_EQ(t.between, "species 0 and species 0");
+  // The paper's dt = 2e-4 is t_c/24.8: fine. Larger steps are warned about, then refused.
+  EXPECT_EQ(dem::check_time_step(2e-4, t).verdict, dem::StepVerdict::Fine);
+  EXPECT_EQ(dem::check_time_step(2e-4, t).message, "");
+  const dem::StepCheck warn = dem::check_time_step(3e-4, t);
+  EXPECT_EQ(warn.verdict, dem::StepVerdict::Warn);
+  EXPECT_EQ(warn.message,
+            "dem: dt = 0.0003 is t_c/16.5665 for the shortest contact (species 0 and species 0, "
+            "t_c = 0.00496996): above t_c/20, the contact time and restitution lose accuracy");
+  const dem::StepCheck refuse = dem::check_time_step(6e-4, t);
+  EXPECT_EQ(refuse.verdict, dem::StepVerdict::Refuse);
+  EXPECT_EQ(refuse.message,
+            "dem: dt = 0.0006 is t_c/8.28327 for the shortest contact (species 0 and species 0, "
+            "t_c = 0.00496996): expected dt <= t_c/10 = 0.000496996");
+}
+
+TEST(DemTimeStep, WallsAndStiffSpeciesCountToo) {
+  // Only intruders, and a base stiffer than the spheres: the wall decides.
+  dem::Model model = bnp_model();
+  model.wall[static_cast<int>(Wall::ZLow) * 2 + 1].kn = 1e8;
+  Eigen::ArrayXd radius = Eigen::ArrayXd::Constant(2, 1.58);
+  Eigen::ArrayXi species = Eigen::ArrayXi::Constant(2, 1);
+  const dem::ContactTime t = dem::smallest_contact_time(
+      model, dem::WallSet(cylinder(6.125), {}), radius, species, dem::ContactLaw::Linear, 0.0);
+  EXPECT_EQ(t.between, "species 1 and wall z_low");
+  // Hertz contacts need the impact speed.
+  EXPECT_THROW(
+      {
+        try {
+          dem::smallest_contact_time(model, dem::WallSet(cylinder(6.125), {}), radius, species,
+                                     dem::ContactLaw::Hertz, 0.0);
+        } catch (const InputError& e) {
+          EXPECT_STREQ(e.what(), "dem: impact speed for the Hertz contact time: expected a finite "
+                                 "value > 0, got 0");
+          throw;
+        }
+      },
+      InputError);
+  const dem::ContactTime hertz = dem::smallest_contact_time(
+      model, dem::WallSet(cylinder(6.125), {}), radius, species, dem::ContactLaw::Hertz, 5.0);
+  EXPECT_LT(hertz.t_c, dem::hertz_contact_time(2e5, 3.16, 0.5 * 221, 5.0));
+}
+
+namespace {
+
+// The message of the InputError that f throws ("" when it throws none).
+template <class F>
+std::string input_error(F&& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(DemInput, BadParticlesSettingsAndWallsAreRefusedByName) {
+  const dem::Model model = one_species(material(kKn, 10.0, 0.5));
+  const dem::WallSet walls(base_only(), {});
+  const auto make = [&](const dem::InitialState& s, const dem::Settings& st = settings(1e-4)) {
+    return input_error([&] { dem::Engine(model, walls, st, s); });
+  };
+  dem::InitialState s = spheres({{0, 0, 1}, {2, 0, 1}}, {});
+  s.radius[1] = -1;
+  EXPECT_EQ(make(s), "dem: particle 1: radius: expected a finite value > 0, got -1");
+  s = spheres({{0, 0, 1}, {2, 0, 1}}, {});
+  s.species[0] = 3;
+  EXPECT_EQ(make(s), "dem: particle 0: species: expected a species in 0..0, got 3");
+  s = spheres({{0, 0, 1}, {2, 0, std::nan("")}}, {});
+  EXPECT_EQ(make(s), "dem: particle 1: position z: expected a finite value, got nan");
+  s = spheres({{0, 0, 1}, {2, 0, 1}}, {});
+  s.velocity.resize(3, 1);
+  EXPECT_EQ(make(s), "dem: initial velocity: expected 2 vectors (one per particle), got 1");
+  EXPECT_EQ(make(spheres({{0, 0, 1}, {0, 0, 1}}, {})),
+            "dem: particles 0 and 1: expected distinct centres, got the same position (no "
+            "contact normal exists)");
+  EXPECT_EQ(make(spheres({{0, 0, 1}}, {}), settings(0.0)),
+            "dem: dt: expected a finite time step > 0, got 0");
+  dem::Settings threads = settings(1e-4);
+  threads.threads = 0;
+  EXPECT_EQ(make(spheres({{0, 0, 1}}, {}), threads), "dem: threads: expected at least 1, got 0");
+
+  dem::Model bad = model;
+  bad.pair[0].mu = -0.5;
+  EXPECT_EQ(input_error([&] { bad.check(); }),
+            "dem: species 0 with 0: mu: expected a finite value >= 0, got -0.5");
+  bad = model;
+  bad.density[0] = 0;
+  EXPECT_EQ(input_error([&] { bad.check(); }),
+            "dem: species 0: density: expected a finite value > 0, got 0");
+
+  Container periodic = base_only();
+  periodic.boundary[0] = {Boundary::Periodic, Boundary::Periodic};
+  EXPECT_EQ(input_error([&] { dem::WallSet(periodic, {}); }),
+            "dem: container: x_low: expected a wall or an open side, got a periodic side (the "
+            "DEM engine has no periodic boundaries)");
+  dem::Drive tilted;
+  tilted.direction = Vector3d(1, 1, 0);
+  EXPECT_EQ(input_error([&] { dem::WallSet(base_only(), tilted); }),
+            "dem: drive direction: expected a unit vector, got (1 1 0)");
+}
+
+TEST(DemHealth, ParticleThroughTheBaseOrNotFiniteStopsTheRun) {
+  const dem::Model model = one_species(material(10.0, 0.0, 0.5));
+  // So fast that one step takes it through the base.
+  dem::Engine through(model, dem::WallSet(base_only(), {}), settings(1e-3),
+                      spheres({{0, 0, 0.6}, {5, 0, 3}}, {{0, 0, -2000}, {0, 0, 0}}));
+  EXPECT_NO_THROW(dem::check_health(through, 1e9));
+  through.run(1);
+  EXPECT_EQ(dem::first_escaped(through), 0);
+  EXPECT_EQ(input_error([&] { dem::check_health(through, 1e9); }),
+            "dem: step 1 (t = 0.001): particle 0 went through a wall: the run blew up; reduce dt "
+            "(now 0.001) against the shortest contact time, or the initial overlaps");
+  // A velocity that overflows the position.
+  dem::Engine overflow(model, dem::WallSet(no_walls(), {}), settings(10.0),
+                       spheres({{0, 0, 0}, {5, 0, 0}}, {{0, 0, 0}, {1e308, 0, 0}}));
+  overflow.run(1);
+  EXPECT_EQ(dem::first_non_finite(overflow), 1);
+  EXPECT_THROW(dem::check_health(overflow, 1e9), dem::BlowUp);
+  // An energy above the bound.
+  dem::Engine fast(model, dem::WallSet(no_walls(), {}), settings(1e-3),
+                   spheres({{0, 0, 0}}, {{3, 0, 0}}));
+  EXPECT_NO_THROW(dem::check_health(fast, 4.5));
+  EXPECT_EQ(input_error([&] { dem::check_health(fast, 4.0); }),
+            "dem: step 0 (t = 0): kinetic energy 4.5 exceeds 4: the run blew up; reduce dt (now "
+            "0.001) against the shortest contact time, or the initial overlaps");
+}
+
+TEST(DemFrame, RowsFollowTheCallersOrderWithContactsOfPairsAndWalls) {
+  // Three spheres in a column on the base, given top first so that the engine re-sorts
+  // them, with a fourth one far away.
+  dem::ContactMaterial m = material(kKn, 40.0, 0.5);
+  const double d = 1.0 - 1e-4;
+  dem::Engine e(one_species(m), dem::WallSet(base_only(), {}), settings(1e-4, -Vector3d::UnitZ()),
+                spheres({{0, 0, 0.5 + 2 * d}, {0, 0, 0.5 + d}, {0, 0, 0.5}, {5, 0, 3}},
+                        {{0.1, 0, 0}, {0, 0, 0}, {0, 0, 0}, {0, 0, 0}}));
+  Frame f;
+  EXPECT_THROW(dem::fill_frame(e, f), granpipe::InternalError);  // walls not recorded
+  e.record_contacts(true);
+  e.run(10);
+  dem::fill_frame(e, f);
+  EXPECT_NO_THROW(f.check("dem frame"));
+  EXPECT_EQ(f.step, 10);
+  EXPECT_DOUBLE_EQ(f.time, 10 * 1e-4);
+  EXPECT_EQ(f.container.shape, ContainerShape::Box);
+  ASSERT_EQ(f.size(), 4);
+  for (int tag = 0; tag < 4; ++tag) {
+    EXPECT_EQ(f.id()[tag], tag);
+    EXPECT_EQ(f.position().row(tag).matrix().transpose(), position(e, tag));
+    EXPECT_EQ(f.table<double>("velocity").row(tag).matrix().transpose(), velocity(e, tag));
+    EXPECT_EQ(f.table<double>("angular_velocity").row(tag).matrix().transpose(), spin(e, tag));
+  }
+  // Sphere 2 on the base, 1 on 2, 0 on 1: sorted by (i, j), the wall as j < 0 first.
+  ASSERT_EQ(f.contacts->rows(), 3);
+  EXPECT_EQ(f.contact_i()[0], 0);
+  EXPECT_EQ(f.contact_j()[0], 1);
+  EXPECT_EQ(f.contact_i()[1], 1);
+  EXPECT_EQ(f.contact_j()[1], 2);
+  EXPECT_EQ(f.contact_i()[2], 2);
+  EXPECT_EQ(f.contact_j()[2], partner::wall(Wall::ZLow));
+  // Forces on i, which is the upper partner in every contact here: pushed up.
+  for (Eigen::Index k = 0; k < 3; ++k) EXPECT_GT(contact_vector(f, "normal_force", k).z(), 0.0);
+  // Sphere 0 slides on sphere 1: its friction points back.
+  EXPECT_LT(contact_vector(f, "tangential_force", 0).x(), 0.0);
+  const auto& overlap = f.contacts->get<Eigen::ArrayXd>("overlap");
+  // Contact points in the middle of the overlaps.
+  EXPECT_NEAR(contact_vector(f, "point", 2).z(), -0.5 * overlap[2], 1e-15);
+  EXPECT_NEAR(contact_vector(f, "point", 1).z(), position(e, 2).z() + 0.5 - 0.5 * overlap[1],
+              1e-12);
 }
