@@ -48,7 +48,7 @@ struct ContactForce {
 // (3 doubles, updated in place; unused without friction); dt_history: the time step, or 0
 // for a force evaluation that must not advance the history (the initial one).
 template <class Law, bool kFriction, bool kRotation>
-inline ContactForce resolve_contact(const Vec3& n, double delta, double d, const Vec3& v_rel,
+[[gnu::always_inline]] inline ContactForce resolve_contact(const Vec3& n, double delta, double d, const Vec3& v_rel,
                                     const Vec3& spin, double m_eff, const LoopMaterial& m,
                                     double* u, double dt_history) {
   static_assert(kFriction || !kRotation, "rotation without friction has no torque to apply");

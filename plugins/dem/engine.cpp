@@ -67,7 +67,7 @@ Engine::Engine(const Model& model, const WallSet& walls, const Settings& setting
   list_ = NeighborList(settings_.skin * smallest, kernels_.reaction_stride, settings_.friction);
   rebuild();
   refuse_coincident_centres();
-  evaluate_forces(0.0, 0.0, time());
+  evaluate_forces(0.0, 0.0, time(), true);
 }
 
 void Engine::refuse_coincident_centres() const {
@@ -207,7 +207,8 @@ KickContext Engine::kick_context(double dt) {
   return c;
 }
 
-void Engine::evaluate_forces(double dt_history, double kick_dt, double velocity_time) {
+void Engine::evaluate_forces(double dt_history, double kick_dt, double velocity_time,
+                             bool finish) {
   if (recording_) {
     for (int s = 0; s < walls_.count(); ++s) {
       wall_normal_[s].resize(3, p_.size());
@@ -217,17 +218,20 @@ void Engine::evaluate_forces(double dt_history, double kick_dt, double velocity_
     }
   }
   kernels_.forces(force_context(dt_history, velocity_time));
-  kernels_.gather_and_kick(kick_context(kick_dt));
   if (recording_) recorded_step_ = step_;
+  if (finish) kernels_.finish_step(kick_context(kick_dt));
 }
 
 void Engine::run(std::int64_t steps) {
+  if (steps <= 0) return;
   const double dt = settings_.dt;
+  double moved = kernels_.start_step(kick_context(dt));
   for (std::int64_t s = 0; s < steps; ++s) {
-    const double moved = kernels_.kick_and_drift(kick_context(dt));
     ++step_;
     if (moved > list_.trigger_squared()) rebuild();
-    evaluate_forces(dt, dt, time() - 0.5 * dt);
+    const bool last = s + 1 == steps;
+    evaluate_forces(dt, dt, time() - 0.5 * dt, last);
+    if (!last) moved = kernels_.finish_and_start(kick_context(dt));
   }
 }
 
@@ -240,7 +244,7 @@ void Engine::record_contacts(bool on) {
   tangential_record_ptr_.resize(static_cast<std::size_t>(walls_.count()));
   // At step 0 the forces were evaluated without advancing anything, so evaluating them
   // again gives the same forces, now recorded.
-  if (step_ == 0) evaluate_forces(0.0, 0.0, time());
+  if (step_ == 0) evaluate_forces(0.0, 0.0, time(), true);
 }
 
 void Engine::set_drive(const Drive& drive) { walls_.set_drive(drive); }

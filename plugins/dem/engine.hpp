@@ -95,8 +95,9 @@ class Engine {
   void refuse_coincident_centres() const;
   void rebuild();
   // Forces at the current positions (walls displaced to the current time, moving with
-  // their velocity at velocity_time), then the half kick of length kick_dt.
-  void evaluate_forces(double dt_history, double kick_dt, double velocity_time);
+  // their velocity at velocity_time), then, if `finish`, the reactions gathered and the
+  // half kick of length kick_dt (else the caller does both, fused with the next step).
+  void evaluate_forces(double dt_history, double kick_dt, double velocity_time, bool finish);
   ForceContext force_context(double dt_history, double velocity_time);
   KickContext kick_context(double dt);
 

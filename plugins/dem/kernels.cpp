@@ -19,6 +19,11 @@ inline void store(double* a, std::ptrdiff_t i, const Vec3& v) {
 }
 inline void store_zero(double* a, std::ptrdiff_t i) { a[3 * i] = a[3 * i + 1] = a[3 * i + 2] = 0.0; }
 
+// Particles per scheduling chunk. Results do not depend on which thread takes which
+// particle, so the loops can balance dynamically: on a shared machine a thread that loses
+// its core leaves its chunks to the others instead of stalling every barrier.
+constexpr int kChunk = 128;
+
 // Reaction slot per pair: the force on the partner, and n x F_t when spins matter.
 template <bool kRotation>
 constexpr int kStride = kRotation ? 6 : 3;
@@ -32,7 +37,7 @@ struct WallContacts {
     const LoopMaterial* material = c.wall_material + c.species[i];
     const Vec3 v_rel = vi - c.wall_velocity;
     const Vec3 spin = kRotation ? Vec3(ai * wi) : Vec3::Zero();
-    const auto touch = [&](int slot, const Vec3& n, double delta) {
+    const auto touch = [&](int slot, const Vec3& n, double delta) __attribute__((always_inline)) {
       double* u = kFriction ? c.wall_history[slot] + 3 * static_cast<std::ptrdiff_t>(i) : nullptr;
       if (delta <= 0.0) {
         if constexpr (kFriction) u[0] = u[1] = u[2] = 0.0;
@@ -71,7 +76,7 @@ template <class Law, bool kFriction, bool kRotation>
 void forces(const ForceContext& c) {
   constexpr int stride = kStride<kRotation>;
   const int S = c.species_count;
-#pragma omp parallel for schedule(static) num_threads(c.threads)
+#pragma omp parallel for schedule(dynamic, kChunk) num_threads(c.threads)
   for (int i = 0; i < c.n; ++i) {
     const Vec3 xi = load(c.x, i), vi = load(c.v, i);
     const Vec3 wi = kRotation ? load(c.omega, i) : Vec3::Zero();
@@ -113,51 +118,74 @@ void forces(const ForceContext& c) {
   }
 }
 
+// The end of a step for particle p: its reactions gathered, then v += dt/2 a (and the
+// spin likewise).
 template <bool kRotation>
-void gather_and_kick(const KickContext& c) {
+[[gnu::always_inline]] inline void finish(const KickContext& c, int p) {
   constexpr int stride = kStride<kRotation>;
   const double h = 0.5 * c.dt;
-#pragma omp parallel for schedule(static) num_threads(c.threads)
-  for (int p = 0; p < c.n; ++p) {
-    Vec3 f = load(c.force, p);
-    Vec3 spin = kRotation ? load(c.spin_sum, p) : Vec3::Zero();
-    for (std::int32_t m = c.reverse_first[p]; m < c.reverse_first[p + 1]; ++m) {
-      const double* rk = c.reaction + static_cast<std::ptrdiff_t>(stride) * c.reverse_pair[m];
-      f += Vec3(rk[0], rk[1], rk[2]);
-      if constexpr (kRotation) spin += Vec3(rk[3], rk[4], rk[5]);
-    }
-    store(c.force, p, f);
-    store(c.v, p, load(c.v, p) + h * (c.inv_mass[p] * f + c.gravity));
-    if constexpr (kRotation) {
-      const Vec3 torque = -c.radius[p] * spin;
-      store(c.torque, p, torque);
-      store(c.omega, p, load(c.omega, p) + (h * c.inv_inertia[p]) * torque);
-    }
+  Vec3 f = load(c.force, p);
+  Vec3 spin = kRotation ? load(c.spin_sum, p) : Vec3::Zero();
+  for (std::int32_t m = c.reverse_first[p]; m < c.reverse_first[p + 1]; ++m) {
+    const double* rk = c.reaction + static_cast<std::ptrdiff_t>(stride) * c.reverse_pair[m];
+    f += Vec3(rk[0], rk[1], rk[2]);
+    if constexpr (kRotation) spin += Vec3(rk[3], rk[4], rk[5]);
+  }
+  store(c.force, p, f);
+  store(c.v, p, load(c.v, p) + h * (c.inv_mass[p] * f + c.gravity));
+  if constexpr (kRotation) {
+    const Vec3 torque = -c.radius[p] * spin;
+    store(c.torque, p, torque);
+    store(c.omega, p, load(c.omega, p) + (h * c.inv_inertia[p]) * torque);
   }
 }
 
+// The start of a step for particle p: v += dt/2 a, x += dt v (and the spin's half kick);
+// returns its squared displacement since the last list build.
 template <bool kRotation>
-double kick_and_drift(const KickContext& c) {
+[[gnu::always_inline]] inline double start(const KickContext& c, int p) {
   const double h = 0.5 * c.dt;
+  const Vec3 v = load(c.v, p) + h * (c.inv_mass[p] * load(c.force, p) + c.gravity);
+  const Vec3 x = load(c.x, p) + c.dt * v;
+  store(c.v, p, v);
+  store(c.x, p, x);
+  if constexpr (kRotation) {
+    store(c.omega, p, load(c.omega, p) + (h * c.inv_inertia[p]) * load(c.torque, p));
+  }
+  return (x - load(c.x_build, p)).squaredNorm();
+}
+
+template <bool kRotation>
+void finish_step(const KickContext& c) {
+#pragma omp parallel for schedule(dynamic, kChunk) num_threads(c.threads)
+  for (int p = 0; p < c.n; ++p) finish<kRotation>(c, p);
+}
+
+template <bool kRotation>
+double start_step(const KickContext& c) {
   double worst = 0.0;
-#pragma omp parallel for schedule(static) num_threads(c.threads) reduction(max : worst)
+#pragma omp parallel for schedule(dynamic, kChunk) num_threads(c.threads) reduction(max : worst)
+  for (int p = 0; p < c.n; ++p) worst = std::max(worst, start<kRotation>(c, p));
+  return worst;
+}
+
+// The two above in one pass: the same arithmetic, one sweep over memory and one barrier
+// fewer per step.
+template <bool kRotation>
+double finish_and_start(const KickContext& c) {
+  double worst = 0.0;
+#pragma omp parallel for schedule(dynamic, kChunk) num_threads(c.threads) reduction(max : worst)
   for (int p = 0; p < c.n; ++p) {
-    const Vec3 v = load(c.v, p) + h * (c.inv_mass[p] * load(c.force, p) + c.gravity);
-    const Vec3 x = load(c.x, p) + c.dt * v;
-    store(c.v, p, v);
-    store(c.x, p, x);
-    if constexpr (kRotation) {
-      store(c.omega, p, load(c.omega, p) + (h * c.inv_inertia[p]) * load(c.torque, p));
-    }
-    worst = std::max(worst, (x - load(c.x_build, p)).squaredNorm());
+    finish<kRotation>(c, p);
+    worst = std::max(worst, start<kRotation>(c, p));
   }
   return worst;
 }
 
 template <class Law, bool kFriction, bool kRotation>
 Kernels kernels_of() {
-  return {&forces<Law, kFriction, kRotation>, &gather_and_kick<kRotation>,
-          &kick_and_drift<kRotation>, kStride<kRotation>};
+  return {&forces<Law, kFriction, kRotation>, &finish_step<kRotation>, &start_step<kRotation>,
+          &finish_and_start<kRotation>, kStride<kRotation>};
 }
 
 template <class Law>

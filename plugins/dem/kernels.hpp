@@ -55,7 +55,7 @@ struct ForceContext {
   double *force, *spin_sum;
 };
 
-// Gather of reactions and the second half kick, and the first half kick with the drift.
+// The kicks and the drift of velocity Verlet, with the gather of the reactions.
 struct KickContext {
   int n = 0;
   double *x, *v, *omega, *force, *torque;
@@ -70,11 +70,13 @@ struct KickContext {
 
 struct Kernels {
   void (*forces)(const ForceContext&);
-  // Adds the reactions to force/torque, then v += dt/2 a (and w += dt/2 alpha).
-  void (*gather_and_kick)(const KickContext&);
-  // v += dt/2 a, x += dt v (and w += dt/2 alpha); returns the largest squared
+  // The end of a step: reactions added to force/torque, then v += dt/2 a (w likewise).
+  void (*finish_step)(const KickContext&);
+  // The start of a step: v += dt/2 a, x += dt v (w likewise); returns the largest squared
   // displacement since the last list build.
-  double (*kick_and_drift)(const KickContext&);
+  double (*start_step)(const KickContext&);
+  // finish_step then start_step, in one sweep (bit-identical to the two).
+  double (*finish_and_start)(const KickContext&);
   int reaction_stride;
 };
 

@@ -459,6 +459,18 @@ TEST(DemThreads, OneAndTwoThreadsGiveBitIdenticalRuns) {
   expect_same_state(a, b, 0.0);
 }
 
+TEST(DemThreads, RunsCutIntoPiecesGiveTheSameRun) {
+  // A source emits frames between calls to run(): where it cuts must change nothing.
+  dem::Settings s = settings(1e-4, -Vector3d::UnitZ());
+  s.skin = 0.002;
+  dem::Engine a = dropped_bed(100, 2.5, s, {}, 1.0), b = dropped_bed(100, 2.5, s, {}, 1.0);
+  a.run(600);
+  for (int k = 0; b.step() < 600; ++k) b.run(std::min<std::int64_t>(k % 3 + 1, 600 - b.step()));
+  ASSERT_EQ(b.step(), 600);
+  EXPECT_GT(a.neighbors().builds(), 5);
+  expect_same_state(a, b, 0.0);
+}
+
 TEST(DemNeighbours, HalfListHoldsEveryNearPairOnceWithBigParticlesAmongSmallOnes) {
   // Small spheres of two sizes and four intruders 3.16 times larger, scattered at random.
   granpipe::RandomStream random(3);
