@@ -1,6 +1,7 @@
 #include "kernels.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 
 #include "walls.hpp"
@@ -28,49 +29,48 @@ constexpr int kChunk = 128;
 template <bool kRotation>
 constexpr int kStride = kRotation ? 6 : 3;
 
+// Adds particle i's wall forces to f and its wall contacts' n x F_t to spin_sum.
 template <class Law, bool kFriction, bool kRotation>
-struct WallContacts {
-  // Adds particle i's wall forces to f and c (sum of n x F_t).
-  static void add(const ForceContext& c, int i, const Vec3& xi, const Vec3& vi, const Vec3& wi,
-                  Vec3& f, Vec3& spin_sum) {
-    const double ai = c.radius[i], m = 1.0 / c.inv_mass[i];
-    const LoopMaterial* material = c.wall_material + c.species[i];
-    const Vec3 v_rel = vi - c.wall_velocity;
-    const Vec3 spin = kRotation ? Vec3(ai * wi) : Vec3::Zero();
-    const auto touch = [&](int slot, const Vec3& n, double delta) __attribute__((always_inline)) {
-      double* u = kFriction ? c.wall_history[slot] + 3 * static_cast<std::ptrdiff_t>(i) : nullptr;
-      if (delta <= 0.0) {
-        if constexpr (kFriction) u[0] = u[1] = u[2] = 0.0;
-        if (c.wall_normal_record) {
-          store_zero(c.wall_normal_record[slot], i);
-          store_zero(c.wall_tangential_record[slot], i);
-        }
-        return;
-      }
-      const ContactForce cf = resolve_contact<Law, kFriction, kRotation>(
-          n, delta, 2.0 * ai, v_rel, spin, m, material[slot * c.species_count], u, c.dt_history);
-      f += cf.force;
-      if constexpr (kRotation) spin_sum += cf.c;
+[[gnu::always_inline]] inline void add_wall_forces(const ForceContext& c, int i, const Vec3& xi,
+                                                   const Vec3& vi, const Vec3& wi, Vec3& f,
+                                                   Vec3& spin_sum) {
+  const double ai = c.radius[i], m = 1.0 / c.inv_mass[i];
+  const LoopMaterial* material = c.wall_material + c.species[i];
+  const Vec3 v_rel = vi - c.wall_velocity;
+  const Vec3 spin = kRotation ? Vec3(ai * wi) : Vec3::Zero();
+  const auto touch = [&](int slot, const Vec3& n, double delta) __attribute__((always_inline)) {
+    double* u = kFriction ? c.wall_history[slot] + 3 * static_cast<std::ptrdiff_t>(i) : nullptr;
+    if (delta <= 0.0) {
+      if constexpr (kFriction) u[0] = u[1] = u[2] = 0.0;
       if (c.wall_normal_record) {
-        store(c.wall_normal_record[slot], i, cf.normal);
-        store(c.wall_tangential_record[slot], i, cf.force - cf.normal);
+        store_zero(c.wall_normal_record[slot], i);
+        store_zero(c.wall_tangential_record[slot], i);
       }
-    };
-    for (int s = 0; s < c.planes; ++s) {
-      const int axis = c.plane_axis[s];
-      const double sign = c.plane_sign[s];
-      Vec3 n = Vec3::Zero();
-      n[axis] = sign;
-      touch(s, n, plane_overlap(sign, xi[axis], c.plane_position[s], ai));
+      return;
     }
-    if (c.cylinder) {
-      const double dx = xi[0] - c.cylinder_x, dy = xi[1] - c.cylinder_y;
-      double rho = 0.0;
-      const double delta = cylinder_overlap(dx, dy, c.cylinder_radius, ai, rho);
-      touch(c.planes, rho > 0.0 ? Vec3(-dx / rho, -dy / rho, 0.0) : Vec3::Zero(), delta);
+    const ContactForce cf = resolve_contact<Law, kFriction, kRotation>(
+        n, delta, 2.0 * ai, v_rel, spin, m, material[slot * c.species_count], u, c.dt_history);
+    f += cf.force;
+    if constexpr (kRotation) spin_sum += cf.c;
+    if (c.wall_normal_record) {
+      store(c.wall_normal_record[slot], i, cf.normal);
+      store(c.wall_tangential_record[slot], i, cf.force - cf.normal);
     }
+  };
+  for (int s = 0; s < c.planes; ++s) {
+    const int axis = c.plane_axis[s];
+    const double sign = c.plane_sign[s];
+    Vec3 n = Vec3::Zero();
+    n[axis] = sign;
+    touch(s, n, plane_overlap(sign, xi[axis], c.plane_position[s], ai));
   }
-};
+  if (c.cylinder) {
+    const double dx = xi[0] - c.cylinder_x, dy = xi[1] - c.cylinder_y;
+    double rho = 0.0;
+    const double delta = cylinder_overlap(dx, dy, c.cylinder_radius, ai, rho);
+    touch(c.planes, rho > 0.0 ? Vec3(-dx / rho, -dy / rho, 0.0) : Vec3::Zero(), delta);
+  }
+}
 
 template <class Law, bool kFriction, bool kRotation>
 void forces(const ForceContext& c) {
@@ -112,7 +112,7 @@ void forces(const ForceContext& c) {
         rk[5] = cf.c[2];
       }
     }
-    WallContacts<Law, kFriction, kRotation>::add(c, i, xi, vi, wi, fi, ci);
+    add_wall_forces<Law, kFriction, kRotation>(c, i, xi, vi, wi, fi, ci);
     store(c.force, i, fi);
     if constexpr (kRotation) store(c.spin_sum, i, ci);
   }

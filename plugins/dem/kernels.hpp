@@ -14,9 +14,10 @@
 // Walls (planes and a cylinder) are a short run-time list checked per particle: each
 // check is a few flops with an early exit, against about ten times as many pair contacts.
 //
-// Threads: every loop runs over particles with a static schedule, and each particle's
-// sums are taken in a fixed order (its own pairs in list order, then the reactions of the
-// pairs naming it, in list order), so results are bit-identical for any thread count.
+// Threads: every loop runs over particles, and each particle's sums are taken in a fixed
+// order (its own pairs in list order, then the reactions of the pairs naming it, in list
+// order), never across threads, so results are bit-identical for any thread count and
+// any schedule (the loops balance dynamically).
 #include <cstdint>
 
 #include "contact_law.hpp"

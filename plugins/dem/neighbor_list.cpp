@@ -118,7 +118,7 @@ void NeighborList::list_pairs(const Particles& p, int threads) {
     const double reach = r[i] + r[j] + skin_;
     return dx * dx + dy * dy + dz * dz < reach * reach;
   };
-#pragma omp parallel for schedule(static) num_threads(threads)
+#pragma omp parallel for schedule(dynamic, 128) num_threads(threads)
   for (int i = 0; i < n; ++i) {
     int count = 0;
     for_each_candidate(p, i, [&](int j) { count += near(i, j); });
@@ -126,7 +126,7 @@ void NeighborList::list_pairs(const Particles& p, int threads) {
   }
   for (int i = 0; i < n; ++i) first[i + 1] += first[i];
   partner.resize(static_cast<std::size_t>(first[n]));
-#pragma omp parallel for schedule(static) num_threads(threads)
+#pragma omp parallel for schedule(dynamic, 128) num_threads(threads)
   for (int i = 0; i < n; ++i) {
     int k = first[i];
     for_each_candidate(p, i, [&](int j) {
@@ -138,7 +138,7 @@ void NeighborList::list_pairs(const Particles& p, int threads) {
 void NeighborList::restore_history(const Particles& p, int threads) {
   const int n = p.size();
   history.resize(3 * partner.size());
-#pragma omp parallel for schedule(static) num_threads(threads)
+#pragma omp parallel for schedule(dynamic, 128) num_threads(threads)
   for (int i = 0; i < n; ++i) {
     for (int k = first[i]; k < first[i + 1]; ++k) {
       saved_.find(p.tag[i], p.tag[partner[k]], &history[3 * static_cast<std::size_t>(k)]);

@@ -4,6 +4,7 @@
 #include <limits>
 #include <numbers>
 #include <sstream>
+#include <string>
 #include <vector>
 
 #include "granpipe/errors.hpp"
@@ -21,7 +22,16 @@ struct Lightest {
 std::vector<Lightest> lightest(const Model& model, const Eigen::ArrayXd& radius,
                                const Eigen::ArrayXi& species) {
   std::vector<Lightest> out(static_cast<std::size_t>(model.species()));
+  if (species.size() != radius.size()) {
+    throw InputError("dem: contact time: expected one species per radius, got " +
+                     std::to_string(species.size()) + " species for " +
+                     std::to_string(radius.size()) + " radii");
+  }
   for (Eigen::Index i = 0; i < radius.size(); ++i) {
+    if (species[i] < 0 || species[i] >= model.species()) {
+      throw InputError("dem: particle " + std::to_string(i) + ": species: expected a species in 0.." +
+                       std::to_string(model.species() - 1) + ", got " + std::to_string(species[i]));
+    }
     const double a = radius[i];
     const double m = model.density[species[i]] * 4.0 / 3.0 * std::numbers::pi * a * a * a;
     Lightest& l = out[static_cast<std::size_t>(species[i])];
