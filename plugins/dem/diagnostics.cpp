@@ -1,0 +1,122 @@
+#include "diagnostics.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace granpipe::dem {
+
+namespace {
+
+double normal_potential(ContactLaw law, const ContactMaterial& m, double delta, double d) {
+  return law == ContactLaw::Linear ? 0.5 * m.kn * delta * delta
+                                   : 0.4 * m.kn * delta * delta * std::sqrt(delta / d);
+}
+
+double law_scale(ContactLaw law, double delta, double d) {
+  return law == ContactLaw::Linear ? 1.0 : std::sqrt(delta / d);
+}
+
+double kinetic_energy(const Particles& p) {
+  double sum = 0.0;
+  for (int i = 0; i < p.size(); ++i) {
+    sum += 0.5 * (p.v.col(i).squaredNorm() / p.inv_mass[i] +
+                  p.omega.col(i).squaredNorm() / p.inv_inertia[i]);
+  }
+  return sum;
+}
+
+std::string where(const Engine& e) {
+  std::ostringstream s;
+  s << "dem: step " << e.step() << " (t = " << e.time() << ")";
+  return s.str();
+}
+
+}  // namespace
+
+Energy energy(const Engine& e) {
+  const Particles& p = e.particles();
+  const NeighborList& list = e.neighbors();
+  const ContactLaw law = e.settings().law;
+  const bool friction = e.settings().friction;
+  Energy out;
+  for (int i = 0; i < p.size(); ++i) {
+    const double m = 1.0 / p.inv_mass[i];
+    out.translational += 0.5 * m * p.v.col(i).squaredNorm();
+    out.rotational += 0.5 / p.inv_inertia[i] * p.omega.col(i).squaredNorm();
+    out.gravitational -= m * e.settings().gravity.dot(p.x.col(i));
+    for (std::int32_t k = list.first[i]; k < list.first[i + 1]; ++k) {
+      const int j = list.partner[k];
+      const double d = p.radius[i] + p.radius[j];
+      const double delta = d - (p.x.col(i) - p.x.col(j)).norm();
+      if (delta <= 0.0) continue;
+      const ContactMaterial& mat = e.model().between(p.species[i], p.species[j]);
+      out.normal_elastic += normal_potential(law, mat, delta, d);
+      if (friction) {
+        const Vec3 u = Vec3::Map(&list.history[3 * static_cast<std::size_t>(k)]);
+        out.tangential_elastic += 0.5 * law_scale(law, delta, d) * mat.kt * u.squaredNorm();
+      }
+    }
+    for (int slot = 0; slot < e.walls().count(); ++slot) {
+      Vec3 n;
+      const double delta = e.walls().overlap(slot, p.x.col(i), p.radius[i], e.wall_offset(), n);
+      if (delta <= 0.0) continue;
+      const ContactMaterial& mat = e.model().with_wall(e.walls().wall_of_slot(slot), p.species[i]);
+      out.normal_elastic += normal_potential(law, mat, delta, 2.0 * p.radius[i]);
+      if (friction) {
+        out.tangential_elastic += 0.5 * law_scale(law, delta, 2.0 * p.radius[i]) * mat.kt *
+                                  p.wall_history[slot].col(i).squaredNorm();
+      }
+    }
+  }
+  return out;
+}
+
+std::optional<std::int32_t> first_non_finite(const Engine& e) {
+  const Particles& p = e.particles();
+  for (int i = 0; i < p.size(); ++i) {
+    if (!p.x.col(i).allFinite() || !p.v.col(i).allFinite() || !p.omega.col(i).allFinite()) {
+      return p.tag[i];
+    }
+  }
+  return std::nullopt;
+}
+
+std::optional<std::int32_t> first_escaped(const Engine& e) {
+  const Particles& p = e.particles();
+  for (int i = 0; i < p.size(); ++i) {
+    for (int slot = 0; slot < e.walls().count(); ++slot) {
+      Vec3 n;
+      // The centre is past the wall when the overlap exceeds the radius.
+      if (e.walls().overlap(slot, p.x.col(i), p.radius[i], e.wall_offset(), n) > p.radius[i]) {
+        return p.tag[i];
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+void check_health(const Engine& e, double max_kinetic_energy) {
+  const auto advice = [&] {
+    std::ostringstream s;
+    s << "; reduce dt (now " << e.settings().dt
+      << ") against the shortest contact time, or the initial overlaps";
+    return s.str();
+  };
+  if (const auto tag = first_non_finite(e)) {
+    throw BlowUp(where(e) + ": particle " + std::to_string(*tag) +
+                 " has a non-finite position or velocity: the run blew up" + advice());
+  }
+  if (const auto tag = first_escaped(e)) {
+    throw BlowUp(where(e) + ": particle " + std::to_string(*tag) +
+                 " went through a wall: the run blew up" + advice());
+  }
+  const double kinetic = kinetic_energy(e.particles());
+  if (kinetic > max_kinetic_energy) {
+    std::ostringstream s;
+    s << where(e) << ": kinetic energy " << kinetic << " exceeds " << max_kinetic_energy
+      << ": the run blew up" << advice();
+    throw BlowUp(s.str());
+  }
+}
+
+}  // namespace granpipe::dem

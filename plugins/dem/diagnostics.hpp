@@ -1,0 +1,44 @@
+#pragma once
+// Checks a caller runs between steps (never inside the hot loop): energies, and the
+// blow-ups that must stop a run with a clear message (a NaN, a particle out of the
+// container, an energy explosion).
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "engine.hpp"
+#include "granpipe/errors.hpp"
+
+namespace granpipe::dem {
+
+struct Energy {
+  double translational = 0.0;
+  double rotational = 0.0;
+  double gravitational = 0.0;  // -m g.x, zero at the origin
+  double normal_elastic = 0.0;     // springs of the normal law (pairs and walls)
+  double tangential_elastic = 0.0;  // tangential springs, 1/2 f k_t u^2
+  double kinetic() const { return translational + rotational; }
+  double total() const {
+    return translational + rotational + gravitational + normal_elastic + tangential_elastic;
+  }
+};
+Energy energy(const Engine& engine);
+
+// A run that blew up. An InputError: with validated parameters it is the time step (or
+// the initial overlaps) that the user must change, and the message says so.
+class BlowUp : public InputError {
+ public:
+  using InputError::InputError;
+};
+
+// The tag of a particle whose position, velocity or angular velocity is not finite.
+std::optional<std::int32_t> first_non_finite(const Engine& engine);
+// The tag of a particle whose centre is behind an active wall (past a plane, or outside
+// the cylinder): it has gone through.
+std::optional<std::int32_t> first_escaped(const Engine& engine);
+// Throws BlowUp when a particle is not finite, has escaped, or the kinetic energy exceeds
+// max_kinetic_energy; the message names the step, the time, the particle and dt against
+// the contact time.
+void check_health(const Engine& engine, double max_kinetic_energy);
+
+}  // namespace granpipe::dem

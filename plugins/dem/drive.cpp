@@ -1,0 +1,41 @@
+#include "drive.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "granpipe/errors.hpp"
+
+namespace granpipe::dem {
+
+Eigen::Vector3d Drive::offset(double t) const {
+  if (!moves() || t < start) return Eigen::Vector3d::Zero();
+  const double phase = angular_frequency * (t - start);
+  const double s = form == Form::Sine ? std::sin(phase) : 1.0 - std::cos(phase);
+  return amplitude * s * direction;
+}
+
+Eigen::Vector3d Drive::velocity(double t) const {
+  if (!moves() || t < start) return Eigen::Vector3d::Zero();
+  const double phase = angular_frequency * (t - start);
+  const double s = form == Form::Sine ? std::cos(phase) : std::sin(phase);
+  return amplitude * angular_frequency * s * direction;
+}
+
+void Drive::check() const {
+  const auto finite = [](double v, const char* name) {
+    if (std::isfinite(v)) return;
+    std::ostringstream s;
+    s << "dem: drive " << name << ": expected a finite value, got " << v;
+    throw InputError(s.str());
+  };
+  finite(amplitude, "amplitude");
+  finite(angular_frequency, "angular frequency");
+  finite(start, "start");
+  if (!direction.allFinite() || std::abs(direction.norm() - 1.0) > 1e-12) {
+    std::ostringstream s;
+    s << "dem: drive direction: expected a unit vector, got (" << direction.transpose() << ")";
+    throw InputError(s.str());
+  }
+}
+
+}  // namespace granpipe::dem

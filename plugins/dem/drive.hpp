@@ -1,0 +1,27 @@
+#pragma once
+// The rigid motion of the container: every wall is displaced by the same offset D(t)
+// along `direction` (the container vibrates as one body),
+//   Sine:          D(t) = A sin(w t),        V(t) = A w cos(w t)
+//   OneMinusCos:   D(t) = A (1 - cos(w t)),  V(t) = A w sin(w t)   (LAMMPS' wiggle: from rest)
+// with t counted from `start` (walls at rest before it).
+#include <Eigen/Core>
+
+namespace granpipe::dem {
+
+struct Drive {
+  enum class Form { Sine, OneMinusCos };
+  Form form = Form::OneMinusCos;
+  double amplitude = 0.0;          // A (length)
+  double angular_frequency = 0.0;  // w = 2 pi f (1/time)
+  Eigen::Vector3d direction = Eigen::Vector3d::UnitZ();  // unit vector
+  double start = 0.0;
+
+  Eigen::Vector3d offset(double t) const;
+  Eigen::Vector3d velocity(double t) const;
+  bool moves() const { return amplitude != 0.0 && angular_frequency != 0.0; }
+  // Throws InputError on a NaN/infinite amplitude, frequency or start, or a direction that
+  // is not a unit vector.
+  void check() const;
+};
+
+}  // namespace granpipe::dem

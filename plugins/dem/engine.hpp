@@ -1,0 +1,121 @@
+#pragma once
+// A soft-sphere DEM run in 3D: particles, walls, contact law, time stepping.
+//
+// Time step (velocity Verlet, as LAMMPS' nve/sphere):
+//   v(t+dt/2) = v(t) + dt/2 a(t),    w(t+dt/2) = w(t) + dt/2 alpha(t)
+//   x(t+dt)   = x(t) + dt v(t+dt/2)
+//   [rebuild the neighbour list if a particle moved more than skin/2 since the last build]
+//   forces and torques from x(t+dt), v(t+dt/2), w(t+dt/2), the walls at D(t+dt) moving
+//   with V(t+dt/2) (velocity-dependent forces see the half-step velocities, of particles
+//   and walls alike), tangential histories advanced by dt
+//   v(t+dt) = v(t+dt/2) + dt/2 a(t+dt),  w(t+dt) = w(t+dt/2) + dt/2 alpha(t+dt)
+// with a = F/m + g (F: contacts and background damping -b v) and alpha = T/I, I = 2/5 m R^2
+// (solid spheres; spheres need no orientation). The forces at t = 0 are evaluated when
+// the engine is made, without advancing any history.
+//
+// The hot loop touches only the engine's arrays; frame_output.hpp turns the state into a
+// granpipe::Frame when one is wanted.
+#include <Eigen/Core>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "contact_law.hpp"
+#include "kernels.hpp"
+#include "model.hpp"
+#include "neighbor_list.hpp"
+#include "particles.hpp"
+#include "walls.hpp"
+
+namespace granpipe::dem {
+
+struct Settings {
+  double dt = 0.0;
+  Eigen::Vector3d gravity = -Eigen::Vector3d::UnitZ();  // acceleration
+  ContactLaw law = ContactLaw::Linear;
+  bool friction = true;
+  bool rotation = true;
+  double skin = 0.2;                // neighbour-list margin, in smallest particle diameters
+  double background_damping = 0.0;  // b of Eq. (7): force -b v on every particle
+  int threads = 1;
+
+  // Throws InputError naming the setting on a non-finite or out-of-range value.
+  void check() const;
+};
+
+class Engine {
+ public:
+  // Throws InputError on invalid settings, materials, walls or particles (sizes, NaN,
+  // radius <= 0, species out of range, two centres at one point), naming what and which
+  // particle.
+  Engine(const Model& model, const WallSet& walls, const Settings& settings,
+         const InitialState& initial);
+
+  // Advances `steps` time steps. Allocates nothing except when a neighbour-list rebuild
+  // needs more room than any before.
+  void run(std::int64_t steps);
+
+  // From the next force evaluation on, keep the wall contact forces (pair forces are
+  // always kept) so that a frame can show every contact. Turned on at step 0, it records
+  // the initial forces at once.
+  void record_contacts(bool on);
+  // True when the forces of the current state were evaluated while recording.
+  bool contacts_recorded() const { return recorded_step_ == step_; }
+  // Changes the container's motion from now on (the drive's own start time applies).
+  void set_drive(const Drive& drive);
+  void set_threads(int threads);
+
+  double time() const { return static_cast<double>(step_) * settings_.dt; }
+  std::int64_t step() const { return step_; }
+  const Settings& settings() const { return settings_; }
+  const Model& model() const { return model_; }
+  const WallSet& walls() const { return walls_; }
+  const Particles& particles() const { return p_; }
+  const NeighborList& neighbors() const { return list_; }
+  // The walls' displacement at the current time.
+  Eigen::Vector3d wall_offset() const { return walls_.drive().offset(time()); }
+  // The neighbour-list skin as a length.
+  double skin() const { return list_.skin(); }
+  // Wall forces of the last recorded evaluation: per active wall slot, normal and
+  // tangential force on each particle (engine order; zero when not touching).
+  const std::vector<Vectors>& recorded_wall_normal() const { return wall_normal_; }
+  const std::vector<Vectors>& recorded_wall_tangential() const { return wall_tangential_; }
+
+  // The tangential displacement of particle tag_a against tag_b, as seen from tag_a:
+  // nothing when the two are not in the neighbour list, zero when listed but not touching.
+  std::optional<Vec3> pair_history(std::int32_t tag_a, std::int32_t tag_b) const;
+  // The same against wall w (nothing when w is not an active wall or without friction).
+  std::optional<Vec3> wall_history(std::int32_t tag, Wall w) const;
+  // The engine index of the particle with this tag (the engine reorders particles).
+  int index_of(std::int32_t tag) const;
+
+ private:
+  void load_particles(const InitialState& initial);
+  void prepare_materials();
+  void refuse_coincident_centres() const;
+  void rebuild();
+  // Forces at the current positions (walls displaced to the current time, moving with
+  // their velocity at velocity_time), then, if `finish`, the reactions gathered and the
+  // half kick of length kick_dt (else the caller does both, fused with the next step).
+  void evaluate_forces(double dt_history, double kick_dt, double velocity_time, bool finish);
+  ForceContext force_context(double dt_history, double velocity_time);
+  KickContext kick_context(double dt);
+
+  Model model_;
+  WallSet walls_;
+  Settings settings_;
+  Kernels kernels_;
+  Particles p_;
+  NeighborList list_;
+  Vectors spin_sum_;
+  std::vector<LoopMaterial> pair_material_, wall_material_;
+  // Wall geometry for the force loop, refreshed each step.
+  std::vector<int> plane_axis_;
+  std::vector<double> plane_sign_, plane_position_;
+  std::vector<double*> wall_history_ptr_, normal_record_ptr_, tangential_record_ptr_;
+  std::vector<Vectors> wall_normal_, wall_tangential_;
+  bool recording_ = false;
+  std::int64_t step_ = 0, recorded_step_ = -1;
+};
+
+}  // namespace granpipe::dem

@@ -1,0 +1,204 @@
+#include "kernels.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+#include "walls.hpp"
+
+namespace granpipe::dem {
+
+namespace {
+
+inline Vec3 load(const double* a, std::ptrdiff_t i) {
+  return Vec3(a[3 * i], a[3 * i + 1], a[3 * i + 2]);
+}
+inline void store(double* a, std::ptrdiff_t i, const Vec3& v) {
+  a[3 * i] = v[0];
+  a[3 * i + 1] = v[1];
+  a[3 * i + 2] = v[2];
+}
+inline void store_zero(double* a, std::ptrdiff_t i) { a[3 * i] = a[3 * i + 1] = a[3 * i + 2] = 0.0; }
+
+// Particles per scheduling chunk. Results do not depend on which thread takes which
+// particle, so the loops can balance dynamically: on a shared machine a thread that loses
+// its core leaves its chunks to the others instead of stalling every barrier.
+constexpr int kChunk = 128;
+
+// Reaction slot per pair: the force on the partner, and n x F_t when spins matter.
+template <bool kRotation>
+constexpr int kStride = kRotation ? 6 : 3;
+
+// Adds particle i's wall forces to f and its wall contacts' n x F_t to spin_sum.
+template <class Law, bool kFriction, bool kRotation>
+[[gnu::always_inline]] inline void add_wall_forces(const ForceContext& c, int i, const Vec3& xi,
+                                                   const Vec3& vi, const Vec3& wi, Vec3& f,
+                                                   Vec3& spin_sum) {
+  const double ai = c.radius[i], m = 1.0 / c.inv_mass[i];
+  const LoopMaterial* material = c.wall_material + c.species[i];
+  const Vec3 v_rel = vi - c.wall_velocity;
+  const Vec3 spin = kRotation ? Vec3(ai * wi) : Vec3::Zero();
+  const auto touch = [&](int slot, const Vec3& n, double delta) __attribute__((always_inline)) {
+    double* u = kFriction ? c.wall_history[slot] + 3 * static_cast<std::ptrdiff_t>(i) : nullptr;
+    if (delta <= 0.0) {
+      if constexpr (kFriction) u[0] = u[1] = u[2] = 0.0;
+      if (c.wall_normal_record) {
+        store_zero(c.wall_normal_record[slot], i);
+        store_zero(c.wall_tangential_record[slot], i);
+      }
+      return;
+    }
+    const ContactForce cf = resolve_contact<Law, kFriction, kRotation>(
+        n, delta, 2.0 * ai, v_rel, spin, m, material[slot * c.species_count], u, c.dt_history);
+    f += cf.force;
+    if constexpr (kRotation) spin_sum += cf.c;
+    if (c.wall_normal_record) {
+      store(c.wall_normal_record[slot], i, cf.normal);
+      store(c.wall_tangential_record[slot], i, cf.force - cf.normal);
+    }
+  };
+  for (int s = 0; s < c.planes; ++s) {
+    const int axis = c.plane_axis[s];
+    const double sign = c.plane_sign[s];
+    Vec3 n = Vec3::Zero();
+    n[axis] = sign;
+    touch(s, n, plane_overlap(sign, xi[axis], c.plane_position[s], ai));
+  }
+  if (c.cylinder) {
+    const double dx = xi[0] - c.cylinder_x, dy = xi[1] - c.cylinder_y;
+    double rho = 0.0;
+    const double delta = cylinder_overlap(dx, dy, c.cylinder_radius, ai, rho);
+    touch(c.planes, rho > 0.0 ? Vec3(-dx / rho, -dy / rho, 0.0) : Vec3::Zero(), delta);
+  }
+}
+
+template <class Law, bool kFriction, bool kRotation>
+void forces(const ForceContext& c) {
+  constexpr int stride = kStride<kRotation>;
+  const int S = c.species_count;
+#pragma omp parallel for schedule(dynamic, kChunk) num_threads(c.threads)
+  for (int i = 0; i < c.n; ++i) {
+    const Vec3 xi = load(c.x, i), vi = load(c.v, i);
+    const Vec3 wi = kRotation ? load(c.omega, i) : Vec3::Zero();
+    const double ai = c.radius[i], inv_mi = c.inv_mass[i];
+    const LoopMaterial* row = c.pair_material + c.species[i] * S;
+    Vec3 fi = -c.background_damping * vi;
+    Vec3 ci = Vec3::Zero();
+    for (std::int32_t k = c.first[i]; k < c.first[i + 1]; ++k) {
+      const std::int32_t j = c.partner[k];
+      double* rk = c.reaction + static_cast<std::ptrdiff_t>(stride) * k;
+      double* u = kFriction ? c.history + 3 * static_cast<std::ptrdiff_t>(k) : nullptr;
+      const Vec3 d = xi - load(c.x, j);
+      const double r2 = d.squaredNorm(), aj = c.radius[j], contact = ai + aj;
+      if (r2 >= contact * contact) {
+        std::fill(rk, rk + stride, 0.0);
+        if constexpr (kFriction) u[0] = u[1] = u[2] = 0.0;
+        continue;
+      }
+      const double r = std::sqrt(r2);
+      const Vec3 n = d / r;
+      const Vec3 spin = kRotation ? Vec3(ai * wi + aj * load(c.omega, j)) : Vec3::Zero();
+      const ContactForce cf = resolve_contact<Law, kFriction, kRotation>(
+          n, contact - r, contact, vi - load(c.v, j), spin, 1.0 / (inv_mi + c.inv_mass[j]),
+          row[c.species[j]], u, c.dt_history);
+      fi += cf.force;
+      rk[0] = -cf.force[0];
+      rk[1] = -cf.force[1];
+      rk[2] = -cf.force[2];
+      if constexpr (kRotation) {
+        ci += cf.c;
+        rk[3] = cf.c[0];
+        rk[4] = cf.c[1];
+        rk[5] = cf.c[2];
+      }
+    }
+    add_wall_forces<Law, kFriction, kRotation>(c, i, xi, vi, wi, fi, ci);
+    store(c.force, i, fi);
+    if constexpr (kRotation) store(c.spin_sum, i, ci);
+  }
+}
+
+// The end of a step for particle p: its reactions gathered, then v += dt/2 a (and the
+// spin likewise).
+template <bool kRotation>
+[[gnu::always_inline]] inline void finish(const KickContext& c, int p) {
+  constexpr int stride = kStride<kRotation>;
+  const double h = 0.5 * c.dt;
+  Vec3 f = load(c.force, p);
+  Vec3 spin = kRotation ? load(c.spin_sum, p) : Vec3::Zero();
+  for (std::int32_t m = c.reverse_first[p]; m < c.reverse_first[p + 1]; ++m) {
+    const double* rk = c.reaction + static_cast<std::ptrdiff_t>(stride) * c.reverse_pair[m];
+    f += Vec3(rk[0], rk[1], rk[2]);
+    if constexpr (kRotation) spin += Vec3(rk[3], rk[4], rk[5]);
+  }
+  store(c.force, p, f);
+  store(c.v, p, load(c.v, p) + h * (c.inv_mass[p] * f + c.gravity));
+  if constexpr (kRotation) {
+    const Vec3 torque = -c.radius[p] * spin;
+    store(c.torque, p, torque);
+    store(c.omega, p, load(c.omega, p) + (h * c.inv_inertia[p]) * torque);
+  }
+}
+
+// The start of a step for particle p: v += dt/2 a, x += dt v (and the spin's half kick);
+// returns its squared displacement since the last list build.
+template <bool kRotation>
+[[gnu::always_inline]] inline double start(const KickContext& c, int p) {
+  const double h = 0.5 * c.dt;
+  const Vec3 v = load(c.v, p) + h * (c.inv_mass[p] * load(c.force, p) + c.gravity);
+  const Vec3 x = load(c.x, p) + c.dt * v;
+  store(c.v, p, v);
+  store(c.x, p, x);
+  if constexpr (kRotation) {
+    store(c.omega, p, load(c.omega, p) + (h * c.inv_inertia[p]) * load(c.torque, p));
+  }
+  return (x - load(c.x_build, p)).squaredNorm();
+}
+
+template <bool kRotation>
+void finish_step(const KickContext& c) {
+#pragma omp parallel for schedule(dynamic, kChunk) num_threads(c.threads)
+  for (int p = 0; p < c.n; ++p) finish<kRotation>(c, p);
+}
+
+template <bool kRotation>
+double start_step(const KickContext& c) {
+  double worst = 0.0;
+#pragma omp parallel for schedule(dynamic, kChunk) num_threads(c.threads) reduction(max : worst)
+  for (int p = 0; p < c.n; ++p) worst = std::max(worst, start<kRotation>(c, p));
+  return worst;
+}
+
+// The two above in one pass: the same arithmetic, one sweep over memory and one barrier
+// fewer per step.
+template <bool kRotation>
+double finish_and_start(const KickContext& c) {
+  double worst = 0.0;
+#pragma omp parallel for schedule(dynamic, kChunk) num_threads(c.threads) reduction(max : worst)
+  for (int p = 0; p < c.n; ++p) {
+    finish<kRotation>(c, p);
+    worst = std::max(worst, start<kRotation>(c, p));
+  }
+  return worst;
+}
+
+template <class Law, bool kFriction, bool kRotation>
+Kernels kernels_of() {
+  return {&forces<Law, kFriction, kRotation>, &finish_step<kRotation>, &start_step<kRotation>,
+          &finish_and_start<kRotation>, kStride<kRotation>};
+}
+
+template <class Law>
+Kernels kernels_of_law(bool friction, bool rotation) {
+  if (!friction) return kernels_of<Law, false, false>();
+  return rotation ? kernels_of<Law, true, true>() : kernels_of<Law, true, false>();
+}
+
+}  // namespace
+
+Kernels select_kernels(ContactLaw law, bool friction, bool rotation) {
+  return law == ContactLaw::Linear ? kernels_of_law<LinearLaw>(friction, rotation)
+                                   : kernels_of_law<HertzLaw>(friction, rotation);
+}
+
+}  // namespace granpipe::dem

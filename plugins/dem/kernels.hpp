@@ -1,0 +1,88 @@
+#pragma once
+// The loops of one time step, specialised at compile time by contact law, friction and
+// rotation so that a scene pays only for the physics it uses. The compiled combinations
+// (kernels.cpp instantiates exactly these six, picked by select_kernels):
+//
+//   law      friction  rotation   use
+//   Linear   off       off        frictionless spheres: no history, no torques, spins kept
+//   Linear   on        off        friction on non-rotating particles (sliding blocks)
+//   Linear   on        on         the paper's spring-dashpot spheres (the Brazil-nut scene)
+//   Hertz    off       off        as above, Hertzian
+//   Hertz    on        off
+//   Hertz    on        on
+//
+// Walls (planes and a cylinder) are a short run-time list checked per particle: each
+// check is a few flops with an early exit, against about ten times as many pair contacts.
+//
+// Threads: every loop runs over particles, and each particle's sums are taken in a fixed
+// order (its own pairs in list order, then the reactions of the pairs naming it, in list
+// order), never across threads, so results are bit-identical for any thread count and
+// any schedule (the loops balance dynamically).
+#include <cstdint>
+
+#include "contact_law.hpp"
+
+namespace granpipe::dem {
+
+// Everything the force loop reads and writes, as raw arrays (engine order of particles).
+struct ForceContext {
+  int n = 0;
+  const double *x, *v, *omega, *radius, *inv_mass;
+  const int* species;
+  int species_count;
+  const LoopMaterial* pair_material;  // species x species
+  // Walls: planes then (optionally) the cylinder, in slot order.
+  int planes;
+  const int* plane_axis;
+  const double* plane_sign;
+  const double* plane_position;  // current (rest + offset)
+  bool cylinder;
+  double cylinder_x, cylinder_y, cylinder_radius;  // current axis and radius
+  const LoopMaterial* wall_material;  // slot x species
+  Vec3 wall_velocity;                 // at the velocities' time (half step)
+  double** wall_history;              // per slot, 3 x n (friction only)
+  // Recording (for frames): per slot, normal and tangential force on the particle, 3 x n;
+  // null when not recording.
+  double** wall_normal_record;
+  double** wall_tangential_record;
+  // The half list.
+  const std::int32_t *first, *partner;
+  double* history;   // 3 per pair
+  double* reaction;  // 3 or 6 per pair
+  double background_damping;
+  double dt_history;
+  int threads;
+  // Out: force and sum of n x F_t per particle (own pairs and walls only).
+  double *force, *spin_sum;
+};
+
+// The kicks and the drift of velocity Verlet, with the gather of the reactions.
+struct KickContext {
+  int n = 0;
+  double *x, *v, *omega, *force, *torque;
+  const double *radius, *inv_mass, *inv_inertia, *spin_sum;
+  const double* x_build;
+  const double* reaction;
+  const std::int32_t *reverse_first, *reverse_pair;
+  Vec3 gravity;
+  double dt;
+  int threads;
+};
+
+struct Kernels {
+  void (*forces)(const ForceContext&);
+  // The end of a step: reactions added to force/torque, then v += dt/2 a (w likewise).
+  void (*finish_step)(const KickContext&);
+  // The start of a step: v += dt/2 a, x += dt v (w likewise); returns the largest squared
+  // displacement since the last list build.
+  double (*start_step)(const KickContext&);
+  // finish_step then start_step, in one sweep (bit-identical to the two).
+  double (*finish_and_start)(const KickContext&);
+  int reaction_stride;
+};
+
+// The kernels of one combination; friction=false with rotation=true is served by the
+// frictionless kernels (no tangential force, so no torque).
+Kernels select_kernels(ContactLaw law, bool friction, bool rotation);
+
+}  // namespace granpipe::dem

@@ -1,0 +1,79 @@
+#pragma once
+// Verlet half list on a cell grid: every pair closer than R_i + R_j + skin is listed once,
+// under one of its two particles (its "owner"), and rebuilt when a particle has moved more
+// than skin/2 since the last build.
+//
+// A rebuild sorts the particles by cell (z-major), so that neighbours in space are
+// neighbours in memory, then lists pairs in two parallel passes (count per owner, then
+// fill), which gives the same list for any thread count. Cells are sized for the pairs of
+// "small" particles (radius up to 1.5 x the median); a small particle lists the small
+// particles after it in its own cell and in the 13 forward neighbour cells, and each "big"
+// particle (a Brazil-nut intruder) searches every cell within its own reach for all its
+// partners, so one large sphere does not inflate the cells of the whole bed.
+//
+// Per pair the list keeps the tangential displacement (history, 3 doubles, with friction)
+// and the reaction slot the force loop writes (force on the partner, and n x F_t); the
+// reverse index (pairs by partner) lets each particle gather its reactions in a fixed
+// order, with no atomics and no per-thread copies.
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "pair_history.hpp"
+#include "particles.hpp"
+
+namespace granpipe::dem {
+
+class NeighborList {
+ public:
+  // skin: the list's distance margin; reaction_stride: doubles per reaction slot (3
+  // without friction, 6 with); history: whether pairs keep a tangential displacement.
+  NeighborList() = default;
+  NeighborList(double skin, int reaction_stride, bool history);
+
+  // Sorts `p` spatially, rebuilds the list and carries the pair histories over.
+  void rebuild(Particles& p, int threads);
+  // The largest squared displacement since the last rebuild that is still safe.
+  double trigger_squared() const { return 0.25 * skin_ * skin_; }
+  const Vectors& positions_at_build() const { return x_build_; }
+
+  double skin() const { return skin_; }
+  int pairs() const { return static_cast<int>(partner.size()); }
+  std::int64_t builds() const { return builds_; }
+
+  // Pairs of owner i are first[i] .. first[i+1]-1; pairs naming p as partner are
+  // reverse_pair[reverse_first[p] .. reverse_first[p+1]-1], in increasing pair order.
+  std::vector<std::int32_t> first, partner;
+  std::vector<std::int32_t> reverse_first, reverse_pair;
+  std::vector<double> history;   // 3 per pair
+  std::vector<double> reaction;  // reaction_stride per pair
+  int reaction_stride = 3;
+
+ private:
+  struct Grid {
+    Eigen::Vector3d lo;
+    double cell = 1.0, inv_cell = 1.0;
+    int n[3] = {1, 1, 1};
+    int cell_of(const double* x) const;
+    int count() const { return n[0] * n[1] * n[2]; }
+  };
+  void size_grid(const Particles& p);
+  void sort_by_cell(Particles& p);
+  template <class F>
+  void for_each_candidate(const Particles& p, int i, F&& f) const;
+  void list_pairs(const Particles& p, int threads);
+  void restore_history(const Particles& p, int threads);
+  void index_reverse(int n);
+
+  double skin_ = 0.0;
+  bool keep_history_ = false;
+  double split_radius_ = 0.0, max_radius_ = 0.0;
+  std::int64_t builds_ = 0;
+  Grid grid_;
+  std::vector<std::int32_t> cell_of_, cell_start_, order_, count_;
+  std::vector<unsigned char> big_;
+  Vectors x_build_;
+  PairHistory saved_;
+};
+
+}  // namespace granpipe::dem
