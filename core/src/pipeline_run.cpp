@@ -89,7 +89,7 @@ PointPlugins make_plugins(const Pipeline::Impl& p, std::size_t k, int threads, L
   } catch (const InputError& e) {
     throw InputError(located_message(p.top(), e.what()));
   }
-  FrameContent have = made.source->content();
+  FrameContent have = made.source->content(), published;
   for (std::size_t a = 0; a < p.analyzers.size(); ++a) {
     const PluginSpec& spec = p.analyzers[a];
     try {
@@ -104,12 +104,16 @@ PointPlugins make_plugins(const Pipeline::Impl& p, std::size_t k, int threads, L
       throw InputError(spec.where + ": analyzer \"" + spec.info->name + "\" needs " + missing +
                        " (source \"" + p.source->name + "\")");
     }
+    // A column the source carries (frames saved by an earlier run) is replaced by the
+    // analyzer's; one that an earlier analyzer publishes, or a required one, is refused.
     for (const Property& c : made.analyzers.back()->publishes()) {
-      if (provided(have, c) || is_required(c)) {
+      if (provided(published, c) || is_required(c)) {
         throw InputError(spec.where + ": analyzer \"" + spec.info->name + "\" publishes the column \"" +
                          c.name + "\", which the frames already carry");
       }
+      std::erase_if(have.columns, [&](const Property& p) { return p.name == c.name && p.scope == c.scope; });
       have.columns.push_back(c);
+      published.columns.push_back(c);
     }
   }
   for (std::size_t w = 0; w < p.writers.size(); ++w) {
@@ -151,6 +155,7 @@ void publish_columns(Analyzer& analyzer, Frame& frame) {
     if (c.rows() != frame.size() || c.components() != c.property().components_in(frame.dim)) {
       throw InternalError("published column \"" + c.name() + "\" was resized");
     }
+    frame.particles.remove(c.name());  // the source's column of that name, if any
     frame.particles.add(c.property()).storage() = std::move(c.storage());
   }
 }

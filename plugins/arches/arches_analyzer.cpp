@@ -86,6 +86,7 @@ void ArchesAnalyzer::consume(const Frame& frame, FrameCache& cache) {
   ++frames_;
   check_supports(frame, where);
   const Eigen::Index n = frame.size();
+  arch_of_.resize(0);
   if (n == 0) {
     log_.warn(where + ": no disks; skipped");
     return;
@@ -94,6 +95,7 @@ void ArchesAnalyzer::consume(const Frame& frame, FrameCache& cache) {
   const double disks = static_cast<double>(n);
 
   const std::vector<Arch> arches = find_arches(frame, where);
+  arch_of_ = arch_of_each_disk(n, arches);
   const ArchStatistics st = arch_statistics(n, arches);
   const Supports supports = Supports::of(frame);
   const SupportCount sc = count_supports(supports);

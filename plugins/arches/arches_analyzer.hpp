@@ -24,6 +24,8 @@ class ArchesAnalyzer : public Analyzer {
   }
   void consume(const Frame& frame, FrameCache& cache) override;
   void finish(Results& results) override;
+  std::vector<Property> publishes() const override { return {arch_property()}; }
+  void publish(PropertyTable& columns) override { columns.get<IndexArray>("arch") = arch_of_; }
 
  private:
   void add_size_distribution(const std::vector<Eigen::Index>& n, double disks);
@@ -44,6 +46,7 @@ class ArchesAnalyzer : public Analyzer {
   std::vector<std::pair<long, SpanHistogram>> span_by_size_;
   SpanHistogram span_all_;
   StreamedTable per_frame_;
+  IndexArray arch_of_;  // of the last frame consumed, for publish()
   RampMeans by_ramp_{{"z_support_eq4", "z_support_direct", "arches_per_particle"}};
 };
 

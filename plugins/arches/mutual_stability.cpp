@@ -72,6 +72,19 @@ Supports Supports::of(const Frame& frame) {
   return {t.col(0), t.col(1)};
 }
 
+Property arch_property() {
+  return {"arch", Scope::Particle, ValueType::Integer, 1, "",
+          "index of the arch holding the disk in this frame, -1 for none"};
+}
+
+IndexArray arch_of_each_disk(Eigen::Index disks, const std::vector<Arch>& arches) {
+  IndexArray arch = IndexArray::Constant(disks, -1);
+  for (std::size_t k = 0; k < arches.size(); ++k) {
+    for (Eigen::Index d : arches[k].disks) arch[d] = static_cast<std::int64_t>(k);
+  }
+  return arch;
+}
+
 std::int64_t right_mutual_partner(const Supports& s, Eigen::Index i) {
   const std::int64_t j = s.right(i);
   return partner::is_particle(j) && s.left(j) == i ? j : partner::none;

@@ -38,6 +38,11 @@ void check_supports(const Frame& frame, const std::string& where);
 // or partner::none.
 std::int64_t right_mutual_partner(const Supports& supports, Eigen::Index i);
 
+// The per-particle column the arches analyzer publishes: the index of the arch holding
+// each disk in its frame (arches in the order find_arches gives), -1 for none.
+Property arch_property();
+IndexArray arch_of_each_disk(Eigen::Index disks, const std::vector<Arch>& arches);
+
 // Every arch of a frame whose supports passed check_supports. Throws InputError naming
 // `where` when labels close a ring of mutual supports (no chain has two ends).
 std::vector<Arch> find_arches(const Frame& frame, const std::string& where);

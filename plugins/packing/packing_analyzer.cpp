@@ -179,12 +179,14 @@ PackingAnalyzer::PackingAnalyzer(const PluginContext& ctx)
 }
 
 void PackingAnalyzer::consume(const Frame& frame, FrameCache& cache) {
+  coordination_.resize(0);
   if (frame.size() == 0) {
     if (skipped_++ == 0) log_.warn("packing: " + frame_name(frame) + " has no particles; skipped");
     return;
   }
   dim_ = frame.dim;
   const PackingMeasurement m = measure_packing(frame, cache, settings_);
+  coordination_ = contacts_by_distance(frame, cache, settings_.tolerance).coordination(frame.size(), false);
   phi_.add(m.phi);
   density_.add(m.number_density);
   if (m.centres > 0) {

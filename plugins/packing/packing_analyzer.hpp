@@ -56,8 +56,19 @@ class PackingAnalyzer : public Analyzer {
   explicit PackingAnalyzer(const PluginContext& ctx);
   void consume(const Frame& frame, FrameCache& cache) override;
   void finish(Results& results) override;
+  // Each particle's number of particle contacts (walls not counted), for the analyzers
+  // after this one and the writers.
+  std::vector<Property> publishes() const override { return {coordination_property()}; }
+  void publish(PropertyTable& columns) override {
+    columns.get<IntArray>("coordination") = coordination_;
+  }
+  static Property coordination_property() {
+    return {"coordination", Scope::Particle, ValueType::Small, 1, "",
+            "contacts with other particles (by distance, the analyzer's tolerance)"};
+  }
 
  private:
+  IntArray coordination_;  // of the last frame consumed
   PackingSettings settings_;
   Log& log_;
   int dim_ = 3;

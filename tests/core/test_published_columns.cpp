@@ -123,6 +123,14 @@ TEST(PublishedColumns, SeenByLaterAnalyzersWrittenAndReadBackByTheH5mdSource) {
                                 (first / "frames.h5").string() +
                                 R"("}}, "analyzers": [{"plugin": "label_sum"}]})";
   EXPECT_EQ(run_label_sum(reprocess, r, second), 60.0);
+
+  // Reprocessed by the analyzer that made the column: its new values replace the saved ones.
+  const fs::path third = fresh_dir("third");
+  const std::string again = R"({"source": {"plugin": "h5md", "params": {"file": ")" +
+                            (first / "frames.h5").string() +
+                            R"("}}, "analyzers": [{"plugin": "labeller"}, {"plugin": "label_sum"}]})";
+  EXPECT_EQ(run_label_sum(again, r, third), 60.0);
+  fs::remove_all(third);
   fs::remove_all(first);
   fs::remove_all(second);
 }

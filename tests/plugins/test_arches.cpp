@@ -638,3 +638,27 @@ TEST(ArchesPlugin, LoadsAndDeclaresItsSchema) {
   EXPECT_EQ(analyzer->needs().columns[0].name, "supports");
   EXPECT_EQ(analyzer->needs().dim, 2);
 }
+
+// The analyzer publishes which arch holds each disk: the two arches of two_separate_arches
+// (disks 3-4 and 5-6), every other disk in none.
+TEST(ArchesAnalyzer, PublishesTheArchOfEachDisk) {
+  const auto ctx = context(0, 0.05);
+  ga::ArchesAnalyzer analyzer(*ctx);
+  ASSERT_EQ(analyzer.publishes().size(), 1u);
+  const Frame f = two_separate_arches();
+  granpipe::FrameCache cache;
+  analyzer.consume(f, cache);
+  granpipe::PropertyTable columns(granpipe::Scope::Particle, f.size(), 2);
+  columns.add(ga::arch_property());
+  analyzer.publish(columns);
+  const granpipe::IndexArray& arch = columns.get<granpipe::IndexArray>("arch");
+  ASSERT_EQ(arch.size(), f.size());
+  EXPECT_EQ(arch[0], -1);
+  EXPECT_EQ(arch[1], -1);
+  EXPECT_EQ(arch[2], -1);
+  EXPECT_EQ(arch[3], arch[4]);
+  EXPECT_EQ(arch[5], arch[6]);
+  EXPECT_NE(arch[3], arch[5]);
+  EXPECT_GE(arch[3], 0);
+  EXPECT_GE(arch[5], 0);
+}

@@ -406,3 +406,21 @@ TEST(Packing, OneParticle) {
 }
 
 }  // namespace
+
+// The analyzer publishes each particle's coordination: 12 for every sphere of a periodic
+// fcc crystal, 6 for every disk of a triangular one.
+TEST(Packing, PublishesTheCoordinationOfEachParticle) {
+  for (const auto& [name, z] : {std::pair{"fcc", 12}, {"triangular", 6}}) {
+    const Frame f = one(name);
+    const auto ctx = granpipe::test::make_context(granpipe::packing::schema(), {{"tolerance", 1e-9}});
+    granpipe::packing::PackingAnalyzer analyzer(*ctx);
+    FrameCache cache;
+    analyzer.consume(f, cache);
+    granpipe::PropertyTable columns(granpipe::Scope::Particle, f.size(), f.dim);
+    columns.add(granpipe::packing::PackingAnalyzer::coordination_property());
+    analyzer.publish(columns);
+    const granpipe::IntArray& c = columns.get<granpipe::IntArray>("coordination");
+    ASSERT_EQ(c.size(), f.size()) << name;
+    EXPECT_TRUE((c == z).all()) << name << ": " << c.minCoeff() << " to " << c.maxCoeff();
+  }
+}
