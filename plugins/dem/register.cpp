@@ -1,5 +1,7 @@
-// The dem plugin. Its engine (dem_lib) is ready; the `dem` source that runs it from a
-// pipeline is registered here once it exists (issue 12).
-#include "granpipe/plugin.hpp"
+#include "dem_source.hpp"
 
-GRANPIPE_PLUGIN(registry) { static_cast<void>(registry); }
+GRANPIPE_PLUGIN(registry) {
+  registry.add_source<granpipe::dem::DemSource>(
+      "dem", "soft-sphere DEM (linear or Hertz contacts, friction, vibrated walls) from a saved frame",
+      granpipe::dem::schema());
+}

@@ -1,0 +1,194 @@
+#include "dem_source.hpp"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "diagnostics.hpp"
+#include "frame_output.hpp"
+#include "granpipe/frame_store.hpp"
+#include "time_step.hpp"
+
+namespace granpipe::dem {
+
+namespace {
+
+// Defaults: the reference runs of the Brazil-nut scene (../shared/bench/bnp), which give
+// Table I's restitution 0.9 between small spheres.
+constexpr double kKn = 2e5, kGammaN = 42.398;
+
+Schema material_fields() {
+  Schema m;
+  m.real("k_n", kKn, "normal stiffness").min(0.0, true).unit("force/length");
+  m.real("k_t", 2.0 / 7.0 * kKn, "tangential stiffness").min(0.0).unit("force/length");
+  m.real("gamma_n", kGammaN, "normal damping rate, times m_eff (Table I)").min(0.0).unit("1/time");
+  m.real("gamma_t", kGammaN / 2, "tangential damping rate, times m_eff").min(0.0).unit("1/time");
+  m.real("mu", 0.5, "Coulomb friction coefficient").min(0.0);
+  return m;
+}
+
+ContactMaterial material(const Params& p) {
+  return {p.real("k_n"), p.real("k_t"), p.real("gamma_n"), p.real("gamma_t"), p.real("mu")};
+}
+
+Model model_of(const Params& p) {
+  const SpeciesTable& species = p.species("species");
+  const PairTable& pairs = p.pairs("contacts");
+  Model m;
+  m.density = species.reals("density");
+  const int s = m.species();
+  m.pair.resize(static_cast<std::size_t>(s * s));
+  m.wall.resize(static_cast<std::size_t>(kWallCount * s));
+  for (int a = 0; a < s; ++a) {
+    for (int b = a; b < s; ++b) m.set_pair(a, b, material(pairs.at(a, b)));
+    m.set_walls(a, material(p.object("walls")));
+  }
+  return m;
+}
+
+Drive drive_of(const Params& p) {
+  const Params& d = p.object("drive");
+  Drive drive;
+  drive.form = d.choice<Drive::Form>("form");
+  drive.amplitude = d.real("amplitude");
+  drive.angular_frequency = 2.0 * std::numbers::pi * d.real("frequency");
+  drive.start = d.real("start");
+  return drive;
+}
+
+Settings settings_of(const PluginContext& ctx) {
+  const Params& p = ctx.params;
+  Settings s;
+  s.dt = p.real("dt");
+  const auto& g = p.reals("gravity");
+  s.gravity = Eigen::Vector3d(g[0], g[1], g[2]);
+  s.law = p.choice<ContactLaw>("law");
+  s.friction = p.boolean("friction");
+  s.rotation = p.boolean("rotation");
+  s.skin = p.real("skin");
+  s.background_damping = p.real("background_damping");
+  s.threads = ctx.threads;
+  return s;
+}
+
+// The particles of frame `index` of the start file (-1: its last).
+Frame start_frame(const PluginContext& ctx) {
+  FrameReader reader(ctx.params.string("initial_file"));
+  const std::int64_t index = ctx.params.integer("initial_frame");
+  const long frames = reader.frames();
+  if (frames == 0 || index >= frames) {
+    throw InputError(ctx.param("initial_frame") + ": expected a frame of " + reader.info().path +
+                     " (it holds " + std::to_string(frames) + "), got " + std::to_string(index));
+  }
+  Frame f = reader.read(index < 0 ? frames - 1 : static_cast<long>(index));
+  f.check(reader.info().path + ": frame " + std::to_string(index));
+  if (f.dim != 3) throw InputError(ctx.param("initial_file") + ": expected a 3D frame, got 2D");
+  return f;
+}
+
+InitialState initial_state(const Frame& f, int species) {
+  InitialState s;
+  s.position = f.position().matrix().transpose();
+  s.radius = f.radius();
+  s.species = f.species().cast<int>();
+  if (f.size() > 0 && s.species.maxCoeff() >= species) {
+    throw InputError("species: expected an entry for every species of the start frame (" +
+                     std::to_string(s.species.maxCoeff() + 1) + "), got " + std::to_string(species));
+  }
+  if (f.has("velocity")) s.velocity = f.table<double>("velocity").matrix().transpose();
+  if (f.has("angular_velocity")) {
+    s.angular_velocity = f.table<double>("angular_velocity").matrix().transpose();
+  }
+  return s;
+}
+
+// The fastest normal approach the scene can produce, for the Hertz contact time: the
+// walls' peak speed plus a free fall over the bed's height.
+double impact_speed(const Frame& f, const Drive& drive, const Settings& s) {
+  const double drop = f.size() > 0 ? f.position().col(2).maxCoeff() - f.position().col(2).minCoeff() : 0.0;
+  return std::abs(drive.amplitude * drive.angular_frequency) +
+         std::sqrt(2.0 * s.gravity.norm() * drop) + 1e-3;
+}
+
+}  // namespace
+
+Schema schema() {
+  Schema s;
+  s.path("initial_file", std::nullopt,
+         "frames file (H5MD) to start from: positions, radii, species, velocities if any, and "
+         "the container, whose walls, base and cylinder become the engine's");
+  s.integer("initial_frame", -1, "frame of initial_file to start from (-1: the last)").min(-1);
+  Schema species;
+  species.real("density", 1.91, "mass per unit volume").min(0.0, true).unit("mass/length^3");
+  s.species_table("species", species, R"([{"name": "small", "density": 1.91}])",
+                  "the species of the start frame, by index");
+  s.pair_table("contacts", "species", material_fields(), R"({"*": {}})",
+               "particle-particle contact material per species pair");
+  s.object("walls", material_fields(), "the walls' contact material (every wall, every species)");
+  Schema drive;
+  drive.choice<Drive::Form>("form", Drive::Form::OneMinusCos,
+                            "container motion z = A sin(wt), or A (1 - cos wt) from rest");
+  drive.real("amplitude", 0.0, "A").unit("length");
+  drive.real("frequency", 0.0, "f = w / 2 pi").min(0.0).unit("1/time");
+  drive.real("start", 0.0, "time the motion starts").min(0.0).unit("time");
+  s.object("drive", drive, "vibration of the whole container (base, cylinder and walls)");
+  s.choice<ContactLaw>("law", ContactLaw::Linear, "contact law: linear spring-dashpot or Hertz");
+  s.boolean("friction", true, "tangential forces with history and Coulomb's cap");
+  s.boolean("rotation", true, "angular velocities and torques");
+  s.real("dt", 2e-4, "time step (checked against the shortest contact time)").min(0.0, true).unit("time");
+  s.real("duration", 1.0, "simulated time").min(0.0, true).unit("time");
+  s.integer("save_every", 5000, "steps between emitted frames").min(1);
+  s.real("skin", 0.2, "neighbour-list skin, in smallest diameters").min(0.0, true);
+  s.real("background_damping", 0.0, "b of the force -b v on every particle").min(0.0);
+  s.reals("gravity", std::vector<double>{0.0, 0.0, -1.0}, "gravitational acceleration").length(3);
+  return s;
+}
+
+DemSource::DemSource(const PluginContext& ctx) : log_(ctx.log), progress_(ctx.progress) {
+  const Params& p = ctx.params;
+  const Frame start = start_frame(ctx);
+  const Model model = model_of(p);
+  const Settings settings = settings_of(ctx);
+  const Drive drive = drive_of(p);
+  const WallSet walls(start.container, drive);
+  const InitialState initial = initial_state(start, model.species());
+  const ContactTime shortest = smallest_contact_time(model, walls, initial.radius, initial.species,
+                                                     settings.law, impact_speed(start, drive, settings));
+  const StepCheck verdict = check_time_step(settings.dt, shortest);
+  if (verdict.verdict == StepVerdict::Refuse) throw InputError(ctx.param("dt") + ": " + verdict.message);
+  if (verdict.verdict == StepVerdict::Warn) log_.warn(ctx.param("dt") + ": " + verdict.message);
+  total_steps_ = static_cast<std::int64_t>(std::ceil(p.real("duration") / settings.dt - 1e-9));
+  save_every_ = p.integer("save_every");
+  engine_ = std::make_unique<Engine>(model, walls, settings, initial);
+  engine_->record_contacts(true);
+}
+
+FrameContent DemSource::content() const {
+  FrameContent c{.dim = 3, .contacts = true};
+  for (const char* name : {"velocity", "angular_velocity"}) {
+    c.columns.push_back(*find_standard(name, Scope::Particle));
+  }
+  for (const char* name : {"overlap", "normal_force", "tangential_force", "point"}) {
+    c.columns.push_back(*find_standard(name, Scope::Contact));
+  }
+  return c;
+}
+
+Source::Work DemSource::work() const {
+  return {static_cast<double>(total_steps_), "steps", true};
+}
+
+bool DemSource::next(Frame& frame) {
+  if (emitted_initial_) {
+    const std::int64_t steps = std::min(save_every_, total_steps_ - engine_->step());
+    if (steps <= 0) return false;
+    engine_->run(steps);
+    check_health(*engine_, std::numeric_limits<double>::infinity());
+    progress_.advance(static_cast<double>(steps));
+  }
+  emitted_initial_ = true;
+  fill_frame(*engine_, frame);
+  return true;
+}
+
+}  // namespace granpipe::dem

@@ -1,0 +1,69 @@
+// The `dem` source as a pipeline makes it: a sphere started on the base settles at the
+// overlap m g / k_n with the base's contact in its frames, and a time step above the
+// shortest contact time is refused before anything runs.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <numbers>
+
+#include "dem_source.hpp"
+#include "granpipe/frame_store.hpp"
+#include "plugin_harness.hpp"
+
+using namespace granpipe;
+namespace fs = std::filesystem;
+
+namespace {
+
+// One sphere of radius 0.5 just touching the base of an open-top box.
+fs::path start_file() {
+  const fs::path p = fs::temp_directory_path() / ("granpipe_dem_start_" + std::to_string(::getpid()) + ".h5");
+  fs::remove(p);
+  Frame f;
+  f.resize(1, 3);
+  f.radius()[0] = 0.5;
+  f.position() << 0.0, 0.0, 0.5;
+  f.container = Container::open_top_box(3, Eigen::Vector3d(-2, -2, 0), Eigen::Vector3d(2, 2, 10));
+  FrameWriter w(p, "{}");
+  w.append(f);
+  w.close();
+  return p;
+}
+
+}  // namespace
+
+TEST(DemSource, ASphereOnTheBaseSettlesAtTheOverlapOfItsWeight) {
+  const fs::path file = start_file();
+  const auto ctx = test::make_context(dem::schema(), {{"initial_file", file.string()},
+                                                      {"duration", 2.0},
+                                                      {"save_every", 5000}});
+  dem::DemSource source(*ctx);
+  Frame f;
+  std::vector<Frame> frames;
+  while (source.next(f)) frames.push_back(f);
+  ASSERT_EQ(frames.size(), 3u);  // t = 0, 1, 2
+  const Frame& last = frames.back();
+  const double mass = 1.91 * std::numbers::pi / 6.0, weight = mass * 1.0, kn = 2e5;
+  EXPECT_NEAR(0.5 - last.position()(0, 2), weight / kn, 1e-3 * weight / kn);
+  EXPECT_NEAR(last.time, 2.0, 1e-12);
+  ASSERT_TRUE(last.contacts.has_value());
+  ASSERT_EQ(last.contacts->rows(), 1);
+  EXPECT_EQ(last.contact_i()[0], 0);
+  EXPECT_EQ(last.contact_j()[0], partner::wall(Wall::ZLow));
+  const auto& normal = last.contacts->get<Coordinates>("normal_force");
+  EXPECT_NEAR(std::abs(normal(0, 2)), weight, 1e-3 * weight);
+  fs::remove(file);
+}
+
+TEST(DemSource, ATimeStepAboveTheShortestContactTimeIsRefusedNamingDt) {
+  const fs::path file = start_file();
+  try {
+    const auto ctx = test::make_context(dem::schema(), {{"initial_file", file.string()}, {"dt", 1e-2}});
+    dem::DemSource source(*ctx);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("params.dt: ", 0), 0u) << e.what();
+  }
+  fs::remove(file);
+}
