@@ -1,0 +1,62 @@
+// The Brazil-nut observables on hand-made frames whose answers are known.
+#include <gtest/gtest.h>
+
+#include "intruder_analyzer.hpp"
+#include "plugin_harness.hpp"
+
+using namespace granpipe;
+
+namespace {
+
+// An intruder of radius 1.5 at z = 4, two bed spheres of radius 0.5 at z = 0.5 and 1.5 (one
+// on the other, the lower on the base), the base lifted by the drive to z = 0.25.
+Frame bed() {
+  Frame f;
+  f.resize(3, 3);
+  f.radius() << 0.5, 1.5, 0.5;
+  f.position() << 0, 0, 0.75, 3, 0, 4.25, 0, 0, 1.75;
+  f.container = Container::open_top_box(3, Eigen::Vector3d(-5, -5, 0), Eigen::Vector3d(5, 5, 10));
+  f.container.wall_offset = Eigen::Vector3d(0, 0, 0.25);
+  f.add_contacts(2);
+  f.contact_i() << 0, 0;
+  f.contact_j() << 2, partner::wall(Wall::ZLow);
+  return f;
+}
+
+}  // namespace
+
+TEST(Intruder, HeightsAreAboveTheMovingBaseAndCoordinationCountsPairsOnly) {
+  const intruder::BedState s = intruder::measure_bed(bed(), "test");
+  EXPECT_DOUBLE_EQ(s.intruder_height, 4.0);
+  EXPECT_DOUBLE_EQ(s.bed_height, 1.0);           // mean of 0.5 and 1.5
+  EXPECT_DOUBLE_EQ(s.coordination, 2.0 / 3.0);  // one pair contact, three particles
+}
+
+TEST(Intruder, TheAnalyzerStreamsOneRowPerFrame) {
+  const auto ctx = test::make_context("intruder");
+  intruder::IntruderAnalyzer analyzer(*ctx);
+  FrameCache cache;
+  Frame f = bed();
+  analyzer.consume(f, cache);
+  f.time = 1.5;
+  f.position()(1, 2) += 1.0;
+  analyzer.consume(f, cache);
+  Results r;
+  analyzer.finish(r);
+  const Table& t = r.tables().at("per_frame");
+  ASSERT_EQ(t.rows(), 2u);
+  EXPECT_EQ(t.column("intruder_height")[1], 5.0);
+  EXPECT_EQ(t.column("time")[1], 1.5);
+}
+
+TEST(Intruder, AFrameWithoutABedIsRefused) {
+  Frame f;
+  f.resize(1, 3);
+  f.radius().setConstant(0.5);
+  try {
+    intruder::measure_bed(f, "frame 3");
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "frame 3: expected an intruder and a bed (2 particles or more), got 1");
+  }
+}
