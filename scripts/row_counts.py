@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Disks per row in layered 2D beds (docs/disks2d_tap.md, "Widths near 20").
+"""Disks per row in layered 2D beds (docs/notes/disks2d-tap-record.md, "Widths near 20").
 
 A layered bed is a stack of horizontal rows; its area fraction is the mean disk area per row
 over the width times the row spacing, so counting rows tells which stack a bed is
