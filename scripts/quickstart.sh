@@ -15,8 +15,8 @@ cmake --build build -j "$jobs"
 if [ "$mode" = "--test" ]; then
   ctest --test-dir build --output-on-failure -j "$jobs"
 else
-  # The main job is the Brazil-nut MST pipeline; until its DEM source exists, the most
-  # complete pipeline that does runs in its place.
+  # The main job is the Brazil-nut MST pipeline; until it exists (its MST analyzers are
+  # still to come), the most complete pipeline that does runs in its place.
   for p in bnp_mst tap2d_arches lattice_packing; do
     if [ -f "pipelines/$p.json" ]; then
       exec build/bin/granpipe "pipelines/$p.json" --out "out/$p" --overwrite

@@ -144,8 +144,7 @@ std::unique_ptr<Writer> frames_file(const Pipeline::Impl& p, std::size_t k, cons
 
 // The columns an analyzer publishes join the frame, for the analyzers after it and the
 // writers; the runner removes them before the source fills the next frame.
-void publish_columns(Analyzer& analyzer, Frame& frame) {
-  const std::vector<Property> declared = analyzer.publishes();
+void publish_columns(Analyzer& analyzer, const std::vector<Property>& declared, Frame& frame) {
   if (declared.empty()) return;
   PropertyTable columns(Scope::Particle, frame.size(), frame.dim);
   for (const Property& c : declared) columns.add(c);
@@ -186,13 +185,16 @@ PointOutcome run_point(const Pipeline::Impl& p, std::size_t k, PointPlugins plug
       throw InputError(p.origin + ": " + (names_part ? m : part + ": " + m));
     }
   };
+  // What each analyzer publishes, asked once rather than every frame.
+  std::vector<std::vector<Property>> published;
+  for (const auto& analyzer : plugins.analyzers) published.push_back(analyzer->publishes());
   while (located("source", [&] { return plugins.source->next(frame); })) {
     frame.check(where + " frame " + std::to_string(outcome.frames));
     cache.clear();
     for (std::size_t a = 0; a < plugins.analyzers.size(); ++a) {
       located("analyzers[" + std::to_string(a) + "]", [&] {
         plugins.analyzers[a]->consume(frame, cache);
-        publish_columns(*plugins.analyzers[a], frame);
+        publish_columns(*plugins.analyzers[a], published[a], frame);
       });
     }
     if (outcome.frames % p.frame_stride == 0) {
@@ -202,8 +204,8 @@ PointOutcome run_point(const Pipeline::Impl& p, std::size_t k, PointPlugins plug
         else located("writers[" + std::to_string(w) + "]", [&] { plugins.writers[w]->write(frame); });
       }
     }
-    for (const auto& analyzer : plugins.analyzers) {
-      for (const Property& c : analyzer->publishes()) frame.particles.remove(c.name);
+    for (const auto& columns : published) {
+      for (const Property& c : columns) frame.particles.remove(c.name);
     }
     stream.throw_if_failed();  // a full disk is the output's fault, not an analyzer's
     ++outcome.frames;

@@ -12,6 +12,7 @@ struct Declared {
   std::string group, name;
   Table empty;
   std::vector<h5::Object> columns;  // one extendable dataset per column, once open
+  std::vector<std::string> paths;   // of those datasets, for messages
 };
 
 constexpr hsize_t kChunkRows = 256;
@@ -42,8 +43,8 @@ void ResultStream::Impl::create(const Provenance& provenance) {
     h5::write_attribute(g.id(), "units", t.empty.units);
     h5::write_text_attribute(g.id(), "doc", t.empty.doc);
     for (const std::string& c : t.empty.columns) {
-      t.columns.push_back(
-          h5::create_series(file.id(), path + "/" + c, H5T_IEEE_F64LE, {}, kChunkRows));
+      t.paths.push_back(path + "/" + c);
+      t.columns.push_back(h5::create_series(file.id(), t.paths.back(), H5T_IEEE_F64LE, {}, kChunkRows));
     }
   }
   h5::check(H5Fstart_swmr_write(file.id()), "cannot start SWMR writing (is the disk full?)");
@@ -56,7 +57,7 @@ std::size_t ResultStream::declare(const std::string& group, const std::string& n
                                   const Table& empty) {
   std::lock_guard lock(mutex_);
   if (impl_->file.valid()) throw InternalError(name + ": streamed table declared after the run began");
-  impl_->tables.push_back({group, name, empty, {}});
+  impl_->tables.push_back({group, name, empty, {}, {}});
   return impl_->tables.size() - 1;
 }
 
@@ -75,8 +76,7 @@ void ResultStream::append(std::size_t id, const std::vector<double>& row) {
   try {
     h5::input_errors_of(impl_->name, [&] {
       for (std::size_t c = 0; c < row.size(); ++c) {
-        const std::string path = "/" + t.group + "/" + t.name + "/" + t.empty.columns[c];
-        h5::append_rows(t.columns[c].id(), path, H5T_NATIVE_DOUBLE, &row[c], 1);
+        h5::append_rows(t.columns[c].id(), t.paths[c], H5T_NATIVE_DOUBLE, &row[c], 1);
       }
       h5::check(H5Fflush(impl_->file.id(), H5F_SCOPE_GLOBAL), "cannot flush (is the disk full?)");
     });
@@ -93,7 +93,10 @@ void ResultStream::throw_if_failed() const {
 
 void ResultStream::close() {
   std::lock_guard lock(mutex_);
-  for (Declared& t : impl_->tables) t.columns.clear();
+  for (Declared& t : impl_->tables) {
+    t.columns.clear();
+    t.paths.clear();
+  }
   impl_->file = h5::Object();
 }
 
