@@ -49,6 +49,11 @@ void Progress::advance(double units) {
   print(false);
 }
 
+void Progress::set_status(std::string status) {
+  std::lock_guard lock(mutex_);
+  status_ = std::move(status);
+}
+
 void Progress::finish() {
   if (!enabled_) return;
   std::lock_guard lock(mutex_);
@@ -67,14 +72,16 @@ void Progress::print(bool final_line) {
     const int filled = static_cast<int>(fraction * width);
     std::string bar(filled, '#');
     bar.resize(width, '.');
-    std::fprintf(stderr, "\r%s [%s] %5.1f%% %.0f/%.0f %s, %.3g %s/s, ETA %s   ", label_.c_str(),
-                 bar.c_str(), 100 * fraction, done, total_, unit_.c_str(), rate, unit_.c_str(),
-                 format_duration(eta).c_str());
+    std::fprintf(stderr, "\r%s [%s] %5.1f%% %.0f/%.0f %s, %.3g %s/s, ETA %s%s%s   ",
+                 label_.c_str(), bar.c_str(), 100 * fraction, done, total_, unit_.c_str(), rate,
+                 unit_.c_str(), format_duration(eta).c_str(), status_.empty() ? "" : ", ",
+                 status_.c_str());
     if (final_line) std::fputc('\n', stderr);
   } else {
-    std::fprintf(stderr, "%s: %.0f/%.0f %s (%.1f%%), %.3g %s/s, elapsed %s, ETA %s\n",
+    std::fprintf(stderr, "%s: %.0f/%.0f %s (%.1f%%), %.3g %s/s, elapsed %s, ETA %s%s%s\n",
                  label_.c_str(), done, total_, unit_.c_str(), 100 * fraction, rate, unit_.c_str(),
-                 format_duration(elapsed).c_str(), final_line ? "done" : format_duration(eta).c_str());
+                 format_duration(elapsed).c_str(), final_line ? "done" : format_duration(eta).c_str(),
+                 status_.empty() ? "" : ", ", status_.c_str());
   }
   std::fflush(stderr);
 }

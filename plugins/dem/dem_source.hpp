@@ -28,13 +28,22 @@ class DemSource : public Source {
   FrameContent content() const override;
   Work work() const override;
   bool next(Frame& frame) override;
+  void finish(Results& results) override;
 
  private:
+  // Advances to the next step at which a frame is due, reporting progress as it goes.
+  void run_to(std::int64_t step);
+  void report_progress(std::int64_t steps, double seconds);
+  void record_timing(std::int64_t steps, double seconds, const StepProfile& before);
+  std::int64_t next_frame_step() const;
+
   Log& log_;
   Progress& progress_;
   std::unique_ptr<Engine> engine_;
-  std::int64_t total_steps_ = 0, save_every_ = 1;
-  bool emitted_initial_ = false;
+  std::int64_t total_steps_ = 0, save_every_ = 1, first_saved_step_ = 0;
+  double drive_frequency_ = 0.0, drive_start_ = 0.0;
+  StreamedTable timing_;
+  bool started_ = false;
 };
 
 }  // namespace granpipe::dem

@@ -1,6 +1,7 @@
 #include "engine.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -224,14 +225,35 @@ void Engine::evaluate_forces(double dt_history, double kick_dt, double velocity_
 
 void Engine::run(std::int64_t steps) {
   if (steps <= 0) return;
+  using Clock = std::chrono::steady_clock;
+  const auto seconds = [](Clock::time_point a, Clock::time_point b) {
+    return std::chrono::duration<double>(b - a).count();
+  };
   const double dt = settings_.dt;
+  auto t0 = Clock::now();
   double moved = kernels_.start_step(kick_context(dt));
+  auto t1 = Clock::now();
+  profile_.integrate += seconds(t0, t1);
   for (std::int64_t s = 0; s < steps; ++s) {
     ++step_;
-    if (moved > list_.trigger_squared()) rebuild();
+    if (moved > list_.trigger_squared()) {
+      rebuild();
+      ++profile_.rebuilds;
+      t0 = Clock::now();
+      profile_.neighbour += seconds(t1, t0);
+      t1 = t0;
+    }
     const bool last = s + 1 == steps;
-    evaluate_forces(dt, dt, time() - 0.5 * dt, last);
-    if (!last) moved = kernels_.finish_and_start(kick_context(dt));
+    evaluate_forces(dt, dt, time() - 0.5 * dt, false);
+    t0 = Clock::now();
+    profile_.forces += seconds(t1, t0);
+    if (last) {
+      kernels_.finish_step(kick_context(dt));
+    } else {
+      moved = kernels_.finish_and_start(kick_context(dt));
+    }
+    t1 = Clock::now();
+    profile_.integrate += seconds(t0, t1);
   }
 }
 

@@ -43,6 +43,16 @@ struct Settings {
   void check() const;
 };
 
+// Wall-clock seconds spent in each part of the time step since the engine was made. Pairs
+// and walls are one fused loop (each particle's wall checks follow its pairs), so they are
+// timed together.
+struct StepProfile {
+  double forces = 0.0;     // pair and wall forces
+  double integrate = 0.0;  // reactions gathered, kicks and drift
+  double neighbour = 0.0;  // list rebuilds (with the spatial sort)
+  std::int64_t rebuilds = 0;
+};
+
 class Engine {
  public:
   // Throws InputError on invalid settings, materials, walls or particles (sizes, NaN,
@@ -72,6 +82,7 @@ class Engine {
   const WallSet& walls() const { return walls_; }
   const Particles& particles() const { return p_; }
   const NeighborList& neighbors() const { return list_; }
+  const StepProfile& profile() const { return profile_; }
   // The walls' displacement at the current time.
   Eigen::Vector3d wall_offset() const { return walls_.drive().offset(time()); }
   // The neighbour-list skin as a length.
@@ -115,6 +126,7 @@ class Engine {
   std::vector<double*> wall_history_ptr_, normal_record_ptr_, tangential_record_ptr_;
   std::vector<Vectors> wall_normal_, wall_tangential_;
   bool recording_ = false;
+  StepProfile profile_;
   std::int64_t step_ = 0, recorded_step_ = -1;
 };
 

@@ -29,3 +29,15 @@ TEST(Progress, DisabledPrintsNothingButCounts) {
   EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
   EXPECT_EQ(p.done(), 2.0);
 }
+
+TEST(Progress, TheSourcesStatusFollowsTheFigures) {
+  Progress p;
+  testing::internal::CaptureStderr();
+  p.start("dem", 10, "steps");
+  p.set_status("t = 1.00, cycle 0.11, 2e+07 particle-steps/s");
+  p.advance(10);
+  p.finish();
+  const std::string out = testing::internal::GetCapturedStderr();
+  EXPECT_NE(out.find("ETA done, t = 1.00, cycle 0.11, 2e+07 particle-steps/s\n"), std::string::npos)
+      << out;
+}

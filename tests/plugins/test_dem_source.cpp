@@ -67,3 +67,59 @@ TEST(DemSource, ATimeStepAboveTheShortestContactTimeIsRefusedNamingDt) {
   }
   fs::remove(file);
 }
+
+TEST(DemSource, SaveFromEmitsOnlyTheFramesDueFromThatTimeOn) {
+  const fs::path file = start_file();
+  const auto ctx = test::make_context(dem::schema(), {{"initial_file", file.string()},
+                                                      {"duration", 2.0},
+                                                      {"save_every", 1000},
+                                                      {"save_from", 1.1}});
+  dem::DemSource source(*ctx);
+  Frame f;
+  std::vector<double> times;
+  while (source.next(f)) times.push_back(f.time);
+  // dt = 2e-4: steps 5500 .. 10000 due, frames at multiples of 1000 steps from 6000 on.
+  ASSERT_EQ(times.size(), 5u);
+  EXPECT_NEAR(times.front(), 1.2, 1e-12);
+  EXPECT_NEAR(times.back(), 2.0, 1e-12);
+  fs::remove(file);
+}
+
+TEST(DemSource, ASaveFromBeyondTheDurationIsRefusedNamingIt) {
+  const fs::path file = start_file();
+  try {
+    const auto ctx = test::make_context(dem::schema(), {{"initial_file", file.string()},
+                                                        {"duration", 1.0},
+                                                        {"save_from", 2.0}});
+    dem::DemSource source(*ctx);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "params.save_from: expected a time within the duration (1), got 2");
+  }
+  fs::remove(file);
+}
+
+TEST(DemSource, TheTimingTableCountsEveryStepOnceAndItsPartsFitInIt) {
+  const fs::path file = start_file();
+  const auto ctx = test::make_context(dem::schema(), {{"initial_file", file.string()},
+                                                      {"duration", 1.0},
+                                                      {"save_every", 2000}});
+  dem::DemSource source(*ctx);
+  Frame f;
+  while (source.next(f)) {
+  }
+  Results results;
+  source.finish(results);
+  const Table& timing = results.tables().at("timing");
+  ASSERT_EQ(timing.rows(), 3u);  // 2000, 4000, 5000 steps
+  double steps = 0.0;
+  for (std::size_t r = 0; r < timing.rows(); ++r) {
+    steps += timing.column("steps")[r];
+    const double parts = timing.column("force_seconds")[r] + timing.column("integrate_seconds")[r] +
+                         timing.column("neighbour_seconds")[r];
+    EXPECT_LE(parts, timing.column("seconds")[r]);
+  }
+  EXPECT_EQ(steps, 5000.0);
+  EXPECT_EQ(timing.column("step")[2], 5000.0);
+  fs::remove(file);
+}

@@ -15,12 +15,15 @@ class Progress {
   void start(std::string label, double total, std::string unit);
   void advance(double units = 1.0);
   void finish();
+  // A line the bar shows after its own figures (a source's simulated time, say); kept
+  // until replaced.
+  void set_status(std::string status);
   void set_enabled(bool on) { enabled_ = on; }
   double done() const { return done_.load(); }
 
  private:
   void print(bool final_line);
-  std::string label_, unit_;
+  std::string label_, unit_, status_;
   double total_ = 0;
   std::atomic<double> done_{0.0};
   bool enabled_ = true;
