@@ -1,6 +1,7 @@
 #include "frame_output.hpp"
 
 #include <algorithm>
+#include <numbers>
 #include <numeric>
 #include <vector>
 
@@ -92,6 +93,17 @@ void fill_contacts(std::vector<ContactRow>& rows, Frame& frame) {
   }
 }
 
+// The drive's phase and the container's velocity, for analyses that cut a run into cycles.
+void add_drive_observables(const Drive& drive, double t, Frame& frame) {
+  static const Property cycles{"cycles", Scope::Frame, ValueType::Real, 1, "1",
+                               "drive periods since the drive started, (t - start) f"};
+  static const Property velocity{"container_velocity", Scope::Frame, ValueType::Real, 1,
+                                 "length/time", "vertical velocity of the vibrating container"};
+  const double f = drive.angular_frequency / (2.0 * std::numbers::pi);
+  frame.set_observable(cycles, std::max(0.0, t - drive.start) * f);
+  frame.set_observable(velocity, drive.velocity(t)[2]);
+}
+
 }  // namespace
 
 void fill_frame(const Engine& engine, Frame& frame) {
@@ -106,6 +118,7 @@ void fill_frame(const Engine& engine, Frame& frame) {
   wall_contacts(engine, rows);
   fill_contacts(rows, frame);
   frame.container = engine.walls().at(engine.time());
+  add_drive_observables(engine.walls().drive(), engine.time(), frame);
   frame.time = engine.time();
   frame.step = engine.step();
 }

@@ -1,6 +1,24 @@
 #include "intruder_analyzer.hpp"
 
+#include <cmath>
+
 namespace granpipe::intruder {
+
+namespace {
+
+// Mass-weighted mean of a per-particle value over the bed (every particle but `skip`).
+// Mass ∝ density r³; the frame carries no density, and the bed's particles share one
+// species in the scenes this serves, so r³ weights them.
+double bed_mean(const Eigen::ArrayXd& weight, const Eigen::ArrayXd& value, Eigen::Index skip) {
+  return ((weight * value).sum() - weight[skip] * value[skip]) / (weight.sum() - weight[skip]);
+}
+
+long count_base_contacts(const Frame& f) {
+  if (!f.contacts) return 0;
+  return static_cast<long>((f.contact_j() == partner::wall(Wall::ZLow)).count());
+}
+
+}  // namespace
 
 BedState measure_bed(const Frame& f, const std::string& where) {
   const Eigen::Index n = f.size();
@@ -11,39 +29,68 @@ BedState measure_bed(const Frame& f, const std::string& where) {
   Eigen::Index big = 0;
   f.radius().maxCoeff(&big);
   const double base = f.container.lo[2] + f.container.wall_offset[2];
-  // Centre of mass of the bed: mass ∝ density r³; the frame carries no density, and the
-  // bed's particles share one species in the scenes this serves, so r³ weights them.
   const Eigen::ArrayXd weight = f.radius().cube();
-  const double total = weight.sum() - weight[big];
-  const double moment = (weight * f.position().col(2)).sum() - weight[big] * f.position()(big, 2);
   BedState s;
   s.intruder_height = f.position()(big, 2) - base;
-  s.bed_height = moment / total - base;
+  s.bed_height = bed_mean(weight, f.position().col(2), big) - base;
+  if (f.has("velocity")) {
+    const auto& v = f.table<double>("velocity");
+    s.intruder_velocity = v(big, 2);
+    s.bed_velocity = bed_mean(weight, v.col(2), big);
+  }
   Eigen::Index pairs = 0;
   if (f.contacts) pairs = (f.contact_j() >= 0).count();
   s.coordination = 2.0 * static_cast<double>(pairs) / static_cast<double>(n);
+  s.base_contacts = count_base_contacts(f);
+  s.stage = s.base_contacts > 0 ? Stage::Compression : Stage::Expansion;
   return s;
 }
 
 IntruderAnalyzer::IntruderAnalyzer(const PluginContext& ctx)
     : per_frame_(ctx.stream_table(
-          "per_frame", Table({"frame", "time", "intruder_height", "bed_height", "coordination"},
-                             "intruder and bed centre-of-mass heights above the base, mean "
-                             "coordination number, per frame"))) {}
+          "per_frame",
+          Table({"frame", "time", "cycles", "intruder_height", "bed_height", "intruder_velocity",
+                 "bed_velocity", "coordination", "base_contacts", "stage"},
+                "intruder and bed centre-of-mass heights above the base and vertical velocities, "
+                "mean coordination number, particles touching the base, stage (1 compression, "
+                "0 expansion), per frame; cycles = drive periods when the source counts them"))),
+      transitions_({"time", "cycles", "stage"},
+                   "moments the stage changes (midpoint of the two frames): stage 0 = lift-off "
+                   "(expansion begins), 1 = impact (compression begins)") {}
+
+FrameContent IntruderAnalyzer::needs() const {
+  FrameContent c{.dim = 3, .contacts = true};
+  c.columns.push_back(*find_standard("velocity", Scope::Particle));
+  return c;
+}
 
 void IntruderAnalyzer::consume(const Frame& frame, FrameCache&) {
   const BedState s = measure_bed(frame, "frame " + std::to_string(frames_));
-  per_frame_.add_row({static_cast<double>(frames_), frame.time, s.intruder_height, s.bed_height,
-                      s.coordination});
+  const double cycles = frame.real_observable("cycles").value_or(std::nan(""));
+  if (frames_ > 0 && s.stage != last_stage_) {
+    transitions_.add_row({0.5 * (last_time_ + frame.time), 0.5 * (last_cycles_ + cycles),
+                          static_cast<double>(s.stage)});
+  }
+  per_frame_.add_row({static_cast<double>(frames_), frame.time, cycles, s.intruder_height,
+                      s.bed_height, s.intruder_velocity, s.bed_velocity, s.coordination,
+                      static_cast<double>(s.base_contacts), static_cast<double>(s.stage)});
+  last_time_ = frame.time;
+  last_cycles_ = cycles;
+  last_stage_ = s.stage;
   ++frames_;
 }
 
 void IntruderAnalyzer::finish(Results& results) {
   results.add_table("per_frame", per_frame_.table());
+  results.add_table("transitions", transitions_);
   results.add_plot("heights", {.table = "per_frame", .x = "time",
                                .y = {"intruder_height", "bed_height"}, .xlabel = "time",
                                .ylabel = "height above the base",
                                .title = "intruder and bed centre of mass"});
+  results.add_plot("velocities", {.table = "per_frame", .x = "time",
+                                  .y = {"intruder_velocity", "bed_velocity"}, .xlabel = "time",
+                                  .ylabel = "vertical velocity",
+                                  .title = "intruder and bed centre of mass"});
   results.add_scalar("frames", static_cast<double>(frames_), std::nan(""), "", "frames measured");
 }
 

@@ -1,16 +1,31 @@
 #pragma once
-// The observables of the Brazil-nut papers' Figs. 3, 8 and 10, per frame: the height of the
-// intruder (the largest particle) and of the centre of mass of the other particles above
-// the base, which moves with the container, and the mean coordination number from the
-// frame's contact table (particle pairs only, each contact counted for both particles).
+// The observables of the Brazil-nut paper's Figs. 3, 8, 9 and 10, per frame: the heights of
+// the intruder (the largest particle) and of the centre of mass of the other particles above
+// the base, which moves with the container, their vertical velocities, the mean
+// coordination number from the frame's contact table (particle pairs only, each contact
+// counted for both particles), and the stage of the cycle.
+//
+// Stages (the paper's Sec. III.A): the bed is in its expansion stage from the moment it
+// loses contact with the vibrating base until it lands on it again, and in its compression
+// stage for the rest of the cycle. A frame is in the compression stage when any particle
+// touches the base. The moments between frames where the stage changes (lift-off and
+// impact) are reported at the midpoint of the two frames, so their resolution is the
+// interval between frames. `cycles` (drive periods) comes from the frame's observable of
+// that name (the dem source sets it); frames without it get NaN there.
 #include "granpipe/plugin.hpp"
 
 namespace granpipe::intruder {
 
+enum class Stage { Expansion = 0, Compression = 1 };
+
 struct BedState {
-  double intruder_height = 0.0;  // intruder centre above the base
-  double bed_height = 0.0;       // centre of mass of the other particles above the base
-  double coordination = 0.0;     // 2 (particle-particle contacts) / particles
+  double intruder_height = 0.0;    // intruder centre above the base
+  double bed_height = 0.0;         // centre of mass of the other particles above the base
+  double intruder_velocity = 0.0;  // vertical, in the laboratory frame
+  double bed_velocity = 0.0;       // of the other particles' centre of mass, vertical
+  double coordination = 0.0;       // 2 (particle-particle contacts) / particles
+  long base_contacts = 0;          // particles touching the base
+  Stage stage = Stage::Expansion;
 };
 
 // Throws InputError naming `where` for a frame of fewer than two particles.
@@ -19,13 +34,16 @@ BedState measure_bed(const Frame& frame, const std::string& where);
 class IntruderAnalyzer : public Analyzer {
  public:
   explicit IntruderAnalyzer(const PluginContext& ctx);
-  FrameContent needs() const override { return {.dim = 3, .contacts = true}; }
+  FrameContent needs() const override;
   void consume(const Frame& frame, FrameCache& cache) override;
   void finish(Results& results) override;
 
  private:
   StreamedTable per_frame_;
+  Table transitions_;
   long frames_ = 0;
+  double last_time_ = 0.0, last_cycles_ = 0.0;
+  Stage last_stage_ = Stage::Expansion;
 };
 
 }  // namespace granpipe::intruder

@@ -123,3 +123,20 @@ TEST(DemSource, TheTimingTableCountsEveryStepOnceAndItsPartsFitInIt) {
   EXPECT_EQ(timing.column("step")[2], 5000.0);
   fs::remove(file);
 }
+
+TEST(DemSource, FramesCarryTheDrivesCyclesAndTheContainersVelocity) {
+  const fs::path file = start_file();
+  const auto ctx = test::make_context(
+      dem::schema(), {{"initial_file", file.string()},
+                      {"duration", 1.5},
+                      {"save_every", 2500},
+                      {"drive", {{"form", "one_minus_cos"}, {"amplitude", 0.001}, {"frequency", 0.5}}}});
+  dem::DemSource source(*ctx);
+  Frame f;
+  while (source.next(f)) {
+  }
+  EXPECT_NEAR(*f.real_observable("cycles"), 0.75, 1e-12);
+  // V = A w sin(w t) at w t = 3 pi / 2.
+  EXPECT_NEAR(*f.real_observable("container_velocity"), -0.001 * std::numbers::pi, 1e-12);
+  fs::remove(file);
+}

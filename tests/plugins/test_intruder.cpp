@@ -60,3 +60,43 @@ TEST(Intruder, AFrameWithoutABedIsRefused) {
     EXPECT_STREQ(e.what(), "frame 3: expected an intruder and a bed (2 particles or more), got 1");
   }
 }
+
+TEST(Intruder, VelocitiesAreTheIntrudersAndTheBedsCentreOfMass) {
+  Frame f = bed();
+  auto& v = f.add("velocity").as<Coordinates>();
+  v.setZero();
+  v(0, 2) = 1.0;   // small, radius 0.5
+  v(1, 2) = -2.0;  // intruder
+  v(2, 2) = 3.0;   // small, radius 0.5
+  const intruder::BedState s = intruder::measure_bed(f, "test");
+  EXPECT_DOUBLE_EQ(s.intruder_velocity, -2.0);
+  EXPECT_DOUBLE_EQ(s.bed_velocity, 2.0);
+  EXPECT_EQ(s.base_contacts, 1);
+  EXPECT_EQ(s.stage, intruder::Stage::Compression);
+}
+
+TEST(Intruder, LiftOffAndImpactAreTheMidpointsOfTheFramesWhereTheBaseContactChanges) {
+  const auto ctx = test::make_context("intruder");
+  intruder::IntruderAnalyzer analyzer(*ctx);
+  const Property cycles{"cycles", Scope::Frame, ValueType::Real, 1, "1", "drive periods"};
+  FrameCache cache;
+  Frame on_base = bed();
+  Frame lifted = bed();
+  lifted.contact_j()[1] = 1;  // the base contact becomes a pair contact: nothing on the base
+  const Frame* sequence[] = {&on_base, &on_base, &lifted, &lifted, &on_base};
+  for (int k = 0; k < 5; ++k) {
+    Frame f = *sequence[k];
+    f.time = k;
+    f.set_observable(cycles, 0.1 * k);
+    analyzer.consume(f, cache);
+  }
+  Results r;
+  analyzer.finish(r);
+  const Table& t = r.tables().at("transitions");
+  ASSERT_EQ(t.rows(), 2u);
+  EXPECT_EQ(t.column("time")[0], 1.5);
+  EXPECT_EQ(t.column("stage")[0], 0.0);  // lift-off
+  EXPECT_DOUBLE_EQ(t.column("cycles")[1], 0.35);
+  EXPECT_EQ(t.column("stage")[1], 1.0);  // impact
+  EXPECT_EQ(r.tables().at("per_frame").column("stage")[2], 0.0);
+}
