@@ -70,6 +70,7 @@ Settings settings_of(const PluginContext& ctx) {
   s.rotation = p.boolean("rotation");
   s.skin = p.real("skin");
   s.background_damping = p.real("background_damping");
+  s.air_damping = p.real("air_damping");
   s.threads = ctx.threads;
   return s;
 }
@@ -150,6 +151,9 @@ Schema schema() {
          "initial state too").min(0.0).unit("time");
   s.real("skin", 0.2, "neighbour-list skin, in smallest diameters").min(0.0, true);
   s.real("background_damping", 0.0, "b of the force -b v on every particle").min(0.0);
+  s.real("air_damping", 0.0,
+         "b_air of the interstitial air's drag -b_air (v - V), V the container's velocity "
+         "(the paper's 1e-3 to 1e-2)").min(0.0);
   s.reals("gravity", std::vector<double>{0.0, 0.0, -1.0}, "gravitational acceleration").length(3);
   return s;
 }

@@ -53,6 +53,9 @@ void Settings::check() const {
   if (!(std::isfinite(background_damping) && background_damping >= 0.0)) {
     refuse("background damping", "a finite value >= 0", background_damping);
   }
+  if (!(std::isfinite(air_damping) && air_damping >= 0.0)) {
+    refuse("air damping", "a finite value >= 0", air_damping);
+  }
   if (threads < 1) refuse("threads", "at least 1", threads);
 }
 
@@ -179,6 +182,7 @@ ForceContext Engine::force_context(double dt_history, double velocity_time) {
   c.history = list_.history.data();
   c.reaction = list_.reaction.data();
   c.background_damping = settings_.background_damping;
+  c.air_damping = settings_.air_damping;
   c.dt_history = dt_history;
   c.threads = settings_.threads;
   c.force = p_.force.data();

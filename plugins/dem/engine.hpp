@@ -37,6 +37,10 @@ struct Settings {
   bool rotation = true;
   double skin = 0.2;                // neighbour-list margin, in smallest particle diameters
   double background_damping = 0.0;  // b of Eq. (7): force -b v on every particle
+  // The interstitial air's drag, -b_air (v - V): the slip velocity is taken against the
+  // container's velocity V, as if the air moved with the container (incompressible air in
+  // a closed-bottom cylinder, its flow through the pores neglected).
+  double air_damping = 0.0;
   int threads = 1;
 
   // Throws InputError naming the setting on a non-finite or out-of-range value.

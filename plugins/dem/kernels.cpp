@@ -82,7 +82,7 @@ void forces(const ForceContext& c) {
     const Vec3 wi = kRotation ? load(c.omega, i) : Vec3::Zero();
     const double ai = c.radius[i], inv_mi = c.inv_mass[i];
     const LoopMaterial* row = c.pair_material + c.species[i] * S;
-    Vec3 fi = -c.background_damping * vi;
+    Vec3 fi = -c.background_damping * vi - c.air_damping * (vi - c.wall_velocity);
     Vec3 ci = Vec3::Zero();
     for (std::int32_t k = c.first[i]; k < c.first[i + 1]; ++k) {
       const std::int32_t j = c.partner[k];

@@ -50,6 +50,7 @@ struct ForceContext {
   double* history;   // 3 per pair
   double* reaction;  // 3 or 6 per pair
   double background_damping;
+  double air_damping;  // on the slip velocity against wall_velocity
   double dt_history;
   int threads;
   // Out: force and sum of n x F_t per particle (own pairs and walls only).

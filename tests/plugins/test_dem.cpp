@@ -11,6 +11,8 @@
 #include <numeric>
 #include <set>
 #include <string>
+#include <atomic>
+#include <cstdlib>
 #include <utility>
 
 #include "diagnostics.hpp"
@@ -31,6 +33,29 @@ using granpipe::InputError;
 using granpipe::Wall;
 using Eigen::Vector3d;
 namespace partner = granpipe::partner;
+
+// Every heap allocation of this test program (operator new and Eigen both end in malloc)
+// is counted, so that a test can show that time steps allocate nothing.
+namespace {
+std::atomic<long> allocations{0};
+}  // namespace
+extern "C" {
+void* __libc_malloc(std::size_t);
+void* __libc_calloc(std::size_t, std::size_t);
+void* __libc_realloc(void*, std::size_t);
+void* malloc(std::size_t n) {
+  ++allocations;
+  return __libc_malloc(n);
+}
+void* calloc(std::size_t n, std::size_t size) {
+  ++allocations;
+  return __libc_calloc(n, size);
+}
+void* realloc(void* p, std::size_t n) {
+  ++allocations;
+  return __libc_realloc(p, n);
+}
+}
 
 namespace {
 
@@ -353,6 +378,23 @@ TEST(DemWalls, SphereOnAVibratedBaseFollowsItWithoutDrift) {
     EXPECT_LT(std::abs(position(e, 0).x()) + std::abs(position(e, 0).y()), 1e-12);
   }
   EXPECT_LT(worst, 0.01);  // of the static overlap
+}
+
+TEST(DemDamping, AirDragBringsAFallingSphereToItsTerminalSlipAgainstTheContainer) {
+  // A container rising at the steady V = A w (sine drive, w t << 1 over the run) and a sphere
+  // of mass 1 under gravity with b_air = 50: the slip v - V relaxes in m / b_air = 0.02 to
+  // -m g / b_air, whatever the container does.
+  dem::ContactMaterial m = material(kKn, 40.0, 0.5);
+  dem::Drive drive;
+  drive.form = dem::Drive::Form::Sine;
+  drive.amplitude = 1e3;
+  drive.angular_frequency = 1e-3;  // V = 1, accelerating by at most 1e-6 over the run
+  dem::Settings s = settings(1e-4, -Vector3d::UnitZ());
+  s.air_damping = 50.0;
+  dem::Engine e(one_species(m), dem::WallSet(no_walls(), drive), s, spheres({{0, 0, 0}}, {}));
+  e.run(10000);  // 50 relaxation times
+  EXPECT_NEAR(velocity(e, 0).z() - drive.velocity(e.time()).z(), -1.0 / 50.0, 1e-6);
+  EXPECT_NEAR(velocity(e, 0).x(), 0.0, 1e-15);
 }
 
 namespace {
@@ -742,4 +784,24 @@ TEST(DemFrame, RowsFollowTheCallersOrderWithContactsOfPairsAndWalls) {
   EXPECT_NEAR(contact_vector(f, "point", 2).z(), -0.5 * overlap[2], 1e-15);
   EXPECT_NEAR(contact_vector(f, "point", 1).z(), position(e, 2).z() + 0.5 - 0.5 * overlap[1],
               1e-12);
+}
+
+TEST(DemMemory, TimeStepsWithoutARebuildAllocateNothing) {
+  dem::Drive drive;
+  drive.amplitude = 1.0;
+  drive.angular_frequency = 2.0 * std::numbers::pi * 0.5;  // 4 g: the bed flies and lands
+  const long at_start = allocations.load();
+  dem::Engine e = dropped_bed(300, 3.0, settings(1e-4, -Vector3d::UnitZ()), drive);
+  ASSERT_GT(allocations.load(), at_start) << "the counter sees the engine's arrays";
+  e.run(2000);
+  long steps_without_rebuild = 0;
+  for (int k = 0; k < 5000; ++k) {
+    const std::int64_t builds = e.neighbors().builds();
+    const long before = allocations.load();
+    e.run(1);
+    if (e.neighbors().builds() != builds) continue;  // a rebuild may need more room
+    ++steps_without_rebuild;
+    ASSERT_EQ(allocations.load(), before) << "step " << e.step();
+  }
+  EXPECT_GT(steps_without_rebuild, 1000);
 }
