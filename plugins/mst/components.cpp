@@ -11,9 +11,10 @@ namespace {
 struct Component {
   std::int64_t particles = 0, edges = 0;
   std::uint32_t first = 0;  // lowest particle
-  // Larger first; ties by edges, then by the first particle, for a deterministic order.
+  // More particles first; ties by the first particle, so that components of the same
+  // particles get the same label whatever their edges.
   bool before(const Component& o) const {
-    return std::tie(o.particles, o.edges, first) < std::tie(particles, edges, o.first);
+    return std::tie(o.particles, first) < std::tie(particles, o.first);
   }
 };
 

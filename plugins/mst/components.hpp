@@ -17,8 +17,8 @@ struct TreeCounts {
 
 struct Components {
   TreeCounts counts;
-  // Per particle: its component, 0 the largest, then by size (particles, edges) and first
-  // member; -1 for a particle without edges.
+  // Per particle: its component, 0 the largest, then by particles and first member; -1
+  // for a particle without edges.
   IndexArray label;
 };
 
