@@ -75,7 +75,8 @@ std::int64_t ContactPairs::find(std::uint32_t i, std::uint32_t j) const {
 ContactPairs contact_pairs(const Frame& frame, FrameCache& cache, const ContactRule& rule) {
   ContactPairs c = frame.contacts ? from_table(frame, rule.zero_force_contacts)
                                   : by_distance(frame, cache, rule.tolerance);
-  for (const auto& [i, j] : c.pairs) c.longest = std::max(c.longest, centre_distance(frame, i, j));
+  c.length.reserve(c.pairs.size());
+  for (const auto& [i, j] : c.pairs) c.length.push_back(centre_distance(frame, i, j));
   return c;
 }
 

@@ -18,7 +18,7 @@ struct ContactPairs {
   // For each row of the frame's contact table, its entry in `pairs`, or -1 (a wall, a
   // zero force not counted); empty when the frame has no table.
   std::vector<std::int64_t> pair_of_row;
-  double longest = 0.0;  // the longest centre distance of a pair
+  std::vector<double> length;  // centre distance of each pair
   bool from_table = false;
 
   // The entry of pair (i, j) in `pairs` (either order), or -1.

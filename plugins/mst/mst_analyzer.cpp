@@ -41,10 +41,11 @@ Schema schema() {
                        "cell list, periodic sides too) or \"delaunay\" (the Delaunay "
                        "triangulation's edges, which contain the Euclidean MST; no periodic "
                        "sides); docs/mst.md says when either is exact");
-  s.real("cutoff", 1.25,
+  s.real("cutoff", 0.0,
          "candidates \"cutoff\": the largest centre distance of a candidate pair, in units of "
-         "R_i + R_j")
-      .min(0.0, true);
+         "R_i + R_j; 0: per frame, the smallest that makes every contact's selection exact "
+         "(elongation x longest contact / (2 R_min)), within [1, 3]")
+      .min(0.0);
   s.real("elongation", 1.2,
          "factor lengthening, once, every edge selected by an earlier pass before the next "
          "pass")
@@ -73,12 +74,12 @@ MstAnalyzer::MstAnalyzer(const PluginContext& ctx)
           [] {
             std::vector<std::string> columns = {"frame", "time"};
             columns.insert(columns.end(), kTableColumns.begin(), kTableColumns.end());
-            columns.push_back("exact");
+            columns.push_back("unproven_contacts");
             return Table(columns,
                          "Table II per frame and pass: the largest TCP and the other TCPs (2 "
                          "particles or more), the same of the contact network, and the share of "
-                         "contacts the passes so far selected; exact = 1 when the candidate "
-                         "graph provably gives the complete graph's TCPs");
+                         "contacts the passes so far selected; unproven_contacts: contacts "
+                         "whose selection the candidate graph is not shown to reproduce");
           }())) {}
 
 std::vector<Property> MstAnalyzer::publishes() const { return {kMstPass, kTcp}; }
@@ -94,18 +95,18 @@ void MstAnalyzer::publish(PropertyTable& columns) {
 void MstAnalyzer::consume(const Frame& frame, FrameCache& cache) {
   const std::string where = "frame " + std::to_string(frames_);
   const TcpReport r = tcp_report(frame, cache, options_, where);
-  if (!r.exact && !warned_inexact_) {
+  if (r.unproven > 0 && !warned_inexact_) {
     warned_inexact_ = true;
-    log_.warn("mst: " + where + ": the longest contact (" + number(r.longest_contact) +
-              ") times the elongation is not below " + number(r.complete_below) +
-              ", the length below which the candidate graph holds every pair: TCPs of later "
-              "passes may differ from the complete graph's (docs/mst.md; raise cutoff)");
+    log_.warn("mst: " + where + ": " + std::to_string(r.unproven) +
+              " contacts, lengthened, are not shorter than " + number(r.complete_below) +
+              ", below which the candidate graph holds every pair: their selection may differ "
+              "from the MST of all pairs (docs/mst.md; column unproven_contacts)");
   }
   for (const PassRow& p : r.passes) {
     std::vector<double> row = {static_cast<double>(frames_), frame.time};
     const std::vector<double> counts = table_row(r, p);
     row.insert(row.end(), counts.begin(), counts.end());
-    row.push_back(r.exact ? 1.0 : 0.0);
+    row.push_back(static_cast<double>(r.unproven));
     per_frame_.add_row(row);
   }
   keep_if_most_loaded(frame, loaded_contacts(frame, cache, options_.contacts.tolerance), r);

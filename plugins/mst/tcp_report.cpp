@@ -33,12 +33,33 @@ std::vector<Edge> renumbered(std::vector<Edge> edges, const std::vector<std::uin
 // Below which length every pair is a candidate: cutoff x (2 R_min) for "cutoff"; for
 // "delaunay", sqrt(2) x the shortest centre distance (such a pair's diametral sphere holds
 // no other centre, so the pair is a Delaunay edge).
-double complete_below(const Frame& f, const MstOptions& o, const std::vector<Edge>& edges) {
+double complete_below(const Frame& f, const MstOptions& o, double cutoff,
+                      const std::vector<Edge>& edges) {
   if (f.size() < 2) return 0.0;
-  if (o.candidates == Candidates::Cutoff) return o.cutoff * 2.0 * f.radius().minCoeff();
+  if (o.candidates == Candidates::Cutoff) return cutoff * 2.0 * f.radius().minCoeff();
   double shortest = INFINITY;
   for (const Edge& e : edges) shortest = std::min(shortest, e.weight);
   return std::sqrt(2.0) * shortest;
+}
+
+// The largest weight a contact reaches: lengthened once when there is a second pass.
+double stretch(const MstOptions& o) { return o.passes > 1 ? o.elongation : 1.0; }
+
+// The smallest cutoff under which every contact is proven (a little above, since the
+// candidates are the pairs strictly below), at least 1 and at most kMaxAutoCutoff, so that a
+// few very large particles cannot make the candidate graph (nearly) complete.
+constexpr double kMaxAutoCutoff = 3.0;
+double auto_cutoff(const Frame& f, const MstOptions& o, const ContactPairs& c) {
+  if (f.size() < 2 || c.length.empty()) return 1.0;
+  const double longest = *std::max_element(c.length.begin(), c.length.end());
+  const double needed = stretch(o) * longest / (2.0 * f.radius().minCoeff()) * (1.0 + 1e-9);
+  return std::clamp(needed, 1.0, kMaxAutoCutoff);
+}
+
+std::int64_t unproven(const MstOptions& o, const TcpReport& r) {
+  if (o.candidates == Candidates::Delaunay && o.passes == 1) return 0;  // the EMST itself
+  return std::count_if(r.pairs.length.begin(), r.pairs.length.end(),
+                       [&](double l) { return !(stretch(o) * l < r.complete_below); });
 }
 
 }  // namespace
@@ -52,13 +73,11 @@ TcpReport tcp_report(const Frame& frame, FrameCache& cache, const MstOptions& op
   r.network = components(n, r.pairs.pairs).counts;
   r.first_pass.assign(r.pairs.pairs.size(), 0);
 
-  std::vector<Edge> edges = candidate_edges(frame, options.candidates, options.cutoff, where);
+  r.cutoff = options.cutoff > 0.0 ? options.cutoff : auto_cutoff(frame, options, r.pairs);
+  std::vector<Edge> edges = candidate_edges(frame, options.candidates, r.cutoff, where);
   r.candidate_edges = edges.size();
-  r.longest_contact = r.pairs.longest;
-  r.complete_below = complete_below(frame, options, edges);
-  const bool pass1_only_delaunay = options.candidates == Candidates::Delaunay && options.passes == 1;
-  const double heaviest = (options.passes > 1 ? options.elongation : 1.0) * r.longest_contact;
-  r.exact = pass1_only_delaunay || r.contacts == 0 || heaviest < r.complete_below;
+  r.complete_below = complete_below(frame, options, r.cutoff, edges);
+  r.unproven = unproven(options, r);
 
   const std::vector<std::uint32_t> row_of = rows_by_id(frame);
   std::vector<std::uint32_t> number_of_row(row_of.size());

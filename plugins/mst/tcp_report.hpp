@@ -15,7 +15,7 @@ namespace granpipe::mst {
 
 struct MstOptions {
   Candidates candidates = Candidates::Cutoff;
-  double cutoff = 1.25;
+  double cutoff = 0.0;  // 0: the smallest that proves every contact's selection, capped
   double elongation = 1.2;
   int passes = 5;
   ContactRule contacts{};
@@ -32,11 +32,11 @@ struct TcpReport {
   TreeCounts network;        // of all contact pairs
   std::int64_t contacts = 0;  // pairs in contact
   std::size_t candidate_edges = 0;
-  // True when every contacting edge's selection is provably that of the MST over all
-  // pairs (docs/mst.md): (elongation) x (longest contact) below the shortest pair the
-  // candidate graph may miss.
-  bool exact = false;
-  double longest_contact = 0.0, complete_below = 0.0;
+  double cutoff = 0.0;  // candidates "cutoff": the factor used
+  // Every pair shorter than this is a candidate; a contact whose weight stays below it in
+  // every pass is selected exactly as by the MST of all pairs (docs/mst.md).
+  double complete_below = 0.0;
+  std::int64_t unproven = 0;  // contacts for which that is not shown
   // Per contact pair (ContactPairs::pairs): the first pass that selected it, 0 if none.
   std::vector<int> first_pass;
   ContactPairs pairs;

@@ -196,7 +196,7 @@ TEST(Mst, PassOneTcpsAreTreesOnTheContactNetworksParticles) {
   // Every TCP a tree: edges = particles - trees.
   const std::int64_t in_tcps = (r.tcp >= 0).count(), trees = r.tcp.maxCoeff() + 1;
   EXPECT_EQ(r.passes[0].selected, in_tcps - trees);
-  EXPECT_TRUE(r.exact);
+  EXPECT_EQ(r.unproven, 0);
 }
 
 TEST(Mst, Figure13TheSecondPassClosesTheTriangle) {
@@ -225,6 +225,22 @@ TEST(Mst, Figure13TheSecondPassClosesTheTriangle) {
     const std::vector<int> first_pass = {1, 2, 1, 1};  // pairs 0-1, 0-2, 1-2, 3-4
     EXPECT_EQ(r.first_pass, first_pass);
   }
+}
+
+TEST(Mst, TheAutomaticCutoffProvesEveryContactAndAFixedOneSaysWhatItDoesNot) {
+  FrameCache cache;
+  const TcpReport automatic = tcp_report(figure_13(), cache, options(Candidates::Cutoff, 2), "t");
+  // 1.2 x the longest contact (0.979) / (2 x 0.5): E(3,4) = 1.22 is no longer a candidate,
+  // and the TCPs are those of Fig. 13 all the same.
+  EXPECT_NEAR(automatic.cutoff, 1.2 * 0.979, 1e-3);
+  EXPECT_EQ(automatic.unproven, 0);
+  EXPECT_EQ(automatic.recovered(automatic.passes[1]), 1.0);
+
+  MstOptions fixed = options(Candidates::Cutoff, 2);
+  fixed.cutoff = 1.0;  // every pair below 1.0; the contacts, lengthened, are longer
+  EXPECT_EQ(tcp_report(figure_13(), cache, fixed, "t").unproven, 4);
+  fixed.passes = 1;  // not lengthened: all shorter than 1.0
+  EXPECT_EQ(tcp_report(figure_13(), cache, fixed, "t").unproven, 0);
 }
 
 TEST(Mst, ZeroForceContactsCountWhenAsked) {
