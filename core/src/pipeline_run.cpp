@@ -143,19 +143,37 @@ std::unique_ptr<Writer> frames_file(const Pipeline::Impl& p, std::size_t k, cons
 }
 
 // The columns an analyzer publishes join the frame, for the analyzers after it and the
-// writers; the runner removes them before the source fills the next frame.
-void publish_columns(Analyzer& analyzer, const std::vector<Property>& declared, Frame& frame) {
-  if (declared.empty()) return;
-  PropertyTable columns(Scope::Particle, frame.size(), frame.dim);
-  for (const Property& c : declared) columns.add(c);
+// writers; the runner removes them before the source fills the next frame. Contact columns
+// join only a frame that has a contact table.
+void publish_scope(Analyzer& analyzer, const std::vector<Property>& declared, Scope scope,
+                   PropertyTable& table, int dim) {
+  PropertyTable columns(scope, table.rows(), dim);
+  for (const Property& c : declared) {
+    if (c.scope == scope) columns.add(c);
+  }
+  if (columns.size() == 0) return;
   analyzer.publish(columns);
   for (std::size_t k = 0; k < columns.size(); ++k) {
     Column& c = columns.column(k);
-    if (c.rows() != frame.size() || c.components() != c.property().components_in(frame.dim)) {
+    if (c.rows() != table.rows() || c.components() != c.property().components_in(dim)) {
       throw InternalError("published column \"" + c.name() + "\" was resized");
     }
-    frame.particles.remove(c.name());  // the source's column of that name, if any
-    frame.particles.add(c.property()).storage() = std::move(c.storage());
+    table.remove(c.name());  // the source's column of that name, if any
+    table.add(c.property()).storage() = std::move(c.storage());
+  }
+}
+
+void publish_columns(Analyzer& analyzer, const std::vector<Property>& declared, Frame& frame) {
+  if (declared.empty()) return;
+  publish_scope(analyzer, declared, Scope::Particle, frame.particles, frame.dim);
+  if (frame.contacts) publish_scope(analyzer, declared, Scope::Contact, *frame.contacts, frame.dim);
+}
+
+// Removes what publish_columns added.
+void remove_published(const std::vector<Property>& declared, Frame& frame) {
+  for (const Property& c : declared) {
+    if (c.scope == Scope::Particle) frame.particles.remove(c.name);
+    if (c.scope == Scope::Contact && frame.contacts) frame.contacts->remove(c.name);
   }
 }
 
@@ -204,9 +222,7 @@ PointOutcome run_point(const Pipeline::Impl& p, std::size_t k, PointPlugins plug
         else located("writers[" + std::to_string(w) + "]", [&] { plugins.writers[w]->write(frame); });
       }
     }
-    for (const auto& columns : published) {
-      for (const Property& c : columns) frame.particles.remove(c.name);
-    }
+    for (const auto& columns : published) remove_published(columns, frame);
     stream.throw_if_failed();  // a full disk is the output's fault, not an analyzer's
     ++outcome.frames;
     if (!source_reports) progress.advance(1);

@@ -36,6 +36,58 @@ class LineSource : public Source {
   std::int64_t emitted_ = 0;
 };
 
+// The line with a contact between neighbours (4 contacts).
+class ChainSource : public LineSource {
+ public:
+  using LineSource::LineSource;
+  FrameContent content() const override { return {.dim = 3, .contacts = true}; }
+  bool next(Frame& f) override {
+    if (!LineSource::next(f)) return false;
+    f.add_contacts(4);
+    f.contact_i() = IndexArray::LinSpaced(4, 0, 3);
+    f.contact_j() = IndexArray::LinSpaced(4, 1, 4);
+    return true;
+  }
+};
+
+const Property kBond{"bond", Scope::Contact, ValueType::Integer, 1, "", "contact row times 10"};
+
+// Publishes a particle column and a contact column: bond = 10 * contact row.
+class BondLabeller : public Analyzer {
+ public:
+  explicit BondLabeller(const PluginContext&) {}
+  void consume(const Frame& f, FrameCache&) override {
+    particles_ = f.size();
+    contacts_ = f.contacts ? f.contacts->rows() : 0;
+  }
+  void finish(Results&) override {}
+  std::vector<Property> publishes() const override { return {kLabel, kBond}; }
+  void publish(PropertyTable& columns) override {
+    if (columns.scope() == Scope::Contact) {
+      columns.get<IndexArray>("bond") = 10 * IndexArray::LinSpaced(contacts_, 0, contacts_ - 1);
+    } else {
+      columns.get<IndexArray>("label") = IndexArray::Constant(particles_, 1);
+    }
+  }
+
+ private:
+  Eigen::Index particles_ = 0, contacts_ = 0;
+};
+
+// Needs the bond column and reports the sum of bonds over all frames it saw.
+class BondSum : public Analyzer {
+ public:
+  explicit BondSum(const PluginContext&) {}
+  FrameContent needs() const override { return {.contacts = true, .columns = {kBond}}; }
+  void consume(const Frame& f, FrameCache&) override {
+    sum_ += f.contacts->get<IndexArray>("bond").sum();
+  }
+  void finish(Results& r) override { r.add_scalar("label_sum", static_cast<double>(sum_)); }
+
+ private:
+  std::int64_t sum_ = 0;
+};
+
 // Publishes label = 3 * index, computed in consume as a real analyzer would.
 class Labeller : public Analyzer {
  public:
@@ -69,6 +121,9 @@ Registry registry_with_h5md() {
   r.add_source<LineSource>("line", "five particles on a line", Schema{});
   r.add_analyzer<Labeller>("labeller", "publishes label", Schema{});
   r.add_analyzer<LabelSum>("label_sum", "sums label", Schema{});
+  r.add_source<ChainSource>("chain", "five particles on a line, neighbours in contact", Schema{});
+  r.add_analyzer<BondLabeller>("bond_labeller", "publishes label and bond", Schema{});
+  r.add_analyzer<BondSum>("bond_sum", "sums bond", Schema{});
   return r;
 }
 
@@ -145,4 +200,29 @@ TEST(PublishedColumns, AColumnTheFramesCarryCannotBePublishedAgain) {
   EXPECT_EQ(refusal_of(R"([{"plugin": "labeller"}, {"plugin": "labeller", "name": "again"}])"),
             "p.json: analyzers[1]: analyzer \"labeller\" publishes the column \"label\", which the "
             "frames already carry");
+}
+
+TEST(PublishedColumns, ContactColumnsJoinTheContactTableAndAreWritten) {
+  const Registry r = registry_with_h5md();
+  const fs::path out = fresh_dir("contacts");
+  // 2 frames x (0 + 10 + 20 + 30)
+  EXPECT_EQ(run_label_sum(R"({"source": {"plugin": "chain"},
+      "analyzers": [{"plugin": "bond_labeller"}, {"plugin": "bond_sum", "name": "label_sum"}]})", r, out), 120.0);
+  FrameReader saved(out / "frames.h5");
+  const Frame f = saved.read(1);
+  ASSERT_TRUE(f.contacts && f.contacts->has("bond"));
+  EXPECT_EQ(f.contacts->get<IndexArray>("bond")[3], 30);
+  EXPECT_EQ(f.get<std::int64_t>("label")[4], 1);
+  fs::remove_all(out);
+}
+
+TEST(PublishedColumns, ContactColumnsAreLeftOutOfFramesWithoutContacts) {
+  const Registry r = registry_with_h5md();
+  const fs::path out = fresh_dir("no_contacts");
+  // The particle column is published; the contact column has no table to join.
+  EXPECT_EQ(run_label_sum(R"({"source": {"plugin": "line"},
+      "analyzers": [{"plugin": "bond_labeller"}, {"plugin": "label_sum"}]})", r, out), 10.0);
+  FrameReader saved(out / "frames.h5");
+  EXPECT_FALSE(saved.read(0).contacts.has_value());
+  fs::remove_all(out);
 }

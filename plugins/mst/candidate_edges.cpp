@@ -1,0 +1,45 @@
+#include "candidate_edges.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include "granpipe/cell_list.hpp"
+#include "granpipe/errors.hpp"
+
+namespace granpipe::mst {
+
+namespace {
+
+void check_particle_count(const Frame& frame, const std::string& where) {
+  if (static_cast<std::uint64_t>(frame.size()) >= std::numeric_limits<std::uint32_t>::max()) {
+    throw InputError(where + ": expected fewer than 2^32 particles for the MST, got " +
+                     std::to_string(frame.size()));
+  }
+}
+
+}  // namespace
+
+std::vector<Edge> cutoff_edges(const Frame& frame, double factor, const std::string& where) {
+  std::vector<Edge> edges;
+  if (frame.size() < 2) return edges;
+  const Eigen::ArrayXd& r = frame.radius();
+  const CellList cells(frame.position(), frame.container, frame.dim, 2.0 * factor * r.maxCoeff(),
+                       where);
+  cells.for_each_pair([&](int i, int j, const double*, double r2) {
+    const double reach = factor * (r[i] + r[j]);
+    if (r2 < reach * reach) {
+      edges.push_back({std::sqrt(r2), static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
+    }
+  });
+  return edges;
+}
+
+std::vector<Edge> candidate_edges(const Frame& frame, Candidates kind, double cutoff_factor,
+                                  const std::string& where) {
+  check_particle_count(frame, where);
+  if (kind == Candidates::Delaunay) return delaunay_edges(frame, where);
+  return cutoff_edges(frame, cutoff_factor, where);
+}
+
+}  // namespace granpipe::mst

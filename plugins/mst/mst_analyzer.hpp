@@ -1,0 +1,40 @@
+#pragma once
+// The `mst` analyzer: the multipass minimum spanning tree of the paper's Sec. III.C on
+// every frame, with Table II (TCPs against the contact network, per pass) streamed per
+// frame and written for the frame with the most loaded contacts. Publishes, per contact,
+// the first pass that selected it (mst_pass) and, per particle, its TCP after the last pass.
+#include <vector>
+
+#include "granpipe/plugin.hpp"
+#include "tcp_report.hpp"
+
+namespace granpipe::mst {
+
+Schema schema();
+
+class MstAnalyzer : public Analyzer {
+ public:
+  explicit MstAnalyzer(const PluginContext& ctx);
+  void consume(const Frame& frame, FrameCache& cache) override;
+  void finish(Results& results) override;
+  std::vector<Property> publishes() const override;
+  void publish(PropertyTable& columns) override;
+
+ private:
+  void keep_if_most_loaded(const Frame& frame, std::int64_t loaded, const TcpReport& report);
+
+  Log& log_;
+  MstOptions options_;
+  long frames_ = 0;
+  bool warned_inexact_ = false;
+  StreamedTable per_frame_;
+  // Table II of the frame with the most loaded contacts (the first of equals).
+  Table table_ii_;
+  std::int64_t most_loaded_ = -1;
+  long chosen_frame_ = -1;
+  double chosen_time_ = 0.0;
+  // Of the last frame, for publish().
+  IndexArray mst_pass_, tcp_;
+};
+
+}  // namespace granpipe::mst
