@@ -142,20 +142,41 @@ std::unique_ptr<Writer> frames_file(const Pipeline::Impl& p, std::size_t k, cons
                                             provenance.dump());
 }
 
-// The columns an analyzer publishes join the frame, for the analyzers after it and the
-// writers; the runner removes them before the source fills the next frame.
-void publish_columns(Analyzer& analyzer, const std::vector<Property>& declared, Frame& frame) {
-  if (declared.empty()) return;
-  PropertyTable columns(Scope::Particle, frame.size(), frame.dim);
-  for (const Property& c : declared) columns.add(c);
+// Publishes the declared columns of `target`'s scope into it: the analyzer fills a
+// zero-filled table of exactly those columns, which then replace any of the same name.
+void publish_into(Analyzer& analyzer, const std::vector<Property>& declared, PropertyTable& target,
+                  int dim) {
+  PropertyTable columns(target.scope(), target.rows(), dim);
+  for (const Property& c : declared) {
+    if (c.scope == target.scope()) columns.add(c);
+  }
+  if (columns.size() == 0) return;
   analyzer.publish(columns);
   for (std::size_t k = 0; k < columns.size(); ++k) {
     Column& c = columns.column(k);
-    if (c.rows() != frame.size() || c.components() != c.property().components_in(frame.dim)) {
+    if (c.rows() != target.rows() || c.components() != c.property().components_in(dim)) {
       throw InternalError("published column \"" + c.name() + "\" was resized");
     }
-    frame.particles.remove(c.name());  // the source's column of that name, if any
-    frame.particles.add(c.property()).storage() = std::move(c.storage());
+    target.remove(c.name());  // the source's column of that name, if any
+    target.add(c.property()).storage() = std::move(c.storage());
+  }
+}
+
+// The columns an analyzer publishes join the frame (particle columns its particle table,
+// contact columns its contact table, when it has one), for the analyzers after it and the
+// writers; the runner removes them before the source fills the next frame.
+void publish_columns(Analyzer& analyzer, const std::vector<Property>& declared, Frame& frame) {
+  if (declared.empty()) return;
+  publish_into(analyzer, declared, frame.particles, frame.dim);
+  if (frame.contacts) publish_into(analyzer, declared, *frame.contacts, frame.dim);
+}
+
+void remove_published(const std::vector<std::vector<Property>>& published, Frame& frame) {
+  for (const auto& columns : published) {
+    for (const Property& c : columns) {
+      if (c.scope == Scope::Particle) frame.particles.remove(c.name);
+      else if (c.scope == Scope::Contact && frame.contacts) frame.contacts->remove(c.name);
+    }
   }
 }
 
@@ -204,9 +225,7 @@ PointOutcome run_point(const Pipeline::Impl& p, std::size_t k, PointPlugins plug
         else located("writers[" + std::to_string(w) + "]", [&] { plugins.writers[w]->write(frame); });
       }
     }
-    for (const auto& columns : published) {
-      for (const Property& c : columns) frame.particles.remove(c.name);
-    }
+    remove_published(published, frame);
     stream.throw_if_failed();  // a full disk is the output's fault, not an analyzer's
     ++outcome.frames;
     if (!source_reports) progress.advance(1);

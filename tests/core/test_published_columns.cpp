@@ -63,12 +63,62 @@ class LabelSum : public Analyzer {
   std::int64_t sum_ = 0;
 };
 
+const Property kPairSum{"pair_sum", Scope::Contact, ValueType::Integer, 1, "", "i + j"};
+
+// The line source's frame with its neighbours in contact: contacts (0,1) ... (3,4).
+class ChainSource : public LineSource {
+ public:
+  explicit ChainSource(const PluginContext& c) : LineSource(c) {}
+  FrameContent content() const override { return {.dim = 3, .contacts = true}; }
+  bool next(Frame& f) override {
+    if (!LineSource::next(f)) return false;
+    f.radius().setConstant(1.0);
+    f.add_contacts(4);
+    f.contact_i() = IndexArray::LinSpaced(4, 0, 3);
+    f.contact_j() = IndexArray::LinSpaced(4, 1, 4);
+    return true;
+  }
+};
+
+// Publishes the contact column pair_sum = i + j.
+class PairLabeller : public Analyzer {
+ public:
+  explicit PairLabeller(const PluginContext&) {}
+  void consume(const Frame& f, FrameCache&) override { sums_ = f.contact_i() + f.contact_j(); }
+  void finish(Results&) override {}
+  std::vector<Property> publishes() const override { return {kPairSum}; }
+  void publish(PropertyTable& columns) override {
+    EXPECT_EQ(columns.scope(), Scope::Contact);
+    columns.get<IndexArray>("pair_sum") = sums_;
+  }
+
+ private:
+  IndexArray sums_;
+};
+
+// Needs the contact column pair_sum and reports its sum over all frames it saw.
+class PairSum : public Analyzer {
+ public:
+  explicit PairSum(const PluginContext&) {}
+  FrameContent needs() const override { return {.contacts = true, .columns = {kPairSum}}; }
+  void consume(const Frame& f, FrameCache&) override {
+    sum_ += f.contacts->get<IndexArray>("pair_sum").sum();
+  }
+  void finish(Results& r) override { r.add_scalar("label_sum", static_cast<double>(sum_)); }
+
+ private:
+  std::int64_t sum_ = 0;
+};
+
 Registry registry_with_h5md() {
   Registry r;
   load_plugins(r, plugin_search_path());  // the real h5md source
   r.add_source<LineSource>("line", "five particles on a line", Schema{});
   r.add_analyzer<Labeller>("labeller", "publishes label", Schema{});
   r.add_analyzer<LabelSum>("label_sum", "sums label", Schema{});
+  r.add_source<ChainSource>("chain", "five particles on a line, neighbours in contact", Schema{});
+  r.add_analyzer<PairLabeller>("pair_labeller", "publishes pair_sum", Schema{});
+  r.add_analyzer<PairSum>("pair_sum", "sums pair_sum", Schema{});
   return r;
 }
 
@@ -79,14 +129,16 @@ fs::path fresh_dir(const std::string& name) {
   return d;
 }
 
-double run_label_sum(const std::string& text, const Registry& r, const fs::path& out) {
+// The label_sum the analyzer `summer` reports.
+double run_label_sum(const std::string& text, const Registry& r, const fs::path& out,
+                     const std::string& summer = "label_sum") {
   const Pipeline p = Pipeline::parse(text, "p.json", {}, r);
   Log log;
   log.set_quiet(true);
   RunOptions o;
   o.progress = false;
   o.out = out;
-  return p.run(o, log).results.at("label_sum").scalar("label_sum").value;
+  return p.run(o, log).results.at(summer).scalar("label_sum").value;
 }
 
 // The message of a pipeline of the line source and these analyzers refused by check().
@@ -133,6 +185,22 @@ TEST(PublishedColumns, SeenByLaterAnalyzersWrittenAndReadBackByTheH5mdSource) {
   fs::remove_all(third);
   fs::remove_all(first);
   fs::remove_all(second);
+}
+
+TEST(PublishedColumns, AContactColumnIsSeenByLaterAnalyzersAndWritten) {
+  const Registry r = registry_with_h5md();
+  const fs::path out = fresh_dir("contact");
+  // 2 frames x (1 + 3 + 5 + 7)
+  EXPECT_EQ(run_label_sum(R"({"source": {"plugin": "chain"},
+      "analyzers": [{"plugin": "pair_labeller"}, {"plugin": "pair_sum"}]})", r, out, "pair_sum"),
+            32.0);
+
+  FrameReader saved(out / "frames.h5");
+  const Frame f = saved.read(1);
+  ASSERT_TRUE(f.contacts && f.contacts->has("pair_sum"));
+  EXPECT_EQ(f.contacts->get<IndexArray>("pair_sum")[3], 7);
+  EXPECT_FALSE(f.has("pair_sum"));  // not a particle column
+  fs::remove_all(out);
 }
 
 TEST(PublishedColumns, PipelineOrderDecidesWhoSeesAColumn) {

@@ -95,11 +95,14 @@ class Analyzer {
   virtual void consume(const Frame& frame, FrameCache& cache) = 0;
   virtual void finish(Results& results) = 0;
 
-  // Per-particle columns this analyzer adds to each frame (arch membership, a local
-  // packing fraction): analyzers after it in the pipeline, and the writers, see them.
+  // Per-particle or per-contact columns this analyzer adds to each frame (arch membership,
+  // a local packing fraction, a contact label): analyzers after it in the pipeline, and
+  // the writers, see them.
   virtual std::vector<Property> publishes() const { return {}; }
-  // Called right after consume() when publishes() is not empty: fill `columns` (a table
-  // of the frame's particles holding exactly the declared columns, zero-filled).
+  // Called right after consume() when publishes() is not empty, once per scope that has
+  // declared columns (contact columns only when the frame has contacts): fill `columns`
+  // (a table of the frame's particles, or of its contacts, as columns.scope() says,
+  // holding exactly the declared columns of that scope, zero-filled).
   virtual void publish(PropertyTable& /*columns*/) {}
 };
 

@@ -30,7 +30,8 @@ class RadiusStats : public granpipe::Analyzer {
   }
 
   // Optional: per-particle results as new columns, seen by the analyzers after this one
-  // and by the writers (frames.h5 among them).
+  // and by the writers (frames.h5 among them). Per-contact columns (Scope::Contact) work
+  // the same way: publish() is then called once more, with columns.scope() == Scope::Contact.
   std::vector<granpipe::Property> publishes() const override {
     return {{"scaled_radius", granpipe::Scope::Particle, granpipe::ValueType::Real, 1, "length",
              "particle radius times scale"}};
