@@ -45,7 +45,13 @@ Coordinates contact_points(const Frame& frame, const std::vector<Eigen::Index>& 
   }
   const Coordinates& point = frame.contacts->get<Coordinates>("point");
   Coordinates out(static_cast<Eigen::Index>(rows.size()), point.cols());
-  for (std::size_t k = 0; k < rows.size(); ++k) out.row(static_cast<Eigen::Index>(k)) = point.row(rows[k]);
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    if (!point.row(rows[k]).allFinite()) {
+      throw InputError(where + ": contact " + std::to_string(rows[k]) +
+                       ": expected a finite contact point, got a NaN or infinite coordinate");
+    }
+    out.row(static_cast<Eigen::Index>(k)) = point.row(rows[k]);
+  }
   return out;
 }
 

@@ -110,6 +110,30 @@ bool read_solution(gsl_multifit_nlinear_workspace* w, const Problem& problem, Pd
   return finite && fit.covariance.allFinite();
 }
 
+// Runs the trust-region minimiser from `start`; true when it converged to finite values
+// and errors, which it leaves in `fit` (whose dof is set).
+bool minimise(Problem& problem, const Parameters& start, PdfFit& fit) {
+  gsl_reports_by_return_codes();
+  const std::size_t n = problem.pdf.bins(), p = problem.moved.size();
+  gsl_multifit_nlinear_fdf fdf{};
+  fdf.f = residuals;
+  fdf.df = jacobian;
+  fdf.n = n;
+  fdf.p = p;
+  fdf.params = &problem;
+  const gsl_multifit_nlinear_parameters settings = gsl_multifit_nlinear_default_parameters();
+  const std::unique_ptr<gsl_multifit_nlinear_workspace, WorkspaceFree> w(
+      gsl_multifit_nlinear_alloc(gsl_multifit_nlinear_trust, &settings, n, p));
+  std::vector<double> x;
+  for (int q : problem.moved) x.push_back(start[q]);
+  gsl_vector_view x0 = gsl_vector_view_array(x.data(), p);
+  int info = 0;
+  return gsl_multifit_nlinear_init(&x0.vector, &fdf, w.get()) == GSL_SUCCESS &&
+         gsl_multifit_nlinear_driver(500, 1e-10, 1e-10, 0.0, nullptr, nullptr, &info, w.get()) ==
+             GSL_SUCCESS &&
+         read_solution(w.get(), problem, fit);
+}
+
 }  // namespace
 
 double eq13(const Parameters& p, double f) {
@@ -136,30 +160,12 @@ PdfFit fit_pdf(const ForcePdf& pdf, const FitRequest& request) {
   const std::size_t n = pdf.bins(), p = problem.moved.size();
   if (pdf.samples < request.min_samples || n <= p || p == 0) return fit;
   fit.dof = static_cast<int>(n - p);
-  gsl_reports_by_return_codes();
-
-  gsl_multifit_nlinear_fdf fdf{};
-  fdf.f = residuals;
-  fdf.df = jacobian;
-  fdf.n = n;
-  fdf.p = p;
-  fdf.params = &problem;
-  const gsl_multifit_nlinear_parameters settings = gsl_multifit_nlinear_default_parameters();
-  const std::unique_ptr<gsl_multifit_nlinear_workspace, WorkspaceFree> w(
-      gsl_multifit_nlinear_alloc(gsl_multifit_nlinear_trust, &settings, n, p));
-  std::vector<double> start;
-  for (int q : problem.moved) start.push_back(request.start[q]);
-  gsl_vector_view x0 = gsl_vector_view_array(start.data(), p);
-  int info = 0;
-  const bool converged =
-      gsl_multifit_nlinear_init(&x0.vector, &fdf, w.get()) == GSL_SUCCESS &&
-      gsl_multifit_nlinear_driver(500, 1e-10, 1e-10, 0.0, nullptr, nullptr, &info, w.get()) ==
-          GSL_SUCCESS;
-  fit.status = converged && read_solution(w.get(), problem, fit) ? FitStatus::Fitted
-                                                                  : FitStatus::NotConverged;
-  if (fit.fitted()) return fit;
+  if (minimise(problem, request.start, fit)) {
+    fit.status = FitStatus::Fitted;
+    return fit;
+  }
   PdfFit none;  // no values from a failed minimisation
-  none.status = fit.status;
+  none.status = FitStatus::NotConverged;
   return none;
 }
 

@@ -172,11 +172,42 @@ TEST(ForceNetwork, TooFewSamplesAreNotFittedAndNothingIsNaN) {
   }
 }
 
+// All forces equal: f = 1 for every contact, a PDF that is one spike (five bins of 0.2, the
+// last one full), which Eq. (11) cannot follow: the minimiser fails, and that is a status,
+// with finite (zero) values.
+TEST(ForceNetwork, ASpikeOfEqualForcesIsNotFittedAndStaysFinite) {
+  std::vector<double> f(500, 1.0);
+  const PdfFit fit = fit_pdf(force_pdf(f, pdf_edges(f, 0.0, 0.2)), eq11_request(100));
+  EXPECT_EQ(fit.status, FitStatus::NotConverged);
+  for (int q = 0; q < kParameters; ++q) {
+    EXPECT_TRUE(std::isfinite(fit.value[q]) && std::isfinite(fit.error[q])) << kParameterNames[q];
+    if (!fit.fitted()) {
+      EXPECT_EQ(fit.value[q], 0.0);
+    }
+  }
+  EXPECT_TRUE(std::isfinite(fit.chi2));
+}
+
 TEST(ForceNetwork, AFrameWithoutContactsIsRefused) {
   Frame f = frame_of(kTable);
   f.contacts.reset();
   EXPECT_EQ(refusal(f), "frame 0: expected a contact table with normal_force, got a frame "
                         "without contacts");
+}
+
+TEST(ForceNetwork, ANonFiniteContactPointIsRefused) {
+  Frame f = frame_of(kTable);
+  f.contacts->get<Coordinates>("point")(4, 1) = std::nan("");
+  EXPECT_EQ(refusal(f), "frame 0: contact 4: expected a finite contact point, got a NaN or "
+                        "infinite coordinate");
+}
+
+TEST(ForceNetwork, RMaxBeyondHalfAPeriodicBoxIsRefused) {
+  Frame f = frame_of(kTable);
+  f.container = Container::periodic_box(3, Eigen::Vector3d(-2, -2, -2), Eigen::Vector3d(26, 2, 2));
+  const std::string m = refusal(f, {{"r_max", 3}});
+  EXPECT_EQ(m.rfind("frame 0: F(r) up to r_max (parameter r_max): neighbour search: expected a "
+                    "periodic box of length at least 6", 0), 0u) << m;
 }
 
 TEST(ForceNetwork, BadParametersAreRefusedWithTheirPath) {
