@@ -1,0 +1,60 @@
+#include "frame_analysis.hpp"
+
+namespace granpipe::force_network {
+
+FrameAnalysis analyse_frame(const Frame& frame, const Settings& settings, const std::string& where) {
+  FrameAnalysis a;
+  a.forces = force_contacts(frame, settings.force, where);
+  a.networks = find_networks(frame.size(), frame.contact_i(), frame.contact_j(), a.forces.edges);
+  a.strong = strong_network(frame, a.forces, a.networks);
+  const std::vector<double> f = scaled_forces(a.forces, a.forces.samples, a.forces.mean);
+  a.pdf = force_pdf(f, pdf_edges(f, settings.f_max, settings.bin_width));
+  a.fit = fit_pdf(a.pdf, eq11_request(settings.min_fit_samples));
+  a.loaded = loaded_pair_contacts(frame, a.forces);
+  return a;
+}
+
+PaperFrame paper_frame(const Frame& frame, const FrameAnalysis& a, long index,
+                       const Settings& settings, const std::string& where) {
+  PaperFrame p{index, frame.time, a.loaded, a.pdf, a.fit, {}, {}};
+  const std::vector<double> f = scaled_forces(a.forces, a.forces.samples, a.forces.mean);
+  p.correlation = force_correlation(contact_points(frame, a.forces.samples, where), f,
+                                    frame.container, frame.dim, settings.r_max, settings.r_bins,
+                                    where);
+  if (!settings.by_pass.empty()) {
+    p.passes = pass_subsets(frame, a.forces, a.pdf.edges, a.fit, settings, where);
+  }
+  return p;
+}
+
+std::vector<std::string> per_frame_columns() {
+  return {"frame", "time", "networks", "largest_particles", "largest_contacts",
+          "other_networks", "other_contacts", "z_largest", "z_mean", "network_contacts",
+          "samples", "mean_force", "strong_contacts", "strong_particles",
+          "strong_particles_in_largest", "strong_largest_particles", "strong_largest_contacts",
+          "loaded_pair_contacts", "eq11_status", "a", "a_err", "b", "b_err", "beta", "beta_err",
+          "chi2_per_dof"};
+}
+
+std::vector<double> per_frame_row(long index, double time, Eigen::Index particles,
+                                  const FrameAnalysis& a) {
+  const auto d = [](auto x) { return static_cast<double>(x); };
+  const std::vector<NetworkSize>& sizes = a.networks.size;
+  NetworkSize largest;
+  if (!sizes.empty()) largest = sizes.front();
+  const long other_networks = sizes.empty() ? 0 : static_cast<long>(sizes.size()) - 1;
+  long other_contacts = 0;
+  for (std::size_t k = 1; k < sizes.size(); ++k) other_contacts += sizes[k].contacts;
+  const double z_largest = largest.particles > 0 ? 2.0 * d(largest.contacts) / d(largest.particles) : 0.0;
+  const double z_mean = particles > 0 ? 2.0 * d(a.forces.edges.size()) / d(particles) : 0.0;
+  const PdfFit& fit = a.fit;
+  return {d(index), time, d(sizes.size()), d(largest.particles), d(largest.contacts),
+          d(other_networks), d(other_contacts), z_largest, z_mean, d(a.forces.edges.size()),
+          d(a.forces.samples.size()), a.forces.mean, d(a.strong.contacts), d(a.strong.particles),
+          d(a.strong.particles_in_largest), d(a.strong.largest.particles),
+          d(a.strong.largest.contacts), d(a.loaded), d(static_cast<int>(fit.status)),
+          fit.value[kA], fit.error[kA], fit.value[kB], fit.error[kB], fit.value[kBeta],
+          fit.error[kBeta], fit.dof > 0 && fit.fitted() ? fit.chi2 / fit.dof : 0.0};
+}
+
+}  // namespace granpipe::force_network

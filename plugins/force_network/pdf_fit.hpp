@@ -1,0 +1,58 @@
+#pragma once
+// Fits of the force PDF by Eq. (13) of the paper,
+//   P(f) = a (1 - b exp(-(f - alpha)^2)) exp(-beta (f - gamma)),
+// of which Eq. (11) is the case alpha = gamma = 0. Any parameter may be held fixed.
+//
+// Weighted non-linear least squares (GSL's gsl_multifit_nlinear, trust region with
+// Levenberg–Marquardt steps): the model's mean over each bin (Simpson's rule) against the
+// bin's density, each bin weighted by its Poisson error (an empty bin by the error of one
+// count). The standard errors come from the covariance of the fit, scaled by chi^2/dof
+// when that exceeds 1 (a model that does not describe the data gets wider errors, never
+// narrower ones).
+#include <Eigen/Core>
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "force_pdf.hpp"
+
+namespace granpipe::force_network {
+
+enum Parameter : std::uint8_t { kA, kB, kAlpha, kBeta, kGamma, kParameters };
+using Parameters = std::array<double, kParameters>;
+inline const std::array<std::string, kParameters> kParameterNames{"a", "b", "alpha", "beta",
+                                                                  "gamma"};
+
+double eq13(const Parameters& p, double f);
+
+// Why a fit has no values: 0 fitted; 1 too few samples or bins; 2 the minimiser did not
+// converge or gave a non-finite result; 3 the fit it depends on (the full network's) has
+// no values.
+enum class FitStatus : std::uint8_t { Fitted = 0, TooFewSamples = 1, NotConverged = 2, NoReference = 3 };
+const char* describe(FitStatus s);
+
+struct FitRequest {
+  Parameters start{};                // start values, and the values of fixed parameters
+  std::array<bool, kParameters> free{};
+  long min_samples = 100;            // fewer samples: not fitted
+};
+
+struct PdfFit {
+  FitStatus status = FitStatus::TooFewSamples;
+  Parameters value{};  // 0 when not fitted
+  Parameters error{};  // 0 for fixed parameters and when not fitted
+  std::vector<int> fitted_parameters;  // the free ones, in Parameter order
+  Eigen::MatrixXd covariance;          // of the free ones, scaled as the errors are
+  double chi2 = 0.0;
+  int dof = 0;
+  bool fitted() const { return status == FitStatus::Fitted; }
+};
+
+PdfFit fit_pdf(const ForcePdf& pdf, const FitRequest& request);
+
+// Eq. (11) with a, b, beta free, from b = 0.75, beta = 1.5 (Mueth et al.'s values) and the
+// a that normalises it.
+FitRequest eq11_request(long min_samples);
+
+}  // namespace granpipe::force_network

@@ -1,0 +1,370 @@
+// force_network on hand-made contact tables whose answers are counted by hand, the Eq. (11)
+// fit on samples drawn from Eq. (11), and F(r) against a direct O(M^2) sum.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "force_correlation.hpp"
+#include "force_network_analyzer.hpp"
+#include "pass_subsets.hpp"
+#include "plugin_harness.hpp"
+
+using namespace granpipe;
+using namespace granpipe::force_network;
+
+namespace {
+
+struct ContactSpec {
+  std::int64_t i, j;
+  double force;       // |F_n|, along x
+  std::int64_t pass;  // the hand-made mst_pass
+};
+
+const std::int64_t kBase = partner::wall(Wall::ZLow);
+
+// Particles 0..3: a triangle with a tail; 5-6-7 a chain whose 7-8 contact carries no
+// force; pairs 9-10 and 11-12 (listed first, so that the label order is not the table's);
+// 4 touches only the base. Edge forces sum to 20 over 8 edges: <F_n> = 2.5.
+const std::vector<ContactSpec> kTable = {
+    {11, 12, 4, 3}, {5, 6, 1, 1}, {2, 3, 6, 1}, {7, 8, 0, 1}, {0, 1, 1, 1}, {4, kBase, 10, 0},
+    {9, 10, 2, 1},  {1, 2, 2, 1}, {6, 7, 1, 2}, {2, 0, 3, 2}, {0, kBase, 5, 0}};
+
+Property pass_property() { return {"mst_pass", Scope::Contact, ValueType::Integer, 1, "", "pass"}; }
+
+// `n` particles along x (x = 2 i, radius 1) and the contacts of `table`, each with its
+// force along x, its contact point (the midpoint, or the particle for a wall) and its pass.
+Frame frame_of(const std::vector<ContactSpec>& table, Eigen::Index n = 13) {
+  Frame f;
+  f.resize(n, 3);
+  for (Eigen::Index p = 0; p < n; ++p) f.position()(p, 0) = 2.0 * static_cast<double>(p);
+  f.radius().setConstant(1.0);
+  f.container = Container::open_top_box(3, Eigen::Vector3d(-2, -2, -2),
+                                        Eigen::Vector3d(2.0 * static_cast<double>(n), 2, 2));
+  const auto m = static_cast<Eigen::Index>(table.size());
+  PropertyTable& c = f.add_contacts(m);
+  auto& force = c.add<Coordinates>(*find_standard("normal_force", Scope::Contact));
+  auto& point = c.add<Coordinates>(*find_standard("point", Scope::Contact));
+  auto& pass = c.add<IndexArray>(pass_property());
+  for (Eigen::Index k = 0; k < m; ++k) {
+    const ContactSpec& s = table[static_cast<std::size_t>(k)];
+    f.contact_i()[k] = s.i;
+    f.contact_j()[k] = s.j;
+    force(k, 0) = s.force;
+    const Eigen::Index other = s.j >= 0 ? s.j : s.i;
+    point.row(k) = 0.5 * (f.position().row(s.i) + f.position().row(other));
+    pass[k] = s.pass;
+  }
+  return f;
+}
+
+struct Outcome {
+  Results results;
+  IndexArray network;
+  IntArray strong;
+};
+
+// The analyzer with `params` on one frame: its results and published columns.
+Outcome run(const Frame& frame, const nlohmann::json& params = nlohmann::json::object()) {
+  const auto ctx = test::make_context("force_network", params);
+  ForceNetworkAnalyzer analyzer(*ctx);
+  FrameCache cache;
+  analyzer.consume(frame, cache);
+  PropertyTable particles(Scope::Particle, frame.size(), 3), contacts(Scope::Contact, frame.contacts->rows(), 3);
+  particles.add(ForceNetworkAnalyzer::network_property());
+  contacts.add(ForceNetworkAnalyzer::strong_property());
+  analyzer.publish(particles);
+  analyzer.publish(contacts);
+  Outcome r;
+  analyzer.finish(r.results);
+  r.network = particles.get<IndexArray>("network");
+  r.strong = contacts.get<IntArray>("strong");
+  return r;
+}
+
+double per_frame(const Outcome& r, const std::string& column) {
+  return r.results.tables().at("per_frame").column(column).at(0);
+}
+
+std::string refusal(const Frame& frame, const nlohmann::json& params = nlohmann::json::object()) {
+  try {
+    run(frame, params);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+}  // namespace
+
+TEST(ForceNetwork, NetworksAreComponentsOfLoadedPairContactsLabelledBySize) {
+  const Outcome r = run(frame_of(kTable));
+  IndexArray expected(13);
+  expected << 0, 0, 0, 0, -1, 1, 1, 1, -1, 2, 2, 3, 3;
+  EXPECT_TRUE((r.network == expected).all()) << r.network.transpose();
+  EXPECT_EQ(per_frame(r, "networks"), 4);
+  EXPECT_EQ(per_frame(r, "largest_particles"), 4);
+  EXPECT_EQ(per_frame(r, "largest_contacts"), 4);
+  EXPECT_EQ(per_frame(r, "other_networks"), 3);
+  EXPECT_EQ(per_frame(r, "other_contacts"), 4);  // 2 + 1 + 1
+  EXPECT_EQ(per_frame(r, "z_largest"), 2.0);
+  EXPECT_DOUBLE_EQ(per_frame(r, "z_mean"), 16.0 / 13.0);
+  EXPECT_EQ(per_frame(r, "network_contacts"), 8);
+  EXPECT_EQ(per_frame(r, "loaded_pair_contacts"), 8);
+  EXPECT_EQ(per_frame(r, "mean_force"), 2.5);
+}
+
+TEST(ForceNetwork, MinForceRemovesWeakerContactsFromTheNetworks) {
+  const Outcome r = run(frame_of(kTable), {{"min_force", 1.5}});
+  EXPECT_EQ(per_frame(r, "networks"), 3);  // the 5-6-7 chain carries only F = 1
+  EXPECT_EQ(per_frame(r, "largest_contacts"), 3);
+  EXPECT_EQ(per_frame(r, "mean_force"), 17.0 / 5.0);
+  EXPECT_EQ(per_frame(r, "loaded_pair_contacts"), 8);  // the frame choice ignores min_force
+}
+
+TEST(ForceNetwork, StrongSubNetworkIsTheContactsAboveTheMean) {
+  const Outcome r = run(frame_of(kTable));
+  IntArray expected = IntArray::Zero(11);
+  expected[0] = expected[2] = expected[9] = 1;  // F = 4, 6, 3 > 2.5
+  EXPECT_TRUE((r.strong == expected).all()) << r.strong.transpose();
+  EXPECT_EQ(per_frame(r, "strong_contacts"), 3);
+  EXPECT_EQ(per_frame(r, "strong_particles"), 5);             // 0, 2, 3, 11, 12
+  EXPECT_EQ(per_frame(r, "strong_particles_in_largest"), 3);  // 0, 2, 3
+  EXPECT_EQ(per_frame(r, "strong_largest_particles"), 3);
+  EXPECT_EQ(per_frame(r, "strong_largest_contacts"), 2);
+}
+
+TEST(ForceNetwork, WallContactsJoinTheStatisticsOnlyWhenAsked) {
+  const Outcome r = run(frame_of(kTable), {{"walls", true}});
+  EXPECT_EQ(per_frame(r, "samples"), 10);
+  EXPECT_EQ(per_frame(r, "mean_force"), 3.5);  // (20 + 10 + 5) / 10
+  EXPECT_EQ(per_frame(r, "strong_contacts"), 2);  // 6 and 4
+  EXPECT_EQ(per_frame(r, "networks"), 4);         // walls never link particles
+}
+
+TEST(ForceNetwork, PdfIsANormalisedDensity) {
+  const Outcome r = run(frame_of(kTable));
+  const Table& pdf = r.results.tables().at("pdf");
+  double integral = 0.0, count = 0.0;
+  for (std::size_t k = 0; k < pdf.rows(); ++k) {
+    integral += pdf.column("density")[k] * (pdf.column("f_hi")[k] - pdf.column("f_lo")[k]);
+    count += pdf.column("count")[k];
+  }
+  EXPECT_NEAR(integral, 1.0, 1e-12);
+  EXPECT_EQ(count, 8);
+  EXPECT_NEAR(pdf.column("f_hi").back(), 2.4, 1e-12);  // largest f = 6 / 2.5, whole bins of 0.2
+}
+
+TEST(ForceNetwork, TooFewSamplesAreNotFittedAndNothingIsNaN) {
+  std::vector<ContactSpec> unloaded = kTable;
+  for (ContactSpec& s : unloaded) s.force = 0.0;
+  for (const auto& table : {kTable, unloaded, std::vector<ContactSpec>{}}) {
+    const Outcome r = run(frame_of(table));
+    EXPECT_EQ(r.results.scalar("eq11_status").value, 1.0);  // too few samples
+    EXPECT_TRUE(r.results.fits().empty());
+    for (const auto& [name, t] : r.results.tables()) {
+      for (const auto& column : t.data) {
+        for (double x : column) EXPECT_TRUE(std::isfinite(x)) << name;
+      }
+    }
+    for (const auto& [name, s] : r.results.scalars()) EXPECT_TRUE(std::isfinite(s.value)) << name;
+  }
+}
+
+// All forces equal: f = 1 for every contact, a PDF that is one spike (five bins of 0.2, the
+// last one full), which Eq. (11) cannot follow: the minimiser fails, and that is a status,
+// with finite (zero) values.
+TEST(ForceNetwork, ASpikeOfEqualForcesIsNotFittedAndStaysFinite) {
+  std::vector<double> f(500, 1.0);
+  const PdfFit fit = fit_pdf(force_pdf(f, pdf_edges(f, 0.0, 0.2)), eq11_request(100));
+  EXPECT_EQ(fit.status, FitStatus::NotConverged);
+  for (int q = 0; q < kParameters; ++q) {
+    EXPECT_TRUE(std::isfinite(fit.value[q]) && std::isfinite(fit.error[q])) << kParameterNames[q];
+    if (!fit.fitted()) {
+      EXPECT_EQ(fit.value[q], 0.0);
+    }
+  }
+  EXPECT_TRUE(std::isfinite(fit.chi2));
+}
+
+TEST(ForceNetwork, AFrameWithoutContactsIsRefused) {
+  Frame f = frame_of(kTable);
+  f.contacts.reset();
+  EXPECT_EQ(refusal(f), "frame 0: expected a contact table with normal_force, got a frame "
+                        "without contacts");
+}
+
+TEST(ForceNetwork, ANonFiniteContactPointIsRefused) {
+  Frame f = frame_of(kTable);
+  f.contacts->get<Coordinates>("point")(4, 1) = std::nan("");
+  EXPECT_EQ(refusal(f), "frame 0: contact 4: expected a finite contact point, got a NaN or "
+                        "infinite coordinate");
+}
+
+TEST(ForceNetwork, RMaxBeyondHalfAPeriodicBoxIsRefused) {
+  Frame f = frame_of(kTable);
+  f.container = Container::periodic_box(3, Eigen::Vector3d(-2, -2, -2), Eigen::Vector3d(26, 2, 2));
+  const std::string m = refusal(f, {{"r_max", 3}});
+  EXPECT_EQ(m.rfind("frame 0: F(r) up to r_max (parameter r_max): neighbour search: expected a "
+                    "periodic box of length at least 6", 0), 0u) << m;
+}
+
+TEST(ForceNetwork, BadParametersAreRefusedWithTheirPath) {
+  EXPECT_EQ(refusal(frame_of(kTable), {{"by_pass", "2nd pass"}}),
+            "params.by_pass: expected a contact column name (letters, digits and '_', not "
+            "starting with a digit) or \"\", got \"2nd pass\"");
+  EXPECT_EQ(refusal(frame_of(kTable), {{"f_max", 1e9}}),
+            "params.f_max: expected at most 100000 bins of bin_width, got f_max / bin_width = "
+            "5000000000.000000");
+  EXPECT_THROW(test::make_context("force_network", {{"bin_width", 0}}), InputError);
+}
+
+// Samples of Eq. (11) by rejection: f from exp(-beta f), kept with probability
+// 1 - b exp(-f^2) (which is at most 1).
+std::vector<double> eq11_samples(double b, double beta, std::size_t count) {
+  std::mt19937_64 rng(20261123);
+  std::exponential_distribution<double> tail(beta);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<double> f;
+  while (f.size() < count) {
+    const double x = tail(rng);
+    if (u(rng) < 1.0 - b * std::exp(-x * x)) f.push_back(x);
+  }
+  return f;
+}
+
+// The a that normalises Eq. (11) over f > 0.
+double normalising_a(double b, double beta) {
+  const double bump = 0.5 * std::sqrt(std::numbers::pi) * std::exp(0.25 * beta * beta) *
+                      std::erfc(0.5 * beta);
+  return 1.0 / (1.0 / beta - b * bump);
+}
+
+TEST(ForceNetwork, Eq11FitRecoversTheParametersOfItsOwnSamples) {
+  const double b = 0.83, beta = 1.35, a = normalising_a(b, beta);
+  const std::vector<double> f = eq11_samples(b, beta, 100000);
+  const PdfFit fit = fit_pdf(force_pdf(f, pdf_edges(f, 0.0, 0.1)), eq11_request(100));
+  ASSERT_TRUE(fit.fitted()) << describe(fit.status);
+  for (auto [q, truth] : {std::pair{kA, a}, {kB, b}, {kBeta, beta}}) {
+    EXPECT_LT(std::abs(fit.value[q] - truth), 3.0 * fit.error[q]) << kParameterNames[q];
+    EXPECT_LT(std::abs(fit.value[q] / truth - 1.0), 0.03) << kParameterNames[q];
+    EXPECT_GT(fit.error[q], 0.0);
+  }
+  EXPECT_EQ(fit.value[kAlpha], 0.0);
+  EXPECT_EQ(fit.value[kGamma], 0.0);
+}
+
+// Eq. (12) summed over every ordered pair i != j, binned as force_correlation bins.
+ForceCorrelation direct_correlation(const Coordinates& x, const std::vector<double>& f,
+                                    const Container& c, double r_max, int bins) {
+  ForceCorrelation out{r_max, std::vector<double>(static_cast<std::size_t>(bins), 0.0),
+                       std::vector<double>(static_cast<std::size_t>(bins), 0.0)};
+  for (Eigen::Index i = 0; i < x.rows(); ++i) {
+    for (Eigen::Index j = 0; j < x.rows(); ++j) {
+      if (i == j) continue;
+      double r2 = 0.0;
+      for (int a = 0; a < 3; ++a) {
+        const double d = c.minimum_image(a, x(j, a) - x(i, a));
+        r2 += d * d;
+      }
+      const auto k = static_cast<std::size_t>(std::sqrt(r2) / (r_max / bins));
+      if (k >= out.bins() || r2 > r_max * r_max) continue;
+      out.product_sum[k] += f[static_cast<std::size_t>(i)] * f[static_cast<std::size_t>(j)];
+      out.pairs[k] += 1.0;
+    }
+  }
+  return out;
+}
+
+// Contact points on a simple cubic lattice of spacing 1, side `n`, with forces 1 + k % 7 / 10.
+void expect_lattice_correlation_is_direct(const Container& c, int n, double r_max) {
+  Coordinates x(n * n * n, 3);
+  std::vector<double> f;
+  for (int k = 0; k < n * n * n; ++k) {
+    x.row(k) << 0.5 + k % n, 0.5 + (k / n) % n, 0.5 + k / (n * n);
+    f.push_back(1.0 + (k % 7) / 10.0);
+  }
+  const int bins = 35;
+  const ForceCorrelation fast = force_correlation(x, f, c, 3, r_max, bins, "test");
+  const ForceCorrelation slow = direct_correlation(x, f, c, r_max, bins);
+  double pairs = 0.0;
+  for (std::size_t k = 0; k < fast.bins(); ++k) {
+    EXPECT_EQ(2.0 * fast.pairs[k], slow.pairs[k]) << k;  // the direct sum counts both orders
+    EXPECT_NEAR(fast.value(k), slow.value(k), 1e-13 * std::abs(slow.value(k))) << k;
+    pairs += fast.pairs[k];
+  }
+  EXPECT_GT(pairs, 0.0);
+}
+
+TEST(ForceNetwork, CorrelationOfALatticeEqualsTheDirectSum) {
+  expect_lattice_correlation_is_direct(
+      Container::open_top_box(3, Eigen::Vector3d::Zero(), Eigen::Vector3d::Constant(6)), 6, 3.5);
+  expect_lattice_correlation_is_direct(
+      Container::periodic_box(3, Eigen::Vector3d::Zero(), Eigen::Vector3d::Constant(8)), 8, 3.5);
+}
+
+TEST(ForceNetwork, ByPassReportsTheContactsOfPassesOneToK) {
+  const Outcome r = run(frame_of(kTable), {{"by_pass", "mst_pass"}});
+  const Table& fits = r.results.tables().at("pass_fits");
+  ASSERT_EQ(fits.rows(), 3u);
+  EXPECT_EQ(fits.column("contacts"), (std::vector<double>{5, 7, 8}));  // 7-8 carries no force
+  EXPECT_EQ(fits.column("free_status"), (std::vector<double>{1, 1, 1}));   // too few samples
+  EXPECT_EQ(fits.column("shift_status"), (std::vector<double>{3, 3, 3}));  // no Eq. (11) fit
+  const Table& pdf = r.results.tables().at("pass_pdf");
+  EXPECT_EQ(pdf.column("density_pass_3"), pdf.column("density_all"));
+  double integral = 0.0;
+  for (double d : pdf.column("density_pass_1")) integral += 0.2 * d;  // bins of 0.2
+  EXPECT_NEAR(integral, 1.0, 1e-12);  // each subset's PDF is a density of its own
+  // Scaled by the full network's mean (2.5), pass 1's largest force 6 is at f = 2.4, the top
+  // of the full network's last bin [2.2, 2.4]: one of its five contacts.
+  EXPECT_NEAR(pdf.column("density_pass_1").back(), 1.0 / (5 * 0.2), 1e-9);
+  const Table& correlation = r.results.tables().at("pass_correlation");
+  EXPECT_EQ(correlation.column("F_pass_3"), correlation.column("F_all"));
+}
+
+TEST(ForceNetwork, ByPassIsNeededOnlyWhenSetAndNamedWhenMissing) {
+  const auto off = test::make_context("force_network");
+  EXPECT_EQ(ForceNetworkAnalyzer(*off).needs().columns.size(), 2u);
+  const auto on = test::make_context("force_network", {{"by_pass", "mst_pass"}});
+  const FrameContent needs = ForceNetworkAnalyzer(*on).needs();
+  ASSERT_EQ(needs.columns.size(), 3u);
+  EXPECT_TRUE(needs.columns.back().matches(pass_property()));
+
+  Frame f = frame_of(kTable);
+  f.contacts->remove("mst_pass");
+  EXPECT_EQ(refusal(f, {{"by_pass", "mst_pass"}}),
+            "frame 0: expected the contact column mst_pass (parameter by_pass), got contacts "
+            "without it");
+}
+
+// Many contacts drawn from Eq. (11), each captured by pass 1 or 2 at random: each subset
+// has the full network's distribution, so the shift fit finds alpha, gamma ~ 0 and the
+// free fit alpha ~ 0 and the distribution's beta. The forces are scaled by their mean, so
+// they are drawn with the beta for which Eq. (11) at b = 0.83 has mean 1 (solved with
+// scipy's brentq from the closed form of the mean).
+TEST(ForceNetwork, ByPassFitsOfASubsetOfTheSameDistribution) {
+  const double beta = 1.5879873;
+  const std::vector<double> forces = eq11_samples(0.83, beta, 40000);
+  std::vector<ContactSpec> table;
+  std::mt19937_64 rng(7);
+  for (std::size_t k = 0; k < forces.size(); ++k) {
+    const auto i = static_cast<std::int64_t>(2 * k);
+    table.push_back({i, i + 1, forces[k], static_cast<std::int64_t>(1 + rng() % 2)});
+  }
+  const Frame frame = frame_of(table, static_cast<Eigen::Index>(2 * forces.size()));
+  const Outcome r = run(frame, {{"by_pass", "mst_pass"}, {"bin_width", 0.1}, {"r_max", 2.5}});
+  ASSERT_EQ(r.results.scalar("eq11_status").value, 0.0);
+  const Table& fits = r.results.tables().at("pass_fits");
+  ASSERT_EQ(fits.rows(), 2u);
+  for (std::size_t k = 0; k < 2; ++k) {
+    ASSERT_EQ(fits.column("free_status")[k], 0.0);
+    ASSERT_EQ(fits.column("shift_status")[k], 0.0);
+    for (const char* shift : {"shift_alpha", "shift_gamma"}) {
+      EXPECT_LT(std::abs(fits.column(shift)[k]), 3.0 * fits.column(std::string(shift) + "_err")[k]);
+    }
+    EXPECT_LT(std::abs(fits.column("free_alpha")[k]), 3.0 * fits.column("free_alpha_err")[k]);
+    EXPECT_NEAR(fits.column("free_beta")[k], beta, 3.0 * fits.column("free_beta_err")[k]);
+  }
+  EXPECT_TRUE(r.results.fits().count("pass_1_eq13_shift"));
+}
