@@ -1,4 +1,4 @@
-"""scripts/dem_speed_vs_error.py collision: five granpipe runs of the two-sphere collision, a
+"""scripts/dem_speed_vs_error.py collision: 5 x 4 granpipe runs of the two-sphere collision, a
 table with their errors (within 2 % down to 12.5 steps per contact), the plot with both
 series, a second call that runs nothing again, and a point directory left by an interrupted
 run refused in one line."""
@@ -20,7 +20,7 @@ with tempfile.TemporaryDirectory() as tmp:
     else:
         rows = list(csv.DictReader(line for line in open(table) if not line.startswith("#")))
         worst = max(abs(float(row[q])) for row in rows for q in ("contact_time_rel_error", "restitution_rel_error"))
-        if len(rows) != 5 or worst > 0.02 or r.stdout.count("\n") != 7:
+        if len(rows) != 20 or worst > 0.02 or r.stdout.count("\n") != 7:
             failures.append(f"{len(rows)} rows, worst relative error {worst}, stdout {r.stdout}")
         svg = ET.parse(plot).getroot()
         markers = [sum(1 for e in g.iter() if e.tag.endswith("}use"))
@@ -33,13 +33,13 @@ with tempfile.TemporaryDirectory() as tmp:
             failures.append(f"second call: exit {r.returncode}, {r.stderr}")
         # A point cut off mid-run: its directory exists, cpu_seconds.csv does not list it.
         with open(os.path.join(out, "cpu_seconds.csv"), "w") as f:
-            f.write("".join(line for line in log.splitlines(True) if not line.startswith("dt_tc_0.08,")))
+            f.write("".join(line for line in log.splitlines(True) if not line.startswith("dt_tc_0.08_phase3,")))
         r = subprocess.run(command, capture_output=True, text=True)
-        expected = (f"{out}/dt_tc_0.08: expected no directory for a point not in cpu_seconds.csv, found one "
+        expected = (f"{out}/dt_tc_0.08_phase3: expected no directory for a point not in cpu_seconds.csv, found one "
                     "(an interrupted run?): remove it to run the point again\n")
-        if r.returncode == 0 or r.stderr != expected or not os.path.isdir(os.path.join(out, "dt_tc_0.08")):
+        if r.returncode == 0 or r.stderr != expected or not os.path.isdir(os.path.join(out, "dt_tc_0.08_phase3")):
             failures.append(f"interrupted point: exit {r.returncode}, {r.stderr!r}")
 if failures:
     print("FAIL", *failures, sep="\n")
     sys.exit(1)
-print("dem_speed_vs_error.py collision: five points, errors, plot, resume and refusal right")
+print("dem_speed_vs_error.py collision: twenty runs, errors, plot, resume and refusal right")
