@@ -29,7 +29,7 @@ import math
 import os
 
 from result_csv import read_table
-from svg_chart import COLOURS, Chart
+from charts import line_chart
 
 BRANCHES = {0: "first increase", 1: "decreasing", 2: "increasing"}
 
@@ -62,30 +62,6 @@ def pool(tables, keys):
             line += [mean, err]
         out.append(line)
     return out_header, out
-
-
-def svg_plot(series, reference, xlabel, ylabel, path):
-    """Lines with error bars per series, reference points."""
-    pts = [(x, y) for s in series.values() for x, y, _ in s] + list(reference)
-    if not pts:
-        return
-    x0, x1 = min(x for x, _ in pts), max(x for x, _ in pts)
-    y0, y1 = min(y for _, y in pts), max(y for _, y in pts)
-    pad = 0.05 * (y1 - y0 or 1.0)
-    chart = Chart(xlabel, ylabel, (x0, x1 if x1 > x0 else x0 + 1.0), (y0 - pad, y1 + pad))
-    for k, (name, s) in enumerate(sorted(series.items())):
-        c = COLOURS[k % len(COLOURS)]
-        s = sorted(s)
-        chart.polyline([(x, y) for x, y, _ in s], c)
-        for x, y, e in s:
-            if e > 0 and math.isfinite(e):
-                chart.add(f'<line x1="{chart.sx(x):.1f}" x2="{chart.sx(x):.1f}" y1="{chart.sy(y - e):.1f}" y2="{chart.sy(y + e):.1f}" stroke="{c}"/>')
-        chart.legend(name, c)
-    for x, y in reference:
-        chart.add(f'<rect x="{chart.sx(x) - 3:.1f}" y="{chart.sy(y) - 3:.1f}" width="6" height="6" fill="black"/>')
-    if reference:
-        chart.legend("steady state (constant A)")
-    chart.save(path)
 
 
 def main():
@@ -159,9 +135,11 @@ def main():
                 column = args.plot if table == "points" else f"{table.split('.')[0]}.{args.plot}"
                 if args.reference_x not in rh or column not in rh:
                     raise SystemExit(f"{args.reference}/sweep.points.csv: expected columns {args.reference_x} and {column}")
-                reference = [(r[rh.index(args.reference_x)], r[rh.index(column)]) for r in rrows]
+                err = rh.index(column + "_err") if column + "_err" in rh else None
+                reference = [(r[rh.index(args.reference_x)], r[rh.index(column)],
+                              r[err] if err is not None else math.nan) for r in rrows]
             xlabel = others[0] if table == "points" else "A" if keys[-1] == "amplitude" else keys[-1]
-            svg_plot(series, reference, xlabel, args.plot, os.path.join(args.out, f"pooled.{table}.svg"))
+            line_chart(series, reference, xlabel, args.plot, os.path.join(args.out, f"pooled.{table}.svg"))
 
 
 if __name__ == "__main__":

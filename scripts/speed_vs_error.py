@@ -13,36 +13,15 @@ error for scale) and speed_vs_error.svg (seconds against |deviation|, log-log).
 import argparse
 import csv
 import json
-import math
 import os
 
 from result_csv import read_table
-from svg_chart import COLOURS, Chart
+from charts import loglog_chart
 
 
 def read_points(path):
     _, header, rows = read_table(path)
     return [dict(zip(header, row)) for row in rows], header
-
-
-def svg_plot(series, xlabel, ylabel, path):
-    """Log-log scatter with lines, one series per (group, quantity)."""
-    points = [(x, y) for s in series.values() for x, y, _ in s if x > 0 and y > 0]
-    if not points:
-        return
-    lx = [math.log10(x) for x, _ in points]
-    ly = [math.log10(y) for _, y in points]
-    x0, x1 = math.floor(min(lx)), math.ceil(max(lx))
-    y0, y1 = math.floor(min(ly)), math.ceil(max(ly))
-    chart = Chart(xlabel, ylabel, (x0, max(x1, x0 + 1)), (y0, max(y1, y0 + 1)), log=True)
-    for k, (name, s) in enumerate(sorted(series.items())):
-        c = COLOURS[k % len(COLOURS)]
-        pts = [(x, y, label) for x, y, label in sorted(s) if x > 0 and y > 0]
-        chart.polyline([(x, y) for x, y, _ in pts], c)
-        for x, y, label in pts:
-            chart.add(f'<circle cx="{chart.sx(x):.1f}" cy="{chart.sy(y):.1f}" r="3" fill="{c}"><title>{label}</title></circle>')
-        chart.legend(name, c)
-    chart.save(path)
 
 
 def main():
@@ -84,7 +63,7 @@ def main():
         writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
         writer.writeheader()
         writer.writerows(rows)
-    svg_plot(series, "run time of the point (s)", "|deviation from the finest point|",
+    loglog_chart(series, "run time of the point (s)", "|deviation from the finest point|",
              os.path.join(args.out, "speed_vs_error.svg"))
     cols = ["group", args.knob, "seconds"] + [q + "_deviation" for q in args.quantity]
     print("  ".join(f"{c:>24}" for c in cols))

@@ -9,6 +9,7 @@ import os
 import subprocess
 import sys
 import tempfile
+import xml.etree.ElementTree as ET
 
 script = sys.argv[1]
 
@@ -51,8 +52,12 @@ with tempfile.TemporaryDirectory() as out:
         c = got[("N=200", "1.0")]
         if abs(float(c["phi"]) - 0.5) > 1e-12 or float(c["phi_err"]) != 0.0:
             failures.append(f"second group {c}")
-        if len(rows) != 3 or not os.path.exists(os.path.join(out, "pooled.packing.by_ramp.svg")):
-            failures.append(f"{len(rows)} rows, svg written: {os.path.exists(os.path.join(out, 'pooled.packing.by_ramp.svg'))}")
+        # One line per branch and group, each with the gid series-<k> (scripts/charts.py).
+        svg = os.path.join(out, "pooled.packing.by_ramp.svg")
+        lines = {g.get("id") for g in ET.parse(svg).getroot().iter() if g.get("id", "").startswith("series-")} \
+            if os.path.exists(svg) else set()
+        if len(rows) != 3 or len(lines) != 3:
+            failures.append(f"{len(rows)} rows, lines drawn: {sorted(lines)}")
     r = run(out, "points", "packing.phi")
     if r.returncode != 0:
         failures.append(r.stderr)

@@ -1,0 +1,95 @@
+#include "collision_analyzer.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "linear_law.hpp"
+
+namespace granpipe::collision {
+
+Schema schema() {
+  Schema s;
+  // Defaults: the `dem` source's (Table I's restitution 0.9 between small spheres).
+  s.real("k_n", 2e5, "normal stiffness the source used").min(0.0, true).unit("force/length");
+  s.real("gamma_n", 42.398, "normal damping rate (times m_eff) the source used").min(0.0).unit("1/time");
+  s.reals("density", std::vector<double>{1.91}, "density of each species, by index, as the source's species")
+      .min(0.0, true)
+      .unit("mass/length^3");
+  return s;
+}
+
+PairState pair_state(const Frame& f, const std::string& where) {
+  if (f.size() != 2) {
+    throw InputError(where + ": expected the two spheres of a collision, got " + std::to_string(f.size()) +
+                     " particles");
+  }
+  PairState s;
+  s.time = f.time;
+  if (f.contacts) {
+    for (Eigen::Index k = 0; k < f.contacts->rows(); ++k) {
+      const std::int64_t j = f.contact_j()[k];
+      if (partner::is_wall(j)) {
+        throw InputError(where + ": expected the spheres in free flight, got sphere " +
+                         std::to_string(f.contact_i()[k]) + " touching wall " + to_string(partner::wall_of(j)) +
+                         " (a larger container?)");
+      }
+      s.touching = s.touching || partner::is_particle(j);
+    }
+  }
+  const Eigen::Vector3d d = (f.position().row(0) - f.position().row(1)).matrix().transpose();
+  const double r = d.norm();
+  const auto& v = f.table<double>("velocity");
+  s.overlap = f.radius()[0] + f.radius()[1] - r;
+  s.normal_velocity = (v.row(0) - v.row(1)).matrix().dot(d.transpose()) / r;
+  return s;
+}
+
+CollisionAnalyzer::CollisionAnalyzer(const PluginContext& ctx)
+    : kn_(ctx.params.real("k_n")),
+      gamma_n_(ctx.params.real("gamma_n")),
+      density_(ctx.params.reals("density")),
+      density_param_(ctx.param("density")) {}
+
+FrameContent CollisionAnalyzer::needs() const {
+  return {.dim = 3, .contacts = true, .columns = {*find_standard("velocity", Scope::Particle)}};
+}
+
+void CollisionAnalyzer::consume(const Frame& frame, FrameCache&) {
+  const std::string where = "frame " + std::to_string(frames_);
+  const PairState s = pair_state(frame, where);
+  if (frames_ == 0) {
+    double mass[2];
+    for (int i = 0; i < 2; ++i) {
+      const int species = frame.species()[i];
+      if (species < 0 || species >= static_cast<int>(density_.size())) {
+        throw InputError(density_param_ + ": expected a density for species " + std::to_string(species) +
+                         " of sphere " + std::to_string(i) + ", got " + std::to_string(density_.size()) +
+                         " densities");
+      }
+      const double r = frame.radius()[i];
+      mass[i] = density_[species] * 4.0 / 3.0 * std::numbers::pi * r * r * r;
+    }
+    m_eff_ = mass[0] * mass[1] / (mass[0] + mass[1]);
+  }
+  tracker_.add(s, where);
+  ++frames_;
+}
+
+void CollisionAnalyzer::finish(Results& results) {
+  const CollisionMeasure m = tracker_.result("collision: " + std::to_string(frames_) + " frames");
+  const LinearPrediction p = predict_linear(kn_, gamma_n_, m_eff_, "collision");
+  const double nan = std::nan("");
+  results.add_scalar("contact_time", m.contact_time, nan, "time", "measured: overlap's zero crossings");
+  results.add_scalar("contact_time_analytic", p.contact_time, nan, "time", "linear law, Eq. (10)");
+  results.add_scalar("contact_time_rel_error", m.contact_time / p.contact_time - 1.0, nan, "",
+                     "measured / analytic - 1");
+  results.add_scalar("restitution", m.restitution, nan, "", "measured: normal speed after / before");
+  results.add_scalar("restitution_analytic", p.restitution, nan, "", "exp(-gamma_n t_c / 2)");
+  results.add_scalar("restitution_rel_error", m.restitution / p.restitution - 1.0, nan, "",
+                     "measured / analytic - 1");
+  results.add_scalar("approach_speed", m.approach_speed, nan, "length/time", "relative normal speed before");
+  results.add_scalar("frames_in_contact", static_cast<double>(m.frames_in_contact), nan, "",
+                     "frames with the pair in the contact table");
+}
+
+}  // namespace granpipe::collision
