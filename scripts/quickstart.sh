@@ -15,11 +15,6 @@ cmake --build build -j "$jobs"
 if [ "$mode" = "--test" ]; then
   ctest --test-dir build --output-on-failure -j "$jobs"
 else
-  # The main job is the Brazil-nut MST pipeline; until it exists (its MST analyzers are
-  # still to come), the most complete pipeline that does runs in its place.
-  for p in bnp_mst tap2d_arches lattice_packing; do
-    if [ -f "pipelines/$p.json" ]; then
-      exec build/bin/granpipe "pipelines/$p.json" --out "out/$p" --overwrite
-    fi
-  done
+  # The main job: the Brazil-nut DEM to cycle 10.5, force networks and the multipass MST.
+  exec build/bin/granpipe pipelines/bnp_mst.json --out out/bnp_mst --overwrite --threads "$jobs"
 fi
