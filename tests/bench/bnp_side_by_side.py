@@ -411,6 +411,23 @@ def report_physics(records, args):
             cells += [f"{row['zmax']:.3f}", f"{g['zmax'] - row['zmax']:+.3f}"] if row else ["", ""]
         print("| " + " | ".join(cells) + " |")
     print()
+    for e in others:
+        print(agreement(gp["frames"], best(records, e, args.cores[0])["thermo"], args.warmup, f"granpipe vs {e}"))
+    gp2 = [best(records, "granpipe", c) for c in args.cores[1:]]
+    for c, g in zip(args.cores[1:], gp2):
+        if g:
+            print(agreement(gp["frames"], g["frames"], args.warmup, f"granpipe {args.cores[0]} vs {c} threads"))
+    print()
+
+
+def agreement(mine, theirs, first_step, what):
+    """The largest relative differences over the common steps from first_step on."""
+    steps = [s for s in mine if s >= first_step and s in theirs]
+    if not steps:
+        return f"- {what}: no common steps"
+    worst = {k: max(abs(mine[s][k] / theirs[s][k] - 1) for s in steps) for k in ("ke", "rke", "zmax")}
+    return (f"- {what}, largest difference over steps {steps[0]}-{steps[-1]}: translational KE {worst['ke']:.1%}, "
+            f"rotational KE {worst['rke']:.1%}, highest particle {worst['zmax']:.2%}")
 
 
 def report_profile(records, args):
@@ -486,13 +503,14 @@ def main():
     if args.warmup < 1 or args.timed % args.warmup:
         raise SystemExit(f"--timed: expected a multiple of --warmup (the frame and thermo interval), got {args.timed}")
     engines = available(ENGINES)
-    start = time.strftime("%Y-%m-%d %H:%M")
+    start, load = time.strftime("%Y-%m-%d %H:%M"), os.getloadavg()[0]
     with tempfile.TemporaryDirectory() as tmp:
         work = args.keep or tmp
-        os.makedirs(work, exist_ok=False) if args.keep else None
+        if args.keep:
+            os.makedirs(work)
         write_inputs(work, args.ref_dir, engines, args.warmup + args.timed, args.warmup)
         records = run_all(work, args, engines)
-    print(f"\n{start}, {machine()}, load average at the end {os.getloadavg()[0]:.2f}; "
+    print(f"\n{start}, {machine()}, load average {load:.2f} at the start, {os.getloadavg()[0]:.2f} at the end; "
           f"N = {N_PARTICLES}, {args.warmup} warm-up + {args.timed} timed steps\n")
     report_speed(records, args)
     report_physics(records, args)
