@@ -413,8 +413,11 @@ def report_physics(records, args):
     print()
     for e in others:
         print(agreement(gp["frames"], best(records, e, args.cores[0])["thermo"], args.warmup, f"granpipe vs {e}"))
-    gp2 = [best(records, "granpipe", c) for c in args.cores[1:]]
-    for c, g in zip(args.cores[1:], gp2):
+    if len(others) == 2:
+        lmp, lig = (best(records, e, args.cores[0])["thermo"] for e in others)
+        print(agreement(lig, lmp, args.warmup, "LIGGGHTS vs LAMMPS (the spread between the two engines)"))
+    for c in args.cores[1:]:
+        g = best(records, "granpipe", c)
         if g:
             print(agreement(gp["frames"], g["frames"], args.warmup, f"granpipe {args.cores[0]} vs {c} threads"))
     print()
@@ -431,9 +434,9 @@ def agreement(mine, theirs, first_step, what):
 
 
 def report_profile(records, args):
-    print("Where the time goes (timed window; granpipe's dem timing table, LAMMPS' own breakdown):\n")
+    print("Where the time goes (timed window; granpipe's dem timing table, the engines' own breakdowns):\n")
     for cores in args.cores:
-        gp, lmp = best(records, "granpipe", cores), best(records, "LAMMPS", cores)
+        gp = best(records, "granpipe", cores)
         if gp and gp["profile"]:
             p = gp["profile"]
             parts = {"forces (pairs + walls)": p["force_seconds"], "integration": p["integrate_seconds"],
@@ -443,9 +446,11 @@ def report_profile(records, args):
             print(f"- granpipe on {cores}: {text}; {gp['rebuilds']} rebuilds")
         elif gp:
             print(f"- granpipe on {cores}: no timing table in results.h5 (this build's dem source writes none)")
-        if lmp and lmp["breakdown"]:
-            text = ", ".join(f"{k} {v:.0f} %" for k, v in lmp["breakdown"].items())
-            print(f"- LAMMPS on {cores}: {text}; {lmp['rebuilds']} rebuilds")
+        for engine in ENGINES[1:]:
+            r = best(records, engine, cores)
+            if r and r["breakdown"]:
+                text = ", ".join(f"{k} {v:.0f} %" for k, v in r["breakdown"].items())
+                print(f"- {engine} on {cores}: {text}; {r['rebuilds']} rebuilds")
     print()
 
 
