@@ -356,14 +356,18 @@ def best(records, engine, cores):
 
 
 def report_speed(records, args):
-    print("| engine | threads / processes | timed s | ms per step | particle-steps/s | per core | CPU share | load before |")
-    print("|---|---|---|---|---|---|---|---|")
+    print("| engine | threads / processes | timed s | ms per step | particle-steps/s | per core | CPU share "
+          "| per CPU-second | load before |")
+    print("|---|---|---|---|---|---|---|---|---|")
     for r in records:
         flag = " **(low)**" if r["cpu_share"] < LOW_CPU_SHARE else ""
+        per_core = rate(r, args.timed) / r["cores"]
         print(f"| {r['engine']} | {r['cores']} | {r['timed']:.2f} | {r['timed'] / args.timed * 1e3:.3f} | "
-              f"{rate(r, args.timed):.3g} | {rate(r, args.timed) / r['cores']:.3g} | "
-              f"{r['cpu_share'] * 100:.0f} %{flag} | {r['load_before']:.2f} |")
-    print()
+              f"{rate(r, args.timed):.3g} | {per_core:.3g} | {r['cpu_share'] * 100:.0f} %{flag} | "
+              f"{per_core / r['cpu_share']:.3g} | {r['load_before']:.2f} |")
+    print("\n(CPU share: user + system time of the whole run over wall time and cores. 'Per CPU-second' divides "
+          "by it: what a core did while it ran the engine; an estimate for 1 core under load, not for 2, where "
+          "a waiting thread or process spins and a preempted one stalls the other.)\n")
     for cores in args.cores:
         gp = best(records, "granpipe", cores)
         for other in ENGINES[1:]:
