@@ -1,0 +1,84 @@
+#!/usr/bin/env python3
+"""The paper's Fig. 7 from a run of pipelines/bnp_wall_friction.json: the intruder's height
+above the base against the shaking cycles, one curve per wall friction coefficient.
+
+    scripts/bnp_wall_friction.py OUT_DIR [--csv docs/data/bnp_wall_friction.csv]
+                                 [--figure docs/img/bnp_wall_friction.svg]
+
+Reads OUT_DIR/results.h5 (or results.partial.h5 of a run still going). Within a cycle the
+whole bed flies and lands, so the intruder's height is read once per cycle, at the phase of
+the compression stage (0.28 of a period after the container's lowest point, where the bed
+sits on the base: docs/bnp_mst.md); prints a markdown table of it every 5 cycles and writes
+the once-per-cycle curves as CSV and as a figure."""
+import argparse
+import json
+import os
+import sys
+
+import h5py
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from charts import line_chart  # noqa: E402
+
+SWEPT = "source.params.walls.mu"
+
+
+def read_curves(path):
+    """{mu: [(cycles, intruder height)]} of every point of the sweep in `path`."""
+    with h5py.File(path, "r", swmr=True) as f:
+        pipeline = json.loads(f.attrs["pipeline"]) if "pipeline" in f.attrs else None
+        if pipeline is None:
+            with open(os.path.join(os.path.dirname(path), "pipeline.json")) as p:
+                pipeline = json.load(p)
+        values = pipeline["sweep"]["parameters"][SWEPT]
+        frequency = pipeline["source"]["params"]["drive"]["frequency"]
+        curves = {}
+        for k, mu in enumerate(values):
+            table = f[f"point_{k:03d}/intruder/per_frame"]
+            cycles = table["time"][()] * frequency
+            curves[mu] = list(zip(cycles, table["intruder_height"][()]))
+    return curves
+
+
+COMPRESSION_PHASE = 0.28
+
+
+def height_at(points, cycle):
+    """The height in the frame nearest to `cycle` + the compression phase."""
+    return min(points, key=lambda p: abs(p[0] - cycle - COMPRESSION_PHASE))[1]
+
+
+def per_cycle(points):
+    last = int(points[-1][0] - COMPRESSION_PHASE)
+    return [(c, height_at(points, c)) for c in range(0, last + 1)]
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("out_dir")
+    parser.add_argument("--csv")
+    parser.add_argument("--figure")
+    args = parser.parse_args()
+    final = os.path.join(args.out_dir, "results.h5")
+    path = final if os.path.exists(final) else os.path.join(args.out_dir, "results.partial.h5")
+    curves = read_curves(path)
+    cycles = {mu: per_cycle(points) for mu, points in curves.items()}
+    last = min(len(c) for c in cycles.values())
+    print("| cycle | " + " | ".join(f"μ_wall = {mu}" for mu in cycles) + " |")
+    print("|---|" + "---|" * len(cycles))
+    for c in range(0, last, 5):
+        print(f"| {c} | " + " | ".join(f"{points[c][1]:.1f}" for points in cycles.values()) + " |")
+    if args.csv:
+        with open(args.csv, "w") as out:
+            out.write(f"# {path}: intruder height above the base at phase {COMPRESSION_PHASE} of each cycle\n")
+            out.write("mu_wall,cycle,intruder_height\n")
+            for mu, points in cycles.items():
+                for c, h in points:
+                    out.write(f"{mu},{c},{h:.4f}\n")
+    if args.figure:
+        series = {f"μ_wall = {mu}": [(c, h, float("nan")) for c, h in p] for mu, p in cycles.items()}
+        line_chart(series, [], "cycles", "intruder height above the base at compression (d₀)", args.figure)
+
+
+if __name__ == "__main__":
+    main()
