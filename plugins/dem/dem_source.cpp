@@ -234,7 +234,15 @@ void DemSource::run_to(std::int64_t step) {
   while (engine_->step() < step) {
     const auto chunk_start = Clock::now();
     const std::int64_t steps = std::min(kProgressChunk, step - engine_->step());
-    engine_->run(steps);
+    // The wall forces a frame shows are kept only in the step before it: recording them
+    // every step would store two vectors per particle and wall for nothing.
+    const bool frame_follows = engine_->step() + steps == step;
+    engine_->record_contacts(false);
+    engine_->run(frame_follows ? steps - 1 : steps);
+    if (frame_follows) {
+      engine_->record_contacts(true);
+      engine_->run(1);
+    }
     check_health(*engine_, std::numeric_limits<double>::infinity());
     report_progress(steps, std::chrono::duration<double>(Clock::now() - chunk_start).count());
   }
