@@ -20,11 +20,6 @@ inline void store(double* a, std::ptrdiff_t i, const Vec3& v) {
 }
 inline void store_zero(double* a, std::ptrdiff_t i) { a[3 * i] = a[3 * i + 1] = a[3 * i + 2] = 0.0; }
 
-// Particles per scheduling chunk. Results do not depend on which thread takes which
-// particle, so the loops can balance dynamically: on a shared machine a thread that loses
-// its core leaves its chunks to the others instead of stalling every barrier.
-constexpr int kChunk = 128;
-
 // Reaction slot per pair: the force on the partner, and n x F_t when spins matter.
 template <bool kRotation>
 constexpr int kStride = kRotation ? 6 : 3;
@@ -76,7 +71,7 @@ template <class Law, bool kFriction, bool kRotation>
 void forces(const ForceContext& c) {
   constexpr int stride = kStride<kRotation>;
   const int S = c.species_count;
-#pragma omp parallel for schedule(dynamic, kChunk) num_threads(c.threads)
+#pragma omp parallel for schedule(static) num_threads(c.threads)
   for (int i = 0; i < c.n; ++i) {
     const Vec3 xi = load(c.x, i), vi = load(c.v, i);
     const Vec3 wi = kRotation ? load(c.omega, i) : Vec3::Zero();
@@ -157,14 +152,14 @@ template <bool kRotation>
 
 template <bool kRotation>
 void finish_step(const KickContext& c) {
-#pragma omp parallel for schedule(dynamic, kChunk) num_threads(c.threads)
+#pragma omp parallel for schedule(static) num_threads(c.threads)
   for (int p = 0; p < c.n; ++p) finish<kRotation>(c, p);
 }
 
 template <bool kRotation>
 double start_step(const KickContext& c) {
   double worst = 0.0;
-#pragma omp parallel for schedule(dynamic, kChunk) num_threads(c.threads) reduction(max : worst)
+#pragma omp parallel for schedule(static) num_threads(c.threads) reduction(max : worst)
   for (int p = 0; p < c.n; ++p) worst = std::max(worst, start<kRotation>(c, p));
   return worst;
 }
@@ -174,7 +169,7 @@ double start_step(const KickContext& c) {
 template <bool kRotation>
 double finish_and_start(const KickContext& c) {
   double worst = 0.0;
-#pragma omp parallel for schedule(dynamic, kChunk) num_threads(c.threads) reduction(max : worst)
+#pragma omp parallel for schedule(static) num_threads(c.threads) reduction(max : worst)
   for (int p = 0; p < c.n; ++p) {
     finish<kRotation>(c, p);
     worst = std::max(worst, start<kRotation>(c, p));

@@ -17,7 +17,11 @@
 // Threads: every loop runs over particles, and each particle's sums are taken in a fixed
 // order (its own pairs in list order, then the reactions of the pairs naming it, in list
 // order), never across threads, so results are bit-identical for any thread count and
-// any schedule (the loops balance dynamically).
+// any schedule. The loops split the particles into one contiguous block per thread: the
+// particles are sorted in space, so a thread then reads and writes almost only its own
+// neighbours' data (2.25e7 against 1.95e7 particle-steps/s for chunks of 128 handed out
+// dynamically, Brazil-nut scene, 2 threads on a quiet machine). A thread that loses its core
+// stalls the others at the barrier: on a busy machine, one thread is faster.
 #include <cstdint>
 
 #include "contact_law.hpp"
