@@ -29,27 +29,31 @@ constexpr int kChunk = 128;
 template <bool kRotation>
 constexpr int kStride = kRotation ? 6 : 3;
 
-// Adds particle i's wall forces to f and its wall contacts' n x F_t to spin_sum.
+// A wall slot particle i does not touch: its history and recorded forces are zero.
+template <bool kFriction>
+[[gnu::always_inline]] inline void clear_wall_contact(const ForceContext& c, int slot, int i) {
+  if constexpr (kFriction) store_zero(c.wall_history[slot], i);
+  if (c.wall_normal_record) {
+    store_zero(c.wall_normal_record[slot], i);
+    store_zero(c.wall_tangential_record[slot], i);
+  }
+}
+
+// Adds particle i's wall forces to f and its wall contacts' n x F_t to spin_sum. Most
+// particles touch no wall, so everything a contact needs (the mass, the material, the
+// normal) is made only once the overlap says it touches.
 template <class Law, bool kFriction, bool kRotation>
 [[gnu::always_inline]] inline void add_wall_forces(const ForceContext& c, int i, const Vec3& xi,
                                                    const Vec3& vi, const Vec3& wi, Vec3& f,
                                                    Vec3& spin_sum) {
-  const double ai = c.radius[i], m = 1.0 / c.inv_mass[i];
-  const LoopMaterial* material = c.wall_material + c.species[i];
-  const Vec3 v_rel = vi - c.wall_velocity;
-  const Vec3 spin = kRotation ? Vec3(ai * wi) : Vec3::Zero();
+  const double ai = c.radius[i];
   const auto touch = [&](int slot, const Vec3& n, double delta) __attribute__((always_inline)) {
     double* u = kFriction ? c.wall_history[slot] + 3 * static_cast<std::ptrdiff_t>(i) : nullptr;
-    if (delta <= 0.0) {
-      if constexpr (kFriction) u[0] = u[1] = u[2] = 0.0;
-      if (c.wall_normal_record) {
-        store_zero(c.wall_normal_record[slot], i);
-        store_zero(c.wall_tangential_record[slot], i);
-      }
-      return;
-    }
+    const Vec3 spin = kRotation ? Vec3(ai * wi) : Vec3::Zero();
+    const LoopMaterial& material = c.wall_material[slot * c.species_count + c.species[i]];
     const ContactForce cf = resolve_contact<Law, kFriction, kRotation>(
-        n, delta, 2.0 * ai, v_rel, spin, m, material[slot * c.species_count], u, c.dt_history);
+        n, delta, 2.0 * ai, vi - c.wall_velocity, spin, 1.0 / c.inv_mass[i], material, u,
+        c.dt_history);
     f += cf.force;
     if constexpr (kRotation) spin_sum += cf.c;
     if (c.wall_normal_record) {
@@ -60,15 +64,24 @@ template <class Law, bool kFriction, bool kRotation>
   for (int s = 0; s < c.planes; ++s) {
     const int axis = c.plane_axis[s];
     const double sign = c.plane_sign[s];
+    const double delta = plane_overlap(sign, xi[axis], c.plane_position[s], ai);
+    if (delta <= 0.0) {
+      clear_wall_contact<kFriction>(c, s, i);
+      continue;
+    }
     Vec3 n = Vec3::Zero();
     n[axis] = sign;
-    touch(s, n, plane_overlap(sign, xi[axis], c.plane_position[s], ai));
+    touch(s, n, delta);
   }
   if (c.cylinder) {
     const double dx = xi[0] - c.cylinder_x, dy = xi[1] - c.cylinder_y;
     double rho = 0.0;
     const double delta = cylinder_overlap(dx, dy, c.cylinder_radius, ai, rho);
-    touch(c.planes, rho > 0.0 ? Vec3(-dx / rho, -dy / rho, 0.0) : Vec3::Zero(), delta);
+    if (delta <= 0.0) {
+      clear_wall_contact<kFriction>(c, c.planes, i);
+    } else {
+      touch(c.planes, Vec3(-dx / rho, -dy / rho, 0.0), delta);
+    }
   }
 }
 
