@@ -17,10 +17,17 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <cmath>
+#ifdef __AVX__
+#include <immintrin.h>
+#endif
 
 namespace granpipe::dem {
 
 using Vec3 = Eigen::Vector3d;
+// The force loop's vectors: (x, y, z, 0). With AVX a 4-vector is one register, so each
+// vector operation is one instruction, where a 3-vector takes a pair, a scalar and the
+// shuffles between them; the zero keeps dot products and norms those of the 3-vector.
+using Vec4 = Eigen::Vector4d;
 
 enum class ContactLaw { Linear, Hertz };
 
@@ -33,6 +40,36 @@ struct HertzLaw {
   static double scale(double delta, double d) { return std::sqrt(delta / d); }
 };
 
+// The padded vector of the 3 doubles at p. With AVX, one masked load: a vector assembled
+// from scalars goes through the stack, and the wide load of narrower stores that follows
+// stalls (it cannot be forwarded), which costs more than all the arithmetic here.
+inline Vec4 load3(const double* p) {
+#ifdef __AVX__
+  Vec4 v;
+  _mm256_storeu_pd(v.data(), _mm256_maskload_pd(p, _mm256_set_epi64x(0, -1, -1, -1)));
+  return v;
+#else
+  return Vec4(p[0], p[1], p[2], 0.0);
+#endif
+}
+
+// a x b of two padded vectors. With AVX2: two lane rotations per operand and a fused
+// multiply-subtract (Eigen's cross3 works lane by lane for doubles).
+inline Vec4 cross(const Vec4& a, const Vec4& b) {
+#ifdef __AVX2__
+  const __m256d pa = _mm256_loadu_pd(a.data()), pb = _mm256_loadu_pd(b.data());
+  const __m256d a_yzx = _mm256_permute4x64_pd(pa, _MM_SHUFFLE(3, 0, 2, 1));
+  const __m256d a_zxy = _mm256_permute4x64_pd(pa, _MM_SHUFFLE(3, 1, 0, 2));
+  const __m256d b_yzx = _mm256_permute4x64_pd(pb, _MM_SHUFFLE(3, 0, 2, 1));
+  const __m256d b_zxy = _mm256_permute4x64_pd(pb, _MM_SHUFFLE(3, 1, 0, 2));
+  Vec4 out;
+  _mm256_storeu_pd(out.data(), _mm256_fmsub_pd(a_yzx, b_zxy, _mm256_mul_pd(a_zxy, b_yzx)));
+  return out;
+#else
+  return a.cross3(b);
+#endif
+}
+
 // A material ready for the force loop (kt's inverse precomputed).
 struct LoopMaterial {
   double kn, kt, gamma_n, gamma_t, mu, inv_kt;
@@ -41,17 +78,17 @@ struct LoopMaterial {
 // The force on particle i from the contact and c = n x F_t (the torque on i is -R_i c, the
 // torque on the partner -R_j c: Eq. 8). n points from the partner to i; delta > 0.
 struct ContactForce {
-  Vec3 force;
-  Vec3 normal;  // the normal part of `force`
-  Vec3 c;
+  Vec4 force;
+  Vec4 normal;  // the normal part of `force`
+  Vec4 c;
 };
 
 // v_rel: v_i - v_j (translational); spin: R_i w_i + R_j w_j; u: the stored displacement
 // (3 doubles, updated in place; unused without friction); dt_history: the time step, or 0
 // for a force evaluation that must not advance the history (the initial one).
 template <class Law, bool kFriction, bool kRotation>
-[[gnu::always_inline]] inline ContactForce resolve_contact(const Vec3& n, double delta, double d, const Vec3& v_rel,
-                                    const Vec3& spin, double m_eff, const LoopMaterial& m,
+[[gnu::always_inline]] inline ContactForce resolve_contact(const Vec4& n, double delta, double d, const Vec4& v_rel,
+                                    const Vec4& spin, double m_eff, const LoopMaterial& m,
                                     double* u, double dt_history) {
   static_assert(kFriction || !kRotation, "rotation without friction has no torque to apply");
   const double f = Law::scale(delta, d);
@@ -63,12 +100,12 @@ template <class Law, bool kFriction, bool kRotation>
     out.force = out.normal;
     return out;
   } else {
-    Vec3 vt = v_rel - vn * n;
-    if constexpr (kRotation) vt -= spin.cross(n);
-    Vec3 ut(u[0], u[1], u[2]);
+    Vec4 vt = v_rel - vn * n;
+    if constexpr (kRotation) vt -= cross(spin, n);
+    Vec4 ut = load3(u);
     ut -= ut.dot(n) * n;
     ut += dt_history * vt;
-    Vec3 ft = -f * (m.kt * ut + m.gamma_t * m_eff * vt);
+    Vec4 ft = -f * (m.kt * ut + m.gamma_t * m_eff * vt);
     const double limit = m.mu * std::abs(fn);
     const double ft2 = ft.squaredNorm();
     if (ft2 > limit * limit) {
@@ -80,7 +117,7 @@ template <class Law, bool kFriction, bool kRotation>
     u[1] = ut[1];
     u[2] = ut[2];
     out.force = out.normal + ft;
-    out.c = n.cross(ft);
+    out.c = cross(n, ft);
     return out;
   }
 }

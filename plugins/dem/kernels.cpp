@@ -13,7 +13,9 @@ namespace {
 inline Vec3 load(const double* a, std::ptrdiff_t i) {
   return Vec3(a[3 * i], a[3 * i + 1], a[3 * i + 2]);
 }
-inline void store(double* a, std::ptrdiff_t i, const Vec3& v) {
+inline Vec4 load4(const double* a, std::ptrdiff_t i) { return load3(a + 3 * i); }
+template <class V>
+inline void store(double* a, std::ptrdiff_t i, const V& v) {
   a[3 * i] = v[0];
   a[3 * i + 1] = v[1];
   a[3 * i + 2] = v[2];
@@ -24,27 +26,32 @@ inline void store_zero(double* a, std::ptrdiff_t i) { a[3 * i] = a[3 * i + 1] = 
 template <bool kRotation>
 constexpr int kStride = kRotation ? 6 : 3;
 
-// Adds particle i's wall forces to f and its wall contacts' n x F_t to spin_sum.
+// A wall slot particle i does not touch: its history and recorded forces are zero.
+template <bool kFriction>
+[[gnu::always_inline]] inline void clear_wall_contact(const ForceContext& c, int slot, int i) {
+  if constexpr (kFriction) store_zero(c.wall_history[slot], i);
+  if (c.wall_normal_record) {
+    store_zero(c.wall_normal_record[slot], i);
+    store_zero(c.wall_tangential_record[slot], i);
+  }
+}
+
+// Adds particle i's wall forces to f and its wall contacts' n x F_t to spin_sum. Most
+// particles touch no wall, so everything a contact needs (the mass, the material, the
+// normal) is made only once the overlap says it touches.
 template <class Law, bool kFriction, bool kRotation>
-[[gnu::always_inline]] inline void add_wall_forces(const ForceContext& c, int i, const Vec3& xi,
-                                                   const Vec3& vi, const Vec3& wi, Vec3& f,
-                                                   Vec3& spin_sum) {
-  const double ai = c.radius[i], m = 1.0 / c.inv_mass[i];
-  const LoopMaterial* material = c.wall_material + c.species[i];
-  const Vec3 v_rel = vi - c.wall_velocity;
-  const Vec3 spin = kRotation ? Vec3(ai * wi) : Vec3::Zero();
-  const auto touch = [&](int slot, const Vec3& n, double delta) __attribute__((always_inline)) {
+[[gnu::always_inline]] inline void add_wall_forces(const ForceContext& c, int i, const Vec4& xi,
+                                                   const Vec4& vi, const Vec4& wi, Vec4& f,
+                                                   Vec4& spin_sum) {
+  const double ai = c.radius[i];
+  const Vec4 wall_velocity = load3(c.wall_velocity.data());
+  const auto touch = [&](int slot, const Vec4& n, double delta) __attribute__((always_inline)) {
     double* u = kFriction ? c.wall_history[slot] + 3 * static_cast<std::ptrdiff_t>(i) : nullptr;
-    if (delta <= 0.0) {
-      if constexpr (kFriction) u[0] = u[1] = u[2] = 0.0;
-      if (c.wall_normal_record) {
-        store_zero(c.wall_normal_record[slot], i);
-        store_zero(c.wall_tangential_record[slot], i);
-      }
-      return;
-    }
+    const Vec4 spin = kRotation ? Vec4(ai * wi) : Vec4::Zero();
+    const LoopMaterial& material = c.wall_material[slot * c.species_count + c.species[i]];
     const ContactForce cf = resolve_contact<Law, kFriction, kRotation>(
-        n, delta, 2.0 * ai, v_rel, spin, m, material[slot * c.species_count], u, c.dt_history);
+        n, delta, 2.0 * ai, vi - wall_velocity, spin, 1.0 / c.inv_mass[i], material, u,
+        c.dt_history);
     f += cf.force;
     if constexpr (kRotation) spin_sum += cf.c;
     if (c.wall_normal_record) {
@@ -55,15 +62,24 @@ template <class Law, bool kFriction, bool kRotation>
   for (int s = 0; s < c.planes; ++s) {
     const int axis = c.plane_axis[s];
     const double sign = c.plane_sign[s];
-    Vec3 n = Vec3::Zero();
+    const double delta = plane_overlap(sign, xi[axis], c.plane_position[s], ai);
+    if (delta <= 0.0) {
+      clear_wall_contact<kFriction>(c, s, i);
+      continue;
+    }
+    Vec4 n = Vec4::Zero();
     n[axis] = sign;
-    touch(s, n, plane_overlap(sign, xi[axis], c.plane_position[s], ai));
+    touch(s, n, delta);
   }
   if (c.cylinder) {
     const double dx = xi[0] - c.cylinder_x, dy = xi[1] - c.cylinder_y;
     double rho = 0.0;
     const double delta = cylinder_overlap(dx, dy, c.cylinder_radius, ai, rho);
-    touch(c.planes, rho > 0.0 ? Vec3(-dx / rho, -dy / rho, 0.0) : Vec3::Zero(), delta);
+    if (delta <= 0.0) {
+      clear_wall_contact<kFriction>(c, c.planes, i);
+    } else {
+      touch(c.planes, Vec4(-dx / rho, -dy / rho, 0.0, 0.0), delta);
+    }
   }
 }
 
@@ -73,17 +89,18 @@ void forces(const ForceContext& c) {
   const int S = c.species_count;
 #pragma omp parallel for schedule(static) num_threads(c.threads)
   for (int i = 0; i < c.n; ++i) {
-    const Vec3 xi = load(c.x, i), vi = load(c.v, i);
-    const Vec3 wi = kRotation ? load(c.omega, i) : Vec3::Zero();
+    const Vec4 xi = load4(c.x, i), vi = load4(c.v, i);
+    const Vec4 wi = kRotation ? load4(c.omega, i) : Vec4::Zero();
     const double ai = c.radius[i], inv_mi = c.inv_mass[i];
     const LoopMaterial* row = c.pair_material + c.species[i] * S;
-    Vec3 fi = -c.background_damping * vi - c.air_damping * (vi - c.wall_velocity);
-    Vec3 ci = Vec3::Zero();
+    const Vec4 wall_velocity = load3(c.wall_velocity.data());
+    Vec4 fi = -c.background_damping * vi - c.air_damping * (vi - wall_velocity);
+    Vec4 ci = Vec4::Zero();
     for (std::int32_t k = c.first[i]; k < c.first[i + 1]; ++k) {
       const std::int32_t j = c.partner[k];
       double* rk = c.reaction + static_cast<std::ptrdiff_t>(stride) * k;
       double* u = kFriction ? c.history + 3 * static_cast<std::ptrdiff_t>(k) : nullptr;
-      const Vec3 d = xi - load(c.x, j);
+      const Vec4 d = xi - load4(c.x, j);
       const double r2 = d.squaredNorm(), aj = c.radius[j], contact = ai + aj;
       if (r2 >= contact * contact) {
         std::fill(rk, rk + stride, 0.0);
@@ -91,10 +108,10 @@ void forces(const ForceContext& c) {
         continue;
       }
       const double r = std::sqrt(r2);
-      const Vec3 n = d / r;
-      const Vec3 spin = kRotation ? Vec3(ai * wi + aj * load(c.omega, j)) : Vec3::Zero();
+      const Vec4 n = d / r;
+      const Vec4 spin = kRotation ? Vec4(ai * wi + aj * load4(c.omega, j)) : Vec4::Zero();
       const ContactForce cf = resolve_contact<Law, kFriction, kRotation>(
-          n, contact - r, contact, vi - load(c.v, j), spin, 1.0 / (inv_mi + c.inv_mass[j]),
+          n, contact - r, contact, vi - load4(c.v, j), spin, 1.0 / (inv_mi + c.inv_mass[j]),
           row[c.species[j]], u, c.dt_history);
       fi += cf.force;
       rk[0] = -cf.force[0];
