@@ -1,8 +1,10 @@
 #include "kernels.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 
 #include "walls.hpp"
 
@@ -83,6 +85,47 @@ template <class Law, bool kFriction, bool kRotation>
   }
 }
 
+// The pair loop takes a particle's pairs in blocks of this many, in two passes each.
+constexpr int kBlock = 32;
+
+// The pairs of one block that touch, in list order, with what the first pass computed.
+struct TouchingPairs {
+  int count = 0;
+  std::int32_t pair[kBlock];
+  Vec4 d[kBlock];  // x_i - x_j
+  double r2[kBlock];
+};
+
+// The first pass over pairs [k0, k1) of particle i: lists the touching pairs, clears every
+// reaction slot (those of touching pairs are written again) and the history of the pairs
+// out of contact. Without branches: whether a listed pair touches is close to a coin toss
+// (about half of them do), which a branch per pair would often mispredict.
+template <bool kFriction, int kStride>
+[[gnu::always_inline]] inline void find_touching(const ForceContext& c, const Vec4& xi, double ai,
+                                                 std::int32_t k0, std::int32_t k1,
+                                                 TouchingPairs& t) {
+  t.count = 0;
+  for (std::int32_t k = k0; k < k1; ++k) {
+    const std::int32_t j = c.partner[k];
+    const Vec4 d = xi - load4(c.x, j);
+    const double r2 = d.squaredNorm(), contact = ai + c.radius[j];
+    const bool touching = !(r2 >= contact * contact);
+    t.pair[t.count] = k;
+    t.d[t.count] = d;
+    t.r2[t.count] = r2;
+    t.count += touching;
+    std::fill_n(c.reaction + static_cast<std::ptrdiff_t>(kStride) * k, kStride, 0.0);
+    if constexpr (kFriction) {
+      // u & keep, not a select, which the compiler makes a branch.
+      double* u = c.history + 3 * static_cast<std::ptrdiff_t>(k);
+      const std::uint64_t keep = -static_cast<std::uint64_t>(touching);
+      for (int a = 0; a < 3; ++a) {
+        u[a] = std::bit_cast<double>(std::bit_cast<std::uint64_t>(u[a]) & keep);
+      }
+    }
+  }
+}
+
 template <class Law, bool kFriction, bool kRotation>
 void forces(const ForceContext& c) {
   constexpr int stride = kStride<kRotation>;
@@ -96,32 +139,31 @@ void forces(const ForceContext& c) {
     const Vec4 wall_velocity = load3(c.wall_velocity.data());
     Vec4 fi = -c.background_damping * vi - c.air_damping * (vi - wall_velocity);
     Vec4 ci = Vec4::Zero();
-    for (std::int32_t k = c.first[i]; k < c.first[i + 1]; ++k) {
-      const std::int32_t j = c.partner[k];
-      double* rk = c.reaction + static_cast<std::ptrdiff_t>(stride) * k;
-      double* u = kFriction ? c.history + 3 * static_cast<std::ptrdiff_t>(k) : nullptr;
-      const Vec4 d = xi - load4(c.x, j);
-      const double r2 = d.squaredNorm(), aj = c.radius[j], contact = ai + aj;
-      if (r2 >= contact * contact) {
-        std::fill(rk, rk + stride, 0.0);
-        if constexpr (kFriction) u[0] = u[1] = u[2] = 0.0;
-        continue;
-      }
-      const double r = std::sqrt(r2);
-      const Vec4 n = d / r;
-      const Vec4 spin = kRotation ? Vec4(ai * wi + aj * load4(c.omega, j)) : Vec4::Zero();
-      const ContactForce cf = resolve_contact<Law, kFriction, kRotation>(
-          n, contact - r, contact, vi - load4(c.v, j), spin, 1.0 / (inv_mi + c.inv_mass[j]),
-          row[c.species[j]], u, c.dt_history);
-      fi += cf.force;
-      rk[0] = -cf.force[0];
-      rk[1] = -cf.force[1];
-      rk[2] = -cf.force[2];
-      if constexpr (kRotation) {
-        ci += cf.c;
-        rk[3] = cf.c[0];
-        rk[4] = cf.c[1];
-        rk[5] = cf.c[2];
+    TouchingPairs touching;
+    for (std::int32_t k0 = c.first[i]; k0 < c.first[i + 1]; k0 += kBlock) {
+      find_touching<kFriction, stride>(c, xi, ai, k0, std::min(k0 + kBlock, c.first[i + 1]),
+                                       touching);
+      // The second pass: the touching pairs' forces, in list order.
+      for (int t = 0; t < touching.count; ++t) {
+        const std::int32_t k = touching.pair[t], j = c.partner[k];
+        double* rk = c.reaction + static_cast<std::ptrdiff_t>(stride) * k;
+        double* u = kFriction ? c.history + 3 * static_cast<std::ptrdiff_t>(k) : nullptr;
+        const double aj = c.radius[j], contact = ai + aj, r = std::sqrt(touching.r2[t]);
+        const Vec4 n = touching.d[t] / r;
+        const Vec4 spin = kRotation ? Vec4(ai * wi + aj * load4(c.omega, j)) : Vec4::Zero();
+        const ContactForce cf = resolve_contact<Law, kFriction, kRotation>(
+            n, contact - r, contact, vi - load4(c.v, j), spin, 1.0 / (inv_mi + c.inv_mass[j]),
+            row[c.species[j]], u, c.dt_history);
+        fi += cf.force;
+        rk[0] = -cf.force[0];
+        rk[1] = -cf.force[1];
+        rk[2] = -cf.force[2];
+        if constexpr (kRotation) {
+          ci += cf.c;
+          rk[3] = cf.c[0];
+          rk[4] = cf.c[1];
+          rk[5] = cf.c[2];
+        }
       }
     }
     add_wall_forces<Law, kFriction, kRotation>(c, i, xi, vi, wi, fi, ci);
