@@ -230,11 +230,11 @@ PointOutcome run_point(const Pipeline::Impl& p, std::size_t k, PointPlugins plug
 
   const std::string prefix = point_prefix(p, k);
   Results source_results;
-  plugins.source->finish(source_results);
+  located("source", [&] { plugins.source->finish(source_results); });
   if (!source_results.empty()) outcome.results[prefix + "source"] = std::move(source_results);
   for (std::size_t a = 0; a < plugins.analyzers.size(); ++a) {
     Results r;
-    plugins.analyzers[a]->finish(r);
+    located("analyzers[" + std::to_string(a) + "]", [&] { plugins.analyzers[a]->finish(r); });
     outcome.results[prefix + p.analyzers[a].name] = std::move(r);
   }
   for (const auto& writer : plugins.writers) writer->close();

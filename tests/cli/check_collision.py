@@ -39,7 +39,8 @@ with tempfile.TemporaryDirectory() as tmp:
         if s["frames_in_contact"] not in (49.0, 50.0, 51.0):
             failures.append(f"{s['frames_in_contact']} frames in contact at dt = t_c/50")
     r = run(os.path.join(tmp, "short"), "source.params.duration=0.01")
-    expected = "granpipe: collision: 42 frames: expected the two spheres to collide, got no contact\n"
+    expected = (f"granpipe: {pipeline}: analyzers[0]: collision: 42 frames: expected the two spheres "
+                "to collide, got no contact\n")
     if r.returncode != 2 or r.stderr != expected:
         failures.append(f"a run without contact: exit {r.returncode}, {r.stderr!r}")
 if failures:

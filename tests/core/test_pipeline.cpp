@@ -60,6 +60,14 @@ class NeedsSupports : public Analyzer {
   void finish(Results&) override {}
 };
 
+// Refuses in finish() what it saw (an analyzer that needs a whole run to judge its data).
+class RefusesAtTheEnd : public Analyzer {
+ public:
+  explicit RefusesAtTheEnd(const PluginContext&) {}
+  void consume(const Frame&, FrameCache&) override {}
+  void finish(Results&) override { throw InputError("expected at least 5 frames, got 4"); }
+};
+
 Registry test_registry() {
   Registry r;
   Schema s;
@@ -70,6 +78,7 @@ Registry test_registry() {
   a.real("scale", 1.0, "factor").min(0, true);
   r.add_analyzer<MeanXAnalyzer>("meanx", "mean x", a);
   r.add_analyzer<NeedsSupports>("needs_supports", "needs support labels", Schema{});
+  r.add_analyzer<RefusesAtTheEnd>("refuses_at_the_end", "refuses its data in finish()", Schema{});
   return r;
 }
 
@@ -315,6 +324,26 @@ TEST(PipelineErrors, AnalyzerNeedsWhatTheSourceLacks) {
                            "\"supports\", which neither the source nor an analyzer before it provides "
                            "(source \"random\")");
   }
+}
+
+TEST(PipelineErrors, AnAnalyzersRefusalInFinishNamesTheAnalyzer) {
+  const Registry r = test_registry();
+  const Pipeline p = Pipeline::parse(
+      R"({"source": {"plugin": "random", "params": {"frames": 4}},
+          "analyzers": [{"plugin": "meanx"}, {"plugin": "refuses_at_the_end"}]})",
+      "p.json", {}, r);
+  Log log;
+  log.set_quiet(true);
+  const fs::path out = fresh_dir("finish_refusal");
+  RunOptions o = quiet_options();
+  o.out = out;
+  try {
+    p.run(o, log);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "p.json: analyzers[1]: expected at least 5 frames, got 4");
+  }
+  fs::remove_all(out);
 }
 
 TEST(Pipeline, DefaultsAreFilledIn) {
