@@ -360,11 +360,15 @@ RunSummary Pipeline::run(const RunOptions& options, Log& log) const {
   try {
     for (std::size_t k = 0; k < p.points.size(); ++k) create_point_directory(point_directory(p, k, dir));
     log.open_file((dir / "run.log").string());
-    write_file_atomically(dir / "pipeline.json", resolved_json() + "\n");
+    const std::string resolved = resolved_json();
+    const auto provenance = [&](double seconds, bool complete) {
+      return Provenance{p.name, resolved, version(), git_commit(), p.seed, threads, seconds, started,
+                        complete};
+    };
+    write_file_atomically(dir / "pipeline.json", resolved + "\n");
     // Until the run ends the streamed tables go to results.partial.h5, marked incomplete
     // (as frames.partial.h5): a file named results.h5 is always a finished one.
-    stream.open(dir / "results.partial.h5", {p.name, resolved_json(), version(), git_commit(),
-                                             p.seed, threads, 0.0, started, false});
+    stream.open(dir / "results.partial.h5", provenance(0.0, false));
     log.info("granpipe " + std::string(version()) + " (" + git_commit() + "): " + p.name + ", " +
              std::to_string(p.points.size()) + " point(s), seed " + std::to_string(p.seed) + ", " +
              std::to_string(threads) + " thread(s), output " + summary.output_dir.string());
@@ -400,9 +404,7 @@ RunSummary Pipeline::run(const RunOptions& options, Log& log) const {
     if (p.points.size() > 1) summary.results["sweep"] = sweep_summary(p, summary.results);
     summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
-    Provenance prov{p.name, resolved_json(), version(), git_commit(), p.seed, threads, summary.seconds,
-                    started, true};
-    write_results(dir, summary.results, prov);
+    write_results(dir, summary.results, provenance(summary.seconds, true));
     fs::remove(dir / "results.partial.h5");
     log.info("done: " + std::to_string(summary.frames) + " frame(s) in " +
              std::to_string(summary.seconds) + " s; results in " +

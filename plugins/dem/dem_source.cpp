@@ -180,8 +180,6 @@ DemSource::DemSource(const PluginContext& ctx) : log_(ctx.log), progress_(ctx.pr
       << p.real("duration") << "), got " << p.real("save_from");
     throw InputError(m.str());
   }
-  drive_frequency_ = drive.angular_frequency / (2.0 * std::numbers::pi);
-  drive_start_ = drive.start;
   engine_ = std::make_unique<Engine>(model, walls, settings, initial);
   engine_->record_contacts(true);
   timing_ = ctx.stream_table(
@@ -256,9 +254,10 @@ void DemSource::report_progress(std::int64_t steps, double seconds) {
   const double t = engine_->time();
   const double rate = static_cast<double>(steps) * engine_->particles().size() / seconds;
   char status[160];
-  if (drive_frequency_ > 0.0) {
+  const Drive& drive = engine_->walls().drive();
+  if (drive.angular_frequency > 0.0) {
     std::snprintf(status, sizeof status, "t = %.2f, cycle %.2f, %.3g particle-steps/s", t,
-                  std::max(0.0, t - drive_start_) * drive_frequency_, rate);
+                  drive.cycles(t), rate);
   } else {
     std::snprintf(status, sizeof status, "t = %.2f, %.3g particle-steps/s", t, rate);
   }

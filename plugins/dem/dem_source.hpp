@@ -41,7 +41,6 @@ class DemSource : public Source {
   Progress& progress_;
   std::unique_ptr<Engine> engine_;
   std::int64_t total_steps_ = 0, save_every_ = 1, first_saved_step_ = 0;
-  double drive_frequency_ = 0.0, drive_start_ = 0.0;
   StreamedTable timing_;
   bool started_ = false;
 };

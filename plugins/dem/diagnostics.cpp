@@ -38,6 +38,7 @@ Energy energy(const Engine& e) {
   const NeighborList& list = e.neighbors();
   const ContactLaw law = e.settings().law;
   const bool friction = e.settings().friction;
+  const Eigen::Vector3d offset = e.wall_offset();
   Energy out;
   for (int i = 0; i < p.size(); ++i) {
     const double m = 1.0 / p.inv_mass[i];
@@ -58,7 +59,7 @@ Energy energy(const Engine& e) {
     }
     for (int slot = 0; slot < e.walls().count(); ++slot) {
       Vec3 n;
-      const double delta = e.walls().overlap(slot, p.x.col(i), p.radius[i], e.wall_offset(), n);
+      const double delta = e.walls().overlap(slot, p.x.col(i), p.radius[i], offset, n);
       if (delta <= 0.0) continue;
       const ContactMaterial& mat = e.model().with_wall(e.walls().wall_of_slot(slot), p.species[i]);
       out.normal_elastic += normal_potential(law, mat, delta, 2.0 * p.radius[i]);
@@ -83,11 +84,12 @@ std::optional<std::int32_t> first_non_finite(const Engine& e) {
 
 std::optional<std::int32_t> first_escaped(const Engine& e) {
   const Particles& p = e.particles();
+  const Eigen::Vector3d offset = e.wall_offset();
   for (int i = 0; i < p.size(); ++i) {
     for (int slot = 0; slot < e.walls().count(); ++slot) {
       Vec3 n;
       // The centre is past the wall when the overlap exceeds the radius.
-      if (e.walls().overlap(slot, p.x.col(i), p.radius[i], e.wall_offset(), n) > p.radius[i]) {
+      if (e.walls().overlap(slot, p.x.col(i), p.radius[i], offset, n) > p.radius[i]) {
         return p.tag[i];
       }
     }
@@ -110,6 +112,7 @@ void check_health(const Engine& e, double max_kinetic_energy) {
     throw BlowUp(where(e) + ": particle " + std::to_string(*tag) +
                  " went through a wall: the run blew up" + advice());
   }
+  if (!std::isfinite(max_kinetic_energy)) return;  // no bound: no sum to take
   const double kinetic = kinetic_energy(e.particles());
   if (kinetic > max_kinetic_energy) {
     std::ostringstream s;

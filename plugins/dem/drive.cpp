@@ -1,6 +1,8 @@
 #include "drive.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <sstream>
 
 #include "granpipe/errors.hpp"
@@ -19,6 +21,10 @@ Eigen::Vector3d Drive::velocity(double t) const {
   const double phase = angular_frequency * (t - start);
   const double s = form == Form::Sine ? std::cos(phase) : std::sin(phase);
   return amplitude * angular_frequency * s * direction;
+}
+
+double Drive::cycles(double t) const {
+  return std::max(0.0, t - start) * angular_frequency / (2.0 * std::numbers::pi);
 }
 
 void Drive::check() const {

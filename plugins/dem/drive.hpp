@@ -18,6 +18,8 @@ struct Drive {
 
   Eigen::Vector3d offset(double t) const;
   Eigen::Vector3d velocity(double t) const;
+  // Drive periods since the motion started, (t - start) f; 0 before it.
+  double cycles(double t) const;
   bool moves() const { return amplitude != 0.0 && angular_frequency != 0.0; }
   // Throws InputError on a NaN/infinite amplitude, frequency or start, or a direction that
   // is not a unit vector.

@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <sstream>
 #include <string>
 
@@ -118,7 +117,7 @@ void Engine::load_particles(const InitialState& in) {
       refuse("particle " + std::to_string(i) + ": species",
              "a species in 0.." + std::to_string(model_.species() - 1), s);
     }
-    const double mass = model_.density[s] * 4.0 / 3.0 * std::numbers::pi * a * a * a;
+    const double mass = model_.sphere_mass(s, a);
     p_.inv_mass[i] = 1.0 / mass;
     p_.inv_inertia[i] = 1.0 / (0.4 * mass * a * a);
     p_.tag[i] = static_cast<std::int32_t>(i);

@@ -1,7 +1,6 @@
 #include "frame_output.hpp"
 
 #include <algorithm>
-#include <numbers>
 #include <numeric>
 #include <vector>
 
@@ -99,8 +98,7 @@ void add_drive_observables(const Drive& drive, double t, Frame& frame) {
                                "drive periods since the drive started, (t - start) f"};
   static const Property velocity{"container_velocity", Scope::Frame, ValueType::Real, 1,
                                  "length/time", "vertical velocity of the vibrating container"};
-  const double f = drive.angular_frequency / (2.0 * std::numbers::pi);
-  frame.set_observable(cycles, std::max(0.0, t - drive.start) * f);
+  frame.set_observable(cycles, drive.cycles(t));
   frame.set_observable(velocity, drive.velocity(t)[2]);
 }
 

@@ -7,6 +7,7 @@
 // gamma_n and gamma_t are rates (1/time) multiplied by m_eff = m_i m_j / (m_i + m_j), as the
 // paper's Table I gives them and as LAMMPS' gran/hooke/history takes them; a wall counts
 // as infinitely heavy (m_eff = m_i).
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,10 @@ struct Model {
 
   int species() const { return static_cast<int>(density.size()); }
   const ContactMaterial& between(int a, int b) const { return pair[a * species() + b]; }
+  // The mass of a solid sphere of species s and radius a.
+  double sphere_mass(int s, double a) const {
+    return density[s] * 4.0 / 3.0 * std::numbers::pi * a * a * a;
+  }
   const ContactMaterial& with_wall(Wall w, int s) const {
     return wall[static_cast<int>(w) * species() + s];
   }

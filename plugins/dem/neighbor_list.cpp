@@ -72,7 +72,10 @@ void NeighborList::sort_by_cell(Particles& p) {
   count_.assign(cell_start_.begin(), cell_start_.end() - 1);  // fill cursors per cell
   for (int i = 0; i < n; ++i) order_[count_[cell_of_[i]]++] = i;
   p.permute(order_);
-  for (int k = 0; k < n; ++k) cell_of_[k] = grid_.cell_of(&p.x(0, k));
+  // After the permutation the particles of cell c are cell_start_[c] .. cell_start_[c+1]-1.
+  for (int c = 0; c < ncell; ++c) {
+    for (int k = cell_start_[c]; k < cell_start_[c + 1]; ++k) cell_of_[k] = c;
+  }
 }
 
 template <class F>

@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -33,7 +32,7 @@ std::vector<Lightest> lightest(const Model& model, const Eigen::ArrayXd& radius,
                        std::to_string(model.species() - 1) + ", got " + std::to_string(species[i]));
     }
     const double a = radius[i];
-    const double m = model.density[species[i]] * 4.0 / 3.0 * std::numbers::pi * a * a * a;
+    const double m = model.sphere_mass(species[i], a);
     Lightest& l = out[static_cast<std::size_t>(species[i])];
     if (m < l.mass) l = {m, a};
   }

@@ -7,8 +7,8 @@ FrameAnalysis analyse_frame(const Frame& frame, const Settings& settings, const 
   a.forces = force_contacts(frame, settings.force, where);
   a.networks = find_networks(frame.size(), frame.contact_i(), frame.contact_j(), a.forces.edges);
   a.strong = strong_network(frame, a.forces, a.networks);
-  const std::vector<double> f = scaled_forces(a.forces, a.forces.samples, a.forces.mean);
-  a.pdf = force_pdf(f, pdf_edges(f, settings.f_max, settings.bin_width));
+  a.scaled = scaled_forces(a.forces, a.forces.samples, a.forces.mean);
+  a.pdf = force_pdf(a.scaled, pdf_edges(a.scaled, settings.f_max, settings.bin_width));
   a.fit = fit_pdf(a.pdf, eq11_request(settings.min_fit_samples));
   a.loaded = loaded_pair_contacts(frame, a.forces);
   return a;
@@ -17,8 +17,7 @@ FrameAnalysis analyse_frame(const Frame& frame, const Settings& settings, const 
 PaperFrame paper_frame(const Frame& frame, const FrameAnalysis& a, long index,
                        const Settings& settings, const std::string& where) {
   PaperFrame p{index, frame.time, a.loaded, a.pdf, a.fit, {}, {}};
-  const std::vector<double> f = scaled_forces(a.forces, a.forces.samples, a.forces.mean);
-  p.correlation = force_correlation(contact_points(frame, a.forces.samples, where), f,
+  p.correlation = force_correlation(contact_points(frame, a.forces.samples, where), a.scaled,
                                     frame.container, frame.dim, settings.r_max, settings.r_bins,
                                     where);
   if (!settings.by_pass.empty()) {

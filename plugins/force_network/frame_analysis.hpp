@@ -19,7 +19,8 @@ struct FrameAnalysis {
   ForceContacts forces;
   Networks networks;
   StrongNetwork strong;
-  ForcePdf pdf;  // of f = |F_n| / <F_n> over the samples
+  std::vector<double> scaled;  // f = |F_n| / <F_n> of each sample
+  ForcePdf pdf;  // of f over the samples
   PdfFit fit;    // Eq. (11)
   long loaded = 0;  // particle–particle contacts with |F_n| > 0
 };

@@ -29,10 +29,6 @@ class Multipass {
   // Computes the next pass.
   Pass next();
 
-  int passes_done() const { return passes_; }
-  // Edges of the candidate graph, in Kruskal's order of the last pass.
-  std::size_t candidate_count() const { return sorted_.size(); }
-
  private:
   struct Ranked {
     Edge edge;

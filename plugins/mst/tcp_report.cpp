@@ -75,7 +75,6 @@ TcpReport tcp_report(const Frame& frame, FrameCache& cache, const MstOptions& op
 
   r.cutoff = options.cutoff > 0.0 ? options.cutoff : auto_cutoff(frame, options, r.pairs);
   std::vector<Edge> edges = candidate_edges(frame, options.candidates, r.cutoff, where);
-  r.candidate_edges = edges.size();
   r.complete_below = complete_below(frame, options, r.cutoff, edges);
   r.unproven = unproven(options, r);
 

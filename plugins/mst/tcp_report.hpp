@@ -31,7 +31,6 @@ struct TcpReport {
   std::vector<PassRow> passes;
   TreeCounts network;        // of all contact pairs
   std::int64_t contacts = 0;  // pairs in contact
-  std::size_t candidate_edges = 0;
   double cutoff = 0.0;  // candidates "cutoff": the factor used
   // Every pair shorter than this is a candidate; a contact whose weight stays below it in
   // every pass is selected exactly as by the MST of all pairs (docs/mst.md).
