@@ -31,7 +31,8 @@ class RadiusStats : public granpipe::Analyzer {
 
   // Optional: per-particle results as new columns, seen by the analyzers after this one
   // and by the writers (frames.h5 among them). Contact columns (Scope::Contact) work the
-  // same way: publish() is then called a second time with the contact table.
+  // same way: publish() is called once per scope you declare columns of (contacts only for
+  // frames with a contact table); columns.scope() tells which.
   std::vector<granpipe::Property> publishes() const override {
     return {{"scaled_radius", granpipe::Scope::Particle, granpipe::ValueType::Real, 1, "length",
              "particle radius times scale"}};
