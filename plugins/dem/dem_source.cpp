@@ -10,6 +10,7 @@
 #include "diagnostics.hpp"
 #include "frame_output.hpp"
 #include "granpipe/frame_store.hpp"
+#include "loose_lattice.hpp"
 #include "time_step.hpp"
 
 namespace granpipe::dem {
@@ -40,6 +41,7 @@ Model model_of(const Params& p) {
   Model m;
   m.density = species.reals("density");
   const int s = m.species();
+  for (int a = 0; a < s; ++a) m.fixed.push_back(species[static_cast<std::size_t>(a)].boolean("fixed"));
   m.pair.resize(static_cast<std::size_t>(s * s));
   m.wall.resize(static_cast<std::size_t>(kWallCount * s));
   for (int a = 0; a < s; ++a) {
@@ -56,6 +58,9 @@ Drive drive_of(const Params& p) {
   drive.amplitude = d.real("amplitude");
   drive.angular_frequency = 2.0 * std::numbers::pi * d.real("frequency");
   drive.start = d.real("start");
+  if (d.integer("periods") > 0 && d.real("frequency") > 0.0) {
+    drive.stop = drive.start + static_cast<double>(d.integer("periods")) / d.real("frequency");
+  }
   return drive;
 }
 
@@ -75,8 +80,14 @@ Settings settings_of(const PluginContext& ctx) {
   return s;
 }
 
-// The particles of frame `index` of the start file (-1: its last).
-Frame start_frame(const PluginContext& ctx) {
+// Where the run starts: the particles and the container holding them.
+struct Start {
+  InitialState state;
+  Container container;
+};
+
+// Frame `index` of the start file (-1: its last).
+Start start_from_file(const PluginContext& ctx, int species) {
   FrameReader reader(ctx.params.string("initial_file"));
   const std::int64_t index = ctx.params.integer("initial_frame");
   const long frames = reader.frames();
@@ -87,29 +98,59 @@ Frame start_frame(const PluginContext& ctx) {
   Frame f = reader.read(index < 0 ? frames - 1 : static_cast<long>(index));
   f.check(reader.info().path + ": frame " + std::to_string(index));
   if (f.dim != 3) throw InputError(ctx.param("initial_file") + ": expected a 3D frame, got 2D");
-  return f;
-}
-
-InitialState initial_state(const Frame& f, int species) {
   InitialState s;
   s.position = f.position().matrix().transpose();
   s.radius = f.radius();
   s.species = f.species().cast<int>();
   if (f.size() > 0 && s.species.maxCoeff() >= species) {
-    throw InputError("species: expected an entry for every species of the start frame (" +
+    throw InputError(ctx.param("species") + ": expected an entry for every species of the start frame (" +
                      std::to_string(s.species.maxCoeff() + 1) + "), got " + std::to_string(species));
   }
   if (f.has("velocity")) s.velocity = f.table<double>("velocity").matrix().transpose();
   if (f.has("angular_velocity")) {
     s.angular_velocity = f.table<double>("angular_velocity").matrix().transpose();
   }
+  return {std::move(s), f.container};
+}
+
+// A loose lattice in an open-topped cylinder standing on z = 0 (loose_lattice.hpp).
+Start start_from_bed(const PluginContext& ctx, int species) {
+  const Params& b = ctx.params.object("bed");
+  const double d = b.real("diameter"), R = 0.5 * b.real("cylinder_diameter");
+  if (b.real("intruder_diameter") > 0.0 && species < 2) {
+    throw InputError(ctx.param("species") + ": expected a second species for the bed's intruder "
+                     "(species 1), got " + std::to_string(species) + " species");
+  }
+  Start s;
+  s.state = loose_lattice({.count = static_cast<int>(b.integer("small")), .radius = 0.5 * d,
+                           .cylinder_radius = R, .spacing = b.real("spacing") * d,
+                           .jitter = b.real("jitter") * d,
+                           .intruder_radius = 0.5 * b.real("intruder_diameter"),
+                           .seed = ctx.seeds.derive("bed").seed()});
+  Container& c = s.container;
+  c.shape = ContainerShape::Cylinder;
+  c.cylinder_radius = R;
+  c.boundary[2] = {Boundary::Wall, Boundary::Open};
+  c.lo = Eigen::Vector3d(-R, -R, 0.0);
+  c.hi = Eigen::Vector3d(R, R, s.state.position.row(2).maxCoeff() + d);
   return s;
+}
+
+Start start_of(const PluginContext& ctx, int species) {
+  const bool file = !ctx.params.string("initial_file").empty();
+  const bool bed = ctx.params.object("bed").integer("small") > 0;
+  if (file == bed) {
+    throw InputError(ctx.params_path + ": expected either initial_file or bed.small > 0, got " +
+                     (file ? "both" : "neither"));
+  }
+  return file ? start_from_file(ctx, species) : start_from_bed(ctx, species);
 }
 
 // The fastest normal approach the scene can produce, for the Hertz contact time: the
 // walls' peak speed plus a free fall over the bed's height.
-double impact_speed(const Frame& f, const Drive& drive, const Settings& s) {
-  const double drop = f.size() > 0 ? f.position().col(2).maxCoeff() - f.position().col(2).minCoeff() : 0.0;
+double impact_speed(const InitialState& start, const Drive& drive, const Settings& s) {
+  const auto z = start.position.row(2);
+  const double drop = z.size() > 0 ? z.maxCoeff() - z.minCoeff() : 0.0;
   return std::abs(drive.amplitude * drive.angular_frequency) +
          std::sqrt(2.0 * s.gravity.norm() * drop) + 1e-3;
 }
@@ -122,14 +163,31 @@ std::int64_t steps_in(double time, double dt) {
 
 Schema schema() {
   Schema s;
-  s.path("initial_file", std::nullopt,
+  s.path("initial_file", std::string(""),
          "frames file (H5MD) to start from: positions, radii, species, velocities if any, and "
-         "the container, whose walls, base and cylinder become the engine's");
+         "the container, whose walls, base and cylinder become the engine's. Empty: start "
+         "from a loose bed (bed)");
   s.integer("initial_frame", -1, "frame of initial_file to start from (-1: the last)").min(-1);
+  Schema bed;
+  bed.integer("small", 0,
+              "spheres of species 0 on a loose lattice in a cylinder standing on z = 0 (stacked "
+              "square layers, alternate layers shifted, nudged sideways at random); 0: start "
+              "from initial_file").range(0, 2e7);
+  bed.real("diameter", 1.0, "the small spheres' diameter").min(0.0, true).unit("length");
+  bed.real("intruder_diameter", 0.0,
+           "diameter of an intruder (species 1) on the axis just above the base, the lattice "
+           "built around it; 0: none").min(0.0).unit("length");
+  bed.real("cylinder_diameter", 12.25, "inner diameter of the cylinder").min(0.0, true).unit("length");
+  bed.real("spacing", 1.03, "distance between lattice neighbours, in small diameters").min(1.0, true);
+  bed.real("jitter", 0.01, "largest sideways nudge, in small diameters").min(0.0);
+  s.object("bed", bed, "a generated start (instead of initial_file); the seed is the pipeline's");
   Schema species;
   species.real("density", 1.91, "mass per unit volume").min(0.0, true).unit("mass/length^3");
+  species.boolean("fixed", false,
+                  "held by the container: moves rigidly with it (the paper's preparation fixes "
+                  "the large sphere at the bottom)");
   s.species_table("species", species, R"([{"name": "small", "density": 1.91}])",
-                  "the species of the start frame, by index");
+                  "the species of the start, by index");
   s.pair_table("contacts", "species", material_fields(), R"({"*": {}})",
                "particle-particle contact material per species pair");
   s.object("walls", material_fields(), "the walls' contact material (every wall, every species)");
@@ -139,6 +197,9 @@ Schema schema() {
   drive.real("amplitude", 0.0, "A").unit("length");
   drive.real("frequency", 0.0, "f = w / 2 pi").min(0.0).unit("1/time");
   drive.real("start", 0.0, "time the motion starts").min(0.0).unit("time");
+  drive.integer("periods", 0,
+                "the motion stops after this many periods, the container then at rest (where "
+                "it started, for one_minus_cos); 0: never").min(0);
   s.object("drive", drive, "vibration of the whole container (base, cylinder and walls)");
   s.choice<ContactLaw>("law", ContactLaw::Linear, "contact law: linear spring-dashpot or Hertz");
   s.boolean("friction", true, "tangential forces with history and Coulomb's cap");
@@ -155,22 +216,31 @@ Schema schema() {
          "b_air of the interstitial air's drag -b_air (v - V), V the container's velocity "
          "(the paper's 1e-3 to 1e-2)").min(0.0);
   s.reals("gravity", std::vector<double>{0.0, 0.0, -1.0}, "gravitational acceleration").length(3);
+  s.real("relaxed_kinetic_energy", 0.0,
+         "once the container is at rest, the run ends with a frame at the first check (every "
+         "1000 steps) where the mean kinetic energy per particle (translational and rotational) "
+         "is below this; 0: run the whole duration").min(0.0).unit("energy");
   return s;
 }
 
 DemSource::DemSource(const PluginContext& ctx) : log_(ctx.log), progress_(ctx.progress) {
   const Params& p = ctx.params;
-  const Frame start = start_frame(ctx);
   const Model model = model_of(p);
+  const Start start = start_of(ctx, model.species());
   const Settings settings = settings_of(ctx);
   const Drive drive = drive_of(p);
   const WallSet walls(start.container, drive);
-  const InitialState initial = initial_state(start, model.species());
-  const ContactTime shortest = smallest_contact_time(model, walls, initial.radius, initial.species,
-                                                     settings.law, impact_speed(start, drive, settings));
+  const ContactTime shortest =
+      smallest_contact_time(model, walls, start.state.radius, start.state.species, settings.law,
+                            impact_speed(start.state, drive, settings));
   const StepCheck verdict = check_time_step(settings.dt, shortest);
   if (verdict.verdict == StepVerdict::Refuse) throw InputError(ctx.param("dt") + ": " + verdict.message);
   if (verdict.verdict == StepVerdict::Warn) log_.warn(ctx.param("dt") + ": " + verdict.message);
+  relaxed_kinetic_energy_ = p.real("relaxed_kinetic_energy");
+  if (relaxed_kinetic_energy_ > 0.0 && !drive.stopped(std::numeric_limits<double>::max())) {
+    log_.warn(ctx.param("relaxed_kinetic_energy") +
+              ": the container never stops (drive.periods is 0), so the run never ends early");
+  }
   total_steps_ = steps_in(p.real("duration"), settings.dt);
   save_every_ = p.integer("save_every");
   first_saved_step_ = steps_in(p.real("save_from"), settings.dt);
@@ -180,7 +250,8 @@ DemSource::DemSource(const PluginContext& ctx) : log_(ctx.log), progress_(ctx.pr
       << p.real("duration") << "), got " << p.real("save_from");
     throw InputError(m.str());
   }
-  engine_ = std::make_unique<Engine>(model, walls, settings, initial);
+  end_step_ = total_steps_;
+  engine_ = std::make_unique<Engine>(model, walls, settings, start.state);
   engine_->record_contacts(true);
   timing_ = ctx.stream_table(
       "timing", Table({"step", "steps", "seconds", "particle_steps_per_second", "force_seconds",
@@ -207,10 +278,10 @@ Source::Work DemSource::work() const {
 
 std::int64_t DemSource::next_frame_step() const {
   const std::int64_t now = engine_->step();
-  if (started_ && now >= total_steps_) return -1;
+  if (started_ && now >= end_step_) return -1;
   const std::int64_t after = started_ ? now + 1 : std::max(now, first_saved_step_);
   const std::int64_t due = std::max(after, first_saved_step_);
-  return std::min((due + save_every_ - 1) / save_every_ * save_every_, total_steps_);
+  return std::min((due + save_every_ - 1) / save_every_ * save_every_, end_step_);
 }
 
 bool DemSource::next(Frame& frame) {
@@ -220,6 +291,13 @@ bool DemSource::next(Frame& frame) {
   run_to(due);
   fill_frame(*engine_, frame);
   return true;
+}
+
+bool DemSource::relaxed() const {
+  if (relaxed_kinetic_energy_ <= 0.0 || !engine_->walls().drive().stopped(engine_->time())) {
+    return false;
+  }
+  return energy(*engine_).kinetic() < relaxed_kinetic_energy_ * engine_->particles().size();
 }
 
 void DemSource::run_to(std::int64_t step) {
@@ -242,6 +320,14 @@ void DemSource::run_to(std::int64_t step) {
       engine_->run(1);
     }
     check_health(*engine_, std::numeric_limits<double>::infinity());
+    if (end_step_ == total_steps_ && engine_->step() < step && relaxed()) {
+      // One more step, so that the last frame shows the wall contacts too.
+      end_step_ = step = engine_->step() + 1;
+      std::ostringstream m;
+      m << "dem: relaxed at t = " << engine_->time() << ": mean kinetic energy per particle below "
+        << relaxed_kinetic_energy_ << "; the run ends with the next step's frame";
+      log_.info(m.str());
+    }
     report_progress(steps, std::chrono::duration<double>(Clock::now() - chunk_start).count());
   }
   if (engine_->step() > first) {
@@ -275,6 +361,13 @@ void DemSource::record_timing(std::int64_t steps, double seconds, const StepProf
 }
 
 void DemSource::finish(Results& results) {
+  if (relaxed_kinetic_energy_ > 0.0 && end_step_ == total_steps_) {
+    std::ostringstream m;
+    m << "dem: relaxed_kinetic_energy: not reached within the duration (mean kinetic energy "
+      << energy(*engine_).kinetic() / engine_->particles().size() << " per particle at t = "
+      << engine_->time() << ")";
+    log_.warn(m.str());
+  }
   results.add_table("timing", timing_.table());
   const StepProfile& p = engine_->profile();
   const double particle_steps = static_cast<double>(engine_->step()) * engine_->particles().size();

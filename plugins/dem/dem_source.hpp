@@ -1,9 +1,10 @@
 #pragma once
 // The `dem` source: the engine run from a pipeline. It starts from a saved frame (the
-// particles, their species and the container, whose walls become the engine's walls),
-// takes the materials per species and species pair, the walls' material, the drive and
-// the time step from its parameters, checks dt against the shortest contact time before
-// anything runs, and emits a frame (with the contact table) every `save_every` steps.
+// particles, their species and the container, whose walls become the engine's walls) or
+// from a generated loose bed in a cylinder, takes the materials per species and species
+// pair, the walls' material, the drive and the time step from its parameters, checks dt
+// against the shortest contact time before anything runs, and emits a frame (with the
+// contact table) every `save_every` steps, ending early once a stopped bed has relaxed.
 #include <memory>
 #include <optional>
 
@@ -36,11 +37,16 @@ class DemSource : public Source {
   void report_progress(std::int64_t steps, double seconds);
   void record_timing(std::int64_t steps, double seconds, const StepProfile& before);
   std::int64_t next_frame_step() const;
+  // True once the container has stopped and the particles have come to rest (the
+  // relaxed_kinetic_energy parameter).
+  bool relaxed() const;
 
   Log& log_;
   Progress& progress_;
   std::unique_ptr<Engine> engine_;
   std::int64_t total_steps_ = 0, save_every_ = 1, first_saved_step_ = 0;
+  std::int64_t end_step_ = 0;  // total_steps_, or the step after relaxation was seen
+  double relaxed_kinetic_energy_ = 0.0;
   StreamedTable timing_;
   bool started_ = false;
 };

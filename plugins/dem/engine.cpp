@@ -70,6 +70,7 @@ Engine::Engine(const Model& model, const WallSet& walls, const Settings& setting
   list_ = NeighborList(settings_.skin * smallest, kernels_.reaction_stride, settings_.friction);
   rebuild();
   refuse_coincident_centres();
+  pin(time(), time());
   evaluate_forces(0.0, 0.0, time(), true);
 }
 
@@ -122,6 +123,7 @@ void Engine::load_particles(const InitialState& in) {
     p_.inv_inertia[i] = 1.0 / (0.4 * mass * a * a);
     p_.tag[i] = static_cast<std::int32_t>(i);
   }
+  hold_fixed_species();
   if (settings_.friction) p_.wall_history.assign(walls_.count(), Vectors::Zero(3, n));
 }
 
@@ -143,7 +145,44 @@ void Engine::prepare_materials() {
   wall_history_ptr_.resize(p_.wall_history.size());
 }
 
-void Engine::rebuild() { list_.rebuild(p_, settings_.threads); }
+void Engine::hold_fixed_species() {
+  const Eigen::Vector3d offset = walls_.drive().offset(time());
+  pinned_.clear();
+  pinned_slot_.assign(p_.tag.size(), -1);
+  for (int i = 0; i < p_.size(); ++i) {
+    if (!model_.is_fixed(p_.species[i])) continue;
+    pinned_slot_[static_cast<std::size_t>(i)] = static_cast<std::int32_t>(pinned_.size());
+    pinned_.push_back({p_.tag[static_cast<std::size_t>(i)], p_.x.col(i) - offset, i});
+  }
+}
+
+void Engine::rebuild() {
+  list_.rebuild(p_, settings_.threads);
+  find_pinned();
+}
+
+void Engine::find_pinned() {
+  if (pinned_.empty()) return;
+  for (int i = 0; i < p_.size(); ++i) {
+    const std::int32_t slot = pinned_slot_[static_cast<std::size_t>(p_.tag[static_cast<std::size_t>(i)])];
+    if (slot >= 0) pinned_[static_cast<std::size_t>(slot)].index = i;
+  }
+}
+
+double Engine::pin(double position_time, double velocity_time) {
+  if (pinned_.empty()) return 0.0;
+  const Eigen::Vector3d offset = walls_.drive().offset(position_time);
+  const Eigen::Vector3d velocity = walls_.drive().velocity(velocity_time);
+  const Vectors& built = list_.positions_at_build();
+  double moved = 0.0;
+  for (const Pinned& q : pinned_) {
+    p_.x.col(q.index) = q.rest + offset;
+    p_.v.col(q.index) = velocity;
+    p_.omega.col(q.index).setZero();
+    moved = std::max(moved, (p_.x.col(q.index) - built.col(q.index)).squaredNorm());
+  }
+  return moved;
+}
 
 ForceContext Engine::force_context(double dt_history, double velocity_time) {
   const Eigen::Vector3d offset = walls_.drive().offset(time());
@@ -235,6 +274,7 @@ void Engine::run(std::int64_t steps) {
   const double dt = settings_.dt;
   auto t0 = Clock::now();
   double moved = kernels_.start_step(kick_context(dt));
+  moved = std::max(moved, pin(time() + dt, time() + 0.5 * dt));
   auto t1 = Clock::now();
   profile_.integrate += seconds(t0, t1);
   for (std::int64_t s = 0; s < steps; ++s) {
@@ -252,8 +292,10 @@ void Engine::run(std::int64_t steps) {
     profile_.forces += seconds(t1, t0);
     if (last) {
       kernels_.finish_step(kick_context(dt));
+      pin(time(), time());
     } else {
       moved = kernels_.finish_and_start(kick_context(dt));
+      moved = std::max(moved, pin(time() + dt, time() + 0.5 * dt));
     }
     t1 = Clock::now();
     profile_.integrate += seconds(t0, t1);

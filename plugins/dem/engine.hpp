@@ -13,6 +13,10 @@
 // (solid spheres; spheres need no orientation). The forces at t = 0 are evaluated when
 // the engine is made, without advancing any history.
 //
+// Particles of a fixed species (Model::fixed) are held by the container: after each drift
+// they are put back at their starting position displaced with the walls, D(t+dt), moving
+// with the walls' velocity at the half step, without spin; the forces on them are unused.
+//
 // The hot loop touches only the engine's arrays; frame_output.hpp turns the state into a
 // granpipe::Frame when one is wanted.
 #include <Eigen/Core>
@@ -106,9 +110,18 @@ class Engine {
 
  private:
   void load_particles(const InitialState& initial);
+  // The particles of fixed species become pinned, at rest where they start.
+  void hold_fixed_species();
   void prepare_materials();
   void refuse_coincident_centres() const;
+  // The neighbour-list rebuild, with the spatial sort (pinned particles found again).
   void rebuild();
+  // Engine indices of the pinned particles, after a spatial sort.
+  void find_pinned();
+  // Puts the pinned particles where the container holds them at position_time, moving with
+  // it at velocity_time; returns the largest squared displacement of one since the last
+  // list build (0 without pinned particles).
+  double pin(double position_time, double velocity_time);
   // Forces at the current positions (walls displaced to the current time, moving with
   // their velocity at velocity_time), then, if `finish`, the reactions gathered and the
   // half kick of length kick_dt (else the caller does both, fused with the next step).
@@ -129,6 +142,13 @@ class Engine {
   std::vector<double> plane_sign_, plane_position_;
   std::vector<double*> wall_history_ptr_, normal_record_ptr_, tangential_record_ptr_;
   std::vector<Vectors> wall_normal_, wall_tangential_;
+  struct Pinned {
+    std::int32_t tag;
+    Eigen::Vector3d rest;  // position with the walls at rest
+    int index;             // engine index, refreshed at every rebuild
+  };
+  std::vector<Pinned> pinned_;
+  std::vector<std::int32_t> pinned_slot_;  // per tag: its place in pinned_, or -1
   bool recording_ = false;
   StepProfile profile_;
   std::int64_t step_ = 0, recorded_step_ = -1;

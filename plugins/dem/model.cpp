@@ -62,6 +62,8 @@ void Model::check() const {
   require(wall.size() == static_cast<std::size_t>(kWallCount * n), "wall materials",
           std::to_string(kWallCount * n) + " entries (walls x species)",
           static_cast<double>(wall.size()));
+  require(fixed.empty() || fixed.size() == static_cast<std::size_t>(n), "fixed species",
+          "none or one flag per species", static_cast<double>(fixed.size()));
   for (int s = 0; s < n; ++s) {
     require(std::isfinite(density[s]) && density[s] > 0.0,
             "species " + std::to_string(s) + ": density", "a finite value > 0", density[s]);

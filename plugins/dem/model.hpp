@@ -29,6 +29,10 @@ struct Model {
   std::vector<double> density;          // per species (mass/length^3)
   std::vector<ContactMaterial> pair;    // species x species, symmetric, row-major
   std::vector<ContactMaterial> wall;    // kWallCount x species, row-major by wall
+  // Per species (empty: none): particles held by the container, moving rigidly with it
+  // (the paper's preparation fixes the large sphere at the bottom). They keep their mass,
+  // so a contact with one is damped with the two particles' effective mass.
+  std::vector<bool> fixed;
 
   // `species` species of one density, one particle-particle material and one material
   // for every wall.
@@ -36,6 +40,7 @@ struct Model {
                        const ContactMaterial& walls);
 
   int species() const { return static_cast<int>(density.size()); }
+  bool is_fixed(int s) const { return !fixed.empty() && fixed[static_cast<std::size_t>(s)]; }
   const ContactMaterial& between(int a, int b) const { return pair[a * species() + b]; }
   // The mass of a solid sphere of species s and radius a.
   double sphere_mass(int s, double a) const {
