@@ -47,6 +47,7 @@ class DemSource : public Source {
   std::int64_t total_steps_ = 0, save_every_ = 1, first_saved_step_ = 0;
   std::int64_t end_step_ = 0;  // total_steps_, or the step after relaxation was seen
   double relaxed_kinetic_energy_ = 0.0;
+  double kinetic_energy_bound_ = 0.0;  // above it the run has blown up
   StreamedTable timing_;
   bool started_ = false;
 };
