@@ -25,10 +25,10 @@ std::vector<bool> counted_rows(const Frame& f, bool zero_force_contacts) {
 }
 
 ContactPairs::Pair ordered(std::int64_t a, std::int64_t b) {
-  return {static_cast<std::uint32_t>(std::min(a, b)), static_cast<std::uint32_t>(std::max(a, b))};
+  return {std::min(a, b), std::max(a, b)};
 }
 
-double centre_distance(const Frame& f, std::uint32_t a, std::uint32_t b) {
+double centre_distance(const Frame& f, std::int64_t a, std::int64_t b) {
   double r2 = 0.0;
   for (int axis = 0; axis < f.dim; ++axis) {
     const double d = f.container.minimum_image(axis, f.position()(b, axis) - f.position()(a, axis));
@@ -66,7 +66,7 @@ ContactPairs by_distance(const Frame& f, FrameCache& cache, double tolerance) {
 
 }  // namespace
 
-std::int64_t ContactPairs::find(std::uint32_t i, std::uint32_t j) const {
+std::int64_t ContactPairs::find(std::int64_t i, std::int64_t j) const {
   const Pair p{std::min(i, j), std::max(i, j)};
   const auto it = std::lower_bound(pairs.begin(), pairs.end(), p);
   return it != pairs.end() && *it == p ? it - pairs.begin() : -1;

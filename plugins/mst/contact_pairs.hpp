@@ -4,16 +4,16 @@
 // non-zero normal force, the force network's contacts), otherwise from the centre distance
 // (granpipe/contacts_by_distance.hpp).
 #include <cstdint>
-#include <utility>
 #include <vector>
 
+#include "granpipe/connected_components.hpp"
 #include "granpipe/frame.hpp"
 #include "granpipe/frame_cache.hpp"
 
 namespace granpipe::mst {
 
 struct ContactPairs {
-  using Pair = std::pair<std::uint32_t, std::uint32_t>;
+  using Pair = ParticlePair;
   std::vector<Pair> pairs;  // i < j, sorted, each once
   // For each row of the frame's contact table, its entry in `pairs`, or -1 (a wall, a
   // zero force not counted); empty when the frame has no table.
@@ -22,7 +22,7 @@ struct ContactPairs {
   bool from_table = false;
 
   // The entry of pair (i, j) in `pairs` (either order), or -1.
-  std::int64_t find(std::uint32_t i, std::uint32_t j) const;
+  std::int64_t find(std::int64_t i, std::int64_t j) const;
 };
 
 struct ContactRule {
