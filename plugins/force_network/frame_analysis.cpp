@@ -10,13 +10,12 @@ FrameAnalysis analyse_frame(const Frame& frame, const Settings& settings, const 
   a.scaled = scaled_forces(a.forces, a.forces.samples, a.forces.mean);
   a.pdf = force_pdf(a.scaled, pdf_edges(a.scaled, settings.f_max, settings.bin_width));
   a.fit = fit_pdf(a.pdf, eq11_request(settings.min_fit_samples));
-  a.loaded = loaded_pair_contacts(frame, a.forces);
   return a;
 }
 
 PaperFrame paper_frame(const Frame& frame, const FrameAnalysis& a, long index,
                        const Settings& settings, const std::string& where) {
-  PaperFrame p{index, frame.time, a.loaded, a.pdf, a.fit, {}, {}};
+  PaperFrame p{index, frame.time, a.forces.loaded, a.pdf, a.fit, {}, {}};
   p.correlation = force_correlation(contact_points(frame, a.forces.samples, where), a.scaled,
                                     frame.container, frame.dim, settings.r_max, settings.r_bins,
                                     where);
@@ -51,7 +50,7 @@ std::vector<double> per_frame_row(long index, double time, Eigen::Index particle
           d(other_networks), d(other_contacts), z_largest, z_mean, d(a.forces.edges.size()),
           d(a.forces.samples.size()), a.forces.mean, d(a.strong.contacts), d(a.strong.particles),
           d(a.strong.particles_in_largest), d(a.strong.largest.particles),
-          d(a.strong.largest.edges), d(a.loaded), d(static_cast<int>(fit.status)),
+          d(a.strong.largest.edges), d(a.forces.loaded), d(static_cast<int>(fit.status)),
           fit.value[kA], fit.error[kA], fit.value[kB], fit.error[kB], fit.value[kBeta],
           fit.error[kBeta], fit.dof > 0 && fit.fitted() ? fit.chi2 / fit.dof : 0.0};
 }

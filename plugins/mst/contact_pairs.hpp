@@ -4,6 +4,7 @@
 // non-zero normal force, the force network's contacts), otherwise from the centre distance
 // (granpipe/contacts_by_distance.hpp).
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "granpipe/connected_components.hpp"
@@ -20,6 +21,9 @@ struct ContactPairs {
   std::vector<std::int64_t> pair_of_row;
   std::vector<double> length;  // centre distance of each pair
   bool from_table = false;
+  // The frame's loaded pair contacts (granpipe/loaded_pair_contacts.hpp): which frame
+  // Table II describes, the one with most. 0 without a contact table.
+  std::int64_t loaded = 0;
 
   // The entry of pair (i, j) in `pairs` (either order), or -1.
   std::int64_t find(std::int64_t i, std::int64_t j) const;
@@ -30,11 +34,9 @@ struct ContactRule {
   double tolerance = 1e-9;           // relative, for contacts by distance
 };
 
-ContactPairs contact_pairs(const Frame& frame, FrameCache& cache, const ContactRule& rule);
-
-// Particle-particle contacts with a non-zero normal force (every particle-particle row
-// when the table has no normal_force column; the contacts by distance when the frame has
-// no table): which frame Table II describes, the one with most.
-std::int64_t loaded_contacts(const Frame& frame, FrameCache& cache, double tolerance);
+// Throws InputError after `where` for a contact table row that joins a particle to itself
+// or has a NaN or infinite normal force.
+ContactPairs contact_pairs(const Frame& frame, FrameCache& cache, const ContactRule& rule,
+                           const std::string& where);
 
 }  // namespace granpipe::mst

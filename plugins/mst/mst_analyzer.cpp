@@ -109,7 +109,7 @@ void MstAnalyzer::consume(const Frame& frame, FrameCache& cache) {
     row.push_back(static_cast<double>(r.unproven));
     per_frame_.add_row(row);
   }
-  keep_if_most_loaded(frame, loaded_contacts(frame, cache, options_.contacts.tolerance), r);
+  if (chosen_.offer(frames_, r.pairs.loaded)) keep_table_ii(frame, r);
 
   tcp_ = r.tcp;
   mst_pass_.resize(frame.contacts ? frame.contacts->rows() : 0);
@@ -120,11 +120,7 @@ void MstAnalyzer::consume(const Frame& frame, FrameCache& cache) {
   ++frames_;
 }
 
-void MstAnalyzer::keep_if_most_loaded(const Frame& frame, std::int64_t loaded,
-                                      const TcpReport& report) {
-  if (loaded <= most_loaded_) return;
-  most_loaded_ = loaded;
-  chosen_frame_ = frames_;
+void MstAnalyzer::keep_table_ii(const Frame& frame, const TcpReport& report) {
   chosen_time_ = frame.time;
   table_ii_ = Table(kTableColumns,
                     "the paper's Table II for the frame with the most particle-particle "
@@ -135,9 +131,9 @@ void MstAnalyzer::keep_if_most_loaded(const Frame& frame, std::int64_t loaded,
 void MstAnalyzer::finish(Results& results) {
   results.add_table("per_frame", per_frame_.table());
   results.add_scalar("frames", static_cast<double>(frames_), std::nan(""), "", "frames analysed");
-  if (chosen_frame_ < 0) return;
+  if (chosen_.frame() < 0) return;
   results.add_table("table_ii", table_ii_);
-  results.add_scalar("table_ii_frame", static_cast<double>(chosen_frame_), std::nan(""), "",
+  results.add_scalar("table_ii_frame", static_cast<double>(chosen_.frame()), std::nan(""), "",
                      "frame (counted from 0) that table_ii describes");
   results.add_scalar("table_ii_time", chosen_time_, std::nan(""), "time",
                      "time of the frame that table_ii describes");

@@ -202,6 +202,17 @@ TEST(ForceNetwork, ANonFiniteContactPointIsRefused) {
                         "infinite coordinate");
 }
 
+TEST(ForceNetwork, ANaNForceOrARowJoiningAParticleToItselfIsRefused) {
+  Frame nan_force = frame_of(kTable);
+  nan_force.contacts->get<Coordinates>("normal_force")(5, 0) = std::nan("");  // a wall row
+  EXPECT_EQ(refusal(nan_force), "frame 0: contact 5: expected a finite normal_force, got nan in "
+                                "component x");
+  Frame self = frame_of(kTable);
+  self.contact_j()[2] = 2;
+  EXPECT_EQ(refusal(self), "frame 0: contact 2: expected two different particles, got particle 2 "
+                           "twice");
+}
+
 TEST(ForceNetwork, RMaxBeyondHalfAPeriodicBoxIsRefused) {
   Frame f = frame_of(kTable);
   f.container = Container::periodic_box(3, Eigen::Vector3d(-2, -2, -2), Eigen::Vector3d(26, 2, 2));
