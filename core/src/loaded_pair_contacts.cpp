@@ -1,9 +1,9 @@
 #include "granpipe/loaded_pair_contacts.hpp"
 
 #include <cmath>
-#include <sstream>
 
 #include "granpipe/errors.hpp"
+#include "granpipe/format_number.hpp"
 
 namespace granpipe {
 
@@ -12,10 +12,9 @@ namespace {
 void check_force(const ValueTable<double>& force, Eigen::Index row, const std::string& where) {
   for (Eigen::Index a = 0; a < force.cols(); ++a) {
     if (!std::isfinite(force(row, a))) {
-      std::ostringstream s;
-      s << where << ": contact " << row << ": expected a finite normal_force, got "
-        << force(row, a) << " in component " << "xyz"[a];
-      throw InputError(s.str());
+      throw InputError(where + ": contact " + std::to_string(row) +
+                       ": expected a finite normal_force, got " + format_number(force(row, a)) +
+                       " in component " + "xyz"[a]);
     }
   }
 }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "granpipe/connected_components.hpp"
+#include "granpipe/contacts_by_distance.hpp"
 #include "granpipe/frame.hpp"
 #include "granpipe/frame_cache.hpp"
 
@@ -31,7 +32,7 @@ struct ContactPairs {
 
 struct ContactRule {
   bool zero_force_contacts = false;  // table rows with F_n = 0 count too
-  double tolerance = 1e-9;           // relative, for contacts by distance
+  double tolerance = kDefaultContactTolerance;  // relative, for contacts by distance
 };
 
 // Throws InputError after `where` for a contact table row that joins a particle to itself

@@ -1,8 +1,10 @@
 #include "mst_analyzer.hpp"
 
 #include <cmath>
-#include <sstream>
 #include <string>
+
+#include "granpipe/contacts_by_distance.hpp"
+#include "granpipe/format_number.hpp"
 
 namespace granpipe::mst {
 
@@ -24,12 +26,6 @@ std::vector<double> table_row(const TcpReport& r, const PassRow& p) {
           d(p.tcp.others), d(p.tcp.other_edges), d(r.network.largest_particles),
           d(r.network.largest_edges), d(r.network.others), d(r.network.other_edges),
           d(r.contacts), d(p.selected), r.recovered(p)};
-}
-
-std::string number(double x) {
-  std::ostringstream s;
-  s << x;
-  return s.str();
 }
 
 }  // namespace
@@ -54,10 +50,7 @@ Schema schema() {
   s.boolean("zero_force_contacts", false,
             "rows of the frame's contact table with a zero normal force count as contacts "
             "(by default only non-zero forces do: the force network)");
-  s.real("contact_tolerance", 1e-9,
-         "frames without a contact table: two particles touch when their centre distance is "
-         "at most (R_i + R_j)(1 + this)")
-      .min(0.0);
+  declare_contact_tolerance(s, "contact_tolerance");
   return s;
 }
 
@@ -98,7 +91,7 @@ void MstAnalyzer::consume(const Frame& frame, FrameCache& cache) {
   if (r.unproven > 0 && !warned_inexact_) {
     warned_inexact_ = true;
     log_.warn("mst: " + where + ": " + std::to_string(r.unproven) +
-              " contacts, lengthened, are not shorter than " + number(r.complete_below) +
+              " contacts, lengthened, are not shorter than " + format_number(r.complete_below) +
               ", below which the candidate graph holds every pair: their selection may differ "
               "from the MST of all pairs (docs/mst.md; column unproven_contacts)");
   }
