@@ -266,6 +266,35 @@ TEST(ForceNetwork, Eq11FitRecoversTheParametersOfItsOwnSamples) {
   EXPECT_EQ(fit.value[kGamma], 0.0);
 }
 
+// The shift fit of an exactly exponential PDF against a reference with a plateau
+// (b = 0.83): the best fit moves the bump out of the bins, where alpha no longer changes
+// anything. It is reported as not determined, without values, not fitted with an error of
+// 1e8 or more.
+TEST(ForceNetwork, AParameterTheDataDoNotDetermineIsNotReportedAsFitted) {
+  const double beta = 1.35;
+  ForcePdf pdf{.edges = {}, .counts = {}, .samples = 100000};
+  for (int k = 0; k <= 60; ++k) pdf.edges.push_back(0.1 * k);
+  for (int k = 0; k < 60; ++k) {
+    pdf.counts.push_back(100000.0 * (std::exp(-beta * pdf.edges[k]) - std::exp(-beta * pdf.edges[k + 1])));
+  }
+  FitRequest shift;
+  shift.start = {normalising_a(0.83, beta), 0.83, 0.0, beta, 0.0};
+  shift.free = {false, false, true, false, true};
+  const PdfFit fit = fit_pdf(pdf, shift);
+  EXPECT_EQ(fit.status, FitStatus::NotDetermined) << fit.value[kAlpha] << " +- " << fit.error[kAlpha];
+  EXPECT_STREQ(describe(fit.status), "not fitted: a parameter is not determined by the data");
+  EXPECT_EQ(fit.value[kAlpha], 0.0);
+  EXPECT_EQ(fit.error[kAlpha], 0.0);
+
+  // A peak (b < 0) the data hold no trace of: the fit keeps it inside the bins, where
+  // alpha is determined.
+  shift.start[kB] = -0.5;
+  const PdfFit peak = fit_pdf(pdf, shift);
+  ASSERT_EQ(peak.status, FitStatus::Fitted);
+  EXPECT_GT(peak.value[kAlpha], 0.0);
+  EXPECT_LT(peak.error[kAlpha], 0.1);
+}
+
 // Eq. (12) summed over every ordered pair i != j, binned as force_correlation bins.
 ForceCorrelation direct_correlation(const Coordinates& x, const std::vector<double>& f,
                                     const Container& c, double r_max, int bins) {
