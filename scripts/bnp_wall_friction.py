@@ -19,6 +19,7 @@ import h5py
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from charts import line_chart  # noqa: E402
+from input_error import read_pipeline, refuse  # noqa: E402
 
 SWEPT = "source.params.walls.mu"
 
@@ -28,8 +29,7 @@ def read_curves(path):
     with h5py.File(path, "r", swmr=True) as f:
         pipeline = json.loads(f.attrs["pipeline"]) if "pipeline" in f.attrs else None
         if pipeline is None:
-            with open(os.path.join(os.path.dirname(path), "pipeline.json")) as p:
-                pipeline = json.load(p)
+            pipeline = read_pipeline(os.path.dirname(path))
         values = pipeline["sweep"]["parameters"][SWEPT]
         frequency = pipeline["source"]["params"]["drive"]["frequency"]
         curves = {}
@@ -61,7 +61,13 @@ def main():
     args = parser.parse_args()
     final = os.path.join(args.out_dir, "results.h5")
     path = final if os.path.exists(final) else os.path.join(args.out_dir, "results.partial.h5")
-    curves = read_curves(path)
+    if not os.path.exists(path):
+        refuse(f"{args.out_dir}: expected results.h5 or results.partial.h5 of a run, found neither")
+    try:
+        curves = read_curves(path)
+    except (OSError, KeyError, TypeError) as e:
+        refuse(f"{path}: expected the results of a run of pipelines/bnp_wall_friction.json, "
+               f"could not read them ({type(e).__name__}: {e})")
     cycles = {mu: per_cycle(points) for mu, points in curves.items()}
     last = min(len(c) for c in cycles.values())
     print("| cycle | " + " | ".join(f"μ_wall = {mu}" for mu in cycles) + " |")

@@ -31,6 +31,7 @@ import subprocess
 import sys
 
 from charts import loglog_chart
+from input_error import refuse
 from result_csv import read_table
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -51,8 +52,8 @@ def run_point(args, pipeline, name, settings, cpu_log):
         return cpu_log[name]
     out = os.path.join(args.out, name)
     if os.path.exists(out):
-        raise SystemExit(f"{out}: expected no directory for a point not in cpu_seconds.csv, found one "
-                         "(an interrupted run?): remove it to run the point again")
+        refuse(f"{out}: expected no directory for a point not in cpu_seconds.csv, found one "
+               "(an interrupted run?): remove it to run the point again")
     command = [args.granpipe, pipeline, "--out", out, "--threads", "1", "--quiet"]
     for key, value in settings.items():
         command += ["--set", f"{key}={json.dumps(value)}"]
@@ -60,7 +61,10 @@ def run_point(args, pipeline, name, settings, cpu_log):
     result = subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
     seconds = cpu_seconds_of_children() - before
     if result.returncode != 0:
-        raise SystemExit(f"{' '.join(command)}: exit {result.returncode}: {result.stderr.strip()}")
+        message = f"{' '.join(command)}: exit {result.returncode}: {result.stderr.strip()}"
+        if result.returncode == 2:  # granpipe refused the input: so does this script
+            refuse(message)
+        raise SystemExit(message)
     with open(os.path.join(args.out, "cpu_seconds.csv"), "a") as f:
         f.write(f"{name},{seconds!r}\n")
     cpu_log[name] = seconds
@@ -142,7 +146,7 @@ def final_height(path):
     """Time and intruder height of the last row of an intruder.per_frame.csv."""
     _, header, rows = read_table(path)
     if not rows:
-        raise SystemExit(f"{path}: expected rows, found none")
+        refuse(f"{path}: expected rows, found none")
     return rows[-1][header.index("time")], rows[-1][header.index("intruder_height")]
 
 

@@ -13,6 +13,7 @@ import csv
 import math
 
 from charts import line_chart
+from input_error import refuse
 from pool_replicas import BRANCHES
 from result_csv import read_table
 
@@ -23,9 +24,9 @@ def read_pooled(path):
         with open(path) as f:
             rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
     except OSError as e:
-        raise SystemExit(f"{path}: expected a pooled table, found none: {e.strerror}")
+        refuse(f"{path}: expected a pooled table, found none: {e.strerror}")
     if not rows:
-        raise SystemExit(f"{path}: expected rows of a pooled table, found none")
+        refuse(f"{path}: expected rows of a pooled table, found none")
     return rows
 
 
@@ -33,7 +34,7 @@ def number(path, row, column):
     try:
         return float(row[column])
     except (KeyError, TypeError, ValueError):
-        raise SystemExit(f"{path}: expected a number in column {column}, found {row.get(column)!r}") from None
+        refuse(f"{path}: expected a number in column {column}, found {row.get(column)!r}")
 
 
 def main():
@@ -61,7 +62,7 @@ def main():
         column = args.column or args.plot
         for c in (args.reference_x, column):
             if c not in header:
-                raise SystemExit(f"{args.reference}: expected a column {c}, found {header[:4]}...")
+                refuse(f"{args.reference}: expected a column {c}, found {header[:4]}...")
         err = header.index(column + "_err") if column + "_err" in header else None
         reference = [(r[header.index(args.reference_x)], r[header.index(column)],
                       r[err] if err is not None else math.nan) for r in ref_rows]

@@ -24,26 +24,26 @@ with several replicas per amplitude. Writes, beside the input:
 """
 import argparse
 import csv
-import json
 import math
 import os
 
-from result_csv import read_table
 from charts import line_chart
+from input_error import read_pipeline, refuse
+from result_csv import read_table
 
 BRANCHES = {0: "first increase", 1: "decreasing", 2: "increasing"}
 
 
 def pool(tables, keys):
-    """tables: list of (header, rows), one per replica. Returns header and pooled rows."""
-    header = tables[0][0]
-    for h, _ in tables[1:]:
+    """tables: list of (file, header, rows), one per replica. Returns header and pooled rows."""
+    first, header, _ = tables[0]
+    for path, h, _ in tables[1:]:
         if h != header:
-            raise SystemExit(f"replicas disagree on the table's columns: {header} against {h}")
+            refuse(f"{path}: expected the columns of the replica {first}, {header}, found {h}")
     quantities = [c for c in header if c + "_err" in header]
     index = {c: header.index(c) for c in header}
     by_key = {}
-    for _, rows in tables:
+    for _, _, rows in tables:
         for row in rows:
             by_key.setdefault(tuple(row[index[k]] for k in keys), []).append(row)
     out_header = list(keys) + ["replicas", "frames"] + [c for q in quantities for c in (q, q + "_err")]
@@ -75,11 +75,11 @@ def main():
     ap.add_argument("--reference", help="output directory of a constant-amplitude sweep to draw beside the plot")
     ap.add_argument("--reference-x", default="source.params.A", help="column of the reference's sweep.points.csv for x")
     args = ap.parse_args()
-    points_provenance, header, points = read_table(os.path.join(args.out, "sweep.points.csv"))
+    points_path = os.path.join(args.out, "sweep.points.csv")
+    points_provenance, header, points = read_table(points_path)
     if args.over not in header:
-        raise SystemExit(f"{args.out}/sweep.points.csv: expected a swept column {args.over}, found {header[1:4]}...")
-    with open(os.path.join(args.out, "pipeline.json")) as f:
-        swept = list(json.load(f).get("sweep", {}).get("parameters", {}).keys())
+        refuse(f"{points_path}: expected a swept column {args.over}, found {header[1:4]}...")
+    swept = list(read_pipeline(args.out).get("sweep", {}).get("parameters", {}).keys())
     others = [s for s in swept if s != args.over and s in header]
     groups = {}
     for p in points:
@@ -88,7 +88,7 @@ def main():
 
     row_of_point = {int(p[header.index("point")]): p for p in points}
     if "points" in args.table and args.plot and not others:
-        raise SystemExit(f"{args.out}: --table points --plot draws against a swept parameter besides {args.over}, found none")
+        refuse(f"{args.out}: --table points --plot draws against a swept parameter besides {args.over}, found none")
 
     for table in args.table:
         keys = [] if table == "points" else args.key or ["branch", "amplitude"]
@@ -98,16 +98,16 @@ def main():
             tables = []
             for point in members:
                 if table == "points":
-                    provenance, h, rows = points_provenance, header, [row_of_point[point]]
+                    path, provenance, h, rows = points_path, points_provenance, header, [row_of_point[point]]
                 else:
                     path = os.path.join(args.out, f"point_{point:03d}.{table}.csv")
                     if not os.path.exists(path):
-                        raise SystemExit(f"{path}: expected the table {table} of point {point}, found no file")
+                        refuse(f"{path}: expected the table {table} of point {point}, found no file")
                     provenance, h, rows = read_table(path)
-                tables.append((h, rows))
+                tables.append((path, h, rows))
             for k in keys:
-                if k not in tables[0][0]:
-                    raise SystemExit(f"{table}: expected a key column {k}, found {tables[0][0]}")
+                if k not in tables[0][1]:
+                    refuse(f"{tables[0][0]}: expected a key column {k}, found {tables[0][1]}")
             hdr, rows = pool(tables, keys)
             tag = ", ".join(f"{s.split('.')[-1]}={v:g}" for s, v in zip(others, gkey))
             # A point's row keeps its swept values as columns, so the pooled file is a sweep table.
@@ -134,7 +134,7 @@ def main():
                 _, rh, rrows = read_table(os.path.join(args.reference, "sweep.points.csv"))
                 column = args.plot if table == "points" else f"{table.split('.')[0]}.{args.plot}"
                 if args.reference_x not in rh or column not in rh:
-                    raise SystemExit(f"{args.reference}/sweep.points.csv: expected columns {args.reference_x} and {column}")
+                    refuse(f"{args.reference}/sweep.points.csv: expected columns {args.reference_x} and {column}")
                 err = rh.index(column + "_err") if column + "_err" in rh else None
                 reference = [(r[rh.index(args.reference_x)], r[rh.index(column)],
                               r[err] if err is not None else math.nan) for r in rrows]

@@ -2,6 +2,8 @@
 then rows of numbers (string sweep values appear as their index in the sweep list)."""
 import csv
 
+from input_error import refuse
+
 
 def read_table(path):
     """Returns (provenance line or "", header, rows of floats)."""
@@ -11,15 +13,15 @@ def read_table(path):
     except OSError as e:
         # A run of a single point writes no sweep.points.csv: say so where that is the file.
         hint = " (a run of one point writes none)" if path.endswith("sweep.points.csv") else ""
-        raise SystemExit(f"{path}: expected a granpipe table, found none: {e.strerror}{hint}")
+        refuse(f"{path}: expected a granpipe table, found none: {e.strerror}{hint}")
     provenance = lines[0].strip() if lines and lines[0].startswith("#") else ""
     rows = list(csv.reader(line for line in lines if not line.startswith("#")))
     if not rows:
-        raise SystemExit(f"{path}: expected a header row, found an empty table")
+        refuse(f"{path}: expected a header row, found an empty table")
     numbers = []
     for k, row in enumerate(rows[1:], start=1):
         try:
             numbers.append([float(v) for v in row])
         except ValueError:
-            raise SystemExit(f"{path}: data row {k}: expected numbers, found {row}") from None
+            refuse(f"{path}: data row {k}: expected numbers, found {row}")
     return provenance, rows[0], numbers

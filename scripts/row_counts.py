@@ -21,6 +21,7 @@ from collections import Counter
 
 import h5py
 import numpy as np
+from input_error import refuse
 
 
 def row_sizes(x_y, diameter, gap, skip_bottom, skip_top):
@@ -38,10 +39,10 @@ def count_file(path, gap, skip_bottom, skip_top):
             radii = f["granpipe/radius"][:]
             width = f["particles/all/box/edges/value"][0][0]
     except (OSError, KeyError) as e:
-        raise SystemExit(f"{path}: expected a 2D granpipe frames.h5, could not read it ({e})")
+        refuse(f"{path}: expected a 2D granpipe frames.h5, could not read it ({e})")
     if positions.shape[-1] != 2:
-        raise SystemExit(f"{path}: particles/all/position: expected 2D positions, "
-                         f"found {positions.shape[-1]} components")
+        refuse(f"{path}: particles/all/position: expected 2D positions, "
+               f"found {positions.shape[-1]} components")
     sizes = []
     for frame, r in zip(positions, radii):
         sizes += row_sizes(frame, 2.0 * r.mean(), gap, skip_bottom, skip_top)

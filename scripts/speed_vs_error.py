@@ -12,11 +12,11 @@ error for scale) and speed_vs_error.svg (seconds against |deviation|, log-log).
 """
 import argparse
 import csv
-import json
 import os
 
-from result_csv import read_table
 from charts import loglog_chart
+from input_error import read_pipeline, refuse
+from result_csv import read_table
 
 
 def read_points(path):
@@ -35,12 +35,11 @@ def main():
     points, header = read_points(os.path.join(args.out, "sweep.points.csv"))
     for col in [args.knob, args.time] + args.quantity:
         if col not in header:
-            raise SystemExit(f"{args.out}/sweep.points.csv: expected a column {col}, got none")
+            refuse(f"{args.out}/sweep.points.csv: expected a column {col}, got none")
     swept = [h for h in header[1:header.index(args.knob)] + header[header.index(args.knob) + 1:]
              if h.startswith(("source.params.", "analyzers["))]
     # String-valued sweep parameters appear as their index in the sweep list.
-    with open(os.path.join(args.out, "pipeline.json")) as f:
-        lists = json.load(f).get("sweep", {}).get("parameters", {})
+    lists = read_pipeline(args.out).get("sweep", {}).get("parameters", {})
     name_of = lambda s, v: lists[s][int(v)] if s in lists and isinstance(lists[s][0], str) else f"{v:g}"
     groups = {}
     for p in points:

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 #include "granpipe/errors.hpp"
+#include "granpipe/format_number.hpp"
 
 namespace granpipe {
 namespace {
@@ -21,18 +21,13 @@ constexpr double kMinRange = 1e-100, kMaxRange = 1e100;
 
 const char* axis_name(int a) { return a == 0 ? "x" : a == 1 ? "y" : "z"; }
 
-// %g, with as many digits as it takes to tell `x` from `other` (up to 17).
+// `x` with as many digits as it takes to tell it from `other` (6 to 17).
 std::string number(double x, double other) {
-  char buf[40];
   for (int digits = 6;; ++digits) {
-    std::snprintf(buf, sizeof buf, "%.*g", digits, x);
-    char b[40];
-    std::snprintf(b, sizeof b, "%.*g", digits, other);
-    if (x == other || std::string(buf) != b || digits == 17) return buf;
+    const std::string s = format_number(x, digits);
+    if (x == other || s != format_number(other, digits) || digits == 17) return s;
   }
 }
-
-std::string number(double x) { return number(x, x); }
 
 }  // namespace
 
@@ -41,8 +36,9 @@ CellList::CellList(const Coordinates& position, const Container& container, int 
     : pos_(position), dim_(dim), cutoff_(cutoff) {
   const std::string at = (where.empty() ? "" : where + ": ") + "neighbour search: ";
   if (!(cutoff >= kMinRange && cutoff <= kMaxRange)) {
-    throw InputError(at + "expected a contact range (largest contact distance) from " + number(kMinRange) +
-                     " to " + number(kMaxRange) + ", got " + number(cutoff));
+    throw InputError(at + "expected a contact range (largest contact distance) from " +
+                     format_number(kMinRange) + " to " + format_number(kMaxRange) + ", got " +
+                     format_number(cutoff));
   }
   const Eigen::Index n = position.rows();
   for (int a = 0; a < dim; ++a) {
@@ -62,10 +58,11 @@ CellList::CellList(const Coordinates& position, const Container& container, int 
       length_[a] = std::max(mx - mn, cutoff);
     }
     if (!(length_[a] <= kMaxLengthInRanges * cutoff)) {
-      throw InputError(at + "expected a box at most " + number(kMaxLengthInRanges) + " contact ranges (" +
-                       number(cutoff) + ") long along " + axis_name(a) + ", got " +
+      throw InputError(at + "expected a box at most " + format_number(kMaxLengthInRanges) +
+                       " contact ranges (" + format_number(cutoff) + ") long along " +
+                       axis_name(a) + ", got " +
                        (periodic_[a] ? "a periodic box of length " : "particles spread over ") +
-                       number(length_[a]));
+                       format_number(length_[a]));
     }
   }
   // Cells per axis, estimated in double (their product could overflow an integer).

@@ -44,6 +44,14 @@ void find_wall_contacts(const Frame& f, double tolerance, std::vector<Found>& ou
 
 }  // namespace
 
+void declare_contact_tolerance(Schema& schema, const std::string& name) {
+  schema.real(name, kDefaultContactTolerance,
+              "relative contact tolerance: two particles touch when their centre distance is "
+              "at most (R_i + R_j)(1 + " + name + "), a particle and a wall when the "
+              "centre-wall distance is at most R_i (1 + " + name + ")")
+      .min(0.0);
+}
+
 IntArray DistanceContacts::coordination(Eigen::Index n, bool with_walls) const {
   IntArray z = IntArray::Zero(n);
   for (Eigen::Index k = 0; k < size(); ++k) {

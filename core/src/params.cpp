@@ -2,10 +2,10 @@
 
 #include <cmath>
 #include <memory>
-#include <sstream>
 #include <type_traits>
 
 #include "granpipe/errors.hpp"
+#include "granpipe/format_number.hpp"
 #include "param_tables.hpp"
 #include "param_validation.hpp"
 
@@ -201,12 +201,8 @@ const PairTable& Params::pairs(const std::string& n) const {
 }
 
 namespace {
-std::string number(double x) {
-  std::ostringstream s;
-  s.precision(15);
-  s << x;
-  return s.str();
-}
+// 15 digits: a value as the pipeline gave it (0.1, not 0.10000000000000001).
+std::string number(double x) { return format_number(x, 15); }
 template <class T>
 std::string list(const std::vector<T>& v) {
   std::string out = "[";

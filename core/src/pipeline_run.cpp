@@ -107,6 +107,10 @@ PointPlugins make_plugins(const Pipeline::Impl& p, std::size_t k, int threads, L
     // A column the source carries (frames saved by an earlier run) is replaced by the
     // analyzer's; one that an earlier analyzer publishes, or a required one, is refused.
     for (const Property& c : made.analyzers.back()->publishes()) {
+      if (c.scope == Scope::Frame) {  // publish() is never asked for them
+        throw InputError(spec.where + ": analyzer \"" + spec.info->name + "\" publishes the frame "
+                         "column \"" + c.name + "\": expected particle or contact columns only");
+      }
       if (provided(published, c) || is_required(c)) {
         throw InputError(spec.where + ": analyzer \"" + spec.info->name + "\" publishes the column \"" +
                          c.name + "\", which the frames already carry");

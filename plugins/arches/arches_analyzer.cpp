@@ -6,6 +6,7 @@
 
 #include "arch_statistics.hpp"
 #include "contact_census.hpp"
+#include "granpipe/contacts_by_distance.hpp"
 #include "mutual_stability.hpp"
 #include "support_count.hpp"
 #include "svg_writer.hpp"
@@ -32,10 +33,7 @@ std::string frame_name(long index, const Frame& frame) {
 
 Schema schema() {
   Schema s;
-  s.real("contact_tolerance", 1e-9,
-         "two disks touch when their centre distance is at most (R_i + R_j)(1 + this); a "
-         "disk and a wall when their distance is at most R_i (1 + this)")
-      .min(0.0);
+  declare_contact_tolerance(s, "contact_tolerance");
   s.real("span_bin", 0.05, "bin width of the span distributions n_s(x)")
       .min(0.0, true)
       .unit("mean disk diameters");

@@ -1,6 +1,7 @@
 #include "force_contacts.hpp"
 
 #include "granpipe/errors.hpp"
+#include "granpipe/loaded_pair_contacts.hpp"
 
 namespace granpipe::force_network {
 
@@ -14,6 +15,7 @@ ForceContacts force_contacts(const Frame& frame, const ForceSettings& settings,
     throw InputError(where + ": expected the contact column normal_force, got contacts without it");
   }
   ForceContacts out;
+  out.loaded = static_cast<long>(loaded_pair_contacts(frame, where).size());
   out.magnitude = frame.contacts->get<Coordinates>("normal_force").rowwise().norm();
   const IndexArray& j = frame.contact_j();
   double sum = 0.0;
@@ -53,15 +55,6 @@ Coordinates contact_points(const Frame& frame, const std::vector<Eigen::Index>& 
     out.row(static_cast<Eigen::Index>(k)) = point.row(rows[k]);
   }
   return out;
-}
-
-long loaded_pair_contacts(const Frame& frame, const ForceContacts& forces) {
-  const IndexArray& j = frame.contact_j();
-  long count = 0;
-  for (Eigen::Index row = 0; row < j.size(); ++row) {
-    if (partner::is_particle(j[row]) && forces.magnitude[row] > 0.0) ++count;
-  }
-  return count;
 }
 
 }  // namespace granpipe::force_network

@@ -22,10 +22,14 @@ struct ForceContacts {
   std::vector<Eigen::Index> edges;    // rows: particle–particle, |F_n| > min_force
   std::vector<Eigen::Index> samples;  // rows of the statistics, ascending
   double mean = 0.0;                  // <F_n> over the samples; 0 when there are none
+  // Particle–particle contacts with |F_n| > 0 (granpipe/loaded_pair_contacts.hpp): the
+  // count that picks the paper's frame, whatever min_force is (the mst analyzer counts the
+  // same way).
+  long loaded = 0;
 };
 
-// Throws InputError after `where` when the frame has no contact table or the table lacks
-// normal_force.
+// Throws InputError after `where` when the frame has no contact table, the table lacks
+// normal_force, a row joins a particle to itself or a normal force is NaN or infinite.
 ForceContacts force_contacts(const Frame& frame, const ForceSettings& settings,
                              const std::string& where);
 
@@ -37,9 +41,5 @@ std::vector<double> scaled_forces(const ForceContacts& forces,
 // after `where` when the contacts have no point column.
 Coordinates contact_points(const Frame& frame, const std::vector<Eigen::Index>& rows,
                            const std::string& where);
-
-// Particle–particle contacts with |F_n| > 0: the count that picks the paper's frame (the
-// mst analyzer counts the same way, whatever min_force is).
-long loaded_pair_contacts(const Frame& frame, const ForceContacts& forces);
 
 }  // namespace granpipe::force_network

@@ -77,7 +77,7 @@ void ForceNetworkAnalyzer::consume(const Frame& frame, FrameCache&) {
   if (!settings_.by_pass.empty() && frame.contacts) pass_column(frame, settings_, where);
   const FrameAnalysis a = analyse_frame(frame, settings_, where);
   per_frame_.add_row(per_frame_row(frames_, frame.time, frame.size(), a));
-  if (a.loaded > paper_.loaded) paper_ = paper_frame(frame, a, frames_, settings_, where);
+  if (chosen_.offer(frames_, a.forces.loaded)) paper_ = paper_frame(frame, a, frames_, settings_, where);
   network_ = a.networks.label;
   strong_ = a.strong.flag;
   ++frames_;

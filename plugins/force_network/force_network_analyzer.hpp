@@ -5,6 +5,7 @@
 // the same statistics of the contacts captured by the passes of a multipass MST (Sec.
 // III.C). docs/force_network.md says what each output means.
 #include "frame_analysis.hpp"
+#include "granpipe/loaded_pair_contacts.hpp"
 #include "granpipe/plugin.hpp"
 #include "settings.hpp"
 
@@ -28,7 +29,8 @@ class ForceNetworkAnalyzer : public Analyzer {
   Settings settings_;
   long frames_ = 0;
   StreamedTable per_frame_;
-  PaperFrame paper_;
+  MostLoadedFrame chosen_;
+  PaperFrame paper_;  // of the chosen frame
   IndexArray network_;  // of the last frame consumed, for publish()
   IntArray strong_;
 };

@@ -5,18 +5,17 @@ namespace granpipe::force_network {
 FrameAnalysis analyse_frame(const Frame& frame, const Settings& settings, const std::string& where) {
   FrameAnalysis a;
   a.forces = force_contacts(frame, settings.force, where);
-  a.networks = find_networks(frame.size(), frame.contact_i(), frame.contact_j(), a.forces.edges);
+  a.networks = find_networks(frame, a.forces.edges);
   a.strong = strong_network(frame, a.forces, a.networks);
   a.scaled = scaled_forces(a.forces, a.forces.samples, a.forces.mean);
   a.pdf = force_pdf(a.scaled, pdf_edges(a.scaled, settings.f_max, settings.bin_width));
   a.fit = fit_pdf(a.pdf, eq11_request(settings.min_fit_samples));
-  a.loaded = loaded_pair_contacts(frame, a.forces);
   return a;
 }
 
 PaperFrame paper_frame(const Frame& frame, const FrameAnalysis& a, long index,
                        const Settings& settings, const std::string& where) {
-  PaperFrame p{index, frame.time, a.loaded, a.pdf, a.fit, {}, {}};
+  PaperFrame p{index, frame.time, a.forces.loaded, a.pdf, a.fit, {}, {}};
   p.correlation = force_correlation(contact_points(frame, a.forces.samples, where), a.scaled,
                                     frame.container, frame.dim, settings.r_max, settings.r_bins,
                                     where);
@@ -38,20 +37,20 @@ std::vector<std::string> per_frame_columns() {
 std::vector<double> per_frame_row(long index, double time, Eigen::Index particles,
                                   const FrameAnalysis& a) {
   const auto d = [](auto x) { return static_cast<double>(x); };
-  const std::vector<NetworkSize>& sizes = a.networks.size;
-  NetworkSize largest;
+  const std::vector<ComponentSize>& sizes = a.networks.size;
+  ComponentSize largest;
   if (!sizes.empty()) largest = sizes.front();
   const long other_networks = sizes.empty() ? 0 : static_cast<long>(sizes.size()) - 1;
-  long other_contacts = 0;
-  for (std::size_t k = 1; k < sizes.size(); ++k) other_contacts += sizes[k].contacts;
-  const double z_largest = largest.particles > 0 ? 2.0 * d(largest.contacts) / d(largest.particles) : 0.0;
+  std::int64_t other_contacts = 0;
+  for (std::size_t k = 1; k < sizes.size(); ++k) other_contacts += sizes[k].edges;
+  const double z_largest = largest.particles > 0 ? 2.0 * d(largest.edges) / d(largest.particles) : 0.0;
   const double z_mean = particles > 0 ? 2.0 * d(a.forces.edges.size()) / d(particles) : 0.0;
   const PdfFit& fit = a.fit;
-  return {d(index), time, d(sizes.size()), d(largest.particles), d(largest.contacts),
+  return {d(index), time, d(sizes.size()), d(largest.particles), d(largest.edges),
           d(other_networks), d(other_contacts), z_largest, z_mean, d(a.forces.edges.size()),
           d(a.forces.samples.size()), a.forces.mean, d(a.strong.contacts), d(a.strong.particles),
           d(a.strong.particles_in_largest), d(a.strong.largest.particles),
-          d(a.strong.largest.contacts), d(a.loaded), d(static_cast<int>(fit.status)),
+          d(a.strong.largest.edges), d(a.forces.loaded), d(static_cast<int>(fit.status)),
           fit.value[kA], fit.error[kA], fit.value[kB], fit.error[kB], fit.value[kBeta],
           fit.error[kBeta], fit.dof > 0 && fit.fitted() ? fit.chi2 / fit.dof : 0.0};
 }

@@ -22,14 +22,14 @@ struct FrameAnalysis {
   std::vector<double> scaled;  // f = |F_n| / <F_n> of each sample
   ForcePdf pdf;  // of f over the samples
   PdfFit fit;    // Eq. (11)
-  long loaded = 0;  // particle–particle contacts with |F_n| > 0
 };
 
 // Throws InputError after `where` for a frame without contacts or normal_force.
 FrameAnalysis analyse_frame(const Frame& frame, const Settings& settings, const std::string& where);
 
 // The frame whose full tables force_network reports: the one with the most particle–particle
-// contacts with |F_n| > 0, the earliest of equals (the mst analyzer picks the same).
+// contacts with |F_n| > 0, the earliest of equals (granpipe::MostLoadedFrame; the mst
+// analyzer picks the same).
 struct PaperFrame {
   long index = -1;  // none yet
   double time = 0.0;

@@ -13,7 +13,7 @@ const char* const kEq13 = "P(f) = a (1 - b exp(-(f - alpha)^2)) exp(-beta (f - g
 void add_fit(Results& results, const std::string& name, const PdfFit& fit, const std::string& doc) {
   results.add_scalar(name + "_status", static_cast<double>(fit.status), std::nan(""), "",
                      doc + ": " + describe(fit.status) + " (0 fitted, 1 too few samples, 2 no "
-                     "convergence, 3 no reference fit)");
+                     "convergence, 3 no reference fit, 4 a parameter not determined)");
   if (!fit.fitted()) return;
   Fit out;
   out.model = kEq13;
@@ -64,8 +64,8 @@ void add_pass_fits(const PaperFrame& p, Results& results) {
            "shift_chi2_per_dof"},
           "Eq. (13) fits of the PDF of the contacts of passes 1..k: free (a, b, alpha, beta; "
           "gamma = 0) and shift (a, b, beta of the full network's Eq. (11) fit; alpha, gamma "
-          "free); status 0 fitted, 1 too few samples, 2 no convergence, 3 no reference fit; "
-          "values 0 when not fitted");
+          "free); status 0 fitted, 1 too few samples, 2 no convergence, 3 no reference fit, 4 "
+          "a parameter not determined; values 0 when not fitted");
   const auto per_dof = [](const PdfFit& f) { return f.fitted() ? f.chi2 / f.dof : 0.0; };
   for (const PassSubset& s : p.passes) {
     const Parameters &fv = s.free_fit.value, &fe = s.free_fit.error;

@@ -5,6 +5,7 @@
 #include <gsl/gsl_multifit_nlinear.h>
 
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <numbers>
@@ -110,9 +111,21 @@ bool read_solution(gsl_multifit_nlinear_workspace* w, const Problem& problem, Pd
   return finite && fit.covariance.allFinite();
 }
 
-// Runs the trust-region minimiser from `start`; true when it converged to finite values
-// and errors, which it leaves in `fit` (whose dof is set).
-bool minimise(Problem& problem, const Parameters& start, PdfFit& fit) {
+// Below this reciprocal condition number of the Jacobian, J^T J's is below the double
+// precision: the covariance, and the errors, are rounding noise. That is a parameter the
+// data do not determine, such as the alpha of a bump that the minimiser moved out of the
+// bins (errors of 1e8 and more, where determined fits have rcond above 0.01).
+const double kMinRcond = std::sqrt(std::numeric_limits<double>::epsilon());
+
+// Whether the converged workspace's parameters are all determined by the data.
+bool determined(const gsl_multifit_nlinear_workspace* w) {
+  double rcond = 0.0;
+  return gsl_multifit_nlinear_rcond(&rcond, w) == GSL_SUCCESS && rcond >= kMinRcond;
+}
+
+// Runs the trust-region minimiser from `start`: Fitted when it converged to finite values
+// and errors of determined parameters, which it leaves in `fit` (whose dof is set).
+FitStatus minimise(Problem& problem, const Parameters& start, PdfFit& fit) {
   gsl_reports_by_return_codes();
   const std::size_t n = problem.pdf.bins(), p = problem.moved.size();
   gsl_multifit_nlinear_fdf fdf{};
@@ -128,10 +141,13 @@ bool minimise(Problem& problem, const Parameters& start, PdfFit& fit) {
   for (int q : problem.moved) x.push_back(start[q]);
   gsl_vector_view x0 = gsl_vector_view_array(x.data(), p);
   int info = 0;
-  return gsl_multifit_nlinear_init(&x0.vector, &fdf, w.get()) == GSL_SUCCESS &&
-         gsl_multifit_nlinear_driver(500, 1e-10, 1e-10, 0.0, nullptr, nullptr, &info, w.get()) ==
-             GSL_SUCCESS &&
-         read_solution(w.get(), problem, fit);
+  const bool converged =
+      gsl_multifit_nlinear_init(&x0.vector, &fdf, w.get()) == GSL_SUCCESS &&
+      gsl_multifit_nlinear_driver(500, 1e-10, 1e-10, 0.0, nullptr, nullptr, &info, w.get()) ==
+          GSL_SUCCESS;
+  if (!converged) return FitStatus::NotConverged;
+  if (!determined(w.get())) return FitStatus::NotDetermined;
+  return read_solution(w.get(), problem, fit) ? FitStatus::Fitted : FitStatus::NotConverged;
 }
 
 }  // namespace
@@ -147,6 +163,7 @@ const char* describe(FitStatus s) {
     case FitStatus::TooFewSamples: return "not fitted: too few samples";
     case FitStatus::NotConverged: return "not fitted: no convergence";
     case FitStatus::NoReference: return "not fitted: the full network's fit has no values";
+    case FitStatus::NotDetermined: return "not fitted: a parameter is not determined by the data";
   }
   return "";
 }
@@ -160,12 +177,10 @@ PdfFit fit_pdf(const ForcePdf& pdf, const FitRequest& request) {
   const std::size_t n = pdf.bins(), p = problem.moved.size();
   if (pdf.samples < request.min_samples || n <= p || p == 0) return fit;
   fit.dof = static_cast<int>(n - p);
-  if (minimise(problem, request.start, fit)) {
-    fit.status = FitStatus::Fitted;
-    return fit;
-  }
+  fit.status = minimise(problem, request.start, fit);
+  if (fit.fitted()) return fit;
   PdfFit none;  // no values from a failed minimisation
-  none.status = FitStatus::NotConverged;
+  none.status = fit.status;
   return none;
 }
 

@@ -28,8 +28,11 @@ double eq13(const Parameters& p, double f);
 
 // Why a fit has no values: 0 fitted; 1 too few samples or bins; 2 the minimiser did not
 // converge or gave a non-finite result; 3 the fit it depends on (the full network's) has
-// no values.
-enum class FitStatus : std::uint8_t { Fitted = 0, TooFewSamples = 1, NotConverged = 2, NoReference = 3 };
+// no values; 4 it converged, but the data do not determine every free parameter (the
+// Jacobian is singular to double precision: such a parameter's error would be 1e8 or more).
+enum class FitStatus : std::uint8_t {
+  Fitted = 0, TooFewSamples = 1, NotConverged = 2, NoReference = 3, NotDetermined = 4
+};
 const char* describe(FitStatus s);
 
 struct FitRequest {

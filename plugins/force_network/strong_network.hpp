@@ -11,7 +11,7 @@ struct StrongNetwork {
   long contacts = 0;              // strong contacts
   long particles = 0;             // particles touched by a strong contact
   long particles_in_largest = 0;  // of those, the ones in the largest force network
-  NetworkSize largest;            // the largest connected component of strong contacts
+  ComponentSize largest;          // the largest connected component of strong contacts
 };
 
 StrongNetwork strong_network(const Frame& frame, const ForceContacts& forces,

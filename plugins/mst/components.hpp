@@ -1,12 +1,11 @@
 #pragma once
-// Connected components of a graph of particles (the TCPs, the contact network) and the
-// counts of the paper's Table II: particles and edges of the largest, and how many others
-// (of two particles or more) with how many edges in all.
+// The counts of the paper's Table II for a graph of particles (the TCPs, the contact
+// network): particles and edges of the largest connected component, and how many others
+// (of two particles or more) with how many edges in all (granpipe/connected_components.hpp).
 #include <cstdint>
-#include <utility>
 #include <vector>
 
-#include "granpipe/property_table.hpp"
+#include "granpipe/connected_components.hpp"
 
 namespace granpipe::mst {
 
@@ -23,7 +22,6 @@ struct Components {
 };
 
 // `edges` pairs of particles below `particles`, each once.
-Components components(std::uint32_t particles,
-                      const std::vector<std::pair<std::uint32_t, std::uint32_t>>& edges);
+Components components(std::uint32_t particles, const std::vector<ParticlePair>& edges);
 
 }  // namespace granpipe::mst

@@ -4,31 +4,26 @@
 #include <cmath>
 
 #include "granpipe/contacts_by_distance.hpp"
+#include "granpipe/loaded_pair_contacts.hpp"
 
 namespace granpipe::mst {
 
 namespace {
 
-// Rows of the table that count: particle partners, with a force unless zero forces count.
-std::vector<bool> counted_rows(const Frame& f, bool zero_force_contacts) {
-  const PropertyTable& table = *f.contacts;
-  std::vector<bool> counted(static_cast<std::size_t>(table.rows()));
-  const ValueTable<double>* force = !zero_force_contacts && table.has("normal_force")
-                                        ? &table.get<ValueTable<double>>("normal_force")
-                                        : nullptr;
-  for (Eigen::Index k = 0; k < table.rows(); ++k) {
-    bool c = partner::is_particle(f.contact_j()[k]) && f.contact_i()[k] != f.contact_j()[k];
-    if (c && force) c = (force->row(k) != 0.0).any();
-    counted[static_cast<std::size_t>(k)] = c;
+// Every row of the table that joins two particles.
+std::vector<Eigen::Index> pair_rows(const Frame& f) {
+  std::vector<Eigen::Index> rows;
+  for (Eigen::Index k = 0; k < f.contact_j().size(); ++k) {
+    if (partner::is_particle(f.contact_j()[k])) rows.push_back(k);
   }
-  return counted;
+  return rows;
 }
 
 ContactPairs::Pair ordered(std::int64_t a, std::int64_t b) {
-  return {static_cast<std::uint32_t>(std::min(a, b)), static_cast<std::uint32_t>(std::max(a, b))};
+  return {std::min(a, b), std::max(a, b)};
 }
 
-double centre_distance(const Frame& f, std::uint32_t a, std::uint32_t b) {
+double centre_distance(const Frame& f, std::int64_t a, std::int64_t b) {
   double r2 = 0.0;
   for (int axis = 0; axis < f.dim; ++axis) {
     const double d = f.container.minimum_image(axis, f.position()(b, axis) - f.position()(a, axis));
@@ -37,22 +32,17 @@ double centre_distance(const Frame& f, std::uint32_t a, std::uint32_t b) {
   return std::sqrt(r2);
 }
 
-ContactPairs from_table(const Frame& f, bool zero_force_contacts) {
+// The pairs of the table rows `counted` (ascending).
+ContactPairs from_table(const Frame& f, const std::vector<Eigen::Index>& counted) {
   ContactPairs c;
   c.from_table = true;
-  const std::vector<bool> counted = counted_rows(f, zero_force_contacts);
-  for (std::size_t k = 0; k < counted.size(); ++k) {
-    const auto row = static_cast<Eigen::Index>(k);
-    if (counted[k]) c.pairs.push_back(ordered(f.contact_i()[row], f.contact_j()[row]));
-  }
+  for (Eigen::Index row : counted) c.pairs.push_back(ordered(f.contact_i()[row], f.contact_j()[row]));
   std::sort(c.pairs.begin(), c.pairs.end());
   c.pairs.erase(std::unique(c.pairs.begin(), c.pairs.end()), c.pairs.end());
-  c.pair_of_row.assign(counted.size(), -1);
-  for (std::size_t k = 0; k < counted.size(); ++k) {
-    const auto row = static_cast<Eigen::Index>(k);
-    if (!counted[k]) continue;
+  c.pair_of_row.assign(static_cast<std::size_t>(f.contacts->rows()), -1);
+  for (Eigen::Index row : counted) {
     const auto [i, j] = ordered(f.contact_i()[row], f.contact_j()[row]);
-    c.pair_of_row[k] = c.find(i, j);
+    c.pair_of_row[static_cast<std::size_t>(row)] = c.find(i, j);
   }
   return c;
 }
@@ -66,24 +56,22 @@ ContactPairs by_distance(const Frame& f, FrameCache& cache, double tolerance) {
 
 }  // namespace
 
-std::int64_t ContactPairs::find(std::uint32_t i, std::uint32_t j) const {
+std::int64_t ContactPairs::find(std::int64_t i, std::int64_t j) const {
   const Pair p{std::min(i, j), std::max(i, j)};
   const auto it = std::lower_bound(pairs.begin(), pairs.end(), p);
   return it != pairs.end() && *it == p ? it - pairs.begin() : -1;
 }
 
-ContactPairs contact_pairs(const Frame& frame, FrameCache& cache, const ContactRule& rule) {
-  ContactPairs c = frame.contacts ? from_table(frame, rule.zero_force_contacts)
-                                  : by_distance(frame, cache, rule.tolerance);
+ContactPairs contact_pairs(const Frame& frame, FrameCache& cache, const ContactRule& rule,
+                           const std::string& where) {
+  const std::vector<Eigen::Index> loaded = loaded_pair_contacts(frame, where);
+  ContactPairs c = !frame.contacts ? by_distance(frame, cache, rule.tolerance)
+                   : rule.zero_force_contacts ? from_table(frame, pair_rows(frame))
+                                              : from_table(frame, loaded);
+  c.loaded = static_cast<std::int64_t>(loaded.size());
   c.length.reserve(c.pairs.size());
   for (const auto& [i, j] : c.pairs) c.length.push_back(centre_distance(frame, i, j));
   return c;
-}
-
-std::int64_t loaded_contacts(const Frame& frame, FrameCache& cache, double tolerance) {
-  if (!frame.contacts) return contacts_by_distance(frame, cache, tolerance).pairs;
-  const std::vector<bool> counted = counted_rows(frame, false);
-  return std::count(counted.begin(), counted.end(), true);
 }
 
 }  // namespace granpipe::mst

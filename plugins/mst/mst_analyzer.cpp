@@ -1,8 +1,10 @@
 #include "mst_analyzer.hpp"
 
 #include <cmath>
-#include <sstream>
 #include <string>
+
+#include "granpipe/contacts_by_distance.hpp"
+#include "granpipe/format_number.hpp"
 
 namespace granpipe::mst {
 
@@ -24,12 +26,6 @@ std::vector<double> table_row(const TcpReport& r, const PassRow& p) {
           d(p.tcp.others), d(p.tcp.other_edges), d(r.network.largest_particles),
           d(r.network.largest_edges), d(r.network.others), d(r.network.other_edges),
           d(r.contacts), d(p.selected), r.recovered(p)};
-}
-
-std::string number(double x) {
-  std::ostringstream s;
-  s << x;
-  return s.str();
 }
 
 }  // namespace
@@ -54,10 +50,7 @@ Schema schema() {
   s.boolean("zero_force_contacts", false,
             "rows of the frame's contact table with a zero normal force count as contacts "
             "(by default only non-zero forces do: the force network)");
-  s.real("contact_tolerance", 1e-9,
-         "frames without a contact table: two particles touch when their centre distance is "
-         "at most (R_i + R_j)(1 + this)")
-      .min(0.0);
+  declare_contact_tolerance(s, "contact_tolerance");
   return s;
 }
 
@@ -98,7 +91,7 @@ void MstAnalyzer::consume(const Frame& frame, FrameCache& cache) {
   if (r.unproven > 0 && !warned_inexact_) {
     warned_inexact_ = true;
     log_.warn("mst: " + where + ": " + std::to_string(r.unproven) +
-              " contacts, lengthened, are not shorter than " + number(r.complete_below) +
+              " contacts, lengthened, are not shorter than " + format_number(r.complete_below) +
               ", below which the candidate graph holds every pair: their selection may differ "
               "from the MST of all pairs (docs/mst.md; column unproven_contacts)");
   }
@@ -109,7 +102,7 @@ void MstAnalyzer::consume(const Frame& frame, FrameCache& cache) {
     row.push_back(static_cast<double>(r.unproven));
     per_frame_.add_row(row);
   }
-  keep_if_most_loaded(frame, loaded_contacts(frame, cache, options_.contacts.tolerance), r);
+  if (chosen_.offer(frames_, r.pairs.loaded)) keep_table_ii(frame, r);
 
   tcp_ = r.tcp;
   mst_pass_.resize(frame.contacts ? frame.contacts->rows() : 0);
@@ -120,11 +113,7 @@ void MstAnalyzer::consume(const Frame& frame, FrameCache& cache) {
   ++frames_;
 }
 
-void MstAnalyzer::keep_if_most_loaded(const Frame& frame, std::int64_t loaded,
-                                      const TcpReport& report) {
-  if (loaded <= most_loaded_) return;
-  most_loaded_ = loaded;
-  chosen_frame_ = frames_;
+void MstAnalyzer::keep_table_ii(const Frame& frame, const TcpReport& report) {
   chosen_time_ = frame.time;
   table_ii_ = Table(kTableColumns,
                     "the paper's Table II for the frame with the most particle-particle "
@@ -135,9 +124,9 @@ void MstAnalyzer::keep_if_most_loaded(const Frame& frame, std::int64_t loaded,
 void MstAnalyzer::finish(Results& results) {
   results.add_table("per_frame", per_frame_.table());
   results.add_scalar("frames", static_cast<double>(frames_), std::nan(""), "", "frames analysed");
-  if (chosen_frame_ < 0) return;
+  if (chosen_.frame() < 0) return;
   results.add_table("table_ii", table_ii_);
-  results.add_scalar("table_ii_frame", static_cast<double>(chosen_frame_), std::nan(""), "",
+  results.add_scalar("table_ii_frame", static_cast<double>(chosen_.frame()), std::nan(""), "",
                      "frame (counted from 0) that table_ii describes");
   results.add_scalar("table_ii_time", chosen_time_, std::nan(""), "time",
                      "time of the frame that table_ii describes");

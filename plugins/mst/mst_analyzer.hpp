@@ -5,6 +5,7 @@
 // the first pass that selected it (mst_pass) and, per particle, its TCP after the last pass.
 #include <vector>
 
+#include "granpipe/loaded_pair_contacts.hpp"
 #include "granpipe/plugin.hpp"
 #include "tcp_report.hpp"
 
@@ -21,17 +22,16 @@ class MstAnalyzer : public Analyzer {
   void publish(PropertyTable& columns) override;
 
  private:
-  void keep_if_most_loaded(const Frame& frame, std::int64_t loaded, const TcpReport& report);
+  void keep_table_ii(const Frame& frame, const TcpReport& report);
 
   Log& log_;
   MstOptions options_;
   long frames_ = 0;
   bool warned_inexact_ = false;
   StreamedTable per_frame_;
-  // Table II of the frame with the most loaded contacts (the first of equals).
+  // Table II of the frame with the most loaded pair contacts (the first of equals).
+  MostLoadedFrame chosen_;
   Table table_ii_;
-  std::int64_t most_loaded_ = -1;
-  long chosen_frame_ = -1;
   double chosen_time_ = 0.0;
   // Of the last frame, for publish().
   IndexArray mst_pass_, tcp_;

@@ -68,7 +68,7 @@ TcpReport tcp_report(const Frame& frame, FrameCache& cache, const MstOptions& op
                      const std::string& where) {
   TcpReport r;
   const auto n = static_cast<std::uint32_t>(frame.size());
-  r.pairs = contact_pairs(frame, cache, options.contacts);
+  r.pairs = contact_pairs(frame, cache, options.contacts, where);
   r.contacts = static_cast<std::int64_t>(r.pairs.pairs.size());
   r.network = components(n, r.pairs.pairs).counts;
   r.first_pass.assign(r.pairs.pairs.size(), 0);

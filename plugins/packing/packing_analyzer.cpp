@@ -13,10 +13,7 @@ namespace granpipe::packing {
 
 Schema schema() {
   Schema s;
-  s.real("tolerance", 1e-9,
-         "contact if the centre distance is at most (R_i + R_j)(1 + tolerance), or the "
-         "centre-wall distance at most R_i (1 + tolerance)")
-      .min(0.0);
+  declare_contact_tolerance(s, "tolerance");
   s.choice<Top>("top", Top::Auto,
            "top of the region before exclude_top: the highest particle top (surface), the "
            "lowest point of the free surface, over columns at least one mean diameter wide "

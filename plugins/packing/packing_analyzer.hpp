@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "granpipe/contacts_by_distance.hpp"
 #include "granpipe/ramp_means.hpp"
 #include "granpipe/plugin.hpp"
 #include "region.hpp"
@@ -20,7 +21,7 @@ inline ChoiceNames<Top> choice_names(Top) {  // parameter top
 }
 
 struct PackingSettings {
-  double tolerance = 1e-9;      // relative contact tolerance
+  double tolerance = kDefaultContactTolerance;  // relative contact tolerance
   double exclude_bottom = 0.0;  // mean diameters above the base
   double exclude_top = 0.0;     // mean diameters below the top (surface or container)
   double exclude_sides = 0.0;   // mean diameters from each lateral side

@@ -37,7 +37,7 @@ with tempfile.TemporaryDirectory() as tmp:
         r = subprocess.run(command, capture_output=True, text=True)
         expected = (f"{out}/dt_tc_0.08_phase3: expected no directory for a point not in cpu_seconds.csv, found one "
                     "(an interrupted run?): remove it to run the point again\n")
-        if r.returncode == 0 or r.stderr != expected or not os.path.isdir(os.path.join(out, "dt_tc_0.08_phase3")):
+        if r.returncode != 2 or r.stderr != expected or not os.path.isdir(os.path.join(out, "dt_tc_0.08_phase3")):
             failures.append(f"interrupted point: exit {r.returncode}, {r.stderr!r}")
 if failures:
     print("FAIL", *failures, sep="\n")

@@ -2,7 +2,8 @@
 means and its error the standard error across replicas; a row only one replica has keeps that
 run's own error; frames add up; points of other swept values stay in their own group; replicas
 with different columns are refused; the table `points` pools the scalars of sweep.points.csv and
-keeps the swept values as columns; missing or corrupt tables are refused in one line."""
+keeps the swept values as columns; missing or corrupt tables and a missing pipeline.json are
+refused in one line with exit code 2."""
 import csv
 import json
 import os
@@ -72,18 +73,29 @@ with tempfile.TemporaryDirectory() as out:
             failures.append(f"pooled points {rows}")
         if not os.path.exists(os.path.join(out, "pooled.points.svg")):
             failures.append("pooled.points.svg not written")
+    os.rename(os.path.join(out, "pipeline.json"), os.path.join(out, "kept.json"))
+    r = run(out)
+    if r.returncode != 2 or r.stderr != (f"{out}/pipeline.json: expected the pipeline of a granpipe run, "
+                                         "found none: No such file or directory\n"):
+        failures.append(f"missing pipeline.json: {r.returncode} {r.stderr}")
+    os.rename(os.path.join(out, "kept.json"), os.path.join(out, "pipeline.json"))
     write(out, "point_003.packing.by_ramp.csv", ["branch,amplitude,frames,rho,rho_err", "1,1.5,10,0.50,0.01"])
     r = run(out)
-    if r.returncode == 0 or "disagree" not in r.stderr:
+    expected = (f"{out}/point_003.packing.by_ramp.csv: expected the columns of the replica "
+                f"{out}/point_002.packing.by_ramp.csv, ['branch', 'amplitude', 'frames', 'phi', 'phi_err'], "
+                "found ['branch', 'amplitude', 'frames', 'rho', 'rho_err']\n")
+    if r.returncode != 2 or r.stderr != expected:
         failures.append(f"mismatched columns accepted: {r.returncode} {r.stderr}")
-    # Missing and corrupt tables get one line naming the file, not a traceback.
+    # Missing and corrupt tables get one line naming the file and exit 2, not a traceback.
     os.remove(os.path.join(out, "sweep.points.csv"))
     r = run(out)
-    if r.returncode == 0 or "sweep.points.csv: expected a granpipe table" not in r.stderr or "Traceback" in r.stderr:
+    if r.returncode != 2 or r.stderr != (f"{out}/sweep.points.csv: expected a granpipe table, found none: "
+                                         "No such file or directory (a run of one point writes none)\n"):
         failures.append(f"missing sweep.points.csv: {r.returncode} {r.stderr}")
     write(out, "sweep.points.csv", ["point,source.params.N,packing.phi", "0,100,nan?"])
     r = run(out)
-    if r.returncode == 0 or "data row 1: expected numbers" not in r.stderr or "Traceback" in r.stderr:
+    if r.returncode != 2 or r.stderr != (f"{out}/sweep.points.csv: data row 1: expected numbers, "
+                                         "found ['0', '100', 'nan?']\n"):
         failures.append(f"corrupt sweep.points.csv: {r.returncode} {r.stderr}")
 if failures:
     print("FAIL", *failures, sep="\n")

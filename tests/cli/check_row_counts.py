@@ -75,7 +75,7 @@ with tempfile.TemporaryDirectory() as out:
     flat = os.path.join(out, "three_d.h5")
     write(flat, [stack(20)], dims=3)
     res = run(flat)
-    if res.returncode == 0 or f"{flat}: particles/all/position: expected 2D positions" not in res.stderr:
+    if res.returncode != 2 or f"{flat}: particles/all/position: expected 2D positions" not in res.stderr:
         failures.append(f"3D file: expected a refusal naming it, got {res.returncode} {res.stderr!r}")
 
 for f in failures:

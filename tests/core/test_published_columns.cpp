@@ -103,6 +103,15 @@ class Labeller : public Analyzer {
   IndexArray labels_;
 };
 
+const Property kPressure{"pressure", Scope::Frame, ValueType::Real, 1, "", "a per-frame value"};
+
+// Declares an observable, which analyzers cannot publish.
+class ObservableLabeller : public Labeller {
+ public:
+  using Labeller::Labeller;
+  std::vector<Property> publishes() const override { return {kLabel, kPressure}; }
+};
+
 // Needs the label column and reports the sum of labels over all frames it saw.
 class LabelSum : public Analyzer {
  public:
@@ -120,6 +129,7 @@ Registry registry_with_h5md() {
   load_plugins(r, plugin_search_path());  // the real h5md source
   r.add_source<LineSource>("line", "five particles on a line", Schema{});
   r.add_analyzer<Labeller>("labeller", "publishes label", Schema{});
+  r.add_analyzer<ObservableLabeller>("observable_labeller", "publishes label and pressure", Schema{});
   r.add_analyzer<LabelSum>("label_sum", "sums label", Schema{});
   r.add_source<ChainSource>("chain", "five particles on a line, neighbours in contact", Schema{});
   r.add_analyzer<BondLabeller>("bond_labeller", "publishes label and bond", Schema{});
@@ -200,6 +210,12 @@ TEST(PublishedColumns, AColumnTheFramesCarryCannotBePublishedAgain) {
   EXPECT_EQ(refusal_of(R"([{"plugin": "labeller"}, {"plugin": "labeller", "name": "again"}])"),
             "p.json: analyzers[1]: analyzer \"labeller\" publishes the column \"label\", which the "
             "frames already carry");
+}
+
+TEST(PublishedColumns, AFrameColumnCannotBePublished) {
+  EXPECT_EQ(refusal_of(R"([{"plugin": "observable_labeller"}])"),
+            "p.json: analyzers[0]: analyzer \"observable_labeller\" publishes the frame column "
+            "\"pressure\": expected particle or contact columns only");
 }
 
 TEST(PublishedColumns, ContactColumnsJoinTheContactTableAndAreWritten) {

@@ -202,6 +202,17 @@ TEST(ForceNetwork, ANonFiniteContactPointIsRefused) {
                         "infinite coordinate");
 }
 
+TEST(ForceNetwork, ANaNForceOrARowJoiningAParticleToItselfIsRefused) {
+  Frame nan_force = frame_of(kTable);
+  nan_force.contacts->get<Coordinates>("normal_force")(5, 0) = std::nan("");  // a wall row
+  EXPECT_EQ(refusal(nan_force), "frame 0: contact 5: expected a finite normal_force, got nan in "
+                                "component x");
+  Frame self = frame_of(kTable);
+  self.contact_j()[2] = 2;
+  EXPECT_EQ(refusal(self), "frame 0: contact 2: expected two different particles, got particle 2 "
+                           "twice");
+}
+
 TEST(ForceNetwork, RMaxBeyondHalfAPeriodicBoxIsRefused) {
   Frame f = frame_of(kTable);
   f.container = Container::periodic_box(3, Eigen::Vector3d(-2, -2, -2), Eigen::Vector3d(26, 2, 2));
@@ -253,6 +264,35 @@ TEST(ForceNetwork, Eq11FitRecoversTheParametersOfItsOwnSamples) {
   }
   EXPECT_EQ(fit.value[kAlpha], 0.0);
   EXPECT_EQ(fit.value[kGamma], 0.0);
+}
+
+// The shift fit of an exactly exponential PDF against a reference with a plateau
+// (b = 0.83): the best fit moves the bump out of the bins, where alpha no longer changes
+// anything. It is reported as not determined, without values, not fitted with an error of
+// 1e8 or more.
+TEST(ForceNetwork, AParameterTheDataDoNotDetermineIsNotReportedAsFitted) {
+  const double beta = 1.35;
+  ForcePdf pdf{.edges = {}, .counts = {}, .samples = 100000};
+  for (int k = 0; k <= 60; ++k) pdf.edges.push_back(0.1 * k);
+  for (int k = 0; k < 60; ++k) {
+    pdf.counts.push_back(100000.0 * (std::exp(-beta * pdf.edges[k]) - std::exp(-beta * pdf.edges[k + 1])));
+  }
+  FitRequest shift;
+  shift.start = {normalising_a(0.83, beta), 0.83, 0.0, beta, 0.0};
+  shift.free = {false, false, true, false, true};
+  const PdfFit fit = fit_pdf(pdf, shift);
+  EXPECT_EQ(fit.status, FitStatus::NotDetermined) << fit.value[kAlpha] << " +- " << fit.error[kAlpha];
+  EXPECT_STREQ(describe(fit.status), "not fitted: a parameter is not determined by the data");
+  EXPECT_EQ(fit.value[kAlpha], 0.0);
+  EXPECT_EQ(fit.error[kAlpha], 0.0);
+
+  // A peak (b < 0) the data hold no trace of: the fit keeps it inside the bins, where
+  // alpha is determined.
+  shift.start[kB] = -0.5;
+  const PdfFit peak = fit_pdf(pdf, shift);
+  ASSERT_EQ(peak.status, FitStatus::Fitted);
+  EXPECT_GT(peak.value[kAlpha], 0.0);
+  EXPECT_LT(peak.error[kAlpha], 0.1);
 }
 
 // Eq. (12) summed over every ordered pair i != j, binned as force_correlation bins.

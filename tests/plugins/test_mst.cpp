@@ -286,6 +286,37 @@ TEST(Mst, FramesWithoutContactsUseTheCentreDistance) {
   EXPECT_EQ(r.recovered(r.passes[1]), 1.0);
 }
 
+TEST(Mst, FramesWithoutContactsHaveNoLoadedContacts) {
+  Frame f = figure_13();
+  FrameCache cache;
+  EXPECT_EQ(tcp_report(f, cache, options(Candidates::Cutoff, 2), "t").pairs.loaded, 4);
+  f.contacts.reset();
+  cache.clear();
+  EXPECT_EQ(tcp_report(f, cache, options(Candidates::Cutoff, 2), "t").pairs.loaded, 0);
+}
+
+TEST(Mst, ANaNForceOrARowJoiningAParticleToItselfIsRefused) {
+  FrameCache cache;
+  Frame nan_force = figure_13();
+  nan_force.contacts->get<ValueTable<double>>("normal_force")(1, 0) = std::nan("");
+  MstOptions o = options(Candidates::Cutoff, 2);
+  o.contacts.zero_force_contacts = true;  // refused whether the forces count or not
+  try {
+    tcp_report(nan_force, cache, o, "frame 3");
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "frame 3: contact 1: expected a finite normal_force, got nan in component x");
+  }
+  Frame self = figure_13();
+  self.contact_j()[0] = 0;
+  try {
+    tcp_report(self, cache, options(Candidates::Cutoff, 2), "frame 3");
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "frame 3: contact 0: expected two different particles, got particle 0 twice");
+  }
+}
+
 TEST(Mst, DelaunayKeepsParticlesAtOnePosition) {
   Frame f = random_frame(20, 4.0, 9);
   f.position().row(7) = f.position().row(3);

@@ -8,8 +8,15 @@
 
 #include "granpipe/frame.hpp"
 #include "granpipe/frame_cache.hpp"
+#include "granpipe/params.hpp"
 
 namespace granpipe {
+
+constexpr double kDefaultContactTolerance = 1e-9;
+
+// Declares the tolerance parameter `name` (real >= 0, default kDefaultContactTolerance) of
+// a plugin that finds contacts by distance, with the one text every such plugin shows.
+void declare_contact_tolerance(Schema& schema, const std::string& name);
 
 struct DistanceContacts {
   double tolerance = 0.0;

@@ -97,7 +97,8 @@ class Analyzer {
 
   // Particle or contact columns this analyzer adds to each frame (arch membership, a local
   // packing fraction, the pass that selected a contact): analyzers after it in the
-  // pipeline, and the writers, see them.
+  // pipeline, and the writers, see them. A frame (observable) column is refused before
+  // the run: per-frame values go to the analyzer's results.
   virtual std::vector<Property> publishes() const { return {}; }
   // Called right after consume(), once per scope that publishes() declares columns of:
   // fill `columns` (a table of the frame's particles, or of its contacts, as

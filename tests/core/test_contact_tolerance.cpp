@@ -1,0 +1,41 @@
+// The plugins that find contacts by distance declare their tolerance alike, so that the
+// pages quoting it (docs/arches.md, docs/mst.md) stay true for each.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <utility>
+
+#include "granpipe/contacts_by_distance.hpp"
+#include "plugin_harness.hpp"
+
+using namespace granpipe;
+
+TEST(ContactTolerance, HasOneDefaultRangeAndText) {
+  Schema s;
+  declare_contact_tolerance(s, "tol");
+  const ParamSpec& p = *s.find("tol");
+  EXPECT_EQ(std::get<double>(*p.default_value), 1e-9);
+  EXPECT_EQ(p.min, 0.0);
+  EXPECT_FALSE(p.min_exclusive);
+  EXPECT_FALSE(p.max);
+  EXPECT_EQ(p.doc, "relative contact tolerance: two particles touch when their centre distance "
+                   "is at most (R_i + R_j)(1 + tol), a particle and a wall when the centre-wall "
+                   "distance is at most R_i (1 + tol)");
+}
+
+TEST(ContactTolerance, EveryPluginFindingContactsByDistanceDeclaresItAlike) {
+  // packing's is named "tolerance": the pipelines that set it predate the others'.
+  for (const auto& [plugin, name] : {std::pair{"mst", "contact_tolerance"},
+                                     std::pair{"arches", "contact_tolerance"},
+                                     std::pair{"packing", "tolerance"}}) {
+    const PluginInfo* info = test::installed_plugins().find(plugin);
+    if (!info) continue;  // left out of this build
+    Schema expected;
+    declare_contact_tolerance(expected, name);
+    const ParamSpec* p = info->schema.find(name);
+    ASSERT_NE(p, nullptr) << plugin;
+    EXPECT_EQ(p->doc, expected.find(name)->doc) << plugin;
+    EXPECT_EQ(std::get<double>(*p->default_value), kDefaultContactTolerance) << plugin;
+    EXPECT_EQ(p->min, 0.0) << plugin;
+  }
+}
