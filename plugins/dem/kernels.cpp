@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "lanes.hpp"
 #include "walls.hpp"
 
 namespace granpipe::dem {
@@ -85,36 +86,47 @@ template <class Law, bool kFriction, bool kRotation>
   }
 }
 
-// The pair loop takes a particle's pairs in blocks of this many, in two passes each.
-constexpr int kBlock = 32;
+// The pair loop works through a thread's pairs in blocks of this many listed pairs.
+constexpr int kBlock = 128;
+constexpr int kPadded = kBlock + lanes::kWidth;
 
-// The pairs of one block that touch, in list order, with what the first pass computed.
+// The pairs of one block that touch, in list order, structure of arrays padded to whole
+// batches of lanes: what the first pass found, then what the second computed.
 struct TouchingPairs {
   int count = 0;
-  std::int32_t pair[kBlock];
-  Vec4 d[kBlock];  // x_i - x_j
-  double r2[kBlock];
+  std::int32_t pair[kPadded], i[kPadded], j[kPadded];
+  double dx[kPadded], dy[kPadded], dz[kPadded], r2[kPadded];
+  double fx[kPadded], fy[kPadded], fz[kPadded];  // force on i
+  double cx[kPadded], cy[kPadded], cz[kPadded];  // n x F_t
+  double ux[kPadded], uy[kPadded], uz[kPadded];  // the updated history
 };
 
-// The first pass over pairs [k0, k1) of particle i: lists the touching pairs, clears every
-// reaction slot (those of touching pairs are written again) and the history of the pairs
-// out of contact. Without branches: whether a listed pair touches is close to a coin toss
-// (about half of them do), which a branch per pair would often mispredict.
+// The first pass over pairs [k0, k1): lists the touching pairs, clears every reaction
+// slot (those of touching pairs are written again) and the history of the pairs out of
+// contact. Without branches: whether a listed pair touches is close to a coin toss
+// (about half of them do), which a branch per pair would often mispredict. The list is
+// padded with copies of its last pair to a whole batch of lanes.
 template <bool kFriction, int kStride>
-[[gnu::always_inline]] inline void find_touching(const ForceContext& c, const Vec4& xi, double ai,
-                                                 std::int32_t k0, std::int32_t k1,
-                                                 TouchingPairs& t) {
-  t.count = 0;
+[[gnu::always_inline]] inline void find_touching(const ForceContext& c, std::int32_t k0,
+                                                 std::int32_t k1, TouchingPairs& t) {
+  std::fill(c.reaction + static_cast<std::ptrdiff_t>(kStride) * k0,
+            c.reaction + static_cast<std::ptrdiff_t>(kStride) * k1, 0.0);
+  int count = 0;
   for (std::int32_t k = k0; k < k1; ++k) {
-    const std::int32_t j = c.partner[k];
-    const Vec4 d = xi - load4(c.x, j);
-    const double r2 = d.squaredNorm(), contact = ai + c.radius[j];
+    const std::int32_t i = c.owner[k], j = c.partner[k];
+    const double* xi = c.x + 3 * static_cast<std::ptrdiff_t>(i);
+    const double* xj = c.x + 3 * static_cast<std::ptrdiff_t>(j);
+    const double dx = xi[0] - xj[0], dy = xi[1] - xj[1], dz = xi[2] - xj[2];
+    const double r2 = dx * dx + dy * dy + dz * dz, contact = c.radius[i] + c.radius[j];
     const bool touching = !(r2 >= contact * contact);
-    t.pair[t.count] = k;
-    t.d[t.count] = d;
-    t.r2[t.count] = r2;
-    t.count += touching;
-    std::fill_n(c.reaction + static_cast<std::ptrdiff_t>(kStride) * k, kStride, 0.0);
+    t.pair[count] = k;
+    t.i[count] = i;
+    t.j[count] = j;
+    t.dx[count] = dx;
+    t.dy[count] = dy;
+    t.dz[count] = dz;
+    t.r2[count] = r2;
+    count += touching;
     if constexpr (kFriction) {
       // u & keep, not a select, which the compiler makes a branch.
       double* u = c.history + 3 * static_cast<std::ptrdiff_t>(k);
@@ -124,51 +136,136 @@ template <bool kFriction, int kStride>
       }
     }
   }
+  t.count = count;
+  for (int e = count; count > 0 && e % lanes::kWidth != 0; ++e) {
+    t.pair[e] = t.pair[count - 1];
+    t.i[e] = t.i[count - 1];
+    t.j[e] = t.j[count - 1];
+    t.dx[e] = t.dx[count - 1];
+    t.dy[e] = t.dy[count - 1];
+    t.dz[e] = t.dz[count - 1];
+    t.r2[e] = t.r2[count - 1];
+  }
 }
 
+// The materials of the lanes' pairs (one gather per field; none with one species).
+inline MaterialLanes pair_materials(const ForceContext& c, const lanes::Indices& i,
+                                    const lanes::Indices& j) {
+  static_assert(sizeof(LoopMaterial) == 6 * sizeof(double));
+  const double* table = reinterpret_cast<const double*>(c.pair_material);
+  if (c.species_count == 1) {
+    const LoopMaterial& m = c.pair_material[0];
+    return {lanes::splat(m.kn),      lanes::splat(m.kt), lanes::splat(m.gamma_n),
+            lanes::splat(m.gamma_t), lanes::splat(m.mu), lanes::splat(m.inv_kt)};
+  }
+  const lanes::Indices row =
+      (lanes::gather(c.species, i) * c.species_count + lanes::gather(c.species, j)) * 6;
+  return {lanes::gather(table, row),     lanes::gather(table + 1, row),
+          lanes::gather(table + 2, row), lanes::gather(table + 3, row),
+          lanes::gather(table + 4, row), lanes::gather(table + 5, row)};
+}
+
+// The second pass: the touching pairs' forces, a batch of lanes at a time.
+template <class Law, bool kFriction, bool kRotation>
+[[gnu::always_inline]] inline void resolve_touching(const ForceContext& c, TouchingPairs& t) {
+  using lanes::Indices;
+  using lanes::load;
+  using lanes::Reals;
+  using lanes::Vec;
+  for (int b = 0; b < t.count; b += lanes::kWidth) {
+    const Indices i = load(t.i + b), j = load(t.j + b);
+    const Reals ai = lanes::gather(c.radius, i), aj = lanes::gather(c.radius, j);
+    const Reals r = lanes::sqrt(load(t.r2 + b)), contact = ai + aj;
+    const Vec n = {load(t.dx + b) / r, load(t.dy + b) / r, load(t.dz + b) / r};
+    Vec spin{};
+    if constexpr (kRotation) {
+      spin = ai * lanes::gather3(c.omega, t.i + b) + aj * lanes::gather3(c.omega, t.j + b);
+    }
+    Vec u{};
+    if constexpr (kFriction) u = lanes::gather3(c.history, t.pair + b);
+    const Reals m_eff = 1.0 / (lanes::gather(c.inv_mass, i) + lanes::gather(c.inv_mass, j));
+    const ContactLanes cf = resolve_contacts<Law, kFriction, kRotation>(
+        n, contact - r, contact, lanes::gather3(c.v, t.i + b) - lanes::gather3(c.v, t.j + b), spin, m_eff,
+        pair_materials(c, i, j), u, c.dt_history);
+    lanes::store(t.fx + b, cf.force.x);
+    lanes::store(t.fy + b, cf.force.y);
+    lanes::store(t.fz + b, cf.force.z);
+    if constexpr (kRotation) {
+      lanes::store(t.cx + b, cf.c.x);
+      lanes::store(t.cy + b, cf.c.y);
+      lanes::store(t.cz + b, cf.c.z);
+    }
+    if constexpr (kFriction) {
+      lanes::store(t.ux + b, u.x);
+      lanes::store(t.uy + b, u.y);
+      lanes::store(t.uz + b, u.z);
+    }
+  }
+}
+
+// The touching pairs' results written out in list order: reaction slot, history, and the
+// owner's sums.
+template <bool kFriction, bool kRotation>
+[[gnu::always_inline]] inline void write_touching(const ForceContext& c, const TouchingPairs& t) {
+  constexpr int stride = kStride<kRotation>;
+  for (int e = 0; e < t.count; ++e) {
+    const std::ptrdiff_t k = t.pair[e], i = t.i[e];
+    double* rk = c.reaction + stride * k;
+    double* fi = c.force + 3 * i;
+    rk[0] = -t.fx[e];
+    rk[1] = -t.fy[e];
+    rk[2] = -t.fz[e];
+    fi[0] += t.fx[e];
+    fi[1] += t.fy[e];
+    fi[2] += t.fz[e];
+    if constexpr (kRotation) {
+      double* ci = c.spin_sum + 3 * i;
+      rk[3] = t.cx[e];
+      rk[4] = t.cy[e];
+      rk[5] = t.cz[e];
+      ci[0] += t.cx[e];
+      ci[1] += t.cy[e];
+      ci[2] += t.cz[e];
+    }
+    if constexpr (kFriction) {
+      double* u = c.history + 3 * k;
+      u[0] = t.ux[e];
+      u[1] = t.uy[e];
+      u[2] = t.uz[e];
+    }
+  }
+}
+
+// Particle i's own forces: background and air damping, then its walls.
+template <class Law, bool kFriction, bool kRotation>
+[[gnu::always_inline]] inline void own_forces(const ForceContext& c, int i) {
+  const Vec4 xi = load4(c.x, i), vi = load4(c.v, i);
+  const Vec4 wi = kRotation ? load4(c.omega, i) : Vec4::Zero();
+  const Vec4 wall_velocity = load3(c.wall_velocity.data());
+  Vec4 fi = -c.background_damping * vi - c.air_damping * (vi - wall_velocity);
+  Vec4 ci = Vec4::Zero();
+  add_wall_forces<Law, kFriction, kRotation>(c, i, xi, vi, wi, fi, ci);
+  store(c.force, i, fi);
+  if constexpr (kRotation) store(c.spin_sum, i, ci);
+}
+
+// Each thread takes one contiguous block of particles: their own forces first, then the
+// pairs they own, which add to them in list order. A particle's sum is thus the same for
+// any split.
 template <class Law, bool kFriction, bool kRotation>
 void forces(const ForceContext& c) {
   constexpr int stride = kStride<kRotation>;
-  const int S = c.species_count;
-#pragma omp parallel for schedule(static) num_threads(c.threads)
-  for (int i = 0; i < c.n; ++i) {
-    const Vec4 xi = load4(c.x, i), vi = load4(c.v, i);
-    const Vec4 wi = kRotation ? load4(c.omega, i) : Vec4::Zero();
-    const double ai = c.radius[i], inv_mi = c.inv_mass[i];
-    const LoopMaterial* row = c.pair_material + c.species[i] * S;
-    const Vec4 wall_velocity = load3(c.wall_velocity.data());
-    Vec4 fi = -c.background_damping * vi - c.air_damping * (vi - wall_velocity);
-    Vec4 ci = Vec4::Zero();
+#pragma omp parallel for schedule(static, 1) num_threads(c.threads)
+  for (int part = 0; part < c.threads; ++part) {
+    const int p0 = static_cast<int>(static_cast<std::int64_t>(c.n) * part / c.threads);
+    const int p1 = static_cast<int>(static_cast<std::int64_t>(c.n) * (part + 1) / c.threads);
+    for (int i = p0; i < p1; ++i) own_forces<Law, kFriction, kRotation>(c, i);
     TouchingPairs touching;
-    for (std::int32_t k0 = c.first[i]; k0 < c.first[i + 1]; k0 += kBlock) {
-      find_touching<kFriction, stride>(c, xi, ai, k0, std::min(k0 + kBlock, c.first[i + 1]),
-                                       touching);
-      // The second pass: the touching pairs' forces, in list order.
-      for (int t = 0; t < touching.count; ++t) {
-        const std::int32_t k = touching.pair[t], j = c.partner[k];
-        double* rk = c.reaction + static_cast<std::ptrdiff_t>(stride) * k;
-        double* u = kFriction ? c.history + 3 * static_cast<std::ptrdiff_t>(k) : nullptr;
-        const double aj = c.radius[j], contact = ai + aj, r = std::sqrt(touching.r2[t]);
-        const Vec4 n = touching.d[t] / r;
-        const Vec4 spin = kRotation ? Vec4(ai * wi + aj * load4(c.omega, j)) : Vec4::Zero();
-        const ContactForce cf = resolve_contact<Law, kFriction, kRotation>(
-            n, contact - r, contact, vi - load4(c.v, j), spin, 1.0 / (inv_mi + c.inv_mass[j]),
-            row[c.species[j]], u, c.dt_history);
-        fi += cf.force;
-        rk[0] = -cf.force[0];
-        rk[1] = -cf.force[1];
-        rk[2] = -cf.force[2];
-        if constexpr (kRotation) {
-          ci += cf.c;
-          rk[3] = cf.c[0];
-          rk[4] = cf.c[1];
-          rk[5] = cf.c[2];
-        }
-      }
+    for (std::int32_t k0 = c.first[p0]; k0 < c.first[p1]; k0 += kBlock) {
+      find_touching<kFriction, stride>(c, k0, std::min(k0 + kBlock, c.first[p1]), touching);
+      resolve_touching<Law, kFriction, kRotation>(c, touching);
+      write_touching<kFriction, kRotation>(c, touching);
     }
-    add_wall_forces<Law, kFriction, kRotation>(c, i, xi, vi, wi, fi, ci);
-    store(c.force, i, fi);
-    if constexpr (kRotation) store(c.spin_sum, i, ci);
   }
 }
 
