@@ -88,6 +88,7 @@ template <class Law, bool kFriction, bool kRotation>
 
 // The pair loop works through a thread's pairs in blocks of this many listed pairs.
 constexpr int kBlock = 128;
+static_assert(kBlock % 8 == 0, "the AVX-512 first pass takes whole batches of 8 before the last");
 constexpr int kPadded = kBlock + lanes::kWidth;
 
 // The pairs of one block that touch, in list order, structure of arrays padded to whole
@@ -101,16 +102,58 @@ struct TouchingPairs {
   double ux[kPadded], uy[kPadded], uz[kPadded];  // the updated history
 };
 
-// The first pass over pairs [k0, k1): lists the touching pairs, clears every reaction
-// slot (those of touching pairs are written again) and the history of the pairs out of
-// contact. Without branches: whether a listed pair touches is close to a coin toss
-// (about half of them do), which a branch per pair would often mispredict. The list is
-// padded with copies of its last pair to a whole batch of lanes.
-template <bool kFriction, int kStride>
-[[gnu::always_inline]] inline void find_touching(const ForceContext& c, std::int32_t k0,
-                                                 std::int32_t k1, TouchingPairs& t) {
-  std::fill(c.reaction + static_cast<std::ptrdiff_t>(kStride) * k0,
-            c.reaction + static_cast<std::ptrdiff_t>(kStride) * k1, 0.0);
+// Lists the pairs of [k0, k1) that touch into t (from entry 0), clears the history of the
+// others and returns how many touch. Without branches: whether a listed pair touches is
+// close to a coin toss (about half of them do), which a branch per pair would often
+// mispredict.
+template <bool kFriction>
+[[gnu::always_inline]] inline int list_touching(const ForceContext& c, std::int32_t k0,
+                                                std::int32_t k1, TouchingPairs& t) {
+#if defined(__AVX512F__)
+  // Eight pairs at a time: their touching lanes compressed within registers, stored whole
+  // (what lies past the count is overwritten next), and the history of the others cleared
+  // by masked stores. (Compressing straight to memory is slow on AMD's cores.)
+  int count = 0;
+  const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+  alignas(32) std::int32_t i[8], j[8];
+  for (std::int32_t k = k0; k < k1; k += 8) {
+    const __mmask8 valid = k1 - k >= 8 ? 0xff : static_cast<__mmask8>((1u << (k1 - k)) - 1);
+    const __m256i vi = _mm256_maskz_loadu_epi32(valid, c.owner + k);
+    const __m256i vj = _mm256_maskz_loadu_epi32(valid, c.partner + k);
+    _mm256_store_si256(reinterpret_cast<__m256i*>(i), vi);
+    _mm256_store_si256(reinterpret_cast<__m256i*>(j), vj);
+    const lanes::Vec d = lanes::gather3(c.x, i) - lanes::gather3(c.x, j);
+    const lanes::Reals r2 = dot(d, d);
+    const lanes::Reals contact = lanes::gather(c.radius, reinterpret_cast<lanes::Indices>(vi)) +
+                                 lanes::gather(c.radius, reinterpret_cast<lanes::Indices>(vj));
+    const __mmask8 touching = _mm512_mask_cmp_pd_mask(valid, r2, contact * contact, _CMP_NGE_UQ);
+    const auto put = [&](double* to, const lanes::Reals& v) {
+      _mm512_storeu_pd(to + count, _mm512_maskz_compress_pd(touching, v));
+    };
+    const auto put_index = [&](std::int32_t* to, __m256i v) {
+      _mm256_storeu_si256(reinterpret_cast<__m256i*>(to + count),
+                          _mm256_maskz_compress_epi32(touching, v));
+    };
+    put_index(t.pair, _mm256_add_epi32(_mm256_set1_epi32(k), lane));
+    put_index(t.i, vi);
+    put_index(t.j, vj);
+    put(t.dx, d.x);
+    put(t.dy, d.y);
+    put(t.dz, d.z);
+    put(t.r2, r2);
+    count += std::popcount(static_cast<unsigned>(touching));
+    if constexpr (kFriction) {
+      // Bit a of pair l's three doubles is bit 3 l + a of the store mask.
+      const unsigned clear = _pdep_u32(valid & ~touching, 0x249249u) * 7u;
+      double* u = c.history + 3 * static_cast<std::ptrdiff_t>(k);
+      const __m512d zero = _mm512_setzero_pd();
+      _mm512_mask_storeu_pd(u, static_cast<__mmask8>(clear), zero);
+      _mm512_mask_storeu_pd(u + 8, static_cast<__mmask8>(clear >> 8), zero);
+      _mm512_mask_storeu_pd(u + 16, static_cast<__mmask8>(clear >> 16), zero);
+    }
+  }
+  return count;
+#else
   int count = 0;
   for (std::int32_t k = k0; k < k1; ++k) {
     const std::int32_t i = c.owner[k], j = c.partner[k];
@@ -136,6 +179,19 @@ template <bool kFriction, int kStride>
       }
     }
   }
+  return count;
+#endif
+}
+
+// The first pass over pairs [k0, k1): lists the touching pairs, clears every reaction
+// slot (those of touching pairs are written again) and the history of the pairs out of
+// contact. The list is padded with copies of its last pair to a whole batch of lanes.
+template <bool kFriction, int kStride>
+[[gnu::always_inline]] inline void find_touching(const ForceContext& c, std::int32_t k0,
+                                                 std::int32_t k1, TouchingPairs& t) {
+  std::fill(c.reaction + static_cast<std::ptrdiff_t>(kStride) * k0,
+            c.reaction + static_cast<std::ptrdiff_t>(kStride) * k1, 0.0);
+  const int count = list_touching<kFriction>(c, k0, k1, t);
   t.count = count;
   for (int e = count; count > 0 && e % lanes::kWidth != 0; ++e) {
     t.pair[e] = t.pair[count - 1];
