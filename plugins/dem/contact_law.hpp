@@ -55,6 +55,17 @@ inline Vec4 load3(const double* p) {
 #endif
 }
 
+// Stores the first 3 doubles of v at p: one masked store with AVX-512.
+inline void store3(double* p, const Vec4& v) {
+#ifdef __AVX512VL__
+  _mm256_mask_storeu_pd(p, 0x7, _mm256_loadu_pd(v.data()));
+#else
+  p[0] = v[0];
+  p[1] = v[1];
+  p[2] = v[2];
+#endif
+}
+
 // a x b of two padded vectors. With AVX2: two lane rotations per operand and a fused
 // multiply-subtract (Eigen's cross3 works lane by lane for doubles).
 inline Vec4 cross(const Vec4& a, const Vec4& b) {

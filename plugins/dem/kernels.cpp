@@ -13,16 +13,8 @@ namespace granpipe::dem {
 
 namespace {
 
-inline Vec3 load(const double* a, std::ptrdiff_t i) {
-  return Vec3(a[3 * i], a[3 * i + 1], a[3 * i + 2]);
-}
 inline Vec4 load4(const double* a, std::ptrdiff_t i) { return load3(a + 3 * i); }
-template <class V>
-inline void store(double* a, std::ptrdiff_t i, const V& v) {
-  a[3 * i] = v[0];
-  a[3 * i + 1] = v[1];
-  a[3 * i + 2] = v[2];
-}
+inline void store(double* a, std::ptrdiff_t i, const Vec4& v) { store3(a + 3 * i, v); }
 inline void store_zero(double* a, std::ptrdiff_t i) { a[3 * i] = a[3 * i + 1] = a[3 * i + 2] = 0.0; }
 
 // Reaction slot per pair: the force on the partner, and n x F_t when spins matter.
@@ -325,41 +317,67 @@ void forces(const ForceContext& c) {
   }
 }
 
+// Particle p's force and spin sum with its reactions gathered (in pair order).
+template <bool kRotation>
+[[gnu::always_inline]] inline Vec4 gathered_force(const KickContext& c, int p, Vec4& spin) {
+  constexpr int stride = kStride<kRotation>;
+  Vec4 f = load4(c.force, p);
+  spin = kRotation ? load4(c.spin_sum, p) : Vec4::Zero();
+  for (std::int32_t m = c.reverse_first[p]; m < c.reverse_first[p + 1]; ++m) {
+    const double* rk = c.reaction + static_cast<std::ptrdiff_t>(stride) * c.reverse_pair[m];
+    f += load3(rk);
+    if constexpr (kRotation) spin += load3(rk + 3);
+  }
+  return f;
+}
+
+// The changes of a half kick, dt/2 a and dt/2 alpha.
+struct HalfKick {
+  Vec4 dv, dw;
+};
+template <bool kRotation>
+[[gnu::always_inline]] inline HalfKick half_kick(const KickContext& c, int p, const Vec4& f,
+                                                 const Vec4& torque) {
+  const double h = 0.5 * c.dt;
+  HalfKick k;
+  k.dv = h * (c.inv_mass[p] * f + load3(c.gravity.data()));
+  if constexpr (kRotation) k.dw = (h * c.inv_inertia[p]) * torque;
+  return k;
+}
+
 // The end of a step for particle p: its reactions gathered, then v += dt/2 a (and the
 // spin likewise).
 template <bool kRotation>
 [[gnu::always_inline]] inline void finish(const KickContext& c, int p) {
-  constexpr int stride = kStride<kRotation>;
-  const double h = 0.5 * c.dt;
-  Vec3 f = load(c.force, p);
-  Vec3 spin = kRotation ? load(c.spin_sum, p) : Vec3::Zero();
-  for (std::int32_t m = c.reverse_first[p]; m < c.reverse_first[p + 1]; ++m) {
-    const double* rk = c.reaction + static_cast<std::ptrdiff_t>(stride) * c.reverse_pair[m];
-    f += Vec3(rk[0], rk[1], rk[2]);
-    if constexpr (kRotation) spin += Vec3(rk[3], rk[4], rk[5]);
-  }
+  Vec4 spin;
+  const Vec4 f = gathered_force<kRotation>(c, p, spin);
+  const Vec4 torque = kRotation ? Vec4(-c.radius[p] * spin) : Vec4::Zero();
   store(c.force, p, f);
-  store(c.v, p, load(c.v, p) + h * (c.inv_mass[p] * f + c.gravity));
+  const HalfKick k = half_kick<kRotation>(c, p, f, torque);
+  store(c.v, p, load4(c.v, p) + k.dv);
   if constexpr (kRotation) {
-    const Vec3 torque = -c.radius[p] * spin;
     store(c.torque, p, torque);
-    store(c.omega, p, load(c.omega, p) + (h * c.inv_inertia[p]) * torque);
+    store(c.omega, p, load4(c.omega, p) + k.dw);
   }
+}
+
+// The drift: x += dt v; returns the squared displacement since the last list build.
+[[gnu::always_inline]] inline double drift(const KickContext& c, int p, const Vec4& v) {
+  const Vec4 x = load4(c.x, p) + c.dt * v;
+  store(c.x, p, x);
+  return (x - load4(c.x_build, p)).squaredNorm();
 }
 
 // The start of a step for particle p: v += dt/2 a, x += dt v (and the spin's half kick);
 // returns its squared displacement since the last list build.
 template <bool kRotation>
 [[gnu::always_inline]] inline double start(const KickContext& c, int p) {
-  const double h = 0.5 * c.dt;
-  const Vec3 v = load(c.v, p) + h * (c.inv_mass[p] * load(c.force, p) + c.gravity);
-  const Vec3 x = load(c.x, p) + c.dt * v;
+  const HalfKick k = half_kick<kRotation>(c, p, load4(c.force, p),
+                                          kRotation ? load4(c.torque, p) : Vec4::Zero());
+  const Vec4 v = load4(c.v, p) + k.dv;
   store(c.v, p, v);
-  store(c.x, p, x);
-  if constexpr (kRotation) {
-    store(c.omega, p, load(c.omega, p) + (h * c.inv_inertia[p]) * load(c.torque, p));
-  }
-  return (x - load(c.x_build, p)).squaredNorm();
+  if constexpr (kRotation) store(c.omega, p, load4(c.omega, p) + k.dw);
+  return drift(c, p, v);
 }
 
 template <bool kRotation>
@@ -383,8 +401,19 @@ double finish_and_start(const KickContext& c) {
   double worst = 0.0;
 #pragma omp parallel for schedule(static) num_threads(c.threads) reduction(max : worst)
   for (int p = 0; p < c.n; ++p) {
-    finish<kRotation>(c, p);
-    worst = std::max(worst, start<kRotation>(c, p));
+    // finish then start, the second kick reusing the first's increments.
+    Vec4 spin;
+    const Vec4 f = gathered_force<kRotation>(c, p, spin);
+    const Vec4 torque = kRotation ? Vec4(-c.radius[p] * spin) : Vec4::Zero();
+    store(c.force, p, f);
+    const HalfKick k = half_kick<kRotation>(c, p, f, torque);
+    const Vec4 v = load4(c.v, p) + k.dv + k.dv;
+    store(c.v, p, v);
+    if constexpr (kRotation) {
+      store(c.torque, p, torque);
+      store(c.omega, p, load4(c.omega, p) + k.dw + k.dw);
+    }
+    worst = std::max(worst, drift(c, p, v));
   }
   return worst;
 }
