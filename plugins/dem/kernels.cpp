@@ -224,7 +224,8 @@ template <class Law, bool kFriction, bool kRotation>
     const Indices i = load(t.i + b), j = load(t.j + b);
     const Reals ai = lanes::gather(c.radius, i), aj = lanes::gather(c.radius, j);
     const Reals r = lanes::sqrt(load(t.r2 + b)), contact = ai + aj;
-    const Vec n = {load(t.dx + b) / r, load(t.dy + b) / r, load(t.dz + b) / r};
+    // One division, not three (divisions are the slowest lane operations).
+    const Vec n = (1.0 / r) * Vec{load(t.dx + b), load(t.dy + b), load(t.dz + b)};
     Vec spin{};
     if constexpr (kRotation) {
       spin = ai * lanes::gather3(c.omega, t.i + b) + aj * lanes::gather3(c.omega, t.j + b);
@@ -233,8 +234,8 @@ template <class Law, bool kFriction, bool kRotation>
     if constexpr (kFriction) u = lanes::gather3(c.history, t.pair + b);
     const Reals m_eff = 1.0 / (lanes::gather(c.inv_mass, i) + lanes::gather(c.inv_mass, j));
     const ContactLanes cf = resolve_contacts<Law, kFriction, kRotation>(
-        n, contact - r, contact, lanes::gather3(c.v, t.i + b) - lanes::gather3(c.v, t.j + b), spin, m_eff,
-        pair_materials(c, i, j), u, c.dt_history);
+        n, contact - r, contact, lanes::gather3(c.v, t.i + b) - lanes::gather3(c.v, t.j + b),
+        spin, m_eff, pair_materials(c, i, j), u, c.dt_history);
     lanes::store(t.fx + b, cf.force.x);
     lanes::store(t.fy + b, cf.force.y);
     lanes::store(t.fz + b, cf.force.z);
