@@ -196,26 +196,57 @@ template <bool kFriction, int kStride>
   }
 }
 
-// The materials of the lanes' pairs (one gather per field; none with one species).
-inline MaterialLanes pair_materials(const ForceContext& c, const lanes::Indices& i,
-                                    const lanes::Indices& j) {
-  static_assert(sizeof(LoopMaterial) == 6 * sizeof(double));
-  const double* table = reinterpret_cast<const double*>(c.pair_material);
-  if (c.species_count == 1) {
-    const LoopMaterial& m = c.pair_material[0];
-    return {lanes::splat(m.kn),      lanes::splat(m.kt), lanes::splat(m.gamma_n),
-            lanes::splat(m.gamma_t), lanes::splat(m.mu), lanes::splat(m.inv_kt)};
+// The pair materials as the pair loop reads them. With AVX-512 and at most 8 species
+// pairs, each field is a register of the table's column, read by a lane permutation (one
+// instruction where a gather takes eight loads).
+struct PairMaterials {
+  const double* table;  // species x species LoopMaterials, 6 doubles each
+  int species;
+#if defined(__AVX512F__)
+  __m512d column[6];
+#endif
+
+  explicit PairMaterials(const ForceContext& c)
+      : table(reinterpret_cast<const double*>(c.pair_material)), species(c.species_count) {
+    static_assert(sizeof(LoopMaterial) == 6 * sizeof(double));
+#if defined(__AVX512F__)
+    if (species * species > 8) return;
+    for (int f = 0; f < 6; ++f) {
+      alignas(64) double v[8] = {};
+      for (int r = 0; r < species * species; ++r) v[r] = table[6 * r + f];
+      column[f] = _mm512_load_pd(v);
+    }
+#endif
   }
-  const lanes::Indices row =
-      (lanes::gather(c.species, i) * c.species_count + lanes::gather(c.species, j)) * 6;
-  return {lanes::gather(table, row),     lanes::gather(table + 1, row),
-          lanes::gather(table + 2, row), lanes::gather(table + 3, row),
-          lanes::gather(table + 4, row), lanes::gather(table + 5, row)};
-}
+
+  // The materials of the lanes' pairs (i, j).
+  MaterialLanes of(const ForceContext& c, const lanes::Indices& i, const lanes::Indices& j) const {
+    if (species == 1) {
+      return {lanes::splat(table[0]), lanes::splat(table[1]), lanes::splat(table[2]),
+              lanes::splat(table[3]), lanes::splat(table[4]), lanes::splat(table[5])};
+    }
+    const lanes::Indices row = lanes::gather(c.species, i) * species + lanes::gather(c.species, j);
+#if defined(__AVX512F__)
+    if (species * species <= 8) {
+      // (The masked forms: the plain ones start from an undefined register, which GCC
+      // warns about.)
+      const __m512i r = _mm512_maskz_cvtepi32_epi64(0xff, reinterpret_cast<__m256i>(row));
+      const auto field = [&](int f) { return _mm512_maskz_permutexvar_pd(0xff, r, column[f]); };
+      return {field(0), field(1), field(2), field(3), field(4), field(5)};
+    }
+#endif
+    const lanes::Indices at = row * 6;
+    return {lanes::gather(table, at),     lanes::gather(table + 1, at),
+            lanes::gather(table + 2, at), lanes::gather(table + 3, at),
+            lanes::gather(table + 4, at), lanes::gather(table + 5, at)};
+  }
+};
 
 // The second pass: the touching pairs' forces, a batch of lanes at a time.
 template <class Law, bool kFriction, bool kRotation>
-[[gnu::always_inline]] inline void resolve_touching(const ForceContext& c, TouchingPairs& t) {
+[[gnu::always_inline]] inline void resolve_touching(const ForceContext& c,
+                                                    const PairMaterials& materials,
+                                                    TouchingPairs& t) {
   using lanes::Indices;
   using lanes::load;
   using lanes::Reals;
@@ -235,7 +266,7 @@ template <class Law, bool kFriction, bool kRotation>
     const Reals m_eff = 1.0 / (lanes::gather(c.inv_mass, i) + lanes::gather(c.inv_mass, j));
     const ContactLanes cf = resolve_contacts<Law, kFriction, kRotation>(
         n, contact - r, contact, lanes::gather3(c.v, t.i + b) - lanes::gather3(c.v, t.j + b),
-        spin, m_eff, pair_materials(c, i, j), u, c.dt_history);
+        spin, m_eff, materials.of(c, i, j), u, c.dt_history);
     lanes::store(t.fx + b, cf.force.x);
     lanes::store(t.fy + b, cf.force.y);
     lanes::store(t.fz + b, cf.force.z);
@@ -310,9 +341,10 @@ void forces(const ForceContext& c) {
     const int p1 = static_cast<int>(static_cast<std::int64_t>(c.n) * (part + 1) / c.threads);
     for (int i = p0; i < p1; ++i) own_forces<Law, kFriction, kRotation>(c, i);
     TouchingPairs touching;
+    const PairMaterials materials(c);
     for (std::int32_t k0 = c.first[p0]; k0 < c.first[p1]; k0 += kBlock) {
       find_touching<kFriction, stride>(c, k0, std::min(k0 + kBlock, c.first[p1]), touching);
-      resolve_touching<Law, kFriction, kRotation>(c, touching);
+      resolve_touching<Law, kFriction, kRotation>(c, materials, touching);
       write_touching<kFriction, kRotation>(c, touching);
     }
   }
