@@ -17,6 +17,8 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <cmath>
+
+#include "lanes.hpp"
 #ifdef __AVX__
 #include <immintrin.h>
 #endif
@@ -50,6 +52,17 @@ inline Vec4 load3(const double* p) {
   return v;
 #else
   return Vec4(p[0], p[1], p[2], 0.0);
+#endif
+}
+
+// Stores the first 3 doubles of v at p: one masked store with AVX-512.
+inline void store3(double* p, const Vec4& v) {
+#ifdef __AVX512VL__
+  _mm256_mask_storeu_pd(p, 0x7, _mm256_loadu_pd(v.data()));
+#else
+  p[0] = v[0];
+  p[1] = v[1];
+  p[2] = v[2];
 #endif
 }
 
@@ -117,6 +130,59 @@ template <class Law, bool kFriction, bool kRotation>
     u[1] = ut[1];
     u[2] = ut[2];
     out.force = out.normal + ft;
+    out.c = cross(n, ft);
+    return out;
+  }
+}
+
+// The same law for a batch of contacts, one per lane: the pair loop's form. material:
+// the lanes' materials; u: the displacements, read and returned updated. Linear contacts
+// skip the scale factor f = 1 (multiplying by 1 changes no bit).
+struct ContactLanes {
+  lanes::Vec force, c;
+};
+struct MaterialLanes {
+  lanes::Reals kn, kt, gamma_n, gamma_t, mu, inv_kt;
+};
+
+template <class Law, bool kFriction, bool kRotation>
+[[gnu::always_inline]] inline ContactLanes resolve_contacts(
+    const lanes::Vec& n, const lanes::Reals& delta, const lanes::Reals& d,
+    const lanes::Vec& v_rel, const lanes::Vec& spin, const lanes::Reals& m_eff,
+    const MaterialLanes& m, lanes::Vec& u, double dt_history) {
+  using lanes::Reals;
+  using lanes::Vec;
+  constexpr bool kHertz = Law::kind == ContactLaw::Hertz;
+  Reals f{};
+  if constexpr (kHertz) f = lanes::sqrt(delta / d);
+  const Reals vn = dot(v_rel, n);
+  Reals fn = m.kn * delta - m.gamma_n * m_eff * vn;
+  if constexpr (kHertz) fn = f * fn;
+  ContactLanes out;
+  const Vec normal = fn * n;
+  if constexpr (!kFriction) {
+    out.force = normal;
+    return out;
+  } else {
+    Vec vt = v_rel - vn * n;
+    if constexpr (kRotation) vt = vt - cross(spin, n);
+    const Reals dt = lanes::splat(dt_history);
+    Vec ut = u - dot(u, n) * n;
+    ut = ut + dt * vt;
+    const Reals damping = m.gamma_t * m_eff;
+    Vec ft = -(m.kt * ut + damping * vt);
+    if constexpr (kHertz) ft = f * ft;
+    const Reals limit = m.mu * lanes::abs(fn);
+    const Reals ft2 = dot(ft, ft);
+    const auto sliding = ft2 > limit * limit;
+    // Computed in every lane (a square root and a division per batch, not per contact),
+    // kept only where the contact slides.
+    const Vec capped = (limit / lanes::sqrt(ft2)) * ft;
+    Vec spring = capped;
+    if constexpr (kHertz) spring = {capped.x / f, capped.y / f, capped.z / f};
+    u = select(sliding, -(m.inv_kt * (spring + damping * vt)), ut);
+    ft = select(sliding, capped, ft);
+    out.force = normal + ft;
     out.c = cross(n, ft);
     return out;
   }

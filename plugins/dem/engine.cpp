@@ -217,6 +217,7 @@ ForceContext Engine::force_context(double dt_history, double velocity_time) {
   c.wall_tangential_record = recording_ ? tangential_record_ptr_.data() : nullptr;
   c.first = list_.first.data();
   c.partner = list_.partner.data();
+  c.owner = list_.owner.data();
   c.history = list_.history.data();
   c.reaction = list_.reaction.data();
   c.background_damping = settings_.background_damping;

@@ -6,22 +6,15 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "lanes.hpp"
 #include "walls.hpp"
 
 namespace granpipe::dem {
 
 namespace {
 
-inline Vec3 load(const double* a, std::ptrdiff_t i) {
-  return Vec3(a[3 * i], a[3 * i + 1], a[3 * i + 2]);
-}
 inline Vec4 load4(const double* a, std::ptrdiff_t i) { return load3(a + 3 * i); }
-template <class V>
-inline void store(double* a, std::ptrdiff_t i, const V& v) {
-  a[3 * i] = v[0];
-  a[3 * i + 1] = v[1];
-  a[3 * i + 2] = v[2];
-}
+inline void store(double* a, std::ptrdiff_t i, const Vec4& v) { store3(a + 3 * i, v); }
 inline void store_zero(double* a, std::ptrdiff_t i) { a[3 * i] = a[3 * i + 1] = a[3 * i + 2] = 0.0; }
 
 // Reaction slot per pair: the force on the partner, and n x F_t when spins matter.
@@ -85,36 +78,90 @@ template <class Law, bool kFriction, bool kRotation>
   }
 }
 
-// The pair loop takes a particle's pairs in blocks of this many, in two passes each.
-constexpr int kBlock = 32;
+// The pair loop works through a thread's pairs in blocks of this many listed pairs.
+constexpr int kBlock = 128;
+static_assert(kBlock % 8 == 0, "the AVX-512 first pass takes whole batches of 8 before the last");
+constexpr int kPadded = kBlock + lanes::kWidth;
 
-// The pairs of one block that touch, in list order, with what the first pass computed.
+// The pairs of one block that touch, in list order, structure of arrays padded to whole
+// batches of lanes: what the first pass found, then what the second computed.
 struct TouchingPairs {
   int count = 0;
-  std::int32_t pair[kBlock];
-  Vec4 d[kBlock];  // x_i - x_j
-  double r2[kBlock];
+  std::int32_t pair[kPadded], i[kPadded], j[kPadded];
+  double dx[kPadded], dy[kPadded], dz[kPadded], r2[kPadded];
+  double fx[kPadded], fy[kPadded], fz[kPadded];  // force on i
+  double cx[kPadded], cy[kPadded], cz[kPadded];  // n x F_t
+  double ux[kPadded], uy[kPadded], uz[kPadded];  // the updated history
 };
 
-// The first pass over pairs [k0, k1) of particle i: lists the touching pairs, clears every
-// reaction slot (those of touching pairs are written again) and the history of the pairs
-// out of contact. Without branches: whether a listed pair touches is close to a coin toss
-// (about half of them do), which a branch per pair would often mispredict.
-template <bool kFriction, int kStride>
-[[gnu::always_inline]] inline void find_touching(const ForceContext& c, const Vec4& xi, double ai,
-                                                 std::int32_t k0, std::int32_t k1,
-                                                 TouchingPairs& t) {
-  t.count = 0;
+// Lists the pairs of [k0, k1) that touch into t (from entry 0), clears the history of the
+// others and returns how many touch. Without branches: whether a listed pair touches is
+// close to a coin toss (about half of them do), which a branch per pair would often
+// mispredict.
+template <bool kFriction>
+[[gnu::always_inline]] inline int list_touching(const ForceContext& c, std::int32_t k0,
+                                                std::int32_t k1, TouchingPairs& t) {
+#if defined(__AVX512F__)
+  // Eight pairs at a time: their touching lanes compressed within registers, stored whole
+  // (what lies past the count is overwritten next), and the history of the others cleared
+  // by masked stores. (Compressing straight to memory is slow on AMD's cores.)
+  int count = 0;
+  const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+  alignas(32) std::int32_t i[8], j[8];
+  for (std::int32_t k = k0; k < k1; k += 8) {
+    const __mmask8 valid = k1 - k >= 8 ? 0xff : static_cast<__mmask8>((1u << (k1 - k)) - 1);
+    const __m256i vi = _mm256_maskz_loadu_epi32(valid, c.owner + k);
+    const __m256i vj = _mm256_maskz_loadu_epi32(valid, c.partner + k);
+    _mm256_store_si256(reinterpret_cast<__m256i*>(i), vi);
+    _mm256_store_si256(reinterpret_cast<__m256i*>(j), vj);
+    const lanes::Vec d = lanes::gather3(c.x, i) - lanes::gather3(c.x, j);
+    const lanes::Reals r2 = dot(d, d);
+    const lanes::Reals contact = lanes::gather(c.radius, reinterpret_cast<lanes::Indices>(vi)) +
+                                 lanes::gather(c.radius, reinterpret_cast<lanes::Indices>(vj));
+    const __mmask8 touching = _mm512_mask_cmp_pd_mask(valid, r2, contact * contact, _CMP_NGE_UQ);
+    const auto put = [&](double* to, const lanes::Reals& v) {
+      _mm512_storeu_pd(to + count, _mm512_maskz_compress_pd(touching, v));
+    };
+    const auto put_index = [&](std::int32_t* to, __m256i v) {
+      _mm256_storeu_si256(reinterpret_cast<__m256i*>(to + count),
+                          _mm256_maskz_compress_epi32(touching, v));
+    };
+    put_index(t.pair, _mm256_add_epi32(_mm256_set1_epi32(k), lane));
+    put_index(t.i, vi);
+    put_index(t.j, vj);
+    put(t.dx, d.x);
+    put(t.dy, d.y);
+    put(t.dz, d.z);
+    put(t.r2, r2);
+    count += std::popcount(static_cast<unsigned>(touching));
+    if constexpr (kFriction) {
+      // Bit a of pair l's three doubles is bit 3 l + a of the store mask.
+      const unsigned clear = _pdep_u32(valid & ~touching, 0x249249u) * 7u;
+      double* u = c.history + 3 * static_cast<std::ptrdiff_t>(k);
+      const __m512d zero = _mm512_setzero_pd();
+      _mm512_mask_storeu_pd(u, static_cast<__mmask8>(clear), zero);
+      _mm512_mask_storeu_pd(u + 8, static_cast<__mmask8>(clear >> 8), zero);
+      _mm512_mask_storeu_pd(u + 16, static_cast<__mmask8>(clear >> 16), zero);
+    }
+  }
+  return count;
+#else
+  int count = 0;
   for (std::int32_t k = k0; k < k1; ++k) {
-    const std::int32_t j = c.partner[k];
-    const Vec4 d = xi - load4(c.x, j);
-    const double r2 = d.squaredNorm(), contact = ai + c.radius[j];
+    const std::int32_t i = c.owner[k], j = c.partner[k];
+    const double* xi = c.x + 3 * static_cast<std::ptrdiff_t>(i);
+    const double* xj = c.x + 3 * static_cast<std::ptrdiff_t>(j);
+    const double dx = xi[0] - xj[0], dy = xi[1] - xj[1], dz = xi[2] - xj[2];
+    const double r2 = dx * dx + dy * dy + dz * dz, contact = c.radius[i] + c.radius[j];
     const bool touching = !(r2 >= contact * contact);
-    t.pair[t.count] = k;
-    t.d[t.count] = d;
-    t.r2[t.count] = r2;
-    t.count += touching;
-    std::fill_n(c.reaction + static_cast<std::ptrdiff_t>(kStride) * k, kStride, 0.0);
+    t.pair[count] = k;
+    t.i[count] = i;
+    t.j[count] = j;
+    t.dx[count] = dx;
+    t.dy[count] = dy;
+    t.dz[count] = dz;
+    t.r2[count] = r2;
+    count += touching;
     if constexpr (kFriction) {
       // u & keep, not a select, which the compiler makes a branch.
       double* u = c.history + 3 * static_cast<std::ptrdiff_t>(k);
@@ -124,89 +171,246 @@ template <bool kFriction, int kStride>
       }
     }
   }
+  return count;
+#endif
 }
 
+// The first pass over pairs [k0, k1): lists the touching pairs, clears every reaction
+// slot (those of touching pairs are written again) and the history of the pairs out of
+// contact. The list is padded with copies of its last pair to a whole batch of lanes.
+template <bool kFriction, int kStride>
+[[gnu::always_inline]] inline void find_touching(const ForceContext& c, std::int32_t k0,
+                                                 std::int32_t k1, TouchingPairs& t) {
+  std::fill(c.reaction + static_cast<std::ptrdiff_t>(kStride) * k0,
+            c.reaction + static_cast<std::ptrdiff_t>(kStride) * k1, 0.0);
+  const int count = list_touching<kFriction>(c, k0, k1, t);
+  t.count = count;
+  for (int e = count; count > 0 && e % lanes::kWidth != 0; ++e) {
+    t.pair[e] = t.pair[count - 1];
+    t.i[e] = t.i[count - 1];
+    t.j[e] = t.j[count - 1];
+    t.dx[e] = t.dx[count - 1];
+    t.dy[e] = t.dy[count - 1];
+    t.dz[e] = t.dz[count - 1];
+    t.r2[e] = t.r2[count - 1];
+  }
+}
+
+// The pair materials as the pair loop reads them. With AVX-512 and at most 8 species
+// pairs, each field is a register of the table's column, read by a lane permutation (one
+// instruction where a gather takes eight loads).
+struct PairMaterials {
+  const double* table;  // species x species LoopMaterials, 6 doubles each
+  int species;
+#if defined(__AVX512F__)
+  __m512d column[6];
+#endif
+
+  explicit PairMaterials(const ForceContext& c)
+      : table(reinterpret_cast<const double*>(c.pair_material)), species(c.species_count) {
+    static_assert(sizeof(LoopMaterial) == 6 * sizeof(double));
+#if defined(__AVX512F__)
+    if (species * species > 8) return;
+    for (int f = 0; f < 6; ++f) {
+      alignas(64) double v[8] = {};
+      for (int r = 0; r < species * species; ++r) v[r] = table[6 * r + f];
+      column[f] = _mm512_load_pd(v);
+    }
+#endif
+  }
+
+  // The materials of the lanes' pairs (i, j).
+  MaterialLanes of(const ForceContext& c, const lanes::Indices& i, const lanes::Indices& j) const {
+    if (species == 1) {
+      return {lanes::splat(table[0]), lanes::splat(table[1]), lanes::splat(table[2]),
+              lanes::splat(table[3]), lanes::splat(table[4]), lanes::splat(table[5])};
+    }
+    const lanes::Indices row = lanes::gather(c.species, i) * species + lanes::gather(c.species, j);
+#if defined(__AVX512F__)
+    if (species * species <= 8) {
+      // (The masked forms: the plain ones start from an undefined register, which GCC
+      // warns about.)
+      const __m512i r = _mm512_maskz_cvtepi32_epi64(0xff, reinterpret_cast<__m256i>(row));
+      const auto field = [&](int f) { return _mm512_maskz_permutexvar_pd(0xff, r, column[f]); };
+      return {field(0), field(1), field(2), field(3), field(4), field(5)};
+    }
+#endif
+    const lanes::Indices at = row * 6;
+    return {lanes::gather(table, at),     lanes::gather(table + 1, at),
+            lanes::gather(table + 2, at), lanes::gather(table + 3, at),
+            lanes::gather(table + 4, at), lanes::gather(table + 5, at)};
+  }
+};
+
+// The second pass: the touching pairs' forces, a batch of lanes at a time.
+template <class Law, bool kFriction, bool kRotation>
+[[gnu::always_inline]] inline void resolve_touching(const ForceContext& c,
+                                                    const PairMaterials& materials,
+                                                    TouchingPairs& t) {
+  using lanes::Indices;
+  using lanes::load;
+  using lanes::Reals;
+  using lanes::Vec;
+  for (int b = 0; b < t.count; b += lanes::kWidth) {
+    const Indices i = load(t.i + b), j = load(t.j + b);
+    const Reals ai = lanes::gather(c.radius, i), aj = lanes::gather(c.radius, j);
+    const Reals r = lanes::sqrt(load(t.r2 + b)), contact = ai + aj;
+    // One division, not three (divisions are the slowest lane operations).
+    const Vec n = (1.0 / r) * Vec{load(t.dx + b), load(t.dy + b), load(t.dz + b)};
+    Vec spin{};
+    if constexpr (kRotation) {
+      spin = ai * lanes::gather3(c.omega, t.i + b) + aj * lanes::gather3(c.omega, t.j + b);
+    }
+    Vec u{};
+    if constexpr (kFriction) u = lanes::gather3(c.history, t.pair + b);
+    const Reals m_eff = 1.0 / (lanes::gather(c.inv_mass, i) + lanes::gather(c.inv_mass, j));
+    const ContactLanes cf = resolve_contacts<Law, kFriction, kRotation>(
+        n, contact - r, contact, lanes::gather3(c.v, t.i + b) - lanes::gather3(c.v, t.j + b),
+        spin, m_eff, materials.of(c, i, j), u, c.dt_history);
+    lanes::store(t.fx + b, cf.force.x);
+    lanes::store(t.fy + b, cf.force.y);
+    lanes::store(t.fz + b, cf.force.z);
+    if constexpr (kRotation) {
+      lanes::store(t.cx + b, cf.c.x);
+      lanes::store(t.cy + b, cf.c.y);
+      lanes::store(t.cz + b, cf.c.z);
+    }
+    if constexpr (kFriction) {
+      lanes::store(t.ux + b, u.x);
+      lanes::store(t.uy + b, u.y);
+      lanes::store(t.uz + b, u.z);
+    }
+  }
+}
+
+// The touching pairs' results written out in list order: reaction slot, history, and the
+// owner's sums.
+template <bool kFriction, bool kRotation>
+[[gnu::always_inline]] inline void write_touching(const ForceContext& c, const TouchingPairs& t) {
+  constexpr int stride = kStride<kRotation>;
+  for (int e = 0; e < t.count; ++e) {
+    const std::ptrdiff_t k = t.pair[e], i = t.i[e];
+    double* rk = c.reaction + stride * k;
+    double* fi = c.force + 3 * i;
+    rk[0] = -t.fx[e];
+    rk[1] = -t.fy[e];
+    rk[2] = -t.fz[e];
+    fi[0] += t.fx[e];
+    fi[1] += t.fy[e];
+    fi[2] += t.fz[e];
+    if constexpr (kRotation) {
+      double* ci = c.spin_sum + 3 * i;
+      rk[3] = t.cx[e];
+      rk[4] = t.cy[e];
+      rk[5] = t.cz[e];
+      ci[0] += t.cx[e];
+      ci[1] += t.cy[e];
+      ci[2] += t.cz[e];
+    }
+    if constexpr (kFriction) {
+      double* u = c.history + 3 * k;
+      u[0] = t.ux[e];
+      u[1] = t.uy[e];
+      u[2] = t.uz[e];
+    }
+  }
+}
+
+// Particle i's own forces: background and air damping, then its walls.
+template <class Law, bool kFriction, bool kRotation>
+[[gnu::always_inline]] inline void own_forces(const ForceContext& c, int i) {
+  const Vec4 xi = load4(c.x, i), vi = load4(c.v, i);
+  const Vec4 wi = kRotation ? load4(c.omega, i) : Vec4::Zero();
+  const Vec4 wall_velocity = load3(c.wall_velocity.data());
+  Vec4 fi = -c.background_damping * vi - c.air_damping * (vi - wall_velocity);
+  Vec4 ci = Vec4::Zero();
+  add_wall_forces<Law, kFriction, kRotation>(c, i, xi, vi, wi, fi, ci);
+  store(c.force, i, fi);
+  if constexpr (kRotation) store(c.spin_sum, i, ci);
+}
+
+// Each thread takes one contiguous block of particles: their own forces first, then the
+// pairs they own, which add to them in list order. A particle's sum is thus the same for
+// any split.
 template <class Law, bool kFriction, bool kRotation>
 void forces(const ForceContext& c) {
   constexpr int stride = kStride<kRotation>;
-  const int S = c.species_count;
-#pragma omp parallel for schedule(static) num_threads(c.threads)
-  for (int i = 0; i < c.n; ++i) {
-    const Vec4 xi = load4(c.x, i), vi = load4(c.v, i);
-    const Vec4 wi = kRotation ? load4(c.omega, i) : Vec4::Zero();
-    const double ai = c.radius[i], inv_mi = c.inv_mass[i];
-    const LoopMaterial* row = c.pair_material + c.species[i] * S;
-    const Vec4 wall_velocity = load3(c.wall_velocity.data());
-    Vec4 fi = -c.background_damping * vi - c.air_damping * (vi - wall_velocity);
-    Vec4 ci = Vec4::Zero();
+#pragma omp parallel for schedule(static, 1) num_threads(c.threads)
+  for (int part = 0; part < c.threads; ++part) {
+    const int p0 = static_cast<int>(static_cast<std::int64_t>(c.n) * part / c.threads);
+    const int p1 = static_cast<int>(static_cast<std::int64_t>(c.n) * (part + 1) / c.threads);
+    for (int i = p0; i < p1; ++i) own_forces<Law, kFriction, kRotation>(c, i);
     TouchingPairs touching;
-    for (std::int32_t k0 = c.first[i]; k0 < c.first[i + 1]; k0 += kBlock) {
-      find_touching<kFriction, stride>(c, xi, ai, k0, std::min(k0 + kBlock, c.first[i + 1]),
-                                       touching);
-      // The second pass: the touching pairs' forces, in list order.
-      for (int t = 0; t < touching.count; ++t) {
-        const std::int32_t k = touching.pair[t], j = c.partner[k];
-        double* rk = c.reaction + static_cast<std::ptrdiff_t>(stride) * k;
-        double* u = kFriction ? c.history + 3 * static_cast<std::ptrdiff_t>(k) : nullptr;
-        const double aj = c.radius[j], contact = ai + aj, r = std::sqrt(touching.r2[t]);
-        const Vec4 n = touching.d[t] / r;
-        const Vec4 spin = kRotation ? Vec4(ai * wi + aj * load4(c.omega, j)) : Vec4::Zero();
-        const ContactForce cf = resolve_contact<Law, kFriction, kRotation>(
-            n, contact - r, contact, vi - load4(c.v, j), spin, 1.0 / (inv_mi + c.inv_mass[j]),
-            row[c.species[j]], u, c.dt_history);
-        fi += cf.force;
-        rk[0] = -cf.force[0];
-        rk[1] = -cf.force[1];
-        rk[2] = -cf.force[2];
-        if constexpr (kRotation) {
-          ci += cf.c;
-          rk[3] = cf.c[0];
-          rk[4] = cf.c[1];
-          rk[5] = cf.c[2];
-        }
-      }
+    const PairMaterials materials(c);
+    for (std::int32_t k0 = c.first[p0]; k0 < c.first[p1]; k0 += kBlock) {
+      find_touching<kFriction, stride>(c, k0, std::min(k0 + kBlock, c.first[p1]), touching);
+      resolve_touching<Law, kFriction, kRotation>(c, materials, touching);
+      write_touching<kFriction, kRotation>(c, touching);
     }
-    add_wall_forces<Law, kFriction, kRotation>(c, i, xi, vi, wi, fi, ci);
-    store(c.force, i, fi);
-    if constexpr (kRotation) store(c.spin_sum, i, ci);
   }
+}
+
+// Particle p's force and spin sum with its reactions gathered (in pair order).
+template <bool kRotation>
+[[gnu::always_inline]] inline Vec4 gathered_force(const KickContext& c, int p, Vec4& spin) {
+  constexpr int stride = kStride<kRotation>;
+  Vec4 f = load4(c.force, p);
+  spin = kRotation ? load4(c.spin_sum, p) : Vec4::Zero();
+  for (std::int32_t m = c.reverse_first[p]; m < c.reverse_first[p + 1]; ++m) {
+    const double* rk = c.reaction + static_cast<std::ptrdiff_t>(stride) * c.reverse_pair[m];
+    f += load3(rk);
+    if constexpr (kRotation) spin += load3(rk + 3);
+  }
+  return f;
+}
+
+// The changes of a half kick, dt/2 a and dt/2 alpha.
+struct HalfKick {
+  Vec4 dv, dw;
+};
+template <bool kRotation>
+[[gnu::always_inline]] inline HalfKick half_kick(const KickContext& c, int p, const Vec4& f,
+                                                 const Vec4& torque) {
+  const double h = 0.5 * c.dt;
+  HalfKick k;
+  k.dv = h * (c.inv_mass[p] * f + load3(c.gravity.data()));
+  if constexpr (kRotation) k.dw = (h * c.inv_inertia[p]) * torque;
+  return k;
 }
 
 // The end of a step for particle p: its reactions gathered, then v += dt/2 a (and the
 // spin likewise).
 template <bool kRotation>
 [[gnu::always_inline]] inline void finish(const KickContext& c, int p) {
-  constexpr int stride = kStride<kRotation>;
-  const double h = 0.5 * c.dt;
-  Vec3 f = load(c.force, p);
-  Vec3 spin = kRotation ? load(c.spin_sum, p) : Vec3::Zero();
-  for (std::int32_t m = c.reverse_first[p]; m < c.reverse_first[p + 1]; ++m) {
-    const double* rk = c.reaction + static_cast<std::ptrdiff_t>(stride) * c.reverse_pair[m];
-    f += Vec3(rk[0], rk[1], rk[2]);
-    if constexpr (kRotation) spin += Vec3(rk[3], rk[4], rk[5]);
-  }
+  Vec4 spin;
+  const Vec4 f = gathered_force<kRotation>(c, p, spin);
+  const Vec4 torque = kRotation ? Vec4(-c.radius[p] * spin) : Vec4::Zero();
   store(c.force, p, f);
-  store(c.v, p, load(c.v, p) + h * (c.inv_mass[p] * f + c.gravity));
+  const HalfKick k = half_kick<kRotation>(c, p, f, torque);
+  store(c.v, p, load4(c.v, p) + k.dv);
   if constexpr (kRotation) {
-    const Vec3 torque = -c.radius[p] * spin;
     store(c.torque, p, torque);
-    store(c.omega, p, load(c.omega, p) + (h * c.inv_inertia[p]) * torque);
+    store(c.omega, p, load4(c.omega, p) + k.dw);
   }
+}
+
+// The drift: x += dt v; returns the squared displacement since the last list build.
+[[gnu::always_inline]] inline double drift(const KickContext& c, int p, const Vec4& v) {
+  const Vec4 x = load4(c.x, p) + c.dt * v;
+  store(c.x, p, x);
+  return (x - load4(c.x_build, p)).squaredNorm();
 }
 
 // The start of a step for particle p: v += dt/2 a, x += dt v (and the spin's half kick);
 // returns its squared displacement since the last list build.
 template <bool kRotation>
 [[gnu::always_inline]] inline double start(const KickContext& c, int p) {
-  const double h = 0.5 * c.dt;
-  const Vec3 v = load(c.v, p) + h * (c.inv_mass[p] * load(c.force, p) + c.gravity);
-  const Vec3 x = load(c.x, p) + c.dt * v;
+  const HalfKick k = half_kick<kRotation>(c, p, load4(c.force, p),
+                                          kRotation ? load4(c.torque, p) : Vec4::Zero());
+  const Vec4 v = load4(c.v, p) + k.dv;
   store(c.v, p, v);
-  store(c.x, p, x);
-  if constexpr (kRotation) {
-    store(c.omega, p, load(c.omega, p) + (h * c.inv_inertia[p]) * load(c.torque, p));
-  }
-  return (x - load(c.x_build, p)).squaredNorm();
+  if constexpr (kRotation) store(c.omega, p, load4(c.omega, p) + k.dw);
+  return drift(c, p, v);
 }
 
 template <bool kRotation>
@@ -230,8 +434,19 @@ double finish_and_start(const KickContext& c) {
   double worst = 0.0;
 #pragma omp parallel for schedule(static) num_threads(c.threads) reduction(max : worst)
   for (int p = 0; p < c.n; ++p) {
-    finish<kRotation>(c, p);
-    worst = std::max(worst, start<kRotation>(c, p));
+    // finish then start, the second kick reusing the first's increments.
+    Vec4 spin;
+    const Vec4 f = gathered_force<kRotation>(c, p, spin);
+    const Vec4 torque = kRotation ? Vec4(-c.radius[p] * spin) : Vec4::Zero();
+    store(c.force, p, f);
+    const HalfKick k = half_kick<kRotation>(c, p, f, torque);
+    const Vec4 v = load4(c.v, p) + k.dv + k.dv;
+    store(c.v, p, v);
+    if constexpr (kRotation) {
+      store(c.torque, p, torque);
+      store(c.omega, p, load4(c.omega, p) + k.dw + k.dw);
+    }
+    worst = std::max(worst, drift(c, p, v));
   }
   return worst;
 }

@@ -50,7 +50,7 @@ struct ForceContext {
   double** wall_normal_record;
   double** wall_tangential_record;
   // The half list.
-  const std::int32_t *first, *partner;
+  const std::int32_t *first, *partner, *owner;
   double* history;   // 3 per pair
   double* reaction;  // 3 or 6 per pair
   double background_damping;

@@ -129,12 +129,14 @@ void NeighborList::list_pairs(const Particles& p, int threads) {
   }
   for (int i = 0; i < n; ++i) first[i + 1] += first[i];
   partner.resize(static_cast<std::size_t>(first[n]));
+  owner.resize(partner.size());
 #pragma omp parallel for schedule(dynamic, 128) num_threads(threads)
   for (int i = 0; i < n; ++i) {
     int k = first[i];
     for_each_candidate(p, i, [&](int j) {
       if (near(i, j)) partner[k++] = j;
     });
+    std::fill(owner.begin() + first[i], owner.begin() + k, i);
   }
 }
 

@@ -42,8 +42,9 @@ class NeighborList {
   std::int64_t builds() const { return builds_; }
 
   // Pairs of owner i are first[i] .. first[i+1]-1; pairs naming p as partner are
-  // reverse_pair[reverse_first[p] .. reverse_first[p+1]-1], in increasing pair order.
-  std::vector<std::int32_t> first, partner;
+  // reverse_pair[reverse_first[p] .. reverse_first[p+1]-1], in increasing pair order;
+  // owner[k] is the particle that lists pair k (the force loop runs over pairs, not owners).
+  std::vector<std::int32_t> first, partner, owner;
   std::vector<std::int32_t> reverse_first, reverse_pair;
   std::vector<double> history;   // 3 per pair
   std::vector<double> reaction;  // reaction_stride per pair
