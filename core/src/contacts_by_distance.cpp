@@ -44,11 +44,11 @@ void find_wall_contacts(const Frame& f, double tolerance, std::vector<Found>& ou
 
 }  // namespace
 
-void declare_contact_tolerance(Schema& schema, const std::string& name) {
-  schema.real(name, kDefaultContactTolerance,
+void declare_contact_tolerance(Schema& schema) {
+  schema.real(kContactToleranceName, kDefaultContactTolerance,
               "relative contact tolerance: two particles touch when their centre distance is "
-              "at most (R_i + R_j)(1 + " + name + "), a particle and a wall when the "
-              "centre-wall distance is at most R_i (1 + " + name + ")")
+              "at most (R_i + R_j)(1 + tol), a particle and a wall when the centre-wall "
+              "distance is at most R_i (1 + tol)")
       .min(0.0);
 }
 

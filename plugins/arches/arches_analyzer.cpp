@@ -33,7 +33,7 @@ std::string frame_name(long index, const Frame& frame) {
 
 Schema schema() {
   Schema s;
-  declare_contact_tolerance(s, "contact_tolerance");
+  declare_contact_tolerance(s);
   s.real("span_bin", 0.05, "bin width of the span distributions n_s(x)")
       .min(0.0, true)
       .unit("mean disk diameters");

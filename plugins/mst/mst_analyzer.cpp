@@ -50,7 +50,7 @@ Schema schema() {
   s.boolean("zero_force_contacts", false,
             "rows of the frame's contact table with a zero normal force count as contacts "
             "(by default only non-zero forces do: the force network)");
-  declare_contact_tolerance(s, "contact_tolerance");
+  declare_contact_tolerance(s);
   return s;
 }
 

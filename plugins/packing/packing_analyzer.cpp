@@ -13,7 +13,7 @@ namespace granpipe::packing {
 
 Schema schema() {
   Schema s;
-  declare_contact_tolerance(s, "tolerance");
+  declare_contact_tolerance(s);
   s.choice<Top>("top", Top::Auto,
            "top of the region before exclude_top: the highest particle top (surface), the "
            "lowest point of the free surface, over columns at least one mean diameter wide "
@@ -166,7 +166,7 @@ PackingAnalyzer::PackingAnalyzer(const PluginContext& ctx)
           "per_frame", Table({"frame", "step", "time", "phi", "number_density", "z_mean"},
                              "per-frame packing fraction, number density and coordination"))) {
   const Params& p = ctx.params;
-  settings_.tolerance = p.real("tolerance");
+  settings_.tolerance = p.real(kContactToleranceName);
   settings_.exclude_bottom = p.real("exclude_bottom");
   settings_.exclude_top = p.real("exclude_top");
   settings_.exclude_sides = p.real("exclude_sides");

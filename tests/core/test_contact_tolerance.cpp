@@ -12,8 +12,8 @@ using namespace granpipe;
 
 TEST(ContactTolerance, HasOneDefaultRangeAndText) {
   Schema s;
-  declare_contact_tolerance(s, "tol");
-  const ParamSpec& p = *s.find("tol");
+  declare_contact_tolerance(s);
+  const ParamSpec& p = *s.find("contact_tolerance");
   EXPECT_EQ(std::get<double>(*p.default_value), 1e-9);
   EXPECT_EQ(p.min, 0.0);
   EXPECT_FALSE(p.min_exclusive);
@@ -24,14 +24,12 @@ TEST(ContactTolerance, HasOneDefaultRangeAndText) {
 }
 
 TEST(ContactTolerance, EveryPluginFindingContactsByDistanceDeclaresItAlike) {
-  // packing's is named "tolerance": the pipelines that set it predate the others'.
-  for (const auto& [plugin, name] : {std::pair{"mst", "contact_tolerance"},
-                                     std::pair{"arches", "contact_tolerance"},
-                                     std::pair{"packing", "tolerance"}}) {
+  const std::string name = kContactToleranceName;
+  for (const char* plugin : {"mst", "arches", "packing"}) {
     const PluginInfo* info = test::installed_plugins().find(plugin);
     if (!info) continue;  // left out of this build
     Schema expected;
-    declare_contact_tolerance(expected, name);
+    declare_contact_tolerance(expected);
     const ParamSpec* p = info->schema.find(name);
     ASSERT_NE(p, nullptr) << plugin;
     EXPECT_EQ(p->doc, expected.find(name)->doc) << plugin;

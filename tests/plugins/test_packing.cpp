@@ -412,7 +412,7 @@ TEST(Packing, OneParticle) {
 TEST(Packing, PublishesTheCoordinationOfEachParticle) {
   for (const auto& [name, z] : {std::pair{"fcc", 12}, {"triangular", 6}}) {
     const Frame f = one(name);
-    const auto ctx = granpipe::test::make_context(granpipe::packing::schema(), {{"tolerance", 1e-9}});
+    const auto ctx = granpipe::test::make_context(granpipe::packing::schema(), {{"contact_tolerance", 1e-9}});
     granpipe::packing::PackingAnalyzer analyzer(*ctx);
     FrameCache cache;
     analyzer.consume(f, cache);

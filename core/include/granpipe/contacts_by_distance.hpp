@@ -13,10 +13,11 @@
 namespace granpipe {
 
 constexpr double kDefaultContactTolerance = 1e-9;
+constexpr const char* kContactToleranceName = "contact_tolerance";
 
-// Declares the tolerance parameter `name` (real >= 0, default kDefaultContactTolerance) of
-// a plugin that finds contacts by distance, with the one text every such plugin shows.
-void declare_contact_tolerance(Schema& schema, const std::string& name);
+// Declares the parameter contact_tolerance (real >= 0, default kDefaultContactTolerance) of
+// a plugin that finds contacts by distance: one name and one text in every such plugin.
+void declare_contact_tolerance(Schema& schema);
 
 struct DistanceContacts {
   double tolerance = 0.0;
