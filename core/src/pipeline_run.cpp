@@ -24,7 +24,7 @@ namespace {
 struct PointPlugins {
   std::unique_ptr<Source> source;
   std::vector<std::unique_ptr<Analyzer>> analyzers;
-  std::vector<std::unique_ptr<Writer>> writers;  // the pipeline's, then the core's frames.h5
+  std::vector<std::unique_ptr<Writer>> writers;  // the pipeline's
 };
 
 const Property* provided(const FrameContent& have, const Property& need) {
@@ -190,7 +190,7 @@ PointOutcome run_point(const Pipeline::Impl& p, std::size_t k, PointPlugins plug
                        const ResultStream& stream,
                        Progress& progress, const fs::path& out) {
   const bool source_reports = plugins.source->work().reported_by_source;
-  if (auto frames = frames_file(p, k, out)) plugins.writers.push_back(std::move(frames));
+  const auto frames_h5 = frames_file(p, k, out);  // none when frames are not saved
 
   PointOutcome outcome;
   Frame frame;
@@ -221,10 +221,9 @@ PointOutcome run_point(const Pipeline::Impl& p, std::size_t k, PointPlugins plug
     }
     if (outcome.frames % p.frame_stride == 0) {
       for (std::size_t w = 0; w < plugins.writers.size(); ++w) {
-        // The core's frames.h5 names its own file in its messages.
-        if (w == p.writers.size()) plugins.writers[w]->write(frame);
-        else located("writers[" + std::to_string(w) + "]", [&] { plugins.writers[w]->write(frame); });
+        located("writers[" + std::to_string(w) + "]", [&] { plugins.writers[w]->write(frame); });
       }
+      if (frames_h5) frames_h5->write(frame);  // it names its own file in its messages
     }
     for (const auto& columns : published) remove_published(columns, frame);
     stream.throw_if_failed();  // a full disk is the output's fault, not an analyzer's
@@ -242,6 +241,7 @@ PointOutcome run_point(const Pipeline::Impl& p, std::size_t k, PointPlugins plug
     outcome.results[prefix + p.analyzers[a].name] = std::move(r);
   }
   for (const auto& writer : plugins.writers) writer->close();
+  if (frames_h5) frames_h5->close();
   return outcome;
 }
 
