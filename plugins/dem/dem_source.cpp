@@ -9,8 +9,7 @@
 
 #include "diagnostics.hpp"
 #include "frame_output.hpp"
-#include "granpipe/frame_store.hpp"
-#include "loose_lattice.hpp"
+#include "start.hpp"
 #include "time_step.hpp"
 
 namespace granpipe::dem {
@@ -78,72 +77,6 @@ Settings settings_of(const PluginContext& ctx) {
   s.air_damping = p.real("air_damping");
   s.threads = ctx.threads;
   return s;
-}
-
-// Where the run starts: the particles and the container holding them.
-struct Start {
-  InitialState state;
-  Container container;
-};
-
-// Frame `index` of the start file (-1: its last).
-Start start_from_file(const PluginContext& ctx, int species) {
-  FrameReader reader(ctx.params.string("initial_file"));
-  const std::int64_t index = ctx.params.integer("initial_frame");
-  const long frames = reader.frames();
-  if (frames == 0 || index >= frames) {
-    throw InputError(ctx.param("initial_frame") + ": expected a frame of " + reader.info().path +
-                     " (it holds " + std::to_string(frames) + "), got " + std::to_string(index));
-  }
-  Frame f = reader.read(index < 0 ? frames - 1 : static_cast<long>(index));
-  f.check(reader.info().path + ": frame " + std::to_string(index));
-  if (f.dim != 3) throw InputError(ctx.param("initial_file") + ": expected a 3D frame, got 2D");
-  InitialState s;
-  s.position = f.position().matrix().transpose();
-  s.radius = f.radius();
-  s.species = f.species().cast<int>();
-  if (f.size() > 0 && s.species.maxCoeff() >= species) {
-    throw InputError(ctx.param("species") + ": expected an entry for every species of the start frame (" +
-                     std::to_string(s.species.maxCoeff() + 1) + "), got " + std::to_string(species));
-  }
-  if (f.has("velocity")) s.velocity = f.table<double>("velocity").matrix().transpose();
-  if (f.has("angular_velocity")) {
-    s.angular_velocity = f.table<double>("angular_velocity").matrix().transpose();
-  }
-  return {std::move(s), f.container};
-}
-
-// A loose lattice in an open-topped cylinder standing on z = 0 (loose_lattice.hpp).
-Start start_from_bed(const PluginContext& ctx, int species) {
-  const Params& b = ctx.params.object("bed");
-  const double d = b.real("diameter"), R = 0.5 * b.real("cylinder_diameter");
-  if (b.real("intruder_diameter") > 0.0 && species < 2) {
-    throw InputError(ctx.param("species") + ": expected a second species for the bed's intruder "
-                     "(species 1), got " + std::to_string(species) + " species");
-  }
-  Start s;
-  s.state = loose_lattice({.count = static_cast<int>(b.integer("small")), .radius = 0.5 * d,
-                           .cylinder_radius = R, .spacing = b.real("spacing") * d,
-                           .jitter = b.real("jitter") * d,
-                           .intruder_radius = 0.5 * b.real("intruder_diameter"),
-                           .seed = ctx.seeds.derive("bed").seed()});
-  Container& c = s.container;
-  c.shape = ContainerShape::Cylinder;
-  c.cylinder_radius = R;
-  c.boundary[2] = {Boundary::Wall, Boundary::Open};
-  c.lo = Eigen::Vector3d(-R, -R, 0.0);
-  c.hi = Eigen::Vector3d(R, R, s.state.position.row(2).maxCoeff() + d);
-  return s;
-}
-
-Start start_of(const PluginContext& ctx, int species) {
-  const bool file = !ctx.params.string("initial_file").empty();
-  const bool bed = ctx.params.object("bed").integer("small") > 0;
-  if (file == bed) {
-    throw InputError(ctx.params_path + ": expected either initial_file or bed.small > 0, got " +
-                     (file ? "both" : "neither"));
-  }
-  return file ? start_from_file(ctx, species) : start_from_bed(ctx, species);
 }
 
 // The fastest normal approach the scene can produce, for the Hertz contact time and the
@@ -245,34 +178,16 @@ Schema schema() {
 }
 
 DemSource::DemSource(const PluginContext& ctx) : log_(ctx.log), progress_(ctx.progress) {
-  const Params& p = ctx.params;
-  const Model model = model_of(p);
+  const Model model = model_of(ctx.params);
   const Start start = start_of(ctx, model.species());
   const Settings settings = settings_of(ctx);
-  const Drive drive = drive_of(p);
+  const Drive drive = drive_of(ctx.params);
   const WallSet walls(start.container, drive);
   const double speed = impact_speed(start, drive, settings);
-  const ContactTime shortest = smallest_contact_time(model, walls, start.state.radius,
-                                                     start.state.species, settings.law, speed);
+  check_dt(ctx, smallest_contact_time(model, walls, start.state.radius, start.state.species,
+                                      settings.law, speed));
   kinetic_energy_bound_ = kinetic_energy_bound(start.state, model, speed);
-  const StepCheck verdict = check_time_step(settings.dt, shortest);
-  if (verdict.verdict == StepVerdict::Refuse) throw InputError(ctx.param("dt") + ": " + verdict.message);
-  if (verdict.verdict == StepVerdict::Warn) log_.warn(ctx.param("dt") + ": " + verdict.message);
-  relaxed_kinetic_energy_ = p.real("relaxed_kinetic_energy");
-  if (relaxed_kinetic_energy_ > 0.0 && !drive.stopped(std::numeric_limits<double>::max())) {
-    log_.warn(ctx.param("relaxed_kinetic_energy") +
-              ": the container never stops (drive.periods is 0), so the run never ends early");
-  }
-  total_steps_ = steps_in(p.real("duration"), settings.dt);
-  save_every_ = p.integer("save_every");
-  first_saved_step_ = steps_in(p.real("save_from"), settings.dt);
-  if (first_saved_step_ > total_steps_) {
-    std::ostringstream m;
-    m << ctx.param("save_from") << ": expected a time within the duration ("
-      << p.real("duration") << "), got " << p.real("save_from");
-    throw InputError(m.str());
-  }
-  end_step_ = total_steps_;
+  read_schedule(ctx, drive);
   engine_ = std::make_unique<Engine>(model, walls, settings, start.state);
   engine_->record_contacts(true);
   timing_ = ctx.stream_table(
@@ -281,6 +196,31 @@ DemSource::DemSource(const PluginContext& ctx) : log_(ctx.log), progress_(ctx.pr
                       "wall-clock time of each interval between emitted frames, and where it "
                       "went: pair and wall forces (one fused loop), integration, neighbour "
                       "lists"));
+}
+
+void DemSource::check_dt(const PluginContext& ctx, const ContactTime& shortest) {
+  const StepCheck verdict = check_time_step(ctx.params.real("dt"), shortest);
+  if (verdict.verdict == StepVerdict::Refuse) throw InputError(ctx.param("dt") + ": " + verdict.message);
+  if (verdict.verdict == StepVerdict::Warn) log_.warn(ctx.param("dt") + ": " + verdict.message);
+}
+
+void DemSource::read_schedule(const PluginContext& ctx, const Drive& drive) {
+  const Params& p = ctx.params;
+  const double dt = p.real("dt");
+  total_steps_ = end_step_ = steps_in(p.real("duration"), dt);
+  save_every_ = p.integer("save_every");
+  first_saved_step_ = steps_in(p.real("save_from"), dt);
+  if (first_saved_step_ > total_steps_) {
+    std::ostringstream m;
+    m << ctx.param("save_from") << ": expected a time within the duration ("
+      << p.real("duration") << "), got " << p.real("save_from");
+    throw InputError(m.str());
+  }
+  relaxed_kinetic_energy_ = p.real("relaxed_kinetic_energy");
+  if (relaxed_kinetic_energy_ > 0.0 && !drive.stopped(std::numeric_limits<double>::max())) {
+    log_.warn(ctx.param("relaxed_kinetic_energy") +
+              ": the container never stops (drive.periods is 0), so the run never ends early");
+  }
 }
 
 FrameContent DemSource::content() const {

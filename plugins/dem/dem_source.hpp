@@ -6,11 +6,11 @@
 // against the shortest contact time before anything runs, and emits a frame (with the
 // contact table) every `save_every` steps, ending early once a stopped bed has relaxed.
 #include <memory>
-#include <optional>
 
 #include "engine.hpp"
 #include "granpipe/params.hpp"
 #include "granpipe/plugin.hpp"
+#include "time_step.hpp"
 
 namespace granpipe::dem {
 
@@ -32,6 +32,10 @@ class DemSource : public Source {
   void finish(Results& results) override;
 
  private:
+  // Refuses dt above the documented fraction of the shortest contact time, warns below it.
+  void check_dt(const PluginContext& ctx, const ContactTime& shortest);
+  // Steps of the run and of its frames, and the relaxation that may end it early.
+  void read_schedule(const PluginContext& ctx, const Drive& drive);
   // Advances to the next step at which a frame is due, reporting progress as it goes.
   void run_to(std::int64_t step);
   void report_progress(std::int64_t steps, double seconds);

@@ -1,0 +1,21 @@
+#pragma once
+// Where a dem run starts: a frame of a saved file (its particles and container) or a loose
+// bed generated in a cylinder (loose_lattice.hpp), as the source's parameters say.
+#include "granpipe/container.hpp"
+#include "granpipe/plugin.hpp"
+#include "particles.hpp"
+
+namespace granpipe::dem {
+
+// Where the run starts: the particles and the container holding them.
+struct Start {
+  InitialState state;
+  Container container;
+};
+
+// The start the parameters name: initial_file (frame initial_frame) or bed, exactly one of
+// them. Throws InputError naming the parameter when neither or both are given, when the
+// frame is missing or not 3D, or when the species table lacks a species of the start.
+Start start_of(const PluginContext& ctx, int species);
+
+}  // namespace granpipe::dem
