@@ -46,11 +46,15 @@ Start start_from_bed(const PluginContext& ctx, int species) {
                      "(species 1), got " + std::to_string(species) + " species");
   }
   Start s;
-  s.state = loose_lattice({.count = static_cast<int>(b.integer("small")), .radius = 0.5 * d,
-                           .cylinder_radius = R, .spacing = b.real("spacing") * d,
-                           .jitter = b.real("jitter") * d,
-                           .intruder_radius = 0.5 * b.real("intruder_diameter"),
-                           .seed = ctx.seeds.derive("bed").seed()});
+  try {
+    s.state = loose_lattice({.count = static_cast<int>(b.integer("small")), .radius = 0.5 * d,
+                             .cylinder_radius = R, .spacing = b.real("spacing") * d,
+                             .jitter = b.real("jitter") * d,
+                             .intruder_radius = 0.5 * b.real("intruder_diameter"),
+                             .seed = ctx.seeds.derive("bed").seed()});
+  } catch (const InputError& e) {
+    throw InputError(ctx.param("bed") + ": " + e.what());
+  }
   Container& c = s.container;
   c.shape = ContainerShape::Cylinder;
   c.cylinder_radius = R;

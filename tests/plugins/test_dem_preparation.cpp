@@ -211,6 +211,10 @@ TEST(DemSource, TheStartIsEitherAFileOrABed) {
   expect_refusal(neither, "params: expected either initial_file or bed.small > 0, got neither");
   nlohmann::json one_species = small_preparation();
   one_species["species"] = {{{"name", "small"}, {"density", 1.91}}};
+  nlohmann::json wide = small_preparation();
+  wide["bed"]["intruder_diameter"] = 4.0;
+  expect_refusal(wide, "params.bed: dem: loose lattice: no sphere of radius 0.5 (or intruder of "
+                       "radius 2) fits in a cylinder of radius 2");
   expect_refusal(one_species,
                  "params.species: expected a second species for the bed's intruder (species 1), "
                  "got 1 species");
