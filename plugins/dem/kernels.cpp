@@ -175,14 +175,12 @@ template <bool kFriction>
 #endif
 }
 
-// The first pass over pairs [k0, k1): lists the touching pairs, clears every reaction
-// slot (those of touching pairs are written again) and the history of the pairs out of
-// contact. The list is padded with copies of its last pair to a whole batch of lanes.
-template <bool kFriction, int kStride>
+// The first pass over pairs [k0, k1): lists the touching pairs and clears the history of
+// the pairs out of contact. The list is padded with copies of its last pair to a whole
+// batch of lanes.
+template <bool kFriction>
 [[gnu::always_inline]] inline void find_touching(const ForceContext& c, std::int32_t k0,
                                                  std::int32_t k1, TouchingPairs& t) {
-  std::fill(c.reaction + static_cast<std::ptrdiff_t>(kStride) * k0,
-            c.reaction + static_cast<std::ptrdiff_t>(kStride) * k1, 0.0);
   const int count = list_touching<kFriction>(c, k0, k1, t);
   t.count = count;
   for (int e = count; count > 0 && e % lanes::kWidth != 0; ++e) {
@@ -283,14 +281,14 @@ template <class Law, bool kFriction, bool kRotation>
   }
 }
 
-// The touching pairs' results written out in list order: reaction slot, history, and the
-// owner's sums.
+// The touching pairs' results written out in list order: reaction slot (and the pair's
+// reaction when recording), history, and the owner's sums.
 template <bool kFriction, bool kRotation>
 [[gnu::always_inline]] inline void write_touching(const ForceContext& c, const TouchingPairs& t) {
   constexpr int stride = kStride<kRotation>;
   for (int e = 0; e < t.count; ++e) {
     const std::ptrdiff_t k = t.pair[e], i = t.i[e];
-    double* rk = c.reaction + stride * k;
+    double* rk = c.incoming + stride * std::ptrdiff_t{c.reaction_slot[k]};
     double* fi = c.force + 3 * i;
     rk[0] = -t.fx[e];
     rk[1] = -t.fy[e];
@@ -307,6 +305,7 @@ template <bool kFriction, bool kRotation>
       ci[1] += t.cy[e];
       ci[2] += t.cz[e];
     }
+    if (c.reaction) std::copy(rk, rk + stride, c.reaction + stride * k);
     if constexpr (kFriction) {
       double* u = c.history + 3 * k;
       u[0] = t.ux[e];
@@ -334,7 +333,6 @@ template <class Law, bool kFriction, bool kRotation>
 // any split.
 template <class Law, bool kFriction, bool kRotation>
 void forces(const ForceContext& c) {
-  constexpr int stride = kStride<kRotation>;
 #pragma omp parallel for schedule(static, 1) num_threads(c.threads)
   for (int part = 0; part < c.threads; ++part) {
     const int p0 = static_cast<int>(static_cast<std::int64_t>(c.n) * part / c.threads);
@@ -343,23 +341,27 @@ void forces(const ForceContext& c) {
     TouchingPairs touching;
     const PairMaterials materials(c);
     for (std::int32_t k0 = c.first[p0]; k0 < c.first[p1]; k0 += kBlock) {
-      find_touching<kFriction, stride>(c, k0, std::min(k0 + kBlock, c.first[p1]), touching);
+      find_touching<kFriction>(c, k0, std::min(k0 + kBlock, c.first[p1]), touching);
       resolve_touching<Law, kFriction, kRotation>(c, materials, touching);
       write_touching<kFriction, kRotation>(c, touching);
     }
   }
 }
 
-// Particle p's force and spin sum with its reactions gathered (in pair order).
+// Particle p's force and spin sum with its reactions gathered (in pair order), their
+// slots cleared for the next force pass, which writes only the touching pairs' slots.
 template <bool kRotation>
 [[gnu::always_inline]] inline Vec4 gathered_force(const KickContext& c, int p, Vec4& spin) {
-  constexpr int stride = kStride<kRotation>;
+  constexpr std::ptrdiff_t stride = kStride<kRotation>;
   Vec4 f = load4(c.force, p);
   spin = kRotation ? load4(c.spin_sum, p) : Vec4::Zero();
-  for (std::int32_t m = c.reverse_first[p]; m < c.reverse_first[p + 1]; ++m) {
-    const double* rk = c.reaction + static_cast<std::ptrdiff_t>(stride) * c.reverse_pair[m];
+  double* begin = c.incoming + stride * c.reverse_first[p];
+  double* const end = c.incoming + stride * c.reverse_first[p + 1];
+  for (double* rk = begin; rk != end; rk += stride) {
     f += load3(rk);
     if constexpr (kRotation) spin += load3(rk + 3);
+    // Cleared slot by slot: a call to memset per particle costs more.
+    for (int a = 0; a < stride; ++a) rk[a] = 0.0;
   }
   return f;
 }
@@ -438,14 +440,10 @@ double finish_and_start(const KickContext& c) {
     Vec4 spin;
     const Vec4 f = gathered_force<kRotation>(c, p, spin);
     const Vec4 torque = kRotation ? Vec4(-c.radius[p] * spin) : Vec4::Zero();
-    store(c.force, p, f);
     const HalfKick k = half_kick<kRotation>(c, p, f, torque);
     const Vec4 v = load4(c.v, p) + k.dv + k.dv;
     store(c.v, p, v);
-    if constexpr (kRotation) {
-      store(c.torque, p, torque);
-      store(c.omega, p, load4(c.omega, p) + k.dw + k.dw);
-    }
+    if constexpr (kRotation) store(c.omega, p, load4(c.omega, p) + k.dw + k.dw);
     worst = std::max(worst, drift(c, p, v));
   }
   return worst;

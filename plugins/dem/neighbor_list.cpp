@@ -155,11 +155,9 @@ void NeighborList::index_reverse(int n) {
   reverse_first.assign(static_cast<std::size_t>(n) + 1, 0);
   for (std::int32_t j : partner) ++reverse_first[j + 1];
   for (int i = 0; i < n; ++i) reverse_first[i + 1] += reverse_first[i];
-  reverse_pair.resize(partner.size());
+  reaction_slot.resize(partner.size());
   count_.assign(reverse_first.begin(), reverse_first.end() - 1);
-  for (std::size_t k = 0; k < partner.size(); ++k) {
-    reverse_pair[static_cast<std::size_t>(count_[partner[k]]++)] = static_cast<std::int32_t>(k);
-  }
+  for (std::size_t k = 0; k < partner.size(); ++k) reaction_slot[k] = count_[partner[k]]++;
 }
 
 void NeighborList::rebuild(Particles& p, int threads) {
@@ -182,6 +180,7 @@ void NeighborList::rebuild(Particles& p, int threads) {
   list_pairs(p, threads);
   if (keep_history_) restore_history(p, threads);
   reaction.resize(static_cast<std::size_t>(reaction_stride) * partner.size());
+  incoming.assign(reaction.size(), 0.0);
   index_reverse(n);
   x_build_ = p.x;
   ++builds_;
