@@ -331,9 +331,13 @@ template <class Law, bool kFriction, bool kRotation>
 // Each thread takes one contiguous block of particles: their own forces first, then the
 // pairs they own, which add to them in list order. A particle's sum is thus the same for
 // any split.
+// (Each thread works on its own copy of the context: the vector stores may alias
+// anything whose address is known elsewhere, which would make every access to a field a
+// reload.)
 template <class Law, bool kFriction, bool kRotation>
-void forces(const ForceContext& c) {
-#pragma omp parallel for schedule(static, 1) num_threads(c.threads)
+void forces(const ForceContext& context) {
+  const ForceContext c = context;
+#pragma omp parallel for schedule(static, 1) num_threads(c.threads) firstprivate(c)
   for (int part = 0; part < c.threads; ++part) {
     const int p0 = static_cast<int>(static_cast<std::int64_t>(c.n) * part / c.threads);
     const int p1 = static_cast<int>(static_cast<std::int64_t>(c.n) * (part + 1) / c.threads);
@@ -416,15 +420,17 @@ template <bool kRotation>
 }
 
 template <bool kRotation>
-void finish_step(const KickContext& c) {
-#pragma omp parallel for schedule(static) num_threads(c.threads)
+void finish_step(const KickContext& context) {
+  const KickContext c = context;
+#pragma omp parallel for schedule(static) num_threads(c.threads) firstprivate(c)
   for (int p = 0; p < c.n; ++p) finish<kRotation>(c, p);
 }
 
 template <bool kRotation>
-double start_step(const KickContext& c) {
+double start_step(const KickContext& context) {
+  const KickContext c = context;
   double worst = 0.0;
-#pragma omp parallel for schedule(static) num_threads(c.threads) reduction(max : worst)
+#pragma omp parallel for schedule(static) num_threads(c.threads) firstprivate(c) reduction(max : worst)
   for (int p = 0; p < c.n; ++p) worst = std::max(worst, start<kRotation>(c, p));
   return worst;
 }
@@ -432,9 +438,10 @@ double start_step(const KickContext& c) {
 // The two above in one pass: the same arithmetic, one sweep over memory and one barrier
 // fewer per step.
 template <bool kRotation>
-double finish_and_start(const KickContext& c) {
+double finish_and_start(const KickContext& context) {
+  const KickContext c = context;
   double worst = 0.0;
-#pragma omp parallel for schedule(static) num_threads(c.threads) reduction(max : worst)
+#pragma omp parallel for schedule(static) num_threads(c.threads) firstprivate(c) reduction(max : worst)
   for (int p = 0; p < c.n; ++p) {
     // finish then start, the second kick reusing the first's increments.
     Vec4 spin;
