@@ -219,6 +219,7 @@ ForceContext Engine::force_context(double dt_history, double velocity_time) {
   c.partner = list_.partner.data();
   c.owner = list_.owner.data();
   c.reaction_slot = list_.reaction_slot.data();
+  c.work_before = list_.work_before.data();
   c.history = list_.history.data();
   c.incoming = list_.incoming.data();
   c.reaction = recording_ ? list_.reaction.data() : nullptr;

@@ -46,6 +46,10 @@ class NeighborList {
   // pair k (the force loop runs over pairs, not owners).
   std::vector<std::int32_t> first, partner, owner;
   std::vector<double> history;  // 3 per pair
+  // The force loop's estimated work for the particles before i (n+1 entries), counting
+  // their own forces, their listed pairs and their pairs in contact at the build: the
+  // loop gives each thread an equal share of it.
+  std::vector<double> work_before;
   // The reactions particle p gathers are the slots reverse_first[p] .. reverse_first[p+1]-1
   // of `incoming` (reaction_stride doubles each), one per pair naming p as partner, in
   // increasing pair order; pair k writes slot reaction_slot[k]. The force loop writes the
