@@ -218,8 +218,11 @@ ForceContext Engine::force_context(double dt_history, double velocity_time) {
   c.first = list_.first.data();
   c.partner = list_.partner.data();
   c.owner = list_.owner.data();
+  c.reaction_slot = list_.reaction_slot.data();
+  c.work_before = list_.work_before.data();
   c.history = list_.history.data();
-  c.reaction = list_.reaction.data();
+  c.incoming = list_.incoming.data();
+  c.reaction = recording_ ? list_.reaction.data() : nullptr;
   c.background_damping = settings_.background_damping;
   c.air_damping = settings_.air_damping;
   c.dt_history = dt_history;
@@ -242,9 +245,8 @@ KickContext Engine::kick_context(double dt) {
   c.inv_inertia = p_.inv_inertia.data();
   c.spin_sum = spin_sum_.data();
   c.x_build = list_.positions_at_build().data();
-  c.reaction = list_.reaction.data();
+  c.incoming = list_.incoming.data();
   c.reverse_first = list_.reverse_first.data();
-  c.reverse_pair = list_.reverse_pair.data();
   c.gravity = settings_.gravity;
   c.dt = dt;
   c.threads = settings_.threads;

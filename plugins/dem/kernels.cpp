@@ -175,14 +175,12 @@ template <bool kFriction>
 #endif
 }
 
-// The first pass over pairs [k0, k1): lists the touching pairs, clears every reaction
-// slot (those of touching pairs are written again) and the history of the pairs out of
-// contact. The list is padded with copies of its last pair to a whole batch of lanes.
-template <bool kFriction, int kStride>
+// The first pass over pairs [k0, k1): lists the touching pairs and clears the history of
+// the pairs out of contact. The list is padded with copies of its last pair to a whole
+// batch of lanes.
+template <bool kFriction>
 [[gnu::always_inline]] inline void find_touching(const ForceContext& c, std::int32_t k0,
                                                  std::int32_t k1, TouchingPairs& t) {
-  std::fill(c.reaction + static_cast<std::ptrdiff_t>(kStride) * k0,
-            c.reaction + static_cast<std::ptrdiff_t>(kStride) * k1, 0.0);
   const int count = list_touching<kFriction>(c, k0, k1, t);
   t.count = count;
   for (int e = count; count > 0 && e % lanes::kWidth != 0; ++e) {
@@ -283,14 +281,14 @@ template <class Law, bool kFriction, bool kRotation>
   }
 }
 
-// The touching pairs' results written out in list order: reaction slot, history, and the
-// owner's sums.
+// The touching pairs' results written out in list order: reaction slot (and the pair's
+// reaction when recording), history, and the owner's sums.
 template <bool kFriction, bool kRotation>
 [[gnu::always_inline]] inline void write_touching(const ForceContext& c, const TouchingPairs& t) {
   constexpr int stride = kStride<kRotation>;
   for (int e = 0; e < t.count; ++e) {
     const std::ptrdiff_t k = t.pair[e], i = t.i[e];
-    double* rk = c.reaction + stride * k;
+    double* rk = c.incoming + stride * std::ptrdiff_t{c.reaction_slot[k]};
     double* fi = c.force + 3 * i;
     rk[0] = -t.fx[e];
     rk[1] = -t.fy[e];
@@ -307,6 +305,7 @@ template <bool kFriction, bool kRotation>
       ci[1] += t.cy[e];
       ci[2] += t.cz[e];
     }
+    if (c.reaction) std::copy(rk, rk + stride, c.reaction + stride * k);
     if constexpr (kFriction) {
       double* u = c.history + 3 * k;
       u[0] = t.ux[e];
@@ -329,37 +328,54 @@ template <class Law, bool kFriction, bool kRotation>
   if constexpr (kRotation) store(c.spin_sum, i, ci);
 }
 
-// Each thread takes one contiguous block of particles: their own forces first, then the
-// pairs they own, which add to them in list order. A particle's sum is thus the same for
-// any split.
+// Where thread `part`'s particles start: the first particle past its share of the
+// estimated work (see NeighborList::work_before).
+inline int share_start(const ForceContext& c, int part) {
+  if (part == 0) return 0;
+  if (part == c.threads) return c.n;
+  const double share = c.work_before[c.n] * part / c.threads;
+  return static_cast<int>(std::lower_bound(c.work_before, c.work_before + c.n, share) -
+                          c.work_before);
+}
+
+// Each thread takes one contiguous block of particles, of about equal work: their own
+// forces first, then the pairs they own, which add to them in list order. A particle's sum
+// is thus the same for any split. (By particle count, the denser bottom of the Brazil-nut
+// bed gave the first of two threads 11 % more work than the second.)
+// (Each thread works on its own copy of the context: the vector stores may alias
+// anything whose address is known elsewhere, which would make every access to a field a
+// reload.)
 template <class Law, bool kFriction, bool kRotation>
-void forces(const ForceContext& c) {
-  constexpr int stride = kStride<kRotation>;
-#pragma omp parallel for schedule(static, 1) num_threads(c.threads)
+void forces(const ForceContext& context) {
+  const ForceContext c = context;
+#pragma omp parallel for schedule(static, 1) num_threads(c.threads) firstprivate(c)
   for (int part = 0; part < c.threads; ++part) {
-    const int p0 = static_cast<int>(static_cast<std::int64_t>(c.n) * part / c.threads);
-    const int p1 = static_cast<int>(static_cast<std::int64_t>(c.n) * (part + 1) / c.threads);
+    const int p0 = share_start(c, part), p1 = share_start(c, part + 1);
     for (int i = p0; i < p1; ++i) own_forces<Law, kFriction, kRotation>(c, i);
     TouchingPairs touching;
     const PairMaterials materials(c);
     for (std::int32_t k0 = c.first[p0]; k0 < c.first[p1]; k0 += kBlock) {
-      find_touching<kFriction, stride>(c, k0, std::min(k0 + kBlock, c.first[p1]), touching);
+      find_touching<kFriction>(c, k0, std::min(k0 + kBlock, c.first[p1]), touching);
       resolve_touching<Law, kFriction, kRotation>(c, materials, touching);
       write_touching<kFriction, kRotation>(c, touching);
     }
   }
 }
 
-// Particle p's force and spin sum with its reactions gathered (in pair order).
+// Particle p's force and spin sum with its reactions gathered (in pair order), their
+// slots cleared for the next force pass, which writes only the touching pairs' slots.
 template <bool kRotation>
 [[gnu::always_inline]] inline Vec4 gathered_force(const KickContext& c, int p, Vec4& spin) {
-  constexpr int stride = kStride<kRotation>;
+  constexpr std::ptrdiff_t stride = kStride<kRotation>;
   Vec4 f = load4(c.force, p);
   spin = kRotation ? load4(c.spin_sum, p) : Vec4::Zero();
-  for (std::int32_t m = c.reverse_first[p]; m < c.reverse_first[p + 1]; ++m) {
-    const double* rk = c.reaction + static_cast<std::ptrdiff_t>(stride) * c.reverse_pair[m];
+  double* begin = c.incoming + stride * c.reverse_first[p];
+  double* const end = c.incoming + stride * c.reverse_first[p + 1];
+  for (double* rk = begin; rk != end; rk += stride) {
     f += load3(rk);
     if constexpr (kRotation) spin += load3(rk + 3);
+    // Cleared slot by slot: a call to memset per particle costs more.
+    for (int a = 0; a < stride; ++a) rk[a] = 0.0;
   }
   return f;
 }
@@ -414,15 +430,17 @@ template <bool kRotation>
 }
 
 template <bool kRotation>
-void finish_step(const KickContext& c) {
-#pragma omp parallel for schedule(static) num_threads(c.threads)
+void finish_step(const KickContext& context) {
+  const KickContext c = context;
+#pragma omp parallel for schedule(static) num_threads(c.threads) firstprivate(c)
   for (int p = 0; p < c.n; ++p) finish<kRotation>(c, p);
 }
 
 template <bool kRotation>
-double start_step(const KickContext& c) {
+double start_step(const KickContext& context) {
+  const KickContext c = context;
   double worst = 0.0;
-#pragma omp parallel for schedule(static) num_threads(c.threads) reduction(max : worst)
+#pragma omp parallel for schedule(static) num_threads(c.threads) firstprivate(c) reduction(max : worst)
   for (int p = 0; p < c.n; ++p) worst = std::max(worst, start<kRotation>(c, p));
   return worst;
 }
@@ -430,22 +448,19 @@ double start_step(const KickContext& c) {
 // The two above in one pass: the same arithmetic, one sweep over memory and one barrier
 // fewer per step.
 template <bool kRotation>
-double finish_and_start(const KickContext& c) {
+double finish_and_start(const KickContext& context) {
+  const KickContext c = context;
   double worst = 0.0;
-#pragma omp parallel for schedule(static) num_threads(c.threads) reduction(max : worst)
+#pragma omp parallel for schedule(static) num_threads(c.threads) firstprivate(c) reduction(max : worst)
   for (int p = 0; p < c.n; ++p) {
     // finish then start, the second kick reusing the first's increments.
     Vec4 spin;
     const Vec4 f = gathered_force<kRotation>(c, p, spin);
     const Vec4 torque = kRotation ? Vec4(-c.radius[p] * spin) : Vec4::Zero();
-    store(c.force, p, f);
     const HalfKick k = half_kick<kRotation>(c, p, f, torque);
     const Vec4 v = load4(c.v, p) + k.dv + k.dv;
     store(c.v, p, v);
-    if constexpr (kRotation) {
-      store(c.torque, p, torque);
-      store(c.omega, p, load4(c.omega, p) + k.dw + k.dw);
-    }
+    if constexpr (kRotation) store(c.omega, p, load4(c.omega, p) + k.dw + k.dw);
     worst = std::max(worst, drift(c, p, v));
   }
   return worst;

@@ -15,6 +15,12 @@ constexpr int kForward[13][3] = {{0, 0, 1},   {0, 1, -1},  {0, 1, 0},  {0, 1, 1}
                                  {1, 1, -1},  {1, 1, 0},   {1, 1, 1}};
 // Particles larger than this many median radii search for their own partners.
 constexpr double kBigOverMedian = 1.5;
+// The force loop's work, relative to that of a listed pair: per particle (damping, walls)
+// and per pair in contact (its force). Measured on the Brazil-nut scene (CPU time of each
+// of two threads); the work of the pairs in contact at the build stands for that of the
+// steps after it.
+constexpr double kParticleWork = 2.0;
+constexpr double kContactWork = 6.0;
 
 }  // namespace
 
@@ -121,6 +127,11 @@ void NeighborList::list_pairs(const Particles& p, int threads) {
     const double reach = r[i] + r[j] + skin_;
     return dx * dx + dy * dy + dz * dz < reach * reach;
   };
+  const auto in_contact = [&](int i, int j) {
+    const double dx = x[3 * i] - x[3 * j], dy = x[3 * i + 1] - x[3 * j + 1],
+                 dz = x[3 * i + 2] - x[3 * j + 2];
+    return dx * dx + dy * dy + dz * dz < (r[i] + r[j]) * (r[i] + r[j]);
+  };
 #pragma omp parallel for schedule(dynamic, 128) num_threads(threads)
   for (int i = 0; i < n; ++i) {
     int count = 0;
@@ -130,14 +141,19 @@ void NeighborList::list_pairs(const Particles& p, int threads) {
   for (int i = 0; i < n; ++i) first[i + 1] += first[i];
   partner.resize(static_cast<std::size_t>(first[n]));
   owner.resize(partner.size());
+  work_before.assign(static_cast<std::size_t>(n) + 1, 0.0);
 #pragma omp parallel for schedule(dynamic, 128) num_threads(threads)
   for (int i = 0; i < n; ++i) {
-    int k = first[i];
+    int k = first[i], touching = 0;
     for_each_candidate(p, i, [&](int j) {
-      if (near(i, j)) partner[k++] = j;
+      if (!near(i, j)) return;
+      partner[k++] = j;
+      touching += in_contact(i, j);
     });
     std::fill(owner.begin() + first[i], owner.begin() + k, i);
+    work_before[i + 1] = kParticleWork + (k - first[i]) + kContactWork * touching;
   }
+  for (int i = 0; i < n; ++i) work_before[i + 1] += work_before[i];
 }
 
 void NeighborList::restore_history(const Particles& p, int threads) {
@@ -155,11 +171,9 @@ void NeighborList::index_reverse(int n) {
   reverse_first.assign(static_cast<std::size_t>(n) + 1, 0);
   for (std::int32_t j : partner) ++reverse_first[j + 1];
   for (int i = 0; i < n; ++i) reverse_first[i + 1] += reverse_first[i];
-  reverse_pair.resize(partner.size());
+  reaction_slot.resize(partner.size());
   count_.assign(reverse_first.begin(), reverse_first.end() - 1);
-  for (std::size_t k = 0; k < partner.size(); ++k) {
-    reverse_pair[static_cast<std::size_t>(count_[partner[k]]++)] = static_cast<std::int32_t>(k);
-  }
+  for (std::size_t k = 0; k < partner.size(); ++k) reaction_slot[k] = count_[partner[k]]++;
 }
 
 void NeighborList::rebuild(Particles& p, int threads) {
@@ -182,6 +196,7 @@ void NeighborList::rebuild(Particles& p, int threads) {
   list_pairs(p, threads);
   if (keep_history_) restore_history(p, threads);
   reaction.resize(static_cast<std::size_t>(reaction_stride) * partner.size());
+  incoming.assign(reaction.size(), 0.0);
   index_reverse(n);
   x_build_ = p.x;
   ++builds_;

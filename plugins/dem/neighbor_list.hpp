@@ -12,9 +12,10 @@
 // partners, so one large sphere does not inflate the cells of the whole bed.
 //
 // Per pair the list keeps the tangential displacement (history, 3 doubles, with friction)
-// and the reaction slot the force loop writes (force on the partner, and n x F_t); the
-// reverse index (pairs by partner) lets each particle gather its reactions in a fixed
-// order, with no atomics and no per-thread copies.
+// and a reaction slot the force loop writes (force on the partner, and n x F_t). The slots
+// are laid out by partner, in increasing pair order per partner, so that each particle
+// gathers its reactions in a fixed order from one contiguous run of memory, with no
+// atomics, no per-thread copies and no index to follow.
 #include <Eigen/Core>
 #include <cstdint>
 #include <vector>
@@ -41,13 +42,23 @@ class NeighborList {
   int pairs() const { return static_cast<int>(partner.size()); }
   std::int64_t builds() const { return builds_; }
 
-  // Pairs of owner i are first[i] .. first[i+1]-1; pairs naming p as partner are
-  // reverse_pair[reverse_first[p] .. reverse_first[p+1]-1], in increasing pair order;
-  // owner[k] is the particle that lists pair k (the force loop runs over pairs, not owners).
+  // Pairs of owner i are first[i] .. first[i+1]-1; owner[k] is the particle that lists
+  // pair k (the force loop runs over pairs, not owners).
   std::vector<std::int32_t> first, partner, owner;
-  std::vector<std::int32_t> reverse_first, reverse_pair;
-  std::vector<double> history;   // 3 per pair
-  std::vector<double> reaction;  // reaction_stride per pair
+  std::vector<double> history;  // 3 per pair
+  // The force loop's estimated work for the particles before i (n+1 entries), counting
+  // their own forces, their listed pairs and their pairs in contact at the build: the
+  // loop gives each thread an equal share of it.
+  std::vector<double> work_before;
+  // The reactions particle p gathers are the slots reverse_first[p] .. reverse_first[p+1]-1
+  // of `incoming` (reaction_stride doubles each), one per pair naming p as partner, in
+  // increasing pair order; pair k writes slot reaction_slot[k]. The force loop writes the
+  // slots of touching pairs only, and the gather reads its slots and clears them.
+  std::vector<std::int32_t> reverse_first, reaction_slot;
+  std::vector<double> incoming;
+  // The same reactions by pair (reaction_stride per pair), for the contacts a frame shows:
+  // written for the touching pairs of the steps that record contacts, and only then.
+  std::vector<double> reaction;
   int reaction_stride = 3;
 
  private:

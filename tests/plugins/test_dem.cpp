@@ -14,6 +14,7 @@
 #include <atomic>
 #include <cstdlib>
 #include <utility>
+#include <vector>
 
 #include "diagnostics.hpp"
 #include "engine.hpp"
@@ -498,6 +499,25 @@ TEST(DemThreads, OneAndTwoThreadsGiveBitIdenticalRuns) {
   b.run(600);
   EXPECT_GT(a.neighbors().builds(), 5);
   EXPECT_GT(dem::energy(a).tangential_elastic, 0.0);
+  expect_same_state(a, b, 0.0);
+}
+
+TEST(DemThreads, ThreeThreadsSharingTheForceLoopByWorkGiveTheOneThreadRun) {
+  // The force loop gives each thread a share of the estimated work (particles, listed pairs,
+  // pairs in contact at the last build), not of the particles: three shares of a falling
+  // bed, its list rebuilt several times, must still cover every particle exactly once.
+  dem::Settings one = settings(1e-4, -Vector3d::UnitZ()), three = one;
+  one.skin = three.skin = 0.002;
+  three.threads = 3;
+  dem::Engine a = dropped_bed(300, 3.0, one, {}, 1.0), b = dropped_bed(300, 3.0, three, {}, 1.0);
+  a.run(400);
+  b.run(400);
+  const std::vector<double>& work = b.neighbors().work_before;
+  ASSERT_EQ(work.size(), static_cast<std::size_t>(b.particles().size()) + 1);
+  EXPECT_EQ(work.front(), 0.0);
+  EXPECT_TRUE(std::is_sorted(work.begin(), work.end()));
+  EXPECT_GT(work.back(), static_cast<double>(b.neighbors().pairs()));
+  EXPECT_GT(a.neighbors().builds(), 2);
   expect_same_state(a, b, 0.0);
 }
 
