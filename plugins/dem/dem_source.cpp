@@ -40,10 +40,10 @@ Model model_of(const Params& p) {
   Model m;
   m.density = species.reals("density");
   const int s = m.species();
-  for (int a = 0; a < s; ++a) m.fixed.push_back(species[static_cast<std::size_t>(a)].boolean("fixed"));
   m.pair.resize(static_cast<std::size_t>(s * s));
   m.wall.resize(static_cast<std::size_t>(kWallCount * s));
   for (int a = 0; a < s; ++a) {
+    m.fixed.push_back(species[static_cast<std::size_t>(a)].boolean("fixed"));
     for (int b = a; b < s; ++b) m.set_pair(a, b, material(pairs.at(a, b)));
     m.set_walls(a, material(p.object("walls")));
   }
@@ -241,8 +241,7 @@ Source::Work DemSource::work() const {
 std::int64_t DemSource::next_frame_step() const {
   const std::int64_t now = engine_->step();
   if (started_ && now >= end_step_) return -1;
-  const std::int64_t after = started_ ? now + 1 : std::max(now, first_saved_step_);
-  const std::int64_t due = std::max(after, first_saved_step_);
+  const std::int64_t due = std::max(started_ ? now + 1 : now, first_saved_step_);
   return std::min((due + save_every_ - 1) / save_every_ * save_every_, end_step_);
 }
 
@@ -255,11 +254,11 @@ bool DemSource::next(Frame& frame) {
   return true;
 }
 
-bool DemSource::relaxed() const {
+bool DemSource::at_rest() const {
   if (relaxed_kinetic_energy_ <= 0.0 || !engine_->walls().drive().stopped(engine_->time())) {
     return false;
   }
-  return energy(*engine_).kinetic() < relaxed_kinetic_energy_ * engine_->particles().size();
+  return kinetic_energy(engine_->particles()) < relaxed_kinetic_energy_ * engine_->particles().size();
 }
 
 void DemSource::run_to(std::int64_t step) {
@@ -282,8 +281,9 @@ void DemSource::run_to(std::int64_t step) {
       engine_->run(1);
     }
     check_health(*engine_, kinetic_energy_bound_);
-    if (end_step_ == total_steps_ && engine_->step() < step && relaxed()) {
+    if (!relaxed_ && engine_->step() < step && at_rest()) {
       // One more step, so that the last frame shows the wall contacts too.
+      relaxed_ = true;
       end_step_ = step = engine_->step() + 1;
       std::ostringstream m;
       m << "dem: relaxed at t = " << engine_->time() << ": mean kinetic energy per particle below "
@@ -323,10 +323,10 @@ void DemSource::record_timing(std::int64_t steps, double seconds, const StepProf
 }
 
 void DemSource::finish(Results& results) {
-  if (relaxed_kinetic_energy_ > 0.0 && end_step_ == total_steps_) {
+  if (relaxed_kinetic_energy_ > 0.0 && !relaxed_) {
     std::ostringstream m;
     m << "dem: relaxed_kinetic_energy: not reached within the duration (mean kinetic energy "
-      << energy(*engine_).kinetic() / engine_->particles().size() << " per particle at t = "
+      << kinetic_energy(engine_->particles()) / engine_->particles().size() << " per particle at t = "
       << engine_->time() << ")";
     log_.warn(m.str());
   }

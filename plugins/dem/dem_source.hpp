@@ -43,13 +43,14 @@ class DemSource : public Source {
   std::int64_t next_frame_step() const;
   // True once the container has stopped and the particles have come to rest (the
   // relaxed_kinetic_energy parameter).
-  bool relaxed() const;
+  bool at_rest() const;
 
   Log& log_;
   Progress& progress_;
   std::unique_ptr<Engine> engine_;
   std::int64_t total_steps_ = 0, save_every_ = 1, first_saved_step_ = 0;
   std::int64_t end_step_ = 0;  // total_steps_, or the step after relaxation was seen
+  bool relaxed_ = false;
   double relaxed_kinetic_energy_ = 0.0;
   double kinetic_energy_bound_ = 0.0;  // above it the run has blown up
   StreamedTable timing_;

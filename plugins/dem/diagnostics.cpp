@@ -16,6 +16,14 @@ double law_scale(ContactLaw law, double delta, double d) {
   return law == ContactLaw::Linear ? 1.0 : std::sqrt(delta / d);
 }
 
+std::string where(const Engine& e) {
+  std::ostringstream s;
+  s << "dem: step " << e.step() << " (t = " << e.time() << ")";
+  return s.str();
+}
+
+}  // namespace
+
 double kinetic_energy(const Particles& p) {
   double sum = 0.0;
   for (int i = 0; i < p.size(); ++i) {
@@ -24,14 +32,6 @@ double kinetic_energy(const Particles& p) {
   }
   return sum;
 }
-
-std::string where(const Engine& e) {
-  std::ostringstream s;
-  s << "dem: step " << e.step() << " (t = " << e.time() << ")";
-  return s.str();
-}
-
-}  // namespace
 
 Energy energy(const Engine& e) {
   const Particles& p = e.particles();

@@ -23,6 +23,9 @@ struct Energy {
   }
 };
 Energy energy(const Engine& engine);
+// Translational plus rotational kinetic energy: Energy::kinetic() without the O(pairs) sums
+// of the elastic terms.
+double kinetic_energy(const Particles& particles);
 
 // A run that blew up. An InputError: with validated parameters it is the time step (or
 // the initial overlaps) that the user must change, and the message says so.

@@ -152,7 +152,7 @@ void Engine::hold_fixed_species() {
   for (int i = 0; i < p_.size(); ++i) {
     if (!model_.is_fixed(p_.species[i])) continue;
     pinned_slot_[static_cast<std::size_t>(i)] = static_cast<std::int32_t>(pinned_.size());
-    pinned_.push_back({p_.tag[static_cast<std::size_t>(i)], p_.x.col(i) - offset, i});
+    pinned_.push_back({p_.x.col(i) - offset, i});
   }
 }
 

@@ -143,7 +143,6 @@ class Engine {
   std::vector<double*> wall_history_ptr_, normal_record_ptr_, tangential_record_ptr_;
   std::vector<Vectors> wall_normal_, wall_tangential_;
   struct Pinned {
-    std::int32_t tag;
     Eigen::Vector3d rest;  // position with the walls at rest
     int index;             // engine index, refreshed at every rebuild
   };

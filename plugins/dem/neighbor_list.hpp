@@ -28,7 +28,7 @@ namespace granpipe::dem {
 class NeighborList {
  public:
   // skin: the list's distance margin; reaction_stride: doubles per reaction slot (3
-  // without friction, 6 with); history: whether pairs keep a tangential displacement.
+  // without rotation, 6 with: n x F_t too); history: whether pairs keep a tangential displacement.
   NeighborList() = default;
   NeighborList(double skin, int reaction_stride, bool history);
 
