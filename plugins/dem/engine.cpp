@@ -268,40 +268,48 @@ void Engine::evaluate_forces(double dt_history, double kick_dt, double velocity_
   if (finish) kernels_.finish_step(kick_context(kick_dt));
 }
 
+namespace {
+
+// Wall-clock seconds since the previous lap (or since it was made).
+class LapTimer {
+ public:
+  double lap() {
+    const auto now = std::chrono::steady_clock::now();
+    const double seconds = std::chrono::duration<double>(now - last_).count();
+    last_ = now;
+    return seconds;
+  }
+
+ private:
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
+}  // namespace
+
 void Engine::run(std::int64_t steps) {
   if (steps <= 0) return;
-  using Clock = std::chrono::steady_clock;
-  const auto seconds = [](Clock::time_point a, Clock::time_point b) {
-    return std::chrono::duration<double>(b - a).count();
-  };
   const double dt = settings_.dt;
-  auto t0 = Clock::now();
+  LapTimer timer;
   double moved = kernels_.start_step(kick_context(dt));
   moved = std::max(moved, pin(time() + dt, time() + 0.5 * dt));
-  auto t1 = Clock::now();
-  profile_.integrate += seconds(t0, t1);
+  profile_.integrate += timer.lap();
   for (std::int64_t s = 0; s < steps; ++s) {
     ++step_;
     if (moved > list_.trigger_squared()) {
       rebuild();
       ++profile_.rebuilds;
-      t0 = Clock::now();
-      profile_.neighbour += seconds(t1, t0);
-      t1 = t0;
+      profile_.neighbour += timer.lap();
     }
-    const bool last = s + 1 == steps;
     evaluate_forces(dt, dt, time() - 0.5 * dt, false);
-    t0 = Clock::now();
-    profile_.forces += seconds(t1, t0);
-    if (last) {
+    profile_.forces += timer.lap();
+    if (s + 1 == steps) {
       kernels_.finish_step(kick_context(dt));
       pin(time(), time());
     } else {
       moved = kernels_.finish_and_start(kick_context(dt));
       moved = std::max(moved, pin(time() + dt, time() + 0.5 * dt));
     }
-    t1 = Clock::now();
-    profile_.integrate += seconds(t0, t1);
+    profile_.integrate += timer.lap();
   }
 }
 
