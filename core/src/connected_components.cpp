@@ -64,6 +64,12 @@ std::vector<std::int64_t> labels_by_size(const std::vector<ComponentSize>& found
 
 }  // namespace
 
+std::int64_t ConnectedComponents::edges_of_others() const {
+  std::int64_t edges = 0;
+  for (std::size_t k = 1; k < size.size(); ++k) edges += size[k].edges;
+  return edges;
+}
+
 ConnectedComponents connected_components(Eigen::Index n, std::span<const ParticlePair> edges) {
   DisjointSets sets(n);
   std::vector<bool> linked(static_cast<std::size_t>(n), false);

@@ -1,5 +1,8 @@
 #include "force_network_analyzer.hpp"
 
+#include <cmath>
+#include <string>
+
 #include "frame_report.hpp"
 
 namespace granpipe::force_network {

@@ -37,17 +37,12 @@ std::vector<std::string> per_frame_columns() {
 std::vector<double> per_frame_row(long index, double time, Eigen::Index particles,
                                   const FrameAnalysis& a) {
   const auto d = [](auto x) { return static_cast<double>(x); };
-  const std::vector<ComponentSize>& sizes = a.networks.size;
-  ComponentSize largest;
-  if (!sizes.empty()) largest = sizes.front();
-  const long other_networks = sizes.empty() ? 0 : static_cast<long>(sizes.size()) - 1;
-  std::int64_t other_contacts = 0;
-  for (std::size_t k = 1; k < sizes.size(); ++k) other_contacts += sizes[k].edges;
+  const ComponentSize largest = a.networks.largest();
   const double z_largest = largest.particles > 0 ? 2.0 * d(largest.edges) / d(largest.particles) : 0.0;
   const double z_mean = particles > 0 ? 2.0 * d(a.forces.edges.size()) / d(particles) : 0.0;
   const PdfFit& fit = a.fit;
-  return {d(index), time, d(sizes.size()), d(largest.particles), d(largest.edges),
-          d(other_networks), d(other_contacts), z_largest, z_mean, d(a.forces.edges.size()),
+  return {d(index), time, d(a.networks.size.size()), d(largest.particles), d(largest.edges),
+          d(a.networks.others()), d(a.networks.edges_of_others()), z_largest, z_mean, d(a.forces.edges.size()),
           d(a.forces.samples.size()), a.forces.mean, d(a.strong.contacts), d(a.strong.particles),
           d(a.strong.particles_in_largest), d(a.strong.largest.particles),
           d(a.strong.largest.edges), d(a.forces.loaded), d(static_cast<int>(fit.status)),

@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace granpipe::force_network {
 
@@ -85,15 +87,14 @@ void add_pass_fits(const PaperFrame& p, Results& results) {
 
 // The PDFs of the subsets beside the full network's, on the same bins.
 void add_pass_pdfs(const PaperFrame& p, Results& results) {
-  Table t({"f", "density_all", "error_all"},
+  std::vector<std::string> columns{"f", "density_all", "error_all"};
+  for (const PassSubset& s : p.passes) {
+    columns.push_back("density_pass_" + std::to_string(s.pass));
+    columns.push_back("error_pass_" + std::to_string(s.pass));
+  }
+  Table t(std::move(columns),
           "PDF of f = |F_n|/<F_n> (the full network's mean) of the contacts of passes 1..k, "
           "beside the full network's, on its bins");
-  for (const PassSubset& s : p.passes) {
-    t.columns.push_back("density_pass_" + std::to_string(s.pass));
-    t.columns.push_back("error_pass_" + std::to_string(s.pass));
-  }
-  t.data.resize(t.columns.size());
-  t.units.resize(t.columns.size());
   for (std::size_t k = 0; k < p.pdf.bins(); ++k) {
     std::vector<double> row{p.pdf.centre(k), p.pdf.density(k), p.pdf.error(k)};
     for (const PassSubset& s : p.passes) {
@@ -111,14 +112,13 @@ void add_pass_pdfs(const PaperFrame& p, Results& results) {
 
 // F(r) of the subsets beside the full network's.
 void add_pass_correlations(const PaperFrame& p, Results& results) {
-  Table t({"r", "F_all"}, "F(r) of Eq. (12) of the contacts of passes 1..k (forces scaled by "
-                          "the full network's mean), beside the full network's");
+  std::vector<std::string> columns{"r", "F_all"};
   for (const PassSubset& s : p.passes) {
-    t.columns.push_back("F_pass_" + std::to_string(s.pass));
-    t.columns.push_back("pairs_pass_" + std::to_string(s.pass));
+    columns.push_back("F_pass_" + std::to_string(s.pass));
+    columns.push_back("pairs_pass_" + std::to_string(s.pass));
   }
-  t.data.resize(t.columns.size());
-  t.units.assign(t.columns.size(), "");
+  Table t(std::move(columns), "F(r) of Eq. (12) of the contacts of passes 1..k (forces scaled by "
+                              "the full network's mean), beside the full network's");
   t.units[0] = "length";
   const ForceCorrelation& c = p.correlation;
   for (std::size_t k = 0; k < c.bins(); ++k) {

@@ -19,8 +19,7 @@ StrongNetwork strong_network(const Frame& frame, const ForceContacts& forces,
   out.contacts = static_cast<long>(rows.size());
   out.particles = touched.count();
   out.particles_in_largest = (touched && networks.label.array() == 0).count();
-  const Networks strong = find_networks(frame, rows);
-  if (!strong.size.empty()) out.largest = strong.size.front();
+  out.largest = find_networks(frame, rows).largest();
   return out;
 }
 

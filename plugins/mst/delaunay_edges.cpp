@@ -6,7 +6,6 @@
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
 
 #include <algorithm>
-#include <cmath>
 #include <utility>
 
 #include "candidate_edges.hpp"

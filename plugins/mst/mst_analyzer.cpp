@@ -61,7 +61,7 @@ MstAnalyzer::MstAnalyzer(const PluginContext& ctx)
                .elongation = ctx.params.real("elongation"),
                .passes = static_cast<int>(ctx.params.integer("passes")),
                .contacts = {.zero_force_contacts = ctx.params.boolean("zero_force_contacts"),
-                            .tolerance = ctx.params.real("contact_tolerance")}},
+                            .tolerance = ctx.params.real(kContactToleranceName)}},
       per_frame_(ctx.stream_table(
           "per_frame",
           [] {

@@ -37,7 +37,6 @@ Multipass::Pass Multipass::next() {
   for (std::uint32_t v = 0; v < vertices_; ++v) sets.make_set(v);
 
   Pass pass;
-  pass.number = passes_;
   // A forest never has more than vertices - 1 edges; after pass 1 its size is known, and
   // the scan stops once it is complete.
   const std::size_t target = passes_ == 1 ? std::size_t{vertices_ > 0 ? vertices_ - 1 : 0} : forest_edges_;

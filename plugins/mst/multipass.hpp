@@ -21,7 +21,6 @@ class Multipass {
   Multipass(std::uint32_t vertices, std::vector<Edge> edges, double elongation);
 
   struct Pass {
-    int number = 0;            // 1 for the first
     double weight = 0.0;       // of the forest, with the lengthened weights
     std::size_t edges = 0;     // in the forest: vertices minus trees
     std::vector<std::pair<std::uint32_t, std::uint32_t>> new_edges;  // selected first now

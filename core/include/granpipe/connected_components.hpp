@@ -24,6 +24,12 @@ struct ComponentSize {
 struct ConnectedComponents {
   IndexArray label;                 // per particle: its component's label, -1 for none
   std::vector<ComponentSize> size;  // by label: size.front() is the largest
+
+  // The largest component's size; zero when there is none.
+  ComponentSize largest() const { return size.empty() ? ComponentSize{} : size.front(); }
+  // How many components besides the largest, and their edges summed.
+  std::int64_t others() const { return size.empty() ? 0 : static_cast<std::int64_t>(size.size()) - 1; }
+  std::int64_t edges_of_others() const;
 };
 
 // The components of particles 0..n-1 joined by `edges` (each joins two different
