@@ -11,16 +11,10 @@ import h5py
 out = sys.argv[1]
 failures = []
 
-
-def column(group, table, name):
-    return group[table][name][()]
-
-
 with h5py.File(f"{out}/results.h5", "r") as f:
-    mst = f["mst"]
-    passes = list(column(mst, "table_ii", "pass"))
-    rows = {int(p): k for k, p in enumerate(passes)}
-    get = lambda name, p: float(column(mst, "table_ii", name)[rows[p]])
+    table_ii = f["mst"]["table_ii"]
+    rows = {int(p): k for k, p in enumerate(table_ii["pass"][()])}
+    get = lambda name, p: float(table_ii[name][rows[p]])
     n_p = get("network_largest_particles", 1)
     if get("tcp_largest_particles", 1) != n_p:
         failures.append(f"pass 1: largest TCP has {get('tcp_largest_particles', 1)} particles, "
