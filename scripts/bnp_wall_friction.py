@@ -13,22 +13,22 @@ the once-per-cycle curves as CSV and as a figure."""
 import argparse
 import json
 import os
-import sys
 
 import h5py
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from charts import line_chart  # noqa: E402
-from input_error import read_pipeline, refuse  # noqa: E402
+from charts import line_chart
+from input_error import read_pipeline, refuse
 
 SWEPT = "source.params.walls.mu"
+COMPRESSION_PHASE = 0.28
 
 
 def read_curves(path):
     """{mu: [(cycles, intruder height)]} of every point of the sweep in `path`."""
     with h5py.File(path, "r", swmr=True) as f:
-        pipeline = json.loads(f.attrs["pipeline"]) if "pipeline" in f.attrs else None
-        if pipeline is None:
+        if "pipeline" in f.attrs:
+            pipeline = json.loads(f.attrs["pipeline"])
+        else:
             pipeline = read_pipeline(os.path.dirname(path))
         values = pipeline["sweep"]["parameters"][SWEPT]
         frequency = pipeline["source"]["params"]["drive"]["frequency"]
@@ -38,9 +38,6 @@ def read_curves(path):
             cycles = table["time"][()] * frequency
             curves[mu] = list(zip(cycles, table["intruder_height"][()]))
     return curves
-
-
-COMPRESSION_PHASE = 0.28
 
 
 def height_at(points, cycle):

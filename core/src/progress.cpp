@@ -67,21 +67,21 @@ void Progress::print(bool final_line) {
   const double rate = elapsed > 0 ? done / elapsed : 0.0;
   const double fraction = total_ > 0 ? std::min(1.0, done / total_) : 0.0;
   const double eta = rate > 0 ? (total_ - done) / rate : NAN;
+  const std::string status = status_.empty() ? "" : ", " + status_;
   if (terminal_) {
     constexpr int width = 30;
     const int filled = static_cast<int>(fraction * width);
     std::string bar(filled, '#');
     bar.resize(width, '.');
-    std::fprintf(stderr, "\r%s [%s] %5.1f%% %.0f/%.0f %s, %.3g %s/s, ETA %s%s%s   ",
+    std::fprintf(stderr, "\r%s [%s] %5.1f%% %.0f/%.0f %s, %.3g %s/s, ETA %s%s   ",
                  label_.c_str(), bar.c_str(), 100 * fraction, done, total_, unit_.c_str(), rate,
-                 unit_.c_str(), format_duration(eta).c_str(), status_.empty() ? "" : ", ",
-                 status_.c_str());
+                 unit_.c_str(), format_duration(eta).c_str(), status.c_str());
     if (final_line) std::fputc('\n', stderr);
   } else {
-    std::fprintf(stderr, "%s: %.0f/%.0f %s (%.1f%%), %.3g %s/s, elapsed %s, ETA %s%s%s\n",
+    std::fprintf(stderr, "%s: %.0f/%.0f %s (%.1f%%), %.3g %s/s, elapsed %s, ETA %s%s\n",
                  label_.c_str(), done, total_, unit_.c_str(), 100 * fraction, rate, unit_.c_str(),
                  format_duration(elapsed).c_str(), final_line ? "done" : format_duration(eta).c_str(),
-                 status_.empty() ? "" : ", ", status_.c_str());
+                 status.c_str());
   }
   std::fflush(stderr);
 }

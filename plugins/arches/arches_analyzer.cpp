@@ -51,7 +51,7 @@ ArchesAnalyzer::ArchesAnalyzer(const PluginContext& ctx)
     : log_(ctx.log),
       output_dir_(ctx.output_dir),
       file_stem_(ctx.name.empty() ? "arches" : ctx.name),
-      tolerance_(ctx.params.real("contact_tolerance")),
+      tolerance_(ctx.params.real(kContactToleranceName)),
       span_bin_(ctx.params.real("span_bin")),
       svg_frames_(static_cast<long>(ctx.params.integer("svg_frames"))),
       span_all_(span_bin_),

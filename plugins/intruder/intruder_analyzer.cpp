@@ -13,11 +13,6 @@ double bed_mean(const Eigen::ArrayXd& weight, const Eigen::ArrayXd& value, Eigen
   return ((weight * value).sum() - weight[skip] * value[skip]) / (weight.sum() - weight[skip]);
 }
 
-long count_base_contacts(const Frame& f) {
-  if (!f.contacts) return 0;
-  return static_cast<long>((f.contact_j() == partner::wall(Wall::ZLow)).count());
-}
-
 }  // namespace
 
 BedState measure_bed(const Frame& f, const std::string& where) {
@@ -38,10 +33,11 @@ BedState measure_bed(const Frame& f, const std::string& where) {
     s.intruder_velocity = v(big, 2);
     s.bed_velocity = bed_mean(weight, v.col(2), big);
   }
-  Eigen::Index pairs = 0;
-  if (f.contacts) pairs = (f.contact_j() >= 0).count();
-  s.coordination = 2.0 * static_cast<double>(pairs) / static_cast<double>(n);
-  s.base_contacts = count_base_contacts(f);
+  if (f.contacts) {  // without a contact table: no contacts, the expansion stage
+    const Eigen::Index pairs = (f.contact_j() >= 0).count();
+    s.coordination = 2.0 * static_cast<double>(pairs) / static_cast<double>(n);
+    s.base_contacts = static_cast<long>((f.contact_j() == partner::wall(Wall::ZLow)).count());
+  }
   s.stage = s.base_contacts > 0 ? Stage::Compression : Stage::Expansion;
   return s;
 }

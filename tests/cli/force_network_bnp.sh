@@ -33,6 +33,7 @@ done
 if grep -qi nan "$out/force_network.per_frame.csv" "$out/force_network.pdf.csv"; then
   fail "NaN in the per-frame table or the PDF"
 fi
-"$exe" inspect "$out/frames.h5" | grep -q '^  strong ' || fail "frames.h5 has no strong contact column"
-"$exe" inspect "$out/frames.h5" | grep -q '^  network ' || fail "frames.h5 has no network column"
+columns=$("$exe" inspect "$out/frames.h5")
+grep -q '^  strong ' <<<"$columns" || fail "frames.h5 has no strong contact column"
+grep -q '^  network ' <<<"$columns" || fail "frames.h5 has no network column"
 echo "force_network ran on the settled BNP packing after one DEM step"

@@ -1,6 +1,8 @@
 // The Brazil-nut observables on hand-made frames whose answers are known.
 #include <gtest/gtest.h>
 
+#include <vector>
+
 #include "intruder_analyzer.hpp"
 #include "plugin_harness.hpp"
 
@@ -23,6 +25,17 @@ Frame bed() {
   return f;
 }
 
+// The intruder analyzer's results after it consumed `frames` in order.
+Results analyze(const std::vector<Frame>& frames) {
+  const auto ctx = test::make_context("intruder");
+  intruder::IntruderAnalyzer analyzer(*ctx);
+  FrameCache cache;
+  for (const Frame& f : frames) analyzer.consume(f, cache);
+  Results r;
+  analyzer.finish(r);
+  return r;
+}
+
 }  // namespace
 
 TEST(Intruder, HeightsAreAboveTheMovingBaseAndCoordinationCountsPairsOnly) {
@@ -33,16 +46,10 @@ TEST(Intruder, HeightsAreAboveTheMovingBaseAndCoordinationCountsPairsOnly) {
 }
 
 TEST(Intruder, TheAnalyzerStreamsOneRowPerFrame) {
-  const auto ctx = test::make_context("intruder");
-  intruder::IntruderAnalyzer analyzer(*ctx);
-  FrameCache cache;
-  Frame f = bed();
-  analyzer.consume(f, cache);
-  f.time = 1.5;
-  f.position()(1, 2) += 1.0;
-  analyzer.consume(f, cache);
-  Results r;
-  analyzer.finish(r);
+  Frame later = bed();
+  later.time = 1.5;
+  later.position()(1, 2) += 1.0;
+  const Results r = analyze({bed(), later});
   const Table& t = r.tables().at("per_frame");
   ASSERT_EQ(t.rows(), 2u);
   EXPECT_EQ(t.column("intruder_height")[1], 5.0);
@@ -76,22 +83,15 @@ TEST(Intruder, VelocitiesAreTheIntrudersAndTheBedsCentreOfMass) {
 }
 
 TEST(Intruder, LiftOffAndImpactAreTheMidpointsOfTheFramesWhereTheBaseContactChanges) {
-  const auto ctx = test::make_context("intruder");
-  intruder::IntruderAnalyzer analyzer(*ctx);
   const Property cycles{"cycles", Scope::Frame, ValueType::Real, 1, "1", "drive periods"};
-  FrameCache cache;
-  Frame on_base = bed();
   Frame lifted = bed();
   lifted.contact_j()[1] = 1;  // the base contact becomes a pair contact: nothing on the base
-  const Frame* sequence[] = {&on_base, &on_base, &lifted, &lifted, &on_base};
-  for (int k = 0; k < 5; ++k) {
-    Frame f = *sequence[k];
-    f.time = k;
-    f.set_observable(cycles, 0.1 * k);
-    analyzer.consume(f, cache);
+  std::vector<Frame> frames = {bed(), bed(), lifted, lifted, bed()};
+  for (std::size_t k = 0; k < frames.size(); ++k) {
+    frames[k].time = static_cast<double>(k);
+    frames[k].set_observable(cycles, 0.1 * static_cast<double>(k));
   }
-  Results r;
-  analyzer.finish(r);
+  const Results r = analyze(frames);
   const Table& t = r.tables().at("transitions");
   ASSERT_EQ(t.rows(), 2u);
   EXPECT_EQ(t.column("time")[0], 1.5);
