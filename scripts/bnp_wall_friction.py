@@ -73,7 +73,8 @@ def main():
         print(f"| {c} | " + " | ".join(f"{points[c][1]:.1f}" for points in cycles.values()) + " |")
     if args.csv:
         with open(args.csv, "w") as out:
-            out.write(f"# {path}: intruder height above the base at phase {COMPRESSION_PHASE} of each cycle\n")
+            # Relative to where the script runs, so no machine's absolute path lands in a kept table.
+            out.write(f"# {os.path.relpath(path)}: intruder height above the base at phase {COMPRESSION_PHASE} of each cycle\n")
             out.write("mu_wall,cycle,intruder_height\n")
             for mu, points in cycles.items():
                 for c, h in points:
