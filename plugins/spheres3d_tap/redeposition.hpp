@@ -1,0 +1,50 @@
+#pragma once
+// A tap of the 3D model: a homothetic dilation z -> z (1 + epsilon) of the centres, then
+// redeposition by Monte Carlo: a random sphere tries a move drawn by TrialMove, rejected
+// when it would overlap a sphere, the bottom or a wall. Every `check_moves` trials the
+// mean centre height <Z> is compared with the previous check; the redeposition stops
+// when its relative change falls below eta (or at max_checks, which is reported).
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "granpipe/random.hpp"
+#include "sphere_grid.hpp"
+#include "tap_box.hpp"
+#include "trial_move.hpp"
+
+namespace granpipe::spheres3d_tap {
+
+struct RedepositionOptions {
+  TrialMove move;
+  double eta = 1e-6;
+  std::int64_t check_moves = 0;  // 0: one sweep, N trials
+  std::int64_t max_checks = 100000;
+};
+
+struct TapStats {
+  std::int64_t trials = 0, accepted = 0;
+  bool converged = true;  // false when max_checks ended it
+};
+
+class Redeposition {
+ public:
+  Redeposition(const TapBox& box, RedepositionOptions options);
+
+  // Dilates and redeposits `centres` in place.
+  TapStats tap(std::vector<Eigen::Vector3d>& centres, double epsilon, RandomStream& rng);
+  // Trials only, no dilation and no stopping rule: n trial moves.
+  TapStats shake(std::vector<Eigen::Vector3d>& centres, std::int64_t n, RandomStream& rng);
+
+ private:
+  void rebuild(const std::vector<Eigen::Vector3d>& centres);
+  // One trial move of a random sphere; true when accepted. `height_sum` follows.
+  bool trial(std::vector<Eigen::Vector3d>& centres, RandomStream& rng, double& height_sum);
+  bool fits(const std::vector<Eigen::Vector3d>& centres, std::int32_t i, const Eigen::Vector3d& x) const;
+
+  TapBox box_;
+  RedepositionOptions options_;
+  SphereGrid grid_;
+};
+
+}  // namespace granpipe::spheres3d_tap

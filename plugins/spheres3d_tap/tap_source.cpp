@@ -1,0 +1,169 @@
+#include "tap_source.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+#include "granpipe/container.hpp"
+
+namespace granpipe::spheres3d_tap {
+
+namespace {
+
+Property tap_property() { return {"tap", Scope::Frame, ValueType::Integer, 1, "", "tap number (0: the deposition)"}; }
+Property epsilon_property() {
+  return {"epsilon", Scope::Frame, ValueType::Real, 1, "", "dilation of the tap, z -> z (1 + epsilon)"};
+}
+Property mean_height_property() {
+  return {"mean_height", Scope::Frame, ValueType::Real, 1, "length", "<Z>, the mean centre height"};
+}
+Property trials_property() {
+  return {"mc_trials", Scope::Frame, ValueType::Integer, 1, "", "Monte Carlo trial moves of the tap"};
+}
+Property acceptance_property() {
+  return {"mc_acceptance", Scope::Frame, ValueType::Real, 1, "", "accepted fraction of the tap's trial moves"};
+}
+
+RedepositionOptions redeposition_options(const Params& p) {
+  RedepositionOptions o;
+  o.move.d_max = p.real("d_max") * p.real("radius");
+  o.move.theta0 = p.real("theta0");
+  o.eta = p.real("eta");
+  o.check_moves = p.integer("check_moves");
+  o.max_checks = p.integer("max_checks");
+  return o;
+}
+
+TapBox tap_box(const PluginContext& ctx) {
+  const Params& p = ctx.params;
+  const TapBox box{p.real("side") * p.real("radius"), p.real("radius"), p.choice<Sides>("sides")};
+  if (box.side < 2.0 * box.radius) {
+    std::ostringstream s;
+    s << ctx.param("side") << ": expected a box at least one diameter (2 R) wide, got " << p.real("side")
+      << " R";
+    throw InputError(s.str());
+  }
+  return box;
+}
+
+double mean_height(const std::vector<Eigen::Vector3d>& centres) {
+  double sum = 0.0;
+  for (const auto& c : centres) sum += c.z();
+  return centres.empty() ? std::nan("") : sum / static_cast<double>(centres.size());
+}
+
+Seeds replica_seeds(const PluginContext& ctx) {
+  return ctx.seeds.derive("replica", static_cast<std::uint64_t>(ctx.params.integer("replica")));
+}
+
+}  // namespace
+
+Schema schema() {
+  Schema s;
+  s.integer("N", 4096, "number of spheres (the paper's 4096)").range(1, 1000000);
+  s.real("radius", 1.0, "sphere radius R").range(1e-50, 1e50).unit("length");
+  s.real("side", 32.0, "side L of the square box, in units of R (the paper's 32)").range(0.0, 1e4);
+  s.choice<Sides>("sides", Sides::Periodic,
+                  "lateral sides: periodic (P.B.C.) or fixed walls (F.B.C.); the paper's initial "
+                  "packing fraction 58.4 % is the periodic deposition's");
+  s.real("epsilon", 0.05, "tap dilation: centre heights z -> z (1 + epsilon)").range(0.0, 1.0);
+  s.integer("taps", 100, "taps after the deposition").min(0);
+  s.integer("save_every", 10, "save every k-th tap (and the deposition, tap 0)").min(1);
+  s.boolean("log_frames", true, "also save taps spaced evenly in log(tap), ten per decade");
+  s.real("d_max", 0.2, "largest Monte Carlo displacement, in units of R (the paper's R/5)").range(1e-6, 2.0);
+  s.real("theta0", std::numbers::pi / 4.0,
+         "width of the polar-angle density exp(-(theta/theta0)^2) of a trial move, theta from "
+         "straight down, a density in theta (the paper's pi/4)")
+      .range(1e-3, 100.0)
+      .unit("rad");
+  s.real("eta", 1e-6,
+         "a tap's redeposition stops when <Z> changes by less than this fraction between two "
+         "checks")
+      .range(0.0, 1.0);
+  s.integer("check_moves", 0, "trial moves between two checks of <Z> (0: N, one sweep)").min(0);
+  s.integer("max_checks", 100000,
+            "a tap's redeposition stops after this many checks even if <Z> still moves (such taps "
+            "are counted in unconverged_taps)")
+      .min(1);
+  s.integer("replica", 0, "independent copy of the run (sweep it to average over realizations)").min(0);
+  return s;
+}
+
+TapSource::TapSource(const PluginContext& ctx)
+    : progress_(ctx.progress),
+      box_(tap_box(ctx)),
+      deposition_rng_(replica_seeds(ctx).stream("deposition")),
+      tap_rng_(replica_seeds(ctx).stream("tap")),
+      redeposition_(box_, redeposition_options(ctx.params)),
+      schedule_{ctx.params.integer("save_every"), ctx.params.boolean("log_frames")},
+      n_(ctx.params.integer("N")),
+      taps_(ctx.params.integer("taps")),
+      epsilon_(ctx.params.real("epsilon")),
+      per_tap_(ctx.stream_table("per_tap", Table({"tap", "epsilon", "mean_height", "mc_trials", "mc_acceptance"},
+                                                 "every tap: <Z> after redeposition, trial moves, "
+                                                 "accepted fraction"))) {}
+
+void TapSource::to_frame(Frame& frame, const TapStats& stats) const {
+  const auto n = static_cast<Eigen::Index>(centres_.size());
+  frame.resize(n, 3);
+  double top = 0.0;
+  for (Eigen::Index k = 0; k < n; ++k) {
+    frame.position().row(k) = centres_[static_cast<std::size_t>(k)].transpose();
+    top = std::max(top, centres_[static_cast<std::size_t>(k)].z() + box_.radius);
+  }
+  frame.radius().setConstant(box_.radius);
+  frame.container = Container::open_top_box(3, Eigen::Vector3d::Zero(), Eigen::Vector3d(box_.side, box_.side, top));
+  if (box_.periodic()) {
+    for (int a = 0; a < 2; ++a) frame.container.boundary[a] = {Boundary::Periodic, Boundary::Periodic};
+  }
+  frame.step = tap_;
+  frame.time = static_cast<double>(tap_);  // the scene's clock counts taps
+  frame.set_observable(tap_property(), tap_);
+  frame.set_observable(epsilon_property(), tap_ == 0 ? 0.0 : epsilon_);
+  frame.set_observable(mean_height_property(), mean_height(centres_));
+  frame.set_observable(trials_property(), stats.trials);
+  frame.set_observable(acceptance_property(),
+                       stats.trials ? static_cast<double>(stats.accepted) / static_cast<double>(stats.trials)
+                                    : std::nan(""));
+}
+
+void TapSource::record(const TapStats& stats) {
+  const double acceptance =
+      stats.trials ? static_cast<double>(stats.accepted) / static_cast<double>(stats.trials) : std::nan("");
+  per_tap_.add_row({static_cast<double>(tap_), tap_ == 0 ? 0.0 : epsilon_, mean_height(centres_),
+                    static_cast<double>(stats.trials), acceptance});
+  unconverged_ += !stats.converged;
+}
+
+bool TapSource::next(Frame& frame) {
+  while (tap_ < taps_) {
+    const auto t0 = std::chrono::steady_clock::now();
+    TapStats stats;
+    if (++tap_ == 0) {
+      Deposition deposition(box_);
+      deposition.drop_random(static_cast<int>(n_), deposition_rng_);
+      centres_ = deposition.centres();
+    } else {
+      stats = redeposition_.tap(centres_, epsilon_, tap_rng_);
+      progress_.advance(1.0);
+    }
+    seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    record(stats);
+    if (schedule_.saves(tap_)) {
+      to_frame(frame, stats);
+      return true;
+    }
+  }
+  return false;
+}
+
+void TapSource::finish(Results& results) {
+  results.add_table("per_tap", per_tap_.table());
+  results.add_scalar("unconverged_taps", static_cast<double>(unconverged_), std::nan(""), "",
+                     "taps whose redeposition reached max_checks before <Z> settled to eta");
+  results.add_scalar("seconds", seconds_, std::nan(""), "s", "wall time of deposition and taps");
+}
+
+}  // namespace granpipe::spheres3d_tap

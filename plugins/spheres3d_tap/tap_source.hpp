@@ -1,0 +1,43 @@
+#pragma once
+// `spheres3d_tap`: tapped hard spheres in a box with a flat bottom and walls or periodic
+// sides (Pugnaloni, Valluzzi & Valluzzi, "Numerical model for granular compaction under
+// vertical tapping"). The spheres are deposited sequentially (steepest descent to three
+// supports); each tap dilates the packing, z -> z (1 + epsilon), and redeposits it by
+// gravity-biased Monte Carlo until the mean height settles.
+#include <cstdint>
+
+#include "deposit.hpp"
+#include "granpipe/plugin.hpp"
+#include "redeposition.hpp"
+#include "tap_schedule.hpp"
+
+namespace granpipe::spheres3d_tap {
+
+Schema schema();
+
+class TapSource : public Source {
+ public:
+  explicit TapSource(const PluginContext& ctx);
+
+  FrameContent content() const override { return {.dim = 3, .columns = {}}; }
+  bool next(Frame& frame) override;
+  Work work() const override { return {static_cast<double>(taps_), "taps", true}; }
+  void finish(Results& results) override;
+
+ private:
+  void to_frame(Frame& frame, const TapStats& stats) const;
+  void record(const TapStats& stats);
+
+  Progress& progress_;
+  TapBox box_;
+  RandomStream deposition_rng_, tap_rng_;
+  Redeposition redeposition_;
+  SaveSchedule schedule_;
+  std::int64_t n_ = 0, taps_ = 0, tap_ = -1, unconverged_ = 0;
+  double epsilon_ = 0.0;
+  std::vector<Eigen::Vector3d> centres_;
+  StreamedTable per_tap_;
+  double seconds_ = 0.0;
+};
+
+}  // namespace granpipe::spheres3d_tap

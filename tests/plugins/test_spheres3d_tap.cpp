@@ -1,0 +1,295 @@
+// The 3D tapping model's sequential deposition against exact geometry: stops at contact,
+// rests on three supports or the bottom, no overlap, and the known packing fraction.
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "deposit.hpp"
+#include "redeposition.hpp"
+#include "tap_schedule.hpp"
+#include "trial_move.hpp"
+#include "granpipe/container.hpp"
+#include "granpipe/frame.hpp"
+
+namespace granpipe::spheres3d_tap {
+namespace {
+
+constexpr double kR = 1.0;
+
+TapBox box(double side, Sides sides) { return TapBox{side, kR, sides}; }
+
+// Minimum-image separation b - a on the box.
+Eigen::Vector3d separation(const TapBox& b, const Eigen::Vector3d& from, const Eigen::Vector3d& to) {
+  Eigen::Vector3d d = to - from;
+  if (b.periodic())
+    for (int a = 0; a < 2; ++a) d[a] -= b.side * std::round(d[a] / b.side);
+  return d;
+}
+
+TEST(Deposition, ASphereDroppedAloneRestsOnTheBottom) {
+  Deposition deposition(box(10.0, Sides::Walls));
+  RandomStream rng(1);
+  deposition.drop(4.0, 6.0, rng);
+  EXPECT_EQ(deposition.centres()[0], Eigen::Vector3d(4.0, 6.0, kR));
+  EXPECT_EQ(deposition.supports()[0][0], partner::wall(Wall::ZLow));
+}
+
+TEST(Deposition, ASphereDroppedOnTopOfAnotherRollsOffOverItsEquatorToTheBottom) {
+  Deposition deposition(box(20.0, Sides::Walls));
+  RandomStream rng(7);
+  deposition.drop(10.0, 10.0, rng);
+  deposition.drop(10.0, 10.0, rng);  // exactly above: unstable balance, rolls off
+  const Eigen::Vector3d& a = deposition.centres()[0];
+  const Eigen::Vector3d& b = deposition.centres()[1];
+  EXPECT_NEAR(b.z(), kR, 1e-12);
+  EXPECT_NEAR((b - a).norm(), 2.0 * kR, 1e-12);  // left at the equator, fell straight down
+}
+
+TEST(Deposition, ASphereOnTwoTouchingSpheresRollsDownTheirGrooveToTheBottom) {
+  Deposition deposition(box(20.0, Sides::Walls));
+  RandomStream rng(3);
+  deposition.drop(9.0, 10.0, rng);
+  deposition.drop(11.0, 10.0, rng);
+  deposition.drop(10.2, 10.3, rng);
+  const auto& c = deposition.centres();
+  EXPECT_NEAR(c[2].z(), kR, 1e-12);
+  EXPECT_NEAR((c[2] - c[0]).norm(), 2.0 * kR, 1e-12);
+  EXPECT_NEAR((c[2] - c[1]).norm(), 2.0 * kR, 1e-12);
+  EXPECT_GT(c[2].y(), 10.0);  // on the side it was dropped
+}
+
+TEST(Deposition, ASphereOverATriangleOfThreeRestsAtTheTetrahedronApex) {
+  Deposition deposition(box(20.0, Sides::Walls));
+  RandomStream rng(5);
+  const double h = std::sqrt(3.0) * kR;  // height of the triangle of side 2R
+  deposition.drop(9.0, 9.0, rng);
+  deposition.drop(11.0, 9.0, rng);
+  deposition.drop(10.0, 9.0 + h, rng);
+  deposition.drop(10.05, 9.0 + h / 3.0 - 0.1, rng);
+  const Eigen::Vector3d apex(10.0, 9.0 + h / 3.0, kR + 2.0 * kR * std::sqrt(2.0 / 3.0));
+  EXPECT_NEAR((deposition.centres()[3] - apex).norm(), 0.0, 1e-12);
+  for (std::int64_t s : deposition.supports()[3]) EXPECT_TRUE(s >= 0 && s < 3);
+}
+
+TEST(Deposition, ASphereFallingBesideAWallSlidesDownItAndRollsOffAwayFromIt) {
+  // Two spheres along the wall, touching it; the third drops in the wall's plane onto
+  // their groove and would balance there on two: it rolls off away from the wall.
+  Deposition deposition(box(20.0, Sides::Walls));
+  RandomStream rng(11);
+  deposition.drop(kR, 9.0, rng);
+  deposition.drop(kR, 11.0, rng);
+  deposition.drop(kR, 10.0, rng);
+  const auto& c = deposition.centres();
+  EXPECT_NEAR(c[2].z(), kR, 1e-12);
+  EXPECT_GT(c[2].x(), kR + 1.0);
+}
+
+// Forces on the supports of a sphere at rest, found independently of the deposition:
+// weight balanced by contact forces along the supports' normals, all pushing.
+bool held_by(const TapBox& b, const std::vector<Eigen::Vector3d>& c, std::size_t i,
+             const Supports& s) {
+  Eigen::Matrix3d normals;
+  for (int k = 0; k < 3; ++k) {
+    if (partner::is_particle(s[k])) {
+      const Eigen::Vector3d d = separation(b, c[static_cast<std::size_t>(s[k])], c[i]);
+      EXPECT_NEAR(d.norm(), 2.0 * kR, 1e-9 * kR) << "sphere " << i << " support " << s[k];
+      normals.col(k) = d.normalized();
+    } else {
+      const Wall w = partner::wall_of(s[k]);
+      const int axis = w == Wall::XLow || w == Wall::XHigh ? 0 : 1;
+      const bool low = w == Wall::XLow || w == Wall::YLow;
+      EXPECT_NEAR(c[i][axis], low ? kR : b.side - kR, 1e-9 * kR) << "sphere " << i;
+      normals.col(k) = (low ? 1.0 : -1.0) * Eigen::Vector3d::Unit(axis);
+    }
+  }
+  const Eigen::Vector3d force = normals.fullPivLu().solve(Eigen::Vector3d::UnitZ());
+  return (normals * force - Eigen::Vector3d::UnitZ()).norm() < 1e-9 && (force.array() > -1e-12).all();
+}
+
+void expect_deposited_packing(const TapBox& b, int n, std::uint64_t seed) {
+  Deposition deposition(b);
+  RandomStream rng(seed);
+  deposition.drop_random(n, rng);
+  const auto& c = deposition.centres();
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    for (std::size_t j = 0; j < i; ++j)
+      ASSERT_GE(separation(b, c[i], c[j]).norm(), 2.0 * kR * (1.0 - 1e-9)) << i << " " << j;
+    const Supports& s = deposition.supports()[i];
+    if (s[0] == partner::wall(Wall::ZLow)) {
+      EXPECT_NEAR(c[i].z(), kR, 1e-9 * kR);
+      continue;
+    }
+    ASSERT_NE(s[2], partner::none) << "sphere " << i << " off the bottom with fewer than three supports";
+    EXPECT_TRUE(held_by(b, c, i, s)) << "sphere " << i;
+  }
+}
+
+TEST(Deposition, EverySphereRestsOnThreeSupportsOrTheBottomWithoutOverlapPeriodic) {
+  expect_deposited_packing(box(8.0, Sides::Periodic), 400, 21);
+}
+
+TEST(Deposition, EverySphereRestsOnThreeSupportsOrTheBottomWithoutOverlapWalls) {
+  expect_deposited_packing(box(8.0, Sides::Walls), 400, 22);
+}
+
+// The volume of a sphere of radius r centred at z between heights lo and hi.
+double slab_volume(double z, double r, double lo, double hi) {
+  auto below = [&](double h) {  // volume under height h
+    const double t = std::clamp(h - (z - r), 0.0, 2.0 * r);
+    return std::numbers::pi * t * t * (3.0 * r - t) / 3.0;
+  };
+  return below(hi) - below(lo);
+}
+
+TEST(Deposition, APeriodicDepositionFillsFiftyEightPerCentOfTheBulk) {
+  // Random deposition with rolling to three supports packs at about 0.58 (Jullien &
+  // Meakin; the paper's initial packing 58.4 %), away from the bottom and the surface.
+  const TapBox b = box(16.0, Sides::Periodic);
+  Deposition deposition(b);
+  RandomStream rng(2026);
+  deposition.drop_random(2000, rng);
+  double volume = 0.0;
+  const double lo = 6.0 * kR, hi = 26.0 * kR;
+  for (const auto& c : deposition.centres()) volume += slab_volume(c.z(), kR, lo, hi);
+  const double phi = volume / (b.side * b.side * (hi - lo));
+  EXPECT_NEAR(phi, 0.582, 0.01);
+}
+
+TEST(Deposition, TheSameSeedGivesTheSameBits) {
+  auto run = [] {
+    Deposition deposition(box(8.0, Sides::Periodic));
+    RandomStream rng(9);
+    deposition.drop_random(200, rng);
+    return deposition.centres();
+  };
+  EXPECT_EQ(run(), run());
+}
+
+// Pearson's chi^2 of counts against expected counts.
+double chi2(const std::vector<double>& counts, const std::vector<double>& expected) {
+  double sum = 0.0;
+  for (std::size_t k = 0; k < counts.size(); ++k) sum += std::pow(counts[k] - expected[k], 2) / expected[k];
+  return sum;
+}
+// chi^2 above this for 19 degrees of freedom happens with probability 0.001.
+constexpr double kChi2Critical19 = 43.82;
+constexpr int kBins = 20;
+
+TEST(TrialMove, ThePolarAngleHasTheDensityOfEquationOneTruncatedAtNinetyDegrees) {
+  const TrialMove move;
+  RandomStream rng(31);
+  const int n = 200000;
+  const double width = std::numbers::pi / 2.0 / kBins;
+  std::vector<double> counts(kBins, 0.0), expected(kBins, 0.0);
+  for (int k = 0; k < n; ++k) counts[std::min(kBins - 1, static_cast<int>(move.polar(rng) / width))] += 1.0;
+  // exp(-(t/t0)^2) integrated over each bin: (sqrt(pi)/2) t0 (erf(b/t0) - erf(a/t0)).
+  double total = 0.0;
+  for (int b = 0; b < kBins; ++b) {
+    expected[b] = std::erf((b + 1) * width / move.theta0) - std::erf(b * width / move.theta0);
+    total += expected[b];
+  }
+  for (double& e : expected) e *= n / total;
+  EXPECT_LT(chi2(counts, expected), kChi2Critical19);
+}
+
+TEST(TrialMove, LengthAndAzimuthAreUniformAndNoMoveGoesUp) {
+  const TrialMove move{0.2, std::numbers::pi / 4.0};
+  RandomStream rng(32);
+  const int n = 200000;
+  std::vector<double> length(kBins, 0.0), azimuth(kBins, 0.0);
+  for (int k = 0; k < n; ++k) {
+    const Eigen::Vector3d d = move.draw(rng);
+    ASSERT_LE(d.z(), 0.0);
+    length[std::min(kBins - 1, static_cast<int>(d.norm() / move.d_max * kBins))] += 1.0;
+    const double phi = std::atan2(d.y(), d.x()) + std::numbers::pi;
+    azimuth[std::min(kBins - 1, static_cast<int>(phi / (2.0 * std::numbers::pi) * kBins))] += 1.0;
+  }
+  const std::vector<double> flat(kBins, static_cast<double>(n) / kBins);
+  EXPECT_LT(chi2(length, flat), kChi2Critical19);
+  EXPECT_LT(chi2(azimuth, flat), kChi2Critical19);
+}
+
+std::vector<Eigen::Vector3d> deposited(const TapBox& b, int n, std::uint64_t seed) {
+  Deposition deposition(b);
+  RandomStream rng(seed);
+  deposition.drop_random(n, rng);
+  return deposition.centres();
+}
+
+double mean_z(const std::vector<Eigen::Vector3d>& c) {
+  double sum = 0.0;
+  for (const auto& x : c) sum += x.z();
+  return sum / static_cast<double>(c.size());
+}
+
+void expect_no_overlap_inside(const TapBox& b, const std::vector<Eigen::Vector3d>& c) {
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    ASSERT_GE(c[i].z(), kR);
+    if (!b.periodic()) {
+      for (int a = 0; a < 2; ++a) {
+        ASSERT_GE(c[i][a], kR);
+        ASSERT_LE(c[i][a], b.side - kR);
+      }
+    }
+    for (std::size_t j = 0; j < i; ++j) ASSERT_GE(separation(b, c[i], c[j]).norm(), 2.0 * kR) << i << " " << j;
+  }
+}
+
+TEST(Redeposition, TapsLeaveNoOverlapAndNoSphereOutsideTheBox) {
+  for (Sides sides : {Sides::Periodic, Sides::Walls}) {
+    const TapBox b = box(8.0, sides);
+    std::vector<Eigen::Vector3d> c = deposited(b, 250, 41);
+    Redeposition redeposition(b, RedepositionOptions{TrialMove{}, 1e-4, 0, 1000});
+    RandomStream rng(42);
+    for (int tap = 0; tap < 3; ++tap) {
+      const TapStats stats = redeposition.tap(c, 0.1, rng);
+      EXPECT_GT(stats.accepted, 0);
+      expect_no_overlap_inside(b, c);
+    }
+  }
+}
+
+TEST(Redeposition, TrialMovesNeverRaiseTheMeanHeight) {
+  // Eq. (1) is truncated at theta = pi/2: no trial move goes up, so without a dilation
+  // <Z> can only fall, and a dilated packing ends below its dilated height.
+  const TapBox b = box(8.0, Sides::Periodic);
+  std::vector<Eigen::Vector3d> c = deposited(b, 250, 43);
+  Redeposition redeposition(b, RedepositionOptions{});
+  RandomStream rng(44);
+  double before = mean_z(c);
+  redeposition.shake(c, 20000, rng);
+  EXPECT_LE(mean_z(c), before);
+  before = mean_z(c);
+  redeposition.tap(c, 0.05, rng);
+  EXPECT_LT(mean_z(c), 1.05 * before);
+}
+
+TEST(Redeposition, TheSameSeedGivesTheSameBits) {
+  const TapBox b = box(8.0, Sides::Walls);
+  auto run = [&] {
+    std::vector<Eigen::Vector3d> c = deposited(b, 150, 45);
+    Redeposition redeposition(b, RedepositionOptions{TrialMove{}, 1e-4, 0, 100});
+    RandomStream rng(46);
+    redeposition.tap(c, 0.1, rng);
+    return c;
+  };
+  EXPECT_EQ(run(), run());
+}
+
+TEST(SaveSchedule, SavesTenTapsPerDecadeAndEveryKth) {
+  const SaveSchedule log_only{1000, true};
+  std::vector<std::int64_t> saved;
+  for (std::int64_t t = 0; t <= 100; ++t)
+    if (log_only.saves(t)) saved.push_back(t);
+  const std::vector<std::int64_t> expected{0, 1, 2, 3, 4, 6, 7, 8, 10, 13, 16, 20, 26, 32, 40, 51, 64, 80, 100};
+  EXPECT_EQ(saved, expected);
+  const SaveSchedule every{25, false};
+  for (std::int64_t t = 0; t <= 100; ++t) EXPECT_EQ(every.saves(t), t % 25 == 0) << t;
+}
+
+}  // namespace
+}  // namespace granpipe::spheres3d_tap
