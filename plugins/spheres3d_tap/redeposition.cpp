@@ -14,16 +14,11 @@ void Redeposition::rebuild(const std::vector<Eigen::Vector3d>& centres) {
 
 bool Redeposition::fits(const std::vector<Eigen::Vector3d>& centres, std::int32_t i,
                         const Eigen::Vector3d& x) const {
-  const double r = box_.radius, contact2 = 4.0 * r * r;
+  const double r = box_.radius;
   if (x.z() < r) return false;
   if (!box_.periodic() && (x.x() < r || x.y() < r || x.x() > box_.side - r || x.y() > box_.side - r))
     return false;
-  bool clear = true;
-  const Eigen::Vector3d lo = x.array() - 2.0 * r, hi = x.array() + 2.0 * r;
-  grid_.for_each_in(lo, hi, [&](std::int32_t j, const Eigen::Vector3d& shift) {
-    if (j != i && (centres[static_cast<std::size_t>(j)] + shift - x).squaredNorm() < contact2) clear = false;
-  });
-  return clear;
+  return !grid_.any_within(x, 2.0 * r, i, centres);
 }
 
 bool Redeposition::trial(std::vector<Eigen::Vector3d>& centres, RandomStream& rng, double& height_sum) {

@@ -34,6 +34,11 @@ class SphereGrid {
   // sides). A range wider than a period visits a sphere once per image it covers.
   template <class F>
   void for_each_in(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, F&& f) const;
+  // True when a sphere other than `self` has its centre closer than `reach` to x (an
+  // image's, along periodic sides); stops at the first one found. The Monte Carlo's
+  // overlap test, so it visits only the cells the sphere of radius reach can touch.
+  bool any_within(const Eigen::Vector3d& x, double reach, std::int32_t self,
+                  const std::vector<Eigen::Vector3d>& centres) const;
 
  private:
   static int floor_int(double v) {
