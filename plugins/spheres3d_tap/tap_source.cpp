@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "granpipe/container.hpp"
+#include "saved_packing.hpp"
 
 namespace granpipe::spheres3d_tap {
 
@@ -18,6 +19,10 @@ Property epsilon_property() {
 }
 Property mean_height_property() {
   return {"mean_height", Scope::Frame, ValueType::Real, 1, "length", "<Z>, the mean centre height"};
+}
+Property leg_property() {
+  return {"leg", Scope::Frame, ValueType::Integer, 1, "",
+          "leg of the ramp protocol (0 up, 1 down, 2 up, ...), -1 constant"};
 }
 Property trials_property() {
   return {"mc_trials", Scope::Frame, ValueType::Integer, 1, "", "Monte Carlo trial moves of the tap"};
@@ -48,6 +53,32 @@ TapBox tap_box(const PluginContext& ctx) {
   return box;
 }
 
+// How epsilon goes: one value, or stepped ramps of sqrt(epsilon) (parameter protocol).
+enum class Protocol : std::uint8_t { Constant, Ramp };
+ChoiceNames<Protocol> choice_names(Protocol) {
+  return {{"constant", Protocol::Constant}, {"ramp", Protocol::Ramp}};
+}
+
+EpsilonProtocol epsilon_protocol(const PluginContext& ctx) {
+  const Params& p = ctx.params;
+  if (p.choice<Protocol>("protocol") == Protocol::Constant)
+    return EpsilonProtocol::constant(p.real("epsilon"), p.integer("taps"));
+  const double lo = p.real("ramp_root_min"), hi = p.real("ramp_root_max"), step = p.real("ramp_root_step");
+  if (!(hi >= lo + step)) {
+    std::ostringstream s;
+    s << ctx.param("ramp_root_max") << ": expected at least ramp_root_min + ramp_root_step = " << lo + step
+      << " (one step), got " << hi;
+    throw InputError(s.str());
+  }
+  if (hi * hi > 1.0) {
+    std::ostringstream s;
+    s << ctx.param("ramp_root_max") << ": expected at most 1 (epsilon at most 1, as for epsilon), got " << hi;
+    throw InputError(s.str());
+  }
+  return EpsilonProtocol::ramp(lo, hi, step, p.integer("ramp_taps_per_step"),
+                               static_cast<int>(p.integer("ramp_legs")));
+}
+
 double mean_height(const std::vector<Eigen::Vector3d>& centres) {
   double sum = 0.0;
   for (const auto& c : centres) sum += c.z();
@@ -68,9 +99,24 @@ Schema schema() {
   s.choice<Sides>("sides", Sides::Periodic,
                   "lateral sides: periodic (P.B.C.) or fixed walls (F.B.C.); the paper's initial "
                   "packing fraction 58.4 % is the periodic deposition's");
-  s.real("epsilon", 0.05, "tap dilation: centre heights z -> z (1 + epsilon)").range(0.0, 1.0);
-  s.integer("taps", 100, "taps after the deposition").min(0);
-  s.integer("save_every", 10, "save every k-th tap (and the deposition, tap 0)").min(1);
+  s.path("initial_file", std::string(""),
+         "start from a frame of this H5MD file (e.g. a frames.h5 of this source) instead of a "
+         "deposition; N, radius, side and sides must match it. Empty: deposit");
+  s.integer("initial_frame", -1, "frame of initial_file to start from (-1: the last)").min(-1);
+  s.choice<Protocol>("protocol", Protocol::Constant,
+                     "constant: taps taps at epsilon; ramp: sqrt(epsilon) stepped from "
+                     "ramp_root_min to ramp_root_max and back (the paper's Fig. 4)");
+  s.real("epsilon", 0.05, "constant protocol: tap dilation, centre heights z -> z (1 + epsilon)").range(0.0, 1.0);
+  s.integer("taps", 100, "constant protocol: taps after the start").min(0);
+  s.real("ramp_root_min", 0.025, "ramp protocol: lowest sqrt(epsilon)").range(0.0, 1.0);
+  s.real("ramp_root_max", 0.4, "ramp protocol: highest sqrt(epsilon)").range(0.0, 1.0);
+  s.real("ramp_root_step", 0.025, "ramp protocol: step of sqrt(epsilon) (the paper's 0.025)").range(1e-6, 1.0);
+  s.integer("ramp_taps_per_step", 4000, "ramp protocol: taps at each value (the paper's 4000)").min(1);
+  s.integer("ramp_legs", 3, "ramp protocol: legs, alternately up and down (the paper's up, down, up: 3)")
+      .range(1, 1000);
+  s.integer("save_every", 10,
+            "save every k-th tap, the start (tap 0) and, in a ramp, the last tap at each value")
+      .min(1);
   s.boolean("log_frames", true, "also save taps spaced evenly in log(tap), ten per decade");
   s.real("d_max", 0.2, "largest Monte Carlo displacement, in units of R (the paper's R/5)").range(1e-6, 2.0);
   s.real("theta0", std::numbers::pi / 4.0,
@@ -98,14 +144,32 @@ TapSource::TapSource(const PluginContext& ctx)
       tap_rng_(replica_seeds(ctx).stream("tap")),
       redeposition_(box_, redeposition_options(ctx.params)),
       schedule_{ctx.params.integer("save_every"), ctx.params.boolean("log_frames")},
+      protocol_(epsilon_protocol(ctx)),
+      initial_file_(ctx.params.string("initial_file")),
+      initial_param_(ctx.param("initial_file")),
+      initial_frame_(ctx.params.integer("initial_frame")),
       n_(ctx.params.integer("N")),
-      taps_(ctx.params.integer("taps")),
-      epsilon_(ctx.params.real("epsilon")),
-      per_tap_(ctx.stream_table("per_tap", Table({"tap", "epsilon", "mean_height", "mc_trials", "mc_acceptance"},
-                                                 "every tap: <Z> after redeposition, trial moves, "
-                                                 "accepted fraction"))) {}
+      per_tap_(ctx.stream_table("per_tap", Table({"tap", "epsilon", "leg", "mean_height", "mc_trials", "mc_acceptance"},
+                                                 "every tap: its epsilon and ramp leg, <Z> after "
+                                                 "redeposition, trial moves, accepted fraction"))) {}
 
-void TapSource::to_frame(Frame& frame, const TapStats& stats) const {
+FrameContent TapSource::content() const {
+  return {.dim = 3,
+          .columns = {tap_property(), epsilon_property(), leg_property(), mean_height_property(),
+                      trials_property(), acceptance_property()}};
+}
+
+void TapSource::start() {
+  if (!initial_file_.empty()) {
+    centres_ = read_saved_packing(initial_param_, initial_file_, initial_frame_, box_, static_cast<long>(n_));
+    return;
+  }
+  Deposition deposition(box_);
+  deposition.drop_random(static_cast<int>(n_), deposition_rng_);
+  centres_ = deposition.centres();
+}
+
+void TapSource::to_frame(Frame& frame, const TapStats& stats, const EpsilonAt& e) const {
   const auto n = static_cast<Eigen::Index>(centres_.size());
   frame.resize(n, 3);
   double top = 0.0;
@@ -121,7 +185,8 @@ void TapSource::to_frame(Frame& frame, const TapStats& stats) const {
   frame.step = tap_;
   frame.time = static_cast<double>(tap_);  // the scene's clock counts taps
   frame.set_observable(tap_property(), tap_);
-  frame.set_observable(epsilon_property(), tap_ == 0 ? 0.0 : epsilon_);
+  frame.set_observable(epsilon_property(), e.epsilon);
+  frame.set_observable(leg_property(), static_cast<std::int64_t>(e.leg));
   frame.set_observable(mean_height_property(), mean_height(centres_));
   frame.set_observable(trials_property(), stats.trials);
   frame.set_observable(acceptance_property(),
@@ -129,30 +194,30 @@ void TapSource::to_frame(Frame& frame, const TapStats& stats) const {
                                     : std::nan(""));
 }
 
-void TapSource::record(const TapStats& stats) {
+void TapSource::record(const TapStats& stats, const EpsilonAt& e) {
   const double acceptance =
       stats.trials ? static_cast<double>(stats.accepted) / static_cast<double>(stats.trials) : std::nan("");
-  per_tap_.add_row({static_cast<double>(tap_), tap_ == 0 ? 0.0 : epsilon_, mean_height(centres_),
+  per_tap_.add_row({static_cast<double>(tap_), e.epsilon, static_cast<double>(e.leg), mean_height(centres_),
                     static_cast<double>(stats.trials), acceptance});
   unconverged_ += !stats.converged;
 }
 
 bool TapSource::next(Frame& frame) {
-  while (tap_ < taps_) {
+  while (tap_ < protocol_.taps()) {
     const auto t0 = std::chrono::steady_clock::now();
     TapStats stats;
+    EpsilonAt e{0.0, -1, false};  // the start: no tap
     if (++tap_ == 0) {
-      Deposition deposition(box_);
-      deposition.drop_random(static_cast<int>(n_), deposition_rng_);
-      centres_ = deposition.centres();
+      start();
     } else {
-      stats = redeposition_.tap(centres_, epsilon_, tap_rng_);
+      e = protocol_.at(tap_);
+      stats = redeposition_.tap(centres_, e.epsilon, tap_rng_);
       progress_.advance(1.0);
     }
     seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    record(stats);
-    if (schedule_.saves(tap_)) {
-      to_frame(frame, stats);
+    record(stats, e);
+    if (schedule_.saves(tap_) || (e.leg >= 0 && e.ends_step)) {
+      to_frame(frame, stats, e);
       return true;
     }
   }

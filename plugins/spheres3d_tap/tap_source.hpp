@@ -5,8 +5,11 @@
 // supports); each tap dilates the packing, z -> z (1 + epsilon), and redeposits it by
 // gravity-biased Monte Carlo until the mean height settles.
 #include <cstdint>
+#include <string>
+#include <vector>
 
 #include "deposit.hpp"
+#include "epsilon_protocol.hpp"
 #include "granpipe/plugin.hpp"
 #include "redeposition.hpp"
 #include "tap_schedule.hpp"
@@ -19,22 +22,25 @@ class TapSource : public Source {
  public:
   explicit TapSource(const PluginContext& ctx);
 
-  FrameContent content() const override { return {.dim = 3, .columns = {}}; }
+  FrameContent content() const override;
   bool next(Frame& frame) override;
-  Work work() const override { return {static_cast<double>(taps_), "taps", true}; }
+  Work work() const override { return {static_cast<double>(protocol_.taps()), "taps", true}; }
   void finish(Results& results) override;
 
  private:
-  void to_frame(Frame& frame, const TapStats& stats) const;
-  void record(const TapStats& stats);
+  void start();
+  void to_frame(Frame& frame, const TapStats& stats, const EpsilonAt& e) const;
+  void record(const TapStats& stats, const EpsilonAt& e);
 
   Progress& progress_;
   TapBox box_;
   RandomStream deposition_rng_, tap_rng_;
   Redeposition redeposition_;
   SaveSchedule schedule_;
-  std::int64_t n_ = 0, taps_ = 0, tap_ = -1, unconverged_ = 0;
-  double epsilon_ = 0.0;
+  EpsilonProtocol protocol_;
+  std::string initial_file_, initial_param_;
+  long initial_frame_ = -1;
+  std::int64_t n_ = 0, tap_ = -1, unconverged_ = 0;
   std::vector<Eigen::Vector3d> centres_;
   StreamedTable per_tap_;
   double seconds_ = 0.0;

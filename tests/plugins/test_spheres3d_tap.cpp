@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "deposit.hpp"
+#include "epsilon_protocol.hpp"
 #include "redeposition.hpp"
 #include "tap_schedule.hpp"
 #include "trial_move.hpp"
@@ -289,6 +290,25 @@ TEST(SaveSchedule, SavesTenTapsPerDecadeAndEveryKth) {
   EXPECT_EQ(saved, expected);
   const SaveSchedule every{25, false};
   for (std::int64_t t = 0; t <= 100; ++t) EXPECT_EQ(every.saves(t), t % 25 == 0) << t;
+}
+
+TEST(EpsilonProtocol, RampsStepTheRootUpDownAndUpAgainEndingEachStep) {
+  // sqrt(epsilon) 0.1, 0.2, 0.3 up, 0.2, 0.1 down, 0.2, 0.3 up; two taps each.
+  const EpsilonProtocol ramp = EpsilonProtocol::ramp(0.1, 0.3, 0.1, 2, 3);
+  ASSERT_EQ(ramp.taps(), 14);
+  const std::vector<double> roots{0.1, 0.2, 0.3, 0.2, 0.1, 0.2, 0.3};
+  const std::vector<int> legs{0, 0, 0, 1, 1, 2, 2};
+  for (std::int64_t tap = 1; tap <= ramp.taps(); ++tap) {
+    const auto k = static_cast<std::size_t>((tap - 1) / 2);
+    const EpsilonAt e = ramp.at(tap);
+    EXPECT_NEAR(e.epsilon, roots[k] * roots[k], 1e-15) << tap;
+    EXPECT_EQ(e.leg, legs[k]) << tap;
+    EXPECT_EQ(e.ends_step, tap % 2 == 0) << tap;
+  }
+  const EpsilonProtocol constant = EpsilonProtocol::constant(0.05, 7);
+  EXPECT_EQ(constant.taps(), 7);
+  EXPECT_EQ(constant.at(3).epsilon, 0.05);
+  EXPECT_EQ(constant.at(3).leg, -1);
 }
 
 }  // namespace

@@ -1,0 +1,19 @@
+#pragma once
+// A packing to continue tapping from: a frame of an H5MD file (a granpipe frames.h5 of
+// this source, or another tool's spheres), checked against the box the pipeline asks for.
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "tap_box.hpp"
+
+namespace granpipe::spheres3d_tap {
+
+// The centres of frame `frame` (-1: the last) of `file`. Throws InputError naming
+// `where` (the parameter) and the file when the frame is not 3D, holds other than
+// `n` spheres, other radii than the box's, another box, or spheres that overlap (by more
+// than 1e-9 R) or reach through the bottom or a wall.
+std::vector<Eigen::Vector3d> read_saved_packing(const std::string& where, const std::string& file,
+                                                long frame, const TapBox& box, long n);
+
+}  // namespace granpipe::spheres3d_tap

@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# spheres3d_tap continued from a saved frame: a run's last frame starts a second run,
+# whose tap 0 is that packing to the bit; the same file with two spheres overlapping is
+# refused naming the pair.
+set -euo pipefail
+exe=$1 expect=$2 python=$3 work=$4
+rm -rf "$work" && mkdir -p "$work"
+pipeline=$work/tap3d.json
+cat >"$pipeline" <<'JSON'
+{"name": "tap3d_saved_start", "seed": 5,
+ "source": {"plugin": "spheres3d_tap", "params": {"N": 60, "side": 6, "taps": 2, "epsilon": 0.05}},
+ "analyzers": [], "output": {"dir": "out/tap3d_saved_start"}}
+JSON
+small=(--quiet)
+"$exe" "$pipeline" "${small[@]}" --out "$work/first"
+"$exe" "$pipeline" "${small[@]}" --set source.params.initial_file="$work/first/frames.h5" \
+  --out "$work/second"
+"$python" - "$work/first/frames.h5" "$work/second/frames.h5" <<'PY'
+import sys, h5py, numpy as np
+first, second = (h5py.File(p, "r")["particles/all/position/value"] for p in sys.argv[1:])
+assert np.array_equal(first[-1], second[0]), "tap 0 of the continued run is not the saved packing"
+print("continued from the saved packing, bit for bit")
+PY
+cp "$work/first/frames.h5" "$work/overlap.h5"
+"$python" - "$work/overlap.h5" <<'PY'
+import sys, h5py
+with h5py.File(sys.argv[1], "r+") as f:
+    x = f["particles/all/position/value"]
+    last = x[-1]
+    last[7] = last[3] + [0.5, 0.0, 0.0]
+    x[-1] = last
+PY
+"$expect" 2 "source\\.params\\.initial_file: .*overlap\\.h5, frame [0-9]+: spheres [0-9]+ and [0-9]+ overlap \\(centres [0-9.e-]+ apart, expected at least 2R = 2\\)" \
+  -- "$exe" "$pipeline" "${small[@]}" --set source.params.initial_file="$work/overlap.h5" --out "$work/third"
