@@ -22,7 +22,8 @@ constexpr double kTouch = 1e-9;
 constexpr int kMaxStages = 100000;
 
 bool same(const Obstacle& a, const Obstacle& b) {
-  if (a.is_plane() || b.is_plane()) return a.is_plane() && b.is_plane() && a.plane.label == b.plane.label;
+  if (a.is_plane() || b.is_plane())
+    return a.is_plane() && b.is_plane() && a.plane.label == b.plane.label;
   return a.sphere == b.sphere && (a.centre - b.centre).squaredNorm() < 1e-12;
 }
 
@@ -50,7 +51,8 @@ std::vector<Obstacle> Deposition::touching(const Eigen::Vector3d& p) const {
     if ((p - c).norm() <= reach) found.push_back(Obstacle::of_sphere(j, c));
   });
   for (const auto& plane : planes_)
-    if (plane.normal.dot(p) - plane.offset <= kTouch * box_.radius) found.push_back(Obstacle::of_plane(plane));
+    if (plane.normal.dot(p) - plane.offset <= kTouch * box_.radius)
+      found.push_back(Obstacle::of_plane(plane));
   return found;
 }
 
@@ -71,8 +73,10 @@ std::vector<Obstacle> Deposition::candidates(const Eigen::Vector3d& lo, const Ei
   return found;
 }
 
-Eigen::Vector3d Deposition::roll_off(const Eigen::Vector3d& p, const std::vector<Obstacle>& supports,
-                                     const std::vector<Obstacle>& touching, RandomStream& rng) const {
+Eigen::Vector3d Deposition::roll_off(const Eigen::Vector3d& p,
+                                     const std::vector<Obstacle>& supports,
+                                     const std::vector<Obstacle>& touching,
+                                     RandomStream& rng) const {
   Eigen::Vector3d way;
   if (supports.size() == 1) {
     const double azimuth = rng.uniform(0.0, 2.0 * std::numbers::pi);
@@ -81,7 +85,8 @@ Eigen::Vector3d Deposition::roll_off(const Eigen::Vector3d& p, const std::vector
     // Along the groove's circle: perpendicular to its axis and to the radius at p.
     const Obstacle& sphere = supports[0].is_plane() ? supports[1] : supports[0];
     const Obstacle& other = supports[0].is_plane() ? supports[0] : supports[1];
-    const Eigen::Vector3d axis = other.is_plane() ? other.plane.normal : Eigen::Vector3d(other.centre - sphere.centre);
+    const Eigen::Vector3d axis =
+        other.is_plane() ? other.plane.normal : Eigen::Vector3d(other.centre - sphere.centre);
     way = axis.cross(p - sphere.centre).normalized();
     if (rng.uniform() < 0.5) way = -way;
   }
@@ -96,7 +101,8 @@ void Deposition::add(const Eigen::Vector3d& p, const std::vector<Obstacle>& supp
   grid_.put(i, x);
   centres_.push_back(x);
   Supports labels{partner::none, partner::none, partner::none};
-  for (std::size_t k = 0; k < std::min<std::size_t>(supports.size(), 3); ++k) labels[k] = label_of(supports[k]);
+  for (std::size_t k = 0; k < std::min<std::size_t>(supports.size(), 3); ++k)
+    labels[k] = label_of(supports[k]);
   supports_.push_back(labels);
   top_ = std::max(top_, x.z());
 }
@@ -118,8 +124,8 @@ void Deposition::drop(double x, double y, RandomStream& rng) {
     path.bounds(p.z(), lo, hi);
     p = path.at(first_end(path, supports, candidates(lo, hi, supports), box_.radius).t);
   }
-  throw InternalError("deposition: sphere " + std::to_string(centres_.size()) + " did not come to rest in " +
-                      std::to_string(kMaxStages) + " stages");
+  throw InternalError("deposition: sphere " + std::to_string(centres_.size()) +
+                      " did not come to rest in " + std::to_string(kMaxStages) + " stages");
 }
 
 void Deposition::drop_random(int n, RandomStream& rng) {

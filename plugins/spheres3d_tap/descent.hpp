@@ -16,9 +16,9 @@ namespace granpipe::spheres3d_tap {
 // the sphere, or a plane of centres (a wall or the bottom).
 struct Obstacle {
   static constexpr int kNone = -1;
-  int sphere = kNone;         // the sphere's index, or kNone for a plane
+  int sphere = kNone;                                // the sphere's index, or kNone for a plane
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();  // the sphere's image centre
-  CentrePlane plane{};        // the plane, when sphere == kNone
+  CentrePlane plane{};                               // the plane, when sphere == kNone
 
   static Obstacle of_sphere(int index, const Eigen::Vector3d& image_centre) {
     Obstacle o;

@@ -8,8 +8,8 @@ namespace granpipe::spheres3d_tap {
 
 struct EpsilonAt {
   double epsilon = 0.0;
-  int leg = -1;             // the ramp's leg (0 up, 1 down, 2 up, ...); -1 constant
-  bool ends_step = false;   // the last tap at this value (a ramp's measuring point)
+  int leg = -1;            // the ramp's leg (0 up, 1 down, 2 up, ...); -1 constant
+  bool ends_step = false;  // the last tap at this value (a ramp's measuring point)
 };
 
 class EpsilonProtocol {

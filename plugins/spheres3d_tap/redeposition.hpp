@@ -40,7 +40,8 @@ class Redeposition {
   void rebuild(const std::vector<Eigen::Vector3d>& centres);
   // One trial move of a random sphere; true when accepted. `height_sum` follows.
   bool trial(std::vector<Eigen::Vector3d>& centres, RandomStream& rng, double& height_sum);
-  bool fits(const std::vector<Eigen::Vector3d>& centres, std::int32_t i, const Eigen::Vector3d& x) const;
+  bool fits(const std::vector<Eigen::Vector3d>& centres, std::int32_t i,
+            const Eigen::Vector3d& x) const;
 
   TapBox box_;
   RedepositionOptions options_;

@@ -43,7 +43,8 @@ double fall_hit(const Eigen::Vector3d& start, const Obstacle& obstacle, double r
     if (nz <= 0.0) return kNever;  // a side wall, parallel to the fall
     return (obstacle.plane.normal.dot(start) - obstacle.plane.offset) / nz;
   }
-  const double h2 = (start - obstacle.centre).head<2>().squaredNorm(), reach = 4.0 * radius * radius;
+  const double h2 = (start - obstacle.centre).head<2>().squaredNorm(),
+               reach = 4.0 * radius * radius;
   if (h2 >= reach) return kNever;
   return start.z() - obstacle.centre.z() - std::sqrt(reach - h2);
 }
@@ -70,8 +71,8 @@ Eigen::Matrix3Xd lift_coefficients(const Path& path, const std::vector<Obstacle>
       continue;
     }
     const double r = (path.at(0.0) - s.centre).norm();  // constant along the arc
-    lift.col(static_cast<Eigen::Index>(k)) << (path.centre.z() - s.centre.z()) / r,
-        path.a.z() / r, path.b.z() / r;
+    lift.col(static_cast<Eigen::Index>(k)) << (path.centre.z() - s.centre.z()) / r, path.a.z() / r,
+        path.b.z() / r;
   }
   return lift;
 }
@@ -83,11 +84,12 @@ double first_release(const Path& path, const std::vector<Obstacle>& supports, do
   Eigen::MatrixXd normals(3, m);
   for (Eigen::Index k = 0; k < m; ++k)
     normals.col(k) = supports[static_cast<std::size_t>(k)].normal_at(path.at(0.0));
-  const Eigen::MatrixXd force = (normals.transpose() * normals).inverse() *
-                                lift_coefficients(path, supports).transpose();
+  const Eigen::MatrixXd force =
+      (normals.transpose() * normals).inverse() * lift_coefficients(path, supports).transpose();
   double best = kNever;
   for (Eigen::Index k = 0; k < m; ++k)
-    best = std::min(best, first_fall_to_zero(force(k, 0), force(k, 1), force(k, 2), kLeastStep, to));
+    best =
+        std::min(best, first_fall_to_zero(force(k, 0), force(k, 1), force(k, 2), kLeastStep, to));
   return best;
 }
 
@@ -139,8 +141,9 @@ Path path_from(const Eigen::Vector3d& p, const Eigen::Vector3d& direction,
   Eigen::Vector3d tangent = direction;
   if (supports.size() == 2) {
     const Obstacle& other = supports[0].is_plane() ? supports[0] : supports[1];
-    const Eigen::Vector3d axis = other.is_plane() ? other.plane.normal
-                                                  : Eigen::Vector3d(other.centre - sphere.centre).normalized();
+    const Eigen::Vector3d axis = other.is_plane()
+                                     ? other.plane.normal
+                                     : Eigen::Vector3d(other.centre - sphere.centre).normalized();
     path.centre += (p - sphere.centre).dot(axis) * axis;
     tangent -= tangent.dot(axis) * axis;
   }

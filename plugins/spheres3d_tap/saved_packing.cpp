@@ -24,20 +24,24 @@ void check_box(const std::string& where, const Frame& f, const TapBox& box) {
   const Container& c = f.container;
   const bool periodic = c.periodic(0) && c.periodic(1);
   if (periodic != box.periodic() || c.lo.norm() != 0.0 ||
-      std::abs(c.hi.x() - box.side) > 1e-12 * box.side || std::abs(c.hi.y() - box.side) > 1e-12 * box.side) {
+      std::abs(c.hi.x() - box.side) > 1e-12 * box.side ||
+      std::abs(c.hi.y() - box.side) > 1e-12 * box.side) {
     throw InputError(where + ": expected a box [0, " + number(box.side) + "]^2 with " +
-                     (box.periodic() ? "periodic" : "wall") + " sides over a bottom at z = 0, got [" +
-                     number(c.lo.x()) + ", " + number(c.hi.x()) + "] x [" + number(c.lo.y()) + ", " +
-                     number(c.hi.y()) + "] with " + (periodic ? "periodic" : "other") + " sides");
+                     (box.periodic() ? "periodic" : "wall") +
+                     " sides over a bottom at z = 0, got [" + number(c.lo.x()) + ", " +
+                     number(c.hi.x()) + "] x [" + number(c.lo.y()) + ", " + number(c.hi.y()) +
+                     "] with " + (periodic ? "periodic" : "other") + " sides");
   }
 }
 
-void check_inside(const std::string& where, const std::vector<Eigen::Vector3d>& x, const TapBox& box) {
+void check_inside(const std::string& where, const std::vector<Eigen::Vector3d>& x,
+                  const TapBox& box) {
   const double r = box.radius, slack = kTolerance * r;
   for (std::size_t i = 0; i < x.size(); ++i) {
     bool out = x[i].z() < r - slack || !x[i].allFinite();
     if (!box.periodic())
-      for (int a = 0; a < 2; ++a) out = out || x[i][a] < r - slack || x[i][a] > box.side - r + slack;
+      for (int a = 0; a < 2; ++a)
+        out = out || x[i][a] < r - slack || x[i][a] > box.side - r + slack;
     if (out) {
       throw InputError(where + ": sphere " + std::to_string(i) + " at (" + number(x[i].x()) + ", " +
                        number(x[i].y()) + ", " + number(x[i].z()) +
@@ -46,7 +50,8 @@ void check_inside(const std::string& where, const std::vector<Eigen::Vector3d>& 
   }
 }
 
-void check_overlaps(const std::string& where, const std::vector<Eigen::Vector3d>& x, const TapBox& box) {
+void check_overlaps(const std::string& where, const std::vector<Eigen::Vector3d>& x,
+                    const TapBox& box) {
   SphereGrid grid(box);
   const double contact = 2.0 * box.radius * (1.0 - kTolerance);
   for (std::size_t i = 0; i < x.size(); ++i) {
@@ -55,8 +60,8 @@ void check_overlaps(const std::string& where, const std::vector<Eigen::Vector3d>
       const double d = (x[static_cast<std::size_t>(j)] + shift - x[i]).norm();
       if (d < contact) {
         throw InputError(where + ": spheres " + std::to_string(j) + " and " + std::to_string(i) +
-                         " overlap (centres " + number(d) + " apart, expected at least 2R = " +
-                         number(2.0 * box.radius) + ")");
+                         " overlap (centres " + number(d) +
+                         " apart, expected at least 2R = " + number(2.0 * box.radius) + ")");
       }
     });
     grid.put(static_cast<std::int32_t>(i), box.wrap(x[i]));
@@ -70,19 +75,23 @@ std::vector<Eigen::Vector3d> read_saved_packing(const std::string& where, const 
   const FrameReader reader(file, "", box.radius);
   const long frames = reader.frames();
   if (frame >= frames || frames == 0) {
-    throw InputError(where + ": expected a frame index below " + std::to_string(frames) + " (" + file +
-                     " holds " + std::to_string(frames) + " frames), got " + std::to_string(frame));
+    throw InputError(where + ": expected a frame index below " + std::to_string(frames) + " (" +
+                     file + " holds " + std::to_string(frames) + " frames), got " +
+                     std::to_string(frame));
   }
   const long index = frame < 0 ? frames - 1 : frame;
   const std::string at = where + ": " + file + ", frame " + std::to_string(index);
   const Frame f = reader.read(index);
-  if (f.dim != 3) throw InputError(at + ": expected a 3D frame, got " + std::to_string(f.dim) + "D");
+  if (f.dim != 3)
+    throw InputError(at + ": expected a 3D frame, got " + std::to_string(f.dim) + "D");
   if (f.size() != n) {
-    throw InputError(at + ": expected N = " + std::to_string(n) + " spheres, got " + std::to_string(f.size()));
+    throw InputError(at + ": expected N = " + std::to_string(n) + " spheres, got " +
+                     std::to_string(f.size()));
   }
   if (n > 0 && (f.radius() - box.radius).abs().maxCoeff() > 1e-12 * box.radius) {
-    throw InputError(at + ": expected every radius equal to radius = " + number(box.radius) + ", got " +
-                     number(f.radius().minCoeff()) + " to " + number(f.radius().maxCoeff()));
+    throw InputError(at + ": expected every radius equal to radius = " + number(box.radius) +
+                     ", got " + number(f.radius().minCoeff()) + " to " +
+                     number(f.radius().maxCoeff()));
   }
   check_box(at, f, box);
   std::vector<Eigen::Vector3d> x(static_cast<std::size_t>(n));

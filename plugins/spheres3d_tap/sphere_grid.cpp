@@ -33,7 +33,8 @@ bool SphereGrid::any_within(const Eigen::Vector3d& x, double reach, std::int32_t
   int x0, x1, y0, y1;
   axis_range(x.x() - reach, x.x() + reach, x0, x1);
   axis_range(x.y() - reach, x.y() + reach, y0, y1);
-  const int z0 = layer_of(x.z() - reach), z1 = std::min(floor_int((x.z() + reach) * inv_cell_), layers_ - 1);
+  const int z0 = layer_of(x.z() - reach),
+            z1 = std::min(floor_int((x.z() + reach) * inv_cell_), layers_ - 1);
   const double reach2 = reach * reach;
   for (int iz = z0; iz <= z1; ++iz) {
     for (int iy = y0; iy <= y1; ++iy) {

@@ -13,22 +13,31 @@ namespace granpipe::spheres3d_tap {
 
 namespace {
 
-Property tap_property() { return {"tap", Scope::Frame, ValueType::Integer, 1, "", "tap number (0: the deposition)"}; }
+Property tap_property() {
+  return {"tap", Scope::Frame, ValueType::Integer, 1, "", "tap number (0: the deposition)"};
+}
 Property epsilon_property() {
-  return {"epsilon", Scope::Frame, ValueType::Real, 1, "", "dilation of the tap, z -> z (1 + epsilon)"};
+  return {"epsilon", Scope::Frame, ValueType::Real,
+          1,         "",           "dilation of the tap, z -> z (1 + epsilon)"};
 }
 Property mean_height_property() {
   return {"mean_height", Scope::Frame, ValueType::Real, 1, "length", "<Z>, the mean centre height"};
 }
 Property leg_property() {
-  return {"leg", Scope::Frame, ValueType::Integer, 1, "",
-          "leg of the ramp protocol (0 up, 1 down, 2 up, ...), -1 constant"};
+  return {"leg", Scope::Frame, ValueType::Integer,
+          1,     "",           "leg of the ramp protocol (0 up, 1 down, 2 up, ...), -1 constant"};
 }
 Property trials_property() {
-  return {"mc_trials", Scope::Frame, ValueType::Integer, 1, "", "Monte Carlo trial moves of the tap"};
+  return {"mc_trials", Scope::Frame, ValueType::Integer,
+          1,           "",           "Monte Carlo trial moves of the tap"};
 }
 Property acceptance_property() {
-  return {"mc_acceptance", Scope::Frame, ValueType::Real, 1, "", "accepted fraction of the tap's trial moves"};
+  return {"mc_acceptance",
+          Scope::Frame,
+          ValueType::Real,
+          1,
+          "",
+          "accepted fraction of the tap's trial moves"};
 }
 
 RedepositionOptions redeposition_options(const Params& p) {
@@ -46,8 +55,8 @@ TapBox tap_box(const PluginContext& ctx) {
   const TapBox box{p.real("side") * p.real("radius"), p.real("radius"), p.choice<Sides>("sides")};
   if (box.side < 2.0 * box.radius) {
     std::ostringstream s;
-    s << ctx.param("side") << ": expected a box at least one diameter (2 R) wide, got " << p.real("side")
-      << " R";
+    s << ctx.param("side") << ": expected a box at least one diameter (2 R) wide, got "
+      << p.real("side") << " R";
     throw InputError(s.str());
   }
   return box;
@@ -63,16 +72,19 @@ EpsilonProtocol epsilon_protocol(const PluginContext& ctx) {
   const Params& p = ctx.params;
   if (p.choice<Protocol>("protocol") == Protocol::Constant)
     return EpsilonProtocol::constant(p.real("epsilon"), p.integer("taps"));
-  const double lo = p.real("ramp_root_min"), hi = p.real("ramp_root_max"), step = p.real("ramp_root_step");
+  const double lo = p.real("ramp_root_min"), hi = p.real("ramp_root_max"),
+               step = p.real("ramp_root_step");
   if (!(hi >= lo + step)) {
     std::ostringstream s;
-    s << ctx.param("ramp_root_max") << ": expected at least ramp_root_min + ramp_root_step = " << lo + step
-      << " (one step), got " << hi;
+    s << ctx.param("ramp_root_max")
+      << ": expected at least ramp_root_min + ramp_root_step = " << lo + step << " (one step), got "
+      << hi;
     throw InputError(s.str());
   }
   if (hi * hi > 1.0) {
     std::ostringstream s;
-    s << ctx.param("ramp_root_max") << ": expected at most 1 (epsilon at most 1, as for epsilon), got " << hi;
+    s << ctx.param("ramp_root_max")
+      << ": expected at most 1 (epsilon at most 1, as for epsilon), got " << hi;
     throw InputError(s.str());
   }
   return EpsilonProtocol::ramp(lo, hi, step, p.integer("ramp_taps_per_step"),
@@ -106,19 +118,24 @@ Schema schema() {
   s.choice<Protocol>("protocol", Protocol::Constant,
                      "constant: taps taps at epsilon; ramp: sqrt(epsilon) stepped from "
                      "ramp_root_min to ramp_root_max and back (the paper's Fig. 4)");
-  s.real("epsilon", 0.05, "constant protocol: tap dilation, centre heights z -> z (1 + epsilon)").range(0.0, 1.0);
+  s.real("epsilon", 0.05, "constant protocol: tap dilation, centre heights z -> z (1 + epsilon)")
+      .range(0.0, 1.0);
   s.integer("taps", 100, "constant protocol: taps after the start").min(0);
   s.real("ramp_root_min", 0.025, "ramp protocol: lowest sqrt(epsilon)").range(0.0, 1.0);
   s.real("ramp_root_max", 0.4, "ramp protocol: highest sqrt(epsilon)").range(0.0, 1.0);
-  s.real("ramp_root_step", 0.025, "ramp protocol: step of sqrt(epsilon) (the paper's 0.025)").range(1e-6, 1.0);
-  s.integer("ramp_taps_per_step", 4000, "ramp protocol: taps at each value (the paper's 4000)").min(1);
-  s.integer("ramp_legs", 3, "ramp protocol: legs, alternately up and down (the paper's up, down, up: 3)")
+  s.real("ramp_root_step", 0.025, "ramp protocol: step of sqrt(epsilon) (the paper's 0.025)")
+      .range(1e-6, 1.0);
+  s.integer("ramp_taps_per_step", 4000, "ramp protocol: taps at each value (the paper's 4000)")
+      .min(1);
+  s.integer("ramp_legs", 3,
+            "ramp protocol: legs, alternately up and down (the paper's up, down, up: 3)")
       .range(1, 1000);
   s.integer("save_every", 10,
             "save every k-th tap, the start (tap 0) and, in a ramp, the last tap at each value")
       .min(1);
   s.boolean("log_frames", true, "also save taps spaced evenly in log(tap), ten per decade");
-  s.real("d_max", 0.2, "largest Monte Carlo displacement, in units of R (the paper's R/5)").range(1e-6, 2.0);
+  s.real("d_max", 0.2, "largest Monte Carlo displacement, in units of R (the paper's R/5)")
+      .range(1e-6, 2.0);
   s.real("theta0", std::numbers::pi / 4.0,
          "width of the polar-angle density exp(-(theta/theta0)^2) of a trial move, theta from "
          "straight down, a density in theta (the paper's pi/4)")
@@ -133,7 +150,8 @@ Schema schema() {
             "a tap's redeposition stops after this many checks even if <Z> still moves (such taps "
             "are counted in unconverged_taps)")
       .min(1);
-  s.integer("replica", 0, "independent copy of the run (sweep it to average over realizations)").min(0);
+  s.integer("replica", 0, "independent copy of the run (sweep it to average over realizations)")
+      .min(0);
   return s;
 }
 
@@ -149,9 +167,10 @@ TapSource::TapSource(const PluginContext& ctx)
       initial_param_(ctx.param("initial_file")),
       initial_frame_(ctx.params.integer("initial_frame")),
       n_(ctx.params.integer("N")),
-      per_tap_(ctx.stream_table("per_tap", Table({"tap", "epsilon", "leg", "mean_height", "mc_trials", "mc_acceptance"},
-                                                 "every tap: its epsilon and ramp leg, <Z> after "
-                                                 "redeposition, trial moves, accepted fraction"))) {}
+      per_tap_(ctx.stream_table(
+          "per_tap", Table({"tap", "epsilon", "leg", "mean_height", "mc_trials", "mc_acceptance"},
+                           "every tap: its epsilon and ramp leg, <Z> after "
+                           "redeposition, trial moves, accepted fraction"))) {}
 
 FrameContent TapSource::content() const {
   return {.dim = 3,
@@ -161,7 +180,8 @@ FrameContent TapSource::content() const {
 
 void TapSource::start() {
   if (!initial_file_.empty()) {
-    centres_ = read_saved_packing(initial_param_, initial_file_, initial_frame_, box_, static_cast<long>(n_));
+    centres_ = read_saved_packing(initial_param_, initial_file_, initial_frame_, box_,
+                                  static_cast<long>(n_));
     return;
   }
   Deposition deposition(box_);
@@ -178,9 +198,11 @@ void TapSource::to_frame(Frame& frame, const TapStats& stats, const EpsilonAt& e
     top = std::max(top, centres_[static_cast<std::size_t>(k)].z() + box_.radius);
   }
   frame.radius().setConstant(box_.radius);
-  frame.container = Container::open_top_box(3, Eigen::Vector3d::Zero(), Eigen::Vector3d(box_.side, box_.side, top));
+  frame.container = Container::open_top_box(3, Eigen::Vector3d::Zero(),
+                                            Eigen::Vector3d(box_.side, box_.side, top));
   if (box_.periodic()) {
-    for (int a = 0; a < 2; ++a) frame.container.boundary[a] = {Boundary::Periodic, Boundary::Periodic};
+    for (int a = 0; a < 2; ++a)
+      frame.container.boundary[a] = {Boundary::Periodic, Boundary::Periodic};
   }
   frame.step = tap_;
   frame.time = static_cast<double>(tap_);  // the scene's clock counts taps
@@ -189,16 +211,17 @@ void TapSource::to_frame(Frame& frame, const TapStats& stats, const EpsilonAt& e
   frame.set_observable(leg_property(), static_cast<std::int64_t>(e.leg));
   frame.set_observable(mean_height_property(), mean_height(centres_));
   frame.set_observable(trials_property(), stats.trials);
-  frame.set_observable(acceptance_property(),
-                       stats.trials ? static_cast<double>(stats.accepted) / static_cast<double>(stats.trials)
-                                    : std::nan(""));
+  frame.set_observable(acceptance_property(), stats.trials ? static_cast<double>(stats.accepted) /
+                                                                 static_cast<double>(stats.trials)
+                                                           : std::nan(""));
 }
 
 void TapSource::record(const TapStats& stats, const EpsilonAt& e) {
   const double acceptance =
-      stats.trials ? static_cast<double>(stats.accepted) / static_cast<double>(stats.trials) : std::nan("");
-  per_tap_.add_row({static_cast<double>(tap_), e.epsilon, static_cast<double>(e.leg), mean_height(centres_),
-                    static_cast<double>(stats.trials), acceptance});
+      stats.trials ? static_cast<double>(stats.accepted) / static_cast<double>(stats.trials)
+                   : std::nan("");
+  per_tap_.add_row({static_cast<double>(tap_), e.epsilon, static_cast<double>(e.leg),
+                    mean_height(centres_), static_cast<double>(stats.trials), acceptance});
   unconverged_ += !stats.converged;
 }
 

@@ -10,11 +10,11 @@
 
 #include "deposit.hpp"
 #include "epsilon_protocol.hpp"
+#include "granpipe/container.hpp"
+#include "granpipe/frame.hpp"
 #include "redeposition.hpp"
 #include "tap_schedule.hpp"
 #include "trial_move.hpp"
-#include "granpipe/container.hpp"
-#include "granpipe/frame.hpp"
 
 namespace granpipe::spheres3d_tap {
 namespace {
@@ -24,7 +24,8 @@ constexpr double kR = 1.0;
 TapBox box(double side, Sides sides) { return TapBox{side, kR, sides}; }
 
 // Minimum-image separation b - a on the box.
-Eigen::Vector3d separation(const TapBox& b, const Eigen::Vector3d& from, const Eigen::Vector3d& to) {
+Eigen::Vector3d separation(const TapBox& b, const Eigen::Vector3d& from,
+                           const Eigen::Vector3d& to) {
   Eigen::Vector3d d = to - from;
   if (b.periodic())
     for (int a = 0; a < 2; ++a) d[a] -= b.side * std::round(d[a] / b.side);
@@ -108,7 +109,8 @@ bool held_by(const TapBox& b, const std::vector<Eigen::Vector3d>& c, std::size_t
     }
   }
   const Eigen::Vector3d force = normals.fullPivLu().solve(Eigen::Vector3d::UnitZ());
-  return (normals * force - Eigen::Vector3d::UnitZ()).norm() < 1e-9 && (force.array() > -1e-12).all();
+  return (normals * force - Eigen::Vector3d::UnitZ()).norm() < 1e-9 &&
+         (force.array() > -1e-12).all();
 }
 
 void expect_deposited_packing(const TapBox& b, int n, std::uint64_t seed) {
@@ -124,7 +126,8 @@ void expect_deposited_packing(const TapBox& b, int n, std::uint64_t seed) {
       EXPECT_NEAR(c[i].z(), kR, 1e-9 * kR);
       continue;
     }
-    ASSERT_NE(s[2], partner::none) << "sphere " << i << " off the bottom with fewer than three supports";
+    ASSERT_NE(s[2], partner::none)
+        << "sphere " << i << " off the bottom with fewer than three supports";
     EXPECT_TRUE(held_by(b, c, i, s)) << "sphere " << i;
   }
 }
@@ -173,7 +176,8 @@ TEST(Deposition, TheSameSeedGivesTheSameBits) {
 // Pearson's chi^2 of counts against expected counts.
 double chi2(const std::vector<double>& counts, const std::vector<double>& expected) {
   double sum = 0.0;
-  for (std::size_t k = 0; k < counts.size(); ++k) sum += std::pow(counts[k] - expected[k], 2) / expected[k];
+  for (std::size_t k = 0; k < counts.size(); ++k)
+    sum += std::pow(counts[k] - expected[k], 2) / expected[k];
   return sum;
 }
 // chi^2 above this for 19 degrees of freedom happens with probability 0.001.
@@ -186,7 +190,8 @@ TEST(TrialMove, ThePolarAngleHasTheDensityOfEquationOneTruncatedAtNinetyDegrees)
   const int n = 200000;
   const double width = std::numbers::pi / 2.0 / kBins;
   std::vector<double> counts(kBins, 0.0), expected(kBins, 0.0);
-  for (int k = 0; k < n; ++k) counts[std::min(kBins - 1, static_cast<int>(move.polar(rng) / width))] += 1.0;
+  for (int k = 0; k < n; ++k)
+    counts[std::min(kBins - 1, static_cast<int>(move.polar(rng) / width))] += 1.0;
   // exp(-(t/t0)^2) integrated over each bin: (sqrt(pi)/2) t0 (erf(b/t0) - erf(a/t0)).
   double total = 0.0;
   for (int b = 0; b < kBins; ++b) {
@@ -236,7 +241,8 @@ void expect_no_overlap_inside(const TapBox& b, const std::vector<Eigen::Vector3d
         ASSERT_LE(c[i][a], b.side - kR);
       }
     }
-    for (std::size_t j = 0; j < i; ++j) ASSERT_GE(separation(b, c[i], c[j]).norm(), 2.0 * kR) << i << " " << j;
+    for (std::size_t j = 0; j < i; ++j)
+      ASSERT_GE(separation(b, c[i], c[j]).norm(), 2.0 * kR) << i << " " << j;
   }
 }
 
@@ -286,7 +292,8 @@ TEST(SaveSchedule, SavesTenTapsPerDecadeAndEveryKth) {
   std::vector<std::int64_t> saved;
   for (std::int64_t t = 0; t <= 100; ++t)
     if (log_only.saves(t)) saved.push_back(t);
-  const std::vector<std::int64_t> expected{0, 1, 2, 3, 4, 6, 7, 8, 10, 13, 16, 20, 26, 32, 40, 51, 64, 80, 100};
+  const std::vector<std::int64_t> expected{0,  1,  2,  3,  4,  6,  7,  8,  10, 13,
+                                           16, 20, 26, 32, 40, 51, 64, 80, 100};
   EXPECT_EQ(saved, expected);
   const SaveSchedule every{25, false};
   for (std::int64_t t = 0; t <= 100; ++t) EXPECT_EQ(every.saves(t), t % 25 == 0) << t;
