@@ -150,7 +150,8 @@ Schema schema() {
   bed.integer("small", 0,
               "spheres of species 0 on a loose lattice in a cylinder standing on z = 0 (stacked "
               "square layers, alternate layers shifted, nudged sideways at random); 0: start "
-              "from initial_file").range(0, 2e7);
+              "from initial_file; at most 5e6, about 10 GB (each sphere needs about 2 kB, "
+              "and a bed this machine cannot hold is refused)").range(0, 5e6);
   bed.real("diameter", 1.0, "the small spheres' diameter").min(0.0, true).unit("length");
   bed.real("intruder_diameter", 0.0,
            "diameter of an intruder (species 1) on the axis just above the base, the lattice "

@@ -13,6 +13,7 @@
 
 #include "blow_up.hpp"
 #include "dem_source.hpp"
+#include "memory_check.hpp"
 #include "model.hpp"
 #include "granpipe/format_number.hpp"
 #include "granpipe/frame_store.hpp"
@@ -353,4 +354,20 @@ TEST(DemSource, ASphereDroppedFromFarTooHighIsStoppedAtTheBase) {
     EXPECT_EQ(frames, 1);
     fs::remove(file);
   }
+}
+
+TEST(DemSource, AScenePastTheAvailableMemoryIsRefusedBeforeAnythingIsAllocated) {
+  const double available = dem::available_memory();
+  ASSERT_GT(available, 0.0);  // /proc/meminfo
+  try {
+    dem::check_memory("params.bed.small", 1e15);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_EQ(m.rfind("params.bed.small: 1e+15 spheres need about 2e+09 GB (2 kB each), this "
+                      "machine has ", 0),
+              0u) << m;
+    EXPECT_NE(m.find(" GB available: expected at most "), std::string::npos) << m;
+  }
+  EXPECT_NO_THROW(dem::check_memory("params.bed.small", 1000.0));
 }
