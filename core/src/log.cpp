@@ -10,6 +10,14 @@ void Log::open_file(const std::string& path) {
   if (file_.is_open()) file_.close();
   file_.clear();
   file_.open(path, std::ios::app);
+  for (const std::string& line : pending_) file_ << line << '\n';
+  file_ << std::flush;
+  pending_.clear();
+}
+
+void Log::close_file() {
+  std::lock_guard lock(mutex_);
+  file_.close();
 }
 
 void Log::info(const std::string& message) { write(message); }
@@ -19,7 +27,11 @@ void Log::warn(const std::string& message) { write("warning: " + message); }
 void Log::write(const std::string& line) {
   std::lock_guard lock(mutex_);
   if (!quiet_) std::cerr << line << '\n';
-  if (file_.is_open()) file_ << line << '\n' << std::flush;
+  if (file_.is_open()) {
+    file_ << line << '\n' << std::flush;
+  } else {
+    pending_.push_back(line);
+  }
 }
 
 }  // namespace granpipe

@@ -162,8 +162,11 @@ ParamValue convert(const nlohmann::json& v, const ParamSpec& s, const JsonLocati
       if (p.is_relative() && !std::filesystem::exists(p) && std::filesystem::exists(base_dir / p))
         p = base_dir / p;
       if (!std::filesystem::is_regular_file(p)) {
-        throw InputError(at.str() + ": expected an existing file, got " + json_brief(v) +
-                         " (no such file)");
+        const char* found = std::filesystem::is_directory(p)  ? "a directory"
+                            : std::filesystem::exists(p)       ? "not a regular file"
+                                                               : "no such file";
+        throw InputError(at.str() + ": expected an existing file, got " + json_brief(v) + " (" +
+                         found + ")");
       }
       return p.string();
     }

@@ -321,6 +321,12 @@ std::string utc_now() {
   return buf;
 }
 
+// Closes the run's log when the run ends, whichever way.
+struct ClosesLog {
+  Log& log;
+  ~ClosesLog() { log.close_file(); }
+};
+
 }  // namespace
 
 void Pipeline::check(Log& log) const {
@@ -364,6 +370,8 @@ RunSummary Pipeline::run(const RunOptions& options, Log& log) const {
   try {
     for (std::size_t k = 0; k < p.points.size(); ++k) create_point_directory(point_directory(p, k, dir));
     log.open_file((dir / "run.log").string());
+    // The next run's early lines (its plugins' checks) must not land in this run's log.
+    const ClosesLog closing{log};
     const std::string resolved = resolved_json();
     const auto provenance = [&](double seconds, bool complete) {
       return Provenance{p.name, resolved, version(), git_commit(), p.seed, threads, seconds, started,

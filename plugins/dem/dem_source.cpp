@@ -1,14 +1,18 @@
 #include "dem_source.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <numbers>
 #include <sstream>
+#include <string>
 
 #include "diagnostics.hpp"
 #include "frame_output.hpp"
+#include "kernels.hpp"
+#include "scene_checks.hpp"
 #include "start.hpp"
 #include "time_step.hpp"
 
@@ -79,10 +83,29 @@ Settings settings_of(const PluginContext& ctx) {
   return s;
 }
 
+// The fastest two particles of the start can approach each other at the sum of their
+// speeds (one against a wall, at less).
+double fastest_start_approach(const InitialState& s) {
+  double first = 0.0, second = 0.0;
+  for (Eigen::Index i = 0; i < s.velocity.cols(); ++i) {
+    const double v = s.velocity.col(i).norm();
+    if (v > first) {
+      second = first;
+      first = v;
+    } else if (v > second) {
+      second = v;
+    }
+  }
+  return first + second;
+}
+
 // The fastest normal approach the scene can produce, for the Hertz contact time and the
-// blow-up bound: the walls' peak speed plus a free fall across the start (the particles
-// and the walls around them, so that a sphere started above the base counts its drop).
+// blow-up bound: the start's fastest approach, the walls' peak speed, and a free fall
+// across the start (the particles and the walls around them, so that a sphere started
+// above the base counts its drop). A scene where nothing moves gets a slow floor: the
+// Hertz contact time needs a speed > 0.
 double impact_speed(const Start& start, const Drive& drive, const Settings& s) {
+  constexpr double kSlowest = 1e-3;
   double drop = 0.0;
   for (int a = 0; a < 3; ++a) {
     const auto x = start.state.position.row(a);
@@ -92,8 +115,9 @@ double impact_speed(const Start& start, const Drive& drive, const Settings& s) {
     const double hi = side[1] == Boundary::Wall ? std::max(x.maxCoeff(), start.container.hi[a]) : x.maxCoeff();
     drop = std::max(drop, hi - lo);
   }
-  return std::abs(drive.amplitude * drive.angular_frequency) +
-         std::sqrt(2.0 * s.gravity.norm() * drop) + 1e-3;
+  return std::max(kSlowest, fastest_start_approach(start.state) +
+                               std::abs(drive.amplitude * drive.angular_frequency) +
+                               std::sqrt(2.0 * s.gravity.stableNorm() * drop));
 }
 
 // The kinetic energy no sound run reaches: every particle ten times faster than the fastest
@@ -126,7 +150,8 @@ Schema schema() {
   bed.integer("small", 0,
               "spheres of species 0 on a loose lattice in a cylinder standing on z = 0 (stacked "
               "square layers, alternate layers shifted, nudged sideways at random); 0: start "
-              "from initial_file").range(0, 2e7);
+              "from initial_file; at most 5e6, about 10 GB (each sphere needs about 2 kB, "
+              "and a bed this machine cannot hold is refused)").range(0, 5e6);
   bed.real("diameter", 1.0, "the small spheres' diameter").min(0.0, true).unit("length");
   bed.real("intruder_diameter", 0.0,
            "diameter of an intruder (species 1) on the axis just above the base, the lattice "
@@ -136,7 +161,9 @@ Schema schema() {
   bed.real("jitter", 0.01, "largest sideways nudge, in small diameters").min(0.0);
   s.object("bed", bed, "a generated start (instead of initial_file); the seed is the pipeline's");
   Schema species;
-  species.real("density", 1.91, "mass per unit volume").min(0.0, true).unit("mass/length^3");
+  // Any unit system's densities lie within the range; far outside it the masses, and with
+  // them the contact times, leave the range of doubles.
+  species.real("density", 1.91, "mass per unit volume").range(1e-20, 1e20).unit("mass/length^3");
   species.boolean("fixed", false,
                   "held by the container: moves rigidly with it (the paper's preparation fixes "
                   "the large sphere at the bottom)");
@@ -183,6 +210,9 @@ DemSource::DemSource(const PluginContext& ctx) : log_(ctx.log), progress_(ctx.pr
   const Settings settings = settings_of(ctx);
   const Drive drive = drive_of(ctx.params);
   const WallSet walls(start.container, drive);
+  const Scene scene{model, walls, start.state, settings.law};
+  check_gravity(ctx, scene, settings.gravity);
+  check_drive(ctx, scene, drive, settings.dt);
   const double speed = impact_speed(start, drive, settings);
   check_dt(ctx, smallest_contact_time(model, walls, start.state.radius, start.state.species,
                                       settings.law, speed));
@@ -248,6 +278,12 @@ std::int64_t DemSource::next_frame_step() const {
 bool DemSource::next(Frame& frame) {
   const std::int64_t due = next_frame_step();
   if (due < 0) return false;
+  if (!started_) {
+    // Speeds depend on the instruction set (docs/benchmarks.md): the log says which ran.
+    log_.info(std::string("dem: force loops compiled for ") + kernel_instruction_set() + ", " +
+              std::to_string(engine_->particles().size()) + " particles, " +
+              std::to_string(engine_->settings().threads) + " thread(s)");
+  }
   started_ = true;
   run_to(due);
   fill_frame(*engine_, frame);

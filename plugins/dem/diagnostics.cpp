@@ -82,21 +82,6 @@ std::optional<std::int32_t> first_non_finite(const Engine& e) {
   return std::nullopt;
 }
 
-std::optional<std::int32_t> first_escaped(const Engine& e) {
-  const Particles& p = e.particles();
-  const Eigen::Vector3d offset = e.wall_offset();
-  for (int i = 0; i < p.size(); ++i) {
-    for (int slot = 0; slot < e.walls().count(); ++slot) {
-      Vec3 n;
-      // The centre is past the wall when the overlap exceeds the radius.
-      if (e.walls().overlap(slot, p.x.col(i), p.radius[i], offset, n) > p.radius[i]) {
-        return p.tag[i];
-      }
-    }
-  }
-  return std::nullopt;
-}
-
 void check_health(const Engine& e, double max_kinetic_energy) {
   const auto advice = [&] {
     std::ostringstream s;
@@ -107,10 +92,6 @@ void check_health(const Engine& e, double max_kinetic_energy) {
   if (const auto tag = first_non_finite(e)) {
     throw BlowUp(where(e) + ": particle " + std::to_string(*tag) +
                  " has a non-finite position or velocity: the run blew up" + advice());
-  }
-  if (const auto tag = first_escaped(e)) {
-    throw BlowUp(where(e) + ": particle " + std::to_string(*tag) +
-                 " went through a wall: the run blew up" + advice());
   }
   if (!std::isfinite(max_kinetic_energy)) return;  // no bound: no sum to take
   const double kinetic = kinetic_energy(e.particles());

@@ -1,13 +1,14 @@
 #pragma once
 // Checks a caller runs between steps (never inside the hot loop): energies, and the
-// blow-ups that must stop a run with a clear message (a NaN, a particle out of the
-// container, an energy explosion).
+// blow-ups that must stop a run with a clear message (a NaN, an energy explosion). A
+// particle going through a wall is stopped by the engine itself, in the step it happens,
+// as an overlap past the limit (overlap_limit.hpp).
 #include <cstdint>
 #include <optional>
 #include <string>
 
+#include "blow_up.hpp"
 #include "engine.hpp"
-#include "granpipe/errors.hpp"
 
 namespace granpipe::dem {
 
@@ -27,19 +28,9 @@ Energy energy(const Engine& engine);
 // of the elastic terms.
 double kinetic_energy(const Particles& particles);
 
-// A run that blew up. An InputError: with validated parameters it is the time step (or
-// the initial overlaps) that the user must change, and the message says so.
-class BlowUp : public InputError {
- public:
-  using InputError::InputError;
-};
-
 // The tag of a particle whose position, velocity or angular velocity is not finite.
 std::optional<std::int32_t> first_non_finite(const Engine& engine);
-// The tag of a particle whose centre is behind an active wall (past a plane, or outside
-// the cylinder): it has gone through.
-std::optional<std::int32_t> first_escaped(const Engine& engine);
-// Throws BlowUp when a particle is not finite, has escaped, or the kinetic energy exceeds
+// Throws BlowUp when a particle is not finite or the kinetic energy exceeds
 // max_kinetic_energy; the message names the step, the time, the particle and dt against
 // the contact time.
 void check_health(const Engine& engine, double max_kinetic_energy);

@@ -7,7 +7,10 @@
 #include <sstream>
 #include <string>
 
+#include "blow_up.hpp"
+#include "deep_overlap.hpp"
 #include "granpipe/errors.hpp"
+#include "overlap_limit.hpp"
 
 namespace granpipe::dem {
 
@@ -72,6 +75,17 @@ Engine::Engine(const Model& model, const WallSet& walls, const Settings& setting
   refuse_coincident_centres();
   pin(time(), time());
   evaluate_forces(0.0, 0.0, time(), true);
+}
+
+void Engine::stop_if_too_deep() const {
+  if (!(beyond_limit_ > 0.0)) return;
+  const DeepOverlap d = deepest_overlap(p_, list_, walls_, wall_offset());
+  std::ostringstream s;
+  s << "dem: step " << step_ << " (t = " << time() << "): " << describe(d)
+    << ": the contacts are too soft for the speed of impact, or dt too long; raise k_n, "
+       "lower the speeds or reduce dt (now "
+    << settings_.dt << ")";
+  throw BlowUp(s.str());
 }
 
 void Engine::refuse_coincident_centres() const {
@@ -226,6 +240,7 @@ ForceContext Engine::force_context(double dt_history, double velocity_time) {
   c.background_damping = settings_.background_damping;
   c.air_damping = settings_.air_damping;
   c.dt_history = dt_history;
+  c.overlap_limit = kMaxOverlapFraction;
   c.threads = settings_.threads;
   c.force = p_.force.data();
   c.spin_sum = spin_sum_.data();
@@ -263,7 +278,7 @@ void Engine::evaluate_forces(double dt_history, double kick_dt, double velocity_
       tangential_record_ptr_[s] = wall_tangential_[s].data();
     }
   }
-  kernels_.forces(force_context(dt_history, velocity_time));
+  beyond_limit_ = kernels_.forces(force_context(dt_history, velocity_time));
   if (recording_) recorded_step_ = step_;
   if (finish) kernels_.finish_step(kick_context(kick_dt));
 }
@@ -302,13 +317,16 @@ void Engine::run(std::int64_t steps) {
     }
     evaluate_forces(dt, dt, time() - 0.5 * dt, false);
     profile_.forces += timer.lap();
-    if (s + 1 == steps) {
+    // A contact past the limit ends the run with this step completed.
+    if (s + 1 == steps || beyond_limit_ > 0.0) {
       kernels_.finish_step(kick_context(dt));
       pin(time(), time());
-    } else {
-      moved = kernels_.finish_and_start(kick_context(dt));
-      moved = std::max(moved, pin(time() + dt, time() + 0.5 * dt));
+      profile_.integrate += timer.lap();
+      stop_if_too_deep();
+      return;
     }
+    moved = kernels_.finish_and_start(kick_context(dt));
+    moved = std::max(moved, pin(time() + dt, time() + 0.5 * dt));
     profile_.integrate += timer.lap();
   }
 }

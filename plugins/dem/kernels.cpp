@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 
 #include "lanes.hpp"
 #include "walls.hpp"
@@ -34,13 +35,15 @@ template <bool kFriction>
 // Adds particle i's wall forces to f and its wall contacts' n x F_t to spin_sum. Most
 // particles touch no wall, so everything a contact needs (the mass, the material, the
 // normal) is made only once the overlap says it touches.
+// beyond: the running maximum of overlap - overlap_limit x radius.
 template <class Law, bool kFriction, bool kRotation>
 [[gnu::always_inline]] inline void add_wall_forces(const ForceContext& c, int i, const Vec4& xi,
                                                    const Vec4& vi, const Vec4& wi, Vec4& f,
-                                                   Vec4& spin_sum) {
+                                                   Vec4& spin_sum, double& beyond) {
   const double ai = c.radius[i];
   const Vec4 wall_velocity = load3(c.wall_velocity.data());
   const auto touch = [&](int slot, const Vec4& n, double delta) __attribute__((always_inline)) {
+    beyond = std::max(beyond, delta - c.overlap_limit * ai);
     double* u = kFriction ? c.wall_history[slot] + 3 * static_cast<std::ptrdiff_t>(i) : nullptr;
     const Vec4 spin = kRotation ? Vec4(ai * wi) : Vec4::Zero();
     const LoopMaterial& material = c.wall_material[slot * c.species_count + c.species[i]];
@@ -240,11 +243,13 @@ struct PairMaterials {
   }
 };
 
-// The second pass: the touching pairs' forces, a batch of lanes at a time.
+// The second pass: the touching pairs' forces, a batch of lanes at a time. beyond: the
+// running maximum, per lane, of overlap - overlap_limit x the smaller radius (the padding
+// repeats a listed pair, so it adds nothing).
 template <class Law, bool kFriction, bool kRotation>
 [[gnu::always_inline]] inline void resolve_touching(const ForceContext& c,
                                                     const PairMaterials& materials,
-                                                    TouchingPairs& t) {
+                                                    TouchingPairs& t, lanes::Reals& beyond) {
   using lanes::Indices;
   using lanes::load;
   using lanes::Reals;
@@ -253,6 +258,7 @@ template <class Law, bool kFriction, bool kRotation>
     const Indices i = load(t.i + b), j = load(t.j + b);
     const Reals ai = lanes::gather(c.radius, i), aj = lanes::gather(c.radius, j);
     const Reals r = lanes::sqrt(load(t.r2 + b)), contact = ai + aj;
+    beyond = lanes::max(beyond, (contact - r) - c.overlap_limit * lanes::min(ai, aj));
     // One division, not three (divisions are the slowest lane operations).
     const Vec n = (1.0 / r) * Vec{load(t.dx + b), load(t.dy + b), load(t.dz + b)};
     Vec spin{};
@@ -315,15 +321,16 @@ template <bool kFriction, bool kRotation>
   }
 }
 
-// Particle i's own forces: background and air damping, then its walls.
+// Particle i's own forces: background and air damping, then its walls (beyond: as in
+// add_wall_forces).
 template <class Law, bool kFriction, bool kRotation>
-[[gnu::always_inline]] inline void own_forces(const ForceContext& c, int i) {
+[[gnu::always_inline]] inline void own_forces(const ForceContext& c, int i, double& beyond) {
   const Vec4 xi = load4(c.x, i), vi = load4(c.v, i);
   const Vec4 wi = kRotation ? load4(c.omega, i) : Vec4::Zero();
   const Vec4 wall_velocity = load3(c.wall_velocity.data());
   Vec4 fi = -c.background_damping * vi - c.air_damping * (vi - wall_velocity);
   Vec4 ci = Vec4::Zero();
-  add_wall_forces<Law, kFriction, kRotation>(c, i, xi, vi, wi, fi, ci);
+  add_wall_forces<Law, kFriction, kRotation>(c, i, xi, vi, wi, fi, ci, beyond);
   store(c.force, i, fi);
   if constexpr (kRotation) store(c.spin_sum, i, ci);
 }
@@ -345,21 +352,29 @@ inline int share_start(const ForceContext& c, int part) {
 // (Each thread works on its own copy of the context: the vector stores may alias
 // anything whose address is known elsewhere, which would make every access to a field a
 // reload.)
+// The deepest contact's overlap beyond the limit is a maximum over threads, which does not
+// depend on the split.
 template <class Law, bool kFriction, bool kRotation>
-void forces(const ForceContext& context) {
+double forces(const ForceContext& context) {
   const ForceContext c = context;
-#pragma omp parallel for schedule(static, 1) num_threads(c.threads) firstprivate(c)
+  constexpr double kNone = -std::numeric_limits<double>::infinity();
+  double deepest = kNone;
+#pragma omp parallel for schedule(static, 1) num_threads(c.threads) firstprivate(c) reduction(max : deepest)
   for (int part = 0; part < c.threads; ++part) {
     const int p0 = share_start(c, part), p1 = share_start(c, part + 1);
-    for (int i = p0; i < p1; ++i) own_forces<Law, kFriction, kRotation>(c, i);
+    double walls = kNone;
+    for (int i = p0; i < p1; ++i) own_forces<Law, kFriction, kRotation>(c, i, walls);
     TouchingPairs touching;
     const PairMaterials materials(c);
+    lanes::Reals pairs = lanes::splat(kNone);
     for (std::int32_t k0 = c.first[p0]; k0 < c.first[p1]; k0 += kBlock) {
       find_touching<kFriction>(c, k0, std::min(k0 + kBlock, c.first[p1]), touching);
-      resolve_touching<Law, kFriction, kRotation>(c, materials, touching);
+      resolve_touching<Law, kFriction, kRotation>(c, materials, touching, pairs);
       write_touching<kFriction, kRotation>(c, touching);
     }
+    deepest = std::max({deepest, walls, lanes::max_of(pairs)});
   }
+  return deepest;
 }
 
 // Particle p's force and spin sum with its reactions gathered (in pair order), their
@@ -479,6 +494,16 @@ Kernels kernels_of_law(bool friction, bool rotation) {
 }
 
 }  // namespace
+
+const char* kernel_instruction_set() {
+#if defined(__AVX512F__)
+  return "AVX-512";
+#elif defined(__AVX2__)
+  return "AVX2";
+#else
+  return "baseline";
+#endif
+}
 
 Kernels select_kernels(ContactLaw law, bool friction, bool rotation) {
   return law == ContactLaw::Linear ? kernels_of_law<LinearLaw>(friction, rotation)

@@ -58,6 +58,9 @@ struct ForceContext {
   double background_damping;
   double air_damping;  // on the slip velocity against wall_velocity
   double dt_history;
+  // The deepest overlap a sound contact reaches, as a fraction of the smaller radius (of
+  // the particle, against a wall): the loop returns how far the deepest contact goes past it.
+  double overlap_limit;
   int threads;
   // Out: force and sum of n x F_t per particle (own pairs and walls only).
   double *force, *spin_sum;
@@ -77,7 +80,11 @@ struct KickContext {
 };
 
 struct Kernels {
-  void (*forces)(const ForceContext&);
+  // Returns the largest overlap - overlap_limit x (smaller) radius over the contacts, a
+  // length: > 0 when a contact went deeper than a sound run allows. Taken as a running
+  // maximum per lane and thread, it costs a few operations per batch of pairs and changes
+  // no force.
+  double (*forces)(const ForceContext&);
   // The end of a step: reactions added to force/torque (their slots cleared), then
   // v += dt/2 a (w likewise).
   void (*finish_step)(const KickContext&);
@@ -90,6 +97,11 @@ struct Kernels {
   double (*finish_and_start)(const KickContext&);
   int reaction_stride;
 };
+
+// The instruction set the loops were compiled for (CMakeLists.txt picks the widest the
+// build machine runs): "AVX-512", "AVX2" or "baseline". Speeds depend on it, so runs say
+// which one ran.
+const char* kernel_instruction_set();
 
 // The kernels of one combination; friction=false with rotation=true is served by the
 // frictionless kernels (no tangential force, so no torque).

@@ -86,6 +86,14 @@ inline Reals sqrt(const Reals& x) {
 }
 
 inline Reals abs(const Reals& x) { return x < 0.0 ? -x : x; }
+inline Reals min(const Reals& a, const Reals& b) { return a < b ? a : b; }
+inline Reals max(const Reals& a, const Reals& b) { return a > b ? a : b; }
+// The largest lane.
+inline double max_of(const Reals& x) {
+  double m = x[0];
+  for (int l = 1; l < kWidth; ++l) m = x[l] > m ? x[l] : m;
+  return m;
+}
 
 // A 3-vector per lane.
 struct Vec {

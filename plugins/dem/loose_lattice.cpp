@@ -23,8 +23,7 @@ void check(const LooseLattice& spec) {
       << a << ", spacing " << s << ", jitter " << spec.jitter;
     throw InputError(m.str());
   }
-  const double room = spec.cylinder_radius - a - spec.jitter - kClearance * a;
-  if (!(room >= 0.0) || spec.count < 0 || !(spec.intruder_radius < spec.cylinder_radius)) {
+  if (!(spec.cylinder_radius >= narrowest_cylinder_radius(a, spec.jitter)) || spec.count < 0 || !(spec.intruder_radius < spec.cylinder_radius)) {
     std::ostringstream m;
     m << "dem: loose lattice: no sphere of radius " << a << " (or intruder of radius "
       << spec.intruder_radius << ") fits in a cylinder of radius " << spec.cylinder_radius;
@@ -33,6 +32,10 @@ void check(const LooseLattice& spec) {
 }
 
 }  // namespace
+
+double narrowest_cylinder_radius(double radius, double jitter) {
+  return radius + jitter + kClearance * radius;
+}
 
 InitialState loose_lattice(const LooseLattice& spec) {
   check(spec);

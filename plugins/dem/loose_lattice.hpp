@@ -21,6 +21,9 @@ struct LooseLattice {
   std::uint64_t seed = 1;
 };
 
+// The narrowest cylinder that holds a sphere of this radius nudged by up to `jitter`.
+double narrowest_cylinder_radius(double radius, double jitter);
+
 // `count` spheres of species 0 (and the intruder, first), at rest. Throws InputError when
 // the spacing is not larger than a diameter plus twice the jitter, or when no sphere (or
 // not the intruder) fits in the cylinder.

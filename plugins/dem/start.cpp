@@ -3,8 +3,11 @@
 #include <string>
 
 #include "granpipe/errors.hpp"
+#include "granpipe/format_number.hpp"
 #include "granpipe/frame_store.hpp"
 #include "loose_lattice.hpp"
+#include "memory_check.hpp"
+#include "start_checks.hpp"
 
 namespace granpipe::dem {
 
@@ -19,9 +22,13 @@ Start start_from_file(const PluginContext& ctx, int species) {
     throw InputError(ctx.param("initial_frame") + ": expected a frame of " + reader.info().path +
                      " (it holds " + std::to_string(frames) + "), got " + std::to_string(index));
   }
-  Frame f = reader.read(index < 0 ? frames - 1 : static_cast<long>(index));
+  const long chosen = index < 0 ? frames - 1 : static_cast<long>(index);
+  Frame f = reader.read(chosen);
+  check_memory(ctx.param("initial_file") + ": " + reader.info().path, static_cast<double>(f.size()));
   f.check(reader.info().path + ": frame " + std::to_string(index));
   if (f.dim != 3) throw InputError(ctx.param("initial_file") + ": expected a 3D frame, got 2D");
+  check_start_frame(f, ctx.param("initial_file") + ": " + reader.info().path + ": frame " +
+                           std::to_string(chosen));
   InitialState s;
   s.position = f.position().matrix().transpose();
   s.radius = f.radius();
@@ -37,9 +44,35 @@ Start start_from_file(const PluginContext& ctx, int species) {
   return {std::move(s), f.container};
 }
 
+// The bed's refusals, each naming the parameter at fault (loose_lattice's own checks can
+// only name the bed as a whole).
+void check_bed(const PluginContext& ctx) {
+  const Params& b = ctx.params.object("bed");
+  const double d = b.real("diameter"), jitter = b.real("jitter");
+  const auto refuse = [&](const std::string& name, const std::string& expected) {
+    throw InputError(ctx.param("bed." + name) + ": expected " + expected + ", got " +
+                     format_number(b.real(name)));
+  };
+  if (!(b.real("spacing") > 1.0 + 2.0 * jitter)) {
+    refuse("spacing", "more than 1 + 2 jitter = " + format_number(1.0 + 2.0 * jitter) +
+                          " (room for the sideways nudges)");
+  }
+  const double narrowest = 2.0 * narrowest_cylinder_radius(0.5 * d, jitter * d);
+  if (!(b.real("cylinder_diameter") >= narrowest)) {
+    refuse("cylinder_diameter", "at least " + format_number(narrowest) + " (a sphere of diameter " +
+                                    format_number(d) + " and its nudge)");
+  }
+  if (!(b.real("intruder_diameter") < b.real("cylinder_diameter"))) {
+    refuse("intruder_diameter", "less than cylinder_diameter (" +
+                                    format_number(b.real("cylinder_diameter")) + ")");
+  }
+}
+
 // A loose lattice in an open-topped cylinder standing on z = 0 (loose_lattice.hpp).
 Start start_from_bed(const PluginContext& ctx, int species) {
+  check_bed(ctx);
   const Params& b = ctx.params.object("bed");
+  check_memory(ctx.param("bed.small"), static_cast<double>(b.integer("small")));
   const double d = b.real("diameter"), R = 0.5 * b.real("cylinder_diameter");
   if (b.real("intruder_diameter") > 0.0 && species < 2) {
     throw InputError(ctx.param("species") + ": expected a second species for the bed's intruder "

@@ -11,9 +11,10 @@ then 25000 timed ones, on 1 and then 2 threads or MPI processes. The runs interl
 shared machine hits all alike; a run that got under 90 % of its cores is flagged. An engine
 that is not installed is skipped, and the report says so: granpipe never needs them.
 
-Prints a Markdown report: particle-steps per second (and per core), the ratios, the speed-up
-from 1 to 2, the physics check (kinetic energy and highest particle, granpipe against the
-engines) and where the time goes in granpipe and in LAMMPS.
+Prints a Markdown report: the instruction set granpipe's force loops ran with (AVX-512, AVX2
+or baseline, from run.log: the speeds depend on it), particle-steps per second (and per
+core), the ratios, the speed-up from 1 to 2, the physics check (kinetic energy and highest
+particle, granpipe against the engines) and where the time goes in granpipe and in LAMMPS.
 """
 import argparse
 import gzip
@@ -247,9 +248,21 @@ def run_granpipe(work, build, cores, label, steps):
     cmd = [os.path.join(build, "bin", "granpipe"), "granpipe.json", "--threads", str(cores), "--quiet", "--out", "out",
            "--set", f"source.params.duration={steps * DT!r}"]
     record = run_timed(cmd, cwd, env, cores)
+    record["kernels"] = granpipe_kernels(os.path.join(cwd, "out", "run.log"))
     record["frames"] = granpipe_frames(os.path.join(cwd, "out", "frames.h5"))
     record["profile"] = granpipe_profile(os.path.join(cwd, "out", "results.h5"))
     return record
+
+
+def granpipe_kernels(run_log):
+    """The instruction set the dem force loops ran with, from run.log ("AVX-512", "AVX2",
+    "baseline"): the speeds depend on it."""
+    with open(run_log) as f:
+        for line in f:
+            found = re.match(r"dem: force loops compiled for ([^,]+),", line)
+            if found:
+                return found.group(1)
+    return "unknown (this build's dem source does not say)"
 
 
 def run_engine(work, engine, cores, label, args):
@@ -503,7 +516,11 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--build", default=os.path.join(REPO, "build"), help="granpipe build directory")
     parser.add_argument("--ref-dir", default=os.path.join(REPO, "..", "shared", "bench", "bnp"),
+<<<<<<< ours
                         help="folder with settled.data(.gz) (default: ../shared/bench/bnp from the project root)")
+=======
+                        help="folder with settled.data(.gz) (default: ../shared/bench/bnp, relative to the project root)")
+>>>>>>> theirs
     parser.add_argument("--rounds", type=int, default=1, help="repeat the interleaved runs")
     parser.add_argument("--warmup", type=int, default=5000, help="warm-up steps, also the frame and thermo interval")
     parser.add_argument("--timed", type=int, default=25000, help="timed steps (small values: a quick check of the script)")
@@ -520,8 +537,10 @@ def main():
             os.makedirs(work)
         write_inputs(work, args.ref_dir, engines, args.warmup + args.timed, args.warmup)
         records = run_all(work, args, engines)
+    kernels = sorted({r["kernels"] for r in records if r["engine"] == "granpipe"})
     print(f"\n{start}, {machine()}, load average {load:.2f} at the start, {os.getloadavg()[0]:.2f} at the end; "
-          f"N = {N_PARTICLES}, {args.warmup} warm-up + {args.timed} timed steps\n")
+          f"N = {N_PARTICLES}, {args.warmup} warm-up + {args.timed} timed steps; "
+          f"granpipe's force loops: {', '.join(kernels) or 'not run'}\n")
     report_speed(records, args)
     report_physics(records, args)
     report_profile(records, args)

@@ -790,15 +790,14 @@ TEST(DemInput, BadParticlesSettingsAndWallsAreRefusedByName) {
 
 TEST(DemHealth, ParticleThroughTheBaseOrNotFiniteStopsTheRun) {
   const dem::Model model = one_species(material(10.0, 0.0, 0.5));
-  // So fast that one step takes it through the base.
+  // So fast that one step takes it through the base: the engine stops it in that step.
   dem::Engine through(model, dem::WallSet(base_only(), {}), settings(1e-3),
                       spheres({{0, 0, 0.6}, {5, 0, 3}}, {{0, 0, -2000}, {0, 0, 0}}));
   EXPECT_NO_THROW(dem::check_health(through, 1e9));
-  through.run(1);
-  EXPECT_EQ(dem::first_escaped(through), 0);
-  EXPECT_EQ(input_error([&] { dem::check_health(through, 1e9); }),
-            "dem: step 1 (t = 0.001): particle 0 went through a wall: the run blew up; reduce dt "
-            "(now 0.001) against the shortest contact time, or the initial overlaps");
+  EXPECT_EQ(input_error([&] { through.run(1); }),
+            "dem: step 1 (t = 0.001): particle 0 overlaps wall z_low by 380 % of its radius (a "
+            "sound run stays within 30 %): the contacts are too soft for the speed of impact, or "
+            "dt too long; raise k_n, lower the speeds or reduce dt (now 0.001)");
   // A velocity that overflows the position.
   dem::Engine overflow(model, dem::WallSet(no_walls(), {}), settings(10.0),
                        spheres({{0, 0, 0}, {5, 0, 0}}, {{0, 0, 0}, {1e308, 0, 0}}));
@@ -812,6 +811,53 @@ TEST(DemHealth, ParticleThroughTheBaseOrNotFiniteStopsTheRun) {
   EXPECT_EQ(input_error([&] { dem::check_health(fast, 4.0); }),
             "dem: step 0 (t = 0): kinetic energy 4.5 exceeds 4: the run blew up; reduce dt (now "
             "0.001) against the shortest contact time, or the initial overlaps");
+}
+
+namespace {
+
+// Two spheres meeting head on at relative speed 1e3 (far faster than k_n = 2e5 can stop)
+// under each kernel; the message of the stop.
+std::string pass_through(dem::ContactLaw law, bool friction, bool rotation, int threads) {
+  dem::Settings s = settings(2e-4);
+  s.law = law;
+  s.friction = friction;
+  s.rotation = rotation;
+  s.threads = threads;
+  dem::Engine e(one_species(material(kKn, 40.0, 0.5)), dem::WallSet(no_walls(), {}), s,
+                spheres({{-2, 0, 0}, {2, 0, 0}}, {{500, 0, 0}, {-500, 0, 0}}));
+  const std::string m = input_error([&] { e.run(100); });
+  // The spheres are stopped before they pass through each other.
+  EXPECT_LT(position(e, 0).x(), position(e, 1).x());
+  return m;
+}
+
+}  // namespace
+
+TEST(DemHealth, EveryKernelStopsAContactPastTheOverlapLimitInTheStepItHappens) {
+  // 3 of gap closed at 0.2 per step: the contact starts in step 15 and its overlap passes
+  // 0.3 of the radius (0.15) in step 16.
+  const std::string expected =
+      "dem: step 16 (t = 0.0032): particles 0 and 1 overlap by ";
+  for (const dem::ContactLaw law : {dem::ContactLaw::Linear, dem::ContactLaw::Hertz}) {
+    for (const auto& [friction, rotation] : {std::pair{false, false}, std::pair{true, false}, std::pair{true, true}}) {
+      const std::string one = pass_through(law, friction, rotation, 1);
+      EXPECT_EQ(one.rfind(expected, 0), 0u) << one;
+      EXPECT_NE(one.find(" % of the smaller radius (a sound run stays within 30 %): the contacts "
+                         "are too soft for the speed of impact, or dt too long; raise k_n, lower "
+                         "the speeds or reduce dt (now 0.0002)"),
+                std::string::npos) << one;
+      EXPECT_EQ(pass_through(law, friction, rotation, 2), one);  // the same step and overlap
+    }
+  }
+}
+
+TEST(DemHealth, AContactWithinTheOverlapLimitRunsOn) {
+  // Relative speed 30: the linear law's undamped overlap v sqrt(m_eff / k_n) is 0.047, 9.5 %
+  // of the radius.
+  dem::Engine e(one_species(material(kKn, 40.0, 0.5)), dem::WallSet(no_walls(), {}),
+                settings(2e-4), spheres({{-1, 0, 0}, {1, 0, 0}}, {{15, 0, 0}, {-15, 0, 0}}));
+  EXPECT_NO_THROW(e.run(200));
+  EXPECT_GT(velocity(e, 1).x(), 0.0);  // bounced
 }
 
 TEST(DemFrame, RowsFollowTheCallersOrderWithContactsOfPairsAndWalls) {

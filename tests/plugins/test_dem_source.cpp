@@ -5,12 +5,17 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <functional>
+#include <string>
 #include <filesystem>
 #include <numbers>
 #include <vector>
 
+#include "blow_up.hpp"
 #include "dem_source.hpp"
+#include "memory_check.hpp"
 #include "model.hpp"
+#include "granpipe/format_number.hpp"
 #include "granpipe/frame_store.hpp"
 #include "plugin_harness.hpp"
 
@@ -20,8 +25,9 @@ namespace fs = std::filesystem;
 namespace {
 
 // Spheres of radius 0.5 at these centres (by default one just touching the base) in an
-// open-top box.
-fs::path start_file(const std::vector<Eigen::Vector3d>& centres = {{0.0, 0.0, 0.5}}) {
+// open-top box (4 wide, or `width`), moving with `velocities` if given.
+fs::path start_file(const std::vector<Eigen::Vector3d>& centres = {{0.0, 0.0, 0.5}},
+                    const std::vector<Eigen::Vector3d>& velocities = {}, double width = 4.0) {
   const fs::path p = fs::temp_directory_path() / ("granpipe_dem_start_" + std::to_string(::getpid()) + ".h5");
   fs::remove(p);
   Frame f;
@@ -30,11 +36,44 @@ fs::path start_file(const std::vector<Eigen::Vector3d>& centres = {{0.0, 0.0, 0.
   for (std::size_t k = 0; k < centres.size(); ++k) {
     f.position().row(static_cast<Eigen::Index>(k)) = centres[k].transpose().array();
   }
-  f.container = Container::open_top_box(3, Eigen::Vector3d(-2, -2, 0), Eigen::Vector3d(2, 2, 10));
+  if (!velocities.empty()) {
+    f.add("velocity");
+    for (std::size_t k = 0; k < velocities.size(); ++k) {
+      f.table<double>("velocity").row(static_cast<Eigen::Index>(k)) = velocities[k].transpose().array();
+    }
+  }
+  const double h = 0.5 * width;
+  f.container = Container::open_top_box(3, Eigen::Vector3d(-h, -h, 0), Eigen::Vector3d(h, h, 10));
   FrameWriter w(p, "{}");
   w.append(f);
   w.close();
   return p;
+}
+
+// The message of the InputError that making the source with these parameters throws.
+std::string refusal(const nlohmann::json& params) {
+  try {
+    const auto ctx = test::make_context(dem::schema(), params);
+    dem::DemSource source(*ctx);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no refusal";
+}
+
+// The message of the blow-up that running the source to its end throws, after the frames
+// it emitted (counted in `frames`).
+std::string blow_up(const nlohmann::json& params, int& frames) {
+  const auto ctx = test::make_context(dem::schema(), params);
+  dem::DemSource source(*ctx);
+  Frame f;
+  frames = 0;
+  try {
+    while (source.next(f)) ++frames;
+  } catch (const dem::BlowUp& e) {
+    return e.what();
+  }
+  return "no blow-up";
 }
 
 }  // namespace
@@ -148,10 +187,13 @@ TEST(DemSource, FramesCarryTheDrivesCyclesAndTheContainersVelocity) {
 }
 
 TEST(DemSource, AnEnergyBlowUpStopsTheRunNamingTheOverlaps) {
-  // Two spheres started half a diameter into each other: the spring releases k d^2 / 8,
-  // about 6000 times what the scene's speeds allow, and the run stops at the first check.
-  const fs::path file = start_file({{0.0, 0.0, 0.5}, {0.5, 0.0, 0.5}});
-  const auto ctx = test::make_context(dem::schema(), {{"initial_file", file.string()}, {"duration", 1.0}});
+  // Two spheres started 0.1 into each other (20 % of their radius) without gravity: the
+  // spring releases k 0.1^2 / 2 = 1000, where the scene's speeds (nothing moves, nothing
+  // falls) allow 1e-4, and the run stops at the first check.
+  const fs::path file = start_file({{0.0, 0.0, 0.5}, {0.9, 0.0, 0.5}});
+  const auto ctx = test::make_context(dem::schema(), {{"initial_file", file.string()},
+                                                      {"duration", 1.0},
+                                                      {"gravity", {0.0, 0.0, 0.0}}});
   dem::DemSource source(*ctx);
   Frame f;
   ASSERT_TRUE(source.next(f));  // the start
@@ -183,4 +225,149 @@ TEST(DemSource, ASphereDroppedOntoTheBaseIsNoBlowUp) {
   const double e = dem::linear_restitution(2e5, 42.398, 1.91 * std::numbers::pi / 6.0);
   EXPECT_NEAR(rebound, e * std::sqrt(20.0), 0.03);
   fs::remove(file);
+}
+
+// A start the run could not treat soundly is refused, naming what is wrong and where.
+TEST(DemSource, AStartWithASphereOutsideItsContainerIsRefusedNamingItAndTheWall) {
+  // The second sphere's centre 0.3 past the box's x_high side; the first rests on the base.
+  const fs::path file = start_file({{0.0, 0.0, 0.5}, {2.3, 0.0, 0.5}});
+  const std::string m = refusal({{"initial_file", file.string()}});
+  EXPECT_EQ(m.rfind("params.initial_file: ", 0), 0u) << m;
+  const std::string tail = m.substr(m.find(": frame 0: "));
+  EXPECT_EQ(tail, ": frame 0: particle 1 (id 1) at (2.3, 0, 0.5) reaches 0.8 past wall x_high "
+                  "(160 % of its radius): expected particles inside the container, touching its "
+                  "walls by at most 30 % of their radius");
+  fs::remove(file);
+  // Pressed 0.1 into the wall (20 % of its radius), as a saved frame of a run may hold it.
+  const fs::path touching = start_file({{1.6, 0.0, 0.5}});
+  EXPECT_EQ(refusal({{"initial_file", touching.string()}}), "no refusal");
+  fs::remove(touching);
+}
+
+TEST(DemSource, AnEmptyStartIsRefused) {
+  const fs::path file = start_file({});
+  const std::string m = refusal({{"initial_file", file.string()}});
+  EXPECT_EQ(m.substr(m.find(": frame 0: ")), ": frame 0: expected at least one particle, got none");
+  fs::remove(file);
+}
+
+TEST(DemSource, AStartWithSpheresOverlappingPastTheLimitIsRefused) {
+  // Centres 0.65 apart: an overlap of 0.35, 70 % of the radius.
+  const fs::path file = start_file({{0.0, 0.0, 0.5}, {0.65, 0.0, 0.5}});
+  const std::string m = refusal({{"initial_file", file.string()}});
+  EXPECT_EQ(m.substr(m.find(": frame 0: ")),
+            ": frame 0: particles 0 and 1 (ids 0 and 1) overlap by 70 % of the smaller radius: "
+            "expected overlaps of at most 30 %");
+  fs::remove(file);
+}
+
+TEST(DemSource, ADriveWithTooFewStepsPerPeriodIsRefused) {
+  const fs::path file = start_file();
+  const std::string expected =
+      "params.drive.frequency: 1000 gives 5 steps of dt = 0.0002 per period: expected at least "
+      "50 (frequency <= 100)";
+  EXPECT_EQ(refusal({{"initial_file", file.string()},
+                     {"drive", {{"amplitude", 0.02}, {"frequency", 1000.0}}}}),
+            expected);
+  EXPECT_EQ(refusal({{"initial_file", file.string()},
+                     {"drive", {{"amplitude", 1e6}, {"frequency", 1000.0}}}}),
+            expected);
+  fs::remove(file);
+}
+
+TEST(DemSource, ADriveWhosePeakSpeedWouldCrushASphereIsRefused) {
+  // A 2 pi f = 6.28e5 against k_n = 2e5: a unit-mass sphere hit at that speed would go
+  // v sqrt(m / k_n) = 1405 deep. The largest speed allowed: 0.3 R sqrt(k_n / m) = 67.1.
+  const fs::path file = start_file();
+  EXPECT_EQ(refusal({{"initial_file", file.string()},
+                     {"drive", {{"amplitude", 1e6}, {"frequency", 0.1}}}}),
+            "params.drive: amplitude 1e+06 and frequency 0.1 move the walls at up to A 2 pi f = "
+            "6.28e+05, which would press a sphere of species 0 (radius 0.5) hit by wall z_low "
+            "1.41e+03 deep (2.81e+05 % of its radius; a sound run stays within 30 %): expected "
+            "A 2 pi f <= 67.1");
+  fs::remove(file);
+}
+
+TEST(DemSource, AGravityThatWouldCrushASphereRestingOnTheBaseIsRefused) {
+  const fs::path file = start_file();
+  EXPECT_EQ(refusal({{"initial_file", file.string()}, {"gravity", {0.0, 0.0, -1e300}}}),
+            "params.gravity: |g| = 1e+300 would press a sphere of species 0 (radius 0.5) resting "
+            "on wall z_low 5e+294 deep (1e+297 % of its radius; a sound run stays within 30 %): "
+            "expected |g| <= 3e+04");
+  fs::remove(file);
+}
+
+TEST(DemSource, AnAbsurdDensityIsRefusedNamingIt) {
+  const fs::path file = start_file();
+  EXPECT_EQ(refusal({{"initial_file", file.string()},
+                     {"species", {{{"name", "small"}, {"density", 1e-300}}}}}),
+            "test: params.species[0].density: expected a number in [1e-20, 1e+20], got 1e-300");
+  fs::remove(file);
+}
+
+TEST(DemSource, TheHertzTimeStepCheckCountsTheStartVelocities) {
+  // Two spheres approaching at 1, no gravity: the Hertz contact time at impact speed 1.
+  const fs::path file = start_file({{-1.0, 0.0, 5.0}, {1.0, 0.0, 5.0}},
+                                   {{0.5, 0.0, 0.0}, {-0.5, 0.0, 0.0}});
+  const double mass = 1.91 * std::numbers::pi / 6.0;
+  const double t_c = dem::hertz_contact_time(2e5, 1.0, 0.5 * mass, 1.0);
+  const auto check = [&](double steps_per_contact) {
+    return refusal({{"initial_file", file.string()}, {"law", "hertz"},
+                    {"gravity", {0.0, 0.0, 0.0}}, {"dt", t_c / steps_per_contact}});
+  };
+  for (const double steps : {5.1, 3.0}) {
+    const std::string m = check(steps);
+    const std::string ratio = "is t_c/" + format_number(steps) + " for the shortest contact "
+                              "(species 0 and species 0, t_c = " + format_number(t_c) + ")";
+    EXPECT_NE(m.find(ratio), std::string::npos) << m;
+    EXPECT_EQ(m.rfind("params.dt: ", 0), 0u) << m;
+  }
+  EXPECT_EQ(check(25.0), "no refusal");
+  fs::remove(file);
+}
+
+// Contacts that go past the overlap limit while the run goes stop it with one line,
+// after the frames emitted before.
+TEST(DemSource, TwoSpheresMeetingTooFastToStopAreStoppedBeforePassingThrough) {
+  for (const char* law : {"linear", "hertz"}) {
+    const fs::path file = start_file({{-2.0, 0.0, 5.0}, {2.0, 0.0, 5.0}},
+                                     {{500.0, 0.0, 0.0}, {-500.0, 0.0, 0.0}}, 100.0);
+    int frames = 0;
+    const std::string m = blow_up({{"initial_file", file.string()}, {"law", law},
+                                   {"gravity", {0.0, 0.0, 0.0}}, {"duration", 0.1}},
+                                  frames);
+    EXPECT_EQ(m.rfind("dem: step 16 (t = 0.0032): particles 0 and 1 overlap by ", 0), 0u) << m;
+    EXPECT_EQ(frames, 1);  // the start
+    fs::remove(file);
+  }
+}
+
+TEST(DemSource, ASphereDroppedFromFarTooHighIsStoppedAtTheBase) {
+  // From z = 1e4 it lands at 141: 59 % (linear) or 84 % (Hertz) of its radius deep.
+  for (const char* law : {"linear", "hertz"}) {
+    const fs::path file = start_file({{0.0, 0.0, 1e4}});
+    int frames = 0;
+    const std::string m = blow_up({{"initial_file", file.string()}, {"law", law},
+                                   {"duration", 150.0}, {"save_every", 1000000}},
+                                  frames);
+    EXPECT_NE(m.find("): particle 0 overlaps wall z_low by "), std::string::npos) << m;
+    EXPECT_EQ(frames, 1);
+    fs::remove(file);
+  }
+}
+
+TEST(DemSource, AScenePastTheAvailableMemoryIsRefusedBeforeAnythingIsAllocated) {
+  const double available = dem::available_memory();
+  ASSERT_GT(available, 0.0);  // /proc/meminfo
+  try {
+    dem::check_memory("params.bed.small", 1e15);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_EQ(m.rfind("params.bed.small: 1e+15 spheres need about 2e+09 GB (2 kB each), this "
+                      "machine has ", 0),
+              0u) << m;
+    EXPECT_NE(m.find(" GB available: expected at most "), std::string::npos) << m;
+  }
+  EXPECT_NO_THROW(dem::check_memory("params.bed.small", 1000.0));
 }

@@ -1,0 +1,127 @@
+#include "scene_checks.hpp"
+
+#include <cmath>
+#include <algorithm>
+#include <functional>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "granpipe/errors.hpp"
+#include "granpipe/format_number.hpp"
+#include "overlap_limit.hpp"
+
+namespace granpipe::dem {
+
+namespace {
+
+// The deepest overlap of a sphere against a wall, as a fraction of its radius, and which.
+struct Deepest {
+  double fraction = 0.0;
+  double depth = 0.0;
+  int species = -1;
+  double radius = 0.0;
+  Wall wall = Wall::Count;
+};
+
+// How squarely wall `slot` faces a push along the unit vector `along`: the component of
+// `along` on its normal (a drive along z hits the base and a lid, not the cylinder).
+double facing(const WallSet& walls, int slot, const Eigen::Vector3d& along) {
+  if (slot < static_cast<int>(walls.planes().size())) {
+    return std::abs(along[walls.planes()[static_cast<std::size_t>(slot)].axis]);
+  }
+  return std::hypot(along[0], along[1]);
+}
+
+// overlap(material, mass, radius, scale): the overlap of one sphere against one wall, the
+// push scaled by how squarely the wall faces it. Both checks' overlaps grow with the radius
+// faster than the radius does, so the largest sphere of each species decides. Fixed
+// species are held by the container and skipped.
+Deepest deepest_against_walls(
+    const Scene& s, const Eigen::Vector3d& along,
+    const std::function<double(const ContactMaterial&, double, double, double)>& overlap) {
+  std::vector<double> largest(static_cast<std::size_t>(s.model.species()), 0.0);
+  for (Eigen::Index i = 0; i < s.start.radius.size(); ++i) {
+    double& r = largest[static_cast<std::size_t>(s.start.species[i])];
+    r = std::max(r, s.start.radius[i]);
+  }
+  Deepest deepest;
+  for (int a = 0; a < s.model.species(); ++a) {
+    const double r = largest[static_cast<std::size_t>(a)];
+    if (r == 0.0 || s.model.is_fixed(a)) continue;
+    for (int slot = 0; slot < s.walls.count(); ++slot) {
+      const double scale = facing(s.walls, slot, along);
+      if (scale == 0.0) continue;
+      const Wall w = s.walls.wall_of_slot(slot);
+      const double depth = overlap(s.model.with_wall(w, a), s.model.sphere_mass(a, r), r, scale);
+      if (depth / r > deepest.fraction) deepest = {depth / r, depth, a, r, w};
+    }
+  }
+  return deepest;
+}
+
+// "a sphere of species 0 (radius 0.5) hit by wall z_low 0.2 deep (40 % of its radius; a
+// sound run stays within 30 %)"
+std::string described(const Deepest& d, const std::string& how) {
+  return "a sphere of species " + std::to_string(d.species) + " (radius " +
+         format_number(d.radius) + ") " + how + " wall " + to_string(d.wall) + " " +
+         format_number(d.depth, 3) + " deep (" + format_number(100.0 * d.fraction, 3) +
+         " % of its radius; a sound run stays within " +
+         format_number(100.0 * kMaxOverlapFraction) + " %)";
+}
+
+void check_steps_per_period(const PluginContext& ctx, const Drive& drive, double dt) {
+  const double steps = 2.0 * std::numbers::pi / (drive.angular_frequency * dt);
+  if (steps >= kMinStepsPerPeriod) return;
+  const double f = drive.angular_frequency / (2.0 * std::numbers::pi);
+  throw InputError(ctx.param("drive.frequency") + ": " + format_number(f) + " gives " +
+                   format_number(steps, 3) + " steps of dt = " + format_number(dt) +
+                   " per period: expected at least " + format_number(kMinStepsPerPeriod) +
+                   " (frequency <= " + format_number(1.0 / (kMinStepsPerPeriod * dt), 3) + ")");
+}
+
+}  // namespace
+
+void check_drive(const PluginContext& ctx, const Scene& scene, const Drive& drive, double dt) {
+  if (!drive.moves()) return;
+  check_steps_per_period(ctx, drive, dt);
+  // The undamped overlap of a sphere hit at speed v (the paper's laws, d = 2a for a wall).
+  const double peak = std::abs(drive.amplitude * drive.angular_frequency);
+  const auto hit = [&](const ContactMaterial& m, double mass, double a, double scale) {
+    const double v = peak * scale;
+    return scene.law == ContactLaw::Linear
+               ? v * std::sqrt(mass / m.kn)
+               : std::pow(5.0 * mass * v * v * std::sqrt(2.0 * a) / (4.0 * m.kn), 0.4);
+  };
+  const Deepest d = deepest_against_walls(scene, drive.direction, hit);
+  if (d.fraction <= kMaxOverlapFraction) return;
+  // The overlap grows as v (linear) or v^(4/5) (Hertz).
+  const double exponent = scene.law == ContactLaw::Linear ? 1.0 : 1.25;
+  const double v_max = peak * std::pow(kMaxOverlapFraction / d.fraction, exponent);
+  throw InputError(ctx.param("drive") + ": amplitude " + format_number(drive.amplitude) +
+                   " and frequency " +
+                   format_number(drive.angular_frequency / (2.0 * std::numbers::pi)) +
+                   " move the walls at up to A 2 pi f = " + format_number(peak, 3) +
+                   ", which would press " + described(d, "hit by") + ": expected A 2 pi f <= " +
+                   format_number(v_max, 3));
+}
+
+void check_gravity(const PluginContext& ctx, const Scene& scene, const Eigen::Vector3d& gravity) {
+  const double g = gravity.stableNorm();
+  if (g == 0.0) return;
+  // The overlap at which a sphere rests on a wall under its weight.
+  const auto rest = [&](const ContactMaterial& m, double mass, double a, double scale) {
+    const double weight = mass * g * scale;
+    return scene.law == ContactLaw::Linear ? weight / m.kn
+                                           : std::pow(weight * std::sqrt(2.0 * a) / m.kn, 2.0 / 3.0);
+  };
+  const Deepest d = deepest_against_walls(scene, gravity / g, rest);
+  if (d.fraction <= kMaxOverlapFraction) return;
+  // The overlap grows as g (linear) or g^(2/3) (Hertz).
+  const double exponent = scene.law == ContactLaw::Linear ? 1.0 : 1.5;
+  const double g_max = g * std::pow(kMaxOverlapFraction / d.fraction, exponent);
+  throw InputError(ctx.param("gravity") + ": |g| = " + format_number(g, 3) + " would press " +
+                   described(d, "resting on") + ": expected |g| <= " + format_number(g_max, 3));
+}
+
+}  // namespace granpipe::dem

@@ -1,0 +1,65 @@
+#include "start_checks.hpp"
+
+#include <algorithm>
+#include <sstream>
+
+#include "granpipe/contacts_by_distance.hpp"
+#include "granpipe/errors.hpp"
+#include "granpipe/format_number.hpp"
+#include "overlap_limit.hpp"
+
+namespace granpipe::dem {
+
+namespace {
+
+std::string percent(double fraction) { return format_number(100.0 * fraction, 3) + " %"; }
+
+std::string particle(const Frame& f, Eigen::Index i) {
+  std::ostringstream s;
+  s << "particle " << i << " (id " << f.id()[i] << ") at (" << format_number(f.position()(i, 0))
+    << ", " << format_number(f.position()(i, 1)) << ", " << format_number(f.position()(i, 2))
+    << ")";
+  return s.str();
+}
+
+void refuse_outside(const Frame& f, const std::string& where) {
+  Container at_rest = f.container;  // the run starts the walls at rest
+  at_rest.wall_offset.setZero();
+  const auto out = first_particle_outside(at_rest, f.dim, f.position(), f.radius(), kMaxOverlapFraction);
+  if (!out) return;
+  throw InputError(where + ": " + particle(f, out->index) + " reaches " + format_number(out->depth) +
+                   " past wall " + to_string(out->wall) + " (" +
+                   percent(out->depth / f.radius()[out->index]) +
+                   " of its radius): expected particles inside the container, touching its walls by "
+                   "at most " + percent(kMaxOverlapFraction) + " of their radius");
+}
+
+void refuse_deep_pairs(const Frame& f, const std::string& where) {
+  const DistanceContacts touching = find_contacts_by_distance(f, 0.0, where);
+  Eigen::Index worst = -1;
+  double deepest = kMaxOverlapFraction;
+  for (Eigen::Index k = 0; k < touching.pairs; ++k) {
+    const auto i = touching.i[k], j = touching.j[k];
+    const double fraction = -touching.gap[k] / std::min(f.radius()[i], f.radius()[j]);
+    if (fraction > deepest) {
+      deepest = fraction;
+      worst = k;
+    }
+  }
+  if (worst < 0) return;
+  const auto i = touching.i[worst], j = touching.j[worst];
+  throw InputError(where + ": particles " + std::to_string(i) + " and " + std::to_string(j) +
+                   " (ids " + std::to_string(f.id()[i]) + " and " + std::to_string(f.id()[j]) +
+                   ") overlap by " + percent(deepest) + " of the smaller radius: expected "
+                   "overlaps of at most " + percent(kMaxOverlapFraction));
+}
+
+}  // namespace
+
+void check_start_frame(const Frame& f, const std::string& where) {
+  if (f.size() == 0) throw InputError(where + ": expected at least one particle, got none");
+  refuse_outside(f, where);
+  refuse_deep_pairs(f, where);
+}
+
+}  // namespace granpipe::dem

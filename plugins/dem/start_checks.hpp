@@ -1,0 +1,18 @@
+#pragma once
+// Is a saved start sound? A run from it would otherwise fire a sphere that sits outside its
+// container back in at a speed no scene produces, or blow two deeply overlapping spheres
+// apart, and end with exit 0.
+#include <string>
+
+#include "granpipe/frame.hpp"
+
+namespace granpipe::dem {
+
+// Throws InputError, its message starting with `where`, when the frame holds no particle,
+// a sphere reaching past a wall of its container (the walls where the run starts them, at
+// rest) by more than kMaxOverlapFraction of its radius (overlap_limit.hpp), or two spheres
+// overlapping by more than that fraction of the smaller radius. Contacts within it, as a
+// saved frame of a run holds them, pass.
+void check_start_frame(const Frame& frame, const std::string& where);
+
+}  // namespace granpipe::dem
