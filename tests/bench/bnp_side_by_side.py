@@ -516,11 +516,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--build", default=os.path.join(REPO, "build"), help="granpipe build directory")
     parser.add_argument("--ref-dir", default=os.path.join(REPO, "..", "shared", "bench", "bnp"),
-<<<<<<< ours
-                        help="folder with settled.data(.gz) (default: ../shared/bench/bnp from the project root)")
-=======
                         help="folder with settled.data(.gz) (default: ../shared/bench/bnp, relative to the project root)")
->>>>>>> theirs
     parser.add_argument("--rounds", type=int, default=1, help="repeat the interleaved runs")
     parser.add_argument("--warmup", type=int, default=5000, help="warm-up steps, also the frame and thermo interval")
     parser.add_argument("--timed", type=int, default=25000, help="timed steps (small values: a quick check of the script)")
