@@ -53,11 +53,12 @@ void check_contacts(const Frame& f, const std::string& where) {
   const Eigen::Index n = f.size();
   const IndexArray &i = f.contact_i(), &j = f.contact_j();
   for (Eigen::Index k = 0; k < i.size(); ++k) {
-    if (i[k] < 0 || i[k] >= n || j[k] >= n || j[k] == partner::none) {
+    const bool partner = (partner::is_particle(j[k]) && j[k] < n) || partner::is_wall(j[k]);
+    if (i[k] < 0 || i[k] >= n || !partner) {
       throw InputError(where + ": contact " + std::to_string(k) +
                        ": expected particle indices below " + std::to_string(n) +
-                       " (or a wall as second partner), got " + std::to_string(i[k]) + " and " +
-                       std::to_string(j[k]));
+                       " (or a wall code -2 to -8 as second partner), got " + std::to_string(i[k]) +
+                       " and " + std::to_string(j[k]));
     }
   }
 }

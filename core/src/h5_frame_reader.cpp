@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "granpipe/errors.hpp"
+#include "granpipe/frame.hpp"
 #include "granpipe/frame_store.hpp"
 #include "h5_column.hpp"
 #include "h5_dataset.hpp"
@@ -528,6 +529,30 @@ Container FrameReader::Impl::container_at(long k) const {
   return c;
 }
 
+// Every contact joins a particle to another particle or to a wall (frame.hpp's partner
+// codes): an index out of range would otherwise pass as a wall, and the pair drop out of
+// every count.
+namespace {
+void check_partners(const Frame& f, const std::string& i_path, const std::string& j_path,
+                    std::int64_t first_row, long k) {
+  const Eigen::Index n = f.size();
+  const IndexArray &i = f.contact_i(), &j = f.contact_j();
+  for (Eigen::Index c = 0; c < i.size(); ++c) {
+    const std::string row = ": row " + std::to_string(first_row + c) + " (frame " + std::to_string(k) +
+                            ", contact " + std::to_string(c) + "): expected ";
+    if (i[c] < 0 || i[c] >= n) {
+      throw h5::Error(i_path + row + "a particle index in [0, " + std::to_string(n) + "), got " +
+                      std::to_string(i[c]));
+    }
+    if (!((partner::is_particle(j[c]) && j[c] < n) || partner::is_wall(j[c])) || j[c] == i[c]) {
+      throw h5::Error(j_path + row + "a particle index in [0, " + std::to_string(n) +
+                      ") other than i (" + std::to_string(i[c]) + ") or a wall code -2 (x_low) to -8 "
+                      "(cylinder), got " + std::to_string(j[c]));
+    }
+  }
+}
+}  // namespace
+
 void FrameReader::Impl::read_contacts(long k, Frame& f) const {
   const auto first = static_cast<hsize_t>(contact_offset[k]);
   const auto m = static_cast<Eigen::Index>(contact_count[k]);
@@ -535,6 +560,7 @@ void FrameReader::Impl::read_contacts(long k, Frame& f) const {
   for (const ContactColumn& c : contact_columns) {
     h5::read_column(c.dataset.id(), c.path, first, static_cast<hsize_t>(m), table.add(c.property));
   }
+  check_partners(f, contact_columns[0].path, contact_columns[1].path, contact_offset[k], k);
 }
 
 Frame FrameReader::Impl::read(long k) const {

@@ -7,6 +7,8 @@
 #include <fstream>
 #include <mutex>
 #include <thread>
+#include <utility>
+#include <vector>
 
 #include "granpipe/atomic_file.hpp"
 #include "granpipe/frame_store.hpp"
@@ -52,6 +54,21 @@ std::string describe_needs(const FrameContent& need, const FrameContent& have) {
   return "";
 }
 
+// Analyzer `a` publishes `c`; an analyzer before it that reads `c` as the source saved it
+// would measure the old values while the frames written carry the new ones.
+void refuse_stale_reader(const Pipeline::Impl& p, const std::vector<std::pair<std::size_t, Property>>& read_as_saved,
+                         std::size_t a, const Property& c) {
+  for (const auto& [reader, column] : read_as_saved) {
+    if (reader == a || column.name != c.name || column.scope != c.scope) continue;
+    const PluginSpec &spec = p.analyzers[a], &earlier = p.analyzers[reader];
+    throw InputError(spec.where + ": analyzer \"" + spec.info->name + "\" recomputes the " +
+                     to_string(c.scope) + " column \"" + c.name + "\", which analyzers[" +
+                     std::to_string(reader) + "] (\"" + earlier.info->name +
+                     "\") before it reads as the source saved it: put \"" + spec.info->name +
+                     "\" first to use the recomputed values, or leave it out to use the saved ones");
+  }
+}
+
 // The directory a point's plugins write into: the output directory, or a folder per
 // point in a sweep so that points never write the same file.
 fs::path point_directory(const Pipeline::Impl& p, std::size_t k, const fs::path& out) {
@@ -90,6 +107,9 @@ PointPlugins make_plugins(const Pipeline::Impl& p, std::size_t k, int threads, L
     throw InputError(located_message(p.top(), e.what()));
   }
   FrameContent have = made.source->content(), published;
+  // Columns an analyzer reads as the source saved them, by analyzer index: a later
+  // analyzer that recomputes one would leave the earlier one on stale values.
+  std::vector<std::pair<std::size_t, Property>> read_as_saved;
   for (std::size_t a = 0; a < p.analyzers.size(); ++a) {
     const PluginSpec& spec = p.analyzers[a];
     try {
@@ -104,9 +124,14 @@ PointPlugins make_plugins(const Pipeline::Impl& p, std::size_t k, int threads, L
       throw InputError(spec.where + ": analyzer \"" + spec.info->name + "\" needs " + missing +
                        " (source \"" + p.source->name + "\")");
     }
+    for (const Property& c : made.analyzers.back()->needs().columns) {
+      if (!is_required(c) && !provided(published, c)) read_as_saved.emplace_back(a, c);
+    }
     // A column the source carries (frames saved by an earlier run) is replaced by the
-    // analyzer's; one that an earlier analyzer publishes, or a required one, is refused.
+    // analyzer's; one that an earlier analyzer publishes, or a required one, is refused,
+    // and so is one an earlier analyzer reads as saved.
     for (const Property& c : made.analyzers.back()->publishes()) {
+      refuse_stale_reader(p, read_as_saved, a, c);
       if (c.scope == Scope::Frame) {  // publish() is never asked for them
         throw InputError(spec.where + ": analyzer \"" + spec.info->name + "\" publishes the frame "
                          "column \"" + c.name + "\": expected particle or contact columns only");

@@ -3,9 +3,29 @@
 #include <cmath>
 #include <numbers>
 
+#include "granpipe/format_number.hpp"
 #include "linear_law.hpp"
 
 namespace granpipe::collision {
+
+namespace {
+
+// The normal force on the pair along the normal from sphere 1 to sphere 0 (repulsive > 0),
+// when the frame's contact table carries it for the pair.
+std::optional<double> pair_normal_force(const Frame& f) {
+  if (!f.contacts || !f.contacts->has("normal_force")) return {};
+  const auto& force = f.contacts->get<Coordinates>("normal_force");
+  const Eigen::Vector3d d = (f.position().row(0) - f.position().row(1)).matrix().transpose();
+  for (Eigen::Index k = 0; k < f.contacts->rows(); ++k) {
+    if (!partner::is_particle(f.contact_j()[k])) continue;
+    // normal_force is the force on i: on sphere 0 along d, or on sphere 1 against it.
+    const double on_i = force.row(k).matrix().dot(d.transpose()) / d.norm();
+    return f.contact_i()[k] == 0 ? on_i : -on_i;
+  }
+  return {};
+}
+
+}  // namespace
 
 Schema schema() {
   Schema s;
@@ -48,7 +68,8 @@ CollisionAnalyzer::CollisionAnalyzer(const PluginContext& ctx)
     : kn_(ctx.params.real("k_n")),
       gamma_n_(ctx.params.real("gamma_n")),
       density_(ctx.params.reals("density")),
-      density_param_(ctx.param("density")) {}
+      density_param_(ctx.param("density")),
+      kn_param_(ctx.param("k_n")) {}
 
 FrameContent CollisionAnalyzer::needs() const {
   return {.dim = 3, .contacts = true, .columns = {*find_standard("velocity", Scope::Particle)}};
@@ -56,7 +77,11 @@ FrameContent CollisionAnalyzer::needs() const {
 
 void CollisionAnalyzer::consume(const Frame& frame, FrameCache&) {
   const std::string where = "frame " + std::to_string(frames_);
+  check_step(frame, where);
   const PairState s = pair_state(frame, where);
+  if (s.touching && s.overlap > 0.0) {
+    if (const auto force = pair_normal_force(frame)) stiffness_.add(s.overlap, s.normal_velocity, *force);
+  }
   if (frames_ == 0) {
     double mass[2];
     for (int i = 0; i < 2; ++i) {
@@ -75,7 +100,27 @@ void CollisionAnalyzer::consume(const Frame& frame, FrameCache&) {
   ++frames_;
 }
 
+// The contact time is interpolated between frames one step apart; a coarser series
+// would widen the contact's ends by its gap without a word.
+void CollisionAnalyzer::check_step(const Frame& frame, const std::string& where) {
+  if (frames_ > 0 && frame.step != last_step_ + 1) {
+    throw InputError(where + ": expected a frame every time step (the source's save_every 1), got step " +
+                     std::to_string(frame.step) + " after step " + std::to_string(last_step_) +
+                     " (a gap of " + std::to_string(frame.step - last_step_) + " steps)");
+  }
+  last_step_ = frame.step;
+}
+
+void CollisionAnalyzer::check_stiffness() const {
+  const std::optional<double> measured = stiffness_.stiffness();
+  if (!measured || std::abs(*measured / kn_ - 1.0) <= kStiffnessTolerance) return;
+  throw InputError(kn_param_ + ": expected the source's normal stiffness, got " + format_number(kn_) +
+                   ", while the frames' normal forces show k_n = " + format_number(*measured, 4) +
+                   " (fitted over " + std::to_string(stiffness_.samples()) + " frames in contact)");
+}
+
 void CollisionAnalyzer::finish(Results& results) {
+  check_stiffness();
   const CollisionMeasure m = tracker_.result("collision: " + std::to_string(frames_) + " frames");
   const LinearPrediction p = predict_linear(kn_, gamma_n_, m_eff_, "collision");
   const double nan = std::nan("");

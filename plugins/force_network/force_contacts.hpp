@@ -5,6 +5,7 @@
 // (walls are not particles, so wall contacts never join two particles). The samples of
 // <F_n>, the PDF and F(r) are the edges, plus the wall contacts with |F_n| > min_force
 // when `walls` is set. |F_n| is the length of the contact's normal_force vector.
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -21,7 +22,7 @@ struct ForceContacts {
   Eigen::ArrayXd magnitude;           // |F_n| of every contact row
   std::vector<Eigen::Index> edges;    // rows: particle–particle, |F_n| > min_force
   std::vector<Eigen::Index> samples;  // rows of the statistics, ascending
-  double mean = 0.0;                  // <F_n> over the samples; 0 when there are none
+  double mean = std::nan("");         // <F_n> over the samples; NaN (undefined) when none
   // Particle–particle contacts with |F_n| > 0 (granpipe/loaded_pair_contacts.hpp): the
   // count that picks the paper's frame, whatever min_force is (the mst analyzer counts the
   // same way).
@@ -33,7 +34,7 @@ struct ForceContacts {
 ForceContacts force_contacts(const Frame& frame, const ForceSettings& settings,
                              const std::string& where);
 
-// f = |F_n| / <F_n> of the given rows, normalised by `mean` (0 when mean is 0).
+// f = |F_n| / <F_n> of the given rows, normalised by `mean` (0 when mean is not > 0).
 std::vector<double> scaled_forces(const ForceContacts& forces,
                                   const std::vector<Eigen::Index>& rows, double mean);
 

@@ -58,7 +58,8 @@ Property ForceNetworkAnalyzer::strong_property() {
 }
 
 ForceNetworkAnalyzer::ForceNetworkAnalyzer(const PluginContext& ctx)
-    : settings_(read_settings(ctx)),
+    : log_(ctx.log),
+      settings_(read_settings(ctx)),
       per_frame_(ctx.stream_table(
           "per_frame", Table(per_frame_columns(),
                              "force networks, strong sub-network and the Eq. (11) fit of the "
@@ -79,11 +80,20 @@ void ForceNetworkAnalyzer::consume(const Frame& frame, FrameCache&) {
   const std::string where = "frame " + std::to_string(frames_);
   if (!settings_.by_pass.empty() && frame.contacts) pass_column(frame, settings_, where);
   const FrameAnalysis a = analyse_frame(frame, settings_, where);
+  warn_undefined(a, where);
   per_frame_.add_row(per_frame_row(frames_, frame.time, frame.size(), a));
   if (chosen_.offer(frames_, a.forces.loaded)) paper_ = paper_frame(frame, a, frames_, settings_, where);
   network_ = a.networks.label;
   strong_ = a.strong.flag;
   ++frames_;
+}
+
+void ForceNetworkAnalyzer::warn_undefined(const FrameAnalysis& a, const std::string& where) {
+  if (!a.forces.samples.empty() || warned_undefined_) return;
+  warned_undefined_ = true;
+  log_.warn("force_network: " + where + ": no contact with |F_n| > min_force: its mean_force, "
+            "z_largest and force PDF are undefined (nan in the results, not 0; "
+            "docs/force_network.md); said for the first such frame only");
 }
 
 std::vector<Property> ForceNetworkAnalyzer::publishes() const {

@@ -4,8 +4,11 @@
 // (Sec. III.B), per frame (streamed) and in full for the paper's frame; with `by_pass`,
 // the same statistics of the contacts captured by the passes of a multipass MST (Sec.
 // III.C). docs/force_network.md says what each output means.
+#include <string>
+
 #include "frame_analysis.hpp"
 #include "granpipe/loaded_pair_contacts.hpp"
+#include "granpipe/log.hpp"
 #include "granpipe/plugin.hpp"
 #include "settings.hpp"
 
@@ -26,8 +29,13 @@ class ForceNetworkAnalyzer : public Analyzer {
   static Property strong_property();
 
  private:
+  // Warns, once per run, that a frame without force samples has undefined statistics.
+  void warn_undefined(const FrameAnalysis& a, const std::string& where);
+
+  Log& log_;
   Settings settings_;
   long frames_ = 0;
+  bool warned_undefined_ = false;
   StreamedTable per_frame_;
   MostLoadedFrame chosen_;
   PaperFrame paper_;  // of the chosen frame

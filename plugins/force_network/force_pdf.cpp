@@ -6,11 +6,11 @@
 namespace granpipe::force_network {
 
 double ForcePdf::density(std::size_t k) const {
-  return samples > 0 ? counts[k] / (static_cast<double>(samples) * width(k)) : 0.0;
+  return samples > 0 ? counts[k] / (static_cast<double>(samples) * width(k)) : std::nan("");
 }
 
 double ForcePdf::error(std::size_t k) const {
-  return samples > 0 ? std::sqrt(counts[k]) / (static_cast<double>(samples) * width(k)) : 0.0;
+  return samples > 0 ? std::sqrt(counts[k]) / (static_cast<double>(samples) * width(k)) : std::nan("");
 }
 
 std::vector<double> pdf_edges(const std::vector<double>& f, double f_max, double width) {

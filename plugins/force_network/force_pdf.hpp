@@ -14,7 +14,7 @@ struct ForcePdf {
   std::size_t bins() const { return counts.size(); }
   double width(std::size_t k) const { return edges[k + 1] - edges[k]; }
   double centre(std::size_t k) const { return 0.5 * (edges[k] + edges[k + 1]); }
-  // 0 when there are no samples.
+  // NaN (undefined, not zero) when there are no samples.
   double density(std::size_t k) const;
   double error(std::size_t k) const;
 };

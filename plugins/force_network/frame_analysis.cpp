@@ -1,5 +1,7 @@
 #include "frame_analysis.hpp"
 
+#include <cmath>
+
 namespace granpipe::force_network {
 
 FrameAnalysis analyse_frame(const Frame& frame, const Settings& settings, const std::string& where) {
@@ -38,7 +40,7 @@ std::vector<double> per_frame_row(long index, double time, Eigen::Index particle
                                   const FrameAnalysis& a) {
   const auto d = [](auto x) { return static_cast<double>(x); };
   const ComponentSize largest = a.networks.largest();
-  const double z_largest = largest.particles > 0 ? 2.0 * d(largest.edges) / d(largest.particles) : 0.0;
+  const double z_largest = largest.particles > 0 ? 2.0 * d(largest.edges) / d(largest.particles) : std::nan("");
   const double z_mean = particles > 0 ? 2.0 * d(a.forces.edges.size()) / d(particles) : 0.0;
   const PdfFit& fit = a.fit;
   return {d(index), time, d(a.networks.size.size()), d(largest.particles), d(largest.edges),

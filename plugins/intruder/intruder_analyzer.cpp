@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "granpipe/format_number.hpp"
+
 namespace granpipe::intruder {
 
 namespace {
@@ -15,14 +17,27 @@ double bed_mean(const Eigen::ArrayXd& weight, const Eigen::ArrayXd& value, Eigen
 
 }  // namespace
 
+Eigen::Index find_intruder(const Frame& f, const std::string& where) {
+  Eigen::Index big = 0;
+  const double largest = f.radius().maxCoeff(&big);
+  // Radii equal but for rounding (a file's float32 radii) count as equal.
+  const double equal = largest * (1.0 - kSameRadius);
+  const auto ties = (f.radius() >= equal).count();
+  if (ties > 1) {
+    throw InputError(where + ": expected an intruder (one particle larger than every other), got " +
+                     std::to_string(ties) + " particles of the largest radius " + format_number(largest) +
+                     " (a bed without an intruder?)");
+  }
+  return big;
+}
+
 BedState measure_bed(const Frame& f, const std::string& where) {
   const Eigen::Index n = f.size();
   if (n < 2) {
     throw InputError(where + ": expected an intruder and a bed (2 particles or more), got " +
                      std::to_string(n));
   }
-  Eigen::Index big = 0;
-  f.radius().maxCoeff(&big);
+  const Eigen::Index big = find_intruder(f, where);
   const double base = f.container.lo[2] + f.container.wall_offset[2];
   const Eigen::ArrayXd weight = f.radius().cube();
   BedState s;

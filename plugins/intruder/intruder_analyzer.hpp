@@ -1,6 +1,6 @@
 #pragma once
 // The observables of the Brazil-nut paper's Figs. 3, 8, 9 and 10, per frame: the heights of
-// the intruder (the largest particle) and of the centre of mass of the other particles above
+// the intruder (the one largest particle: find_intruder) and of the centre of mass of the other particles above
 // the base, which moves with the container, their vertical velocities, the mean
 // coordination number from the frame's contact table (particle pairs only, each contact
 // counted for both particles), and the stage of the cycle.
@@ -12,6 +12,9 @@
 // impact) are reported at the midpoint of the two frames, so their resolution is the
 // interval between frames. `cycles` (drive periods) comes from the frame's observable of
 // that name (the dem source sets it); frames without it get NaN there.
+#include <Eigen/Core>
+#include <string>
+
 #include "granpipe/plugin.hpp"
 
 namespace granpipe::intruder {
@@ -28,7 +31,16 @@ struct BedState {
   Stage stage = Stage::Expansion;
 };
 
-// Throws InputError naming `where` for a frame of fewer than two particles.
+// The intruder is the one particle larger than every other. A bed whose largest radius is
+// shared (a monodisperse bed, or two large spheres) has none: reporting one of them would
+// be an arbitrary choice, so such a frame is refused. Radii within a relative kSameRadius
+// of the largest count as equal to it.
+constexpr double kSameRadius = 1e-6;
+// The intruder's row; throws InputError naming `where` when there is none.
+Eigen::Index find_intruder(const Frame& frame, const std::string& where);
+
+// Throws InputError naming `where` for a frame of fewer than two particles or without an
+// intruder.
 BedState measure_bed(const Frame& frame, const std::string& where);
 
 class IntruderAnalyzer : public Analyzer {

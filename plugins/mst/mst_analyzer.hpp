@@ -27,7 +27,7 @@ class MstAnalyzer : public Analyzer {
   Log& log_;
   MstOptions options_;
   long frames_ = 0;
-  bool warned_inexact_ = false;
+  bool warned_inexact_ = false, warned_no_contacts_ = false;
   StreamedTable per_frame_;
   // Table II of the frame with the most loaded pair contacts (the first of equals).
   MostLoadedFrame chosen_;

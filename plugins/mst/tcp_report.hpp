@@ -2,6 +2,7 @@
 // One frame through the multipass MST: the candidate graph, the passes, and after each
 // pass the trees of contacting particles (TCPs: the contacting edges selected so far)
 // against the contact network, as the paper's Table II counts them.
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -41,8 +42,10 @@ struct TcpReport {
   ContactPairs pairs;
   IndexArray tcp;  // per particle after the last pass, -1 if in none
 
+  // The share of contacts selected: NaN (undefined, not 0) for a frame without contacts.
   double recovered(const PassRow& row) const {
-    return contacts > 0 ? static_cast<double>(row.selected) / static_cast<double>(contacts) : 0.0;
+    return contacts > 0 ? static_cast<double>(row.selected) / static_cast<double>(contacts)
+                        : std::nan("");
   }
 };
 

@@ -704,6 +704,29 @@ TEST_F(FrameStore, ContactsOutsideTheContactArraysAreRefused) {
   }
 }
 
+// A partner out of range would read as a wall (j <= -2) or a particle that is not there:
+// only particle rows and the wall codes (-2 to -8) are contacts.
+TEST_F(FrameStore, ContactPartnersOutOfRangeAreRefusedNamingTheRow) {
+  const fs::path good = write("contacts.h5", 3, 3, 5);  // frame 1: rows 1 to 6
+  const std::string where = ": row 3 (frame 1, contact 2): expected a particle index in [0, 5)";
+  for (const auto& [column, value] : {std::pair<std::string, std::int64_t>{"j", -100},
+                                      {"j", -9}, {"j", 5}, {"j", 2}, {"j", -1}, {"i", -6}, {"i", 5}}) {
+    const fs::path p = file("bad_partner.h5");
+    fs::copy_file(good, p, fs::copy_options::overwrite_existing);
+    {
+      Id f(H5Fopen(p.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
+      put_row(f, "/granpipe/contacts/" + column, 3, value);
+    }
+    const FrameReader r(p);
+    EXPECT_NO_THROW(r.read(0));
+    const std::string expected =
+        column == "i" ? where + ", got " + std::to_string(value)
+                      : where + " other than i (2) or a wall code -2 (x_low) to -8 (cylinder), got " +
+                            std::to_string(value);
+    EXPECT_EQ(message_of([&] { r.read(1); }), p.string() + ": /granpipe/contacts/" + column + expected);
+  }
+}
+
 // ---- Crash safety ----
 
 // A child appends frames for ever, telling the parent after each one; the parent kills

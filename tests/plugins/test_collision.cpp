@@ -3,7 +3,9 @@
 // ends), and on frames that are not one collision of two spheres in free flight.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <vector>
 
@@ -61,28 +63,37 @@ std::vector<Frame> exact_collision(double step, double until) {
       rate = -e * kSpeed;
     }
     frames.push_back(pair_frame(t, -overlap, rate, overlap > 0.0));
+    if (overlap > 0.0) {  // the law's force on sphere 0 (on the right) from sphere 1: along +x
+      auto& force = frames.back().contacts->add<Coordinates>(*find_standard("normal_force", Scope::Contact));
+      force.setZero();
+      force(0, 0) = kKn * overlap + kGamma * m_eff * rate;
+    }
   }
   return frames;
 }
 
-std::unique_ptr<test::PluginHarness> context() {
-  return test::make_context(collision::schema(), {{"k_n", kKn}, {"gamma_n", kGamma}, {"density", {kDensity}}});
+std::unique_ptr<test::PluginHarness> context(double kn = kKn) {
+  return test::make_context(collision::schema(), {{"k_n", kn}, {"gamma_n", kGamma}, {"density", {kDensity}}});
 }
 
-Results analyse(const std::vector<Frame>& frames) {
-  const auto ctx = context();
+// The analyzer on `frames`, saved every `save_every` steps, told the stiffness `kn`.
+Results analyse(std::vector<Frame> frames, std::int64_t save_every = 1, double kn = kKn) {
+  const auto ctx = context(kn);
   collision::CollisionAnalyzer analyzer(*ctx);
   FrameCache cache;
-  for (const Frame& f : frames) analyzer.consume(f, cache);
+  for (std::size_t k = 0; k < frames.size(); ++k) {
+    frames[k].step = static_cast<std::int64_t>(k) * save_every;
+    analyzer.consume(frames[k], cache);
+  }
   Results r;
   analyzer.finish(r);
   return r;
 }
 
 // The InputError message of analysing `frames`, or "" when there is none.
-std::string refusal(const std::vector<Frame>& frames) {
+std::string refusal(const std::vector<Frame>& frames, std::int64_t save_every = 1, double kn = kKn) {
   try {
-    analyse(frames);
+    analyse(frames, save_every, kn);
   } catch (const InputError& e) {
     return e.what();
   }
@@ -162,4 +173,25 @@ TEST(Collision, AnOverdampedPairIsRefused) {
     EXPECT_STREQ(e.what(), "collision: expected an underdamped pair (k_n/m_eff > gamma_n^2/4), got "
                            "k_n/m_eff = 1 and gamma_n^2/4 = 4");
   }
+}
+
+// The contact's ends are interpolated between frames one step apart: frames 10 steps apart
+// would widen them by up to 10 steps without a word.
+TEST(Collision, FramesThatAreNotEveryStepAreRefused) {
+  const double t_c = collision::predict_linear(kKn, kGamma, kMass / 2.0, "test").contact_time;
+  EXPECT_EQ(refusal(exact_collision(0.02 * t_c, 0.03), 10),
+            "frame 1: expected a frame every time step (the source's save_every 1), got step 10 after "
+            "step 0 (a gap of 10 steps)");
+}
+
+// The frames' normal forces are the law's at kKn: an analyzer told half of it would compare
+// with the wrong analytic contact time.
+TEST(Collision, AStiffnessOtherThanTheForcesShowIsRefused) {
+  const double t_c = collision::predict_linear(kKn, kGamma, kMass / 2.0, "test").contact_time;
+  const std::vector<Frame> frames = exact_collision(0.02 * t_c, 0.03);
+  const auto touching = std::count_if(frames.begin(), frames.end(), [](const Frame& f) { return f.contacts->rows() > 0; });
+  EXPECT_EQ(refusal(frames, 1, 1.01 * kKn), "") << "within the tolerance";
+  EXPECT_EQ(refusal(frames, 1, 1e5),
+            "params.k_n: expected the source's normal stiffness, got 100000, while the frames' normal "
+            "forces show k_n = 2e+05 (fitted over " + std::to_string(touching) + " frames in contact)");
 }

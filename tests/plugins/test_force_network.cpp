@@ -1,10 +1,14 @@
 // force_network on hand-made contact tables whose answers are counted by hand, the Eq. (11)
 // fit on samples drawn from Eq. (11), and F(r) against a direct O(M^2) sum.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <numbers>
 #include <random>
+#include <set>
 
 #include "force_correlation.hpp"
 #include "force_network_analyzer.hpp"
@@ -13,6 +17,7 @@
 
 using namespace granpipe;
 using namespace granpipe::force_network;
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -157,18 +162,52 @@ TEST(ForceNetwork, PdfIsANormalisedDensity) {
 }
 
 TEST(ForceNetwork, TooFewSamplesAreNotFittedAndNothingIsNaN) {
+  const Outcome r = run(frame_of(kTable));
+  EXPECT_EQ(r.results.scalar("eq11_status").value, 1.0);  // too few samples
+  EXPECT_TRUE(r.results.fits().empty());
+  for (const auto& [name, t] : r.results.tables()) {
+    for (const auto& column : t.data) {
+      for (double x : column) EXPECT_TRUE(std::isfinite(x)) << name;
+    }
+  }
+  for (const auto& [name, s] : r.results.scalars()) EXPECT_TRUE(std::isfinite(s.value)) << name;
+}
+
+// No loaded contact (every force zero, or an empty contact table): <F_n> is 0/0 and there
+// is no network, so the mean force, the largest network's z and the PDF are undefined:
+// NaN, with one warning in run.log for the run. Counts stay counts: 0.
+TEST(ForceNetwork, WithoutLoadedContactsTheStatisticsAreUndefinedNotZero) {
   std::vector<ContactSpec> unloaded = kTable;
   for (ContactSpec& s : unloaded) s.force = 0.0;
-  for (const auto& table : {kTable, unloaded, std::vector<ContactSpec>{}}) {
-    const Outcome r = run(frame_of(table));
-    EXPECT_EQ(r.results.scalar("eq11_status").value, 1.0);  // too few samples
-    EXPECT_TRUE(r.results.fits().empty());
-    for (const auto& [name, t] : r.results.tables()) {
-      for (const auto& column : t.data) {
-        for (double x : column) EXPECT_TRUE(std::isfinite(x)) << name;
+  const std::set<std::string> undefined = {"mean_force", "z_largest", "density", "error"};
+  for (const auto& table : {unloaded, std::vector<ContactSpec>{}}) {
+    const fs::path log = fs::temp_directory_path() / ("granpipe_fn_" + std::to_string(getpid()) + ".log");
+    fs::remove(log);
+    const auto ctx = test::make_context("force_network");
+    ctx->log().open_file(log.string());
+    ForceNetworkAnalyzer analyzer(*ctx);
+    FrameCache cache;
+    for (int frame = 0; frame < 2; ++frame) analyzer.consume(frame_of(table), cache);
+    Results results;
+    analyzer.finish(results);
+    EXPECT_EQ(results.scalar("eq11_status").value, 1.0);
+    for (const std::string name : {"per_frame", "pdf"}) {
+      const Table& t = results.tables().at(name);
+      for (std::size_t c = 0; c < t.columns.size(); ++c) {
+        for (double x : t.data[c]) {
+          EXPECT_EQ(std::isnan(x), undefined.contains(t.columns[c])) << name << "." << t.columns[c];
+        }
       }
     }
-    for (const auto& [name, s] : r.results.scalars()) EXPECT_TRUE(std::isfinite(s.value)) << name;
+    EXPECT_EQ(results.tables().at("per_frame").column("networks").at(0), 0.0);
+    std::ifstream in(log);
+    std::vector<std::string> lines;
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    fs::remove(log);
+    ASSERT_EQ(lines.size(), 1u);
+    EXPECT_EQ(lines[0], "warning: force_network: frame 0: no contact with |F_n| > min_force: its "
+                        "mean_force, z_largest and force PDF are undefined (nan in the results, "
+                        "not 0; docs/force_network.md); said for the first such frame only");
   }
 }
 

@@ -68,6 +68,30 @@ TEST(Intruder, AFrameWithoutABedIsRefused) {
   }
 }
 
+// With every radius equal there is no intruder: particle 0 is not one.
+TEST(Intruder, ABedWithoutAnIntruderIsRefused) {
+  Frame f = bed();
+  f.radius().setConstant(0.5);
+  try {
+    analyze({f});
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "frame 0: expected an intruder (one particle larger than every other), "
+                           "got 3 particles of the largest radius 0.5 (a bed without an intruder?)");
+  }
+  // Two large spheres: neither is the intruder. Radii equal to float precision are equal.
+  f.radius() << 1.5, 1.5 * (1.0 + 1e-8), 0.5;
+  EXPECT_THROW(intruder::measure_bed(f, "frame 0"), InputError);
+}
+
+// The intruder is the largest particle wherever it sits in the frame.
+TEST(Intruder, TheIntruderIsTheOneLargestParticle) {
+  Frame f = bed();
+  EXPECT_EQ(intruder::find_intruder(f, "test"), 1);
+  f.radius() << 0.5, 0.5, 0.51;
+  EXPECT_EQ(intruder::find_intruder(f, "test"), 2);
+}
+
 TEST(Intruder, VelocitiesAreTheIntrudersAndTheBedsCentreOfMass) {
   Frame f = bed();
   auto& v = f.add("velocity").as<Coordinates>();

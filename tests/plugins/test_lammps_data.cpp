@@ -1,12 +1,40 @@
-// A LAMMPS data file of spheres read back: ids in order, radii, species, positions; bad lines
-// named.
+// A LAMMPS data file of spheres read back: ids in order, radii, species, positions; other
+// atom styles, malformed lines, wrong atom counts, repeated ids and particles outside the
+// given container refused with the line or atom named.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
+#include <filesystem>
+#include <fstream>
 #include <sstream>
 
+#include "data_file.hpp"
 #include "lammps_data_source.hpp"
+#include "plugin_harness.hpp"
 
 using namespace granpipe;
+namespace fs = std::filesystem;
+
+namespace {
+
+// The message read_atoms throws for this file content.
+std::string refusal(const std::string& content) {
+  std::istringstream in(content);
+  try {
+    lammps_data::read_atoms(in, "x.data");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "accepted";
+}
+
+// A data file of two spheres of radius 0.5 (atom ids 1 and 7) at these positions.
+std::string two_spheres(const std::string& at1, const std::string& at7) {
+  return "LAMMPS data file via write_data\n\n2 atoms\n1 atom types\n\nAtoms # sphere\n\n"
+         "1 1 1 1.91 " + at1 + " 0 0 0\n7 1 1 1.91 " + at7 + " 0 0 0\n";
+}
+
+}  // namespace
 
 TEST(LammpsData, AtomsAreReadInIdOrderWithRadiusAndSpecies) {
   std::istringstream in(R"(LAMMPS data file via write_data
@@ -20,6 +48,11 @@ Atoms # sphere
 
 7 1 1 1.91 -2.5 1.0 0.5 0 0 0
 1 2 3.16 13.54 0 0 1.6 0 0 0
+
+Velocities
+
+1 0 0 0 0 0 0
+7 0 0 0 0 0 0
 )");
   const Frame f = lammps_data::read_atoms(in, "x.data");
   ASSERT_EQ(f.size(), 2);
@@ -34,12 +67,89 @@ Atoms # sphere
 }
 
 TEST(LammpsData, AMalformedLineIsNamed) {
-  std::istringstream in("1 atoms\n\nAtoms\n\n1 1 one 1.91 0 0 0\n");
-  try {
-    lammps_data::read_atoms(in, "x.data");
-    FAIL() << "expected an InputError";
-  } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(), "x.data: line 5: expected \"id type diameter density x y z\" "
-                           "(atom_style sphere), got \"1 1 one 1.91 0 0 0\"");
+  EXPECT_EQ(refusal("title\n1 atoms\n\nAtoms\n\n1 1 one 1.91 0 0 0\n"),
+            "x.data: line 6: expected \"id type diameter density x y z\" (atom_style sphere), "
+            "got \"1 1 one 1.91 0 0 0\"");
+}
+
+// atom_style full has sphere's 7 columns: read as sphere, the molecule id would be the type
+// and the type the diameter.
+TEST(LammpsData, AnotherAtomStyleIsRefusedByName) {
+  EXPECT_EQ(refusal("title\n1 atoms\n\nAtoms # full\n\n1 3 1 -0.5 0 0 0\n"),
+            "x.data: line 4: expected the Atoms section of atom_style sphere, got atom_style \"full\"");
+}
+
+// Without the style comment the columns decide: atom_style charge has 6.
+TEST(LammpsData, WithoutAStyleTheColumnsMustBeSpheres) {
+  EXPECT_EQ(refusal("title\n1 atoms\n\nAtoms\n\n1 1 -0.5 0 0 0\n"),
+            "x.data: line 6: expected \"id type diameter density x y z\" (atom_style sphere), "
+            "got \"1 1 -0.5 0 0 0\"");
+}
+
+TEST(LammpsData, TooFewAtomsNameTheSectionAndTheHeader) {
+  EXPECT_EQ(refusal("title\n\n3 atoms\n\nAtoms # sphere\n\n1 1 1 1 0 0 0\n2 1 1 1 2 0 0\n\n"
+                    "Velocities\n\n1 0 0 0 0 0 0\n"),
+            "x.data: line 5: expected the Atoms section to hold 3 atoms (the header's, line 3), got 2");
+}
+
+TEST(LammpsData, TooManyAtomsAreRefused) {
+  EXPECT_EQ(refusal("title\n1 atoms\nAtoms # sphere\n1 1 1 1 0 0 0\n2 1 1 1 2 0 0\n"),
+            "x.data: line 3: expected the Atoms section to hold 1 atoms (the header's, line 2), got 2");
+}
+
+TEST(LammpsData, AnAtomIdGivenTwiceIsRefusedWithBothLines) {
+  EXPECT_EQ(refusal("title\n2 atoms\nAtoms # sphere\n4 1 1 1 0 0 0\n4 1 1 1 2 0 0\n"),
+            "x.data: line 5: expected each atom id once, got id 4 again (first on line 4)");
+}
+
+class LammpsDataSource : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("granpipe_lammps_" + std::to_string(getpid()));
+    fs::create_directories(dir_);
   }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  // The source's refusal of this file in a cylinder of radius 2 on a base at z = 0, or
+  // "accepted".
+  std::string refusal(const std::string& content, double top = 100.0) {
+    const fs::path file = dir_ / "spheres.data";
+    std::ofstream(file) << content;
+    harness_ = test::make_context(
+        "lammps_data", {{"file", file.string()}, {"cylinder_radius", 2.0}, {"base", 0.0}, {"top", top}});
+    try {
+      lammps_data::LammpsDataSource source(*harness_);
+      EXPECT_EQ(source.work().total, 1.0);  // one frame, announced as such
+    } catch (const InputError& e) {
+      const std::string m = e.what();
+      return m.substr(m.find("spheres.data"));
+    }
+    return "accepted";
+  }
+
+  fs::path dir_;
+  std::unique_ptr<test::PluginHarness> harness_;
+};
+
+TEST_F(LammpsDataSource, SpheresInsideOrTouchingTheWallsAreAccepted) {
+  EXPECT_EQ(refusal(two_spheres("0 0 0.5", "1.5 0 0.52")), "accepted");
+  // Pressed into the cylinder and the base by 4 % of the radius: a soft contact.
+  EXPECT_EQ(refusal(two_spheres("0 0 0.48", "1.52 0 2")), "accepted");
+}
+
+TEST_F(LammpsDataSource, ASphereThroughTheCylinderIsRefusedByAtomId) {
+  EXPECT_EQ(refusal(two_spheres("0 0 0.5", "1.9 0 1")),
+            "spheres.data: atom 7 at (1.9, 0, 1), radius 0.5: expected an overlap with the wall "
+            "cylinder (radius 2 about (0, 0)) of at most 0.025 (0.05 of its radius), got 0.4 (the "
+            "container of params.cylinder_radius)");
+}
+
+TEST_F(LammpsDataSource, ASphereBelowTheBaseOrAboveTheTopIsRefused) {
+  EXPECT_EQ(refusal(two_spheres("0 0 0.4", "1 0 3")),
+            "spheres.data: atom 1 at (0, 0, 0.4), radius 0.5: expected an overlap with the wall "
+            "z_low (z = 0) of at most 0.025 (0.05 of its radius), got 0.1 (the container of "
+            "params.base)");
+  EXPECT_EQ(refusal(two_spheres("0 0 0.5", "1 0 3"), 2.0),
+            "spheres.data: atom 7 at (1, 0, 3), radius 0.5: expected its centre inside the open "
+            "side z_high (z = 2), got it 1 beyond (the container of params.top)");
 }

@@ -2,9 +2,12 @@
 // lattices with ties, the paper's Fig. 13, elongation once per edge, TCPs and the columns
 // it publishes.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <limits>
 #include <numeric>
 #include <random>
@@ -20,6 +23,7 @@
 
 using namespace granpipe;
 using namespace granpipe::mst;
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -293,6 +297,38 @@ TEST(Mst, FramesWithoutContactsHaveNoLoadedContacts) {
   f.contacts.reset();
   cache.clear();
   EXPECT_EQ(tcp_report(f, cache, options(Candidates::Cutoff, 2), "t").pairs.loaded, 0);
+}
+
+// No contact to recover: the share recovered is 0/0, undefined (NaN), not 0 — and run.log
+// says so once; the counts of trees and contacts are 0.
+TEST(Mst, WithoutContactsTheRecoveredFractionIsUndefined) {
+  const fs::path log = fs::temp_directory_path() / ("granpipe_mst_" + std::to_string(getpid()) + ".log");
+  fs::remove(log);
+  const auto ctx = test::make_context("mst", {{"passes", 2}});
+  ctx->log().open_file(log.string());
+  MstAnalyzer analyzer(*ctx);
+  Frame unloaded = figure_13();
+  unloaded.contacts->get<ValueTable<double>>("normal_force").setZero();
+  FrameCache cache;
+  analyzer.consume(unloaded, cache);
+  cache.clear();
+  analyzer.consume(unloaded, cache);
+  Results r;
+  analyzer.finish(r);
+  const Table& t = r.tables().at("per_frame");
+  ASSERT_EQ(t.rows(), 4u);
+  for (std::size_t row = 0; row < t.rows(); ++row) {
+    EXPECT_TRUE(std::isnan(t.column("recovered_fraction")[row]));
+    EXPECT_EQ(t.column("contacts")[row], 0.0);
+    EXPECT_EQ(t.column("tcp_largest_particles")[row], 0.0);
+  }
+  std::ifstream in(log);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  fs::remove(log);
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_EQ(lines[0], "warning: mst: frame 0: no contacts: its recovered_fraction is undefined (nan "
+                      "in per_frame, not 0; docs/mst.md); said for the first such frame only");
 }
 
 TEST(Mst, ANaNForceOrARowJoiningAParticleToItselfIsRefused) {

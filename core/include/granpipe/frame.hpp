@@ -22,7 +22,10 @@ namespace partner {
 constexpr std::int64_t none = -1;
 constexpr std::int64_t wall(Wall w) { return -2 - static_cast<std::int64_t>(w); }
 constexpr bool is_particle(std::int64_t p) { return p >= 0; }
-constexpr bool is_wall(std::int64_t p) { return p <= -2; }
+// Exactly the codes of the walls there are: any other negative number is garbage, not a wall.
+constexpr bool is_wall(std::int64_t p) {
+  return p <= -2 && p > -2 - static_cast<std::int64_t>(Wall::Count);
+}
 constexpr Wall wall_of(std::int64_t p) { return static_cast<Wall>(-2 - p); }
 }  // namespace partner
 

@@ -1,0 +1,92 @@
+#include "granpipe/particles_outside.hpp"
+
+#include <cmath>
+
+#include "granpipe/format_number.hpp"
+
+namespace granpipe {
+
+namespace {
+
+// The plane sides that bound particles: every Wall or Open side of the frame's axes, but
+// the x and y sides of a cylinder container, whose cylinder holds the particles instead.
+bool bounds(const Container& c, int dim, int axis, int side) {
+  if (c.shape == ContainerShape::Cylinder && axis < 2) return false;
+  return axis < dim && c.boundary[axis][side] != Boundary::Periodic;
+}
+
+double side_position(const Container& c, int axis, int side) {
+  return (side == 0 ? c.lo[axis] : c.hi[axis]) + c.wall_offset[axis];
+}
+
+// How far particle k reaches beyond a plane side; > allowed means outside.
+std::optional<ParticleOutside> beyond_side(const Frame& f, Eigen::Index k, int axis, int side,
+                                           double tolerance) {
+  const Container& c = f.container;
+  const double inward = (side == 0 ? 1.0 : -1.0) * (f.position()(k, axis) - side_position(c, axis, side));
+  const auto wall = static_cast<Wall>(2 * axis + side);
+  if (c.boundary[axis][side] == Boundary::Open) {
+    if (inward < 0.0) return ParticleOutside{k, wall, -inward};
+    return {};
+  }
+  const double overlap = f.radius()[k] - inward;
+  if (overlap > tolerance * f.radius()[k]) return ParticleOutside{k, wall, overlap};
+  return {};
+}
+
+std::optional<ParticleOutside> beyond_cylinder(const Frame& f, Eigen::Index k, double tolerance) {
+  const Container& c = f.container;
+  const double dx = f.position()(k, 0) - c.cylinder_center[0] - c.wall_offset[0];
+  const double dy = f.position()(k, 1) - c.cylinder_center[1] - c.wall_offset[1];
+  const double overlap = f.radius()[k] - (c.cylinder_radius - std::hypot(dx, dy));
+  if (overlap > tolerance * f.radius()[k]) return ParticleOutside{k, Wall::CylinderSide, overlap};
+  return {};
+}
+
+std::string where_is(const Frame& f, Wall wall) {
+  const Container& c = f.container;
+  if (wall == Wall::CylinderSide) {
+    return "the wall cylinder (radius " + format_number(c.cylinder_radius) + " about (" +
+           format_number(c.cylinder_center[0] + c.wall_offset[0]) + ", " +
+           format_number(c.cylinder_center[1] + c.wall_offset[1]) + "))";
+  }
+  const int axis = static_cast<int>(wall) / 2, side = static_cast<int>(wall) % 2;
+  const std::string at = std::string(1, "xyz"[axis]) + " = " + format_number(side_position(c, axis, side));
+  const bool open = c.boundary[axis][side] == Boundary::Open;
+  return std::string(open ? "the open side " : "the wall ") + to_string(wall) + " (" + at + ")";
+}
+
+}  // namespace
+
+std::optional<ParticleOutside> first_particle_outside(const Frame& frame, double tolerance) {
+  const bool cylinder = frame.container.shape == ContainerShape::Cylinder && frame.dim == 3;
+  for (Eigen::Index k = 0; k < frame.size(); ++k) {
+    for (int axis = 0; axis < 3; ++axis) {
+      for (int side = 0; side < 2; ++side) {
+        if (!bounds(frame.container, frame.dim, axis, side)) continue;
+        if (auto out = beyond_side(frame, k, axis, side, tolerance)) return out;
+      }
+    }
+    if (cylinder) {
+      if (auto out = beyond_cylinder(frame, k, tolerance)) return out;
+    }
+  }
+  return {};
+}
+
+std::string describe(const Frame& frame, const ParticleOutside& outside, double tolerance) {
+  const Eigen::Index k = outside.particle;
+  std::string at;
+  for (int a = 0; a < frame.dim; ++a) at += (a ? ", " : "") + format_number(frame.position()(k, a));
+  const std::string s = "at (" + at + "), radius " + format_number(frame.radius()[k]) + ": ";
+  const auto axis = static_cast<std::size_t>(outside.wall) / 2, side = static_cast<std::size_t>(outside.wall) % 2;
+  if (outside.wall != Wall::CylinderSide && frame.container.boundary[axis][side] == Boundary::Open) {
+    return s + "expected its centre inside " + where_is(frame, outside.wall) + ", got it " +
+           format_number(outside.depth) + " beyond";
+  }
+  return s + "expected an overlap with " + where_is(frame, outside.wall) + " of at most " +
+         format_number(tolerance * frame.radius()[k]) + " (" + format_number(tolerance) +
+         " of its radius), got " + format_number(outside.depth);
+}
+
+}  // namespace granpipe

@@ -1,0 +1,164 @@
+#include "data_file.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdint>
+#include <map>
+#include <sstream>
+#include <vector>
+
+#include "granpipe/errors.hpp"
+
+namespace granpipe::lammps_data {
+
+namespace {
+
+struct Atom {
+  std::int64_t id = 0;
+  int type = 0;
+  double diameter = 0.0;
+  Eigen::Vector3d x;
+};
+
+// The file's lines, numbered from 1 as an editor shows them.
+class Lines {
+ public:
+  explicit Lines(std::istream& in) : in_(in) {}
+  bool next(std::string& line) {
+    if (!std::getline(in_, line)) return false;
+    ++number_;
+    return true;
+  }
+  long number() const { return number_; }
+
+ private:
+  std::istream& in_;
+  long number_ = 0;
+};
+
+std::string before_comment(const std::string& line) { return line.substr(0, line.find('#')); }
+
+std::vector<std::string> words(const std::string& text) {
+  std::istringstream s(text);
+  std::vector<std::string> out;
+  for (std::string w; s >> w;) out.push_back(w);
+  return out;
+}
+
+// A section starts with its name ("Atoms", "Velocities", "Masses"): a word, where header
+// and data lines start with numbers.
+bool is_section(const std::string& line) {
+  const auto first = line.find_first_not_of(" \t\r");
+  return first != std::string::npos && std::isalpha(static_cast<unsigned char>(line[first]));
+}
+
+std::string quoted(const std::string& line) {
+  std::string s = line.substr(0, 60);
+  if (!s.empty() && s.back() == '\r') s.pop_back();
+  return "\"" + s + "\"";
+}
+
+struct AtomsSection {
+  long count = -1;        // from the header
+  long count_line = 0;    // the header line giving it
+  long section_line = 0;  // the "Atoms" line
+};
+
+// The header's "N atoms", then on to the Atoms section, whose atom style must be sphere.
+AtomsSection find_atoms_section(Lines& lines, const std::string& where) {
+  AtomsSection a;
+  std::string line;
+  lines.next(line);  // the title
+  bool header = true;
+  while (lines.next(line)) {
+    const std::vector<std::string> w = words(before_comment(line));
+    header = header && !is_section(line);
+    if (header && w.size() == 2 && w[1] == "atoms") {
+      std::istringstream n(w[0]);
+      if (!(n >> a.count) || !n.eof() || a.count < 0) {
+        throw InputError(where + ": line " + std::to_string(lines.number()) +
+                         ": expected \"N atoms\" with N a whole number >= 0, got " + quoted(line));
+      }
+      a.count_line = lines.number();
+    }
+    if (w.empty() || w[0] != "Atoms") continue;
+    a.section_line = lines.number();
+    const std::vector<std::string> style = words(line.substr(std::min(line.find('#'), line.size())));
+    if (style.size() >= 2 && style[1] != "sphere") {
+      throw InputError(where + ": line " + std::to_string(lines.number()) +
+                       ": expected the Atoms section of atom_style sphere, got atom_style \"" +
+                       style[1] + "\"");
+    }
+    break;
+  }
+  if (a.count < 0 || a.section_line == 0) {
+    throw InputError(where + ": expected a header line \"N atoms\" and an Atoms section, got " +
+                     std::string(a.count < 0 ? "no \"N atoms\"" : "no Atoms section"));
+  }
+  return a;
+}
+
+Atom parse_atom(const std::string& line, long number, const std::string& where) {
+  const std::vector<std::string> w = words(before_comment(line));
+  std::istringstream s(before_comment(line));
+  Atom a;
+  double density = 0.0;
+  const bool columns = w.size() == 7 || w.size() == 10;  // image flags or none
+  if (!columns || !(s >> a.id >> a.type >> a.diameter >> density >> a.x[0] >> a.x[1] >> a.x[2]) ||
+      a.type < 1) {
+    throw InputError(where + ": line " + std::to_string(number) +
+                     ": expected \"id type diameter density x y z\" (atom_style sphere), got " +
+                     quoted(line));
+  }
+  return a;
+}
+
+// The Atoms section's lines, up to the next section or the end of the file; each id once.
+std::vector<Atom> read_section(Lines& lines, const std::string& where) {
+  std::vector<Atom> out;
+  std::map<std::int64_t, long> line_of_id;
+  std::string line;
+  while (lines.next(line) && !is_section(line)) {
+    if (words(before_comment(line)).empty()) continue;
+    out.push_back(parse_atom(line, lines.number(), where));
+    const auto [seen, fresh] = line_of_id.emplace(out.back().id, lines.number());
+    if (!fresh) {
+      throw InputError(where + ": line " + std::to_string(lines.number()) +
+                       ": expected each atom id once, got id " + std::to_string(out.back().id) +
+                       " again (first on line " + std::to_string(seen->second) + ")");
+    }
+  }
+  return out;
+}
+
+std::vector<Atom> atoms(std::istream& in, const std::string& where) {
+  Lines lines(in);
+  const AtomsSection section = find_atoms_section(lines, where);
+  std::vector<Atom> out = read_section(lines, where);
+  if (static_cast<long>(out.size()) != section.count) {
+    throw InputError(where + ": line " + std::to_string(section.section_line) +
+                     ": expected the Atoms section to hold " + std::to_string(section.count) +
+                     " atoms (the header's, line " + std::to_string(section.count_line) +
+                     "), got " + std::to_string(out.size()));
+  }
+  std::sort(out.begin(), out.end(), [](const Atom& a, const Atom& b) { return a.id < b.id; });
+  return out;
+}
+
+}  // namespace
+
+Frame read_atoms(std::istream& in, const std::string& where) {
+  const std::vector<Atom> list = atoms(in, where);
+  Frame f;
+  f.resize(static_cast<Eigen::Index>(list.size()), 3);
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    const auto i = static_cast<Eigen::Index>(k);
+    f.position().row(i) = list[k].x.transpose().array();
+    f.radius()[i] = 0.5 * list[k].diameter;
+    f.id()[i] = list[k].id;
+    f.species()[i] = list[k].type - 1;
+  }
+  return f;
+}
+
+}  // namespace granpipe::lammps_data
