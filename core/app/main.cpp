@@ -51,6 +51,12 @@ std::string one_line(const std::string& message) {
   return out;
 }
 
+// --out "": an empty path meant the pipeline's own output directory, which --overwrite
+// then replaced.
+std::string check_out(const std::string& text) {
+  return text.empty() ? "expected a directory path, got \"\"" : "";
+}
+
 bool is_subcommand(const char* arg) {
   for (const char* s : {"run", "plugins", "describe", "validate", "inspect"})
     if (std::strcmp(arg, s) == 0) return true;
@@ -77,7 +83,8 @@ int main(int argc, char** argv) {
   bool overwrite = false, quiet = false;
   run->add_option("pipeline", pipeline_file, "pipeline JSON file")->required();
   run->add_option("--set", sets, "override a value: json.path=value (repeatable)");
-  run->add_option("--out", out_dir, "output directory (default: the pipeline's output.dir)");
+  run->add_option("--out", out_dir, "output directory (default: the pipeline's output.dir)")
+      ->check(CLI::Validator(check_out, ""));
   run->add_option("--threads", threads, "threads, 1 to " + std::to_string(kMaxThreads) + " (default: all cores)")
       ->check(CLI::Validator(check_threads, ""));
   run->add_flag("--overwrite", overwrite, "replace an existing granpipe output directory");

@@ -1,8 +1,5 @@
 #include "granpipe/container.hpp"
 
-#include <cmath>
-#include <limits>
-
 namespace granpipe {
 
 const char* to_string(Boundary b) {
@@ -39,52 +36,6 @@ Container Container::open_top_box(int dim, const Eigen::Vector3d& lo, const Eige
   c.hi = hi;
   c.boundary[dim - 1][1] = Boundary::Open;
   return c;
-}
-
-namespace {
-
-// How far a sphere of radius a reaches past each wall of c, the deepest first; the
-// depth is negative when it is clear of every wall.
-ParticleOutside deepest_wall(const Container& c, int dim, const Eigen::Vector3d& x, double a) {
-  ParticleOutside deepest{0, Wall::Count, -std::numeric_limits<double>::infinity()};
-  const auto consider = [&](Wall w, double depth) {
-    if (depth > deepest.depth) deepest = {0, w, depth};
-  };
-  const bool cylinder = c.shape == ContainerShape::Cylinder && dim == 3;
-  for (int axis = 0; axis < dim; ++axis) {
-    if (cylinder && axis < 2) continue;  // the cylinder's sides are not planes
-    const double shift = c.wall_offset[axis];
-    if (c.boundary[axis][0] == Boundary::Wall) {
-      consider(static_cast<Wall>(2 * axis), a - (x[axis] - (c.lo[axis] + shift)));
-    }
-    if (c.boundary[axis][1] == Boundary::Wall) {
-      consider(static_cast<Wall>(2 * axis + 1), a - ((c.hi[axis] + shift) - x[axis]));
-    }
-  }
-  if (cylinder) {
-    const double rho = std::hypot(x[0] - c.cylinder_center[0] - c.wall_offset[0],
-                                  x[1] - c.cylinder_center[1] - c.wall_offset[1]);
-    consider(Wall::CylinderSide, a - (c.cylinder_radius - rho));
-  }
-  return deepest;
-}
-
-}  // namespace
-
-std::optional<ParticleOutside> first_particle_outside(const Container& c, int dim,
-                                                      const Eigen::ArrayXXd& position,
-                                                      const Eigen::ArrayXd& radius,
-                                                      double tolerance) {
-  for (Eigen::Index i = 0; i < position.rows(); ++i) {
-    Eigen::Vector3d x = Eigen::Vector3d::Zero();
-    for (int axis = 0; axis < dim; ++axis) x[axis] = position(i, axis);
-    ParticleOutside deepest = deepest_wall(c, dim, x, radius[i]);
-    if (deepest.depth > tolerance * radius[i]) {
-      deepest.index = i;
-      return deepest;
-    }
-  }
-  return std::nullopt;
 }
 
 }  // namespace granpipe

@@ -13,6 +13,7 @@
 #include "granpipe/version.hpp"
 #include "h5_column.hpp"
 #include "h5_dataset.hpp"
+#include "h5_file.hpp"
 #include "h5_frame_layout.hpp"
 
 namespace granpipe {
@@ -158,8 +159,7 @@ struct FrameWriter::Impl {
 
 void FrameWriter::Impl::create_file(const std::string& provenance) {
   h5::Object fapl = h5::owned(file_access_latest(), "cannot make the file access list");
-  file = h5::owned(H5Fcreate(name.c_str(), H5F_ACC_EXCL, H5P_DEFAULT, fapl.id()),
-                   "cannot create the file (does its directory exist, is it writable, is the disk full?)");
+  file = h5::create_file(name, H5F_ACC_EXCL, fapl.id());
   h5::Object h5md = h5::create_group(file.id(), "/h5md");
   h5::write_attribute(h5md.id(), "version", std::vector<int>{1, 1});
   h5::Object author = h5::create_group(file.id(), "/h5md/author");

@@ -7,6 +7,11 @@ namespace granpipe::h5 {
 namespace {
 
 const char* const kComponentsAttr = "granpipe_components";
+// A column's dimension ("length", "length/time"). H5MD's `unit` attribute holds unit
+// strings ("nm", "ps"), which reduced units do not have: MDAnalysis refuses a file whose
+// `unit` reads "length", so granpipe leaves `unit` out and keeps the dimension under its
+// own name. Earlier granpipe files and other tools' files carry `unit`, read as before.
+const char* const kDimensionAttr = "granpipe_dimension";
 const char* const kUnitAttr = "unit";
 const char* const kDocAttr = "description";
 
@@ -80,7 +85,7 @@ void read_column(hid_t dataset, const std::string& path, hsize_t first, hsize_t 
 
 void write_property_attributes(hid_t dataset, const Property& p) {
   write_attribute(dataset, kComponentsAttr, p.components);
-  if (!p.unit.empty()) write_attribute(dataset, kUnitAttr, p.unit);
+  if (!p.unit.empty()) write_attribute(dataset, kDimensionAttr, p.unit);
   if (!p.doc.empty()) write_text_attribute(dataset, kDocAttr, p.doc);
 }
 
@@ -98,7 +103,12 @@ Property read_property(hid_t dataset, const std::string& path, const std::string
     throw Error(path + ": expected one value or one vector per " + std::string(to_string(scope)) +
                 ", got rows of shape " + format_shape(item));
   }
-  if (has_attribute(dataset, kUnitAttr)) p.unit = read_string_attribute(dataset, path, kUnitAttr).at(0);
+  for (const char* attr : {kDimensionAttr, kUnitAttr}) {
+    if (has_attribute(dataset, attr)) {
+      p.unit = read_string_attribute(dataset, path, attr).at(0);
+      break;
+    }
+  }
   if (has_attribute(dataset, kDocAttr)) p.doc = read_string_attribute(dataset, path, kDocAttr).at(0);
   return p;
 }

@@ -23,6 +23,7 @@ struct Prepared {
 
 std::atomic<bool> taken{false};           // by a live InterruptionRecord
 std::atomic<Prepared*> armed{nullptr};    // set once everything is prepared
+std::atomic<int> requested{0};            // the signal that asked the run to stop
 Prepared prepared;
 
 void write_all(int fd, const std::string& text) {
@@ -36,7 +37,7 @@ void write_all(int fd, const std::string& text) {
   }
 }
 
-extern "C" void record_and_die(int sig) {
+extern "C" void record_and_request_stop(int sig) {
   const int k = sig == SIGINT ? 0 : 1;
   if (const Prepared* p = armed.load()) {
     write_all(p->log_fd, p->log_line[k]);
@@ -48,9 +49,14 @@ extern "C" void record_and_die(int sig) {
     }
     write_all(STDERR_FILENO, p->stderr_line[k]);
   }
-  // The action from before takes over; the signal stays blocked until we return.
+  // The action from before takes over for a second signal, as for one that came while
+  // nothing was armed (then at once).
   sigaction(sig, &prepared.previous[k], nullptr);
-  raise(sig);
+  if (armed.load()) {
+    requested = sig;
+  } else {
+    raise(sig);
+  }
 }
 
 }  // namespace
@@ -67,10 +73,11 @@ InterruptionRecord::InterruptionRecord(const std::filesystem::path& dir, std::st
     prepared.log_line[k] = "interrupted by " + name + " before the run finished\n";
     prepared.stderr_line[k] = "granpipe: interrupted by " + name + "; " + outcome + "\n";
   }
+  requested = 0;
   armed = &prepared;
   armed_ = true;
   struct sigaction action {};
-  action.sa_handler = record_and_die;
+  action.sa_handler = record_and_request_stop;
   sigfillset(&action.sa_mask);
   for (int k = 0; k < 2; ++k) {
     sigaction(kSignals[k], nullptr, &prepared.previous[k]);
@@ -88,6 +95,17 @@ InterruptionRecord::~InterruptionRecord() {
   if (prepared.log_fd >= 0) close(prepared.log_fd);
   prepared.log_fd = -1;
   taken = false;
+}
+
+int stop_requested() { return requested.load(); }
+
+void throw_if_stop_requested() {
+  if (const int sig = requested.load()) throw StopRequested{sig};
+}
+
+void end_by_signal(int signal) {
+  // The handler gave the signal back its earlier action before it asked the run to stop.
+  raise(signal);
 }
 
 }  // namespace granpipe

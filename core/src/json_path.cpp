@@ -56,19 +56,42 @@ std::vector<std::string> split_path(const std::string& path, const std::string& 
   return parts;
 }
 
+namespace {
+
+// "an object", "a list of 2 entries", ...: what a value is, for messages about a path.
+std::string describe_kind(const json& v) {
+  if (v.is_null()) return "nothing";
+  if (v.is_object()) return "an object";
+  if (v.is_array()) return "a list of " + std::to_string(v.size()) + (v.size() == 1 ? " entry" : " entries");
+  if (v.is_string()) return "a string";
+  if (v.is_boolean()) return "true or false";
+  return "a number";
+}
+
+}  // namespace
+
 json& locate(json& root, const std::vector<std::string>& parts, const std::string& where) {
   json* node = &root;
-  for (const auto& p : parts) {
+  for (std::size_t n = 0; n < parts.size(); ++n) {
+    const std::string& p = parts[n];
+    const std::string before = join_path({parts.begin(), parts.begin() + static_cast<std::ptrdiff_t>(n)});
+    const std::string at = before.empty() ? "the top" : "\"" + before + "\"";
     if (is_digit(p[0])) {
+      if (!node->is_array()) {
+        throw InputError(where + ": expected a list at " + at + " for [" + p + "], got " + describe_kind(*node));
+      }
       std::size_t k = 0;
       const auto [end, error] = std::from_chars(p.data(), p.data() + p.size(), k);
-      if (error != std::errc{} || end != p.data() + p.size() || !node->is_array() || k >= node->size()) {
-        throw InputError(where + ": expected an existing list entry [" + p + "], got none");
+      if (error != std::errc{} || end != p.data() + p.size() || k >= node->size()) {
+        throw InputError(where + ": expected an existing list entry " + before + "[" + p + "], got " +
+                         describe_kind(*node));
       }
       node = &(*node)[k];
     } else {
       if (node->is_null()) *node = json::object();
-      if (!node->is_object()) throw InputError(where + ": expected an object at \"" + p + "\"");
+      if (!node->is_object()) {
+        throw InputError(where + ": expected an object at " + at + " for \"" + p + "\", got " + describe_kind(*node));
+      }
       node = &(*node)[p];
     }
   }

@@ -148,6 +148,7 @@ void OutputDirectory::claim_beside() {
 
 void OutputDirectory::complete(Log& log) {
   interruption_.reset();
+  throw_if_stop_requested();  // a signal that came before the handlers were given back
   marker_.status = RunStatus::Complete;
   write_run_marker(work_, marker_);
   if (replacing_) remove_earlier(swap_in(), log);

@@ -22,6 +22,9 @@ struct PluginSpec {
   const PluginInfo* info = nullptr;
   std::string name;  // unique among the analyzers and writers
   std::string where; // "file: analyzers[k]"
+  // An analyzer's "publish": false keeps its columns out of the frames, so that a second
+  // instance of a plugin can measure again without clashing with the first's columns.
+  bool publish = true;
 };
 
 struct Pipeline::Impl {

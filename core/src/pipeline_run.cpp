@@ -2,10 +2,12 @@
 // frames.h5, results to results.h5, points in parallel.
 #include <algorithm>
 #include <chrono>
+#include <csignal>
 #include <ctime>
 #include <exception>
 #include <fstream>
 #include <mutex>
+#include <set>
 #include <thread>
 #include <utility>
 #include <vector>
@@ -13,9 +15,11 @@
 #include "granpipe/atomic_file.hpp"
 #include "granpipe/frame_store.hpp"
 #include "frames_file_writer.hpp"
+#include "interruption_record.hpp"
 #include "output_directory.hpp"
-#include "result_stream.hpp"
 #include "pipeline_impl.hpp"
+#include "published_columns.hpp"
+#include "result_stream.hpp"
 
 namespace granpipe {
 namespace fs = std::filesystem;
@@ -27,31 +31,13 @@ struct PointPlugins {
   std::unique_ptr<Source> source;
   std::vector<std::unique_ptr<Analyzer>> analyzers;
   std::vector<std::unique_ptr<Writer>> writers;  // the pipeline's
+  std::vector<std::string> warnings;             // for the run's log
 };
 
-const Property* provided(const FrameContent& have, const Property& need) {
-  for (const Property& p : have.columns) {
-    if (p.name == need.name && p.scope == need.scope) return &p;
-  }
-  return nullptr;
-}
-
-// What `need` asks that `have` (the source's frames and the columns published by the
-// analyzers before) lacks, or "".
-std::string describe_needs(const FrameContent& need, const FrameContent& have) {
-  if (need.dim && have.dim && need.dim != have.dim)
-    return std::to_string(need.dim) + "D frames, but the source gives " + std::to_string(have.dim) + "D";
-  if (need.contacts && !have.contacts) return "contacts, which the source does not provide";
-  for (const Property& p : need.columns) {
-    if (is_required(p)) continue;
-    const std::string column = std::string(to_string(p.scope)) + " column \"" + p.name + "\"";
-    const Property* got = provided(have, p);
-    if (!got) return column + ", which neither the source nor an analyzer before it provides";
-    if (!got->matches(p)) {
-      return column + " as " + describe_type(p) + ", but it is provided as " + describe_type(*got);
-    }
-  }
-  return "";
+// "analyzer \"packing\"", or "analyzer \"top\" (packing)" when named otherwise.
+std::string analyzer_title(const PluginSpec& spec) {
+  const std::string title = "analyzer \"" + spec.name + "\"";
+  return spec.name == spec.info->name ? title : title + " (" + spec.info->name + ")";
 }
 
 // Analyzer `a` publishes `c`; an analyzer before it that reads `c` as the source saved it
@@ -106,43 +92,40 @@ PointPlugins make_plugins(const Pipeline::Impl& p, std::size_t k, int threads, L
   } catch (const InputError& e) {
     throw InputError(located_message(p.top(), e.what()));
   }
-  FrameContent have = made.source->content(), published;
-  // Columns an analyzer reads as the source saved them, by analyzer index: a later
-  // analyzer that recomputes one would leave the earlier one on stale values.
+  FrameColumns frames(made.source->content(), p.source->name);
+  // Columns an analyzer reads as the source saved them, by analyzer index, and the columns
+  // analyzers publish: a later analyzer that recomputes a column read as saved would leave
+  // the earlier reader on stale values.
   std::vector<std::pair<std::size_t, Property>> read_as_saved;
+  std::vector<Property> published;
   for (std::size_t a = 0; a < p.analyzers.size(); ++a) {
     const PluginSpec& spec = p.analyzers[a];
+    const std::string at = "analyzers[" + std::to_string(a) + "]";
     try {
       made.analyzers.push_back(spec.info->make_analyzer(
-          context(point.analyzer_params[a], seeds.derive("analyzer:" + spec.name), spec.name,
-                  "analyzers[" + std::to_string(a) + "].params")));
+          context(point.analyzer_params[a], seeds.derive("analyzer:" + spec.name), spec.name, at + ".params")));
     } catch (const InputError& e) {
       throw InputError(located_message(p.top(), e.what()));
     }
-    const std::string missing = describe_needs(made.analyzers.back()->needs(), have);
-    if (!missing.empty()) {
-      throw InputError(spec.where + ": analyzer \"" + spec.info->name + "\" needs " + missing +
-                       " (source \"" + p.source->name + "\")");
-    }
+    const std::string missing = frames.lacks(made.analyzers.back()->needs());
+    if (!missing.empty()) throw InputError(spec.where + ": " + analyzer_title(spec) + " needs " + missing);
     for (const Property& c : made.analyzers.back()->needs().columns) {
-      if (!is_required(c) && !provided(published, c)) read_as_saved.emplace_back(a, c);
+      const bool by_analyzer = std::any_of(published.begin(), published.end(), [&](const Property& q) {
+        return q.name == c.name && q.scope == c.scope;
+      });
+      if (!is_required(c) && !by_analyzer) read_as_saved.emplace_back(a, c);
     }
-    // A column the source carries (frames saved by an earlier run) is replaced by the
-    // analyzer's; one that an earlier analyzer publishes, or a required one, is refused,
-    // and so is one an earlier analyzer reads as saved.
+    if (!spec.publish) continue;
     for (const Property& c : made.analyzers.back()->publishes()) {
       refuse_stale_reader(p, read_as_saved, a, c);
-      if (c.scope == Scope::Frame) {  // publish() is never asked for them
-        throw InputError(spec.where + ": analyzer \"" + spec.info->name + "\" publishes the frame "
-                         "column \"" + c.name + "\": expected particle or contact columns only");
+      published.push_back(c);
+    }
+    try {
+      for (const std::string& w : frames.publish(made.analyzers.back()->publishes(), at, analyzer_title(spec))) {
+        made.warnings.push_back(p.origin + ": " + w);
       }
-      if (provided(published, c) || is_required(c)) {
-        throw InputError(spec.where + ": analyzer \"" + spec.info->name + "\" publishes the column \"" +
-                         c.name + "\", which the frames already carry");
-      }
-      std::erase_if(have.columns, [&](const Property& p) { return p.name == c.name && p.scope == c.scope; });
-      have.columns.push_back(c);
-      published.columns.push_back(c);
+    } catch (const InputError& e) {
+      throw InputError(p.origin + ": " + e.what());
     }
   }
   for (std::size_t w = 0; w < p.writers.size(); ++w) {
@@ -171,41 +154,6 @@ std::unique_ptr<Writer> frames_file(const Pipeline::Impl& p, std::size_t k, cons
                                             provenance.dump());
 }
 
-// The columns an analyzer publishes join the frame, for the analyzers after it and the
-// writers; the runner removes them before the source fills the next frame. Contact columns
-// join only a frame that has a contact table.
-void publish_scope(Analyzer& analyzer, const std::vector<Property>& declared, Scope scope,
-                   PropertyTable& table, int dim) {
-  PropertyTable columns(scope, table.rows(), dim);
-  for (const Property& c : declared) {
-    if (c.scope == scope) columns.add(c);
-  }
-  if (columns.size() == 0) return;
-  analyzer.publish(columns);
-  for (std::size_t k = 0; k < columns.size(); ++k) {
-    Column& c = columns.column(k);
-    if (c.rows() != table.rows() || c.components() != c.property().components_in(dim)) {
-      throw InternalError("published column \"" + c.name() + "\" was resized");
-    }
-    table.remove(c.name());  // the source's column of that name, if any
-    table.add(c.property()).storage() = std::move(c.storage());
-  }
-}
-
-void publish_columns(Analyzer& analyzer, const std::vector<Property>& declared, Frame& frame) {
-  if (declared.empty()) return;
-  publish_scope(analyzer, declared, Scope::Particle, frame.particles, frame.dim);
-  if (frame.contacts) publish_scope(analyzer, declared, Scope::Contact, *frame.contacts, frame.dim);
-}
-
-// Removes what publish_columns added.
-void remove_published(const std::vector<Property>& declared, Frame& frame) {
-  for (const Property& c : declared) {
-    if (c.scope == Scope::Particle) frame.particles.remove(c.name);
-    if (c.scope == Scope::Contact && frame.contacts) frame.contacts->remove(c.name);
-  }
-}
-
 struct PointOutcome {
   ResultSet results;
   long frames = 0;
@@ -230,18 +178,24 @@ PointOutcome run_point(const Pipeline::Impl& p, std::size_t k, PointPlugins plug
       const std::string m = e.what();
       const bool names_part = m.rfind(part + ".", 0) == 0 || m.rfind(part + ":", 0) == 0;
       throw InputError(p.origin + ": " + (names_part ? m : part + ": " + m));
+    } catch (const InternalError& e) {  // a plugin's bug: still say whose
+      throw InternalError(p.origin + ": " + part + ": " + e.what());
     }
   };
   // What each analyzer publishes, asked once rather than every frame.
   std::vector<std::vector<Property>> published;
-  for (const auto& analyzer : plugins.analyzers) published.push_back(analyzer->publishes());
-  while (located("source", [&] { return plugins.source->next(frame); })) {
+  for (std::size_t a = 0; a < plugins.analyzers.size(); ++a) {
+    published.push_back(p.analyzers[a].publish ? plugins.analyzers[a]->publishes() : std::vector<Property>{});
+  }
+  for (;;) {
+    throw_if_stop_requested();  // a SIGINT or SIGTERM: stop between frames, files whole
+    if (!located("source", [&] { return plugins.source->next(frame); })) break;
     frame.check(where + " frame " + std::to_string(outcome.frames));
     cache.clear();
     for (std::size_t a = 0; a < plugins.analyzers.size(); ++a) {
       located("analyzers[" + std::to_string(a) + "]", [&] {
         plugins.analyzers[a]->consume(frame, cache);
-        publish_columns(*plugins.analyzers[a], published[a], frame);
+        publish_columns(*plugins.analyzers[a], published[a], analyzer_title(p.analyzers[a]), frame);
       });
     }
     if (outcome.frames % p.frame_stride == 0) {
@@ -339,6 +293,13 @@ void create_point_directory(const fs::path& dir) {
   if (ec) throw InputError(dir.string() + ": cannot create the directory: " + ec.message());
 }
 
+// A point's warnings not given yet by another point (`warned`).
+void warn_once(const PointPlugins& point, std::set<std::string>& warned, Log& log) {
+  for (const std::string& w : point.warnings) {
+    if (warned.insert(w).second) log.warn(w);
+  }
+}
+
 std::string utc_now() {
   const std::time_t t = std::time(nullptr);
   char buf[32];
@@ -357,13 +318,15 @@ struct ClosesLog {
 void Pipeline::check(Log& log) const {
   Progress quiet;
   quiet.set_enabled(false);
+  std::set<std::string> warned;
   for (std::size_t k = 0; k < impl_->points.size(); ++k) {
-    make_plugins(*impl_, k, 1, log, quiet, {}, nullptr);
+    warn_once(make_plugins(*impl_, k, 1, log, quiet, {}, nullptr), warned, log);
   }
 }
 
-RunSummary Pipeline::run(const RunOptions& options, Log& log) const {
-  const Impl& p = *impl_;
+namespace {
+
+RunSummary run_in_directory(const Pipeline::Impl& p, const RunOptions& options, Log& log) {
   const auto t0 = std::chrono::steady_clock::now();
   const std::string started = utc_now();
   RunSummary summary;
@@ -397,7 +360,7 @@ RunSummary Pipeline::run(const RunOptions& options, Log& log) const {
     log.open_file((dir / "run.log").string());
     // The next run's early lines (its plugins' checks) must not land in this run's log.
     const ClosesLog closing{log};
-    const std::string resolved = resolved_json();
+    const std::string resolved = p.resolved.dump(2);
     const auto provenance = [&](double seconds, bool complete) {
       return Provenance{p.name, resolved, version(), git_commit(), p.seed, threads, seconds, started,
                         complete};
@@ -409,6 +372,8 @@ RunSummary Pipeline::run(const RunOptions& options, Log& log) const {
     log.info("granpipe " + std::string(version()) + " (" + git_commit() + "): " + p.name + ", " +
              std::to_string(p.points.size()) + " point(s), seed " + std::to_string(p.seed) + ", " +
              std::to_string(threads) + " thread(s), output " + summary.output_dir.string());
+    std::set<std::string> warned;
+    for (const PointPlugins& point : plugins) warn_once(point, warned, log);
 
     progress.start(p.name, total_work, unit);
 
@@ -447,6 +412,8 @@ RunSummary Pipeline::run(const RunOptions& options, Log& log) const {
              std::to_string(summary.seconds) + " s; results in " +
              (summary.output_dir / "results.h5").string());
     out.complete(log);
+  } catch (const StopRequested&) {
+    throw;  // the signal's handler marked the run interrupted
   } catch (const std::exception& e) {
     out.fail(e.what());
     throw;
@@ -455,6 +422,18 @@ RunSummary Pipeline::run(const RunOptions& options, Log& log) const {
     throw;
   }
   return summary;
+}
+
+}  // namespace
+
+RunSummary Pipeline::run(const RunOptions& options, Log& log) const {
+  try {
+    return run_in_directory(*impl_, options, log);
+  } catch (const StopRequested& stop) {
+    // Every file of the run is closed by now (frames.partial.h5 opens without SWMR).
+    end_by_signal(stop.signal);
+    throw InputError(std::string("interrupted by ") + (stop.signal == SIGINT ? "SIGINT" : "SIGTERM"));
+  }
 }
 
 }  // namespace granpipe

@@ -91,8 +91,18 @@ Pipeline Pipeline::load(const fs::path& file, const std::vector<std::string>& se
 
 namespace {
 
+// An analyzer's "publish": true (the default) or false.
+bool read_publish(json& entry, const JsonLocation& at) {
+  if (!entry.contains("publish")) return true;
+  if (!entry["publish"].is_boolean()) {
+    throw InputError(at.child("publish").str() + ": expected true or false, got " + json_brief(entry["publish"]));
+  }
+  return entry["publish"].get<bool>();
+}
+
 // The analyzers or writers of a pipeline ("analyzers": [{"plugin": ..., "name": ...,
-// "params": {...}}, ...]), each name unique among both (the files they write start with it).
+// "publish": ..., "params": {...}}, ...]), each name unique among both (the files they
+// write start with it); only analyzers publish.
 std::vector<PluginSpec> parse_plugin_list(json& root, const std::string& key, PluginKind kind,
                                           const JsonLocation& top, const Registry& registry,
                                           std::set<std::string>& names) {
@@ -105,7 +115,10 @@ std::vector<PluginSpec> parse_plugin_list(json& root, const std::string& key, Pl
   for (std::size_t k = 0; k < root[key].size(); ++k) {
     json& a = root[key][k];
     const JsonLocation at = list_at.index(k);
-    check_keys(a, {"plugin", "name", "params"}, at);
+    const bool analyzer = kind == PluginKind::Analyzer;
+    check_keys(a, analyzer ? std::vector<std::string>{"plugin", "name", "publish", "params"}
+                           : std::vector<std::string>{"plugin", "name", "params"},
+               at);
     if (!a.contains("plugin") || !a["plugin"].is_string()) {
       throw InputError(at.child("plugin").str() + ": expected a plugin name, got " +
                        json_brief(a.value("plugin", json())));
@@ -120,6 +133,10 @@ std::vector<PluginSpec> parse_plugin_list(json& root, const std::string& key, Pl
                        "writer, got \"" + spec.name + "\" again");
     }
     a["name"] = spec.name;
+    if (analyzer) {
+      spec.publish = read_publish(a, at);
+      a["publish"] = spec.publish;
+    }
     specs.push_back(spec);
   }
   return specs;
@@ -198,7 +215,8 @@ Pipeline Pipeline::parse(const std::string& text, const std::string& origin,
     json p = root;
     std::string note;
     for (const auto& [path, value] : assignments[k].items()) {
-      locate(p, split_path(path, "sweep"), top.child("sweep").str()) = value;
+      const std::string at = top.child("sweep").child("parameters").str() + "[" + json_brief(path) + "]";
+      locate(p, split_path(path, at), at) = value;
       note += (note.empty() ? " (sweep point " + std::to_string(k) + ": " : ", ") + path + " = " +
               json_brief(value);
     }

@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <map>
 #include <sstream>
+#include <utility>
 
 #include "did_you_mean.hpp"
 
@@ -109,9 +111,22 @@ std::vector<std::string> LoadReport::warnings() const {
   for (const fs::path& d : without_plugins) {
     lines.push_back("plugin directory " + d.string() + " holds no granpipe_*.so plugin library");
   }
+  // Copies of a whole plugin directory earlier on the path: one line, not one per plugin.
+  std::map<std::pair<fs::path, fs::path>, std::vector<const Shadowed*>> by_directories;
   for (const Shadowed& s : shadowed) {
-    lines.push_back("plugin \"" + s.name + "\" of " + s.ignored + " ignored: " + s.used +
-                    ", earlier on the search path, provides it");
+    by_directories[{fs::path(s.ignored).parent_path(), fs::path(s.used).parent_path()}].push_back(&s);
+  }
+  for (const auto& [dirs, group] : by_directories) {
+    if (group.size() == 1) {
+      const Shadowed& s = *group.front();
+      lines.push_back("plugin \"" + s.name + "\" of " + s.ignored + " ignored: " + s.used +
+                      ", earlier on the search path, provides it");
+      continue;
+    }
+    std::string names;
+    for (const Shadowed* s : group) names += (names.empty() ? "" : ", ") + s->name;
+    lines.push_back(std::to_string(group.size()) + " plugins of " + dirs.first.string() + " ignored (" + names +
+                    "): the libraries of " + dirs.second.string() + ", earlier on the search path, provide them");
   }
   return lines;
 }

@@ -1,7 +1,11 @@
 #include "granpipe/property_table.hpp"
 
 #include <algorithm>
+#include <string>
 #include <utility>
+#include <vector>
+
+#include "did_you_mean.hpp"
 
 namespace granpipe {
 
@@ -62,7 +66,9 @@ const Column* PropertyTable::find(std::string_view name) const {
 }
 
 Column* PropertyTable::find(std::string_view name) {
-  return const_cast<Column*>(std::as_const(*this).find(name));
+  Column* c = const_cast<Column*>(std::as_const(*this).find(name));
+  if (c) c->handed_out_ = true;
+  return c;
 }
 
 Column& PropertyTable::add(const Property& property) {
@@ -103,12 +109,17 @@ void PropertyTable::clear(Eigen::Index rows, int dim) {
 
 const Column& PropertyTable::require(std::string_view name) const {
   if (const Column* c = find(name)) return *c;
+  std::vector<std::string> names;
+  for (const auto& c : columns_) names.push_back(c->name());
   throw InternalError(std::string("the ") + to_string(scope_) + " table has no column \"" +
-                      std::string(name) + "\" (declare it among the analyzer's needs)");
+                      std::string(name) + "\"" + did_you_mean(std::string(name), names) +
+                      known_list(names));
 }
 
 Column& PropertyTable::require(std::string_view name) {
-  return const_cast<Column&>(std::as_const(*this).require(name));
+  Column& c = const_cast<Column&>(std::as_const(*this).require(name));
+  c.handed_out_ = true;
+  return c;
 }
 
 }  // namespace granpipe

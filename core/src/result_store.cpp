@@ -12,6 +12,7 @@
 
 #include "granpipe/errors.hpp"
 #include "h5_dataset.hpp"
+#include "h5_file.hpp"
 #include "h5_object.hpp"
 #include "result_stream.hpp"
 
@@ -166,8 +167,7 @@ void write_h5(const fs::path& tmp, const fs::path& final_path, const ResultSet& 
               const Provenance& provenance) {
   h5::silence_error_stack();
   h5::input_errors_of(final_path.string(), [&] {
-    Object file_object =
-        owned(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), "cannot create");
+    Object file_object = h5::create_file(tmp.string(), H5F_ACC_TRUNC, H5P_DEFAULT);
     const hid_t file = file_object.id();
     write_provenance(file, provenance);
     for (const auto& [group, r] : results) write_group(file, group, r);

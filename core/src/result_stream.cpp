@@ -2,6 +2,7 @@
 
 #include "granpipe/errors.hpp"
 #include "h5_dataset.hpp"
+#include "h5_file.hpp"
 #include "h5_object.hpp"
 
 namespace granpipe {
@@ -32,8 +33,7 @@ void ResultStream::Impl::create(const Provenance& provenance) {
   // SWMR needs the latest file format.
   h5::check(H5Pset_libver_bounds(fapl.id(), H5F_LIBVER_LATEST, H5F_LIBVER_LATEST),
             "cannot ask for the latest file format");
-  file = h5::owned(H5Fcreate(name.c_str(), H5F_ACC_EXCL, H5P_DEFAULT, fapl.id()),
-                   "cannot create the file (does its directory exist, is it writable, is the disk full?)");
+  file = h5::create_file(name, H5F_ACC_EXCL, fapl.id());
   write_provenance(file.id(), provenance);
   for (Declared& t : tables) {
     const std::string path = "/" + t.group + "/" + t.name;

@@ -1,11 +1,13 @@
 #include "start_checks.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <sstream>
 
 #include "granpipe/contacts_by_distance.hpp"
 #include "granpipe/errors.hpp"
 #include "granpipe/format_number.hpp"
+#include "granpipe/particles_outside.hpp"
 #include "overlap_limit.hpp"
 
 namespace granpipe::dem {
@@ -23,13 +25,20 @@ std::string particle(const Frame& f, Eigen::Index i) {
 }
 
 void refuse_outside(const Frame& f, const std::string& where) {
-  Container at_rest = f.container;  // the run starts the walls at rest
-  at_rest.wall_offset.setZero();
-  const auto out = first_particle_outside(at_rest, f.dim, f.position(), f.radius(), kMaxOverlapFraction);
+  // The run starts with the walls at rest, and an open side holds nothing back (a bed
+  // saved in flight may be above its container's top).
+  Frame at_rest = f;
+  Container& c = at_rest.container;
+  c.wall_offset.setZero();
+  for (int axis = 0; axis < 3; ++axis) {
+    if (c.boundary[axis][0] == Boundary::Open) c.lo[axis] = -std::numeric_limits<double>::infinity();
+    if (c.boundary[axis][1] == Boundary::Open) c.hi[axis] = std::numeric_limits<double>::infinity();
+  }
+  const auto out = first_particle_outside(at_rest, kMaxOverlapFraction);
   if (!out) return;
-  throw InputError(where + ": " + particle(f, out->index) + " reaches " + format_number(out->depth) +
+  throw InputError(where + ": " + particle(f, out->particle) + " reaches " + format_number(out->depth) +
                    " past wall " + to_string(out->wall) + " (" +
-                   percent(out->depth / f.radius()[out->index]) +
+                   percent(out->depth / f.radius()[out->particle]) +
                    " of its radius): expected particles inside the container, touching its walls by "
                    "at most " + percent(kMaxOverlapFraction) + " of their radius");
 }

@@ -170,8 +170,10 @@ DiskPacking random_placement(const PluginContext& ctx, const Seeds& seeds) {
   const double r_max = *std::max_element(radii.begin(), radii.end());
   if (2.0 * r_max > width) {
     std::ostringstream s;
-    s << ctx.param("radius") << ": expected disks narrower than the box (width " << width
-      << "), got largest diameter " << 2.0 * r_max;
+    // The box is what a --set usually changes; the radius keeps the paper's value.
+    s << ctx.param("width") << ": expected at least the largest disk diameter " << 2.0 * r_max
+      << " (radius " << p.real("radius") << ", radius_spread " << p.real("radius_spread")
+      << "), got " << width;
     throw InputError(s.str());
   }
   // The simulation's grids have a cell per disk across the width: bound them before

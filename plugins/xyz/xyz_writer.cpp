@@ -46,6 +46,12 @@ std::string comment_line(const Frame& f) {
       lattice += buf;
     }
   }
+  // Without Origin viewers put the cell's corner at 0, off particles whose box starts elsewhere.
+  std::string origin = "Origin=\"";
+  for (int a = 0; a < 3; ++a) {
+    std::snprintf(buf, sizeof buf, "%s%.17g", a ? " " : "", a < f.dim ? c.lo[a] : 0.0);
+    origin += buf;
+  }
   std::string pbc = "pbc=\"";
   for (int a = 0; a < 3; ++a) {
     if (a) pbc += ' ';
@@ -62,7 +68,7 @@ std::string comment_line(const Frame& f) {
     properties += std::to_string(col.name() == "position" ? 3 : col.components());
   }
   std::snprintf(buf, sizeof buf, " Time=%.17g Step=%lld", f.time, static_cast<long long>(f.step));
-  return lattice + "\" " + properties + " " + pbc + "\"" + buf;
+  return lattice + "\" " + origin + "\" " + properties + " " + pbc + "\"" + buf;
 }
 
 std::string particle_line(const Frame& f, Eigen::Index i, int digits) {

@@ -1,6 +1,7 @@
 #pragma once
 // Frames as extended XYZ: per frame a count line, a comment line with the box
-// (Lattice=...), which sides are periodic (pbc=...), the time, the step and the list of
+// (Lattice=..., its lower corner as Origin=...), which sides are periodic (pbc=...), the
+// time, the step and the list of
 // columns (Properties=...), then one line per particle. Every particle column of the frame
 // is written, the published ones included, so that OVITO or ASE see what granpipe saw.
 #include <cstdio>

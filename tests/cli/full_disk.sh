@@ -19,9 +19,12 @@ for free_kib in 0 4 8 16 24 32 48; do
     mount -t tmpfs -o size=64k tmpfs "$disk" || { echo "skipped: cannot mount a tmpfs"; exit 77; }
     head -c $(((64 - free_kib) * 1024)) /dev/zero >"$disk/filler" 2>/dev/null || true
     echo "-- $free_kib KiB free, save_frames $save_frames"
-    "$expect" 2 "^granpipe: $disk/run/.*(disk full|No space left on device|cannot (create|flush|write|close))" \
+    said=$("$expect" 2 "^granpipe: $disk/run/.*(disk full|No space left on device|cannot (create|flush|write|close))" \
       -- "$exe" "$here/long_lattice.json" --quiet --set source.params.frames=4 \
-         --set output.save_frames=$save_frames --out "$disk/run"
+         --set output.save_frames=$save_frames --out "$disk/run") || { echo "$said"; exit 1; }
+    echo "$said"
+    # A file that cannot be created says why, not what might be the reason.
+    case "$said" in *"cannot create the file (does"*) echo "FAIL: no reason given"; exit 1 ;; esac
     for final in frames.h5 results.h5 packing.scalars.csv packing.profile.csv source.scalars.csv; do
       [ ! -e "$disk/run/$final" ] || { echo "FAIL: a failed run left $final"; exit 1; }
     done

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # interrupted_marker.sh GRANPIPE EXPECT WORKDIR
 # SIGINT and SIGTERM end a run with their usual status (130, 143), and now run.log and
-# the directory's marker say the run was interrupted; a SIGKILLed run's marker still
+# the directory's marker say the run was interrupted, and its frames.partial.h5 and
+# results.partial.h5 are closed files (no SWMR needed); a SIGKILLed run's marker still
 # says running. Reusing such a directory is refused with the way to rerun
 # (--overwrite). A replacing run that is interrupted leaves the earlier run whole.
 set -eu
@@ -44,6 +45,17 @@ for signal in INT:130 TERM:143; do
   stop "$name" "$code"
   status_is "$out" interrupted
   last_log_line_is "$out" "interrupted by SIG$name before the run finished"
+  # Stopped in order, the run closed its files: they open without SWMR.
+  /usr/bin/python3 - "$out" <<'PY' || { echo "FAIL: the files of the run stopped by SIG$name"; exit 1; }
+import sys, h5py
+out = sys.argv[1]
+for name in ("frames.partial.h5", "results.partial.h5"):
+    with h5py.File(f"{out}/{name}", "r") as f:  # no swmr=True
+        complete = f["granpipe"].attrs["complete"] if name.startswith("frames") else f.attrs["complete"]
+        assert int(complete) == 0, f"{name} of an interrupted run must say it is incomplete"
+with h5py.File(f"{out}/frames.partial.h5", "r") as f:
+    assert len(f["particles/all/position/value"]) >= 1, "no frame kept"
+PY
   [ "$(cat "$work/stderr")" = "granpipe: interrupted by SIG$name; $out is marked interrupted (rerun with --overwrite)" ] ||
     { echo "FAIL: stderr after SIG$name: $(cat "$work/stderr")"; exit 1; }
   "$expect" 2 "sig$name: expected a new or empty output directory, got one holding an interrupted run; pass --overwrite to replace it" \

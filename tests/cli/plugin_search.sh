@@ -28,4 +28,12 @@ grep -q "^granpipe: warning: plugin \"lattice\" of $plugins/granpipe_lattice.so 
   fail "no warning for the plugin provided twice: $(cat "$work/err")"
 grep -q "lattice of $plugins/granpipe_lattice.so (used: $work/dup/granpipe_lattice_copy.so)" "$work/out" ||
   fail "granpipe plugins does not list the ignored library: $(cat "$work/out")"
-echo "search path named, empty directory and duplicate plugin reported"
+# A copy of every bundled plugin earlier on the path: one line for them all, with the count.
+mkdir -p "$work/copies"
+cp "$plugins"/granpipe_*.so "$work/copies/"
+count=$(ls "$plugins"/granpipe_*.so | wc -l)
+GRANPIPE_PLUGIN_PATH="$work/copies:$plugins" "$exe" plugins 2>"$work/err" >/dev/null
+[ "$(wc -l <"$work/err")" -eq 1 ] || fail "expected one warning for the copied plugins, got: $(cat "$work/err")"
+grep -q "^granpipe: warning: $count plugins of $plugins ignored (.*lattice.*): the libraries of $work/copies, earlier on the search path, provide them$" "$work/err" ||
+  fail "the copied plugins' warning: $(cat "$work/err")"
+echo "search path named, empty directory and duplicate plugins reported"

@@ -253,9 +253,22 @@ TEST(PipelineErrors, SetOverridesAreValidatedToo) {
 TEST(PipelineErrors, SetListIndexBeyond64BitsIsNoEntry) {
   EXPECT_EQ(error_of(kGood, {"analyzers[99999999999999999999999].params.scale=1"}),
             "--set analyzers[99999999999999999999999].params.scale=1: expected an existing list entry "
-            "[99999999999999999999999], got none");
+            "analyzers[99999999999999999999999], got a list of 1 entry");
   EXPECT_EQ(error_of(kGood, {"analyzers[1].params.scale=1"}),
-            "--set analyzers[1].params.scale=1: expected an existing list entry [1], got none");
+            "--set analyzers[1].params.scale=1: expected an existing list entry analyzers[1], got a list of 1 entry");
+}
+
+TEST(PipelineErrors, SetIndexIntoAnObjectSaysItIsAnObject) {
+  EXPECT_EQ(error_of(kGood, {"source[0]=1"}),
+            "--set source[0]=1: expected a list at \"source\" for [0], got an object");
+  EXPECT_EQ(error_of(kGood, {"seed.x=1"}), "--set seed.x=1: expected an object at \"seed\" for \"x\", got a number");
+}
+
+TEST(PipelineErrors, SweepPathOfAMissingAnalyzerSaysHowManyThereAre) {
+  EXPECT_EQ(error_of(R"({"source": {"plugin": "random"}, "analyzers": [{"plugin": "meanx"}],
+                         "sweep": {"parameters": {"analyzers[2].params.scale": [1, 2]}}})"),
+            "p.json: sweep.parameters[\"analyzers[2].params.scale\"]: expected an existing list entry "
+            "analyzers[2], got a list of 1 entry");
 }
 
 // Found by fuzz_pipeline: a bare-word --set value that is not UTF-8 became a JSON string

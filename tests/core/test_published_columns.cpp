@@ -5,6 +5,9 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
 
 #include "granpipe/frame_store.hpp"
 #include "granpipe/pipeline.hpp"
@@ -124,6 +127,63 @@ class LabelSum : public Analyzer {
   std::int64_t sum_ = 0;
 };
 
+// Declares label but never fills it.
+class LazyLabeller : public Labeller {
+ public:
+  using Labeller::Labeller;
+  void publish(PropertyTable&) override {}
+};
+
+// Fills label with too few rows.
+class ShortLabeller : public Labeller {
+ public:
+  using Labeller::Labeller;
+  void publish(PropertyTable& columns) override { columns.get<IndexArray>("label") = IndexArray::Zero(3); }
+};
+
+// Fills a column it did not declare (a typo).
+class TypoLabeller : public Labeller {
+ public:
+  using Labeller::Labeller;
+  void publish(PropertyTable& columns) override { columns.get<IndexArray>("lable") = IndexArray::Zero(5); }
+};
+
+// Needs label as a real column, and a column nobody provides under a near name.
+const Property kRealLabel{"label", Scope::Particle, ValueType::Real, 1, "", "label as a real"};
+class RealLabelReader : public LabelSum {
+ public:
+  using LabelSum::LabelSum;
+  FrameContent needs() const override { return {.columns = {kRealLabel}}; }
+};
+class MisspeltLabelReader : public LabelSum {
+ public:
+  using LabelSum::LabelSum;
+  FrameContent needs() const override {
+    return {.columns = {{"lable", Scope::Particle, ValueType::Integer, 1, "", ""}}};
+  }
+};
+
+// The line with label as a real column, as frames of another tool might carry it.
+class RealLabelledLine : public LineSource {
+ public:
+  using LineSource::LineSource;
+  FrameContent content() const override { return {.dim = 3, .columns = {kRealLabel}}; }
+  bool next(Frame& f) override {
+    if (!LineSource::next(f)) return false;
+    f.particles.add(kRealLabel);
+    return true;
+  }
+};
+
+// Publishes velocity as an integer: not the standard column's type.
+class IntegerVelocity : public Labeller {
+ public:
+  using Labeller::Labeller;
+  std::vector<Property> publishes() const override {
+    return {{"velocity", Scope::Particle, ValueType::Integer, 1, "", ""}};
+  }
+};
+
 Registry registry_with_h5md() {
   Registry r;
   load_plugins(r, plugin_search_path());  // the real h5md source
@@ -134,6 +194,13 @@ Registry registry_with_h5md() {
   r.add_source<ChainSource>("chain", "five particles on a line, neighbours in contact", Schema{});
   r.add_analyzer<BondLabeller>("bond_labeller", "publishes label and bond", Schema{});
   r.add_analyzer<BondSum>("bond_sum", "sums bond", Schema{});
+  r.add_analyzer<LazyLabeller>("lazy_labeller", "declares label, never fills it", Schema{});
+  r.add_analyzer<ShortLabeller>("short_labeller", "fills label with 3 rows", Schema{});
+  r.add_analyzer<TypoLabeller>("typo_labeller", "fills lable", Schema{});
+  r.add_analyzer<RealLabelReader>("real_label_reader", "needs label as real", Schema{});
+  r.add_analyzer<MisspeltLabelReader>("misspelt_label_reader", "needs lable", Schema{});
+  r.add_source<RealLabelledLine>("real_labelled_line", "the line with a real label", Schema{});
+  r.add_analyzer<IntegerVelocity>("integer_velocity", "publishes velocity as an integer", Schema{});
   return r;
 }
 
@@ -154,11 +221,12 @@ double run_label_sum(const std::string& text, const Registry& r, const fs::path&
   return p.run(o, log).results.at("label_sum").scalar("label_sum").value;
 }
 
-// The message of a pipeline of the line source and these analyzers refused by check().
-std::string refusal_of(const std::string& analyzers) {
+// The message of a pipeline of the line source (or `source`) and these analyzers refused
+// by check().
+std::string refusal_of(const std::string& analyzers, const std::string& source = "line") {
   const Registry r = registry_with_h5md();
   const Pipeline p = Pipeline::parse(
-      R"({"source": {"plugin": "line"}, "analyzers": )" + analyzers + "}", "p.json", {}, r);
+      R"({"source": {"plugin": ")" + source + R"("}, "analyzers": )" + analyzers + "}", "p.json", {}, r);
   Log log;
   log.set_quiet(true);
   try {
@@ -195,6 +263,11 @@ TEST(PublishedColumns, SeenByLaterAnalyzersWrittenAndReadBackByTheH5mdSource) {
                             (first / "frames.h5").string() +
                             R"("}}, "analyzers": [{"plugin": "labeller"}, {"plugin": "label_sum"}]})";
   EXPECT_EQ(run_label_sum(again, r, third), 60.0);
+  std::ifstream log(third / "run.log");
+  const std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("warning: p.json: analyzers[0]: analyzer \"labeller\" replaces the particle column "
+                      "\"label\" that the source \"h5md\" provides (an earlier run's, read back) with its own"),
+            std::string::npos) << text;
   fs::remove_all(third);
   fs::remove_all(first);
   fs::remove_all(second);
@@ -206,10 +279,80 @@ TEST(PublishedColumns, PipelineOrderDecidesWhoSeesAColumn) {
             "neither the source nor an analyzer before it provides (source \"line\")");
 }
 
-TEST(PublishedColumns, AColumnTheFramesCarryCannotBePublishedAgain) {
+// The message of a run of the line source and these analyzers that stops with an InputError.
+std::string run_error_of(const std::string& analyzers, const std::string& name) {
+  const Registry r = registry_with_h5md();
+  const fs::path out = fresh_dir(name);
+  std::string message = "no error";
+  try {
+    run_label_sum(R"({"source": {"plugin": "line"}, "analyzers": )" + analyzers + "}", r, out);
+  } catch (const InputError& e) {
+    message = e.what();
+  }
+  fs::remove_all(out);
+  return message;
+}
+
+TEST(PublishedColumns, AColumnPublishedTwiceIsRefusedNamingBothPublishers) {
   EXPECT_EQ(refusal_of(R"([{"plugin": "labeller"}, {"plugin": "labeller", "name": "again"}])"),
-            "p.json: analyzers[1]: analyzer \"labeller\" publishes the column \"label\", which the "
-            "frames already carry");
+            "p.json: analyzers[1]: analyzer \"again\" (labeller) publishes the particle column "
+            "\"label\", which analyzer \"labeller\" at analyzers[0] publishes too; give one of them "
+            "\"publish\": false (docs/pipelines.md, \"Published columns\")");
+}
+
+TEST(PublishedColumns, ASecondInstanceWithPublishFalseRunsAndLeavesTheColumnToTheFirst) {
+  const Registry r = registry_with_h5md();
+  const fs::path out = fresh_dir("publish_false");
+  EXPECT_EQ(run_label_sum(R"({"source": {"plugin": "line"},
+      "analyzers": [{"plugin": "labeller"}, {"plugin": "short_labeller", "publish": false},
+                    {"plugin": "label_sum"}]})", r, out), 60.0);
+  fs::remove_all(out);
+  try {
+    Pipeline::parse(R"({"source": {"plugin": "line"}, "analyzers": [{"plugin": "labeller", "publish": 1}]})",
+                    "p.json", {}, r);
+    ADD_FAILURE() << "\"publish\": 1 was accepted";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "p.json: analyzers[0].publish: expected true or false, got 1");
+  }
+}
+
+TEST(PublishedColumns, AColumnOfAnotherTypeThanTheSourcesOrTheStandardOneIsRefused) {
+  EXPECT_EQ(refusal_of(R"([{"plugin": "labeller"}])", "real_labelled_line"),
+            "p.json: analyzers[0]: analyzer \"labeller\" publishes the particle column \"label\" as integer, "
+            "but the source \"real_labelled_line\" provides it as real: choose another name");
+  EXPECT_EQ(refusal_of(R"([{"plugin": "integer_velocity"}])"),
+            "p.json: analyzers[0]: analyzer \"integer_velocity\" publishes the particle column \"velocity\" "
+            "as integer, but the standard column of that name is real[dim]: choose another name");
+}
+
+TEST(PublishedColumns, ANeededTypeMismatchNamesThePublisher) {
+  EXPECT_EQ(refusal_of(R"([{"plugin": "labeller"}, {"plugin": "real_label_reader"}])"),
+            "p.json: analyzers[1]: analyzer \"real_label_reader\" needs particle column \"label\" as real, "
+            "but analyzer \"labeller\" at analyzers[0] publishes it as integer");
+  EXPECT_EQ(refusal_of(R"([{"plugin": "real_label_reader"}])", "real_labelled_line"), "no error");
+}
+
+TEST(PublishedColumns, ANeededColumnNameGetsADidYouMean) {
+  EXPECT_EQ(refusal_of(R"([{"plugin": "labeller"}, {"plugin": "misspelt_label_reader"}])"),
+            "p.json: analyzers[1]: analyzer \"misspelt_label_reader\" needs particle column \"lable\" "
+            "(did you mean \"label\"?), which neither the source nor an analyzer before it provides "
+            "(source \"line\")");
+}
+
+TEST(PublishedColumns, AColumnPublishNeverFilledStopsTheRunInsteadOfSavingZeros) {
+  EXPECT_EQ(run_error_of(R"([{"plugin": "lazy_labeller"}, {"plugin": "label_sum"}])", "lazy"),
+            "p.json: analyzers[0]: analyzer \"lazy_labeller\": publish() never filled the particle column "
+            "\"label\" it declares");
+}
+
+TEST(PublishedColumns, PublishErrorsNameTheAnalyzerTheColumnAndTheSizes) {
+  EXPECT_EQ(run_error_of(R"([{"plugin": "short_labeller"}, {"plugin": "label_sum"}])", "short"),
+            "p.json: analyzers[0]: analyzer \"short_labeller\": publish() gave the particle column \"label\" "
+            "3 rows x 1 component, expected 5 rows x 1 component (one row per particle)");
+  EXPECT_EQ(run_error_of(R"([{"plugin": "typo_labeller"}, {"plugin": "label_sum"}])", "typo"),
+            "p.json: analyzers[0]: analyzer \"typo_labeller\": publish(): the particle table has no column "
+            "\"lable\" (did you mean \"label\"?); known: label; publish() fills only the columns publishes() "
+            "declares");
 }
 
 TEST(PublishedColumns, AFrameColumnCannotBePublished) {
@@ -241,4 +384,41 @@ TEST(PublishedColumns, ContactColumnsAreLeftOutOfFramesWithoutContacts) {
   FrameReader saved(out / "frames.h5");
   EXPECT_FALSE(saved.read(0).contacts.has_value());
   fs::remove_all(out);
+}
+
+// Issue 18, point 13: packing measured in two regions, as pipelines of earlier versions did.
+TEST(PublishedColumns, TwoPackingAnalyzersMeasureTwoRegionsInTheirOwnGroups) {
+  Registry r;
+  load_plugins(r, plugin_search_path());
+  const std::string source = R"({"source": {"plugin": "lattice", "params": {"lattice": "fcc", "cells": [4, 4, 8],
+      "boundary": "walls", "jitter": 0.05, "frames": 2}}, "analyzers": [
+      {"plugin": "packing", "name": "lower", "params": {"exclude_top": 4, "contact_tolerance": 0.11}},
+      {"plugin": "packing", "name": "upper", )";
+  const std::string upper = R"("params": {"exclude_bottom": 4, "contact_tolerance": 0.11}}]})";
+  Log log;
+  log.set_quiet(true);
+  try {
+    Pipeline::parse(source + upper, "p.json", {}, r).check(log);
+    ADD_FAILURE() << "two packing analyzers that both publish coordination were accepted";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "p.json: analyzers[1]: analyzer \"upper\" (packing) publishes the particle "
+                           "column \"coordination\", which analyzer \"lower\" (packing) at analyzers[0] "
+                           "publishes too; give one of them \"publish\": false (docs/pipelines.md, \"Published "
+                           "columns\")");
+  }
+
+  const Pipeline p = Pipeline::parse(source + R"("publish": false, )" + upper, "p.json", {}, r);
+  RunOptions o;
+  o.progress = false;
+  o.out = fresh_dir("two_packings");
+  const ResultSet results = p.run(o, log).results;
+  const double lower = results.at("lower").scalar("phi").value, top = results.at("upper").scalar("phi").value;
+  // Jitter 0.05 shrinks the radii of the fcc crystal (0.74) by 5 %: about 0.56.
+  EXPECT_GT(lower, 0.5);
+  EXPECT_LT(lower, 0.65);
+  EXPECT_GT(top, 0.5);
+  EXPECT_LT(top, 0.65);
+  EXPECT_NE(lower, top);  // two regions of one jittered crystal
+  EXPECT_TRUE(FrameReader(*o.out / "frames.h5").info().has("coordination"));
+  fs::remove_all(*o.out);
 }

@@ -24,13 +24,31 @@ grep -q "^particles,27," "$csv" || { echo "FAIL: expected 27 particles:"; cat "$
 # 27 particles x 1 frame of scaled radius 0.5: all in the third of 4 bins of [0, 1).
 grep -q "^0.5,0.75,27," "$work/out/radius_stats.radii.csv" ||
   { echo "FAIL: the histogram of radii:"; cat "$work/out/radius_stats.radii.csv"; exit 1; }
-# The README shows this plugin's code as it is.
-python3 - "$src/README.md" "$src/tests/outoftree/example_plugin/radius_stats.cpp" <<'PY' ||
+# The README shows the plugins' code as it is.
+for example in radius_stats contact_forces; do
+  python3 - "$src/README.md" "$src/tests/outoftree/example_plugin/$example.cpp" <<'PY' ||
 import sys
 readme, code = (open(p).read() for p in sys.argv[1:])
 sys.exit(0 if "```cpp\n" + code + "```" in readme else 1)
 PY
-  { echo "FAIL: README.md does not show tests/outoftree/example_plugin/radius_stats.cpp as it is"; exit 1; }
+    { echo "FAIL: README.md does not show tests/outoftree/example_plugin/$example.cpp as it is"; exit 1; }
+done
+# The contact example on saved DEM frames: normal forces read, the fabric tensor's trace 1.
+cat >"$work/contacts.json" <<JSON
+{"source": {"plugin": "h5md", "params": {"file": "$src/data-samples/bnp_t10.h5", "max_overlap": 0.05}},
+ "analyzers": [{"plugin": "contact_forces"}], "output": {"dir": "$work/contacts", "save_frames": false}}
+JSON
+"$work/prefix/bin/granpipe" "$work/contacts.json" --quiet
+python3 - "$work/contacts" <<'PY' || { echo "FAIL: the contact example's results"; exit 1; }
+import csv, sys
+out = sys.argv[1]
+scalars = {r[0]: r for r in csv.reader(l for l in open(f"{out}/contact_forces.scalars.csv") if not l.startswith("#"))}
+assert float(scalars["contacts"][1]) > 1000 and float(scalars["normal_force"][1]) > 0, scalars
+rows = [r for r in csv.reader(l for l in open(f"{out}/contact_forces.fabric.csv") if not l.startswith("#"))][1:]
+trace = sum(float(rows[a][1 + a]) for a in range(3))
+assert abs(trace - 1) < 1e-9, f"fabric tensor trace {trace}"
+print(f"contact_forces: {scalars['contacts'][1]} contacts, fabric trace {trace}")
+PY
 # The published column is in frames.h5, with its type, unit and description.
 "$work/prefix/bin/granpipe" inspect "$work/out/frames.h5" >"$work/inspect.txt"
 grep -Eq "^  scaled_radius +real +length +particle radius times scale$" "$work/inspect.txt" ||

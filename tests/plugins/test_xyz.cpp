@@ -20,7 +20,7 @@ namespace {
 Frame two_disks() {
   Frame f;
   f.resize(2, 2);
-  f.container = Container::periodic_box(2, Eigen::Vector3d::Zero(), Eigen::Vector3d(4, 2.5, 0));
+  f.container = Container::periodic_box(2, Eigen::Vector3d(-1, 0.5, 0), Eigen::Vector3d(3, 3, 0));
   f.position() << 0.5, 1.0, 2.25, 1.0;
   f.radius() << 0.5, 0.25;
   f.species() << 0, 1;
@@ -34,9 +34,9 @@ Frame two_disks() {
 
 }  // namespace
 
-TEST(Xyz, CommentLineListsTheBoxThePeriodicSidesAndEveryColumn) {
+TEST(Xyz, CommentLineListsTheBoxItsOriginThePeriodicSidesAndEveryColumn) {
   EXPECT_EQ(xyz::comment_line(two_disks()),
-            "Lattice=\"4 0 0 0 2.5 0 0 0 1\" Properties=pos:R:3:radius:R:1:id:I:1:species:I:1:"
+            "Lattice=\"4 0 0 0 2.5 0 0 0 1\" Origin=\"-1 0.5 0\" Properties=pos:R:3:radius:R:1:id:I:1:species:I:1:"
             "supports:I:2 pbc=\"T T F\" Time=1.5 Step=7");
 }
 

@@ -3,7 +3,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <optional>
 #include <string>
 
 namespace granpipe {
@@ -60,23 +59,5 @@ struct Container {
   // A box with solid walls on every side but an open top.
   static Container open_top_box(int dim, const Eigen::Vector3d& lo, const Eigen::Vector3d& hi);
 };
-
-// A particle that reaches through a solid side of its container.
-struct ParticleOutside {
-  Eigen::Index index = 0;  // row of the particle
-  Wall wall = Wall::Count;
-  double depth = 0.0;  // how far its sphere reaches past the wall's surface (> 0)
-};
-
-// The first particle (by row) whose sphere reaches past a wall of `c` (the base, a lid, a
-// plane side or the cylinder, displaced by c.wall_offset) by more than `tolerance` times
-// its radius: 1 means its centre is outside. Particles pressed into a wall by less are
-// touching it, as the frames of a soft-sphere run hold them. position: n x dim (dim 2 or
-// 3); periodic and open sides hold nothing back. Readers of saved frames use it to
-// refuse particles outside the container they are given.
-std::optional<ParticleOutside> first_particle_outside(const Container& c, int dim,
-                                                      const Eigen::ArrayXXd& position,
-                                                      const Eigen::ArrayXd& radius,
-                                                      double tolerance);
 
 }  // namespace granpipe

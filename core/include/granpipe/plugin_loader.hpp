@@ -24,7 +24,8 @@ struct LoadReport {
     std::string name, used, ignored;  // plugin name, the library kept, the one ignored
   };
   std::vector<Shadowed> shadowed;
-  // One line per empty directory and shadowed plugin, for stderr.
+  // For stderr: one line per empty directory, and one per directory whose plugins a
+  // directory earlier on the path shadows (naming them).
   std::vector<std::string> warnings() const;
 };
 

@@ -47,6 +47,9 @@ class Column {
   Storage& storage() { return data_; }
   // Zero-filled with `rows` rows (contents are not kept).
   void reset(Eigen::Index rows);
+  // Whether a PropertyTable handed this column out by name for writing (get<A>(name),
+  // find(name)): how the runner tells a published column that publish() never filled.
+  bool handed_out() const { return handed_out_; }
 
   // The values as array type A (Values<T> or ValueTable<T>); throws InternalError naming
   // the column when it holds another type, since that is a plugin's mistake.
@@ -65,8 +68,10 @@ class Column {
   template <class A>
   static std::string type_name();
   [[noreturn]] void throw_wrong_type(const std::string& asked) const;
+  friend class PropertyTable;  // sets handed_out_
   Property property_;
   int dim_;
+  bool handed_out_ = false;
   Storage data_;
 };
 
