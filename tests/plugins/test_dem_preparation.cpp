@@ -213,8 +213,12 @@ TEST(DemSource, TheStartIsEitherAFileOrABed) {
   one_species["species"] = {{{"name", "small"}, {"density", 1.91}}};
   nlohmann::json wide = small_preparation();
   wide["bed"]["intruder_diameter"] = 4.0;
-  expect_refusal(wide, "params.bed: dem: loose lattice: no sphere of radius 0.5 (or intruder of "
-                       "radius 2) fits in a cylinder of radius 2");
+  expect_refusal(wide, "params.bed.intruder_diameter: expected less than cylinder_diameter (4), got 4");
+  nlohmann::json narrow = small_preparation();
+  narrow["bed"]["intruder_diameter"] = 0.0;
+  narrow["bed"]["cylinder_diameter"] = 1.0;
+  expect_refusal(narrow, "params.bed.cylinder_diameter: expected at least 1.03 (a sphere of "
+                         "diameter 1 and its nudge), got 1");
   expect_refusal(one_species,
                  "params.species: expected a second species for the bed's intruder (species 1), "
                  "got 1 species");
