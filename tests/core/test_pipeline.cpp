@@ -472,9 +472,12 @@ TEST(Frame, CheckNamesInconsistentContacts) {
     f.check("x.h5: frame 3");
     FAIL() << "expected an InputError";
   } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(), "x.h5: frame 3: contact 0: expected particle indices below 2 (or a wall as second "
-                           "partner), got 0 and 2");
+    EXPECT_STREQ(e.what(), "x.h5: frame 3: contact 0: expected particle indices below 2 (or a wall code -2 "
+                           "to -8 as second partner), got 0 and 2");
   }
   f.contact_j()[0] = partner::wall(Wall::YLow);
   EXPECT_NO_THROW(f.check("x.h5: frame 3"));
+  // A negative number that is no wall's code is not a wall contact.
+  f.contact_j()[0] = -100;
+  EXPECT_THROW(f.check("x.h5: frame 3"), InputError);
 }
