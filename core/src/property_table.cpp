@@ -82,6 +82,7 @@ Column& PropertyTable::add(const Property& property) {
                           describe_type(c->property()) + ", added again as " +
                           describe_type(property));
     }
+    c->handed_out_ = true;
     return *c;
   }
   if (!is_valid_column_name(property.name)) {

@@ -141,6 +141,13 @@ class ShortLabeller : public Labeller {
   void publish(PropertyTable& columns) override { columns.get<IndexArray>("label") = IndexArray::Zero(3); }
 };
 
+// Fills label through add(), which hands out the declared column.
+class AddingLabeller : public Labeller {
+ public:
+  using Labeller::Labeller;
+  void publish(PropertyTable& columns) override { columns.add<IndexArray>(kLabel) = 3 * IndexArray::LinSpaced(5, 0, 4); }
+};
+
 // Fills a column it did not declare (a typo).
 class TypoLabeller : public Labeller {
  public:
@@ -197,6 +204,7 @@ Registry registry_with_h5md() {
   r.add_analyzer<LazyLabeller>("lazy_labeller", "declares label, never fills it", Schema{});
   r.add_analyzer<ShortLabeller>("short_labeller", "fills label with 3 rows", Schema{});
   r.add_analyzer<TypoLabeller>("typo_labeller", "fills lable", Schema{});
+  r.add_analyzer<AddingLabeller>("adding_labeller", "fills label through add()", Schema{});
   r.add_analyzer<RealLabelReader>("real_label_reader", "needs label as real", Schema{});
   r.add_analyzer<MisspeltLabelReader>("misspelt_label_reader", "needs lable", Schema{});
   r.add_source<RealLabelledLine>("real_labelled_line", "the line with a real label", Schema{});
@@ -343,6 +351,14 @@ TEST(PublishedColumns, AColumnPublishNeverFilledStopsTheRunInsteadOfSavingZeros)
   EXPECT_EQ(run_error_of(R"([{"plugin": "lazy_labeller"}, {"plugin": "label_sum"}])", "lazy"),
             "p.json: analyzers[0]: analyzer \"lazy_labeller\": publish() never filled the particle column "
             "\"label\" it declares");
+}
+
+TEST(PublishedColumns, AColumnFilledThroughAddCountsAsFilled) {
+  const Registry r = registry_with_h5md();
+  const fs::path out = fresh_dir("adding");
+  EXPECT_EQ(run_label_sum(R"({"source": {"plugin": "line"},
+      "analyzers": [{"plugin": "adding_labeller"}, {"plugin": "label_sum"}]})", r, out), 60.0);
+  fs::remove_all(out);
 }
 
 TEST(PublishedColumns, PublishErrorsNameTheAnalyzerTheColumnAndTheSizes) {

@@ -48,7 +48,8 @@ class Column {
   // Zero-filled with `rows` rows (contents are not kept).
   void reset(Eigen::Index rows);
   // Whether a PropertyTable handed this column out by name for writing (get<A>(name),
-  // find(name)): how the runner tells a published column that publish() never filled.
+  // find(name), add() of an existing column): how the runner tells a published column
+  // that publish() never filled.
   bool handed_out() const { return handed_out_; }
 
   // The values as array type A (Values<T> or ValueTable<T>); throws InternalError naming
