@@ -58,7 +58,8 @@ void inspect(const std::string& path, long max_rows) {
     for (const Property& o : info.observables) std::printf(" %12s", observable_text(f, o).c_str());
     std::printf(" %9lld\n", static_cast<long long>(f.contacts ? f.contacts->rows() : 0));
   }
-  if (rows < info.frames) std::cout << "... (" << info.frames - rows << " more; --rows N shows more)\n";
+  if (rows < info.frames)
+    std::cout << "... (" << info.frames - rows << " more; --rows N shows more)\n";
 }
 
 }  // namespace granpipe::app

@@ -20,7 +20,8 @@ constexpr int kMaxThreads = 1024;
 std::string check_threads(const std::string& text) {
   int n = 0;
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), n);
-  if (error == std::errc{} && end == text.data() + text.size() && n >= 1 && n <= kMaxThreads) return "";
+  if (error == std::errc{} && end == text.data() + text.size() && n >= 1 && n <= kMaxThreads)
+    return "";
   return "expected an integer in [1, " + std::to_string(kMaxThreads) + "], got \"" + text + "\"";
 }
 
@@ -69,10 +70,12 @@ int main(int argc, char** argv) {
   // `granpipe PIPELINE.json ...` is short for `granpipe run PIPELINE.json ...`.
   std::vector<char*> args(argv, argv + argc);
   static char run_word[] = "run";
-  if (argc > 1 && argv[1][0] != '-' && !is_subcommand(argv[1])) args.insert(args.begin() + 1, run_word);
+  if (argc > 1 && argv[1][0] != '-' && !is_subcommand(argv[1]))
+    args.insert(args.begin() + 1, run_word);
 
   CLI::App app{"granpipe: simulate and analyse granular packings"};
-  app.set_version_flag("--version", std::string("granpipe ") + version() + " (" + git_commit() + ")");
+  app.set_version_flag("--version",
+                       std::string("granpipe ") + version() + " (" + git_commit() + ")");
   app.require_subcommand(1);
 
   auto* run = app.add_subcommand("run", "run a pipeline (the default: granpipe PIPELINE.json)");
@@ -85,7 +88,8 @@ int main(int argc, char** argv) {
   run->add_option("--set", sets, "override a value: json.path=value (repeatable)");
   run->add_option("--out", out_dir, "output directory (default: the pipeline's output.dir)")
       ->check(CLI::Validator(check_out, ""));
-  run->add_option("--threads", threads, "threads, 1 to " + std::to_string(kMaxThreads) + " (default: all cores)")
+  run->add_option("--threads", threads,
+                  "threads, 1 to " + std::to_string(kMaxThreads) + " (default: all cores)")
       ->check(CLI::Validator(check_threads, ""));
   run->add_flag("--overwrite", overwrite, "replace an existing granpipe output directory");
   run->add_flag("--quiet", quiet, "no progress or log on stderr");
@@ -103,7 +107,8 @@ int main(int argc, char** argv) {
   std::string h5_file;
   long rows = 20;
   inspect->add_option("file", h5_file, "H5MD file")->required();
-  inspect->add_option("--rows", rows, "frames to list (default 20)")->check(CLI::Validator(check_rows, ""));
+  inspect->add_option("--rows", rows, "frames to list (default 20)")
+      ->check(CLI::Validator(check_rows, ""));
 
   try {
     app.parse(static_cast<int>(args.size()), args.data());

@@ -16,7 +16,8 @@ void write_file_atomically(const fs::path& path, const std::string& content) {
     if (!out) {
       std::error_code ignored;
       fs::remove(tmp, ignored);
-      throw InputError(path.string() + ": expected a writable file, got a write error (is the disk full?)");
+      throw InputError(path.string() +
+                       ": expected a writable file, got a write error (is the disk full?)");
     }
   }
   std::error_code ec;

@@ -31,8 +31,8 @@ std::string number(double x, double other) {
 
 }  // namespace
 
-CellList::CellList(const Coordinates& position, const Container& container, int dim,
-                   double cutoff, const std::string& where)
+CellList::CellList(const Coordinates& position, const Container& container, int dim, double cutoff,
+                   const std::string& where)
     : pos_(position), dim_(dim), cutoff_(cutoff) {
   const std::string at = (where.empty() ? "" : where + ": ") + "neighbour search: ";
   if (!(cutoff >= kMinRange && cutoff <= kMaxRange)) {
@@ -47,9 +47,9 @@ CellList::CellList(const Coordinates& position, const Container& container, int 
       lo_[a] = container.lo[a];
       length_[a] = container.length(a);
       if (!(length_[a] >= 2 * cutoff)) {
-        throw InputError(at + "expected a periodic box of length at least " + number(2 * cutoff, length_[a]) +
-                         " (twice the contact range) along " + axis_name(a) + ", got " +
-                         number(length_[a], 2 * cutoff));
+        throw InputError(at + "expected a periodic box of length at least " +
+                         number(2 * cutoff, length_[a]) + " (twice the contact range) along " +
+                         axis_name(a) + ", got " + number(length_[a], 2 * cutoff));
       }
     } else {
       // Non-periodic axes span the particles (they may leave an open top).

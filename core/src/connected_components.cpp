@@ -12,7 +12,8 @@ namespace {
 
 class DisjointSets {
  public:
-  explicit DisjointSets(Eigen::Index n) : parent_(static_cast<std::size_t>(n)), size_(parent_.size(), 1) {
+  explicit DisjointSets(Eigen::Index n)
+      : parent_(static_cast<std::size_t>(n)), size_(parent_.size(), 1) {
     std::iota(parent_.begin(), parent_.end(), std::int64_t{0});
   }
 
@@ -43,9 +44,10 @@ class DisjointSets {
 void check_edge(Eigen::Index n, const ParticlePair& e) {
   const auto [i, j] = e;
   if (i < 0 || j < 0 || i >= n || j >= n || i == j) {
-    throw InternalError("connected_components: expected an edge between two different "
-                        "particles below " + std::to_string(n) + ", got " + std::to_string(i) +
-                        " and " + std::to_string(j));
+    throw InternalError(
+        "connected_components: expected an edge between two different "
+        "particles below " +
+        std::to_string(n) + ", got " + std::to_string(i) + " and " + std::to_string(j));
   }
 }
 
@@ -97,7 +99,8 @@ ConnectedComponents connected_components(Eigen::Index n, std::span<const Particl
   const std::vector<std::int64_t> label = labels_by_size(found);
   ConnectedComponents out;
   out.size.resize(found.size());
-  for (std::size_t c = 0; c < found.size(); ++c) out.size[static_cast<std::size_t>(label[c])] = found[c];
+  for (std::size_t c = 0; c < found.size(); ++c)
+    out.size[static_cast<std::size_t>(label[c])] = found[c];
   out.label = IndexArray::Constant(n, -1);
   for (Eigen::Index p = 0; p < n; ++p) {
     const std::int64_t c = found_of_root[sets.root(p)];

@@ -29,15 +29,16 @@ void find_wall_contacts(const Frame& f, double tolerance, std::vector<Found>& ou
         if (c.boundary[a][side] != Boundary::Wall) continue;
         const double wall = (side == 0 ? c.lo[a] : c.hi[a]) + c.wall_offset[a];
         const double dist = side == 0 ? f.position()(k, a) - wall : wall - f.position()(k, a);
-        if (dist <= reach) out.push_back({k, partner::wall(static_cast<Wall>(2 * a + side)),
-                                          dist - f.radius()[k]});
+        if (dist <= reach)
+          out.push_back({k, partner::wall(static_cast<Wall>(2 * a + side)), dist - f.radius()[k]});
       }
     }
     if (cylinder) {
       const double dx = f.position()(k, 0) - c.cylinder_center[0] - c.wall_offset[0];
       const double dy = f.position()(k, 1) - c.cylinder_center[1] - c.wall_offset[1];
       const double dist = c.cylinder_radius - std::hypot(dx, dy);
-      if (dist <= reach) out.push_back({k, partner::wall(Wall::CylinderSide), dist - f.radius()[k]});
+      if (dist <= reach)
+        out.push_back({k, partner::wall(Wall::CylinderSide), dist - f.radius()[k]});
     }
   }
 }
@@ -45,10 +46,11 @@ void find_wall_contacts(const Frame& f, double tolerance, std::vector<Found>& ou
 }  // namespace
 
 void declare_contact_tolerance(Schema& schema) {
-  schema.real(kContactToleranceName, kDefaultContactTolerance,
-              "relative contact tolerance: two particles touch when their centre distance is "
-              "at most (R_i + R_j)(1 + tol), a particle and a wall when the centre-wall "
-              "distance is at most R_i (1 + tol)")
+  schema
+      .real(kContactToleranceName, kDefaultContactTolerance,
+            "relative contact tolerance: two particles touch when their centre distance is "
+            "at most (R_i + R_j)(1 + tol), a particle and a wall when the centre-wall "
+            "distance is at most R_i (1 + tol)")
       .min(0.0);
 }
 
@@ -69,7 +71,8 @@ DistanceContacts find_contacts_by_distance(const Frame& frame, double tolerance)
   return find_contacts_by_distance(frame, tolerance, "frame at step " + std::to_string(frame.step));
 }
 
-DistanceContacts find_contacts_by_distance(const Frame& frame, double tolerance, const std::string& where) {
+DistanceContacts find_contacts_by_distance(const Frame& frame, double tolerance,
+                                           const std::string& where) {
   if (!(tolerance >= 0.0) || !std::isfinite(tolerance)) {
     throw InputError("contacts by distance: expected a finite tolerance >= 0, got " +
                      std::to_string(tolerance));
@@ -117,9 +120,8 @@ std::string contacts_by_distance_key(double tolerance) {
 
 const DistanceContacts& contacts_by_distance(const Frame& frame, FrameCache& cache,
                                              double tolerance) {
-  return cache.get<DistanceContacts>(contacts_by_distance_key(tolerance), [&] {
-    return find_contacts_by_distance(frame, tolerance);
-  });
+  return cache.get<DistanceContacts>(contacts_by_distance_key(tolerance),
+                                     [&] { return find_contacts_by_distance(frame, tolerance); });
 }
 
 }  // namespace granpipe

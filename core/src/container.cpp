@@ -4,20 +4,21 @@ namespace granpipe {
 
 const char* to_string(Boundary b) {
   switch (b) {
-    case Boundary::Wall: return "wall";
-    case Boundary::Periodic: return "periodic";
-    case Boundary::Open: return "open";
+    case Boundary::Wall:
+      return "wall";
+    case Boundary::Periodic:
+      return "periodic";
+    case Boundary::Open:
+      return "open";
   }
   return "?";
 }
 
-const char* to_string(ContainerShape s) {
-  return s == ContainerShape::Box ? "box" : "cylinder";
-}
+const char* to_string(ContainerShape s) { return s == ContainerShape::Box ? "box" : "cylinder"; }
 
 const char* to_string(Wall w) {
-  static const char* names[] = {"x_low", "x_high", "y_low", "y_high", "z_low", "z_high",
-                                "cylinder"};
+  static const char* names[] = {"x_low", "x_high", "y_low",   "y_high",
+                                "z_low", "z_high", "cylinder"};
   const auto k = static_cast<unsigned>(w);
   return k < static_cast<unsigned>(Wall::Count) ? names[k] : "?";
 }

@@ -14,7 +14,8 @@ namespace granpipe {
 
 std::optional<DirectoryLock> DirectoryLock::try_lock(const std::filesystem::path& dir) {
   const int fd = open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (fd < 0) throw InputError(dir.string() + ": cannot open the directory: " + std::strerror(errno));
+  if (fd < 0)
+    throw InputError(dir.string() + ": cannot open the directory: " + std::strerror(errno));
   if (flock(fd, LOCK_EX | LOCK_NB) != 0) {
     const int err = errno;
     close(fd);

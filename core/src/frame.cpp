@@ -43,7 +43,8 @@ void check_required_particle_columns(const Frame& f, const std::string& where) {
   for (std::size_t k = 0; k < 4; ++k) {
     if (f.particles.size() <= k || f.particles.column(k).name() != names[k] ||
         !f.particles.column(k).property().matches(standard(names[k], Scope::Particle))) {
-      throw InternalError(where + ": the particle table does not start with position, radius, "
+      throw InternalError(where +
+                          ": the particle table does not start with position, radius, "
                           "id and species");
     }
   }
@@ -71,7 +72,8 @@ void check_particles(const Frame& f, const std::string& where) {
       if (!std::isfinite(x(k, a))) {
         std::ostringstream s;
         s << where << ": " << describe_particle(f, k) << ": expected a finite position, got "
-          << x(k, a) << " in coordinate " << "xyz"[a];
+          << x(k, a) << " in coordinate "
+          << "xyz"[a];
         throw InputError(s.str());
       }
     }

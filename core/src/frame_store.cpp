@@ -4,12 +4,13 @@
 // whose flushed state is consistent), a fixed write order within a frame (every other
 // dataset first, then time, then step), and the reader counting only frames present in
 // every dataset. The `complete` attribute is set only by close(), after SWMR has ended.
+#include "granpipe/frame_store.hpp"
+
 #include <algorithm>
 #include <cstdlib>
 #include <optional>
 
 #include "granpipe/errors.hpp"
-#include "granpipe/frame_store.hpp"
 #include "granpipe/version.hpp"
 #include "h5_column.hpp"
 #include "h5_dataset.hpp"
@@ -106,8 +107,7 @@ struct FrameWriter::Impl {
   struct Datasets {
     Series step, time, edges;
     std::vector<ColumnSeries> particles, observables, contacts;
-    Series shape, lo, hi, boundary, cylinder_radius, cylinder_center, wall_offset,
-        wall_velocity;
+    Series shape, lo, hi, boundary, cylinder_radius, cylinder_center, wall_offset, wall_velocity;
     Series contact_offset, contact_count;
   };
 
@@ -122,9 +122,9 @@ struct FrameWriter::Impl {
 
   Series series(const std::string& path, hid_t type, const h5::Shape& item, hsize_t max_rows,
                 hid_t fill_type = H5I_INVALID_HID, const void* fill = nullptr) {
-    return {path, h5::create_series(file.id(), path, type, item,
-                                    chunk_rows(item, H5Tget_size(type), max_rows), fill_type,
-                                    fill)};
+    return {path,
+            h5::create_series(file.id(), path, type, item,
+                              chunk_rows(item, H5Tget_size(type), max_rows), fill_type, fill)};
   }
   // The series of one column, with the attributes that let it read back as its property.
   Series column_series(const std::string& path, const Column& c, const h5::Shape& front,
@@ -184,8 +184,8 @@ void FrameWriter::Impl::create_particles(const Frame& f, Datasets& s) {
   h5::create_group(file.id(), all);
   h5::create_group(file.id(), all + "/position");
   const long long unwritten = L::kUnwrittenStep;
-  s.step = series(all + "/position/step", H5T_STD_I64LE, {}, kFrameRows, H5T_NATIVE_LLONG,
-                  &unwritten);
+  s.step =
+      series(all + "/position/step", H5T_STD_I64LE, {}, kFrameRows, H5T_NATIVE_LLONG, &unwritten);
   s.time = series(all + "/position/time", H5T_IEEE_F64LE, {}, kFrameRows);
   for (std::size_t k = 0; k < f.particles.size(); ++k) {
     const Column& c = f.particles.column(k);

@@ -29,9 +29,12 @@ using RowMajor = Eigen::Array<T, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor
 
 hid_t file_type(ValueType t) {
   switch (t) {
-    case ValueType::Real: return H5T_IEEE_F64LE;
-    case ValueType::Integer: return H5T_STD_I64LE;
-    case ValueType::Small: return H5T_STD_I32LE;
+    case ValueType::Real:
+      return H5T_IEEE_F64LE;
+    case ValueType::Integer:
+      return H5T_STD_I64LE;
+    case ValueType::Small:
+      return H5T_STD_I32LE;
   }
   return H5T_IEEE_F64LE;
 }
@@ -39,10 +42,14 @@ hid_t file_type(ValueType t) {
 ValueType value_type_of(hid_t dataset, const std::string& path) {
   Object type = owned(H5Dget_type(dataset), path + ": cannot read the type");
   switch (H5Tget_class(type.id())) {
-    case H5T_FLOAT: return ValueType::Real;
-    case H5T_INTEGER: return H5Tget_size(type.id()) > 4 ? ValueType::Integer : ValueType::Small;
-    case H5T_ENUM: return ValueType::Small;
-    default: throw Error(path + ": expected numbers, got another HDF5 type");
+    case H5T_FLOAT:
+      return ValueType::Real;
+    case H5T_INTEGER:
+      return H5Tget_size(type.id()) > 4 ? ValueType::Integer : ValueType::Small;
+    case H5T_ENUM:
+      return ValueType::Small;
+    default:
+      throw Error(path + ": expected numbers, got another HDF5 type");
   }
 }
 
@@ -66,8 +73,7 @@ void append_column(hid_t dataset, const std::string& path, const Column& c, hsiz
       c.storage());
 }
 
-void read_column(hid_t dataset, const std::string& path, hsize_t first, hsize_t count,
-                 Column& c) {
+void read_column(hid_t dataset, const std::string& path, hsize_t first, hsize_t count, Column& c) {
   std::visit(
       [&](auto& a) {
         using A = std::decay_t<decltype(a)>;
@@ -89,8 +95,8 @@ void write_property_attributes(hid_t dataset, const Property& p) {
   if (!p.doc.empty()) write_text_attribute(dataset, kDocAttr, p.doc);
 }
 
-Property read_property(hid_t dataset, const std::string& path, const std::string& name,
-                       Scope scope, const Shape& item, int dim) {
+Property read_property(hid_t dataset, const std::string& path, const std::string& name, Scope scope,
+                       const Shape& item, int dim) {
   if (const Property* p = find_standard(name, scope)) return *p;
   Property p{name, scope, value_type_of(dataset, path), 1, "", ""};
   if (has_attribute(dataset, kComponentsAttr)) {
@@ -109,7 +115,8 @@ Property read_property(hid_t dataset, const std::string& path, const std::string
       break;
     }
   }
-  if (has_attribute(dataset, kDocAttr)) p.doc = read_string_attribute(dataset, path, kDocAttr).at(0);
+  if (has_attribute(dataset, kDocAttr))
+    p.doc = read_string_attribute(dataset, path, kDocAttr).at(0);
   return p;
 }
 

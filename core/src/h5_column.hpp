@@ -24,15 +24,14 @@ Shape item_shape(const Column& c);
 // Appends `rows` rows holding every value of `c` (C order).
 void append_column(hid_t dataset, const std::string& path, const Column& c, hsize_t rows);
 // Reads `count` rows starting at `first` into `c`, which is sized to hold them.
-void read_column(hid_t dataset, const std::string& path, hsize_t first, hsize_t count,
-                 Column& c);
+void read_column(hid_t dataset, const std::string& path, hsize_t first, hsize_t count, Column& c);
 
 // Attributes that let a column read back as the property it was written from.
 void write_property_attributes(hid_t dataset, const Property& p);
 // The property of a stored column: from the standard table when `name` is standard,
 // else from the attributes (or, for other tools' files, from the dataset's type and
 // shape). `item` is the per-row shape after the particle axis.
-Property read_property(hid_t dataset, const std::string& path, const std::string& name,
-                       Scope scope, const Shape& item, int dim);
+Property read_property(hid_t dataset, const std::string& path, const std::string& name, Scope scope,
+                       const Shape& item, int dim);
 
 }  // namespace granpipe::h5

@@ -43,8 +43,8 @@ std::vector<std::string> members(hid_t group, const std::string& path) {
   check(H5Gget_info(group, &info), path + ": cannot list the group");
   std::vector<std::string> names;
   for (hsize_t k = 0; k < info.nlinks; ++k) {
-    const ssize_t len = H5Lget_name_by_idx(group, ".", H5_INDEX_NAME, H5_ITER_INC, k, nullptr, 0,
-                                           H5P_DEFAULT);
+    const ssize_t len =
+        H5Lget_name_by_idx(group, ".", H5_INDEX_NAME, H5_ITER_INC, k, nullptr, 0, H5P_DEFAULT);
     if (len < 0) throw Error(path + ": cannot list the group");
     std::string name(static_cast<std::size_t>(len) + 1, '\0');
     H5Lget_name_by_idx(group, ".", H5_INDEX_NAME, H5_ITER_INC, k, name.data(), name.size(),
@@ -105,11 +105,11 @@ void check_stored(hid_t dataset, const std::string& path) {
   const double stored = stored_bytes(dataset, path);
   const double ratio = filtered(dataset, path) ? kFilteredRatio : kUnfilteredRatio;
   const double allowed = kUnstoredAllowance + ratio * stored;
-  const std::string found = " for the " + count_text(stored) + " bytes stored in the file, got shape " +
-                            format_shape(shape);
+  const std::string found = " for the " + count_text(stored) +
+                            " bytes stored in the file, got shape " + format_shape(shape);
   if (bytes > allowed) {
-    throw Error(path + ": expected at most " + count_text(allowed) + " bytes of data" + found + " (" +
-                count_text(bytes) + " bytes; damaged or crafted file)");
+    throw Error(path + ": expected at most " + count_text(allowed) + " bytes of data" + found +
+                " (" + count_text(bytes) + " bytes; damaged or crafted file)");
   }
   // Rows of an empty item take no bytes, but a reader keeps a step and a time for each.
   if (rows > allowed) {
@@ -130,8 +130,9 @@ Shape shape_of(hid_t dataset, const std::string& path) {
   const int rank = H5Sget_simple_extent_ndims(space.id());
   if (rank < 0) throw Error(path + ": cannot read the shape");
   Shape dims(static_cast<std::size_t>(rank));
-  if (rank > 0) check(H5Sget_simple_extent_dims(space.id(), dims.data(), nullptr),
-                      path + ": cannot read the shape");
+  if (rank > 0)
+    check(H5Sget_simple_extent_dims(space.id(), dims.data(), nullptr),
+          path + ": cannot read the shape");
   return dims;
 }
 
@@ -153,9 +154,9 @@ Object create_series(hid_t loc, const std::string& path, hid_t file_type, const 
   if (fill) check(H5Pset_fill_value(dcpl.id(), fill_type, fill), path + ": cannot set the fill");
   Object dapl = owned(H5Pcreate(H5P_DATASET_ACCESS), path + ": cannot make the property list");
   check(H5Pset_chunk_cache(dapl.id(), 0, 0, 1.0), path + ": cannot disable the chunk cache");
-  return owned(H5Dcreate2(loc, path.c_str(), file_type, space.id(), H5P_DEFAULT, dcpl.id(),
-                          dapl.id()),
-               path + ": cannot create the dataset");
+  return owned(
+      H5Dcreate2(loc, path.c_str(), file_type, space.id(), H5P_DEFAULT, dcpl.id(), dapl.id()),
+      path + ": cannot create the dataset");
 }
 
 namespace {
@@ -178,11 +179,11 @@ Slab select_rows(hid_t dataset, const std::string& path, hsize_t first, hsize_t 
   Shape start(dims.size(), 0), extent = dims;
   start[0] = first;
   extent[0] = count;
-  check(H5Sselect_hyperslab(s.file_space.id(), H5S_SELECT_SET, start.data(), nullptr,
-                            extent.data(), nullptr),
+  check(H5Sselect_hyperslab(s.file_space.id(), H5S_SELECT_SET, start.data(), nullptr, extent.data(),
+                            nullptr),
         path + ": cannot select rows");
-  s.mem_space = owned(H5Screate_simple(rank, extent.data(), nullptr),
-                      path + ": cannot make the dataspace");
+  s.mem_space =
+      owned(H5Screate_simple(rank, extent.data(), nullptr), path + ": cannot make the dataspace");
   return s;
 }
 }  // namespace
@@ -199,8 +200,8 @@ void append_rows(hid_t dataset, const std::string& path, hid_t mem_type, const v
         path + ": cannot write");
 }
 
-void read_rows(hid_t dataset, const std::string& path, hid_t mem_type, hsize_t first,
-               hsize_t count, void* out) {
+void read_rows(hid_t dataset, const std::string& path, hid_t mem_type, hsize_t first, hsize_t count,
+               void* out) {
   if (count == 0) return;
   Slab s = select_rows(dataset, path, first, count);
   check(H5Dread(dataset, mem_type, s.mem_space.id(), s.file_space.id(), H5P_DEFAULT, out),
@@ -226,17 +227,22 @@ std::int64_t widen_as(const unsigned char* p, bool is_signed) {
 std::int64_t widen(const unsigned char* p, std::size_t size, bool is_signed,
                    const std::string& path) {
   switch (size) {
-    case 1: return widen_as<std::int8_t, std::uint8_t>(p, is_signed);
-    case 2: return widen_as<std::int16_t, std::uint16_t>(p, is_signed);
-    case 4: return widen_as<std::int32_t, std::uint32_t>(p, is_signed);
-    case 8: return widen_as<std::int64_t, std::int64_t>(p, is_signed);
-    default: throw Error(path + ": unsupported enumeration width " + std::to_string(size));
+    case 1:
+      return widen_as<std::int8_t, std::uint8_t>(p, is_signed);
+    case 2:
+      return widen_as<std::int16_t, std::uint16_t>(p, is_signed);
+    case 4:
+      return widen_as<std::int32_t, std::uint32_t>(p, is_signed);
+    case 8:
+      return widen_as<std::int64_t, std::int64_t>(p, is_signed);
+    default:
+      throw Error(path + ": unsupported enumeration width " + std::to_string(size));
   }
 }
 }  // namespace
 
-std::vector<std::int64_t> read_integer_rows(hid_t dataset, const std::string& path,
-                                            hsize_t first, hsize_t count) {
+std::vector<std::int64_t> read_integer_rows(hid_t dataset, const std::string& path, hsize_t first,
+                                            hsize_t count) {
   Shape dims = shape_of(dataset, path);
   hsize_t per_row = 1;
   for (std::size_t k = 1; k < dims.size(); ++k) per_row *= dims[k];
@@ -250,8 +256,8 @@ std::vector<std::int64_t> read_integer_rows(hid_t dataset, const std::string& pa
   if (cls != H5T_ENUM) throw Error(path + ": expected integers, got another data type");
   // HDF5 converts an enumeration only to another enumeration: read the native form of
   // the enumeration and widen its integer base type by hand.
-  Object native = owned(H5Tget_native_type(type.id(), H5T_DIR_ASCEND),
-                        path + ": cannot read the data type");
+  Object native =
+      owned(H5Tget_native_type(type.id(), H5T_DIR_ASCEND), path + ": cannot read the data type");
   Object base = owned(H5Tget_super(native.id()), path + ": cannot read the data type");
   const std::size_t size = H5Tget_size(base.id());
   const bool is_signed = H5Tget_sign(base.id()) == H5T_SGN_2;

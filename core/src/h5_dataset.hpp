@@ -22,7 +22,6 @@ bool is_dataset(hid_t loc, const std::string& path);
 // Names of the direct members of a group, in name order.
 std::vector<std::string> members(hid_t group, const std::string& path);
 
-
 Object open_group(hid_t loc, const std::string& path);
 Object open_dataset(hid_t loc, const std::string& path);
 // A dataset to read from a file that may be damaged or crafted: refused when its shape
@@ -46,13 +45,13 @@ Object create_series(hid_t loc, const std::string& path, hid_t file_type, const 
 void append_rows(hid_t dataset, const std::string& path, hid_t mem_type, const void* data,
                  hsize_t rows);
 // Reads `count` rows starting at `first` (every further axis whole) into `out`.
-void read_rows(hid_t dataset, const std::string& path, hid_t mem_type, hsize_t first,
-               hsize_t count, void* out);
+void read_rows(hid_t dataset, const std::string& path, hid_t mem_type, hsize_t first, hsize_t count,
+               void* out);
 // Reads a whole dataset (any rank, scalar included) into `out`.
 void read_all(hid_t dataset, const std::string& path, hid_t mem_type, void* out);
 // As read_rows, for integer or enumeration datasets of any width, as 64-bit integers.
-std::vector<std::int64_t> read_integer_rows(hid_t dataset, const std::string& path,
-                                            hsize_t first, hsize_t count);
+std::vector<std::int64_t> read_integer_rows(hid_t dataset, const std::string& path, hsize_t first,
+                                            hsize_t count);
 
 // Attributes. H5MD asks for fixed-length strings; `write_text_attribute` stores a
 // variable-length UTF-8 string, for text of any length (provenance JSON).

@@ -76,9 +76,7 @@ std::optional<Element> Element::open(hid_t file, const std::string& path) {
   return e;
 }
 
-Shape Element::item() const {
-  return timed_ ? Shape(shape_.begin() + 1, shape_.end()) : shape_;
-}
+Shape Element::item() const { return timed_ ? Shape(shape_.begin() + 1, shape_.end()) : shape_; }
 
 void Element::map_identity() { rows_.clear(); }
 

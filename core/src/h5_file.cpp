@@ -28,8 +28,10 @@ Object create_file(const std::string& name, unsigned flags, hid_t access) {
   const hid_t id = H5Fcreate(name.c_str(), flags, H5P_DEFAULT, access);
   if (id >= 0) return Object(id);
   const std::string reason = system_reason();
-  throw Error("cannot create the file (" +
-              (reason.empty() ? "does its directory exist, is it writable, is the disk full?" : reason) + ")");
+  throw Error(
+      "cannot create the file (" +
+      (reason.empty() ? "does its directory exist, is it writable, is the disk full?" : reason) +
+      ")");
 }
 
 }  // namespace granpipe::h5

@@ -84,8 +84,7 @@ struct ContactColumn {
 
 // The container datasets of a granpipe file, row k for frame k.
 struct ContainerSeries {
-  h5::Object shape, lo, hi, boundary, cylinder_radius, cylinder_center, wall_offset,
-      wall_velocity;
+  h5::Object shape, lo, hi, boundary, cylinder_radius, cylinder_center, wall_offset, wall_velocity;
 };
 
 // Puts columns in the order the writer's frames held them (`attribute` of the extension
@@ -455,9 +454,10 @@ void place_walls(Container& c, int a, const Frame& f, const std::string& file,
       return;
     }
   }
-  throw h5::Error(dataset + ": frame " + std::to_string(k) + ": expected particle centres inside a box of edge " +
-                  std::to_string(length) + " along " + "xyz"[a] + " (at [0, L] or [-L/2, L/2]), got " +
-                  std::to_string(lo) + " to " + std::to_string(hi));
+  throw h5::Error(dataset + ": frame " + std::to_string(k) +
+                  ": expected particle centres inside a box of edge " + std::to_string(length) +
+                  " along " + "xyz"[a] + " (at [0, L] or [-L/2, L/2]), got " + std::to_string(lo) +
+                  " to " + std::to_string(hi));
 }
 }  // namespace
 
@@ -538,16 +538,18 @@ void check_partners(const Frame& f, const std::string& i_path, const std::string
   const Eigen::Index n = f.size();
   const IndexArray &i = f.contact_i(), &j = f.contact_j();
   for (Eigen::Index c = 0; c < i.size(); ++c) {
-    const std::string row = ": row " + std::to_string(first_row + c) + " (frame " + std::to_string(k) +
-                            ", contact " + std::to_string(c) + "): expected ";
+    const std::string row = ": row " + std::to_string(first_row + c) + " (frame " +
+                            std::to_string(k) + ", contact " + std::to_string(c) + "): expected ";
     if (i[c] < 0 || i[c] >= n) {
       throw h5::Error(i_path + row + "a particle index in [0, " + std::to_string(n) + "), got " +
                       std::to_string(i[c]));
     }
     if (!((partner::is_particle(j[c]) && j[c] < n) || partner::is_wall(j[c])) || j[c] == i[c]) {
       throw h5::Error(j_path + row + "a particle index in [0, " + std::to_string(n) +
-                      ") other than i (" + std::to_string(i[c]) + ") or a wall code -2 (x_low) to -8 "
-                      "(cylinder), got " + std::to_string(j[c]));
+                      ") other than i (" + std::to_string(i[c]) +
+                      ") or a wall code -2 (x_low) to -8 "
+                      "(cylinder), got " +
+                      std::to_string(j[c]));
     }
   }
 }
@@ -569,7 +571,8 @@ Frame FrameReader::Impl::read(long k) const {
   read_element(*position, k, f.particles.column(0));
   if (!ours) f.radius().setConstant(default_radius);
   for (const ElementColumn& c : columns) read_element(c.element, k, f.particles.add(c.property));
-  for (const ElementColumn& o : observables) read_element(o.element, k, f.observables.add(o.property));
+  for (const ElementColumn& o : observables)
+    read_element(o.element, k, f.observables.add(o.property));
   f.step = steps[k];
   if (!times.empty()) f.time = times[k];
   if (!ours) {
@@ -597,8 +600,8 @@ const FrameFileInfo& FrameReader::info() const { return impl_->info; }
 Frame FrameReader::read(long index) const {
   h5::silence_error_stack();
   if (index < 0 || index >= impl_->info.frames) {
-    throw InternalError(impl_->name + ": frame " + std::to_string(index) + " requested, the file has " +
-                        std::to_string(impl_->info.frames));
+    throw InternalError(impl_->name + ": frame " + std::to_string(index) +
+                        " requested, the file has " + std::to_string(impl_->info.frames));
   }
   return h5::input_errors_of(impl_->name, [&] { return impl_->read(index); });
 }

@@ -17,13 +17,13 @@ struct Prepared {
   int log_fd = -1;
   std::string marker_path, marker_text;
   std::string log_line[2], stderr_line[2];  // per entry of kSignals
-  struct sigaction previous[2] {};
+  struct sigaction previous[2]{};
   bool handled[2] = {false, false};
 };
 
-std::atomic<bool> taken{false};           // by a live InterruptionRecord
-std::atomic<Prepared*> armed{nullptr};    // set once everything is prepared
-std::atomic<int> requested{0};            // the signal that asked the run to stop
+std::atomic<bool> taken{false};         // by a live InterruptionRecord
+std::atomic<Prepared*> armed{nullptr};  // set once everything is prepared
+std::atomic<int> requested{0};          // the signal that asked the run to stop
 Prepared prepared;
 
 void write_all(int fd, const std::string& text) {

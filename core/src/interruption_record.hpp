@@ -15,7 +15,8 @@ class InterruptionRecord {
  public:
   // `dir` holds the run's run.log and marker; `marker_text` is the marker to leave;
   // `outcome` ends the stderr line ("out/x is marked interrupted").
-  InterruptionRecord(const std::filesystem::path& dir, std::string marker_text, const std::string& outcome);
+  InterruptionRecord(const std::filesystem::path& dir, std::string marker_text,
+                     const std::string& outcome);
   ~InterruptionRecord();  // disarms: the signals act as before again
   InterruptionRecord(const InterruptionRecord&) = delete;
   InterruptionRecord& operator=(const InterruptionRecord&) = delete;

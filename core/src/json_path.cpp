@@ -23,8 +23,9 @@ bool is_key_char(char c) { return is_name_char(c) || c == '-'; }
 
 std::vector<std::string> split_path(const std::string& path, const std::string& where) {
   const auto malformed = [&] {
-    return InputError(where + ": expected a path like source.params.name or analyzers[0].params.name, got " +
-                      json_brief(path));
+    return InputError(
+        where + ": expected a path like source.params.name or analyzers[0].params.name, got " +
+        json_brief(path));
   };
   std::vector<std::string> parts;
   std::size_t pos = 0;
@@ -62,7 +63,8 @@ namespace {
 std::string describe_kind(const json& v) {
   if (v.is_null()) return "nothing";
   if (v.is_object()) return "an object";
-  if (v.is_array()) return "a list of " + std::to_string(v.size()) + (v.size() == 1 ? " entry" : " entries");
+  if (v.is_array())
+    return "a list of " + std::to_string(v.size()) + (v.size() == 1 ? " entry" : " entries");
   if (v.is_string()) return "a string";
   if (v.is_boolean()) return "true or false";
   return "a number";
@@ -74,23 +76,26 @@ json& locate(json& root, const std::vector<std::string>& parts, const std::strin
   json* node = &root;
   for (std::size_t n = 0; n < parts.size(); ++n) {
     const std::string& p = parts[n];
-    const std::string before = join_path({parts.begin(), parts.begin() + static_cast<std::ptrdiff_t>(n)});
+    const std::string before =
+        join_path({parts.begin(), parts.begin() + static_cast<std::ptrdiff_t>(n)});
     const std::string at = before.empty() ? "the top" : "\"" + before + "\"";
     if (is_digit(p[0])) {
       if (!node->is_array()) {
-        throw InputError(where + ": expected a list at " + at + " for [" + p + "], got " + describe_kind(*node));
+        throw InputError(where + ": expected a list at " + at + " for [" + p + "], got " +
+                         describe_kind(*node));
       }
       std::size_t k = 0;
       const auto [end, error] = std::from_chars(p.data(), p.data() + p.size(), k);
       if (error != std::errc{} || end != p.data() + p.size() || k >= node->size()) {
-        throw InputError(where + ": expected an existing list entry " + before + "[" + p + "], got " +
-                         describe_kind(*node));
+        throw InputError(where + ": expected an existing list entry " + before + "[" + p +
+                         "], got " + describe_kind(*node));
       }
       node = &(*node)[k];
     } else {
       if (node->is_null()) *node = json::object();
       if (!node->is_object()) {
-        throw InputError(where + ": expected an object at " + at + " for \"" + p + "\", got " + describe_kind(*node));
+        throw InputError(where + ": expected an object at " + at + " for \"" + p + "\", got " +
+                         describe_kind(*node));
       }
       node = &(*node)[p];
     }
@@ -100,7 +105,8 @@ json& locate(json& root, const std::vector<std::string>& parts, const std::strin
 
 std::string join_path(const std::vector<std::string>& parts) {
   std::string path;
-  for (const auto& p : parts) path += is_digit(p[0]) ? "[" + p + "]" : (path.empty() ? "" : ".") + p;
+  for (const auto& p : parts)
+    path += is_digit(p[0]) ? "[" + p + "]" : (path.empty() ? "" : ".") + p;
   return path;
 }
 
@@ -119,7 +125,8 @@ bool is_param_path_from(const std::string& s, std::size_t pos) {
 }  // namespace
 
 bool is_plugin_param_path(const std::string& path) {
-  static const std::string source = "source.params.", analyzers = "analyzers[", params = "].params.";
+  static const std::string source = "source.params.", analyzers = "analyzers[",
+                           params = "].params.";
   if (path.rfind(source, 0) == 0) return is_param_path_from(path, source.size());
   if (path.rfind(analyzers, 0) != 0) return false;
   std::size_t end = analyzers.size();

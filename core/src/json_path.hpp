@@ -15,7 +15,8 @@ std::string join_path(const std::vector<std::string>& parts);
 
 // The value at `parts`, made (as null) if its object lacks the last keys; list entries
 // must exist.
-nlohmann::json& locate(nlohmann::json& root, const std::vector<std::string>& parts, const std::string& where);
+nlohmann::json& locate(nlohmann::json& root, const std::vector<std::string>& parts,
+                       const std::string& where);
 
 // Whether `path` is source.params.NAME or analyzers[K].params.NAME, or a path into such a
 // parameter's value (source.params.walls.base.mu).

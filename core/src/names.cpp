@@ -25,12 +25,13 @@ bool is_analyzer_name(const std::string& s) {
          s.rfind("point_", 0) != 0;
 }
 
-const std::string kRunNameRule =
-    "a name of at most " + std::to_string(kMaxNameLength) + " letters, digits, _, - and . (not first)";
+const std::string kRunNameRule = "a name of at most " + std::to_string(kMaxNameLength) +
+                                 " letters, digits, _, - and . (not first)";
 
 }  // namespace
 
-std::string read_pipeline_name(const nlohmann::json& root, const JsonLocation& top, const std::string& origin) {
+std::string read_pipeline_name(const nlohmann::json& root, const JsonLocation& top,
+                               const std::string& origin) {
   const JsonLocation at = top.child("name");
   if (!root.contains("name")) {
     const std::string stem = std::filesystem::path(origin).stem().string();
@@ -49,9 +50,10 @@ std::string read_pipeline_name(const nlohmann::json& root, const JsonLocation& t
 
 void check_analyzer_name(const nlohmann::json& name, const JsonLocation& at) {
   if (!name.is_string() || !is_analyzer_name(name.get<std::string>())) {
-    throw InputError(at.str() + ": expected a name of at most " + std::to_string(kMaxNameLength) +
-                     " letters, digits and _, starting with a letter (not source, sweep or point_*), got " +
-                     json_brief(name));
+    throw InputError(
+        at.str() + ": expected a name of at most " + std::to_string(kMaxNameLength) +
+        " letters, digits and _, starting with a letter (not source, sweep or point_*), got " +
+        json_brief(name));
   }
 }
 

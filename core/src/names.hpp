@@ -14,7 +14,8 @@ inline constexpr std::size_t kMaxNameLength = 100;
 
 // The pipeline's "name", or the file name without `.json` if it has none: letters,
 // digits, _, - and . (not first).
-std::string read_pipeline_name(const nlohmann::json& root, const JsonLocation& top, const std::string& origin);
+std::string read_pipeline_name(const nlohmann::json& root, const JsonLocation& top,
+                               const std::string& origin);
 
 // Refuses an analyzer name that is not a letter followed by letters, digits and _, or
 // that is one of the runner's own groups (source, sweep, point_*).

@@ -19,10 +19,14 @@ namespace {
 
 std::string describe_earlier(const RunMarker& m) {
   switch (m.status) {
-    case RunStatus::Complete: return "the output of an earlier run";
-    case RunStatus::Failed: return "a failed run (its run.log says why)";
-    case RunStatus::Interrupted: return "an interrupted run";
-    case RunStatus::Running: return "a run that stopped before it finished (killed?)";
+    case RunStatus::Complete:
+      return "the output of an earlier run";
+    case RunStatus::Failed:
+      return "a failed run (its run.log says why)";
+    case RunStatus::Interrupted:
+      return "an interrupted run";
+    case RunStatus::Running:
+      return "a run that stopped before it finished (killed?)";
   }
   return "an earlier run";
 }
@@ -46,7 +50,8 @@ void append_line(const fs::path& file, const std::string& line) {
 
 }  // namespace
 
-OutputDirectory::OutputDirectory(const fs::path& dir, bool overwrite, const std::vector<InputFile>& inputs)
+OutputDirectory::OutputDirectory(const fs::path& dir, bool overwrite,
+                                 const std::vector<InputFile>& inputs)
     : final_(without_trailing_separators(dir)), work_(final_), marker_(new_run_marker()) {
   check_output_kind(final_);
   check_output_place(final_, inputs);
@@ -61,18 +66,22 @@ void OutputDirectory::check_earlier_run(bool overwrite) {
   const std::string shown = final_.string();
   earlier_lock_ = DirectoryLock::try_lock(final_);
   if (!earlier_lock_) {
-    throw InputError(shown + ": another granpipe run is writing or replacing this output directory; wait "
+    throw InputError(shown +
+                     ": another granpipe run is writing or replacing this output directory; wait "
                      "for it to end or choose another --out");
   }
   const std::optional<RunMarker> earlier = read_run_marker(final_);
   if (!earlier && !overwrite) {
-    throw InputError(shown + ": expected a new or empty output directory, got a non-empty one that granpipe "
-                     "did not make; choose another --out");
+    throw InputError(
+        shown +
+        ": expected a new or empty output directory, got a non-empty one that granpipe "
+        "did not make; choose another --out");
   }
   if (!earlier) {
-    const std::string hint = fs::exists(final_ / "pipeline.json")
-                                 ? " (if an older granpipe, which wrote no marker, made it: remove it yourself)"
-                                 : "";
+    const std::string hint =
+        fs::exists(final_ / "pipeline.json")
+            ? " (if an older granpipe, which wrote no marker, made it: remove it yourself)"
+            : "";
     throw InputError(shown + ": --overwrite replaces only directories granpipe made (they hold a " +
                      kRunMarkerName + " file), got one without" + hint + "; nothing was changed");
   }
@@ -90,7 +99,8 @@ void OutputDirectory::check_earlier_run(bool overwrite) {
 void OutputDirectory::claim() {
   std::error_code ec;
   if (final_.has_parent_path()) fs::create_directories(final_.parent_path(), ec);
-  if (ec) throw InputError(final_.string() + ": cannot create its parent directory: " + ec.message());
+  if (ec)
+    throw InputError(final_.string() + ": cannot create its parent directory: " + ec.message());
   if (replacing_)
     claim_beside();
   else
@@ -98,11 +108,12 @@ void OutputDirectory::claim() {
   claimed_ = true;
   RunMarker interrupted = marker_;
   interrupted.status = RunStatus::Interrupted;
-  const std::string outcome = replacing_ ? "the earlier run in " + final_.string() +
-                                               " is untouched; this one is in " + work_.string() +
-                                               ", marked interrupted"
-                                         : final_.string() + " is marked interrupted (rerun with --overwrite)";
-  interruption_ = std::make_unique<InterruptionRecord>(work_, run_marker_text(interrupted), outcome);
+  const std::string outcome =
+      replacing_ ? "the earlier run in " + final_.string() + " is untouched; this one is in " +
+                       work_.string() + ", marked interrupted"
+                 : final_.string() + " is marked interrupted (rerun with --overwrite)";
+  interruption_ =
+      std::make_unique<InterruptionRecord>(work_, run_marker_text(interrupted), outcome);
 }
 
 // A new or empty directory is claimed by its lock: a second run cannot take the lock,
@@ -110,12 +121,14 @@ void OutputDirectory::claim() {
 void OutputDirectory::claim_in_place() {
   const bool made = mkdir(final_.c_str(), 0777) == 0;
   if (!made && errno != EEXIST)
-    throw InputError(final_.string() + ": cannot create the output directory: " + std::strerror(errno));
+    throw InputError(final_.string() +
+                     ": cannot create the output directory: " + std::strerror(errno));
   check_output_kind(final_);  // a symlink made since the checks
   own_lock_ = DirectoryLock::try_lock(final_);
   if (!own_lock_ || !is_empty_directory(final_)) {
     own_lock_.reset();
-    throw InputError(final_.string() + ": another granpipe run has just claimed this output directory; "
+    throw InputError(final_.string() +
+                     ": another granpipe run has just claimed this output directory; "
                      "choose another --out");
   }
   try {
@@ -132,8 +145,8 @@ void OutputDirectory::claim_in_place() {
 // A replacing run builds beside the earlier one, whose lock it holds since the checks.
 void OutputDirectory::claim_beside() {
   if (mkdir(work_.c_str(), 0777) != 0) {
-    throw InputError(final_.string() + ": cannot create the new run's directory " + work_.string() + ": " +
-                     std::strerror(errno) + "; nothing was changed");
+    throw InputError(final_.string() + ": cannot create the new run's directory " + work_.string() +
+                     ": " + std::strerror(errno) + "; nothing was changed");
   }
   own_lock_ = DirectoryLock::try_lock(work_);
   try {
@@ -186,14 +199,16 @@ void OutputDirectory::remove_earlier(const fs::path& dir, Log& log) {
   } catch (const InputError&) {
   }
   if (!earlier || earlier->run_id != earlier_run_id_) {
-    log.warn(dir.string() + ": expected the earlier run replaced by this one, got something else; "
+    log.warn(dir.string() +
+             ": expected the earlier run replaced by this one, got something else; "
              "left in place");
     return;
   }
   std::error_code ec;
   fs::remove_all(dir, ec);
   if (ec) {
-    log.warn(dir.string() + ": could not remove the earlier run (" + ec.message() + "); remove it yourself");
+    log.warn(dir.string() + ": could not remove the earlier run (" + ec.message() +
+             "); remove it yourself");
   }
 }
 
@@ -202,7 +217,8 @@ void OutputDirectory::fail(const std::string& error) noexcept {
   interruption_.reset();
   try {
     append_line(work_ / "run.log", "failed: " + error);
-    if (replacing_) append_line(work_ / "run.log", "the earlier run in " + final_.string() + " is untouched");
+    if (replacing_)
+      append_line(work_ / "run.log", "the earlier run in " + final_.string() + " is untouched");
     marker_.status = RunStatus::Failed;
     write_run_marker(work_, marker_);
   } catch (...) {

@@ -28,7 +28,8 @@ class OutputDirectory {
   // write into or replace: a symlink or a file; the root, working or home directory or
   // one holding them; one holding an input file; a directory granpipe did not make; one
   // another run is writing into; an earlier run's output without `overwrite`.
-  OutputDirectory(const std::filesystem::path& dir, bool overwrite, const std::vector<InputFile>& inputs);
+  OutputDirectory(const std::filesystem::path& dir, bool overwrite,
+                  const std::vector<InputFile>& inputs);
   ~OutputDirectory();
   OutputDirectory(const OutputDirectory&) = delete;
   OutputDirectory& operator=(const OutputDirectory&) = delete;

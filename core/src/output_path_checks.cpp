@@ -17,13 +17,19 @@ namespace {
 
 std::string describe_kind(fs::file_type type) {
   switch (type) {
-    case fs::file_type::regular: return "a regular file";
-    case fs::file_type::symlink: return "a symlink";
-    case fs::file_type::fifo: return "a named pipe";
-    case fs::file_type::socket: return "a socket";
+    case fs::file_type::regular:
+      return "a regular file";
+    case fs::file_type::symlink:
+      return "a symlink";
+    case fs::file_type::fifo:
+      return "a named pipe";
+    case fs::file_type::socket:
+      return "a socket";
     case fs::file_type::block:
-    case fs::file_type::character: return "a device file";
-    default: return "a special file";
+    case fs::file_type::character:
+      return "a device file";
+    default:
+      return "a special file";
   }
 }
 
@@ -83,13 +89,14 @@ void check_output_place(const fs::path& dir, const std::vector<InputFile>& input
   for (const auto& [place, name] : places) {
     if (place.empty() || !holds(out, place)) continue;
     throw InputError(dir.string() + ": expected a directory of the run's own, got " + out.string() +
-                     ", which " + (out == place ? "is " : "holds ") + name + "; choose another --out");
+                     ", which " + (out == place ? "is " : "holds ") + name +
+                     "; choose another --out");
   }
   for (const InputFile& input : inputs) {
     const fs::path file = resolved(input.file);
     if (file.empty() || !holds(out, file)) continue;
-    throw InputError(input.where + ": expected a file outside the output directory " + dir.string() +
-                     ", got \"" + input.file.string() +
+    throw InputError(input.where + ": expected a file outside the output directory " +
+                     dir.string() + ", got \"" + input.file.string() +
                      "\" inside it; granpipe never writes where it reads (choose another --out)");
   }
 }
@@ -106,7 +113,8 @@ void check_removable(const fs::path& dir) {
   for (fs::recursive_directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
     std::error_code kind;
     const bool folder = it->symlink_status(kind).type() == fs::file_type::directory;
-    if (folder && access(it->path().c_str(), W_OK | X_OK) != 0) refuse(it->path(), std::strerror(errno));
+    if (folder && access(it->path().c_str(), W_OK | X_OK) != 0)
+      refuse(it->path(), std::strerror(errno));
   }
   if (ec) refuse(dir, ec.message());
 }

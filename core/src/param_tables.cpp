@@ -20,18 +20,24 @@ constexpr std::size_t kMaxSpeciesName = 100;
 // Letters, digits and _, a letter first: a species name fits a pair key "a-b" and a
 // --set path unchanged.
 bool is_species_name(const std::string& s) {
-  const auto is_name_char = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
-  return !s.empty() && s.size() <= kMaxSpeciesName && std::isalpha(static_cast<unsigned char>(s[0])) &&
+  const auto is_name_char = [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+  };
+  return !s.empty() && s.size() <= kMaxSpeciesName &&
+         std::isalpha(static_cast<unsigned char>(s[0])) &&
          std::all_of(s.begin(), s.end(), is_name_char);
 }
 
-void check_species_name(const std::string& name, const std::vector<std::string>& earlier, const JsonLocation& at) {
+void check_species_name(const std::string& name, const std::vector<std::string>& earlier,
+                        const JsonLocation& at) {
   if (!is_species_name(name)) {
-    throw InputError(at.str() + ": expected a species name (a letter, then letters, digits and _; at most " +
+    throw InputError(at.str() +
+                     ": expected a species name (a letter, then letters, digits and _; at most " +
                      std::to_string(kMaxSpeciesName) + "), got " + json_brief(name));
   }
   if (std::find(earlier.begin(), earlier.end(), name) != earlier.end()) {
-    throw InputError(at.str() + ": expected a name no other species has, got " + json_brief(name) + " again");
+    throw InputError(at.str() + ": expected a name no other species has, got " + json_brief(name) +
+                     " again");
   }
 }
 
@@ -39,7 +45,8 @@ void check_species_name(const std::string& name, const std::vector<std::string>&
 std::pair<std::size_t, std::size_t> pair_of(const std::string& key, const SpeciesTable& species,
                                             const JsonLocation& table) {
   const auto dash = key.find('-');
-  const std::string a = key.substr(0, dash), b = dash == std::string::npos ? "" : key.substr(dash + 1);
+  const std::string a = key.substr(0, dash),
+                    b = dash == std::string::npos ? "" : key.substr(dash + 1);
   std::vector<std::string> names;
   for (std::size_t i = 0; i < species.size(); ++i) names.push_back(species.name(i));
   const JsonLocation at = table.child(key);
@@ -48,8 +55,8 @@ std::pair<std::size_t, std::size_t> pair_of(const std::string& key, const Specie
     for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
     // A key from the file is shown quoted only: it may hold any character.
     const std::string where = at.key_str() == at.str() ? table.str() : at.key_str();
-    throw InputError(where + ": expected keys \"a-b\" naming two species (of " + list + ") or \"*\", got " +
-                     json_brief(key));
+    throw InputError(where + ": expected keys \"a-b\" naming two species (of " + list +
+                     ") or \"*\", got " + json_brief(key));
   }
   std::size_t ends[2];
   for (int k = 0; k < 2; ++k) {
@@ -69,11 +76,12 @@ std::pair<std::size_t, std::size_t> pair_of(const std::string& key, const Specie
 ParamValue read_species_table(const json& list, const ParamSpec& spec, const JsonLocation& at,
                               const std::filesystem::path& base_dir) {
   if (!list.is_array() || list.empty()) {
-    throw InputError(at.str() + ": expected " + describe_expected(spec) + ", got " + json_brief(list));
+    throw InputError(at.str() + ": expected " + describe_expected(spec) + ", got " +
+                     json_brief(list));
   }
   if (list.size() > kMaxSpecies) {
-    throw InputError(at.str() + ": expected at most " + std::to_string(kMaxSpecies) + " species, got " +
-                     std::to_string(list.size()));
+    throw InputError(at.str() + ": expected at most " + std::to_string(kMaxSpecies) +
+                     " species, got " + std::to_string(list.size()));
   }
   std::vector<Params> rows;
   std::vector<std::string> names;
@@ -89,7 +97,8 @@ ParamValue read_species_table(const json& list, const ParamSpec& spec, const Jso
 ParamValue read_pair_table(const json& table, const ParamSpec& spec, const SpeciesTable& species,
                            const JsonLocation& at, const std::filesystem::path& base_dir) {
   if (!table.is_object()) {
-    throw InputError(at.str() + ": expected " + describe_expected(spec) + ", got " + json_brief(table));
+    throw InputError(at.str() + ": expected " + describe_expected(spec) + ", got " +
+                     json_brief(table));
   }
   const std::size_t n = species.size();
   std::vector<std::string> given(n * n);  // the key that gave pair (i, j), at i * n + j
@@ -101,7 +110,8 @@ ParamValue read_pair_table(const json& table, const ParamSpec& spec, const Speci
     } else {
       const auto [i, j] = pair_of(key, species, at);
       if (!given[i * n + j].empty()) {
-        throw InputError(entry_at.str() + ": expected each pair once (a-b is b-a), got it also as \"" +
+        throw InputError(entry_at.str() +
+                         ": expected each pair once (a-b is b-a), got it also as \"" +
                          given[i * n + j] + "\"");
       }
       given[i * n + j] = key;
@@ -113,12 +123,15 @@ ParamValue read_pair_table(const json& table, const ParamSpec& spec, const Speci
     for (std::size_t j = i; j < n; ++j) {
       const std::string& key = given[i * n + j];
       if (key.empty() && !all) {
-        throw InputError(at.str() + ": expected an entry for every pair of species, got none for \"" +
-                         species.name(i) + "-" + species.name(j) + "\" (give it, or \"*\" for the pairs not listed)");
+        throw InputError(at.str() +
+                         ": expected an entry for every pair of species, got none for \"" +
+                         species.name(i) + "-" + species.name(j) +
+                         "\" (give it, or \"*\" for the pairs not listed)");
       }
       json merged = all ? *all : json::object();
       if (!key.empty()) merged.update(table.at(key));
-      pairs.push_back(read_params(merged, *spec.fields, at.child(key.empty() ? "*" : key), base_dir));
+      pairs.push_back(
+          read_params(merged, *spec.fields, at.child(key.empty() ? "*" : key), base_dir));
     }
   }
   std::vector<std::string> names;

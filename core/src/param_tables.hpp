@@ -13,13 +13,14 @@ namespace granpipe {
 inline constexpr std::size_t kMaxSpecies = 256;
 
 // A list of species objects, each with a unique name, against `spec.fields`.
-ParamValue read_species_table(const nlohmann::json& list, const ParamSpec& spec, const JsonLocation& at,
-                              const std::filesystem::path& base_dir);
+ParamValue read_species_table(const nlohmann::json& list, const ParamSpec& spec,
+                              const JsonLocation& at, const std::filesystem::path& base_dir);
 
 // An object keyed "a-b" (species a and b of `species`) and "*", with every pair given
 // or "*"; each pair's values are "*"'s overridden by its own.
-ParamValue read_pair_table(const nlohmann::json& table, const ParamSpec& spec, const SpeciesTable& species,
-                           const JsonLocation& at, const std::filesystem::path& base_dir);
+ParamValue read_pair_table(const nlohmann::json& table, const ParamSpec& spec,
+                           const SpeciesTable& species, const JsonLocation& at,
+                           const std::filesystem::path& base_dir);
 
 // Refuses (InternalError) a table's default JSON that `schema`'s reader would refuse; a
 // pair table's is read against its species table's default, if any.

@@ -106,7 +106,8 @@ bool in_range(const ParamSpec& s, double x) {
 // JSON numbers that are whole (5 or 5.0) are integers; 5.5 and 1e30 are not.
 bool as_integer(const nlohmann::json& v, std::int64_t& out) {
   // Above 2^63 - 1 a JSON integer is stored unsigned, and would wrap to a negative.
-  if (v.is_number_unsigned() && v.get<std::uint64_t>() > std::numeric_limits<std::int64_t>::max()) return false;
+  if (v.is_number_unsigned() && v.get<std::uint64_t>() > std::numeric_limits<std::int64_t>::max())
+    return false;
   if (v.is_number_integer()) {
     out = v.get<std::int64_t>();
     return true;
@@ -123,14 +124,16 @@ bool as_integer(const nlohmann::json& v, std::int64_t& out) {
 
 // `earlier`: the values read before this one in its object (a pair table's species).
 ParamValue convert(const nlohmann::json& v, const ParamSpec& s, const JsonLocation& at,
-                   const std::filesystem::path& base_dir, const std::map<std::string, ParamValue>& earlier) {
+                   const std::filesystem::path& base_dir,
+                   const std::map<std::string, ParamValue>& earlier) {
   switch (s.type) {
     case ParamType::Object:
       return std::make_shared<const Params>(read_params(v, *s.fields, at, base_dir));
     case ParamType::Species:
       return read_species_table(v, s, at, base_dir);
     case ParamType::Pairs:
-      return read_pair_table(v, s, *std::get<std::shared_ptr<const SpeciesTable>>(earlier.at(s.species)),
+      return read_pair_table(v, s,
+                             *std::get<std::shared_ptr<const SpeciesTable>>(earlier.at(s.species)),
                              at, base_dir);
     case ParamType::Bool:
       if (!v.is_boolean()) fail(at, s, v);
@@ -162,9 +165,9 @@ ParamValue convert(const nlohmann::json& v, const ParamSpec& s, const JsonLocati
       if (p.is_relative() && !std::filesystem::exists(p) && std::filesystem::exists(base_dir / p))
         p = base_dir / p;
       if (!std::filesystem::is_regular_file(p)) {
-        const char* found = std::filesystem::is_directory(p)  ? "a directory"
-                            : std::filesystem::exists(p)       ? "not a regular file"
-                                                               : "no such file";
+        const char* found = std::filesystem::is_directory(p) ? "a directory"
+                            : std::filesystem::exists(p)     ? "not a regular file"
+                                                             : "no such file";
         throw InputError(at.str() + ": expected an existing file, got " + json_brief(v) + " (" +
                          found + ")");
       }
@@ -195,7 +198,8 @@ ParamValue convert(const nlohmann::json& v, const ParamSpec& s, const JsonLocati
 
 }  // namespace
 
-void check_keys(const nlohmann::json& obj, const std::vector<std::string>& allowed, const JsonLocation& at) {
+void check_keys(const nlohmann::json& obj, const std::vector<std::string>& allowed,
+                const JsonLocation& at) {
   if (!obj.is_object()) throw InputError(at.str() + ": expected an object, got " + json_brief(obj));
   for (const auto& [key, v] : obj.items()) {
     if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
@@ -226,8 +230,8 @@ Params read_params(const nlohmann::json& object, const Schema& schema, const Jso
   for (const auto& s : schema.specs()) known.push_back(s.name);
   for (const auto& [key, value] : object.items()) {
     if (!schema.find(key)) {
-      throw InputError(where.child(key).key_str() + ": unknown parameter" + did_you_mean(key, known) +
-                       known_list(known));
+      throw InputError(where.child(key).key_str() + ": unknown parameter" +
+                       did_you_mean(key, known) + known_list(known));
     }
   }
   std::map<std::string, ParamValue> values;
@@ -242,7 +246,8 @@ Params read_params(const nlohmann::json& object, const Schema& schema, const Jso
     } else if (const auto def = implied_json(s)) {
       values[s.name] = convert(*def, s, at, base_dir, values);
     } else {
-      throw InputError(at.str() + ": expected " + describe_expected(s) + ", got nothing (required)");
+      throw InputError(at.str() + ": expected " + describe_expected(s) +
+                       ", got nothing (required)");
     }
   }
   return Params(std::move(values));

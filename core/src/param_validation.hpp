@@ -38,7 +38,8 @@ std::string located_message(const JsonLocation& top, const std::string& message)
 std::string json_brief(const nlohmann::json& v);
 
 // Refuses an `obj` that is not an object or has a key not in `allowed` (with a did-you-mean).
-void check_keys(const nlohmann::json& obj, const std::vector<std::string>& allowed, const JsonLocation& at);
+void check_keys(const nlohmann::json& obj, const std::vector<std::string>& allowed,
+                const JsonLocation& at);
 
 // Checks `object` against `schema` and returns the values with defaults filled in;
 // `object` is rewritten to its filled-in form (what pipeline.json records). Relative

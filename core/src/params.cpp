@@ -13,17 +13,28 @@ namespace granpipe {
 
 const char* to_string(ParamType t) {
   switch (t) {
-    case ParamType::Bool: return "bool";
-    case ParamType::Int: return "integer";
-    case ParamType::Real: return "number";
-    case ParamType::String: return "string";
-    case ParamType::Choice: return "choice";
-    case ParamType::Path: return "path";
-    case ParamType::IntList: return "list of integers";
-    case ParamType::RealList: return "list of numbers";
-    case ParamType::Object: return "object";
-    case ParamType::Species: return "species table";
-    case ParamType::Pairs: return "pair table";
+    case ParamType::Bool:
+      return "bool";
+    case ParamType::Int:
+      return "integer";
+    case ParamType::Real:
+      return "number";
+    case ParamType::String:
+      return "string";
+    case ParamType::Choice:
+      return "choice";
+    case ParamType::Path:
+      return "path";
+    case ParamType::IntList:
+      return "list of integers";
+    case ParamType::RealList:
+      return "list of numbers";
+    case ParamType::Object:
+      return "object";
+    case ParamType::Species:
+      return "species table";
+    case ParamType::Pairs:
+      return "pair table";
   }
   return "?";
 }
@@ -123,10 +134,12 @@ Schema::Entry Schema::object(const std::string& name, Schema fields, const std::
 }
 
 Schema::Entry Schema::species_table(const std::string& name, Schema fields,
-                                    std::optional<std::string> default_json, const std::string& doc) {
+                                    std::optional<std::string> default_json,
+                                    const std::string& doc) {
   refuse_nested_paths(fields, name);
   if (fields.find("name")) {
-    throw InternalError("schema: species table '" + name + "' declares 'name', which every species has");
+    throw InternalError("schema: species table '" + name +
+                        "' declares 'name', which every species has");
   }
   Schema species;
   species.string("name", std::nullopt, "the species' name (a letter, then letters, digits and _)");
@@ -218,13 +231,19 @@ std::string format_value(const ParamValue& v) {
   return std::visit(
       [](const auto& x) -> std::string {
         using T = std::decay_t<decltype(x)>;
-        if constexpr (std::is_same_v<T, bool>) return x ? "true" : "false";
-        else if constexpr (std::is_same_v<T, std::int64_t>) return std::to_string(x);
-        else if constexpr (std::is_same_v<T, double>) return number(x);
-        else if constexpr (std::is_same_v<T, std::string>) return "\"" + x + "\"";
+        if constexpr (std::is_same_v<T, bool>)
+          return x ? "true" : "false";
+        else if constexpr (std::is_same_v<T, std::int64_t>)
+          return std::to_string(x);
+        else if constexpr (std::is_same_v<T, double>)
+          return number(x);
+        else if constexpr (std::is_same_v<T, std::string>)
+          return "\"" + x + "\"";
         else if constexpr (std::is_same_v<T, std::vector<std::int64_t>> ||
-                           std::is_same_v<T, std::vector<double>>) return list(x);
-        else return to_json(x).dump();
+                           std::is_same_v<T, std::vector<double>>)
+          return list(x);
+        else
+          return to_json(x).dump();
       },
       v);
 }
@@ -232,21 +251,31 @@ std::string format_value(const ParamValue& v) {
 std::string describe_expected(const ParamSpec& spec) {
   std::string what;
   switch (spec.type) {
-    case ParamType::Bool: return "true or false";
-    case ParamType::Int: what = "an integer"; break;
-    case ParamType::Real: what = "a number"; break;
-    case ParamType::String: return "a string";
-    case ParamType::Path: return "a path to an existing file";
+    case ParamType::Bool:
+      return "true or false";
+    case ParamType::Int:
+      what = "an integer";
+      break;
+    case ParamType::Real:
+      what = "a number";
+      break;
+    case ParamType::String:
+      return "a string";
+    case ParamType::Path:
+      return "a path to an existing file";
     case ParamType::Choice: {
       what = "one of ";
       for (std::size_t k = 0; k < spec.choices.size(); ++k)
         what += (k ? ", \"" : "\"") + spec.choices[k] + "\"";
       return what;
     }
-    case ParamType::Object: return "an object";
-    case ParamType::Species: return "a list of species, each an object with a \"name\"";
+    case ParamType::Object:
+      return "an object";
+    case ParamType::Species:
+      return "a list of species, each an object with a \"name\"";
     case ParamType::Pairs:
-      return "an object with a key \"a-b\" per pair of " + spec.species + " (\"*\": the pairs not listed)";
+      return "an object with a key \"a-b\" per pair of " + spec.species +
+             " (\"*\": the pairs not listed)";
     case ParamType::IntList:
     case ParamType::RealList:
       what = spec.list_length ? "a list of " + std::to_string(*spec.list_length) + " "

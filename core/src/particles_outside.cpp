@@ -23,7 +23,8 @@ double side_position(const Container& c, int axis, int side) {
 std::optional<ParticleOutside> beyond_side(const Frame& f, Eigen::Index k, int axis, int side,
                                            double tolerance) {
   const Container& c = f.container;
-  const double inward = (side == 0 ? 1.0 : -1.0) * (f.position()(k, axis) - side_position(c, axis, side));
+  const double inward =
+      (side == 0 ? 1.0 : -1.0) * (f.position()(k, axis) - side_position(c, axis, side));
   const auto wall = static_cast<Wall>(2 * axis + side);
   if (c.boundary[axis][side] == Boundary::Open) {
     if (inward < 0.0) return ParticleOutside{k, wall, -inward};
@@ -51,7 +52,8 @@ std::string where_is(const Frame& f, Wall wall) {
            format_number(c.cylinder_center[1] + c.wall_offset[1]) + "))";
   }
   const int axis = static_cast<int>(wall) / 2, side = static_cast<int>(wall) % 2;
-  const std::string at = std::string(1, "xyz"[axis]) + " = " + format_number(side_position(c, axis, side));
+  const std::string at =
+      std::string(1, "xyz"[axis]) + " = " + format_number(side_position(c, axis, side));
   const bool open = c.boundary[axis][side] == Boundary::Open;
   return std::string(open ? "the open side " : "the wall ") + to_string(wall) + " (" + at + ")";
 }
@@ -79,8 +81,10 @@ std::string describe(const Frame& frame, const ParticleOutside& outside, double 
   std::string at;
   for (int a = 0; a < frame.dim; ++a) at += (a ? ", " : "") + format_number(frame.position()(k, a));
   const std::string s = "at (" + at + "), radius " + format_number(frame.radius()[k]) + ": ";
-  const auto axis = static_cast<std::size_t>(outside.wall) / 2, side = static_cast<std::size_t>(outside.wall) % 2;
-  if (outside.wall != Wall::CylinderSide && frame.container.boundary[axis][side] == Boundary::Open) {
+  const auto axis = static_cast<std::size_t>(outside.wall) / 2,
+             side = static_cast<std::size_t>(outside.wall) % 2;
+  if (outside.wall != Wall::CylinderSide &&
+      frame.container.boundary[axis][side] == Boundary::Open) {
     return s + "expected its centre inside " + where_is(frame, outside.wall) + ", got it " +
            format_number(outside.depth) + " beyond";
   }

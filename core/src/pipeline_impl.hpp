@@ -20,15 +20,15 @@ struct PointSpec {
 // An analyzer or writer of the pipeline.
 struct PluginSpec {
   const PluginInfo* info = nullptr;
-  std::string name;  // unique among the analyzers and writers
-  std::string where; // "file: analyzers[k]"
+  std::string name;   // unique among the analyzers and writers
+  std::string where;  // "file: analyzers[k]"
   // An analyzer's "publish": false keeps its columns out of the frames, so that a second
   // instance of a plugin can measure again without clashing with the first's columns.
   bool publish = true;
 };
 
 struct Pipeline::Impl {
-  std::string origin;  // file name, for messages
+  std::string origin;          // file name, for messages
   std::filesystem::path file;  // the pipeline file, when read from one
   std::filesystem::path base_dir;
   std::string name, description;

@@ -12,9 +12,9 @@
 #include <utility>
 #include <vector>
 
+#include "frames_file_writer.hpp"
 #include "granpipe/atomic_file.hpp"
 #include "granpipe/frame_store.hpp"
-#include "frames_file_writer.hpp"
 #include "interruption_record.hpp"
 #include "output_directory.hpp"
 #include "pipeline_impl.hpp"
@@ -42,16 +42,18 @@ std::string analyzer_title(const PluginSpec& spec) {
 
 // Analyzer `a` publishes `c`; an analyzer before it that reads `c` as the source saved it
 // would measure the old values while the frames written carry the new ones.
-void refuse_stale_reader(const Pipeline::Impl& p, const std::vector<std::pair<std::size_t, Property>>& read_as_saved,
+void refuse_stale_reader(const Pipeline::Impl& p,
+                         const std::vector<std::pair<std::size_t, Property>>& read_as_saved,
                          std::size_t a, const Property& c) {
   for (const auto& [reader, column] : read_as_saved) {
     if (reader == a || column.name != c.name || column.scope != c.scope) continue;
     const PluginSpec &spec = p.analyzers[a], &earlier = p.analyzers[reader];
-    throw InputError(spec.where + ": analyzer \"" + spec.info->name + "\" recomputes the " +
-                     to_string(c.scope) + " column \"" + c.name + "\", which analyzers[" +
-                     std::to_string(reader) + "] (\"" + earlier.info->name +
-                     "\") before it reads as the source saved it: put \"" + spec.info->name +
-                     "\" first to use the recomputed values, or leave it out to use the saved ones");
+    throw InputError(
+        spec.where + ": analyzer \"" + spec.info->name + "\" recomputes the " + to_string(c.scope) +
+        " column \"" + c.name + "\", which analyzers[" + std::to_string(reader) + "] (\"" +
+        earlier.info->name + "\") before it reads as the source saved it: put \"" +
+        spec.info->name +
+        "\" first to use the recomputed values, or leave it out to use the saved ones");
   }
 }
 
@@ -103,16 +105,18 @@ PointPlugins make_plugins(const Pipeline::Impl& p, std::size_t k, int threads, L
     const std::string at = "analyzers[" + std::to_string(a) + "]";
     try {
       made.analyzers.push_back(spec.info->make_analyzer(
-          context(point.analyzer_params[a], seeds.derive("analyzer:" + spec.name), spec.name, at + ".params")));
+          context(point.analyzer_params[a], seeds.derive("analyzer:" + spec.name), spec.name,
+                  at + ".params")));
     } catch (const InputError& e) {
       throw InputError(located_message(p.top(), e.what()));
     }
     const std::string missing = frames.lacks(made.analyzers.back()->needs());
-    if (!missing.empty()) throw InputError(spec.where + ": " + analyzer_title(spec) + " needs " + missing);
+    if (!missing.empty())
+      throw InputError(spec.where + ": " + analyzer_title(spec) + " needs " + missing);
     for (const Property& c : made.analyzers.back()->needs().columns) {
-      const bool by_analyzer = std::any_of(published.begin(), published.end(), [&](const Property& q) {
-        return q.name == c.name && q.scope == c.scope;
-      });
+      const bool by_analyzer =
+          std::any_of(published.begin(), published.end(),
+                      [&](const Property& q) { return q.name == c.name && q.scope == c.scope; });
       if (!is_required(c) && !by_analyzer) read_as_saved.emplace_back(a, c);
     }
     if (!spec.publish) continue;
@@ -121,7 +125,8 @@ PointPlugins make_plugins(const Pipeline::Impl& p, std::size_t k, int threads, L
       published.push_back(c);
     }
     try {
-      for (const std::string& w : frames.publish(made.analyzers.back()->publishes(), at, analyzer_title(spec))) {
+      for (const std::string& w :
+           frames.publish(made.analyzers.back()->publishes(), at, analyzer_title(spec))) {
         made.warnings.push_back(p.origin + ": " + w);
       }
     } catch (const InputError& e) {
@@ -131,9 +136,9 @@ PointPlugins make_plugins(const Pipeline::Impl& p, std::size_t k, int threads, L
   for (std::size_t w = 0; w < p.writers.size(); ++w) {
     const PluginSpec& spec = p.writers[w];
     try {
-      made.writers.push_back(spec.info->make_writer(context(
-          point.writer_params[w], seeds.derive("writer:" + spec.name), spec.name,
-          "writers[" + std::to_string(w) + "].params")));
+      made.writers.push_back(spec.info->make_writer(
+          context(point.writer_params[w], seeds.derive("writer:" + spec.name), spec.name,
+                  "writers[" + std::to_string(w) + "].params")));
     } catch (const InputError& e) {
       throw InputError(located_message(p.top(), e.what()));
     }
@@ -160,8 +165,7 @@ struct PointOutcome {
 };
 
 PointOutcome run_point(const Pipeline::Impl& p, std::size_t k, PointPlugins plugins,
-                       const ResultStream& stream,
-                       Progress& progress, const fs::path& out) {
+                       const ResultStream& stream, Progress& progress, const fs::path& out) {
   const bool source_reports = plugins.source->work().reported_by_source;
   const auto frames_h5 = frames_file(p, k, out);  // none when frames are not saved
 
@@ -185,7 +189,8 @@ PointOutcome run_point(const Pipeline::Impl& p, std::size_t k, PointPlugins plug
   // What each analyzer publishes, asked once rather than every frame.
   std::vector<std::vector<Property>> published;
   for (std::size_t a = 0; a < plugins.analyzers.size(); ++a) {
-    published.push_back(p.analyzers[a].publish ? plugins.analyzers[a]->publishes() : std::vector<Property>{});
+    published.push_back(p.analyzers[a].publish ? plugins.analyzers[a]->publishes()
+                                               : std::vector<Property>{});
   }
   for (;;) {
     throw_if_stop_requested();  // a SIGINT or SIGTERM: stop between frames, files whole
@@ -356,14 +361,15 @@ RunSummary run_in_directory(const Pipeline::Impl& p, const RunOptions& options, 
 
   out.claim();
   try {
-    for (std::size_t k = 0; k < p.points.size(); ++k) create_point_directory(point_directory(p, k, dir));
+    for (std::size_t k = 0; k < p.points.size(); ++k)
+      create_point_directory(point_directory(p, k, dir));
     log.open_file((dir / "run.log").string());
     // The next run's early lines (its plugins' checks) must not land in this run's log.
     const ClosesLog closing{log};
     const std::string resolved = p.resolved.dump(2);
     const auto provenance = [&](double seconds, bool complete) {
-      return Provenance{p.name, resolved, version(), git_commit(), p.seed, threads, seconds, started,
-                        complete};
+      return Provenance{p.name,  resolved, version(), git_commit(), p.seed,
+                        threads, seconds,  started,   complete};
     };
     write_file_atomically(dir / "pipeline.json", resolved + "\n");
     // Until the run ends the streamed tables go to results.partial.h5, marked incomplete
@@ -432,7 +438,8 @@ RunSummary Pipeline::run(const RunOptions& options, Log& log) const {
   } catch (const StopRequested& stop) {
     // Every file of the run is closed by now (frames.partial.h5 opens without SWMR).
     end_by_signal(stop.signal);
-    throw InputError(std::string("interrupted by ") + (stop.signal == SIGINT ? "SIGINT" : "SIGTERM"));
+    throw InputError(std::string("interrupted by ") +
+                     (stop.signal == SIGINT ? "SIGINT" : "SIGTERM"));
   }
 }
 

@@ -32,8 +32,8 @@ void check_utf8(const std::string& assignment) {
   if (bad == std::string::npos) return;
   char byte[8];
   std::snprintf(byte, sizeof byte, "0x%02x", static_cast<unsigned char>(assignment[bad]));
-  throw InputError(set_origin(assignment.substr(0, bad)) + "...: expected UTF-8 text, got the byte " +
-                   byte + " next");
+  throw InputError(set_origin(assignment.substr(0, bad)) +
+                   "...: expected UTF-8 text, got the byte " + byte + " next");
 }
 
 // Applies `--set path=value` and says where the value came from.
@@ -72,7 +72,9 @@ Pipeline Pipeline::load(const fs::path& file, const std::vector<std::string>& se
   std::error_code ec;
   if (fs::is_directory(file, ec)) throw InputError(expected + ", got a directory");
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(expected + ", got " + (fs::exists(file, ec) ? "a file that cannot be read" : "no such file"));
+  if (!in)
+    throw InputError(expected + ", got " +
+                     (fs::exists(file, ec) ? "a file that cannot be read" : "no such file"));
   // Read in chunks up to one byte past the limit: a longer file (or /dev/zero) is
   // known without reading it all.
   std::string text;
@@ -81,7 +83,8 @@ Pipeline Pipeline::load(const fs::path& file, const std::vector<std::string>& se
     text.append(chunk, static_cast<std::size_t>(in.gcount()));
   }
   if (text.size() > kMaxPipelineBytes) {
-    throw InputError(expected + " of at most " + std::to_string(kMaxPipelineBytes >> 20) + " MB, got a longer one");
+    throw InputError(expected + " of at most " + std::to_string(kMaxPipelineBytes >> 20) +
+                     " MB, got a longer one");
   }
   Pipeline p = parse(text, file.string(), sets, registry);
   p.impl_->base_dir = file.parent_path();
@@ -95,7 +98,8 @@ namespace {
 bool read_publish(json& entry, const JsonLocation& at) {
   if (!entry.contains("publish")) return true;
   if (!entry["publish"].is_boolean()) {
-    throw InputError(at.child("publish").str() + ": expected true or false, got " + json_brief(entry["publish"]));
+    throw InputError(at.child("publish").str() + ": expected true or false, got " +
+                     json_brief(entry["publish"]));
   }
   return entry["publish"].get<bool>();
 }
@@ -109,15 +113,17 @@ std::vector<PluginSpec> parse_plugin_list(json& root, const std::string& key, Pl
   const JsonLocation list_at = top.child(key);
   if (!root.contains(key)) root[key] = json::array();
   if (!root[key].is_array()) {
-    throw InputError(list_at.str() + ": expected a list of " + key + ", got " + json_brief(root[key]));
+    throw InputError(list_at.str() + ": expected a list of " + key + ", got " +
+                     json_brief(root[key]));
   }
   std::vector<PluginSpec> specs;
   for (std::size_t k = 0; k < root[key].size(); ++k) {
     json& a = root[key][k];
     const JsonLocation at = list_at.index(k);
     const bool analyzer = kind == PluginKind::Analyzer;
-    check_keys(a, analyzer ? std::vector<std::string>{"plugin", "name", "publish", "params"}
-                           : std::vector<std::string>{"plugin", "name", "params"},
+    check_keys(a,
+               analyzer ? std::vector<std::string>{"plugin", "name", "publish", "params"}
+                        : std::vector<std::string>{"plugin", "name", "params"},
                at);
     if (!a.contains("plugin") || !a["plugin"].is_string()) {
       throw InputError(at.child("plugin").str() + ": expected a plugin name, got " +
@@ -129,8 +135,10 @@ std::vector<PluginSpec> parse_plugin_list(json& root, const std::string& key, Pl
     spec.name = a.value("name", spec.info->name);
     spec.where = at.str();
     if (!names.insert(spec.name).second) {
-      throw InputError(at.child("name").str() + ": expected a name not used by another analyzer or "
-                       "writer, got \"" + spec.name + "\" again");
+      throw InputError(at.child("name").str() +
+                       ": expected a name not used by another analyzer or "
+                       "writer, got \"" +
+                       spec.name + "\" again");
     }
     a["name"] = spec.name;
     if (analyzer) {
@@ -147,17 +155,20 @@ std::vector<PluginSpec> parse_plugin_list(json& root, const std::string& key, Pl
 Pipeline Pipeline::parse(const std::string& text, const std::string& origin,
                          const std::vector<std::string>& sets, const Registry& registry) {
   json root = parse_strict_json(text, origin);
-  if (!root.is_object()) throw InputError(origin + ": expected a JSON object, got " + json_brief(root));
+  if (!root.is_object())
+    throw InputError(origin + ": expected a JSON object, got " + json_brief(root));
   auto impl = std::make_unique<Impl>();
   impl->origin = origin;
   for (const auto& s : sets) impl->overrides.push_back(apply_set(root, s));
   const JsonLocation top = impl->top();
-  check_keys(root, {"name", "description", "seed", "source", "analyzers", "writers", "output", "sweep"},
+  check_keys(root,
+             {"name", "description", "seed", "source", "analyzers", "writers", "output", "sweep"},
              top);
 
   impl->base_dir = fs::path(origin).parent_path();
   if (root.contains("description") && !root["description"].is_string()) {
-    throw InputError(top.child("description").str() + ": expected a string, got " + json_brief(root["description"]));
+    throw InputError(top.child("description").str() + ": expected a string, got " +
+                     json_brief(root["description"]));
   }
   impl->name = read_pipeline_name(root, top, origin);
   impl->description = root.value("description", "");
@@ -177,7 +188,8 @@ Pipeline Pipeline::parse(const std::string& text, const std::string& origin,
 
   const JsonLocation an_at = top.child("analyzers"), wr_at = top.child("writers");
   std::set<std::string> names;
-  impl->analyzers = parse_plugin_list(root, "analyzers", PluginKind::Analyzer, top, registry, names);
+  impl->analyzers =
+      parse_plugin_list(root, "analyzers", PluginKind::Analyzer, top, registry, names);
   impl->writers = parse_plugin_list(root, "writers", PluginKind::Writer, top, registry, names);
 
   const JsonLocation out_at = top.child("output");
@@ -185,7 +197,8 @@ Pipeline Pipeline::parse(const std::string& text, const std::string& origin,
   json& out = root["output"];
   check_keys(out, {"dir", "save_frames", "frame_stride"}, out_at);
   if (out.contains("dir") && (!out["dir"].is_string() || out["dir"].get<std::string>().empty()))
-    throw InputError(out_at.child("dir").str() + ": expected a directory path, got " + json_brief(out["dir"]));
+    throw InputError(out_at.child("dir").str() + ": expected a directory path, got " +
+                     json_brief(out["dir"]));
   if (out.contains("save_frames") && !out["save_frames"].is_boolean())
     throw InputError(out_at.child("save_frames").str() + ": expected true or false, got " +
                      json_brief(out["save_frames"]));
@@ -201,7 +214,8 @@ Pipeline Pipeline::parse(const std::string& text, const std::string& origin,
   out["frame_stride"] = impl->frame_stride;
 
   std::vector<json> assignments{json::object()};
-  if (root.contains("sweep")) assignments = expand_sweep(root["sweep"], top.child("sweep"), impl->sweep_paths);
+  if (root.contains("sweep"))
+    assignments = expand_sweep(root["sweep"], top.child("sweep"), impl->sweep_paths);
   // A swept value comes from the file's sweep, even where a --set put one before.
   for (const auto& path : impl->sweep_paths) impl->overrides.push_back({path, ""});
   // Each point starts from the pipeline without its sweep, whose length would make
@@ -215,7 +229,8 @@ Pipeline Pipeline::parse(const std::string& text, const std::string& origin,
     json p = root;
     std::string note;
     for (const auto& [path, value] : assignments[k].items()) {
-      const std::string at = top.child("sweep").child("parameters").str() + "[" + json_brief(path) + "]";
+      const std::string at =
+          top.child("sweep").child("parameters").str() + "[" + json_brief(path) + "]";
       locate(p, split_path(path, at), at) = value;
       note += (note.empty() ? " (sweep point " + std::to_string(k) + ": " : ", ") + path + " = " +
               json_brief(value);
@@ -225,14 +240,14 @@ Pipeline Pipeline::parse(const std::string& text, const std::string& origin,
       point.source_params = validate_params(p["source"]["params"], impl->source->schema,
                                             src_at.child("params"), impl->base_dir);
       for (std::size_t a = 0; a < impl->analyzers.size(); ++a) {
-        point.analyzer_params.push_back(validate_params(p["analyzers"][a]["params"],
-                                                        impl->analyzers[a].info->schema,
-                                                        an_at.index(a).child("params"), impl->base_dir));
+        point.analyzer_params.push_back(
+            validate_params(p["analyzers"][a]["params"], impl->analyzers[a].info->schema,
+                            an_at.index(a).child("params"), impl->base_dir));
       }
       for (std::size_t w = 0; w < impl->writers.size(); ++w) {
-        point.writer_params.push_back(validate_params(p["writers"][w]["params"],
-                                                      impl->writers[w].info->schema,
-                                                      wr_at.index(w).child("params"), impl->base_dir));
+        point.writer_params.push_back(
+            validate_params(p["writers"][w]["params"], impl->writers[w].info->schema,
+                            wr_at.index(w).child("params"), impl->base_dir));
       }
     } catch (const InputError& e) {
       throw InputError(e.what() + note);

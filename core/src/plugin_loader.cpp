@@ -43,12 +43,14 @@ void load_library(Registry& registry, LoadReport& report, const fs::path& file) 
   void* handle = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (!handle) {
     const char* err = dlerror();
-    report.refused.push_back({file.string(), std::string("cannot be loaded: ") + (err ? err : "unknown error")});
+    report.refused.push_back(
+        {file.string(), std::string("cannot be loaded: ") + (err ? err : "unknown error")});
     return;
   }
   auto* entry = static_cast<const granpipe_plugin_entry*>(dlsym(handle, kEntrySymbol));
   if (!entry) {
-    report.refused.push_back({file.string(), "is not a granpipe plugin (no granpipe_plugin entry point)"});
+    report.refused.push_back(
+        {file.string(), "is not a granpipe plugin (no granpipe_plugin entry point)"});
     dlclose(handle);
     return;
   }
@@ -114,7 +116,8 @@ std::vector<std::string> LoadReport::warnings() const {
   // Copies of a whole plugin directory earlier on the path: one line, not one per plugin.
   std::map<std::pair<fs::path, fs::path>, std::vector<const Shadowed*>> by_directories;
   for (const Shadowed& s : shadowed) {
-    by_directories[{fs::path(s.ignored).parent_path(), fs::path(s.used).parent_path()}].push_back(&s);
+    by_directories[{fs::path(s.ignored).parent_path(), fs::path(s.used).parent_path()}].push_back(
+        &s);
   }
   for (const auto& [dirs, group] : by_directories) {
     if (group.size() == 1) {
@@ -125,8 +128,9 @@ std::vector<std::string> LoadReport::warnings() const {
     }
     std::string names;
     for (const Shadowed* s : group) names += (names.empty() ? "" : ", ") + s->name;
-    lines.push_back(std::to_string(group.size()) + " plugins of " + dirs.first.string() + " ignored (" + names +
-                    "): the libraries of " + dirs.second.string() + ", earlier on the search path, provide them");
+    lines.push_back(std::to_string(group.size()) + " plugins of " + dirs.first.string() +
+                    " ignored (" + names + "): the libraries of " + dirs.second.string() +
+                    ", earlier on the search path, provide them");
   }
   return lines;
 }
@@ -144,7 +148,8 @@ void load_plugins(Registry& registry, const std::vector<fs::path>& dirs) {
     if (fs::is_directory(dir, ec)) {
       for (const auto& e : fs::directory_iterator(dir, ec)) {
         const fs::path& p = e.path();
-        if (p.extension() == ".so" && p.filename().string().rfind(kPrefix, 0) == 0) libs.push_back(p);
+        if (p.extension() == ".so" && p.filename().string().rfind(kPrefix, 0) == 0)
+          libs.push_back(p);
       }
     }
     if (libs.empty()) report->without_plugins.push_back(dir);
@@ -165,12 +170,12 @@ const char* article(PluginKind k) { return k == PluginKind::Analyzer ? "an" : "a
 
 const PluginInfo& require_plugin(const Registry& registry, const std::string& name,
                                  std::optional<PluginKind> kind, const std::string& where) {
-  const std::string wanted = kind ? std::string(article(*kind)) + " " + to_string(*kind) + " plugin"
-                                  : "a plugin";
+  const std::string wanted =
+      kind ? std::string(article(*kind)) + " " + to_string(*kind) + " plugin" : "a plugin";
   if (const PluginInfo* p = registry.find(name)) {
     if (kind && p->kind != *kind) {
-      throw InputError(where + ": expected " + wanted + ", got \"" + name +
-                       "\", which is " + article(p->kind) + " " + to_string(p->kind));
+      throw InputError(where + ": expected " + wanted + ", got \"" + name + "\", which is " +
+                       article(p->kind) + " " + to_string(p->kind));
     }
     return *p;
   }
@@ -186,9 +191,9 @@ const PluginInfo& require_plugin(const Registry& registry, const std::string& na
   std::string searched;
   for (const fs::path& d : report.searched) searched += (searched.empty() ? "" : ", ") + d.string();
   const std::string where_searched =
-      report.searched.empty() ? ""
-                              : "; searched " + searched +
-                                    " (GRANPIPE_PLUGIN_PATH, then the plugins beside granpipe)";
+      report.searched.empty()
+          ? ""
+          : "; searched " + searched + " (GRANPIPE_PLUGIN_PATH, then the plugins beside granpipe)";
   throw InputError(where + ": expected " + wanted + ", got unknown \"" + name + "\"" +
                    did_you_mean(name, names) +
                    known_list(names, "none (is GRANPIPE_PLUGIN_PATH right?)") + where_searched);

@@ -41,7 +41,8 @@ void Progress::advance(double units) {
   const std::int64_t now = std::chrono::steady_clock::now().time_since_epoch().count();
   const double interval = terminal_ ? kTerminalInterval : kLineInterval;
   const double since = static_cast<double>(now - last_print_ns_.load()) *
-                       std::chrono::steady_clock::period::num / std::chrono::steady_clock::period::den;
+                       std::chrono::steady_clock::period::num /
+                       std::chrono::steady_clock::period::den;
   if (since < interval) return;
   std::unique_lock lock(mutex_, std::try_to_lock);
   if (!lock.owns_lock()) return;  // someone else is printing: skip, never wait
@@ -73,15 +74,15 @@ void Progress::print(bool final_line) {
     const int filled = static_cast<int>(fraction * width);
     std::string bar(filled, '#');
     bar.resize(width, '.');
-    std::fprintf(stderr, "\r%s [%s] %5.1f%% %.0f/%.0f %s, %.3g %s/s, ETA %s%s   ",
-                 label_.c_str(), bar.c_str(), 100 * fraction, done, total_, unit_.c_str(), rate,
-                 unit_.c_str(), format_duration(eta).c_str(), status.c_str());
+    std::fprintf(stderr, "\r%s [%s] %5.1f%% %.0f/%.0f %s, %.3g %s/s, ETA %s%s   ", label_.c_str(),
+                 bar.c_str(), 100 * fraction, done, total_, unit_.c_str(), rate, unit_.c_str(),
+                 format_duration(eta).c_str(), status.c_str());
     if (final_line) std::fputc('\n', stderr);
   } else {
     std::fprintf(stderr, "%s: %.0f/%.0f %s (%.1f%%), %.3g %s/s, elapsed %s, ETA %s%s\n",
                  label_.c_str(), done, total_, unit_.c_str(), 100 * fraction, rate, unit_.c_str(),
-                 format_duration(elapsed).c_str(), final_line ? "done" : format_duration(eta).c_str(),
-                 status.c_str());
+                 format_duration(elapsed).c_str(),
+                 final_line ? "done" : format_duration(eta).c_str(), status.c_str());
   }
   std::fflush(stderr);
 }

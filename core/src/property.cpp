@@ -21,8 +21,7 @@ const std::array<Property, 15>& table() {
       {"id", Particle, Integer, 1, "", "particle identifier, stable across frames"},
       {"species", Particle, Small, 1, "", "particle species (material) index"},
       {"velocity", Particle, Real, kDim, "length/time", "centre velocity"},
-      {"angular_velocity", Particle, Real, kSpin, "1/time",
-       "angular velocity (about z in 2D)"},
+      {"angular_velocity", Particle, Real, kSpin, "1/time", "angular velocity (about z in 2D)"},
       {"force", Particle, Real, kDim, "force", "total force on the particle"},
       {"torque", Particle, Real, kSpin, "force*length", "total torque on the particle"},
       {"orientation", Particle, Real, 4, "1", "unit quaternion (w, x, y, z)"},
@@ -41,18 +40,24 @@ const std::array<Property, 15>& table() {
 
 const char* to_string(Scope s) {
   switch (s) {
-    case Scope::Particle: return "particle";
-    case Scope::Contact: return "contact";
-    case Scope::Frame: return "frame";
+    case Scope::Particle:
+      return "particle";
+    case Scope::Contact:
+      return "contact";
+    case Scope::Frame:
+      return "frame";
   }
   return "?";
 }
 
 const char* to_string(ValueType t) {
   switch (t) {
-    case ValueType::Real: return "real";
-    case ValueType::Integer: return "integer";
-    case ValueType::Small: return "small integer";
+    case ValueType::Real:
+      return "real";
+    case ValueType::Integer:
+      return "integer";
+    case ValueType::Small:
+      return "small integer";
   }
   return "?";
 }

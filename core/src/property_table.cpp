@@ -28,9 +28,15 @@ void Column::reset(Eigen::Index rows) {
   const bool vector = property_.components == 1;
   const int c = property_.components_in(dim_);
   switch (property_.type) {
-    case ValueType::Real: data_ = zeros<double>(vector, rows, c); break;
-    case ValueType::Integer: data_ = zeros<std::int64_t>(vector, rows, c); break;
-    case ValueType::Small: data_ = zeros<std::int32_t>(vector, rows, c); break;
+    case ValueType::Real:
+      data_ = zeros<double>(vector, rows, c);
+      break;
+    case ValueType::Integer:
+      data_ = zeros<std::int64_t>(vector, rows, c);
+      break;
+    case ValueType::Small:
+      data_ = zeros<std::int32_t>(vector, rows, c);
+      break;
   }
 }
 
@@ -86,8 +92,9 @@ Column& PropertyTable::add(const Property& property) {
     return *c;
   }
   if (!is_valid_column_name(property.name)) {
-    throw InternalError("\"" + property.name +
-                        "\" is not a column name (letters, digits and _, not starting with a digit)");
+    throw InternalError(
+        "\"" + property.name +
+        "\" is not a column name (letters, digits and _, not starting with a digit)");
   }
   columns_.push_back(std::make_unique<Column>(property, rows_, dim_));
   return *columns_.back();

@@ -37,7 +37,7 @@ class FrameColumns {
   std::string suggestion(const Property& column) const;
 
   FrameContent content_;  // dim and contacts; the columns are in columns_
-  std::string source_;  // "source \"h5md\""
+  std::string source_;    // "source \"h5md\""
   std::vector<Provided> columns_;
 };
 
@@ -45,8 +45,8 @@ class FrameColumns {
 // each in place of a source column of its name. Throws InputError starting with `who`
 // ("analyzer \"packing\"") when publish() leaves a column unfilled, gives it another size,
 // or asks for a column it did not declare.
-void publish_columns(Analyzer& analyzer, const std::vector<Property>& declared, const std::string& who,
-                     Frame& frame);
+void publish_columns(Analyzer& analyzer, const std::vector<Property>& declared,
+                     const std::string& who, Frame& frame);
 
 // Removes what publish_columns added.
 void remove_published(const std::vector<Property>& declared, Frame& frame);

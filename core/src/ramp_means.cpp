@@ -15,7 +15,8 @@ void RampMeans::add(const Frame& frame, const std::vector<double>& values) {
   const std::optional<std::int64_t> cycle = frame.integer_observable("cycle");
   const std::optional<double> control = frame.real_observable(control_);
   if (!cycle || *cycle < 0 || !control) return;
-  if (values.size() != names_.size()) throw InternalError("RampMeans: one value per quantity expected");
+  if (values.size() != names_.size())
+    throw InternalError("RampMeans: one value per quantity expected");
   auto& means = means_[{ramp_branch(*cycle), *control}];
   means.resize(names_.size());
   for (std::size_t q = 0; q < values.size(); ++q) means[q].add(values[q]);

@@ -4,9 +4,12 @@ namespace granpipe {
 
 const char* to_string(PluginKind k) {
   switch (k) {
-    case PluginKind::Source: return "source";
-    case PluginKind::Analyzer: return "analyzer";
-    case PluginKind::Writer: return "writer";
+    case PluginKind::Source:
+      return "source";
+    case PluginKind::Analyzer:
+      return "analyzer";
+    case PluginKind::Writer:
+      return "writer";
   }
   return "?";
 }

@@ -30,9 +30,11 @@ void write_vector(hid_t parent, const std::string& name, const std::vector<doubl
   hsize_t n = v.size();
   Object space = owned(H5Screate_simple(1, &n, nullptr), name + ": cannot make the dataspace");
   Object ds = owned(H5Dcreate2(parent, name.c_str(), H5T_NATIVE_DOUBLE, space.id(), H5P_DEFAULT,
-                               H5P_DEFAULT, H5P_DEFAULT), name + ": cannot make the dataset");
-  if (n) h5::check(H5Dwrite(ds.id(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()),
-                   name + ": cannot write");
+                               H5P_DEFAULT, H5P_DEFAULT),
+                    name + ": cannot make the dataset");
+  if (n)
+    h5::check(H5Dwrite(ds.id(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()),
+              name + ": cannot write");
 }
 
 // A group for one result, tagged with what kind of result it holds.
@@ -47,7 +49,8 @@ void write_group(hid_t file, const std::string& group, const Results& r) {
   for (const auto& [name, s] : r.scalars()) {
     Object space = owned(H5Screate(H5S_SCALAR), name + ": cannot make the dataspace");
     Object ds = owned(H5Dcreate2(g.id(), name.c_str(), H5T_NATIVE_DOUBLE, space.id(), H5P_DEFAULT,
-                                 H5P_DEFAULT, H5P_DEFAULT), name + ": cannot make the dataset");
+                                 H5P_DEFAULT, H5P_DEFAULT),
+                      name + ": cannot make the dataset");
     h5::check(H5Dwrite(ds.id(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, &s.value),
               name + ": cannot write");
     write_text_attribute(ds.id(), "kind", "scalar");
@@ -60,7 +63,8 @@ void write_group(hid_t file, const std::string& group, const Results& r) {
     write_attribute(tg.id(), "columns", t.columns);
     write_attribute(tg.id(), "units", t.units);
     write_text_attribute(tg.id(), "doc", t.doc);
-    for (std::size_t c = 0; c < t.columns.size(); ++c) write_vector(tg.id(), t.columns[c], t.data[c]);
+    for (std::size_t c = 0; c < t.columns.size(); ++c)
+      write_vector(tg.id(), t.columns[c], t.data[c]);
   }
   for (const auto& [name, h] : r.histograms()) {
     const Object hg = result_group(g.id(), name, "histogram");
@@ -107,8 +111,8 @@ std::string csv_number(double x) {
 }
 
 std::string csv_header(const Provenance& p) {
-  return "# granpipe " + p.version + " commit " + p.commit + " pipeline " + p.pipeline_name + " seed " +
-         std::to_string(p.seed) + "\n";
+  return "# granpipe " + p.version + " commit " + p.commit + " pipeline " + p.pipeline_name +
+         " seed " + std::to_string(p.seed) + "\n";
 }
 
 std::string quoted(const std::string& s) {
@@ -120,8 +124,8 @@ std::string quoted(const std::string& s) {
 
 using TextFiles = std::vector<std::pair<fs::path, std::string>>;
 
-void collect_csvs(const fs::path& dir, const std::string& group, const Results& r, const Provenance& p,
-                  TextFiles& csvs) {
+void collect_csvs(const fs::path& dir, const std::string& group, const Results& r,
+                  const Provenance& p, TextFiles& csvs) {
   std::string base = group;
   for (char& c : base)
     if (c == '/') c = '.';
@@ -151,14 +155,16 @@ void collect_csvs(const fs::path& dir, const std::string& group, const Results& 
   for (const auto& [name, h] : r.histograms()) {
     std::string csv = csv_header(p) + "lo,hi,value,error\n";
     for (std::size_t b = 0; b < h.values.size(); ++b)
-      csv += csv_number(h.edges[b]) + "," + csv_number(h.edges[b + 1]) + "," + csv_number(h.values[b]) +
-             "," + csv_number(h.errors.empty() ? std::nan("") : h.errors[b]) + "\n";
+      csv += csv_number(h.edges[b]) + "," + csv_number(h.edges[b + 1]) + "," +
+             csv_number(h.values[b]) + "," +
+             csv_number(h.errors.empty() ? std::nan("") : h.errors[b]) + "\n";
     csvs.emplace_back(dir / (base + "." + name + ".csv"), csv);
   }
   for (const auto& [name, f] : r.fits()) {
     std::string csv = csv_header(p) + "# model: " + f.model + "\nparameter,value,error\n";
     for (std::size_t k = 0; k < f.names.size(); ++k)
-      csv += quoted(f.names[k]) + "," + csv_number(f.values[k]) + "," + csv_number(f.errors[k]) + "\n";
+      csv +=
+          quoted(f.names[k]) + "," + csv_number(f.values[k]) + "," + csv_number(f.errors[k]) + "\n";
     csvs.emplace_back(dir / (base + "." + name + ".csv"), csv);
   }
 }
@@ -181,7 +187,8 @@ void write_text(const fs::path& tmp, const fs::path& final_path, const std::stri
   out << text;
   out.close();
   if (!out) {
-    throw InputError(final_path.string() + ": expected a writable file, got a write error (is the disk full?)");
+    throw InputError(final_path.string() +
+                     ": expected a writable file, got a write error (is the disk full?)");
   }
 }
 

@@ -44,7 +44,8 @@ void ResultStream::Impl::create(const Provenance& provenance) {
     h5::write_text_attribute(g.id(), "doc", t.empty.doc);
     for (const std::string& c : t.empty.columns) {
       t.paths.push_back(path + "/" + c);
-      t.columns.push_back(h5::create_series(file.id(), t.paths.back(), H5T_IEEE_F64LE, {}, kChunkRows));
+      t.columns.push_back(
+          h5::create_series(file.id(), t.paths.back(), H5T_IEEE_F64LE, {}, kChunkRows));
     }
   }
   h5::check(H5Fstart_swmr_write(file.id()), "cannot start SWMR writing (is the disk full?)");
@@ -56,7 +57,8 @@ ResultStream::~ResultStream() = default;
 std::size_t ResultStream::declare(const std::string& group, const std::string& name,
                                   const Table& empty) {
   std::lock_guard lock(mutex_);
-  if (impl_->file.valid()) throw InternalError(name + ": streamed table declared after the run began");
+  if (impl_->file.valid())
+    throw InternalError(name + ": streamed table declared after the run began");
   impl_->tables.push_back({group, name, empty, {}, {}});
   return impl_->tables.size() - 1;
 }

@@ -4,13 +4,13 @@
 // layout of the final results.h5) and starts HDF5's SWMR mode, in which the file is
 // consistent on disk after every flush; append() adds one row and flushes. The file is
 // marked incomplete; a run that finishes writes results.h5 whole and removes it.
+#include <hdf5.h>
+
 #include <filesystem>
 #include <memory>
 #include <mutex>
 #include <string>
 #include <vector>
-
-#include <hdf5.h>
 
 #include "granpipe/result_store.hpp"
 #include "granpipe/results.hpp"

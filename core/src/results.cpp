@@ -7,7 +7,9 @@
 namespace granpipe {
 
 Table::Table(std::vector<std::string> cols, std::string doc_line)
-    : columns(std::move(cols)), units(columns.size()), data(columns.size()),
+    : columns(std::move(cols)),
+      units(columns.size()),
+      data(columns.size()),
       doc(std::move(doc_line)) {}
 
 void Table::add_row(const std::vector<double>& row) {
@@ -25,8 +27,8 @@ const std::vector<double>& Table::column(const std::string& name) const {
 }
 
 void Results::claim(const std::string& name) {
-  if (scalars_.count(name) || tables_.count(name) || histograms_.count(name) ||
-      fits_.count(name) || plots_.count(name)) {
+  if (scalars_.count(name) || tables_.count(name) || histograms_.count(name) || fits_.count(name) ||
+      plots_.count(name)) {
     throw InternalError("result '" + name + "' reported twice");
   }
 }
@@ -53,7 +55,8 @@ void Results::add_table(const std::string& name, Table table) {
 
 void Results::add_histogram(const std::string& name, Histogram h) {
   claim(name);
-  if (h.edges.size() != h.values.size() + 1 || (!h.errors.empty() && h.errors.size() != h.values.size())) {
+  if (h.edges.size() != h.values.size() + 1 ||
+      (!h.errors.empty() && h.errors.size() != h.values.size())) {
     throw InternalError("histogram '" + name + "' needs one more edge than bins");
   }
   histograms_[name] = std::move(h);

@@ -51,10 +51,14 @@ RunMarker parse(const std::string& text) {
 
 const char* to_string(RunStatus s) {
   switch (s) {
-    case RunStatus::Running: return "running";
-    case RunStatus::Complete: return "complete";
-    case RunStatus::Failed: return "failed";
-    case RunStatus::Interrupted: return "interrupted";
+    case RunStatus::Running:
+      return "running";
+    case RunStatus::Complete:
+      return "complete";
+    case RunStatus::Failed:
+      return "failed";
+    case RunStatus::Interrupted:
+      return "interrupted";
   }
   return "?";
 }
@@ -82,13 +86,17 @@ std::optional<RunMarker> read_run_marker(const fs::path& dir) {
   try {
     return parse(text.str());
   } catch (const std::exception&) {
-    throw InputError(file.string() + ": expected a granpipe run marker (JSON with run_id, pid, started, "
+    throw InputError(file.string() +
+                     ": expected a granpipe run marker (JSON with run_id, pid, started, "
                      "status), got something else; granpipe leaves this directory alone");
   }
 }
 
 std::string run_marker_text(const RunMarker& m) {
-  const json j{{"run_id", m.run_id}, {"pid", m.pid}, {"started", m.started}, {"status", to_string(m.status)}};
+  const json j{{"run_id", m.run_id},
+               {"pid", m.pid},
+               {"started", m.started},
+               {"status", to_string(m.status)}};
   std::string text = j.dump();
   if (text.size() < kRunMarkerSize - 1) text.resize(kRunMarkerSize - 1, ' ');
   return text + "\n";
@@ -100,7 +108,8 @@ void write_run_marker(const fs::path& dir, const RunMarker& marker) {
   const fs::path file = dir / kRunMarkerName;
   const std::string text = run_marker_text(marker);
   const int fd = open(file.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC, 0644);
-  bool ok = fd >= 0 && pwrite(fd, text.data(), text.size(), 0) == static_cast<ssize_t>(text.size()) &&
+  bool ok = fd >= 0 &&
+            pwrite(fd, text.data(), text.size(), 0) == static_cast<ssize_t>(text.size()) &&
             ftruncate(fd, static_cast<off_t>(text.size())) == 0;
   const int err = errno;
   if (fd >= 0) ok = close(fd) == 0 && ok;

@@ -37,8 +37,8 @@ PairTable::PairTable(std::vector<std::string> species, std::vector<Params> pairs
 const Params& PairTable::at(std::size_t i, std::size_t j) const {
   if (i > j) std::swap(i, j);
   if (j >= species_.size()) {
-    throw InternalError("pair (" + std::to_string(i) + ", " + std::to_string(j) + ") of a table of " +
-                        std::to_string(species_.size()) + " species");
+    throw InternalError("pair (" + std::to_string(i) + ", " + std::to_string(j) +
+                        ") of a table of " + std::to_string(species_.size()) + " species");
   }
   return pairs_[triangle_index(i, j, species_.size())];
 }

@@ -21,9 +21,15 @@ class StrictReader {
     using E = json::parse_event_t;
     switch (event) {
       case E::object_start:
-      case E::array_start: open(event == E::array_start); break;
-      case E::key: read_key(parsed.get<std::string>()); break;
-      case E::value: element_done(); break;
+      case E::array_start:
+        open(event == E::array_start);
+        break;
+      case E::key:
+        read_key(parsed.get<std::string>());
+        break;
+      case E::value:
+        element_done();
+        break;
       case E::object_end:
       case E::array_end:
         levels_.pop_back();
@@ -38,19 +44,22 @@ class StrictReader {
     const std::string what = e.what();
     const auto open = what.find('\''), close = what.rfind('\'');
     const std::string token = open < close ? what.substr(open + 1, close - open - 1) : "?";
-    return InputError(where(element_path()) + ": expected a number of magnitude below 1.8e308, got " + token);
+    return InputError(where(element_path()) +
+                      ": expected a number of magnitude below 1.8e308, got " + token);
   }
 
  private:
   struct Level {
     bool is_array = false;
     std::string path;
-    std::size_t index = 0;  // of the element being read, in an array
-    std::string key;        // of the element being read, in an object
+    std::size_t index = 0;                 // of the element being read, in an array
+    std::string key;                       // of the element being read, in an object
     std::unordered_set<std::string> keys;  // read so far, in an object
   };
 
-  std::string where(const std::string& path) const { return path.empty() ? origin_ : origin_ + ": " + path; }
+  std::string where(const std::string& path) const {
+    return path.empty() ? origin_ : origin_ + ": " + path;
+  }
 
   // The path of the element being read now.
   std::string element_path() const {
@@ -63,8 +72,8 @@ class StrictReader {
   void open(bool is_array) {
     const std::string path = element_path();
     if (outer_depth_ + levels_.size() >= kMaxJsonDepth) {
-      throw InputError(where(path) + ": expected JSON nested at most " + std::to_string(kMaxJsonDepth) +
-                       " levels deep, got deeper");
+      throw InputError(where(path) + ": expected JSON nested at most " +
+                       std::to_string(kMaxJsonDepth) + " levels deep, got deeper");
     }
     levels_.push_back({is_array, path, 0, {}, {}});
   }
@@ -74,8 +83,8 @@ class StrictReader {
     Level& top = levels_.back();
     top.key = key;
     if (!top.keys.insert(key).second) {
-      throw InputError(where(element_path()) + ": expected each key once in an object, got \"" + key +
-                       "\" again");
+      throw InputError(where(element_path()) + ": expected each key once in an object, got \"" +
+                       key + "\" again");
     }
   }
 
@@ -130,10 +139,12 @@ std::size_t first_invalid_utf8(const std::string& text) {
       continue;
     }
     const Utf8Lead lead = utf8_lead(c);
-    if (lead.continuation == 0 || i + static_cast<std::size_t>(lead.continuation) >= text.size()) return i;
+    if (lead.continuation == 0 || i + static_cast<std::size_t>(lead.continuation) >= text.size())
+      return i;
     for (int k = 1; k <= lead.continuation; ++k) {
       const auto b = static_cast<unsigned char>(text[i + static_cast<std::size_t>(k)]);
-      const unsigned char min = k == 1 ? lead.first_min : 0x80, max = k == 1 ? lead.first_max : 0xbf;
+      const unsigned char min = k == 1 ? lead.first_min : 0x80,
+                          max = k == 1 ? lead.first_max : 0xbf;
       if (b < min || b > max) return i;
     }
     i += static_cast<std::size_t>(lead.continuation) + 1;
@@ -141,7 +152,8 @@ std::size_t first_invalid_utf8(const std::string& text) {
   return std::string::npos;
 }
 
-json parse_strict_json(const std::string& text, const std::string& origin, std::size_t outer_depth) {
+json parse_strict_json(const std::string& text, const std::string& origin,
+                       std::size_t outer_depth) {
   try {
     return parse_or_throw(text, origin, outer_depth);
   } catch (const json::parse_error& e) {

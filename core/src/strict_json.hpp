@@ -23,7 +23,8 @@ nlohmann::json parse_strict_json(const std::string& text, const std::string& ori
 std::size_t first_invalid_utf8(const std::string& text);
 
 // Like parse_strict_json, but text that is not JSON at all gives nothing.
-std::optional<nlohmann::json> parse_strict_json_if_json(const std::string& text, const std::string& origin,
+std::optional<nlohmann::json> parse_strict_json_if_json(const std::string& text,
+                                                        const std::string& origin,
                                                         std::size_t outer_depth = 0);
 
 }  // namespace granpipe

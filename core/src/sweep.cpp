@@ -21,8 +21,10 @@ std::string read_mode(const json& sweep, const JsonLocation& at) {
 }
 
 // The lists of values, each checked, with their paths.
-std::vector<const json*> read_lists(const json& sweep, const JsonLocation& pat, std::vector<std::string>& paths) {
-  if (!sweep.contains("parameters") || !sweep["parameters"].is_object() || sweep["parameters"].empty()) {
+std::vector<const json*> read_lists(const json& sweep, const JsonLocation& pat,
+                                    std::vector<std::string>& paths) {
+  if (!sweep.contains("parameters") || !sweep["parameters"].is_object() ||
+      sweep["parameters"].empty()) {
     throw InputError(pat.str() + ": expected an object of \"path\": [values...], got " +
                      (sweep.contains("parameters") ? json_brief(sweep["parameters"]) : "nothing"));
   }
@@ -33,8 +35,10 @@ std::vector<const json*> read_lists(const json& sweep, const JsonLocation& pat, 
       throw InputError(at + ": expected a non-empty list of values, got " + json_brief(values));
     }
     if (!is_plugin_param_path(path)) {
-      throw InputError(at + ": expected a plugin parameter path like source.params.name or "
-                            "analyzers[0].params.name, got " + json_brief(path));
+      throw InputError(at +
+                       ": expected a plugin parameter path like source.params.name or "
+                       "analyzers[0].params.name, got " +
+                       json_brief(path));
     }
     paths.push_back(path);
     lists.push_back(&values);
@@ -53,12 +57,13 @@ void check_point_count(const std::vector<const json*>& lists, bool zip, const Js
   if (points <= static_cast<double>(kMaxSweepPoints)) return;
   char count[32];
   std::snprintf(count, sizeof count, "%g", points);
-  throw InputError(pat.str() + ": expected at most " + std::to_string(kMaxSweepPoints) + " sweep points, got " +
-                   count + (zip ? " (zip of " : " (grid of ") + sizes + " values)");
+  throw InputError(pat.str() + ": expected at most " + std::to_string(kMaxSweepPoints) +
+                   " sweep points, got " + count + (zip ? " (zip of " : " (grid of ") + sizes +
+                   " values)");
 }
 
-std::vector<json> zip_points(const std::vector<const json*>& lists, const std::vector<std::string>& paths,
-                             const JsonLocation& pat) {
+std::vector<json> zip_points(const std::vector<const json*>& lists,
+                             const std::vector<std::string>& paths, const JsonLocation& pat) {
   for (std::size_t k = 1; k < lists.size(); ++k) {
     if (lists[k]->size() != lists[0]->size()) {
       throw InputError(pat.str() + "[" + json_brief(paths[k]) + "]: expected " +
@@ -77,8 +82,8 @@ std::vector<json> zip_points(const std::vector<const json*>& lists, const std::v
   return points;
 }
 
-std::vector<json> grid_points(const std::vector<const json*>& lists, const std::vector<std::string>& paths,
-                              const JsonLocation& pat) {
+std::vector<json> grid_points(const std::vector<const json*>& lists,
+                              const std::vector<std::string>& paths, const JsonLocation& pat) {
   check_point_count(lists, false, pat);
   std::vector<json> points{json::object()};
   for (std::size_t k = 0; k < lists.size(); ++k) {
@@ -98,7 +103,8 @@ std::vector<json> grid_points(const std::vector<const json*>& lists, const std::
 
 }  // namespace
 
-std::vector<json> expand_sweep(const json& sweep, const JsonLocation& at, std::vector<std::string>& paths) {
+std::vector<json> expand_sweep(const json& sweep, const JsonLocation& at,
+                               std::vector<std::string>& paths) {
   check_keys(sweep, {"mode", "parameters"}, at);
   const std::string mode = read_mode(sweep, at);
   const JsonLocation pat = at.child("parameters");

@@ -15,10 +15,17 @@ namespace granpipe::arches {
 
 namespace {
 
-const std::vector<std::string> kPerFrameColumns = {
-    "frame", "tap", "cycle", "arches_per_particle", "p1_over_N", "p2_over_N",
-    "z_support_eq4", "z_support_direct", "base_fraction", "missing_supports_per_particle",
-    "non_supporting_contact_fraction"};
+const std::vector<std::string> kPerFrameColumns = {"frame",
+                                                   "tap",
+                                                   "cycle",
+                                                   "arches_per_particle",
+                                                   "p1_over_N",
+                                                   "p2_over_N",
+                                                   "z_support_eq4",
+                                                   "z_support_direct",
+                                                   "base_fraction",
+                                                   "missing_supports_per_particle",
+                                                   "non_supporting_contact_fraction"};
 
 std::string frame_name(long index, const Frame& frame) {
   std::string name = "arches: frame " + std::to_string(index);
@@ -27,7 +34,6 @@ std::string frame_name(long index, const Frame& frame) {
   }
   return name;
 }
-
 
 }  // namespace
 
@@ -55,8 +61,8 @@ ArchesAnalyzer::ArchesAnalyzer(const PluginContext& ctx)
       span_bin_(ctx.params.real("span_bin")),
       svg_frames_(static_cast<long>(ctx.params.integer("svg_frames"))),
       span_all_(span_bin_),
-      per_frame_(ctx.stream_table("per_frame",
-                                  Table(kPerFrameColumns, "per-frame values of the arch analysis"))) {
+      per_frame_(ctx.stream_table(
+          "per_frame", Table(kPerFrameColumns, "per-frame values of the arch analysis"))) {
   std::set<std::int64_t> seen;
   for (std::int64_t s : ctx.params.integers("span_sizes")) {
     if (!seen.insert(s).second) {
@@ -113,9 +119,9 @@ void ArchesAnalyzer::consume(const Frame& frame, FrameCache& cache) {
   const double missing = static_cast<double>(sc.missing_supports()) / disks;
   base_fraction_.add(base_fraction);
   missing_supports_.add(missing);
-  const double non_supporting = cc.contacts > 0 ? static_cast<double>(cc.non_supporting()) /
-                                                      static_cast<double>(cc.contacts)
-                                                : std::nan("");
+  const double non_supporting =
+      cc.contacts > 0 ? static_cast<double>(cc.non_supporting()) / static_cast<double>(cc.contacts)
+                      : std::nan("");
   if (cc.contacts > 0) non_supporting_.add(non_supporting);
   if (sc.contacts() > 0) {
     detached_.add(static_cast<double>(sc.contacts() - cc.supporting) /
@@ -136,15 +142,14 @@ void ArchesAnalyzer::consume(const Frame& frame, FrameCache& cache) {
   const std::int64_t tap = frame.integer_observable("tap").value_or(-1);
   per_frame_.add_row({static_cast<double>(frames_ - 1), static_cast<double>(tap),
                       static_cast<double>(frame.integer_observable("cycle").value_or(-1)),
-                      arches_per_particle, p1, p2, z_eq4,
-                      z_direct, base_fraction, missing, non_supporting});
+                      arches_per_particle, p1, p2, z_eq4, z_direct, base_fraction, missing,
+                      non_supporting});
 
   if (drawn_ < svg_frames_ && !output_dir_.empty()) {
-    const std::string stem =
-        tap >= 0 ? std::to_string(tap) : "frame" + std::to_string(frames_ - 1);
-    write_arches_svg(output_dir_ / (file_stem_ + "_" + stem + ".svg"), frame, arches,
-                     where + ": " + std::to_string(n) + " disks, " +
-                         std::to_string(st.arches()) + " arches");
+    const std::string stem = tap >= 0 ? std::to_string(tap) : "frame" + std::to_string(frames_ - 1);
+    write_arches_svg(
+        output_dir_ / (file_stem_ + "_" + stem + ".svg"), frame, arches,
+        where + ": " + std::to_string(n) + " disks, " + std::to_string(st.arches()) + " arches");
     ++drawn_;
   }
 }
@@ -153,51 +158,53 @@ void ArchesAnalyzer::finish(Results& results) {
   results.add_scalar("frames", static_cast<double>(measured_frames_), std::nan(""), "",
                      "frames analysed (frames without disks are skipped)");
   results.add_mean("arches_per_particle", arches_per_particle_, "",
-           "arches of two or more disks per disk");
+                   "arches of two or more disks per disk");
   results.add_mean("p1_over_N", p1_, "", "end particles of arches per disk, Eq. (1)");
   results.add_mean("p2_over_N", p2_, "", "centre particles of arches per disk, Eq. (2)");
-  results.add_mean("z_support_eq4", z_eq4_, "",
-           "<z>_support = 2 [1 + sum_s n(s) / N], Eq. (4): counts base disks as two-supported");
+  results.add_mean(
+      "z_support_eq4", z_eq4_, "",
+      "<z>_support = 2 [1 + sum_s n(s) / N], Eq. (4): counts base disks as two-supported");
   results.add_mean("z_support_direct", z_direct_, "",
-           "<z>_support = 2 (distinct supporting contacts) / N, the base counted once");
+                   "<z>_support = 2 (distinct supporting contacts) / N, the base counted once");
   results.add_mean("z_support_eq4_minus_direct", z_difference_, "",
-           "Eq. (4) minus the direct count: 2 sum_i (2 - k_i) / N, = 2 base_fraction when "
-           "every disk off the base has two supports");
+                   "Eq. (4) minus the direct count: 2 sum_i (2 - k_i) / N, = 2 base_fraction when "
+                   "every disk off the base has two supports");
   results.add_mean("base_fraction", base_fraction_, "", "disks resting on the base per disk");
   results.add_mean("missing_supports_per_particle", missing_supports_, "",
-           "sum_i (2 - k_i) / N, k_i the distinct supporting partners of disk i");
+                   "sum_i (2 - k_i) / N, k_i the distinct supporting partners of disk i");
   results.add_mean("non_supporting_contact_fraction", non_supporting_, "",
-           "geometric contacts (disk-disk and disk-wall) that support neither disk");
+                   "geometric contacts (disk-disk and disk-wall) that support neither disk");
   results.add_mean("detached_support_fraction", detached_, "",
-           "supporting contacts named by the labels whose partners do not touch (0 for a "
-           "consistent source)");
+                   "supporting contacts named by the labels whose partners do not touch (0 for a "
+                   "consistent source)");
 
   Table sizes({"s", "n_s_per_N", "err"},
               "arch size distribution n(s)/N per frame, averaged over frames; s = 1 counts "
               "disks in no arch");
   sizes.units.assign(3, "");
   for (std::size_t s = 1; s < n_per_particle_.size(); ++s) {
-    sizes.add_row({static_cast<double>(s), n_per_particle_[s].mean(),
-                   n_per_particle_[s].standard_error()});
+    sizes.add_row(
+        {static_cast<double>(s), n_per_particle_[s].mean(), n_per_particle_[s].standard_error()});
   }
   results.add_table("arch_size_distribution", std::move(sizes));
-  results.add_plot("arch_size_distribution_plot",
-                   {.table = "arch_size_distribution", .x = "s", .y = {"n_s_per_N"},
-                    .xlabel = "arch size s", .ylabel = "n(s) / N",
-                    .title = "arch size distribution", .logy = true});
+  results.add_plot("arch_size_distribution_plot", {.table = "arch_size_distribution",
+                                                   .x = "s",
+                                                   .y = {"n_s_per_N"},
+                                                   .xlabel = "arch size s",
+                                                   .ylabel = "n(s) / N",
+                                                   .title = "arch size distribution",
+                                                   .logy = true});
 
   const std::string xlabel = "horizontal span x (mean disk diameters)";
   for (const auto& [size, histogram] : span_by_size_) {
     results.add_histogram(
         "span_s" + std::to_string(size),
-        histogram.density(xlabel, "span distribution n_s(x) of arches of " +
-                                      std::to_string(size) + " disks (" +
-                                      std::to_string(histogram.total()) + " arches)"));
+        histogram.density(xlabel, "span distribution n_s(x) of arches of " + std::to_string(size) +
+                                      " disks (" + std::to_string(histogram.total()) + " arches)"));
   }
-  results.add_histogram("span_all",
-                        span_all_.density(xlabel, "span distribution n(x) over all arches (" +
-                                                       std::to_string(span_all_.total()) +
-                                                       " arches)"));
+  results.add_histogram(
+      "span_all", span_all_.density(xlabel, "span distribution n(x) over all arches (" +
+                                                std::to_string(span_all_.total()) + " arches)"));
   results.add_table("per_frame", per_frame_.table());
   if (!by_ramp_.empty()) {
     results.add_table("by_ramp", by_ramp_.table("per ramp branch (0 first increase, 1 decreasing, "

@@ -7,8 +7,8 @@
 #include <utility>
 #include <vector>
 
-#include "granpipe/ramp_means.hpp"
 #include "granpipe/plugin.hpp"
+#include "granpipe/ramp_means.hpp"
 #include "mutual_stability.hpp"
 #include "span_histogram.hpp"
 
@@ -19,9 +19,7 @@ Schema schema();
 class ArchesAnalyzer : public Analyzer {
  public:
   explicit ArchesAnalyzer(const PluginContext& ctx);
-  FrameContent needs() const override {
-    return {.dim = 2, .columns = {supports_property()}};
-  }
+  FrameContent needs() const override { return {.dim = 2, .columns = {supports_property()}}; }
   void consume(const Frame& frame, FrameCache& cache) override;
   void finish(Results& results) override;
   std::vector<Property> publishes() const override { return {arch_property()}; }

@@ -16,7 +16,8 @@ ContactCensus census_contacts(const Supports& supports, const DistanceContacts& 
   for (Eigen::Index k = 0; k < contacts.size(); ++k) {
     const std::int64_t i = contacts.i(k), j = contacts.j(k);
     // A wall partner can only be named by disk i; a disk pair by either disk.
-    census.supporting += names(supports, i, j) || (partner::is_particle(j) && names(supports, j, i));
+    census.supporting +=
+        names(supports, i, j) || (partner::is_particle(j) && names(supports, j, i));
   }
   return census;
 }

@@ -10,8 +10,8 @@ namespace {
 
 bool is_valid_partner(std::int64_t p, Eigen::Index self, Eigen::Index n) {
   if (partner::is_particle(p)) return p < n && p != self;
-  return p == partner::none || p == partner::wall(Wall::XLow) ||
-         p == partner::wall(Wall::XHigh) || p == partner::wall(Wall::YLow);
+  return p == partner::none || p == partner::wall(Wall::XLow) || p == partner::wall(Wall::XHigh) ||
+         p == partner::wall(Wall::YLow);
 }
 
 void check_side(const IndexArray& side, const char* name, const std::string& where) {
@@ -63,7 +63,11 @@ void check_supports(const Frame& frame, const std::string& where) {
 }
 
 Property supports_property() {
-  return {"supports", Scope::Particle, ValueType::Integer, 2, "",
+  return {"supports",
+          Scope::Particle,
+          ValueType::Integer,
+          2,
+          "",
           "left and right support of each disk (particle index, -1 none, -2 - wall)"};
 }
 
@@ -73,7 +77,11 @@ Supports Supports::of(const Frame& frame) {
 }
 
 Property arch_property() {
-  return {"arch", Scope::Particle, ValueType::Integer, 1, "",
+  return {"arch",
+          Scope::Particle,
+          ValueType::Integer,
+          1,
+          "",
           "index of the arch holding the disk in this frame, -1 for none"};
 }
 
@@ -116,8 +124,10 @@ std::vector<Arch> find_arches(const Frame& frame, const std::string& where) {
   }
   for (Eigen::Index i = 0; i < n; ++i) {
     if (!in_arch[static_cast<std::size_t>(i)] && has_left_partner(s, i)) {
-      throw InputError(where + ": supports: expected chains of mutually stable disks, got a ring "
-                       "of mutual supports through disk " + std::to_string(i));
+      throw InputError(where +
+                       ": supports: expected chains of mutually stable disks, got a ring "
+                       "of mutual supports through disk " +
+                       std::to_string(i));
     }
   }
   return arches;

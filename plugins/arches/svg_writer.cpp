@@ -40,10 +40,14 @@ std::string wall_path(const Frame& frame, double top) {
   const Eigen::Vector3d lo = box.lo + box.wall_offset, hi = box.hi + box.wall_offset;
   std::ostringstream d;
   d.imbue(std::locale::classic());
-  if (box.boundary[0][0] == Boundary::Wall) d << "M " << lo[0] << ' ' << top << " L " << lo[0] << ' ' << lo[1] << ' ';
-  if (box.boundary[1][0] == Boundary::Wall) d << "M " << lo[0] << ' ' << lo[1] << " L " << hi[0] << ' ' << lo[1] << ' ';
-  if (box.boundary[0][1] == Boundary::Wall) d << "M " << hi[0] << ' ' << lo[1] << " L " << hi[0] << ' ' << top << ' ';
-  if (box.boundary[1][1] == Boundary::Wall) d << "M " << lo[0] << ' ' << hi[1] << " L " << hi[0] << ' ' << hi[1] << ' ';
+  if (box.boundary[0][0] == Boundary::Wall)
+    d << "M " << lo[0] << ' ' << top << " L " << lo[0] << ' ' << lo[1] << ' ';
+  if (box.boundary[1][0] == Boundary::Wall)
+    d << "M " << lo[0] << ' ' << lo[1] << " L " << hi[0] << ' ' << lo[1] << ' ';
+  if (box.boundary[0][1] == Boundary::Wall)
+    d << "M " << hi[0] << ' ' << lo[1] << " L " << hi[0] << ' ' << top << ' ';
+  if (box.boundary[1][1] == Boundary::Wall)
+    d << "M " << lo[0] << ' ' << hi[1] << " L " << hi[0] << ' ' << hi[1] << ' ';
   return d.str();
 }
 
@@ -51,10 +55,17 @@ std::string escape(const std::string& text) {
   std::string out;
   for (char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -85,13 +96,14 @@ void write_arches_svg(const std::filesystem::path& path, const Frame& frame,
   out.precision(8);
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n"
       << "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" << kPixelWidth
-      << "\" height=\"" << kPixelWidth * height / width << "\" viewBox=\"" << b.x0 << ' '
-      << -b.y1 << ' ' << width << ' ' << height << "\">\n"
-      << "<title>" << escape(title) << "</title>\n"
+      << "\" height=\"" << kPixelWidth * height / width << "\" viewBox=\"" << b.x0 << ' ' << -b.y1
+      << ' ' << width << ' ' << height << "\">\n"
+      << "<title>" << escape(title)
+      << "</title>\n"
       // y points up in the packing and down in SVG.
       << "<g transform=\"scale(1,-1)\">\n"
-      << "<path d=\"" << wall_path(frame, b.y1) << "\" fill=\"none\" stroke=\"black\" stroke-width=\""
-      << 0.2 * rmean << "\"/>\n"
+      << "<path d=\"" << wall_path(frame, b.y1)
+      << "\" fill=\"none\" stroke=\"black\" stroke-width=\"" << 0.2 * rmean << "\"/>\n"
       << "<g fill=\"#e0e0e0\" stroke=\"#606060\" stroke-width=\"" << 0.04 * rmean << "\">\n";
   write_circles(out, frame, in_arch, 0);
   out << "</g>\n<g fill=\"#f5c28a\" stroke=\"#606060\" stroke-width=\"" << 0.04 * rmean << "\">\n";
@@ -102,8 +114,7 @@ void write_arches_svg(const std::filesystem::path& path, const Frame& frame,
     for (std::size_t k = 0; k + 1 < a.disks.size(); ++k) {
       const Eigen::Index i = a.disks[k], j = a.disks[k + 1];
       const double x1 = frame.position()(i, 0), y1 = frame.position()(i, 1);
-      const double x2 =
-          x1 + frame.container.minimum_image(0, frame.position()(j, 0) - x1);
+      const double x2 = x1 + frame.container.minimum_image(0, frame.position()(j, 0) - x1);
       out << "<line x1=\"" << x1 << "\" y1=\"" << y1 << "\" x2=\"" << x2 << "\" y2=\""
           << frame.position()(j, 1) << "\"/>\n";
     }

@@ -31,8 +31,11 @@ Schema schema() {
   Schema s;
   // Defaults: the `dem` source's (Table I's restitution 0.9 between small spheres).
   s.real("k_n", 2e5, "normal stiffness the source used").min(0.0, true).unit("force/length");
-  s.real("gamma_n", 42.398, "normal damping rate (times m_eff) the source used").min(0.0).unit("1/time");
-  s.reals("density", std::vector<double>{1.91}, "density of each species, by index, as the source's species")
+  s.real("gamma_n", 42.398, "normal damping rate (times m_eff) the source used")
+      .min(0.0)
+      .unit("1/time");
+  s.reals("density", std::vector<double>{1.91},
+          "density of each species, by index, as the source's species")
       .min(0.0, true)
       .unit("mass/length^3");
   return s;
@@ -40,8 +43,8 @@ Schema schema() {
 
 PairState pair_state(const Frame& f, const std::string& where) {
   if (f.size() != 2) {
-    throw InputError(where + ": expected the two spheres of a collision, got " + std::to_string(f.size()) +
-                     " particles");
+    throw InputError(where + ": expected the two spheres of a collision, got " +
+                     std::to_string(f.size()) + " particles");
   }
   PairState s;
   s.time = f.time;
@@ -50,8 +53,8 @@ PairState pair_state(const Frame& f, const std::string& where) {
       const std::int64_t j = f.contact_j()[k];
       if (partner::is_wall(j)) {
         throw InputError(where + ": expected the spheres in free flight, got sphere " +
-                         std::to_string(f.contact_i()[k]) + " touching wall " + to_string(partner::wall_of(j)) +
-                         " (a larger container?)");
+                         std::to_string(f.contact_i()[k]) + " touching wall " +
+                         to_string(partner::wall_of(j)) + " (a larger container?)");
       }
       s.touching = s.touching || partner::is_particle(j);
     }
@@ -80,16 +83,17 @@ void CollisionAnalyzer::consume(const Frame& frame, FrameCache&) {
   check_step(frame, where);
   const PairState s = pair_state(frame, where);
   if (s.touching && s.overlap > 0.0) {
-    if (const auto force = pair_normal_force(frame)) stiffness_.add(s.overlap, s.normal_velocity, *force);
+    if (const auto force = pair_normal_force(frame))
+      stiffness_.add(s.overlap, s.normal_velocity, *force);
   }
   if (frames_ == 0) {
     double mass[2];
     for (int i = 0; i < 2; ++i) {
       const int species = frame.species()[i];
       if (species < 0 || species >= static_cast<int>(density_.size())) {
-        throw InputError(density_param_ + ": expected a density for species " + std::to_string(species) +
-                         " of sphere " + std::to_string(i) + ", got " + std::to_string(density_.size()) +
-                         " densities");
+        throw InputError(density_param_ + ": expected a density for species " +
+                         std::to_string(species) + " of sphere " + std::to_string(i) + ", got " +
+                         std::to_string(density_.size()) + " densities");
       }
       const double r = frame.radius()[i];
       mass[i] = density_[species] * 4.0 / 3.0 * std::numbers::pi * r * r * r;
@@ -104,7 +108,8 @@ void CollisionAnalyzer::consume(const Frame& frame, FrameCache&) {
 // would widen the contact's ends by its gap without a word.
 void CollisionAnalyzer::check_step(const Frame& frame, const std::string& where) {
   if (frames_ > 0 && frame.step != last_step_ + 1) {
-    throw InputError(where + ": expected a frame every time step (the source's save_every 1), got step " +
+    throw InputError(where +
+                     ": expected a frame every time step (the source's save_every 1), got step " +
                      std::to_string(frame.step) + " after step " + std::to_string(last_step_) +
                      " (a gap of " + std::to_string(frame.step - last_step_) + " steps)");
   }
@@ -114,7 +119,8 @@ void CollisionAnalyzer::check_step(const Frame& frame, const std::string& where)
 void CollisionAnalyzer::check_stiffness() const {
   const std::optional<double> measured = stiffness_.stiffness();
   if (!measured || std::abs(*measured / kn_ - 1.0) <= kStiffnessTolerance) return;
-  throw InputError(kn_param_ + ": expected the source's normal stiffness, got " + format_number(kn_) +
+  throw InputError(kn_param_ + ": expected the source's normal stiffness, got " +
+                   format_number(kn_) +
                    ", while the frames' normal forces show k_n = " + format_number(*measured, 4) +
                    " (fitted over " + std::to_string(stiffness_.samples()) + " frames in contact)");
 }
@@ -124,15 +130,18 @@ void CollisionAnalyzer::finish(Results& results) {
   const CollisionMeasure m = tracker_.result("collision: " + std::to_string(frames_) + " frames");
   const LinearPrediction p = predict_linear(kn_, gamma_n_, m_eff_, "collision");
   const double nan = std::nan("");
-  results.add_scalar("contact_time", m.contact_time, nan, "time", "measured: overlap's zero crossings");
+  results.add_scalar("contact_time", m.contact_time, nan, "time",
+                     "measured: overlap's zero crossings");
   results.add_scalar("contact_time_analytic", p.contact_time, nan, "time", "linear law, Eq. (10)");
   results.add_scalar("contact_time_rel_error", m.contact_time / p.contact_time - 1.0, nan, "",
                      "measured / analytic - 1");
-  results.add_scalar("restitution", m.restitution, nan, "", "measured: normal speed after / before");
+  results.add_scalar("restitution", m.restitution, nan, "",
+                     "measured: normal speed after / before");
   results.add_scalar("restitution_analytic", p.restitution, nan, "", "exp(-gamma_n t_c / 2)");
   results.add_scalar("restitution_rel_error", m.restitution / p.restitution - 1.0, nan, "",
                      "measured / analytic - 1");
-  results.add_scalar("approach_speed", m.approach_speed, nan, "length/time", "relative normal speed before");
+  results.add_scalar("approach_speed", m.approach_speed, nan, "length/time",
+                     "relative normal speed before");
   results.add_scalar("frames_in_contact", static_cast<double>(m.frames_in_contact), nan, "",
                      "frames with the pair in the contact table");
 }

@@ -18,7 +18,8 @@ void CollisionTracker::add(const PairState& s, const std::string& where) {
     case Stage::Approach:
       if (s.touching) {
         if (!previous_) {
-          throw InputError(where + ": expected the spheres apart in the first frame (the approach "
+          throw InputError(where +
+                           ": expected the spheres apart in the first frame (the approach "
                            "before the collision), got them touching");
         }
         start_ = zero_crossing(*previous_, s);
@@ -44,9 +45,11 @@ void CollisionTracker::add(const PairState& s, const std::string& where) {
 }
 
 CollisionMeasure CollisionTracker::result(const std::string& where) const {
-  if (stage_ == Stage::Approach) throw InputError(where + ": expected the two spheres to collide, got no contact");
+  if (stage_ == Stage::Approach)
+    throw InputError(where + ": expected the two spheres to collide, got no contact");
   if (stage_ == Stage::Contact) {
-    throw InputError(where + ": expected the contact to end by the last frame, got the spheres still "
+    throw InputError(where +
+                     ": expected the contact to end by the last frame, got the spheres still "
                      "touching (a longer duration?)");
   }
   return {end_ - start_, speed_after_ / speed_before_, speed_before_, frames_in_contact_};

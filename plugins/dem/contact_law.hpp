@@ -100,9 +100,10 @@ struct ContactForce {
 // (3 doubles, updated in place; unused without friction); dt_history: the time step, or 0
 // for a force evaluation that must not advance the history (the initial one).
 template <class Law, bool kFriction, bool kRotation>
-[[gnu::always_inline]] inline ContactForce resolve_contact(const Vec4& n, double delta, double d, const Vec4& v_rel,
-                                    const Vec4& spin, double m_eff, const LoopMaterial& m,
-                                    double* u, double dt_history) {
+[[gnu::always_inline]] inline ContactForce resolve_contact(const Vec4& n, double delta, double d,
+                                                           const Vec4& v_rel, const Vec4& spin,
+                                                           double m_eff, const LoopMaterial& m,
+                                                           double* u, double dt_history) {
   static_assert(kFriction || !kRotation, "rotation without friction has no torque to apply");
   const double f = Law::scale(delta, d);
   const double vn = v_rel.dot(n);
@@ -147,9 +148,9 @@ struct MaterialLanes {
 
 template <class Law, bool kFriction, bool kRotation>
 [[gnu::always_inline]] inline ContactLanes resolve_contacts(
-    const lanes::Vec& n, const lanes::Reals& delta, const lanes::Reals& d,
-    const lanes::Vec& v_rel, const lanes::Vec& spin, const lanes::Reals& m_eff,
-    const MaterialLanes& m, lanes::Vec& u, double dt_history) {
+    const lanes::Vec& n, const lanes::Reals& delta, const lanes::Reals& d, const lanes::Vec& v_rel,
+    const lanes::Vec& spin, const lanes::Reals& m_eff, const MaterialLanes& m, lanes::Vec& u,
+    double dt_history) {
   using lanes::Reals;
   using lanes::Vec;
   constexpr bool kHertz = Law::kind == ContactLaw::Hertz;

@@ -111,13 +111,15 @@ double impact_speed(const Start& start, const Drive& drive, const Settings& s) {
     const auto x = start.state.position.row(a);
     if (x.size() == 0) continue;
     const auto& side = start.container.boundary[static_cast<std::size_t>(a)];
-    const double lo = side[0] == Boundary::Wall ? std::min(x.minCoeff(), start.container.lo[a]) : x.minCoeff();
-    const double hi = side[1] == Boundary::Wall ? std::max(x.maxCoeff(), start.container.hi[a]) : x.maxCoeff();
+    const double lo =
+        side[0] == Boundary::Wall ? std::min(x.minCoeff(), start.container.lo[a]) : x.minCoeff();
+    const double hi =
+        side[1] == Boundary::Wall ? std::max(x.maxCoeff(), start.container.hi[a]) : x.maxCoeff();
     drop = std::max(drop, hi - lo);
   }
   return std::max(kSlowest, fastest_start_approach(start.state) +
-                               std::abs(drive.amplitude * drive.angular_frequency) +
-                               std::sqrt(2.0 * s.gravity.stableNorm() * drop));
+                                std::abs(drive.amplitude * drive.angular_frequency) +
+                                std::sqrt(2.0 * s.gravity.stableNorm() * drop));
 }
 
 // The kinetic energy no sound run reaches: every particle ten times faster than the fastest
@@ -151,13 +153,19 @@ Schema schema() {
               "spheres of species 0 on a loose lattice in a cylinder standing on z = 0 (stacked "
               "square layers, alternate layers shifted, nudged sideways at random); 0: start "
               "from initial_file; at most 5e6, about 10 GB (each sphere needs about 2 kB, "
-              "and a bed this machine cannot hold is refused)").range(0, 5e6);
+              "and a bed this machine cannot hold is refused)")
+      .range(0, 5e6);
   bed.real("diameter", 1.0, "the small spheres' diameter").min(0.0, true).unit("length");
   bed.real("intruder_diameter", 0.0,
            "diameter of an intruder (species 1) on the axis just above the base, the lattice "
-           "built around it; 0: none").min(0.0).unit("length");
-  bed.real("cylinder_diameter", 12.25, "inner diameter of the cylinder").min(0.0, true).unit("length");
-  bed.real("spacing", 1.03, "distance between lattice neighbours, in small diameters").min(1.0, true);
+           "built around it; 0: none")
+      .min(0.0)
+      .unit("length");
+  bed.real("cylinder_diameter", 12.25, "inner diameter of the cylinder")
+      .min(0.0, true)
+      .unit("length");
+  bed.real("spacing", 1.03, "distance between lattice neighbours, in small diameters")
+      .min(1.0, true);
   bed.real("jitter", 0.01, "largest sideways nudge, in small diameters").min(0.0);
   s.object("bed", bed, "a generated start (instead of initial_file); the seed is the pipeline's");
   Schema species;
@@ -178,29 +186,38 @@ Schema schema() {
   drive.real("amplitude", 0.0, "A").unit("length");
   drive.real("frequency", 0.0, "f = w / 2 pi").min(0.0).unit("1/time");
   drive.real("start", 0.0, "time the motion starts").min(0.0).unit("time");
-  drive.integer("periods", 0,
-                "the motion stops after this many periods, the container then at rest (where "
-                "it started, for one_minus_cos); 0: never").min(0);
+  drive
+      .integer("periods", 0,
+               "the motion stops after this many periods, the container then at rest (where "
+               "it started, for one_minus_cos); 0: never")
+      .min(0);
   s.object("drive", drive, "vibration of the whole container (base, cylinder and walls)");
   s.choice<ContactLaw>("law", ContactLaw::Linear, "contact law: linear spring-dashpot or Hertz");
   s.boolean("friction", true, "tangential forces with history and Coulomb's cap");
   s.boolean("rotation", true, "angular velocities and torques");
-  s.real("dt", 2e-4, "time step (checked against the shortest contact time)").min(0.0, true).unit("time");
+  s.real("dt", 2e-4, "time step (checked against the shortest contact time)")
+      .min(0.0, true)
+      .unit("time");
   s.real("duration", 1.0, "simulated time").min(0.0, true).unit("time");
   s.integer("save_every", 5000, "steps between emitted frames").min(1);
   s.real("save_from", 0.0,
          "time of the first emitted frame (frames before it are not built); 0 emits the "
-         "initial state too").min(0.0).unit("time");
+         "initial state too")
+      .min(0.0)
+      .unit("time");
   s.real("skin", 0.2, "neighbour-list skin, in smallest diameters").min(0.0, true);
   s.real("background_damping", 0.0, "b of the force -b v on every particle").min(0.0);
   s.real("air_damping", 0.0,
          "b_air of the interstitial air's drag -b_air (v - V), V the container's velocity "
-         "(the paper's 1e-3 to 1e-2)").min(0.0);
+         "(the paper's 1e-3 to 1e-2)")
+      .min(0.0);
   s.reals("gravity", std::vector<double>{0.0, 0.0, -1.0}, "gravitational acceleration").length(3);
   s.real("relaxed_kinetic_energy", 0.0,
          "once the container is at rest, the run ends with a frame at the first check (every "
          "1000 steps) where the mean kinetic energy per particle (translational and rotational) "
-         "is below this; 0: run the whole duration").min(0.0).unit("energy");
+         "is below this; 0: run the whole duration")
+      .min(0.0)
+      .unit("energy");
   return s;
 }
 
@@ -230,7 +247,8 @@ DemSource::DemSource(const PluginContext& ctx) : log_(ctx.log), progress_(ctx.pr
 
 void DemSource::check_dt(const PluginContext& ctx, const ContactTime& shortest) {
   const StepCheck verdict = check_time_step(ctx.params.real("dt"), shortest);
-  if (verdict.verdict == StepVerdict::Refuse) throw InputError(ctx.param("dt") + ": " + verdict.message);
+  if (verdict.verdict == StepVerdict::Refuse)
+    throw InputError(ctx.param("dt") + ": " + verdict.message);
   if (verdict.verdict == StepVerdict::Warn) log_.warn(ctx.param("dt") + ": " + verdict.message);
 }
 
@@ -242,8 +260,8 @@ void DemSource::read_schedule(const PluginContext& ctx, const Drive& drive) {
   first_saved_step_ = steps_in(p.real("save_from"), dt);
   if (first_saved_step_ > total_steps_) {
     std::ostringstream m;
-    m << ctx.param("save_from") << ": expected a time within the duration ("
-      << p.real("duration") << "), got " << p.real("save_from");
+    m << ctx.param("save_from") << ": expected a time within the duration (" << p.real("duration")
+      << "), got " << p.real("save_from");
     throw InputError(m.str());
   }
   relaxed_kinetic_energy_ = p.real("relaxed_kinetic_energy");
@@ -264,9 +282,7 @@ FrameContent DemSource::content() const {
   return c;
 }
 
-Source::Work DemSource::work() const {
-  return {static_cast<double>(total_steps_), "steps", true};
-}
+Source::Work DemSource::work() const { return {static_cast<double>(total_steps_), "steps", true}; }
 
 std::int64_t DemSource::next_frame_step() const {
   const std::int64_t now = engine_->step();
@@ -294,7 +310,8 @@ bool DemSource::at_rest() const {
   if (relaxed_kinetic_energy_ <= 0.0 || !engine_->walls().drive().stopped(engine_->time())) {
     return false;
   }
-  return kinetic_energy(engine_->particles()) < relaxed_kinetic_energy_ * engine_->particles().size();
+  return kinetic_energy(engine_->particles()) <
+         relaxed_kinetic_energy_ * engine_->particles().size();
 }
 
 void DemSource::run_to(std::int64_t step) {
@@ -362,8 +379,8 @@ void DemSource::finish(Results& results) {
   if (relaxed_kinetic_energy_ > 0.0 && !relaxed_) {
     std::ostringstream m;
     m << "dem: relaxed_kinetic_energy: not reached within the duration (mean kinetic energy "
-      << kinetic_energy(engine_->particles()) / engine_->particles().size() << " per particle at t = "
-      << engine_->time() << ")";
+      << kinetic_energy(engine_->particles()) / engine_->particles().size()
+      << " per particle at t = " << engine_->time() << ")";
     log_.warn(m.str());
   }
   results.add_table("timing", timing_.table());

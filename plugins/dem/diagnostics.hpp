@@ -15,8 +15,8 @@ namespace granpipe::dem {
 struct Energy {
   double translational = 0.0;
   double rotational = 0.0;
-  double gravitational = 0.0;  // -m g.x, zero at the origin
-  double normal_elastic = 0.0;     // springs of the normal law (pairs and walls)
+  double gravitational = 0.0;       // -m g.x, zero at the origin
+  double normal_elastic = 0.0;      // springs of the normal law (pairs and walls)
   double tangential_elastic = 0.0;  // tangential springs, 1/2 f k_t u^2
   double kinetic() const { return translational + rotational; }
   double total() const {

@@ -14,8 +14,8 @@ namespace granpipe::dem {
 struct Drive {
   enum class Form { Sine, OneMinusCos };
   Form form = Form::OneMinusCos;
-  double amplitude = 0.0;          // A (length)
-  double angular_frequency = 0.0;  // w = 2 pi f (1/time)
+  double amplitude = 0.0;                                // A (length)
+  double angular_frequency = 0.0;                        // w = 2 pi f (1/time)
   Eigen::Vector3d direction = Eigen::Vector3d::UnitZ();  // unit vector
   double start = 0.0;
   double stop = std::numeric_limits<double>::infinity();

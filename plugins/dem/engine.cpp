@@ -35,8 +35,8 @@ void check_vectors(const Vectors& a, Eigen::Index n, const char* name, bool opti
   for (Eigen::Index i = 0; i < n; ++i) {
     for (int c = 0; c < 3; ++c) {
       if (!std::isfinite(a(c, i))) {
-        refuse("particle " + std::to_string(i) + ": " + name + " " + "xyz"[c],
-               "a finite value", a(c, i));
+        refuse("particle " + std::to_string(i) + ": " + name + " " + "xyz"[c], "a finite value",
+               a(c, i));
       }
     }
   }
@@ -178,7 +178,8 @@ void Engine::rebuild() {
 void Engine::find_pinned() {
   if (pinned_.empty()) return;
   for (int i = 0; i < p_.size(); ++i) {
-    const std::int32_t slot = pinned_slot_[static_cast<std::size_t>(p_.tag[static_cast<std::size_t>(i)])];
+    const std::int32_t slot =
+        pinned_slot_[static_cast<std::size_t>(p_.tag[static_cast<std::size_t>(i)])];
     if (slot >= 0) pinned_[static_cast<std::size_t>(slot)].index = i;
   }
 }
@@ -268,8 +269,7 @@ KickContext Engine::kick_context(double dt) {
   return c;
 }
 
-void Engine::evaluate_forces(double dt_history, double kick_dt, double velocity_time,
-                             bool finish) {
+void Engine::evaluate_forces(double dt_history, double kick_dt, double velocity_time, bool finish) {
   if (recording_) {
     for (int s = 0; s < walls_.count(); ++s) {
       wall_normal_[s].resize(3, p_.size());
@@ -360,7 +360,8 @@ std::optional<Vec3> Engine::pair_history(std::int32_t tag_a, std::int32_t tag_b)
   if (!settings_.friction || a < 0 || b < 0) return std::nullopt;
   const auto find = [&](int owner, int other) -> std::optional<Vec3> {
     for (std::int32_t k = list_.first[owner]; k < list_.first[owner + 1]; ++k) {
-      if (list_.partner[k] == other) return Vec3::Map(&list_.history[3 * static_cast<std::size_t>(k)]);
+      if (list_.partner[k] == other)
+        return Vec3::Map(&list_.history[3 * static_cast<std::size_t>(k)]);
     }
     return std::nullopt;
   };

@@ -94,10 +94,13 @@ void fill_contacts(std::vector<ContactRow>& rows, Frame& frame) {
 
 // The drive's phase and the container's velocity, for analyses that cut a run into cycles.
 void add_drive_observables(const Drive& drive, double t, Frame& frame) {
-  static const Property cycles{"cycles", Scope::Frame, ValueType::Real, 1, "1",
-                               "drive periods since the drive started, (t - start) f"};
-  static const Property velocity{"container_velocity", Scope::Frame, ValueType::Real, 1,
-                                 "length/time", "vertical velocity of the vibrating container"};
+  static const Property cycles{
+      "cycles", Scope::Frame, ValueType::Real,
+      1,        "1",          "drive periods since the drive started, (t - start) f"};
+  static const Property velocity{
+      "container_velocity", Scope::Frame,
+      ValueType::Real,      1,
+      "length/time",        "vertical velocity of the vibrating container"};
   frame.set_observable(cycles, drive.cycles(t));
   frame.set_observable(velocity, drive.velocity(t)[2]);
 }

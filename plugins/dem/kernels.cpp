@@ -16,7 +16,9 @@ namespace {
 
 inline Vec4 load4(const double* a, std::ptrdiff_t i) { return load3(a + 3 * i); }
 inline void store(double* a, std::ptrdiff_t i, const Vec4& v) { store3(a + 3 * i, v); }
-inline void store_zero(double* a, std::ptrdiff_t i) { a[3 * i] = a[3 * i + 1] = a[3 * i + 2] = 0.0; }
+inline void store_zero(double* a, std::ptrdiff_t i) {
+  a[3 * i] = a[3 * i + 1] = a[3 * i + 2] = 0.0;
+}
 
 // Reaction slot per pair: the force on the partner, and n x F_t when spins matter.
 template <bool kRotation>
@@ -47,9 +49,9 @@ template <class Law, bool kFriction, bool kRotation>
     double* u = kFriction ? c.wall_history[slot] + 3 * static_cast<std::ptrdiff_t>(i) : nullptr;
     const Vec4 spin = kRotation ? Vec4(ai * wi) : Vec4::Zero();
     const LoopMaterial& material = c.wall_material[slot * c.species_count + c.species[i]];
-    const ContactForce cf = resolve_contact<Law, kFriction, kRotation>(
-        n, delta, 2.0 * ai, vi - wall_velocity, spin, 1.0 / c.inv_mass[i], material, u,
-        c.dt_history);
+    const ContactForce cf =
+        resolve_contact<Law, kFriction, kRotation>(n, delta, 2.0 * ai, vi - wall_velocity, spin,
+                                                   1.0 / c.inv_mass[i], material, u, c.dt_history);
     f += cf.force;
     if constexpr (kRotation) spin_sum += cf.c;
     if (c.wall_normal_record) {
@@ -269,8 +271,8 @@ template <class Law, bool kFriction, bool kRotation>
     if constexpr (kFriction) u = lanes::gather3(c.history, t.pair + b);
     const Reals m_eff = 1.0 / (lanes::gather(c.inv_mass, i) + lanes::gather(c.inv_mass, j));
     const ContactLanes cf = resolve_contacts<Law, kFriction, kRotation>(
-        n, contact - r, contact, lanes::gather3(c.v, t.i + b) - lanes::gather3(c.v, t.j + b),
-        spin, m_eff, materials.of(c, i, j), u, c.dt_history);
+        n, contact - r, contact, lanes::gather3(c.v, t.i + b) - lanes::gather3(c.v, t.j + b), spin,
+        m_eff, materials.of(c, i, j), u, c.dt_history);
     lanes::store(t.fx + b, cf.force.x);
     lanes::store(t.fy + b, cf.force.y);
     lanes::store(t.fz + b, cf.force.z);
@@ -359,7 +361,9 @@ double forces(const ForceContext& context) {
   const ForceContext c = context;
   constexpr double kNone = -std::numeric_limits<double>::infinity();
   double deepest = kNone;
-#pragma omp parallel for schedule(static, 1) num_threads(c.threads) firstprivate(c) reduction(max : deepest)
+#pragma omp parallel for schedule(static, 1) num_threads(c.threads) firstprivate(c) \
+    reduction(max                                                                   \
+              : deepest)
   for (int part = 0; part < c.threads; ++part) {
     const int p0 = share_start(c, part), p1 = share_start(c, part + 1);
     double walls = kNone;
@@ -436,8 +440,8 @@ template <bool kRotation>
 // returns its squared displacement since the last list build.
 template <bool kRotation>
 [[gnu::always_inline]] inline double start(const KickContext& c, int p) {
-  const HalfKick k = half_kick<kRotation>(c, p, load4(c.force, p),
-                                          kRotation ? load4(c.torque, p) : Vec4::Zero());
+  const HalfKick k =
+      half_kick<kRotation>(c, p, load4(c.force, p), kRotation ? load4(c.torque, p) : Vec4::Zero());
   const Vec4 v = load4(c.v, p) + k.dv;
   store(c.v, p, v);
   if constexpr (kRotation) store(c.omega, p, load4(c.omega, p) + k.dw);
@@ -455,7 +459,9 @@ template <bool kRotation>
 double start_step(const KickContext& context) {
   const KickContext c = context;
   double worst = 0.0;
-#pragma omp parallel for schedule(static) num_threads(c.threads) firstprivate(c) reduction(max : worst)
+#pragma omp parallel for schedule(static) num_threads(c.threads) firstprivate(c) \
+    reduction(max                                                                \
+              : worst)
   for (int p = 0; p < c.n; ++p) worst = std::max(worst, start<kRotation>(c, p));
   return worst;
 }
@@ -466,7 +472,9 @@ template <bool kRotation>
 double finish_and_start(const KickContext& context) {
   const KickContext c = context;
   double worst = 0.0;
-#pragma omp parallel for schedule(static) num_threads(c.threads) firstprivate(c) reduction(max : worst)
+#pragma omp parallel for schedule(static) num_threads(c.threads) firstprivate(c) \
+    reduction(max                                                                \
+              : worst)
   for (int p = 0; p < c.n; ++p) {
     // finish then start, the second kick reusing the first's increments.
     Vec4 spin;

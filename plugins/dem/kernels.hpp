@@ -18,10 +18,11 @@
 // order (its own pairs in list order, then the reactions of the pairs naming it, in list
 // order), never across threads, so results are bit-identical for any thread count and
 // any schedule. The loops split the particles into one contiguous block per thread (the
-// force loop by estimated work, the others by count): the particles are sorted in space, so a thread then reads and writes almost only its own
-// neighbours' data (2.25e7 against 1.95e7 particle-steps/s for chunks of 128 handed out
-// dynamically, Brazil-nut scene, 2 threads on a quiet machine). A thread that loses its core
-// stalls the others at the barrier: on a busy machine, one thread is faster.
+// force loop by estimated work, the others by count): the particles are sorted in space, so a
+// thread then reads and writes almost only its own neighbours' data (2.25e7 against 1.95e7
+// particle-steps/s for chunks of 128 handed out dynamically, Brazil-nut scene, 2 threads on a quiet
+// machine). A thread that loses its core stalls the others at the barrier: on a busy machine, one
+// thread is faster.
 #include <cstdint>
 
 #include "contact_law.hpp"
@@ -42,9 +43,9 @@ struct ForceContext {
   const double* plane_position;  // current (rest + offset)
   bool cylinder;
   double cylinder_x, cylinder_y, cylinder_radius;  // current axis and radius
-  const LoopMaterial* wall_material;  // slot x species
-  Vec3 wall_velocity;                 // at the velocities' time (half step)
-  double** wall_history;              // per slot, 3 x n (friction only)
+  const LoopMaterial* wall_material;               // slot x species
+  Vec3 wall_velocity;                              // at the velocities' time (half step)
+  double** wall_history;                           // per slot, 3 x n (friction only)
   // Recording (for frames): per slot, normal and tangential force on the particle, 3 x n;
   // null when not recording.
   double** wall_normal_record;
@@ -52,9 +53,9 @@ struct ForceContext {
   // The half list.
   const std::int32_t *first, *partner, *owner, *reaction_slot;
   const double* work_before;  // per particle, n+1: where the threads' shares start
-  double* history;   // 3 per pair
-  double* incoming;  // 3 or 6 per slot, by partner (see NeighborList)
-  double* reaction;  // 3 or 6 per pair, by pair; null when not recording
+  double* history;            // 3 per pair
+  double* incoming;           // 3 or 6 per slot, by partner (see NeighborList)
+  double* reaction;           // 3 or 6 per pair, by pair; null when not recording
   double background_damping;
   double air_damping;  // on the slip velocity against wall_velocity
   double dt_history;

@@ -45,8 +45,8 @@ inline void store(double* p, const Reals& v) { std::memcpy(p, &v, sizeof v); }
 // undefined register, which GCC then warns about.)
 inline Reals gather(const double* base, const Indices& index) {
 #if defined(__AVX512F__)
-  return _mm512_mask_i32gather_pd(_mm512_setzero_pd(), 0xff, reinterpret_cast<__m256i>(index),
-                                  base, 8);
+  return _mm512_mask_i32gather_pd(_mm512_setzero_pd(), 0xff, reinterpret_cast<__m256i>(index), base,
+                                  8);
 #elif defined(__AVX2__)
   return _mm256_mask_i32gather_pd(_mm256_setzero_pd(), base, reinterpret_cast<__m128i>(index),
                                   _mm256_castsi256_pd(_mm256_set1_epi64x(-1)), 8);
@@ -108,7 +108,7 @@ inline Reals dot(const Vec& a, const Vec& b) { return a.x * b.x + a.y * b.y + a.
 inline Vec cross(const Vec& a, const Vec& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
-inline Vec select(const decltype(Reals{} < Reals{})& mask, const Vec& a, const Vec& b) {
+inline Vec select(const decltype(Reals{} < Reals{}) & mask, const Vec& a, const Vec& b) {
   return {mask ? a.x : b.x, mask ? a.y : b.y, mask ? a.z : b.z};
 }
 
@@ -119,8 +119,8 @@ inline Vec gather3(const double* base, const std::int32_t* index) {
 #if defined(__AVX512F__)
   const auto pair_of = [&](int l) {
     return _mm512_mask_broadcast_f64x4(
-        _mm512_maskz_loadu_pd(0x7, base + 3 * std::ptrdiff_t{index[l]}),
-        0xf0, _mm256_maskz_loadu_pd(0x7, base + 3 * std::ptrdiff_t{index[l + 1]}));
+        _mm512_maskz_loadu_pd(0x7, base + 3 * std::ptrdiff_t{index[l]}), 0xf0,
+        _mm256_maskz_loadu_pd(0x7, base + 3 * std::ptrdiff_t{index[l + 1]}));
   };
   // a..d: lanes (0, 1), (2, 3), (4, 5), (6, 7), each x y z 0 x y z 0.
   const __m512d a = pair_of(0), b = pair_of(2), c = pair_of(4), d = pair_of(6);

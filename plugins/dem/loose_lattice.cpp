@@ -23,7 +23,8 @@ void check(const LooseLattice& spec) {
       << a << ", spacing " << s << ", jitter " << spec.jitter;
     throw InputError(m.str());
   }
-  if (!(spec.cylinder_radius >= narrowest_cylinder_radius(a, spec.jitter)) || spec.count < 0 || !(spec.intruder_radius < spec.cylinder_radius)) {
+  if (!(spec.cylinder_radius >= narrowest_cylinder_radius(a, spec.jitter)) || spec.count < 0 ||
+      !(spec.intruder_radius < spec.cylinder_radius)) {
     std::ostringstream m;
     m << "dem: loose lattice: no sphere of radius " << a << " (or intruder of radius "
       << spec.intruder_radius << ") fits in a cylinder of radius " << spec.cylinder_radius;

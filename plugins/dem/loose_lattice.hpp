@@ -11,7 +11,7 @@
 namespace granpipe::dem {
 
 struct LooseLattice {
-  int count = 0;                 // spheres
+  int count = 0;  // spheres
   double radius = 0.5;
   double cylinder_radius = 0.0;  // axis through (0, 0)
   double base = 0.0;             // z of the base

@@ -80,9 +80,9 @@ void Model::check() const {
       }
     }
     for (int w = 0; w < kWallCount; ++w) {
-      check_material(with_wall(static_cast<Wall>(w), a),
-                     "species " + std::to_string(a) + " with wall " +
-                         to_string(static_cast<Wall>(w)));
+      check_material(
+          with_wall(static_cast<Wall>(w), a),
+          "species " + std::to_string(a) + " with wall " + to_string(static_cast<Wall>(w)));
     }
   }
 }

@@ -26,9 +26,9 @@ struct ContactMaterial {
 inline constexpr int kWallCount = static_cast<int>(Wall::Count);
 
 struct Model {
-  std::vector<double> density;          // per species (mass/length^3)
-  std::vector<ContactMaterial> pair;    // species x species, symmetric, row-major
-  std::vector<ContactMaterial> wall;    // kWallCount x species, row-major by wall
+  std::vector<double> density;        // per species (mass/length^3)
+  std::vector<ContactMaterial> pair;  // species x species, symmetric, row-major
+  std::vector<ContactMaterial> wall;  // kWallCount x species, row-major by wall
   // Per species (empty: none): particles held by the container, moving rigidly with it
   // (the paper's preparation fixes the large sphere at the bottom). They keep their mass,
   // so a contact with one is damped with the two particles' effective mass.

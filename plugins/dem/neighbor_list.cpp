@@ -10,9 +10,9 @@ namespace {
 
 // The 13 neighbour cells after a cell in z-major order (dz, dy, dx): with the cell itself
 // they hold every later particle a small particle can touch.
-constexpr int kForward[13][3] = {{0, 0, 1},   {0, 1, -1},  {0, 1, 0},  {0, 1, 1},  {1, -1, -1},
-                                 {1, -1, 0},  {1, -1, 1},  {1, 0, -1}, {1, 0, 0},  {1, 0, 1},
-                                 {1, 1, -1},  {1, 1, 0},   {1, 1, 1}};
+constexpr int kForward[13][3] = {{0, 0, 1},  {0, 1, -1}, {0, 1, 0},  {0, 1, 1}, {1, -1, -1},
+                                 {1, -1, 0}, {1, -1, 1}, {1, 0, -1}, {1, 0, 0}, {1, 0, 1},
+                                 {1, 1, -1}, {1, 1, 0},  {1, 1, 1}};
 // Particles larger than this many median radii search for their own partners.
 constexpr double kBigOverMedian = 1.5;
 // The force loop's work, relative to that of a listed pair: per particle (damping, walls)
@@ -186,7 +186,8 @@ void NeighborList::rebuild(Particles& p, int threads) {
     max_radius_ = p.radius.maxCoeff();
     split_radius_ = 0.0;
     for (int i = 0; i < n; ++i) {
-      if (p.radius[i] <= kBigOverMedian * median) split_radius_ = std::max(split_radius_, p.radius[i]);
+      if (p.radius[i] <= kBigOverMedian * median)
+        split_radius_ = std::max(split_radius_, p.radius[i]);
     }
   }
   size_grid(p);

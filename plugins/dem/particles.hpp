@@ -26,7 +26,7 @@ struct InitialState {
 
 struct Particles {
   Vectors x, v, omega;
-  Vectors force;        // contact + damping forces of the last force evaluation (no gravity)
+  Vectors force;  // contact + damping forces of the last force evaluation (no gravity)
   Vectors torque;
   Eigen::ArrayXd radius, inv_mass, inv_inertia;
   Eigen::ArrayXi species;

@@ -1,7 +1,7 @@
 #include "scene_checks.hpp"
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <numbers>
 #include <string>
@@ -98,12 +98,11 @@ void check_drive(const PluginContext& ctx, const Scene& scene, const Drive& driv
   // The overlap grows as v (linear) or v^(4/5) (Hertz).
   const double exponent = scene.law == ContactLaw::Linear ? 1.0 : 1.25;
   const double v_max = peak * std::pow(kMaxOverlapFraction / d.fraction, exponent);
-  throw InputError(ctx.param("drive") + ": amplitude " + format_number(drive.amplitude) +
-                   " and frequency " +
-                   format_number(drive.angular_frequency / (2.0 * std::numbers::pi)) +
-                   " move the walls at up to A 2 pi f = " + format_number(peak, 3) +
-                   ", which would press " + described(d, "hit by") + ": expected A 2 pi f <= " +
-                   format_number(v_max, 3));
+  throw InputError(
+      ctx.param("drive") + ": amplitude " + format_number(drive.amplitude) + " and frequency " +
+      format_number(drive.angular_frequency / (2.0 * std::numbers::pi)) +
+      " move the walls at up to A 2 pi f = " + format_number(peak, 3) + ", which would press " +
+      described(d, "hit by") + ": expected A 2 pi f <= " + format_number(v_max, 3));
 }
 
 void check_gravity(const PluginContext& ctx, const Scene& scene, const Eigen::Vector3d& gravity) {
@@ -112,8 +111,9 @@ void check_gravity(const PluginContext& ctx, const Scene& scene, const Eigen::Ve
   // The overlap at which a sphere rests on a wall under its weight.
   const auto rest = [&](const ContactMaterial& m, double mass, double a, double scale) {
     const double weight = mass * g * scale;
-    return scene.law == ContactLaw::Linear ? weight / m.kn
-                                           : std::pow(weight * std::sqrt(2.0 * a) / m.kn, 2.0 / 3.0);
+    return scene.law == ContactLaw::Linear
+               ? weight / m.kn
+               : std::pow(weight * std::sqrt(2.0 * a) / m.kn, 2.0 / 3.0);
   };
   const Deepest d = deepest_against_walls(scene, gravity / g, rest);
   if (d.fraction <= kMaxOverlapFraction) return;

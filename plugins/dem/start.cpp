@@ -24,7 +24,8 @@ Start start_from_file(const PluginContext& ctx, int species) {
   }
   const long chosen = index < 0 ? frames - 1 : static_cast<long>(index);
   Frame f = reader.read(chosen);
-  check_memory(ctx.param("initial_file") + ": " + reader.info().path, static_cast<double>(f.size()));
+  check_memory(ctx.param("initial_file") + ": " + reader.info().path,
+               static_cast<double>(f.size()));
   f.check(reader.info().path + ": frame " + std::to_string(index));
   if (f.dim != 3) throw InputError(ctx.param("initial_file") + ": expected a 3D frame, got 2D");
   check_start_frame(f, ctx.param("initial_file") + ": " + reader.info().path + ": frame " +
@@ -34,8 +35,9 @@ Start start_from_file(const PluginContext& ctx, int species) {
   s.radius = f.radius();
   s.species = f.species().cast<int>();
   if (f.size() > 0 && s.species.maxCoeff() >= species) {
-    throw InputError(ctx.param("species") + ": expected an entry for every species of the start frame (" +
-                     std::to_string(s.species.maxCoeff() + 1) + "), got " + std::to_string(species));
+    throw InputError(
+        ctx.param("species") + ": expected an entry for every species of the start frame (" +
+        std::to_string(s.species.maxCoeff() + 1) + "), got " + std::to_string(species));
   }
   if (f.has("velocity")) s.velocity = f.table<double>("velocity").matrix().transpose();
   if (f.has("angular_velocity")) {
@@ -63,8 +65,8 @@ void check_bed(const PluginContext& ctx) {
                                     format_number(d) + " and its nudge)");
   }
   if (!(b.real("intruder_diameter") < b.real("cylinder_diameter"))) {
-    refuse("intruder_diameter", "less than cylinder_diameter (" +
-                                    format_number(b.real("cylinder_diameter")) + ")");
+    refuse("intruder_diameter",
+           "less than cylinder_diameter (" + format_number(b.real("cylinder_diameter")) + ")");
   }
 }
 
@@ -75,13 +77,17 @@ Start start_from_bed(const PluginContext& ctx, int species) {
   check_memory(ctx.param("bed.small"), static_cast<double>(b.integer("small")));
   const double d = b.real("diameter"), R = 0.5 * b.real("cylinder_diameter");
   if (b.real("intruder_diameter") > 0.0 && species < 2) {
-    throw InputError(ctx.param("species") + ": expected a second species for the bed's intruder "
-                     "(species 1), got " + std::to_string(species) + " species");
+    throw InputError(ctx.param("species") +
+                     ": expected a second species for the bed's intruder "
+                     "(species 1), got " +
+                     std::to_string(species) + " species");
   }
   Start s;
   try {
-    s.state = loose_lattice({.count = static_cast<int>(b.integer("small")), .radius = 0.5 * d,
-                             .cylinder_radius = R, .spacing = b.real("spacing") * d,
+    s.state = loose_lattice({.count = static_cast<int>(b.integer("small")),
+                             .radius = 0.5 * d,
+                             .cylinder_radius = R,
+                             .spacing = b.real("spacing") * d,
                              .jitter = b.real("jitter") * d,
                              .intruder_radius = 0.5 * b.real("intruder_diameter"),
                              .seed = ctx.seeds.derive("bed").seed()});

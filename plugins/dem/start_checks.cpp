@@ -31,16 +31,19 @@ void refuse_outside(const Frame& f, const std::string& where) {
   Container& c = at_rest.container;
   c.wall_offset.setZero();
   for (int axis = 0; axis < 3; ++axis) {
-    if (c.boundary[axis][0] == Boundary::Open) c.lo[axis] = -std::numeric_limits<double>::infinity();
+    if (c.boundary[axis][0] == Boundary::Open)
+      c.lo[axis] = -std::numeric_limits<double>::infinity();
     if (c.boundary[axis][1] == Boundary::Open) c.hi[axis] = std::numeric_limits<double>::infinity();
   }
   const auto out = first_particle_outside(at_rest, kMaxOverlapFraction);
   if (!out) return;
-  throw InputError(where + ": " + particle(f, out->particle) + " reaches " + format_number(out->depth) +
-                   " past wall " + to_string(out->wall) + " (" +
-                   percent(out->depth / f.radius()[out->particle]) +
-                   " of its radius): expected particles inside the container, touching its walls by "
-                   "at most " + percent(kMaxOverlapFraction) + " of their radius");
+  throw InputError(
+      where + ": " + particle(f, out->particle) + " reaches " + format_number(out->depth) +
+      " past wall " + to_string(out->wall) + " (" +
+      percent(out->depth / f.radius()[out->particle]) +
+      " of its radius): expected particles inside the container, touching its walls by "
+      "at most " +
+      percent(kMaxOverlapFraction) + " of their radius");
 }
 
 void refuse_deep_pairs(const Frame& f, const std::string& where) {
@@ -59,8 +62,10 @@ void refuse_deep_pairs(const Frame& f, const std::string& where) {
   const auto i = touching.i[worst], j = touching.j[worst];
   throw InputError(where + ": particles " + std::to_string(i) + " and " + std::to_string(j) +
                    " (ids " + std::to_string(f.id()[i]) + " and " + std::to_string(f.id()[j]) +
-                   ") overlap by " + percent(deepest) + " of the smaller radius: expected "
-                   "overlaps of at most " + percent(kMaxOverlapFraction));
+                   ") overlap by " + percent(deepest) +
+                   " of the smaller radius: expected "
+                   "overlaps of at most " +
+                   percent(kMaxOverlapFraction));
 }
 
 }  // namespace

@@ -28,7 +28,8 @@ std::vector<Lightest> lightest(const Model& model, const Eigen::ArrayXd& radius,
   }
   for (Eigen::Index i = 0; i < radius.size(); ++i) {
     if (species[i] < 0 || species[i] >= model.species()) {
-      throw InputError("dem: particle " + std::to_string(i) + ": species: expected a species in 0.." +
+      throw InputError("dem: particle " + std::to_string(i) +
+                       ": species: expected a species in 0.." +
                        std::to_string(model.species() - 1) + ", got " + std::to_string(species[i]));
     }
     const double a = radius[i];

@@ -30,8 +30,8 @@ struct ContactTime {
 
 // The shortest contact over the species present in `radius`/`species` and the active
 // walls (InputError for a species the model does not have, so that a source can check
-// dt before making the engine). For the Hertz law the contact time depends on the impact: it is taken at normal
-// speed `impact_speed` (> 0; the fastest approach the scene can produce), undamped.
+// dt before making the engine). For the Hertz law the contact time depends on the impact: it is
+// taken at normal speed `impact_speed` (> 0; the fastest approach the scene can produce), undamped.
 ContactTime smallest_contact_time(const Model& model, const WallSet& walls,
                                   const Eigen::ArrayXd& radius, const Eigen::ArrayXi& species,
                                   ContactLaw law, double impact_speed);

@@ -33,8 +33,8 @@ WallSet::WallSet(const Container& rest, const Drive& drive) : rest_(rest) {
           << ": expected a finite position, got " << position;
         throw InputError(s.str());
       }
-      planes_.push_back({static_cast<Wall>(2 * axis + side), axis, side == 0 ? 1.0 : -1.0,
-                         position});
+      planes_.push_back(
+          {static_cast<Wall>(2 * axis + side), axis, side == 0 ? 1.0 : -1.0, position});
     }
   }
 }
@@ -48,8 +48,8 @@ Wall WallSet::wall_of_slot(int slot) const {
   return slot < static_cast<int>(planes_.size()) ? planes_[slot].wall : Wall::CylinderSide;
 }
 
-double WallSet::overlap(int slot, const Eigen::Vector3d& x, double a,
-                        const Eigen::Vector3d& offset, Eigen::Vector3d& normal) const {
+double WallSet::overlap(int slot, const Eigen::Vector3d& x, double a, const Eigen::Vector3d& offset,
+                        Eigen::Vector3d& normal) const {
   normal.setZero();
   if (slot < static_cast<int>(planes_.size())) {
     const PlaneWall& p = planes_[slot];

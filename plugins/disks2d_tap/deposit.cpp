@@ -33,8 +33,7 @@ std::size_t touch_capacity(double r_min, double r_max) {
 
 }  // namespace
 
-Deposit::Deposit(DiskPacking& packing, DepositOptions options)
-    : p_(packing), options_(options) {
+Deposit::Deposit(DiskPacking& packing, DepositOptions options) : p_(packing), options_(options) {
   reset();
 }
 
@@ -311,8 +310,7 @@ void Deposit::release_held(std::int32_t i) {
     if (options_.update == SupportUpdate::KeepTouching) {
       const double dx = p_.x[m] - p_.x[k], dy = p_.y[m] - p_.y[k];
       const double gap = std::sqrt(dx * dx + dy * dy) - p_.r[m] - p_.r[k];
-      const bool pair_ok =
-          p_.second[m] == kNone || pair_stable(j, p_.first[m], p_.second[m]);
+      const bool pair_ok = p_.second[m] == kNone || pair_stable(j, p_.first[m], p_.second[m]);
       if (std::abs(gap) <= kTouchTolerance * p_.r[m] && pair_ok) {
         list[kept++] = j;
         continue;
@@ -380,8 +378,8 @@ void Deposit::note_zero_move(std::int32_t i, bool moved) {
     std::ostringstream s;
     s.precision(17);
     s << "disks2d_tap: disk " << i << " at (" << p_.x[k] << ", " << p_.y[k]
-      << ") cycles through moves of length zero (first support " << p_.first[k]
-      << ", second " << p_.second[k] << ")";
+      << ") cycles through moves of length zero (first support " << p_.first[k] << ", second "
+      << p_.second[k] << ")";
     throw InternalError(s.str());
   }
 }

@@ -29,7 +29,8 @@ enum class SupportUpdate : std::uint8_t { Drop, KeepTouching };
 
 // The names pipelines give them (parameters roll_measure, move_order, support_update).
 inline ChoiceNames<RollMeasure> choice_names(RollMeasure) {
-  return {{"centre_path", RollMeasure::CentrePath}, {"support_surface", RollMeasure::SupportSurface}};
+  return {{"centre_path", RollMeasure::CentrePath},
+          {"support_surface", RollMeasure::SupportSurface}};
 }
 inline ChoiceNames<MoveOrder> choice_names(MoveOrder) {
   return {{"sweeps", MoveOrder::Sweeps}, {"random", MoveOrder::Random}};
@@ -47,15 +48,15 @@ struct DepositOptions {
 
 // What one move did.
 enum class Move : std::uint8_t {
-  None,            // the disk was stable: nothing to do
-  Fall,            // fell delta freely
-  LandOnDisk,      // fell onto a disk: its first support
-  LandOnBase,      // fell onto the base: stuck there
-  Roll,            // rolled delta over its support
-  RollOff,         // reached its support's height: lost it
-  RollOntoBase,    // rolled onto the base: stuck there
-  RollToRest,      // met a second contact forming a stable pair
-  RollToNewSupport // met a contact forming an unstable pair: the lower is the new support
+  None,             // the disk was stable: nothing to do
+  Fall,             // fell delta freely
+  LandOnDisk,       // fell onto a disk: its first support
+  LandOnBase,       // fell onto the base: stuck there
+  Roll,             // rolled delta over its support
+  RollOff,          // reached its support's height: lost it
+  RollOntoBase,     // rolled onto the base: stuck there
+  RollToRest,       // met a second contact forming a stable pair
+  RollToNewSupport  // met a contact forming an unstable pair: the lower is the new support
 };
 
 struct DepositStats {
@@ -107,19 +108,19 @@ class Deposit {
   DepositOptions options_;
   DiskGrid grid_;
   double max_radius_ = 0;
-  std::vector<int> cell_;                 // grid cell of each disk
-  std::size_t capacity_ = 0;              // most disks one disk can touch
-  std::vector<std::int32_t> held_;        // disks supported by j: held_[j*capacity_ + k]
+  std::vector<int> cell_;           // grid cell of each disk
+  std::size_t capacity_ = 0;        // most disks one disk can touch
+  std::vector<std::int32_t> held_;  // disks supported by j: held_[j*capacity_ + k]
   std::vector<std::uint32_t> held_count_;
-  std::vector<std::int32_t> unstable_;    // disks that can move, in no order
-  std::vector<std::int32_t> slot_;        // index in unstable_, or -1
-  std::vector<std::int32_t> sweep_;       // the disks of the current sweep
-  std::vector<std::uint16_t> stalled_;    // consecutive moves of a disk that went nowhere
+  std::vector<std::int32_t> unstable_;  // disks that can move, in no order
+  std::vector<std::int32_t> slot_;      // index in unstable_, or -1
+  std::vector<std::int32_t> sweep_;     // the disks of the current sweep
+  std::vector<std::uint16_t> stalled_;  // consecutive moves of a disk that went nowhere
   // A falling disk's free drop known from its last search below it (0: unknown). Only
   // rolls can bring an obstacle closer (falls are vertical and downward), and every
   // roll resets the clearances above it, so a fall within the clearance needs no search.
   std::vector<double> clearance_;
-  double lookahead_ = 0;                  // how far below a fall's search reaches
+  double lookahead_ = 0;  // how far below a fall's search reaches
   double cached_divisor_ = -1;
   std::pair<double, double> cached_rotation_{1.0, 0.0};  // cos, sin of the roll angle
   DepositStats stats_;

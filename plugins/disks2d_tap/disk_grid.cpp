@@ -22,8 +22,8 @@ void DiskGrid::reset(double width, double height, double cell, double margin) {
 void DiskGrid::put(std::int32_t i, int cell) {
   auto& slot = cells_[static_cast<std::size_t>(cell)];
   if (slot != kEmpty && slot != i) {
-    throw InternalError("disks2d_tap: disks " + std::to_string(slot) + " and " +
-                        std::to_string(i) + " share a grid cell, so they overlap");
+    throw InternalError("disks2d_tap: disks " + std::to_string(slot) + " and " + std::to_string(i) +
+                        " share a grid cell, so they overlap");
   }
   slot = i;
 }

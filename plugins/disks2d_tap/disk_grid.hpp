@@ -20,9 +20,7 @@ class DiskGrid {
 
   double cell_size() const { return cell_; }
   double height() const { return height_; }
-  int cell_of(double x, double y) const {
-    return (row_of(y) + pad_) * stride_ + col_of(x) + pad_;
-  }
+  int cell_of(double x, double y) const { return (row_of(y) + pad_) * stride_ + col_of(x) + pad_; }
   std::int32_t at(int cell) const { return cells_[static_cast<std::size_t>(cell)]; }
   // Puts disk i into `cell`; throws InternalError when another disk is there already
   // (which only overlapping disks can cause).

@@ -55,8 +55,8 @@ void DiskPacking::check(const std::string& where, double tolerance) const {
   auto fail = [&](std::size_t i, const std::string& what) {
     std::ostringstream s;
     s.precision(17);
-    s << where << ": disk " << i << " at (" << x[i] << ", " << y[i] << ") radius " << r[i]
-      << ": " << what;
+    s << where << ": disk " << i << " at (" << x[i] << ", " << y[i] << ") radius " << r[i] << ": "
+      << what;
     throw InputError(s.str());
   };
   if (!(width > 0.0) || !std::isfinite(width)) {
@@ -80,26 +80,34 @@ void DiskPacking::check(const std::string& where, double tolerance) const {
     pos(static_cast<Eigen::Index>(i), 0) = x[i];
     pos(static_cast<Eigen::Index>(i), 1) = y[i];
   }
-  const Container box = Container::open_top_box(2, Eigen::Vector3d(0, 0, 0),
-                                                Eigen::Vector3d(width, top(), 0));
+  const Container box =
+      Container::open_top_box(2, Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(width, top(), 0));
   const CellList cells(pos, box, 2, 2.0 * max_radius());
   cells.for_each_pair([&](int i, int j, const double*, double r2) {
     const double reach = r[i] + r[j] - tolerance * std::min(r[i], r[j]);
     if (r2 < reach * reach) {
-      fail(static_cast<std::size_t>(i),
-           "overlaps disk " + std::to_string(j) + " by " +
-               std::to_string(r[i] + r[j] - std::sqrt(r2)) + ", expected no overlap");
+      fail(static_cast<std::size_t>(i), "overlaps disk " + std::to_string(j) + " by " +
+                                            std::to_string(r[i] + r[j] - std::sqrt(r2)) +
+                                            ", expected no overlap");
     }
   });
 }
 
 Property supports_property() {
-  return {"supports", Scope::Particle, ValueType::Integer, 2, "",
+  return {"supports",
+          Scope::Particle,
+          ValueType::Integer,
+          2,
+          "",
           "left and right support of each disk (particle index, -1 none, -2 - wall)"};
 }
 Property tap_property() { return {"tap", Scope::Frame, ValueType::Integer, 1, "", "tap number"}; }
 Property cycle_property() {
-  return {"cycle", Scope::Frame, ValueType::Integer, 1, "",
+  return {"cycle",
+          Scope::Frame,
+          ValueType::Integer,
+          1,
+          "",
           "half-cycle of a ramped protocol (0 first increase, odd decreasing), -1 constant"};
 }
 Property amplitude_property() {
@@ -109,7 +117,8 @@ Property amplitude_property() {
 void DiskPacking::to_frame(Frame& frame) const {
   const auto n = static_cast<Eigen::Index>(size());
   frame.resize(n, 2);
-  ValueTable<std::int64_t>& labels = frame.particles.add<ValueTable<std::int64_t>>(supports_property());
+  ValueTable<std::int64_t>& labels =
+      frame.particles.add<ValueTable<std::int64_t>>(supports_property());
   for (Eigen::Index k = 0; k < n; ++k) {
     const auto i = static_cast<std::size_t>(k);
     frame.position()(k, 0) = x[i];
@@ -126,8 +135,8 @@ void DiskPacking::to_frame(Frame& frame) const {
     labels(k, 0) = left;
     labels(k, 1) = right;
   }
-  frame.container = Container::open_top_box(2, Eigen::Vector3d(0, 0, 0),
-                                            Eigen::Vector3d(width, top(), 0));
+  frame.container =
+      Container::open_top_box(2, Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(width, top(), 0));
 }
 
 DiskPacking DiskPacking::from_frame(const Frame& frame, const std::string& where) {

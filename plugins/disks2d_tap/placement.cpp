@@ -54,8 +54,8 @@ DiskPacking place_at_random(double width, double height, const std::vector<doubl
     if (!placed) {
       std::ostringstream s;
       s << where << ": random placement found no room for disk " << placed_count + 1 << " of "
-        << radii.size() << " after " << attempts << " attempts in a box of " << width
-        << " x " << height << "; expected fewer or smaller disks or a lower initial fraction";
+        << radii.size() << " after " << attempts << " attempts in a box of " << width << " x "
+        << height << "; expected fewer or smaller disks or a lower initial fraction";
       throw InputError(s.str());
     }
   }

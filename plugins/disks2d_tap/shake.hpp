@@ -19,7 +19,8 @@ namespace granpipe::disks2d_tap {
 // disks on the base there. Both only ever separate disks.
 enum class Dilation : std::uint8_t { CentreHeight, HeightAboveContact };
 inline ChoiceNames<Dilation> choice_names(Dilation) {  // parameter dilation
-  return {{"centre_height", Dilation::CentreHeight}, {"height_above_contact", Dilation::HeightAboveContact}};
+  return {{"centre_height", Dilation::CentreHeight},
+          {"height_above_contact", Dilation::HeightAboveContact}};
 }
 
 // Loops per tap that put the order-disorder transition where the paper has it (between

@@ -72,8 +72,8 @@ TapStep TapSchedule::at(std::int64_t tap) const {
   } else if (level == 0) {
     step.amplitude = A_min_;
   } else {
-    step.amplitude = A_min_ + (A_max_ - A_min_) * static_cast<double>(level) /
-                                  static_cast<double>(steps_);
+    step.amplitude =
+        A_min_ + (A_max_ - A_min_) * static_cast<double>(level) / static_cast<double>(steps_);
   }
   step.save = (within % taps_per_step_ + 1) % save_every_ == 0;
   return step;

@@ -20,9 +20,9 @@ class TapSchedule {
   // from, from - step, from - 2 step, ... that lie above A (none saved). A bed brought
   // slowly down from the disordered regime ends in one layered domain, where a bed tapped
   // at A from a random deposit freezes its domains.
-  static TapSchedule cooled_constant(double from, double step, std::int64_t taps_per_step,
-                                     double A, std::int64_t equilibration,
-                                     std::int64_t production, std::int64_t save_every);
+  static TapSchedule cooled_constant(double from, double step, std::int64_t taps_per_step, double A,
+                                     std::int64_t equilibration, std::int64_t production,
+                                     std::int64_t save_every);
   // `cycles` times: A rises from A_min to A_max in `steps` steps of `taps_per_step` taps
   // (A_min + k dA, k = 1..steps), then falls back through the same levels, each computed
   // from its index so that it is the same double both ways. Half-cycle

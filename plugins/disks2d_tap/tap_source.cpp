@@ -31,8 +31,7 @@ Schema schema() {
          "disk radius (mean radius when radius_spread > 0); the paper's 0.1 + 1/sqrt2")
       .range(1e-50, 1e50)
       .unit("length");
-  s.real("radius_spread", 0.0,
-         "polydispersity: radii uniform in radius * [1 - spread, 1 + spread]")
+  s.real("radius_spread", 0.0, "polydispersity: radii uniform in radius * [1 - spread, 1 + spread]")
       .range(0.0, 0.5);
   // Random sequential placement jams near 0.547, and the centres of a narrow box reach
   // less than its width: 0.5 is out of reach at the paper's width.
@@ -52,18 +51,21 @@ Schema schema() {
       .min(0.0, true)
       .max(1.0)
       .unit("length");
-  s.choice<RollMeasure>("roll_measure", RollMeasure::CentrePath,
-           "what delta measures in a roll: the arc of the rolling disk's centre (radius "
-           "r_i + r_s) or of the contact point on the support (radius r_s)");
-  s.choice<MoveOrder>("move_order", MoveOrder::Sweeps,
-           "sweeps: every unstable disk moves once per sweep, in shuffled order; random: each "
-           "move picks a random unstable disk");
-  s.choice<SupportUpdate>("support_update", SupportUpdate::Drop,
-           "when a disk moves, the disks it supports lose it (drop), or keep it while still "
-           "touching to 1e-9 radius and still stable (keep_touching)");
+  s.choice<RollMeasure>(
+      "roll_measure", RollMeasure::CentrePath,
+      "what delta measures in a roll: the arc of the rolling disk's centre (radius "
+      "r_i + r_s) or of the contact point on the support (radius r_s)");
+  s.choice<MoveOrder>(
+      "move_order", MoveOrder::Sweeps,
+      "sweeps: every unstable disk moves once per sweep, in shuffled order; random: each "
+      "move picks a random unstable disk");
+  s.choice<SupportUpdate>(
+      "support_update", SupportUpdate::Drop,
+      "when a disk moves, the disks it supports lose it (drop), or keep it while still "
+      "touching to 1e-9 radius and still stable (keep_touching)");
   s.choice<Dilation>("dilation", Dilation::CentreHeight,
-           "a tap multiplies centre heights y (the paper's wording) or heights above the "
-           "lowest centre position y - r_min by A");
+                     "a tap multiplies centre heights y (the paper's wording) or heights above the "
+                     "lowest centre position y - r_min by A");
   s.integer("mc_loops", kPaperMatchedMcLoops,
             "Monte Carlo loops after each dilation, each trying one jump per disk; the "
             "default puts the order-disorder transition where the paper's 'about 20' do")
@@ -72,8 +74,8 @@ Schema schema() {
                     "order in which a Monte Carlo loop visits the disks: by index, the same in "
                     "every loop, or a fresh random permutation per loop");
   s.choice<Protocol>("protocol", Protocol::Constant,
-           "constant: equilibration then production taps at A; annealed: A ramped up and "
-           "down between anneal_A_min and anneal_A_max (the paper's Fig. 8)");
+                     "constant: equilibration then production taps at A; annealed: A ramped up and "
+                     "down between anneal_A_min and anneal_A_max (the paper's Fig. 8)");
   s.real("A", 1.1, "tap amplitude of the constant protocol").min(1.0, true);
   s.integer("equilibration_taps", 1000, "constant protocol: taps before saving").min(0);
   s.integer("production_taps", 1000, "constant protocol: taps after equilibration").min(1);
@@ -82,8 +84,7 @@ Schema schema() {
          "cool_step with cool_taps_per_step taps each, saving nothing (0: no cooling)")
       .min(0.0);
   s.real("cool_step", 0.02, "constant protocol: amplitude step of the cooling").min(0.0, true);
-  s.integer("cool_taps_per_step", 2000, "constant protocol: taps at each cooling amplitude")
-      .min(1);
+  s.integer("cool_taps_per_step", 2000, "constant protocol: taps at each cooling amplitude").min(1);
   s.integer("save_every", 10,
             "save every k-th production tap (annealed: every k-th tap of each amplitude step)")
       .min(1);
@@ -125,8 +126,9 @@ TapSchedule tap_schedule(const PluginContext& ctx) {
     }
     if (!(from > p.real("A"))) {
       std::ostringstream s;
-      s << ctx.param("cool_from") << ": expected 0 (no cooling) or an amplitude above A = "
-        << p.real("A") << ", got " << from;
+      s << ctx.param("cool_from")
+        << ": expected 0 (no cooling) or an amplitude above A = " << p.real("A") << ", got "
+        << from;
       throw InputError(s.str());
     }
     return TapSchedule::cooled_constant(from, p.real("cool_step"), p.integer("cool_taps_per_step"),
@@ -135,8 +137,9 @@ TapSchedule tap_schedule(const PluginContext& ctx) {
   }
   if (!(p.real("anneal_A_max") > p.real("anneal_A_min"))) {
     std::ostringstream s;
-    s << ctx.param("anneal_A_max") << ": expected more than anneal_A_min = " << p.real("anneal_A_min")
-      << ", got " << p.real("anneal_A_max");
+    s << ctx.param("anneal_A_max")
+      << ": expected more than anneal_A_min = " << p.real("anneal_A_min") << ", got "
+      << p.real("anneal_A_max");
     throw InputError(s.str());
   }
   return TapSchedule::annealed(p.real("anneal_A_min"), p.real("anneal_A_max"),
@@ -233,8 +236,8 @@ TapSource::TapSource(const PluginContext& ctx)
       shaker_(static_cast<int>(ctx.params.integer("mc_loops")),
               ctx.params.choice<Dilation>("dilation"), ctx.params.choice<McOrder>("mc_order")) {
   const Params& p = ctx.params;
-  packing_ = p.string("initial_file").empty() ? random_placement(ctx, replica_seeds(ctx))
-                                               : saved_bed(ctx);
+  packing_ =
+      p.string("initial_file").empty() ? random_placement(ctx, replica_seeds(ctx)) : saved_bed(ctx);
   if (p.real("delta") > packing_.min_radius()) {
     std::ostringstream s;
     s << ctx.param("delta") << ": expected at most the smallest radius " << packing_.min_radius()
@@ -247,7 +250,8 @@ TapSource::TapSource(const PluginContext& ctx)
                      std::to_string(p.integer("save_every")) + " (else nothing is saved), got " +
                      std::to_string(p.integer("production_taps")));
   }
-  if (protocol == Protocol::Annealed && p.integer("anneal_taps_per_step") < p.integer("save_every")) {
+  if (protocol == Protocol::Annealed &&
+      p.integer("anneal_taps_per_step") < p.integer("save_every")) {
     throw InputError(ctx.param("anneal_taps_per_step") + ": expected at least save_every = " +
                      std::to_string(p.integer("save_every")) + " (else nothing is saved), got " +
                      std::to_string(p.integer("anneal_taps_per_step")));
@@ -291,14 +295,16 @@ void TapSource::finish(Results& results) {
   const DepositStats& d = deposit_->stats();
   const ShakeStats& m = shaker_.stats();
   const auto moves = static_cast<double>(d.moves());
-  results.add_scalar("moves", moves, std::nan(""), "",
-                     "falls and rolls of the deposition pseudo-dynamics, initial deposition included");
+  results.add_scalar(
+      "moves", moves, std::nan(""), "",
+      "falls and rolls of the deposition pseudo-dynamics, initial deposition included");
   results.add_scalar("falls", static_cast<double>(d.falls), std::nan(""), "", "free falls");
   results.add_scalar("rolls", static_cast<double>(d.rolls), std::nan(""), "", "rolls");
   results.add_scalar("taps", static_cast<double>(tap_), std::nan(""), "", "taps done");
-  results.add_scalar("mc_acceptance",
-                     m.trials ? static_cast<double>(m.accepted) / static_cast<double>(m.trials) : 0.0,
-                     std::nan(""), "", "fraction of accepted Monte Carlo jumps during taps");
+  results.add_scalar(
+      "mc_acceptance",
+      m.trials ? static_cast<double>(m.accepted) / static_cast<double>(m.trials) : 0.0,
+      std::nan(""), "", "fraction of accepted Monte Carlo jumps during taps");
   results.add_scalar("deposition_seconds", deposition_seconds_, std::nan(""), "s",
                      "wall time spent depositing");
   results.add_scalar("tap_seconds", tap_seconds_, std::nan(""), "s",

@@ -22,9 +22,9 @@ class TapSource : public Source {
   explicit TapSource(const PluginContext& ctx);
 
   FrameContent content() const override {
-    return {.dim = 2,
-            .columns = {supports_property(), tap_property(), cycle_property(),
-                        amplitude_property()}};
+    return {
+        .dim = 2,
+        .columns = {supports_property(), tap_property(), cycle_property(), amplitude_property()}};
   }
   bool next(Frame& frame) override;
   Work work() const override { return {static_cast<double>(schedule_.total()), "taps", true}; }

@@ -8,8 +8,9 @@ namespace granpipe::force_network {
 ForceContacts force_contacts(const Frame& frame, const ForceSettings& settings,
                              const std::string& where) {
   if (!frame.contacts) {
-    throw InputError(where + ": expected a contact table with normal_force, got a frame "
-                             "without contacts");
+    throw InputError(where +
+                     ": expected a contact table with normal_force, got a frame "
+                     "without contacts");
   }
   if (!frame.contacts->has("normal_force")) {
     throw InputError(where + ": expected the contact column normal_force, got contacts without it");

@@ -12,7 +12,8 @@ ForceCorrelation force_correlation(const Coordinates& points, const std::vector<
   const auto n = static_cast<std::size_t>(bins);
   ForceCorrelation out{r_max, std::vector<double>(n, 0.0), std::vector<double>(n, 0.0)};
   if (points.rows() < 2) return out;
-  const CellList cells(points, container, dim, r_max, where + ": F(r) up to r_max (parameter r_max)");
+  const CellList cells(points, container, dim, r_max,
+                       where + ": F(r) up to r_max (parameter r_max)");
   const double width = r_max / bins;
   // Each unordered pair once: the ratio of Eq. (12), whose double sum counts each twice,
   // is the same.

@@ -19,7 +19,9 @@ struct ForceCorrelation {
   std::vector<double> pairs;        // per bin: unordered pairs of contacts
 
   std::size_t bins() const { return pairs.size(); }
-  double lower(std::size_t k) const { return r_max * static_cast<double>(k) / static_cast<double>(bins()); }
+  double lower(std::size_t k) const {
+    return r_max * static_cast<double>(k) / static_cast<double>(bins());
+  }
   double upper(std::size_t k) const { return lower(k + 1); }
   // F(r) of bin k; 0 when no pair falls in it (`pairs` says so).
   double value(std::size_t k) const { return pairs[k] > 0 ? product_sum[k] / pairs[k] : 0.0; }

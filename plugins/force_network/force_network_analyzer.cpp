@@ -19,12 +19,16 @@ Settings read_settings(const PluginContext& ctx) {
              .r_bins = static_cast<int>(p.integer("r_bins")),
              .by_pass = p.string("by_pass")};
   if (s.f_max / s.bin_width > kMaxPdfBins) {
-    throw InputError(ctx.param("f_max") + ": expected at most " + std::to_string(static_cast<long>(kMaxPdfBins)) +
-                     " bins of bin_width, got f_max / bin_width = " + std::to_string(s.f_max / s.bin_width));
+    throw InputError(
+        ctx.param("f_max") + ": expected at most " +
+        std::to_string(static_cast<long>(kMaxPdfBins)) +
+        " bins of bin_width, got f_max / bin_width = " + std::to_string(s.f_max / s.bin_width));
   }
   if (!s.by_pass.empty() && !is_valid_column_name(s.by_pass)) {
-    throw InputError(ctx.param("by_pass") + ": expected a contact column name (letters, digits "
-                     "and '_', not starting with a digit) or \"\", got \"" + s.by_pass + "\"");
+    throw InputError(ctx.param("by_pass") +
+                     ": expected a contact column name (letters, digits "
+                     "and '_', not starting with a digit) or \"\", got \"" +
+                     s.by_pass + "\"");
   }
   return s;
 }
@@ -33,27 +37,42 @@ Settings read_settings(const PluginContext& ctx) {
 
 Schema schema() {
   Schema s;
-  s.real("min_force", 0.0, "a contact joins a force network when |F_n| > min_force").min(0.0).unit("force");
-  s.boolean("walls", false, "wall contacts with |F_n| > min_force join <F_n>, the PDF and F(r) "
+  s.real("min_force", 0.0, "a contact joins a force network when |F_n| > min_force")
+      .min(0.0)
+      .unit("force");
+  s.boolean("walls", false,
+            "wall contacts with |F_n| > min_force join <F_n>, the PDF and F(r) "
             "(never the networks)");
   s.real("bin_width", 0.2, "bin width of the force PDF, in f = |F_n|/<F_n>").range(1e-6, 1e6);
-  s.real("f_max", 0.0, "upper end of the PDF's f range (rounded to whole bins); 0: the largest "
-         "f of the frame").min(0.0);
-  s.integer("min_fit_samples", 100, "fewer contacts than this: the PDF is not fitted").range(1, 1e12);
+  s.real("f_max", 0.0,
+         "upper end of the PDF's f range (rounded to whole bins); 0: the largest "
+         "f of the frame")
+      .min(0.0);
+  s.integer("min_fit_samples", 100, "fewer contacts than this: the PDF is not fitted")
+      .range(1, 1e12);
   s.real("r_max", 10.0, "upper end of the F(r) range").min(0.0, true).unit("length");
   s.integer("r_bins", 50, "bins of F(r)").range(1, 100000);
-  s.string("by_pass", "", "integer contact column of pass numbers (e.g. mst_pass): also report "
+  s.string("by_pass", "",
+           "integer contact column of pass numbers (e.g. mst_pass): also report "
            "the statistics of the contacts of passes 1..k; \"\": off");
   return s;
 }
 
 Property ForceNetworkAnalyzer::network_property() {
-  return {"network", Scope::Particle, ValueType::Integer, 1, "",
+  return {"network",
+          Scope::Particle,
+          ValueType::Integer,
+          1,
+          "",
           "force network label (0 the largest), -1 for a particle in none"};
 }
 
 Property ForceNetworkAnalyzer::strong_property() {
-  return {"strong", Scope::Contact, ValueType::Small, 1, "",
+  return {"strong",
+          Scope::Contact,
+          ValueType::Small,
+          1,
+          "",
           "1 for a force-network contact with |F_n| above the mean, else 0"};
 }
 
@@ -82,7 +101,8 @@ void ForceNetworkAnalyzer::consume(const Frame& frame, FrameCache&) {
   const FrameAnalysis a = analyse_frame(frame, settings_, where);
   warn_undefined(a, where);
   per_frame_.add_row(per_frame_row(frames_, frame.time, frame.size(), a));
-  if (chosen_.offer(frames_, a.forces.loaded)) paper_ = paper_frame(frame, a, frames_, settings_, where);
+  if (chosen_.offer(frames_, a.forces.loaded))
+    paper_ = paper_frame(frame, a, frames_, settings_, where);
   network_ = a.networks.label;
   strong_ = a.strong.flag;
   ++frames_;
@@ -91,7 +111,8 @@ void ForceNetworkAnalyzer::consume(const Frame& frame, FrameCache&) {
 void ForceNetworkAnalyzer::warn_undefined(const FrameAnalysis& a, const std::string& where) {
   if (!a.forces.samples.empty() || warned_undefined_) return;
   warned_undefined_ = true;
-  log_.warn("force_network: " + where + ": no contact with |F_n| > min_force: its mean_force, "
+  log_.warn("force_network: " + where +
+            ": no contact with |F_n| > min_force: its mean_force, "
             "z_largest and force PDF are undefined (nan in the results, not 0; "
             "docs/force_network.md); said for the first such frame only");
 }
@@ -107,9 +128,11 @@ void ForceNetworkAnalyzer::publish(PropertyTable& columns) {
 
 void ForceNetworkAnalyzer::finish(Results& results) {
   results.add_table("per_frame", per_frame_.table());
-  results.add_plot("networks", {.table = "per_frame", .x = "time",
+  results.add_plot("networks", {.table = "per_frame",
+                                .x = "time",
                                 .y = {"largest_particles", "strong_particles_in_largest"},
-                                .xlabel = "time", .ylabel = "particles",
+                                .xlabel = "time",
+                                .ylabel = "particles",
                                 .title = "largest force network and its strong part"});
   results.add_scalar("frames", static_cast<double>(frames_), std::nan(""), "", "frames measured");
   report_paper_frame(paper_, results);

@@ -38,7 +38,7 @@ class ForceNetworkAnalyzer : public Analyzer {
   bool warned_undefined_ = false;
   StreamedTable per_frame_;
   MostLoadedFrame chosen_;
-  PaperFrame paper_;  // of the chosen frame
+  PaperFrame paper_;    // of the chosen frame
   IndexArray network_;  // of the last frame consumed, for publish()
   IntArray strong_;
 };

@@ -10,7 +10,8 @@ double ForcePdf::density(std::size_t k) const {
 }
 
 double ForcePdf::error(std::size_t k) const {
-  return samples > 0 ? std::sqrt(counts[k]) / (static_cast<double>(samples) * width(k)) : std::nan("");
+  return samples > 0 ? std::sqrt(counts[k]) / (static_cast<double>(samples) * width(k))
+                     : std::nan("");
 }
 
 std::vector<double> pdf_edges(const std::vector<double>& f, double f_max, double width) {
@@ -22,7 +23,8 @@ std::vector<double> pdf_edges(const std::vector<double>& f, double f_max, double
   }
   const auto bins = static_cast<std::size_t>(std::max(1.0, std::round(f_max / width)));
   std::vector<double> edges(bins + 1);
-  for (std::size_t k = 0; k <= bins; ++k) edges[k] = f_max * static_cast<double>(k) / static_cast<double>(bins);
+  for (std::size_t k = 0; k <= bins; ++k)
+    edges[k] = f_max * static_cast<double>(k) / static_cast<double>(bins);
   return edges;
 }
 

@@ -20,8 +20,8 @@ struct FrameAnalysis {
   Networks networks;
   StrongNetwork strong;
   std::vector<double> scaled;  // f = |F_n| / <F_n> of each sample
-  ForcePdf pdf;  // of f over the samples
-  PdfFit fit;    // Eq. (11)
+  ForcePdf pdf;                // of f over the samples
+  PdfFit fit;                  // Eq. (11)
 };
 
 // Throws InputError after `where` for a frame without contacts or normal_force.

@@ -14,8 +14,9 @@ const char* const kEq13 = "P(f) = a (1 - b exp(-(f - alpha)^2)) exp(-beta (f - g
 // Adds the fit (when it has values) and its status scalar.
 void add_fit(Results& results, const std::string& name, const PdfFit& fit, const std::string& doc) {
   results.add_scalar(name + "_status", static_cast<double>(fit.status), std::nan(""), "",
-                     doc + ": " + describe(fit.status) + " (0 fitted, 1 too few samples, 2 no "
-                     "convergence, 3 no reference fit, 4 a parameter not determined)");
+                     doc + ": " + describe(fit.status) +
+                         " (0 fitted, 1 too few samples, 2 no "
+                         "convergence, 3 no reference fit, 4 a parameter not determined)");
   if (!fit.fitted()) return;
   Fit out;
   out.model = kEq13;
@@ -40,8 +41,13 @@ void add_pdf_table(const PaperFrame& p, Results& results) {
                p.pdf.error(k), p.pdf.counts[k], model});
   }
   results.add_table("pdf", std::move(t));
-  results.add_plot("pdf", {.table = "pdf", .x = "f", .y = {"density", "eq11"}, .xlabel = "f",
-                           .ylabel = "P(f)", .title = "force PDF and Eq. (11)", .logy = true});
+  results.add_plot("pdf", {.table = "pdf",
+                           .x = "f",
+                           .y = {"density", "eq11"},
+                           .xlabel = "f",
+                           .ylabel = "P(f)",
+                           .title = "force PDF and Eq. (11)",
+                           .logy = true});
 }
 
 void add_correlation_table(const PaperFrame& p, Results& results) {
@@ -54,8 +60,12 @@ void add_correlation_table(const PaperFrame& p, Results& results) {
     t.add_row({c.lower(k), c.upper(k), 0.5 * (c.lower(k) + c.upper(k)), c.value(k), c.pairs[k]});
   }
   results.add_table("correlation", std::move(t));
-  results.add_plot("correlation", {.table = "correlation", .x = "r", .y = {"F"}, .xlabel = "r",
-                                   .ylabel = "F(r)", .title = "force-force correlation"});
+  results.add_plot("correlation", {.table = "correlation",
+                                   .x = "r",
+                                   .y = {"F"},
+                                   .xlabel = "r",
+                                   .ylabel = "F(r)",
+                                   .title = "force-force correlation"});
 }
 
 // Per pass k: the subset's contacts and its two Eq. (13) fits, in one table and as fits.
@@ -78,7 +88,8 @@ void add_pass_fits(const PaperFrame& p, Results& results) {
                static_cast<double>(s.shift_fit.status), sv[kAlpha], se[kAlpha], sv[kGamma],
                se[kGamma], per_dof(s.shift_fit)});
     const std::string name = "pass_" + std::to_string(s.pass) + "_eq13";
-    add_fit(results, name + "_free", s.free_fit, "Eq. (13) fit, gamma = 0, of passes 1.." + std::to_string(s.pass));
+    add_fit(results, name + "_free", s.free_fit,
+            "Eq. (13) fit, gamma = 0, of passes 1.." + std::to_string(s.pass));
     add_fit(results, name + "_shift", s.shift_fit,
             "Eq. (13) fit, a, b, beta of eq11, of passes 1.." + std::to_string(s.pass));
   }
@@ -104,8 +115,13 @@ void add_pass_pdfs(const PaperFrame& p, Results& results) {
     t.add_row(row);
   }
   results.add_table("pass_pdf", std::move(t));
-  Plot plot{.table = "pass_pdf", .x = "f", .y = {"density_all"}, .xlabel = "f", .ylabel = "P(f)",
-            .title = "force PDF by MST pass", .logy = true};
+  Plot plot{.table = "pass_pdf",
+            .x = "f",
+            .y = {"density_all"},
+            .xlabel = "f",
+            .ylabel = "P(f)",
+            .title = "force PDF by MST pass",
+            .logy = true};
   for (const PassSubset& s : p.passes) plot.y.push_back("density_pass_" + std::to_string(s.pass));
   results.add_plot("pass_pdf", plot);
 }
@@ -117,8 +133,9 @@ void add_pass_correlations(const PaperFrame& p, Results& results) {
     columns.push_back("F_pass_" + std::to_string(s.pass));
     columns.push_back("pairs_pass_" + std::to_string(s.pass));
   }
-  Table t(std::move(columns), "F(r) of Eq. (12) of the contacts of passes 1..k (forces scaled by "
-                              "the full network's mean), beside the full network's");
+  Table t(std::move(columns),
+          "F(r) of Eq. (12) of the contacts of passes 1..k (forces scaled by "
+          "the full network's mean), beside the full network's");
   t.units[0] = "length";
   const ForceCorrelation& c = p.correlation;
   for (std::size_t k = 0; k < c.bins(); ++k) {
@@ -130,8 +147,12 @@ void add_pass_correlations(const PaperFrame& p, Results& results) {
     t.add_row(row);
   }
   results.add_table("pass_correlation", std::move(t));
-  Plot plot{.table = "pass_correlation", .x = "r", .y = {"F_all"}, .xlabel = "r",
-            .ylabel = "F(r)", .title = "force-force correlation by MST pass"};
+  Plot plot{.table = "pass_correlation",
+            .x = "r",
+            .y = {"F_all"},
+            .xlabel = "r",
+            .ylabel = "F(r)",
+            .title = "force-force correlation by MST pass"};
   for (const PassSubset& s : p.passes) plot.y.push_back("F_pass_" + std::to_string(s.pass));
   results.add_plot("pass_correlation", plot);
 }

@@ -18,9 +18,10 @@ std::vector<Eigen::Index> captured_by(const ForceContacts& forces, const IndexAr
 long largest_pass(const IndexArray& pass, const Settings& settings, const std::string& where) {
   const long largest = pass.size() > 0 ? static_cast<long>(pass.maxCoeff()) : 0;
   if (largest > kMaxPasses) {
-    throw InputError(where + ": contact column " + settings.by_pass + " (by_pass): expected pass "
-                     "numbers up to " + std::to_string(kMaxPasses) + ", got " +
-                     std::to_string(largest));
+    throw InputError(where + ": contact column " + settings.by_pass +
+                     " (by_pass): expected pass "
+                     "numbers up to " +
+                     std::to_string(kMaxPasses) + ", got " + std::to_string(largest));
   }
   return largest;
 }
@@ -49,7 +50,8 @@ PdfFit shift_fit(const ForcePdf& pdf, const PdfFit& full, long min_samples) {
 
 }  // namespace
 
-const IndexArray& pass_column(const Frame& frame, const Settings& settings, const std::string& where) {
+const IndexArray& pass_column(const Frame& frame, const Settings& settings,
+                              const std::string& where) {
   if (!frame.contacts || !frame.contacts->has(settings.by_pass)) {
     throw InputError(where + ": expected the contact column " + settings.by_pass +
                      " (parameter by_pass), got contacts without it");

@@ -36,7 +36,8 @@ inline constexpr long kMaxPasses = 1000;
 
 // The frame's pass column named by settings.by_pass. Throws InputError after `where`
 // when the frame has no contacts or the contacts lack it.
-const IndexArray& pass_column(const Frame& frame, const Settings& settings, const std::string& where);
+const IndexArray& pass_column(const Frame& frame, const Settings& settings,
+                              const std::string& where);
 
 // Throws InputError after `where` when the pass column is missing, or holds a pass beyond
 // kMaxPasses.

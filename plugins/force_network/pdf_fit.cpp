@@ -49,8 +49,8 @@ int residuals(const gsl_vector* x, void* data, gsl_vector* r) {
   const ForcePdf& pdf = problem.pdf;
   for (std::size_t k = 0; k < pdf.bins(); ++k) {
     // Simpson's rule: the model's mean over the bin, which the histogram measures.
-    const double mean = (eq13(p, pdf.edges[k]) + 4.0 * eq13(p, pdf.centre(k)) +
-                         eq13(p, pdf.edges[k + 1])) / 6.0;
+    const double mean =
+        (eq13(p, pdf.edges[k]) + 4.0 * eq13(p, pdf.centre(k)) + eq13(p, pdf.edges[k + 1])) / 6.0;
     gsl_vector_set(r, k, (mean - pdf.density(k)) / problem.sigma(k));
   }
   return GSL_SUCCESS;
@@ -102,7 +102,8 @@ bool read_solution(gsl_multifit_nlinear_workspace* w, const Problem& problem, Pd
       fit.covariance(static_cast<Eigen::Index>(m), static_cast<Eigen::Index>(l)) =
           scale * gsl_matrix_get(covariance.get(), m, l);
     }
-    fit.error[problem.moved[m]] = std::sqrt(fit.covariance(static_cast<Eigen::Index>(m), static_cast<Eigen::Index>(m)));
+    fit.error[problem.moved[m]] =
+        std::sqrt(fit.covariance(static_cast<Eigen::Index>(m), static_cast<Eigen::Index>(m)));
   }
   bool finite = std::isfinite(fit.chi2);
   for (int q = 0; q < kParameters; ++q) {
@@ -141,10 +142,9 @@ FitStatus minimise(Problem& problem, const Parameters& start, PdfFit& fit) {
   for (int q : problem.moved) x.push_back(start[q]);
   gsl_vector_view x0 = gsl_vector_view_array(x.data(), p);
   int info = 0;
-  const bool converged =
-      gsl_multifit_nlinear_init(&x0.vector, &fdf, w.get()) == GSL_SUCCESS &&
-      gsl_multifit_nlinear_driver(500, 1e-10, 1e-10, 0.0, nullptr, nullptr, &info, w.get()) ==
-          GSL_SUCCESS;
+  const bool converged = gsl_multifit_nlinear_init(&x0.vector, &fdf, w.get()) == GSL_SUCCESS &&
+                         gsl_multifit_nlinear_driver(500, 1e-10, 1e-10, 0.0, nullptr, nullptr,
+                                                     &info, w.get()) == GSL_SUCCESS;
   if (!converged) return FitStatus::NotConverged;
   if (!determined(w.get())) return FitStatus::NotDetermined;
   return read_solution(w.get(), problem, fit) ? FitStatus::Fitted : FitStatus::NotConverged;
@@ -159,11 +159,16 @@ double eq13(const Parameters& p, double f) {
 
 const char* describe(FitStatus s) {
   switch (s) {
-    case FitStatus::Fitted: return "fitted";
-    case FitStatus::TooFewSamples: return "not fitted: too few samples";
-    case FitStatus::NotConverged: return "not fitted: no convergence";
-    case FitStatus::NoReference: return "not fitted: the full network's fit has no values";
-    case FitStatus::NotDetermined: return "not fitted: a parameter is not determined by the data";
+    case FitStatus::Fitted:
+      return "fitted";
+    case FitStatus::TooFewSamples:
+      return "not fitted: too few samples";
+    case FitStatus::NotConverged:
+      return "not fitted: no convergence";
+    case FitStatus::NoReference:
+      return "not fitted: the full network's fit has no values";
+    case FitStatus::NotDetermined:
+      return "not fitted: a parameter is not determined by the data";
   }
   return "";
 }
@@ -188,8 +193,8 @@ FitRequest eq11_request(long min_samples) {
   FitRequest r;
   const double b = 0.75, beta = 1.5;
   // The integral of exp(-f^2 - beta f) over f > 0.
-  const double bump = 0.5 * std::sqrt(std::numbers::pi) * std::exp(0.25 * beta * beta) *
-                      std::erfc(0.5 * beta);
+  const double bump =
+      0.5 * std::sqrt(std::numbers::pi) * std::exp(0.25 * beta * beta) * std::erfc(0.5 * beta);
   r.start = {1.0 / (1.0 / beta - b * bump), b, 0.0, beta, 0.0};
   r.free = {true, true, false, true, false};
   r.min_samples = min_samples;

@@ -31,20 +31,24 @@ double eq13(const Parameters& p, double f);
 // no values; 4 it converged, but the data do not determine every free parameter (the
 // Jacobian is singular to double precision: such a parameter's error would be 1e8 or more).
 enum class FitStatus : std::uint8_t {
-  Fitted = 0, TooFewSamples = 1, NotConverged = 2, NoReference = 3, NotDetermined = 4
+  Fitted = 0,
+  TooFewSamples = 1,
+  NotConverged = 2,
+  NoReference = 3,
+  NotDetermined = 4
 };
 const char* describe(FitStatus s);
 
 struct FitRequest {
-  Parameters start{};                // start values, and the values of fixed parameters
+  Parameters start{};  // start values, and the values of fixed parameters
   std::array<bool, kParameters> free{};
-  long min_samples = 100;            // fewer samples: not fitted
+  long min_samples = 100;  // fewer samples: not fitted
 };
 
 struct PdfFit {
   FitStatus status = FitStatus::TooFewSamples;
-  Parameters value{};  // 0 when not fitted
-  Parameters error{};  // 0 for fixed parameters and when not fitted
+  Parameters value{};                  // 0 when not fitted
+  Parameters error{};                  // 0 for fixed parameters and when not fitted
   std::vector<int> fitted_parameters;  // the free ones, in Parameter order
   Eigen::MatrixXd covariance;          // of the free ones, scaled as the errors are
   double chi2 = 0.0;

@@ -9,7 +9,8 @@ StrongNetwork strong_network(const Frame& frame, const ForceContacts& forces,
   StrongNetwork out;
   out.flag = IntArray::Zero(ci.size());
   std::vector<Eigen::Index> rows;
-  Eigen::Array<bool, Eigen::Dynamic, 1> touched = Eigen::Array<bool, Eigen::Dynamic, 1>::Zero(frame.size());
+  Eigen::Array<bool, Eigen::Dynamic, 1> touched =
+      Eigen::Array<bool, Eigen::Dynamic, 1>::Zero(frame.size());
   for (Eigen::Index row : forces.edges) {
     if (!(forces.magnitude[row] > forces.mean)) continue;
     out.flag[row] = 1;

@@ -36,19 +36,20 @@ H5mdSource::H5mdSource(const PluginContext& ctx)
   const FrameFileInfo& info = reader_.info();
   const long frames = info.frames;
   const std::string held = " (" + info.path + " holds " + std::to_string(frames) + " frames)";
-  if (frames == 0) throw InputError(ctx.param("file") + ": expected a file with frames, got none" + held);
+  if (frames == 0)
+    throw InputError(ctx.param("file") + ": expected a file with frames, got none" + held);
   if (first_ >= frames) {
-    throw InputError(ctx.param("first") + ": expected a frame index below " + std::to_string(frames) +
-                     ", got " + std::to_string(first_) + held);
+    throw InputError(ctx.param("first") + ": expected a frame index below " +
+                     std::to_string(frames) + ", got " + std::to_string(first_) + held);
   }
   if (last_ == -1) last_ = frames - 1;
   if (last_ >= frames) {
-    throw InputError(ctx.param("last") + ": expected -1 or a frame index below " + std::to_string(frames) +
-                     ", got " + std::to_string(last_) + held);
+    throw InputError(ctx.param("last") + ": expected -1 or a frame index below " +
+                     std::to_string(frames) + ", got " + std::to_string(last_) + held);
   }
   if (last_ < first_) {
-    throw InputError(ctx.param("last") + ": expected -1 or an index >= first (" + std::to_string(first_) +
-                     "), got " + std::to_string(last_));
+    throw InputError(ctx.param("last") + ": expected -1 or an index >= first (" +
+                     std::to_string(first_) + "), got " + std::to_string(last_));
   }
   // A longer stride reads the first frame only, as this one does; it would overflow the
   // frame index.
@@ -57,8 +58,10 @@ H5mdSource::H5mdSource(const PluginContext& ctx)
                      std::to_string(stride_) + held);
   }
   if (!info.complete) {
-    ctx.log.warn(info.path + ": the writer never finished this file (stopped or crashed); "
-                 "reading the " + std::to_string(frames) + " frames it completed");
+    ctx.log.warn(info.path +
+                 ": the writer never finished this file (stopped or crashed); "
+                 "reading the " +
+                 std::to_string(frames) + " frames it completed");
   }
   next_ = first_;
   // The first frame is read and checked now, so that bad particles stop the pipeline at
@@ -114,8 +117,8 @@ void H5mdSource::check_overlaps(const Frame& frame, const std::string& where) co
       std::ostringstream msg;
       msg << where << ": particles " << i << " and " << j << " (ids " << frame.id()[i] << ", "
           << frame.id()[j] << ") overlap by " << overlap
-          << " of the smaller radius, expected at most " << max_overlap_
-          << " (raise " << max_overlap_param_ << " for soft-particle data)";
+          << " of the smaller radius, expected at most " << max_overlap_ << " (raise "
+          << max_overlap_param_ << " for soft-particle data)";
       throw InputError(msg.str());
     }
   }
@@ -124,8 +127,8 @@ void H5mdSource::check_overlaps(const Frame& frame, const std::string& where) co
 void H5mdSource::finish(Results& results) {
   results.add_scalar("frames_read", static_cast<double>(read_), std::nan(""), "",
                      "frames read from " + reader_.info().path);
-  results.add_scalar("particles", static_cast<double>(reader_.info().particles), std::nan(""),
-                     "", "particles per frame");
+  results.add_scalar("particles", static_cast<double>(reader_.info().particles), std::nan(""), "",
+                     "particles per frame");
 }
 
 }  // namespace granpipe::h5md

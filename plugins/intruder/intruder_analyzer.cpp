@@ -25,8 +25,8 @@ Eigen::Index find_intruder(const Frame& f, const std::string& where) {
   const auto ties = (f.radius() >= equal).count();
   if (ties > 1) {
     throw InputError(where + ": expected an intruder (one particle larger than every other), got " +
-                     std::to_string(ties) + " particles of the largest radius " + format_number(largest) +
-                     " (a bed without an intruder?)");
+                     std::to_string(ties) + " particles of the largest radius " +
+                     format_number(largest) + " (a bed without an intruder?)");
   }
   return big;
 }
@@ -94,12 +94,16 @@ void IntruderAnalyzer::consume(const Frame& frame, FrameCache&) {
 void IntruderAnalyzer::finish(Results& results) {
   results.add_table("per_frame", per_frame_.table());
   results.add_table("transitions", transitions_);
-  results.add_plot("heights", {.table = "per_frame", .x = "time",
-                               .y = {"intruder_height", "bed_height"}, .xlabel = "time",
+  results.add_plot("heights", {.table = "per_frame",
+                               .x = "time",
+                               .y = {"intruder_height", "bed_height"},
+                               .xlabel = "time",
                                .ylabel = "height above the base",
                                .title = "intruder and bed centre of mass"});
-  results.add_plot("velocities", {.table = "per_frame", .x = "time",
-                                  .y = {"intruder_velocity", "bed_velocity"}, .xlabel = "time",
+  results.add_plot("velocities", {.table = "per_frame",
+                                  .x = "time",
+                                  .y = {"intruder_velocity", "bed_velocity"},
+                                  .xlabel = "time",
                                   .ylabel = "vertical velocity",
                                   .title = "intruder and bed centre of mass"});
   results.add_scalar("frames", static_cast<double>(frames_), std::nan(""), "", "frames measured");

@@ -1,7 +1,7 @@
 #pragma once
 // The observables of the Brazil-nut paper's Figs. 3, 8, 9 and 10, per frame: the heights of
-// the intruder (the one largest particle: find_intruder) and of the centre of mass of the other particles above
-// the base, which moves with the container, their vertical velocities, the mean
+// the intruder (the one largest particle: find_intruder) and of the centre of mass of the other
+// particles above the base, which moves with the container, their vertical velocities, the mean
 // coordination number from the frame's contact table (particle pairs only, each contact
 // counted for both particles), and the stage of the cycle.
 //

@@ -83,7 +83,8 @@ AtomsSection find_atoms_section(Lines& lines, const std::string& where) {
     }
     if (w.empty() || w[0] != "Atoms") continue;
     a.section_line = lines.number();
-    const std::vector<std::string> style = words(line.substr(std::min(line.find('#'), line.size())));
+    const std::vector<std::string> style =
+        words(line.substr(std::min(line.find('#'), line.size())));
     if (style.size() >= 2 && style[1] != "sphere") {
       throw InputError(where + ": line " + std::to_string(lines.number()) +
                        ": expected the Atoms section of atom_style sphere, got atom_style \"" +

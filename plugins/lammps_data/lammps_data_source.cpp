@@ -22,7 +22,8 @@ Schema schema() {
   Schema s;
   s.path("file", std::nullopt, "LAMMPS data file (atom_style sphere)");
   s.real("cylinder_radius", 0.0, "radius of the vertical cylinder the particles are in (0: none)")
-      .min(0.0).unit("length");
+      .min(0.0)
+      .unit("length");
   s.real("base", 0.0, "height of the flat base").unit("length");
   s.real("top", 100.0, "height of the container's open top").unit("length");
   return s;
@@ -37,8 +38,11 @@ LammpsDataSource::LammpsDataSource(const PluginContext& ctx) {
   frame_.check(file);
   const double r = ctx.params.real("cylinder_radius"), base = ctx.params.real("base");
   const double top = ctx.params.real("top");
-  if (!(top > base)) throw InputError(ctx.param("top") + ": expected a height above base, got " + format_number(top));
-  const double half = r > 0 ? r : (frame_.position().leftCols(2).abs().maxCoeff() + frame_.radius().maxCoeff());
+  if (!(top > base))
+    throw InputError(ctx.param("top") + ": expected a height above base, got " +
+                     format_number(top));
+  const double half =
+      r > 0 ? r : (frame_.position().leftCols(2).abs().maxCoeff() + frame_.radius().maxCoeff());
   frame_.container = Container::open_top_box(3, Eigen::Vector3d(-half, -half, base),
                                              Eigen::Vector3d(half, half, top));
   if (r > 0) {

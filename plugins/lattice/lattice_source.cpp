@@ -8,25 +8,29 @@ namespace granpipe::lattice {
 namespace {
 // The box around the crystal (parameter boundary).
 enum class Sides : std::uint8_t { Periodic, Walls };
-ChoiceNames<Sides> choice_names(Sides) { return {{"periodic", Sides::Periodic}, {"walls", Sides::Walls}}; }
+ChoiceNames<Sides> choice_names(Sides) {
+  return {{"periodic", Sides::Periodic}, {"walls", Sides::Walls}};
+}
 }  // namespace
 
 Schema schema() {
   Schema s;
-  s.choice<Lattice>("lattice", Lattice::Fcc,
-           "crystal: square, triangular (2D); sc, bcc, fcc, hcp (3D, hcp stacked along z)");
-  s.integers("cells", std::vector<std::int64_t>{},
-             "unit cells per axis, one entry per axis (2 in 2D, 3 in 3D); empty: 4 per axis. "
-             "Cells are rectangular: triangular 1 x sqrt3 (2 particles), hcp 1 x sqrt3 x "
-             "sqrt(8/3) (4 particles), in nearest-neighbour distances; at most 10^7 particles in all")
+  s.choice<Lattice>(
+      "lattice", Lattice::Fcc,
+      "crystal: square, triangular (2D); sc, bcc, fcc, hcp (3D, hcp stacked along z)");
+  s.integers(
+       "cells", std::vector<std::int64_t>{},
+       "unit cells per axis, one entry per axis (2 in 2D, 3 in 3D); empty: 4 per axis. "
+       "Cells are rectangular: triangular 1 x sqrt3 (2 particles), hcp 1 x sqrt3 x "
+       "sqrt(8/3) (4 particles), in nearest-neighbour distances; at most 10^7 particles in all")
       .min(1);
   // Squared distances and volumes of any lattice must stay normal doubles.
   s.real("radius", 0.5, "particle radius; nearest neighbours touch (their distance is 2 radius)")
       .range(1e-50, 1e50)
       .unit("length");
   s.choice<Sides>("boundary", Sides::Periodic,
-           "periodic: the box is exactly the periodic repeat; walls: a box tight around the "
-           "particles with walls on every side but an open top");
+                  "periodic: the box is exactly the periodic repeat; walls: a box tight around the "
+                  "particles with walls on every side but an open top");
   s.real("jitter", 0.0,
          "each particle is displaced uniformly within a disk/ball of radius jitter*radius, and "
          "every radius is reduced to radius*(1 - jitter), so jittered particles never overlap "

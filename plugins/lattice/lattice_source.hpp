@@ -25,9 +25,9 @@ class LatticeSource : public Source {
 
   Seeds seeds_;
   UnitCell cell_;
-  double radius_;          // nominal radius: nearest-neighbour distance / 2
-  double jitter_;          // displacement bound, in units of radius_
-  Frame perfect_;          // the unjittered frame, copied for every frame
+  double radius_;  // nominal radius: nearest-neighbour distance / 2
+  double jitter_;  // displacement bound, in units of radius_
+  Frame perfect_;  // the unjittered frame, copied for every frame
   std::int64_t frames_ = 1, next_ = 0;
 };
 

@@ -32,7 +32,10 @@ UnitCell unit_cell(Lattice lattice) {
       const double cz = std::sqrt(8.0 / 3.0);
       return {3,
               {1, s3, cz},
-              {{0, 0, 0}, {0.5, 0.5 * s3, 0}, {0.5, s3 / 6, 0.5 * cz}, {0, s3 / 6 + 0.5 * s3, 0.5 * cz}}};
+              {{0, 0, 0},
+               {0.5, 0.5 * s3, 0},
+               {0.5, s3 / 6, 0.5 * cz},
+               {0, s3 / 6 + 0.5 * s3, 0.5 * cz}}};
     }
   }
   throw InternalError("lattice: an unnamed lattice");

@@ -19,8 +19,9 @@ struct UnitCell {
 enum class Lattice : std::uint8_t { Square, Triangular, Sc, Bcc, Fcc, Hcp };
 // Their names in pipelines, 2D ones first.
 inline ChoiceNames<Lattice> choice_names(Lattice) {
-  return {{"square", Lattice::Square}, {"triangular", Lattice::Triangular}, {"sc", Lattice::Sc},
-          {"bcc", Lattice::Bcc},       {"fcc", Lattice::Fcc},               {"hcp", Lattice::Hcp}};
+  return {{"square", Lattice::Square}, {"triangular", Lattice::Triangular},
+          {"sc", Lattice::Sc},         {"bcc", Lattice::Bcc},
+          {"fcc", Lattice::Fcc},       {"hcp", Lattice::Hcp}};
 }
 
 // square, triangular (2D); sc, bcc, fcc, hcp (3D).

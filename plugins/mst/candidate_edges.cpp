@@ -29,7 +29,8 @@ std::vector<Edge> cutoff_edges(const Frame& frame, double factor, const std::str
   cells.for_each_pair([&](int i, int j, const double*, double r2) {
     const double reach = factor * (r[i] + r[j]);
     if (r2 < reach * reach) {
-      edges.push_back({std::sqrt(r2), static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
+      edges.push_back(
+          {std::sqrt(r2), static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
     }
   });
   return edges;

@@ -36,7 +36,8 @@ double centre_distance(const Frame& f, std::int64_t a, std::int64_t b) {
 ContactPairs from_table(const Frame& f, const std::vector<Eigen::Index>& counted) {
   ContactPairs c;
   c.from_table = true;
-  for (Eigen::Index row : counted) c.pairs.push_back(ordered(f.contact_i()[row], f.contact_j()[row]));
+  for (Eigen::Index row : counted)
+    c.pairs.push_back(ordered(f.contact_i()[row], f.contact_j()[row]));
   std::sort(c.pairs.begin(), c.pairs.end());
   c.pairs.erase(std::unique(c.pairs.begin(), c.pairs.end()), c.pairs.end());
   c.pair_of_row.assign(static_cast<std::size_t>(f.contacts->rows()), -1);
@@ -65,7 +66,7 @@ std::int64_t ContactPairs::find(std::int64_t i, std::int64_t j) const {
 ContactPairs contact_pairs(const Frame& frame, FrameCache& cache, const ContactRule& rule,
                            const std::string& where) {
   const std::vector<Eigen::Index> loaded = loaded_pair_contacts(frame, where);
-  ContactPairs c = !frame.contacts ? by_distance(frame, cache, rule.tolerance)
+  ContactPairs c = !frame.contacts            ? by_distance(frame, cache, rule.tolerance)
                    : rule.zero_force_contacts ? from_table(frame, pair_rows(frame))
                                               : from_table(frame, loaded);
   c.loaded = static_cast<std::int64_t>(loaded.size());

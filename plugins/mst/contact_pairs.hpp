@@ -31,7 +31,7 @@ struct ContactPairs {
 };
 
 struct ContactRule {
-  bool zero_force_contacts = false;  // table rows with F_n = 0 count too
+  bool zero_force_contacts = false;             // table rows with F_n = 0 count too
   double tolerance = kDefaultContactTolerance;  // relative, for contacts by distance
 };
 

@@ -17,14 +17,13 @@ namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Vb3 = CGAL::Triangulation_vertex_base_with_info_3<std::uint32_t, Kernel>;
-using Delaunay3 =
-    CGAL::Delaunay_triangulation_3<Kernel, CGAL::Triangulation_data_structure_3<Vb3>>;
+using Delaunay3 = CGAL::Delaunay_triangulation_3<Kernel, CGAL::Triangulation_data_structure_3<Vb3>>;
 using Vb2 = CGAL::Triangulation_vertex_base_with_info_2<std::uint32_t, Kernel>;
-using Delaunay2 =
-    CGAL::Delaunay_triangulation_2<Kernel, CGAL::Triangulation_data_structure_2<Vb2>>;
+using Delaunay2 = CGAL::Delaunay_triangulation_2<Kernel, CGAL::Triangulation_data_structure_2<Vb2>>;
 
 Edge edge_between(const Frame& f, std::uint32_t a, std::uint32_t b) {
-  return {(f.position().row(a) - f.position().row(b)).matrix().norm(), std::min(a, b), std::max(a, b)};
+  return {(f.position().row(a) - f.position().row(b)).matrix().norm(), std::min(a, b),
+          std::max(a, b)};
 }
 
 Kernel::Point_3 point3(const Frame& f, Eigen::Index k) {
@@ -61,7 +60,8 @@ std::vector<Edge> triangulation_edges(const Frame& f, PointOf point_of) {
     const auto [a, b] = ends(*e);
     edges.push_back(edge_between(f, a, b));
   }
-  for (auto v = t.finite_vertices_begin(); v != t.finite_vertices_end(); ++v) kept[v->info()] = true;
+  for (auto v = t.finite_vertices_begin(); v != t.finite_vertices_end(); ++v)
+    kept[v->info()] = true;
   for (const auto& [p, k] : points) {
     if (!kept[k]) edges.push_back(edge_between(f, k, t.nearest_vertex(p)->info()));
   }
@@ -73,9 +73,10 @@ std::vector<Edge> triangulation_edges(const Frame& f, PointOf point_of) {
 std::vector<Edge> delaunay_edges(const Frame& frame, const std::string& where) {
   for (int a = 0; a < frame.dim; ++a) {
     if (frame.container.periodic(a)) {
-      throw InputError(where + ": candidates \"delaunay\" expected a container without periodic "
-                       "sides, got a periodic axis " + std::to_string(a) +
-                       " (use candidates \"cutoff\")");
+      throw InputError(where +
+                       ": candidates \"delaunay\" expected a container without periodic "
+                       "sides, got a periodic axis " +
+                       std::to_string(a) + " (use candidates \"cutoff\")");
     }
   }
   if (frame.size() < 2) return {};

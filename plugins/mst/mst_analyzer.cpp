@@ -10,22 +10,47 @@ namespace granpipe::mst {
 
 namespace {
 
-const Property kMstPass{"mst_pass", Scope::Contact, ValueType::Integer, 1, "",
+const Property kMstPass{"mst_pass",
+                        Scope::Contact,
+                        ValueType::Integer,
+                        1,
+                        "",
                         "first MST pass that selected this contact (0: none, or not counted)"};
-const Property kTcp{"tcp", Scope::Particle, ValueType::Integer, 1, "",
-                    "tree of contacting particles after the last MST pass (0 the largest; -1 none)"};
+const Property kTcp{
+    "tcp",
+    Scope::Particle,
+    ValueType::Integer,
+    1,
+    "",
+    "tree of contacting particles after the last MST pass (0 the largest; -1 none)"};
 
-const std::vector<std::string> kTableColumns = {
-    "pass", "tcp_largest_particles", "tcp_largest_edges", "tcp_others", "tcp_other_edges",
-    "network_largest_particles", "network_largest_edges", "network_others",
-    "network_other_edges", "contacts", "contacts_selected", "recovered_fraction"};
+const std::vector<std::string> kTableColumns = {"pass",
+                                                "tcp_largest_particles",
+                                                "tcp_largest_edges",
+                                                "tcp_others",
+                                                "tcp_other_edges",
+                                                "network_largest_particles",
+                                                "network_largest_edges",
+                                                "network_others",
+                                                "network_other_edges",
+                                                "contacts",
+                                                "contacts_selected",
+                                                "recovered_fraction"};
 
 std::vector<double> table_row(const TcpReport& r, const PassRow& p) {
   auto d = [](std::int64_t v) { return static_cast<double>(v); };
-  return {static_cast<double>(p.pass), d(p.tcp.largest_particles), d(p.tcp.largest_edges),
-          d(p.tcp.others), d(p.tcp.other_edges), d(r.network.largest_particles),
-          d(r.network.largest_edges), d(r.network.others), d(r.network.other_edges),
-          d(r.contacts), d(p.selected), r.recovered(p)};
+  return {static_cast<double>(p.pass),
+          d(p.tcp.largest_particles),
+          d(p.tcp.largest_edges),
+          d(p.tcp.others),
+          d(p.tcp.other_edges),
+          d(r.network.largest_particles),
+          d(r.network.largest_edges),
+          d(r.network.others),
+          d(r.network.other_edges),
+          d(r.contacts),
+          d(p.selected),
+          r.recovered(p)};
 }
 
 }  // namespace
@@ -62,18 +87,16 @@ MstAnalyzer::MstAnalyzer(const PluginContext& ctx)
                .passes = static_cast<int>(ctx.params.integer("passes")),
                .contacts = {.zero_force_contacts = ctx.params.boolean("zero_force_contacts"),
                             .tolerance = ctx.params.real(kContactToleranceName)}},
-      per_frame_(ctx.stream_table(
-          "per_frame",
-          [] {
-            std::vector<std::string> columns = {"frame", "time"};
-            columns.insert(columns.end(), kTableColumns.begin(), kTableColumns.end());
-            columns.push_back("unproven_contacts");
-            return Table(columns,
-                         "Table II per frame and pass: the largest TCP and the other TCPs (2 "
-                         "particles or more), the same of the contact network, and the share of "
-                         "contacts the passes so far selected; unproven_contacts: contacts "
-                         "whose selection the candidate graph is not shown to reproduce");
-          }())) {}
+      per_frame_(ctx.stream_table("per_frame", [] {
+        std::vector<std::string> columns = {"frame", "time"};
+        columns.insert(columns.end(), kTableColumns.begin(), kTableColumns.end());
+        columns.push_back("unproven_contacts");
+        return Table(columns,
+                     "Table II per frame and pass: the largest TCP and the other TCPs (2 "
+                     "particles or more), the same of the contact network, and the share of "
+                     "contacts the passes so far selected; unproven_contacts: contacts "
+                     "whose selection the candidate graph is not shown to reproduce");
+      }())) {}
 
 std::vector<Property> MstAnalyzer::publishes() const { return {kMstPass, kTcp}; }
 
@@ -97,7 +120,8 @@ void MstAnalyzer::consume(const Frame& frame, FrameCache& cache) {
   }
   if (r.contacts == 0 && !warned_no_contacts_) {
     warned_no_contacts_ = true;
-    log_.warn("mst: " + where + ": no contacts: its recovered_fraction is undefined (nan in "
+    log_.warn("mst: " + where +
+              ": no contacts: its recovered_fraction is undefined (nan in "
               "per_frame, not 0; docs/mst.md); said for the first such frame only");
   }
   for (const PassRow& p : r.passes) {
@@ -135,8 +159,11 @@ void MstAnalyzer::finish(Results& results) {
                      "frame (counted from 0) that table_ii describes");
   results.add_scalar("table_ii_time", chosen_time_, std::nan(""), "time",
                      "time of the frame that table_ii describes");
-  results.add_plot("recovered", {.table = "table_ii", .x = "pass", .y = {"recovered_fraction"},
-                                 .xlabel = "MST passes", .ylabel = "contacts recovered",
+  results.add_plot("recovered", {.table = "table_ii",
+                                 .x = "pass",
+                                 .y = {"recovered_fraction"},
+                                 .xlabel = "MST passes",
+                                 .ylabel = "contacts recovered",
                                  .title = "share of contacts selected by the multipass MST"});
 }
 

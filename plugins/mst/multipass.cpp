@@ -39,7 +39,8 @@ Multipass::Pass Multipass::next() {
   Pass pass;
   // A forest never has more than vertices - 1 edges; after pass 1 its size is known, and
   // the scan stops once it is complete.
-  const std::size_t target = passes_ == 1 ? std::size_t{vertices_ > 0 ? vertices_ - 1 : 0} : forest_edges_;
+  const std::size_t target =
+      passes_ == 1 ? std::size_t{vertices_ > 0 ? vertices_ - 1 : 0} : forest_edges_;
   for (Ranked& r : sorted_) {
     if (pass.edges == target) break;
     const std::uint32_t a = sets.find_set(r.edge.i), b = sets.find_set(r.edge.j);

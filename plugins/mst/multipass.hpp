@@ -21,8 +21,8 @@ class Multipass {
   Multipass(std::uint32_t vertices, std::vector<Edge> edges, double elongation);
 
   struct Pass {
-    double weight = 0.0;       // of the forest, with the lengthened weights
-    std::size_t edges = 0;     // in the forest: vertices minus trees
+    double weight = 0.0;    // of the forest, with the lengthened weights
+    std::size_t edges = 0;  // in the forest: vertices minus trees
     std::vector<std::pair<std::uint32_t, std::uint32_t>> new_edges;  // selected first now
   };
   // Computes the next pass.

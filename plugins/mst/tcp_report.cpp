@@ -20,7 +20,8 @@ std::vector<std::uint32_t> rows_by_id(const Frame& f) {
   return rows;
 }
 
-std::vector<Edge> renumbered(std::vector<Edge> edges, const std::vector<std::uint32_t>& number_of_row) {
+std::vector<Edge> renumbered(std::vector<Edge> edges,
+                             const std::vector<std::uint32_t>& number_of_row) {
   for (Edge& e : edges) {
     const std::uint32_t a = number_of_row[e.i], b = number_of_row[e.j];
     e.i = std::min(a, b);

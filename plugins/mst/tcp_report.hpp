@@ -30,9 +30,9 @@ struct PassRow {
 
 struct TcpReport {
   std::vector<PassRow> passes;
-  TreeCounts network;        // of all contact pairs
+  TreeCounts network;         // of all contact pairs
   std::int64_t contacts = 0;  // pairs in contact
-  double cutoff = 0.0;  // candidates "cutoff": the factor used
+  double cutoff = 0.0;        // candidates "cutoff": the factor used
   // Every pair shorter than this is a candidate; a contact whose weight stays below it in
   // every pass is selected exactly as by the MST of all pairs (docs/mst.md).
   double complete_below = 0.0;

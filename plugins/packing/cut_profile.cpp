@@ -7,8 +7,8 @@
 
 namespace granpipe::packing {
 
-std::vector<double> cut_fractions(const Frame& frame, const Region& lateral, double y0,
-                                  double step, int count) {
+std::vector<double> cut_fractions(const Frame& frame, const Region& lateral, double y0, double step,
+                                  int count) {
   std::vector<double> sum(static_cast<std::size_t>(std::max(count, 0)), 0.0);
   if (count <= 0) return sum;
   const int dim = frame.dim, v = dim - 1;
@@ -30,7 +30,8 @@ std::vector<double> cut_fractions(const Frame& frame, const Region& lateral, dou
       const double yc = frame.position()(k, v) + sv;
       // Cuts whose height (k + 1/2) step lies within the particle.
       const int first = std::max(0, static_cast<int>(std::ceil((yc - r - y0) / step - 0.5)));
-      const int last = std::min(count - 1, static_cast<int>(std::floor((yc + r - y0) / step - 0.5)));
+      const int last =
+          std::min(count - 1, static_cast<int>(std::floor((yc + r - y0) / step - 0.5)));
       for (int m = first; m <= last; ++m) {
         const double w = overlap::cut_radius(r, y0 + (m + 0.5) * step - yc);
         if (w == 0.0) continue;
@@ -41,7 +42,8 @@ std::vector<double> cut_fractions(const Frame& frame, const Region& lateral, dou
               cut += overlap::interval_overlap(frame.position()(k, 0) + s0, w, lateral.lo[0],
                                                lateral.hi[0]);
             } else {
-              const Eigen::Vector2d centre(frame.position()(k, 0) + s0, frame.position()(k, 1) + s1);
+              const Eigen::Vector2d centre(frame.position()(k, 0) + s0,
+                                           frame.position()(k, 1) + s1);
               cut += overlap::disk_rectangle_area(centre, w, lateral.lo.head<2>(),
                                                   lateral.hi.head<2>());
             }

@@ -13,7 +13,7 @@ namespace granpipe::packing {
 // Fractions of the cuts at heights y0 + (k + 1/2) step, k = 0..count-1, within the
 // region's lateral extent (its vertical extent is not used). Cut particles, and periodic
 // images along periodic axes, are counted exactly.
-std::vector<double> cut_fractions(const Frame& frame, const Region& lateral, double y0,
-                                  double step, int count);
+std::vector<double> cut_fractions(const Frame& frame, const Region& lateral, double y0, double step,
+                                  int count);
 
 }  // namespace granpipe::packing

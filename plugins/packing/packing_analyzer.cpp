@@ -6,8 +6,8 @@
 #include <sstream>
 
 #include "cut_profile.hpp"
-#include "lowest_surface.hpp"
 #include "granpipe/contacts_by_distance.hpp"
+#include "lowest_surface.hpp"
 
 namespace granpipe::packing {
 
@@ -15,10 +15,10 @@ Schema schema() {
   Schema s;
   declare_contact_tolerance(s);
   s.choice<Top>("top", Top::Auto,
-           "top of the region before exclude_top: the highest particle top (surface), the "
-           "lowest point of the free surface, over columns at least one mean diameter wide "
-           "(lowest_surface: for heaped beds), the container's top (container), or surface "
-           "for an open-top container and container otherwise (auto)");
+                "top of the region before exclude_top: the highest particle top (surface), the "
+                "lowest point of the free surface, over columns at least one mean diameter wide "
+                "(lowest_surface: for heaped beds), the container's top (container), or surface "
+                "for an open-top container and container otherwise (auto)");
   s.real("exclude_bottom", 0.0,
          "the region starts this far above the base (the bottom layers ordered by the wall)")
       .min(0.0)
@@ -63,9 +63,10 @@ Heights vertical_range(const Frame& f, Top top, const Region& columns) {
   const double offset = c.periodic(v) ? 0.0 : c.wall_offset[v];
   if (top == Top::Auto) top = c.boundary[v][1] == Boundary::Open ? Top::Surface : Top::Container;
   if (top != Top::Container && c.periodic(v)) {
-    throw InputError(std::string("packing.top: expected \"container\" or \"auto\" for a container ") +
-                     "periodic along " + axis_name(v) + " (" + frame_name(f) + "), got \"" +
-                     choice_name(top) + "\"");
+    throw InputError(
+        std::string("packing.top: expected \"container\" or \"auto\" for a container ") +
+        "periodic along " + axis_name(v) + " (" + frame_name(f) + "), got \"" + choice_name(top) +
+        "\"");
   }
   Heights h{c.lo[v] + offset, c.hi[v] + offset};
   if (top == Top::Surface) {
@@ -107,10 +108,11 @@ Region packing_region(const Frame& frame, const PackingSettings& s) {
   for (int a = 0; a < dim; ++a) {
     if (!(r.hi[a] > r.lo[a])) {
       std::ostringstream m;
-      m << "packing: " << frame_name(frame) << ": expected a measuring region of positive size, got "
-        << axis_name(a) << " from " << r.lo[a] << " to " << r.hi[a] << " (exclude_bottom "
-        << s.exclude_bottom << ", exclude_top " << s.exclude_top << ", exclude_sides "
-        << s.exclude_sides << " mean diameters of " << d << ")";
+      m << "packing: " << frame_name(frame)
+        << ": expected a measuring region of positive size, got " << axis_name(a) << " from "
+        << r.lo[a] << " to " << r.hi[a] << " (exclude_bottom " << s.exclude_bottom
+        << ", exclude_top " << s.exclude_top << ", exclude_sides " << s.exclude_sides
+        << " mean diameters of " << d << ")";
       throw InputError(m.str());
     }
   }
@@ -183,7 +185,8 @@ void PackingAnalyzer::consume(const Frame& frame, FrameCache& cache) {
   }
   dim_ = frame.dim;
   const PackingMeasurement m = measure_packing(frame, cache, settings_);
-  coordination_ = contacts_by_distance(frame, cache, settings_.tolerance).coordination(frame.size(), false);
+  coordination_ =
+      contacts_by_distance(frame, cache, settings_.tolerance).coordination(frame.size(), false);
   phi_.add(m.phi);
   density_.add(m.number_density);
   if (m.centres > 0) {
@@ -210,22 +213,28 @@ void PackingAnalyzer::consume(const Frame& frame, FrameCache& cache) {
 
 void PackingAnalyzer::finish(Results& results) {
   const std::string per_volume = dim_ == 2 ? "1/length^2" : "1/length^3";
-  results.add_mean("phi", phi_, "", "packing fraction of the region, exact (cut particles counted in part)");
-  results.add_mean("number_density", density_, per_volume, "particle centres in the region per unit volume");
-  results.add_mean("z_mean", z_, "", "mean number of particle contacts of the particles centred in the region");
+  results.add_mean("phi", phi_, "",
+                   "packing fraction of the region, exact (cut particles counted in part)");
+  results.add_mean("number_density", density_, per_volume,
+                   "particle centres in the region per unit volume");
+  results.add_mean("z_mean", z_, "",
+                   "mean number of particle contacts of the particles centred in the region");
   results.add_mean("z_mean_with_walls", z_walls_, "", "z_mean with particle-wall contacts counted");
   if (!by_ramp_.empty()) {
     results.add_table("by_ramp", by_ramp_.table("phi and z_mean per ramp branch (0 first increase, "
                                                 "1 decreasing, 2 increasing) and the tap amplitude "
                                                 "A, pooled over cycles"));
-    results.add_plot("by_ramp", {.table = "by_ramp", .x = "amplitude", .y = {"phi"},
+    results.add_plot("by_ramp", {.table = "by_ramp",
+                                 .x = "amplitude",
+                                 .y = {"phi"},
                                  .xlabel = "tap amplitude A",
                                  .ylabel = "packing fraction",
                                  .title = "packing fraction on the ramp branches"});
   }
   if (settings_.cuts_step > 0.0) {
-    results.add_mean("phi_cuts", phi_cuts_, "",
-         "mean area fraction of horizontal cuts through the region (stereological estimate of phi)");
+    results.add_mean(
+        "phi_cuts", phi_cuts_, "",
+        "mean area fraction of horizontal cuts through the region (stereological estimate of phi)");
   }
   results.add_table("per_frame", per_frame_.table());
   results.add_scalar("frames", static_cast<double>(frames_), std::nan(""), "",
@@ -239,7 +248,9 @@ void PackingAnalyzer::finish(Results& results) {
                  profile_[k].standard_error()});
     }
     results.add_table("profile", std::move(t));
-    results.add_plot("profile", {.table = "profile", .x = "height", .y = {"phi"},
+    results.add_plot("profile", {.table = "profile",
+                                 .x = "height",
+                                 .y = {"phi"},
                                  .xlabel = "height above the base / mean diameter",
                                  .ylabel = "area fraction of horizontal cuts",
                                  .title = "vertical packing-fraction profile"});

@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "granpipe/contacts_by_distance.hpp"
-#include "granpipe/ramp_means.hpp"
 #include "granpipe/plugin.hpp"
+#include "granpipe/ramp_means.hpp"
 #include "region.hpp"
 
 namespace granpipe::packing {
@@ -16,18 +16,20 @@ Schema schema();
 
 enum class Top : std::uint8_t { Auto, Surface, LowestSurface, Container };
 inline ChoiceNames<Top> choice_names(Top) {  // parameter top
-  return {{"auto", Top::Auto}, {"surface", Top::Surface}, {"lowest_surface", Top::LowestSurface},
+  return {{"auto", Top::Auto},
+          {"surface", Top::Surface},
+          {"lowest_surface", Top::LowestSurface},
           {"container", Top::Container}};
 }
 
 struct PackingSettings {
   double tolerance = kDefaultContactTolerance;  // relative contact tolerance
-  double exclude_bottom = 0.0;  // mean diameters above the base
-  double exclude_top = 0.0;     // mean diameters below the top (surface or container)
-  double exclude_sides = 0.0;   // mean diameters from each lateral side
+  double exclude_bottom = 0.0;                  // mean diameters above the base
+  double exclude_top = 0.0;    // mean diameters below the top (surface or container)
+  double exclude_sides = 0.0;  // mean diameters from each lateral side
   Top top = Top::Auto;
-  double profile_step = 0.05;   // mean diameters; 0: no profile
-  double cuts_step = 0.01;      // mean diameters; 0: no phi_cuts
+  double profile_step = 0.05;  // mean diameters; 0: no profile
+  double cuts_step = 0.01;     // mean diameters; 0: no phi_cuts
 };
 
 // What one frame measures.
@@ -64,7 +66,11 @@ class PackingAnalyzer : public Analyzer {
     columns.get<IntArray>("coordination") = coordination_;
   }
   static Property coordination_property() {
-    return {"coordination", Scope::Particle, ValueType::Small, 1, "",
+    return {"coordination",
+            Scope::Particle,
+            ValueType::Small,
+            1,
+            "",
             "contacts with other particles (by distance, the analyzer's tolerance)"};
   }
 

@@ -101,7 +101,8 @@ void XyzWriter::write(const Frame& frame) {
   if (!file_) {
     file_ = std::fopen(partial_path_.c_str(), "wx");
     if (!file_) {
-      throw InputError(partial_path_.string() + ": cannot create the file (" + std::strerror(errno) + ")");
+      throw InputError(partial_path_.string() + ": cannot create the file (" +
+                       std::strerror(errno) + ")");
     }
   }
   std::string text = std::to_string(frame.size()) + "\n" + comment_line(frame) + "\n";

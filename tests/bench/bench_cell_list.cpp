@@ -15,7 +15,8 @@ static void BM_CellListPairs(benchmark::State& state) {
   // Unit-diameter particles at a number density near random close packing.
   const double density = dim == 2 ? 1.0 : 1.1;
   const double side = std::pow(n / density, 1.0 / dim);
-  const Container c = Container::periodic_box(dim, Eigen::Vector3d::Zero(), Eigen::Vector3d::Constant(side));
+  const Container c =
+      Container::periodic_box(dim, Eigen::Vector3d::Zero(), Eigen::Vector3d::Constant(side));
   RandomStream rng = Seeds(1).stream("bench");
   Coordinates x(n, dim);
   for (int i = 0; i < n; ++i)
@@ -30,10 +31,14 @@ static void BM_CellListPairs(benchmark::State& state) {
     benchmark::DoNotOptimize(pairs.data());
   }
   state.counters["pairs"] = static_cast<double>(pairs.size());
-  state.counters["particles/s"] = benchmark::Counter(static_cast<double>(n) * state.iterations(),
-                                                      benchmark::Counter::kIsRate);
+  state.counters["particles/s"] =
+      benchmark::Counter(static_cast<double>(n) * state.iterations(), benchmark::Counter::kIsRate);
 }
-BENCHMARK(BM_CellListPairs)->Args({2, 2000})->Args({2, 20000})->Args({3, 8000})->Args({3, 64000})
+BENCHMARK(BM_CellListPairs)
+    ->Args({2, 2000})
+    ->Args({2, 20000})
+    ->Args({3, 8000})
+    ->Args({3, 64000})
     ->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();

@@ -78,11 +78,17 @@ void BM_VibratedBed(benchmark::State& state) {
   state.counters["particle_steps_per_s"] =
       benchmark::Counter(steps * kSpheres, benchmark::Counter::kIsRate);
   state.counters["pairs_per_sphere"] = static_cast<double>(e.neighbors().pairs()) / kSpheres;
-  state.counters["steps_per_rebuild"] = steps / static_cast<double>(e.neighbors().builds() - builds);
+  state.counters["steps_per_rebuild"] =
+      steps / static_cast<double>(e.neighbors().builds() - builds);
 }
 
 }  // namespace
 
-BENCHMARK(BM_VibratedBed)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(kIterations);
+BENCHMARK(BM_VibratedBed)
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(kIterations);
 
 BENCHMARK_MAIN();

@@ -28,7 +28,8 @@ struct Bed {
   explicit Bed(std::size_t n) {
     const double r = 0.1 + 1.0 / std::numbers::sqrt2, width = 20.0;
     granpipe::RandomStream placement(3);
-    packing = dt::place_at_random(width, static_cast<double>(n) * std::numbers::pi * r * r / (width * 0.3),
+    packing = dt::place_at_random(width,
+                                  static_cast<double>(n) * std::numbers::pi * r * r / (width * 0.3),
                                   std::vector<double>(n, r), placement, "bench");
     deposit = std::make_unique<dt::Deposit>(packing, dt::DepositOptions{.delta = 0.01});
     deposit->run(deposition);

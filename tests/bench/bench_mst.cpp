@@ -29,7 +29,8 @@ struct Graph {
 bool read_graph(const char* path, Graph& g) {
   std::ifstream in(path, std::ios::binary);
   std::uint64_t m = 0;
-  if (!in.read(reinterpret_cast<char*>(&g.particles), 8) || !in.read(reinterpret_cast<char*>(&m), 8))
+  if (!in.read(reinterpret_cast<char*>(&g.particles), 8) ||
+      !in.read(reinterpret_cast<char*>(&m), 8))
     return false;
   g.edges.resize(m);
   for (Edge& e : g.edges) {
@@ -46,8 +47,10 @@ bool read_graph(const char* path, Graph& g) {
 int main(int argc, char** argv) {
   Graph g;
   if (argc < 2 || !read_graph(argv[1], g)) {
-    std::fprintf(stderr, "usage: bench_mst EDGES [PASSES] [ELONGATION]: expected a readable edge file, got %s\n",
-                 argc < 2 ? "none" : argv[1]);
+    std::fprintf(
+        stderr,
+        "usage: bench_mst EDGES [PASSES] [ELONGATION]: expected a readable edge file, got %s\n",
+        argc < 2 ? "none" : argv[1]);
     return 2;
   }
   const int passes = argc > 2 ? std::stoi(argv[2]) : 5;

@@ -22,7 +22,8 @@ granpipe::Frame jittered_cube(int n_side) {
         f.position().row(k) << 0.5 + i + u(rng), 0.5 + j + u(rng), 0.5 + l + u(rng);
         f.radius()[k] = 0.4;
       }
-  f.container = granpipe::Container::open_top_box(3, {0, 0, 0}, {1.0 * n_side, 1.0 * n_side, 1.0 * n_side});
+  f.container =
+      granpipe::Container::open_top_box(3, {0, 0, 0}, {1.0 * n_side, 1.0 * n_side, 1.0 * n_side});
   return f;
 }
 

@@ -5,7 +5,9 @@
 namespace {
 
 enum class Law : std::uint8_t { Linear, Hertz };
-granpipe::ChoiceNames<Law> choice_names(Law) { return {{"linear", Law::Linear}, {"hertz", Law::Hertz}}; }
+granpipe::ChoiceNames<Law> choice_names(Law) {
+  return {{"linear", Law::Linear}, {"hertz", Law::Hertz}};
+}
 
 class Materials : public granpipe::Source {
  public:
@@ -36,7 +38,8 @@ granpipe::Schema schema() {
   walls.object("cylinder", wall(), "the side wall");
   granpipe::Schema s;
   s.choice<Law>("law", Law::Linear, "contact law");
-  s.species_table("species", species, R"([{"name": "small", "diameter": 1}])", "the particle species");
+  s.species_table("species", species, R"([{"name": "small", "diameter": 1}])",
+                  "the particle species");
   s.pair_table("contacts", "species", pair, R"({"*": {"k_n": 2e5}})", "contact coefficients");
   s.object("walls", walls, "the container's walls");
   return s;

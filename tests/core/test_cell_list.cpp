@@ -53,7 +53,8 @@ class CellListRandom : public ::testing::TestWithParam<std::tuple<int, bool, dou
 TEST_P(CellListRandom, EqualsBruteForce) {
   const auto [dim, periodic, cutoff] = GetParam();
   const Eigen::Vector3d lo(-1.0, 0.5, 2.0), hi(9.0, 7.5, 8.0);
-  const Container c = periodic ? Container::periodic_box(dim, lo, hi) : Container::open_top_box(dim, lo, hi);
+  const Container c =
+      periodic ? Container::periodic_box(dim, lo, hi) : Container::open_top_box(dim, lo, hi);
   const Coordinates x = random_points(dim == 2 ? 400 : 600, dim, c, 7 + dim);
   const Pairs expected = brute_force(x, c, dim, cutoff);
   EXPECT_FALSE(expected.empty());
@@ -76,7 +77,8 @@ TEST(CellList, SquareLatticeExactContactsAcrossPeriodicWrap) {
       x(i * ny + j, 0) = i + 0.5;
       x(i * ny + j, 1) = j + 0.5;
     }
-  const Container c = Container::periodic_box(2, Eigen::Vector3d::Zero(), Eigen::Vector3d(nx, ny, 0));
+  const Container c =
+      Container::periodic_box(2, Eigen::Vector3d::Zero(), Eigen::Vector3d(nx, ny, 0));
   const Pairs pairs = cell_pairs(x, c, 2, 1.0);
   EXPECT_EQ(pairs.size(), static_cast<std::size_t>(2 * nx * ny));
   EXPECT_EQ(pairs, brute_force(x, c, 2, 1.0));
@@ -151,38 +153,47 @@ TEST(CellList, PeriodicBoxTooSmallIsAnInputError) {
   Coordinates x(2, 2);
   x << 0.1, 0.1, 0.5, 0.5;
   EXPECT_EQ(error_of(x, c, 2, 0.6),
-            "frame 3: neighbour search: expected a periodic box of length at least 1.2 (twice the contact range) "
+            "frame 3: neighbour search: expected a periodic box of length at least 1.2 (twice the "
+            "contact range) "
             "along x, got 1");
   EXPECT_EQ(error_of(x, c, 2, 0.5000000001),
-            "frame 3: neighbour search: expected a periodic box of length at least 1.0000000002 (twice the contact "
+            "frame 3: neighbour search: expected a periodic box of length at least 1.0000000002 "
+            "(twice the contact "
             "range) along x, got 1");
 }
 
 // An infinite box (phi = 0) or a radius of 1e-200 (squared distances of 0, NaN results)
 // is refused, not measured.
 TEST(CellList, AbsurdScalesAreInputErrors) {
-  const Container huge = Container::periodic_box(2, Eigen::Vector3d::Zero(), Eigen::Vector3d(1e308, 1, 0));
+  const Container huge =
+      Container::periodic_box(2, Eigen::Vector3d::Zero(), Eigen::Vector3d(1e308, 1, 0));
   Coordinates x(2, 2);
   x << 0.1, 0.1, 0.5, 0.5;
   EXPECT_EQ(error_of(x, huge, 2, 0.25),
-            "frame 3: neighbour search: expected a box at most 1e+09 contact ranges (0.25) long along x, got a "
+            "frame 3: neighbour search: expected a box at most 1e+09 contact ranges (0.25) long "
+            "along x, got a "
             "periodic box of length 1e+308");
-  const Container open = Container::open_top_box(2, Eigen::Vector3d::Zero(), Eigen::Vector3d(1, 1e12, 0));
+  const Container open =
+      Container::open_top_box(2, Eigen::Vector3d::Zero(), Eigen::Vector3d(1, 1e12, 0));
   Coordinates far(2, 2);
   far << 0.5, 0.5, 0.5, 1e12;
   EXPECT_EQ(error_of(far, open, 2, 1.0),
-            "frame 3: neighbour search: expected a box at most 1e+09 contact ranges (1) long along y, got particles "
+            "frame 3: neighbour search: expected a box at most 1e+09 contact ranges (1) long along "
+            "y, got particles "
             "spread over 1e+12");
-  const Container unit = Container::periodic_box(2, Eigen::Vector3d::Zero(), Eigen::Vector3d(1, 1, 0));
+  const Container unit =
+      Container::periodic_box(2, Eigen::Vector3d::Zero(), Eigen::Vector3d(1, 1, 0));
   EXPECT_EQ(error_of(x, unit, 2, 2e-200),
-            "frame 3: neighbour search: expected a contact range (largest contact distance) from 1e-100 to 1e+100, "
+            "frame 3: neighbour search: expected a contact range (largest contact distance) from "
+            "1e-100 to 1e+100, "
             "got 2e-200");
 }
 
 // 10^9 cells per axis would be 10^27 in all: the estimate is made in double and merged
 // down before anything is allocated (an integer product overflowed, exit 1).
 TEST(CellList, HugeSparseBoxesMergeCellsInsteadOfOverflowing) {
-  const Container open = Container::open_top_box(3, Eigen::Vector3d::Zero(), Eigen::Vector3d(1e9, 1e9, 1e9));
+  const Container open =
+      Container::open_top_box(3, Eigen::Vector3d::Zero(), Eigen::Vector3d(1e9, 1e9, 1e9));
   Coordinates x(3, 3);
   x << 0, 0, 0, 0.5, 0.5, 0.5, 1e9, 1e9, 1e9;
   EXPECT_EQ(cell_pairs(x, open, 3, 1.0), (Pairs{{0, 1}}));

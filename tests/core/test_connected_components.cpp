@@ -31,8 +31,8 @@ TEST(ConnectedComponents, LabelsBySizeDescending) {
 
 TEST(ConnectedComponents, TiesGoToTheSmallestParticleWhateverTheEdgeOrder) {
   // {1, 4} and {2, 3}: equal sizes, {1, 4} holds the smaller particle.
-  for (const auto& edges : {std::vector<ParticlePair>{{1, 4}, {3, 2}},
-                            std::vector<ParticlePair>{{2, 3}, {4, 1}}}) {
+  for (const auto& edges :
+       {std::vector<ParticlePair>{{1, 4}, {3, 2}}, std::vector<ParticlePair>{{2, 3}, {4, 1}}}) {
     const ConnectedComponents c = connected_components(5, edges);
     EXPECT_EQ(labels(c), (std::vector<std::int64_t>{-1, 0, 1, 1, 0}));
   }
@@ -65,8 +65,9 @@ TEST(ConnectedComponents, RefusesAnEdgeOutsideTheParticlesOrToItself) {
         try {
           connected_components(3, outside);
         } catch (const InternalError& e) {
-          EXPECT_STREQ(e.what(), "connected_components: expected an edge between two different "
-                                 "particles below 3, got 0 and 3");
+          EXPECT_STREQ(e.what(),
+                       "connected_components: expected an edge between two different "
+                       "particles below 3, got 0 and 3");
           throw;
         }
       },

@@ -18,9 +18,10 @@ TEST(ContactTolerance, HasOneDefaultRangeAndText) {
   EXPECT_EQ(p.min, 0.0);
   EXPECT_FALSE(p.min_exclusive);
   EXPECT_FALSE(p.max);
-  EXPECT_EQ(p.doc, "relative contact tolerance: two particles touch when their centre distance "
-                   "is at most (R_i + R_j)(1 + tol), a particle and a wall when the centre-wall "
-                   "distance is at most R_i (1 + tol)");
+  EXPECT_EQ(p.doc,
+            "relative contact tolerance: two particles touch when their centre distance "
+            "is at most (R_i + R_j)(1 + tol), a particle and a wall when the centre-wall "
+            "distance is at most R_i (1 + tol)");
 }
 
 TEST(ContactTolerance, EveryPluginFindingContactsByDistanceDeclaresItAlike) {

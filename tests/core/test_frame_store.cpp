@@ -31,8 +31,8 @@ bool same_bits(const A& a, const B& b) {
 
 // A value with a full mantissa that depends on every index.
 double value(long frame, long i, int a, int salt) {
-  return std::sin(0.37 * static_cast<double>(frame) + 1.13 * static_cast<double>(i) +
-                  0.71 * a + 2.9 * salt) *
+  return std::sin(0.37 * static_cast<double>(frame) + 1.13 * static_cast<double>(i) + 0.71 * a +
+                  2.9 * salt) *
          (1.0 + 1e-3 * static_cast<double>(frame));
 }
 
@@ -44,8 +44,8 @@ struct Optional {
 // vector per contact, and per-frame observables.
 const Property kSupports{"supports", Scope::Particle, ValueType::Integer, 2, "", "left, right"};
 const Property kVolume{"voronoi_volume", Scope::Particle, ValueType::Real, 1, "length^3", "cell"};
-const Property kHistory{"tangential_history", Scope::Contact, ValueType::Real, kDimComponents,
-                        "length", "tangential spring"};
+const Property kHistory{"tangential_history", Scope::Contact, ValueType::Real,
+                        kDimComponents,       "length",       "tangential spring"};
 const Property kTap{"tap", Scope::Frame, ValueType::Integer, 1, "", "tap number"};
 const Property kAmplitude{"amplitude", Scope::Frame, ValueType::Real, 1, "1", "tap amplitude"};
 
@@ -71,7 +71,8 @@ void add_contacts(Frame& f, long k, Eigen::Index n) {
                  [&](Eigen::Index q, int a) { return value(k, q, a, salt); });
     ++salt;
   }
-  fill_columns(c.add<Coordinates>(kHistory), [&](Eigen::Index q, int a) { return value(k, q, a, 11); });
+  fill_columns(c.add<Coordinates>(kHistory),
+               [&](Eigen::Index q, int a) { return value(k, q, a, 11); });
 }
 
 // Frame k of a synthetic run: every value a function of k, every optional column present
@@ -143,10 +144,12 @@ void expect_same_table(const PropertyTable& a, const PropertyTable& b) {
     EXPECT_EQ(p.property().unit, q.property().unit) << p.name();
     EXPECT_EQ(p.property().doc, q.property().doc) << p.name();
     ASSERT_EQ(p.storage().index(), q.storage().index()) << p.name();
-    std::visit([&](const auto& x) {
-      using A = std::decay_t<decltype(x)>;
-      EXPECT_TRUE(same_bits(x, std::get<A>(q.storage()))) << p.name();
-    }, p.storage());
+    std::visit(
+        [&](const auto& x) {
+          using A = std::decay_t<decltype(x)>;
+          EXPECT_TRUE(same_bits(x, std::get<A>(q.storage()))) << p.name();
+        },
+        p.storage());
   }
 }
 
@@ -230,8 +233,7 @@ TEST_F(FrameStore, RoundTripIsBitIdenticalWithNoOptionalArray) {
 
 TEST_F(FrameStore, EmptyAndOneParticleFramesRoundTrip) {
   for (Eigen::Index n : {0, 1}) {
-    const fs::path p = write("n" + std::to_string(n) + ".h5", 3, 3, n,
-                             {true, true, false, true});
+    const fs::path p = write("n" + std::to_string(n) + ".h5", 3, 3, n, {true, true, false, true});
     FrameReader r(p);
     ASSERT_EQ(r.frames(), 3);
     for (long k = 0; k < 3; ++k) {
@@ -357,7 +359,8 @@ void write_foreign(const fs::path& p, bool second_group, float z_shift = 0.0f) {
   float x[3][4][3];
   for (int k = 0; k < 3; ++k)
     for (int i = 0; i < 4; ++i)
-      for (int a = 0; a < 3; ++a) x[k][i][a] = 0.25f * static_cast<float>(k + i + a) + (a == 2 ? z_shift : 0.0f);
+      for (int a = 0; a < 3; ++a)
+        x[k][i][a] = 0.25f * static_cast<float>(k + i + a) + (a == 2 ? z_shift : 0.0f);
   put_dataset(position, "value", H5T_NATIVE_FLOAT, {3, 4, 3}, x);
   const std::int64_t steps[3] = {10, 20, 30};
   const double times[3] = {0.5, 1.0, 1.5};
@@ -426,10 +429,12 @@ TEST_F(FrameStore, WallsOfAnotherToolsCentredBoxHoldItsParticles) {
     FrameReader(outside).read(0);
     FAIL() << "expected an InputError";
   } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(), (outside.string() +
-                            ": /particles/atoms/box/edges: frame 0: expected particle centres inside a box of "
-                            "edge 6.000000 along z (at [0, L] or [-L/2, L/2]), got -6.500000 to -5.750000")
-                               .c_str());
+    EXPECT_STREQ(
+        e.what(),
+        (outside.string() +
+         ": /particles/atoms/box/edges: frame 0: expected particle centres inside a box of "
+         "edge 6.000000 along z (at [0, L] or [-L/2, L/2]), got -6.500000 to -5.750000")
+            .c_str());
   }
 }
 
@@ -456,8 +461,8 @@ TEST_F(FrameStore, NanPositionInAWalledBoxIsNamedByTheFrameCheck) {
     }
     EXPECT_EQ(message_of([&] { FrameReader(p).read(0); }),
               p.string() + ": frame 0: particle " + std::to_string(particle) + " (id " +
-                  std::to_string(particle) + "): expected a finite position, got nan in coordinate " +
-                  "xyz"[axis]);
+                  std::to_string(particle) +
+                  "): expected a finite position, got nan in coordinate " + "xyz"[axis]);
   }
 }
 
@@ -576,11 +581,10 @@ TEST_F(FrameStore, RowsWhoseStepWasNeverWrittenAreNotFrames) {
     Id f(H5Fopen(p.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
     for (const char* path :
          {"/particles/all/position/value", "/particles/all/position/step",
-          "/particles/all/position/time", "/particles/all/species/value",
-          "/particles/all/id/value", "/particles/all/box/edges/value",
-          "/particles/all/radius/value", "/observables/tap/value", "/observables/amplitude/value",
-          "/granpipe/container/shape",
-          "/granpipe/container/lo", "/granpipe/container/hi", "/granpipe/container/boundary",
+          "/particles/all/position/time", "/particles/all/species/value", "/particles/all/id/value",
+          "/particles/all/box/edges/value", "/particles/all/radius/value", "/observables/tap/value",
+          "/observables/amplitude/value", "/granpipe/container/shape", "/granpipe/container/lo",
+          "/granpipe/container/hi", "/granpipe/container/boundary",
           "/granpipe/container/cylinder_radius", "/granpipe/container/cylinder_center",
           "/granpipe/container/wall_offset", "/granpipe/container/wall_velocity"}) {
       set_rows(f, path, 4);
@@ -650,18 +654,22 @@ TEST_F(FrameStore, DeclaredDataTheFileDoesNotStoreIsRefusedBeforeReading) {
   write_positions(p, [](hid_t g) { put_chunked(g, "value", {1, 50000000, 3}, {1, 100000, 3}, 0); });
   ASSERT_LT(fs::file_size(p), 10000u);
   EXPECT_EQ(message_of([&] { FrameReader r(p); }),
-            p.string() + ": /particles/all/position/value: expected at most 1.68e+07 bytes of data for "
-                         "the 0 bytes stored in the file, got shape [1, 50000000, 3] (1.2e+09 bytes; "
-                         "damaged or crafted file)");
+            p.string() +
+                ": /particles/all/position/value: expected at most 1.68e+07 bytes of data for "
+                "the 0 bytes stored in the file, got shape [1, 50000000, 3] (1.2e+09 bytes; "
+                "damaged or crafted file)");
 }
 
 // Rows of zero particles take no bytes, but a fixed clock would be a step per row.
 TEST_F(FrameStore, DeclaredRowsTheFileDoesNotStoreAreRefused) {
   const fs::path p = file("unstored_rows.h5");
-  write_positions(p, [](hid_t g) { put_chunked(g, "value", {1000000000000, 0, 3}, {1000, 1, 3}, 0); });
+  write_positions(p, [](hid_t g) {
+    put_chunked(g, "value", {1000000000000, 0, 3}, {1000, 1, 3}, 0);
+  });
   EXPECT_EQ(message_of([&] { FrameReader r(p); }),
-            p.string() + ": /particles/all/position/value: expected at most 1.68e+07 rows for the 0 bytes "
-                         "stored in the file, got shape [1000000000000, 0, 3] (damaged or crafted file)");
+            p.string() +
+                ": /particles/all/position/value: expected at most 1.68e+07 rows for the 0 bytes "
+                "stored in the file, got shape [1000000000000, 0, 3] (damaged or crafted file)");
 }
 
 // 24 MB of zeros deflate to a few kilobytes, and are data the file does hold.
@@ -689,7 +697,9 @@ void put_row(hid_t file, const std::string& path, hsize_t row, std::int64_t valu
 TEST_F(FrameStore, ContactsOutsideTheContactArraysAreRefused) {
   const fs::path good = write("contacts.h5", 3, 3, 5);  // 1, 6 and 0 contacts: 7 rows
   for (const auto& [offset, count] : {std::pair<std::int64_t, std::int64_t>{1, 1LL << 62},
-                                      {1, -1}, {-6, 6}, {1LL << 62, 1LL << 62}}) {
+                                      {1, -1},
+                                      {-6, 6},
+                                      {1LL << 62, 1LL << 62}}) {
     const fs::path p = file("bad_contacts.h5");
     fs::copy_file(good, p, fs::copy_options::overwrite_existing);
     {
@@ -698,9 +708,11 @@ TEST_F(FrameStore, ContactsOutsideTheContactArraysAreRefused) {
       put_row(f, "/granpipe/contacts/count", 1, count);
     }
     EXPECT_EQ(message_of([&] { FrameReader r(p); }),
-              p.string() + ": /granpipe/contacts: frame 1: expected rows within the 7 contact rows, "
-                           "got offset " + std::to_string(offset) + " and count " + std::to_string(count) +
-                           " (damaged file)");
+              p.string() +
+                  ": /granpipe/contacts: frame 1: expected rows within the 7 contact rows, "
+                  "got offset " +
+                  std::to_string(offset) + " and count " + std::to_string(count) +
+                  " (damaged file)");
   }
 }
 
@@ -710,7 +722,12 @@ TEST_F(FrameStore, ContactPartnersOutOfRangeAreRefusedNamingTheRow) {
   const fs::path good = write("contacts.h5", 3, 3, 5);  // frame 1: rows 1 to 6
   const std::string where = ": row 3 (frame 1, contact 2): expected a particle index in [0, 5)";
   for (const auto& [column, value] : {std::pair<std::string, std::int64_t>{"j", -100},
-                                      {"j", -9}, {"j", 5}, {"j", 2}, {"j", -1}, {"i", -6}, {"i", 5}}) {
+                                      {"j", -9},
+                                      {"j", 5},
+                                      {"j", 2},
+                                      {"j", -1},
+                                      {"i", -6},
+                                      {"i", 5}}) {
     const fs::path p = file("bad_partner.h5");
     fs::copy_file(good, p, fs::copy_options::overwrite_existing);
     {
@@ -720,10 +737,12 @@ TEST_F(FrameStore, ContactPartnersOutOfRangeAreRefusedNamingTheRow) {
     const FrameReader r(p);
     EXPECT_NO_THROW(r.read(0));
     const std::string expected =
-        column == "i" ? where + ", got " + std::to_string(value)
-                      : where + " other than i (2) or a wall code -2 (x_low) to -8 (cylinder), got " +
-                            std::to_string(value);
-    EXPECT_EQ(message_of([&] { r.read(1); }), p.string() + ": /granpipe/contacts/" + column + expected);
+        column == "i"
+            ? where + ", got " + std::to_string(value)
+            : where + " other than i (2) or a wall code -2 (x_low) to -8 (cylinder), got " +
+                  std::to_string(value);
+    EXPECT_EQ(message_of([&] { r.read(1); }),
+              p.string() + ": /granpipe/contacts/" + column + expected);
   }
 }
 
@@ -788,6 +807,7 @@ TEST_F(FrameStore, AFileOfAnotherLayoutVersionIsRefusedNamingIt) {
     put_int_attribute(ext, "version", {1, 0}, false);
   }
   EXPECT_EQ(message_of([&] { FrameReader r(p); }),
-            p.string() + ": /granpipe@version: expected frames layout 2.x, got 1.x (written by "
-                         "another granpipe version; docs/file-format.md lists the layouts)");
+            p.string() +
+                ": /granpipe@version: expected frames layout 2.x, got 1.x (written by "
+                "another granpipe version; docs/file-format.md lists the layouts)");
 }

@@ -60,21 +60,25 @@ TEST(LoadedPairContacts, AFrameWithoutContactsHasNone) {
 TEST(LoadedPairContacts, ANaNForceIsRefusedNamingItsRow) {
   Frame f = frame_with_forces();
   f.contacts->get<ValueTable<double>>("normal_force")(1, 1) = std::nan("");
-  EXPECT_EQ(error_of(f), "frame 7: contact 1: expected a finite normal_force, got nan in component y");
+  EXPECT_EQ(error_of(f),
+            "frame 7: contact 1: expected a finite normal_force, got nan in component y");
 }
 
 TEST(LoadedPairContacts, AnInfiniteForceOnAWallRowIsRefusedToo) {
   Frame f = frame_with_forces();
   f.contacts->get<ValueTable<double>>("normal_force")(2, 2) = INFINITY;
-  EXPECT_EQ(error_of(f), "frame 7: contact 2: expected a finite normal_force, got inf in component z");
+  EXPECT_EQ(error_of(f),
+            "frame 7: contact 2: expected a finite normal_force, got inf in component z");
 }
 
 TEST(LoadedPairContacts, ARowJoiningAParticleToItselfIsRefused) {
   Frame f = frame_with_forces();
   f.contact_j()[3] = 2;
-  EXPECT_EQ(error_of(f), "frame 7: contact 3: expected two different particles, got particle 2 twice");
+  EXPECT_EQ(error_of(f),
+            "frame 7: contact 3: expected two different particles, got particle 2 twice");
   f.contacts->remove("normal_force");
-  EXPECT_EQ(error_of(f), "frame 7: contact 3: expected two different particles, got particle 2 twice");
+  EXPECT_EQ(error_of(f),
+            "frame 7: contact 3: expected two different particles, got particle 2 twice");
 }
 
 TEST(MostLoadedFrame, KeepsTheFrameWithTheMostTheEarliestOfEquals) {

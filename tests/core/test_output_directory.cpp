@@ -55,7 +55,8 @@ const char* kPicky = R"({"source": {"plugin": "lattice",
   "analyzers": [{"plugin": "picky"}]})";
 
 fs::path fresh_dir(const std::string& name) {
-  fs::path d = fs::temp_directory_path() / ("granpipe_test_outdir_" + name + "_" + std::to_string(getpid()));
+  fs::path d =
+      fs::temp_directory_path() / ("granpipe_test_outdir_" + name + "_" + std::to_string(getpid()));
   fs::remove_all(d);
   return d;
 }
@@ -102,7 +103,8 @@ std::string run(const std::string& pipeline, const fs::path& out, bool overwrite
 fs::path only_sibling(const fs::path& out) {
   fs::path found;
   for (const auto& e : fs::directory_iterator(out.parent_path())) {
-    if (e.path().filename().string().rfind(out.filename().string() + ".granpipe-", 0) != 0) continue;
+    if (e.path().filename().string().rfind(out.filename().string() + ".granpipe-", 0) != 0)
+      continue;
     EXPECT_EQ(found, fs::path()) << "two directories beside " << out;
     found = e.path();
   }
@@ -120,9 +122,11 @@ TEST(FailedRun, AnErrorFromNextIsInRunLogAndMarksTheDirectoryFailed) {
   EXPECT_THROW(run(kDiverging, out), std::runtime_error);
   EXPECT_EQ(last_line(out / "run.log"), "failed: the simulation diverged");
   EXPECT_TRUE(marked(out, "failed"));
-  EXPECT_EQ(run(kLattice, out), out.string() + ": expected a new or empty output directory, got one holding a "
-                                "failed run (its run.log says why); pass --overwrite to replace it, or choose "
-                                "another --out");
+  EXPECT_EQ(run(kLattice, out),
+            out.string() +
+                ": expected a new or empty output directory, got one holding a "
+                "failed run (its run.log says why); pass --overwrite to replace it, or choose "
+                "another --out");
   EXPECT_EQ(run(kLattice, out, true), "");
   EXPECT_TRUE(marked(out, "complete"));
   fs::remove_all(out);
@@ -160,8 +164,9 @@ TEST(ReplacingRun, SuccessSwapsTheNewRunInAndRemovesTheEarlierOne) {
   const fs::path out = fresh_dir("replace_works");
   ASSERT_EQ(run(kLattice, out), "");
   const std::string earlier = read(out / ".granpipe-run");
-  ASSERT_EQ(run(std::string(kLattice).replace(std::string(kLattice).find("\"seed\": 1"), 9, "\"seed\": 2"), out,
-                true),
+  ASSERT_EQ(run(std::string(kLattice).replace(std::string(kLattice).find("\"seed\": 1"), 9,
+                                              "\"seed\": 2"),
+                out, true),
             "");
   EXPECT_NE(read(out / ".granpipe-run"), earlier);
   EXPECT_NE(read(out / "pipeline.json").find("\"seed\": 2"), std::string::npos);
@@ -174,10 +179,12 @@ TEST(OutputDirectory, OverwriteRefusesADirectoryWithoutTheMarker) {
   const fs::path out = fresh_dir("users");
   fs::create_directories(out);
   std::ofstream(out / "pipeline.json") << "{}";
-  EXPECT_EQ(run(kLattice, out, true),
-            out.string() + ": --overwrite replaces only directories granpipe made (they hold a .granpipe-run "
-                           "file), got one without (if an older granpipe, which wrote no marker, made it: remove "
-                           "it yourself); nothing was changed");
+  EXPECT_EQ(
+      run(kLattice, out, true),
+      out.string() +
+          ": --overwrite replaces only directories granpipe made (they hold a .granpipe-run "
+          "file), got one without (if an older granpipe, which wrote no marker, made it: remove "
+          "it yourself); nothing was changed");
   EXPECT_EQ(read(out / "pipeline.json"), "{}");
   fs::remove_all(out);
 }
@@ -187,8 +194,10 @@ TEST(OutputDirectory, RefusesAFileASymlinkAndWhatHoldsTheWorkingDirectory) {
   fs::create_directories(dir / "real");
   std::ofstream(dir / "file") << "mine";
   fs::create_directory_symlink(dir / "real", dir / "link");
-  EXPECT_EQ(run(kLattice, dir / "file"), (dir / "file").string() + ": expected a directory, got a regular file");
-  const std::string symlink = (dir / "link").string() + ": expected a directory, got a symlink (to " +
+  EXPECT_EQ(run(kLattice, dir / "file"),
+            (dir / "file").string() + ": expected a directory, got a regular file");
+  const std::string symlink = (dir / "link").string() +
+                              ": expected a directory, got a symlink (to " +
                               (dir / "real").string() + "); give the directory itself as --out";
   EXPECT_EQ(run(kLattice, dir / "link"), symlink);
   EXPECT_EQ(run(kLattice, (dir / "link").string() + "/", true), symlink);
@@ -197,9 +206,9 @@ TEST(OutputDirectory, RefusesAFileASymlinkAndWhatHoldsTheWorkingDirectory) {
   EXPECT_EQ(run(kLattice, ".", true), ".: expected a directory of the run's own, got " +
                                           fs::canonical(dir / "real").string() +
                                           ", which is the working directory; choose another --out");
-  EXPECT_EQ(run(kLattice, "..", true), "..: expected a directory of the run's own, got " +
-                                           fs::canonical(dir).string() +
-                                           ", which holds the working directory; choose another --out");
+  EXPECT_EQ(run(kLattice, "..", true),
+            "..: expected a directory of the run's own, got " + fs::canonical(dir).string() +
+                ", which holds the working directory; choose another --out");
   fs::current_path(cwd);
   EXPECT_TRUE(fs::is_empty(dir / "real"));
   EXPECT_EQ(read(dir / "file"), "mine");
@@ -208,13 +217,18 @@ TEST(OutputDirectory, RefusesAFileASymlinkAndWhatHoldsTheWorkingDirectory) {
 
 TEST(OutputDirectory, RefusesToReplaceADirectoryHoldingAnInputFile) {
   const fs::path out = fresh_dir("input_inside");
-  ASSERT_EQ(run(R"({"source": {"plugin": "lattice", "params": {"lattice": "sc", "cells": [2, 2, 2]}}})", out), "");
+  ASSERT_EQ(
+      run(R"({"source": {"plugin": "lattice", "params": {"lattice": "sc", "cells": [2, 2, 2]}}})",
+          out),
+      "");
   const std::string frames = (out / "frames.h5").string();
-  const std::string reprocess = R"({"source": {"plugin": "h5md", "params": {"file": ")" + frames + R"("}}})";
+  const std::string reprocess =
+      R"({"source": {"plugin": "h5md", "params": {"file": ")" + frames + R"("}}})";
   const auto before = snapshot(out);
   EXPECT_EQ(run(reprocess, out, true),
-            "p.json: source.params.file: expected a file outside the output directory " + out.string() + ", got \"" +
-                frames + "\" inside it; granpipe never writes where it reads (choose another --out)");
+            "p.json: source.params.file: expected a file outside the output directory " +
+                out.string() + ", got \"" + frames +
+                "\" inside it; granpipe never writes where it reads (choose another --out)");
   EXPECT_EQ(snapshot(out), before);
   fs::remove_all(out);
 }

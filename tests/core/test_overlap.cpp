@@ -14,10 +14,10 @@
 
 namespace {
 
-using granpipe::overlap::disk_rectangle_area;
-using granpipe::overlap::sphere_box_volume;
 using Eigen::Vector2d;
 using Eigen::Vector3d;
+using granpipe::overlap::disk_rectangle_area;
+using granpipe::overlap::sphere_box_volume;
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kBig = 1e3;  // "infinite" extent of a region, in units of the radius
@@ -105,8 +105,7 @@ double sphere_box_by_sections(Vector3d c, double r, Vector3d lo, Vector3d hi) {
   auto section = [&](double z) {
     const double h = z - c.z();
     if (std::abs(h) >= r) return 0.0;
-    return disk_rectangle_area(c.head<2>(), std::sqrt(r * r - h * h), lo.head<2>(),
-                               hi.head<2>());
+    return disk_rectangle_area(c.head<2>(), std::sqrt(r * r - h * h), lo.head<2>(), hi.head<2>());
   };
   std::vector<double> breaks{c.z() - r, c.z() + r}, dists;
   for (double x : {lo.x(), hi.x()})
@@ -143,8 +142,7 @@ TEST(Overlap, SphereAtCornerEdgeAndFace) {
   const double r = 1.3, vol = 4.0 / 3.0 * kPi * r * r * r;
   const Vector3d c(0.5, -1, 2);
   EXPECT_NEAR(sphere_box_volume(c, r, c, c + Vector3d::Constant(kBig)), vol / 8, 1e-15 * vol);
-  EXPECT_NEAR(sphere_box_volume(c, r, {0.5, -1, -kBig}, {kBig, kBig, kBig}), vol / 4,
-              1e-15 * vol);
+  EXPECT_NEAR(sphere_box_volume(c, r, {0.5, -1, -kBig}, {kBig, kBig, kBig}), vol / 4, 1e-15 * vol);
   EXPECT_NEAR(sphere_box_volume(c, r, {-kBig, -kBig, -kBig}, {kBig, -1, kBig}), vol / 2,
               1e-15 * vol);
   // Centre at the high corner: the octant below, left and behind.

@@ -100,7 +100,8 @@ TEST(ChoiceParams, ReadBackAsEnums) {
 
 TEST(ChoiceParams, BadChoiceNamesTheChoicesAndTheClosest) {
   EXPECT_EQ(error_of(with(kAllPairs, R"("law": "herz")")),
-            "p.json: source.params.law: expected one of \"linear\", \"hertz\", got \"herz\" (did you mean "
+            "p.json: source.params.law: expected one of \"linear\", \"hertz\", got \"herz\" (did "
+            "you mean "
             "\"hertz\"?)");
   EXPECT_EQ(error_of(with(kAllPairs, R"("law": 1)")),
             "p.json: source.params.law: expected one of \"linear\", \"hertz\", got 1");
@@ -112,7 +113,8 @@ TEST(ObjectParams, DefaultsAreFilledInside) {
   EXPECT_EQ(p.object("walls").object("base").real("mu"), 0.5);  // the default
   EXPECT_EQ(p.object("walls").object("cylinder").real("mu"), 0.1);
   const Registry r = material_registry();
-  const std::string resolved = Pipeline::parse(pipeline(with(kAllPairs)), "p.json", {}, r).resolved_json();
+  const std::string resolved =
+      Pipeline::parse(pipeline(with(kAllPairs)), "p.json", {}, r).resolved_json();
   EXPECT_NE(resolved.find(R"("base": {
           "k_n": 200000.0,
           "mu": 0.5
@@ -122,22 +124,28 @@ TEST(ObjectParams, DefaultsAreFilledInside) {
 }
 
 TEST(ObjectParams, ValuesInsideAreValidatedWithTheirPath) {
-  const std::string species = std::string(R"("species": )") + kSpecies + R"(, "contacts": )" + kAllPairs;
+  const std::string species =
+      std::string(R"("species": )") + kSpecies + R"(, "contacts": )" + kAllPairs;
   EXPECT_EQ(error_of(species + R"(, "walls": {"base": {"k_n": -1}, "cylinder": {"k_n": 1}})"),
             "p.json: source.params.walls.base.k_n: expected a number > 0, got -1");
-  EXPECT_EQ(error_of(species + R"(, "walls": {"base": {"k_n": 1}})"),
-            "p.json: source.params.walls.cylinder.k_n: expected a number > 0, got nothing (required)");
-  EXPECT_EQ(error_of(species + R"(, "walls": {"base": {"k_n": 1, "muu": 0}, "cylinder": {"k_n": 1}})"),
-            "p.json: source.params.walls.base.muu: unknown parameter (did you mean \"mu\"?); known: k_n, mu");
+  EXPECT_EQ(
+      error_of(species + R"(, "walls": {"base": {"k_n": 1}})"),
+      "p.json: source.params.walls.cylinder.k_n: expected a number > 0, got nothing (required)");
+  EXPECT_EQ(
+      error_of(species + R"(, "walls": {"base": {"k_n": 1, "muu": 0}, "cylinder": {"k_n": 1}})"),
+      "p.json: source.params.walls.base.muu: unknown parameter (did you mean \"mu\"?); known: k_n, "
+      "mu");
   EXPECT_EQ(error_of(species + R"(, "walls": {"bse": {}})"),
-            "p.json: source.params.walls.bse: unknown parameter (did you mean \"base\"?); known: base, cylinder");
+            "p.json: source.params.walls.bse: unknown parameter (did you mean \"base\"?); known: "
+            "base, cylinder");
   EXPECT_EQ(error_of(species + R"(, "walls": [1])"),
             "p.json: source.params.walls: expected an object of parameters, got [1]");
   EXPECT_EQ(error_of(with(kAllPairs), {"source.params.walls.base.k_n=0"}),
             "--set source.params.walls.base.k_n=0: expected a number > 0, got 0");
   // A key that only a --set made is the --set's.
   EXPECT_EQ(error_of(with(kAllPairs), {"source.params.walls.bse.k_n=1"}),
-            "--set source.params.walls.bse.k_n=1: source.params.walls.bse: unknown parameter (did you mean "
+            "--set source.params.walls.bse.k_n=1: source.params.walls.bse: unknown parameter (did "
+            "you mean "
             "\"base\"?); known: base, cylinder");
 }
 
@@ -158,61 +166,77 @@ TEST(SpeciesParams, BadEntriesNameTheirIndex) {
             "p.json: source.params.species[1].density: expected a number > 0, got -13.54");
   EXPECT_EQ(error_of(rest + R"(, "species": [{"name": "a", "diameter": 1, "density": 1},
                                              {"name": "a", "diameter": 2, "density": 1}])"),
-            "p.json: source.params.species[1].name: expected a name no other species has, got \"a\" again");
+            "p.json: source.params.species[1].name: expected a name no other species has, got "
+            "\"a\" again");
   EXPECT_EQ(error_of(rest + R"(, "species": [{"name": "big one", "diameter": 1, "density": 1}])"),
-            "p.json: source.params.species[0].name: expected a species name (a letter, then letters, digits "
+            "p.json: source.params.species[0].name: expected a species name (a letter, then "
+            "letters, digits "
             "and _; at most 100), got \"big one\"");
   EXPECT_EQ(error_of(rest + R"(, "species": [{"diameter": 1, "density": 1}])"),
             "p.json: source.params.species[0].name: expected a string, got nothing (required)");
   EXPECT_EQ(error_of(rest + R"(, "species": [])"),
-            "p.json: source.params.species: expected a list of species, each an object with a \"name\", got []");
+            "p.json: source.params.species: expected a list of species, each an object with a "
+            "\"name\", got []");
   EXPECT_EQ(error_of(rest),
-            "p.json: source.params.species: expected a list of species, each an object with a \"name\", got "
+            "p.json: source.params.species: expected a list of species, each an object with a "
+            "\"name\", got "
             "nothing (required)");
 }
 
 TEST(PairParams, EveryPairNeedsAnEntryOrTheStar) {
-  EXPECT_EQ(error_of(with(R"({"small-small": {"k_n": 1}, "large-large": {"k_n": 1}})")),
-            "p.json: source.params.contacts: expected an entry for every pair of species, got none for "
-            "\"small-large\" (give it, or \"*\" for the pairs not listed)");
+  EXPECT_EQ(
+      error_of(with(R"({"small-small": {"k_n": 1}, "large-large": {"k_n": 1}})")),
+      "p.json: source.params.contacts: expected an entry for every pair of species, got none for "
+      "\"small-large\" (give it, or \"*\" for the pairs not listed)");
   // Given with "*", a pair takes "*"'s values where it gives none.
-  const PairTable& t = made(with(R"({"*": {"k_n": 1, "mu": 0.2}, "large-small": {"mu": 0.3}})")).pairs("contacts");
+  const PairTable& t =
+      made(with(R"({"*": {"k_n": 1, "mu": 0.2}, "large-small": {"mu": 0.3}})")).pairs("contacts");
   EXPECT_EQ(t.at(0, 1).real("k_n"), 1.0);
   EXPECT_EQ(t.at(1, 0).real("mu"), 0.3);
   EXPECT_EQ(t.at(1, 1).real("mu"), 0.2);
   // A value neither the pair nor "*" gives, without a default, is missing where it would go.
   EXPECT_EQ(error_of(with(R"({"*": {"mu": 0.1}, "small-large": {"k_n": 1}})")),
             "p.json: source.params.contacts.*.k_n: expected a number > 0, got nothing (required)");
-  EXPECT_EQ(error_of(with(R"({"small-small": {"k_n": 1}, "large-large": {"k_n": 1}, "small-large": {}})")),
-            "p.json: source.params.contacts.small-large.k_n: expected a number > 0, got nothing (required)");
+  EXPECT_EQ(error_of(with(
+                R"({"small-small": {"k_n": 1}, "large-large": {"k_n": 1}, "small-large": {}})")),
+            "p.json: source.params.contacts.small-large.k_n: expected a number > 0, got nothing "
+            "(required)");
 }
 
 TEST(PairParams, APairIsGivenOnce) {
-  EXPECT_EQ(error_of(with(R"({"*": {"k_n": 1}, "small-large": {"mu": 0.1}, "large-small": {"mu": 0.9}})")),
-            "p.json: source.params.contacts.small-large: expected each pair once (a-b is b-a), got it also as "
+  EXPECT_EQ(error_of(with(
+                R"({"*": {"k_n": 1}, "small-large": {"mu": 0.1}, "large-small": {"mu": 0.9}})")),
+            "p.json: source.params.contacts.small-large: expected each pair once (a-b is b-a), got "
+            "it also as "
             "\"large-small\"");
 }
 
 TEST(PairParams, KeysNameDeclaredSpecies) {
   EXPECT_EQ(error_of(with(R"({"*": {"k_n": 1}, "small-larg": {"mu": 0.1}})")),
-            "p.json: source.params.contacts.small-larg: unknown species \"larg\" (did you mean \"large\"?); "
+            "p.json: source.params.contacts.small-larg: unknown species \"larg\" (did you mean "
+            "\"large\"?); "
             "known: small, large");
   EXPECT_EQ(error_of(with(R"({"*": {"k_n": 1}, "small_large": {"mu": 0.1}})")),
-            "p.json: source.params.contacts: expected keys \"a-b\" naming two species (of small, large) or "
+            "p.json: source.params.contacts: expected keys \"a-b\" naming two species (of small, "
+            "large) or "
             "\"*\", got \"small_large\"");
   EXPECT_EQ(error_of(with(R"({"*": {"k_n": 1}, "sm\nall-large": {}})")),
-            "p.json: source.params.contacts: expected keys \"a-b\" naming two species (of small, large) or "
+            "p.json: source.params.contacts: expected keys \"a-b\" naming two species (of small, "
+            "large) or "
             "\"*\", got \"sm\\nall-large\"");
   EXPECT_EQ(error_of(with(kAllPairs), {"source.params.contacts.small-larg.mu=1"}),
-            "--set source.params.contacts.small-larg.mu=1: source.params.contacts.small-larg: unknown species "
+            "--set source.params.contacts.small-larg.mu=1: source.params.contacts.small-larg: "
+            "unknown species "
             "\"larg\" (did you mean \"large\"?); known: small, large");
   EXPECT_EQ(error_of(with(kAllPairs), {"source.params.contacts.small_large.mu=1"}),
-            "--set source.params.contacts.small_large.mu=1: source.params.contacts.small_large: expected keys "
+            "--set source.params.contacts.small_large.mu=1: source.params.contacts.small_large: "
+            "expected keys "
             "\"a-b\" naming two species (of small, large) or \"*\", got \"small_large\"");
   EXPECT_EQ(error_of(with(R"({"*": {"k_n": 1}, "small-large": {"mu": -1}})")),
             "p.json: source.params.contacts.small-large.mu: expected a number >= 0, got -1");
   EXPECT_EQ(error_of(with(R"({"*": {"k_n": 1, "m": 0}})")),
-            "p.json: source.params.contacts.*.m: unknown parameter (did you mean \"mu\"?); known: k_n, mu");
+            "p.json: source.params.contacts.*.m: unknown parameter (did you mean \"mu\"?); known: "
+            "k_n, mu");
 }
 
 TEST(PairParams, MatrixOfThreeSpeciesIsSymmetric) {
@@ -233,8 +257,11 @@ TEST(PairParams, MatrixOfThreeSpeciesIsSymmetric) {
   }
   EXPECT_EQ(t.key(2, 1), "b-c");
   // Set and swept like any value, by the pair's key; the resolved pipeline lists every pair.
-  EXPECT_EQ(made(params, {"source.params.contacts.c-b.mu=0.25"}).pairs("contacts").matrix("mu")(1, 2), 0.25);
-  EXPECT_EQ(made(params, {"source.params.contacts.*.mu=0.25"}).pairs("contacts").matrix("mu")(0, 0), 0.25);
+  EXPECT_EQ(
+      made(params, {"source.params.contacts.c-b.mu=0.25"}).pairs("contacts").matrix("mu")(1, 2),
+      0.25);
+  EXPECT_EQ(made(params, {"source.params.contacts.*.mu=0.25"}).pairs("contacts").matrix("mu")(0, 0),
+            0.25);
   const Registry r = material_registry();
   const std::string resolved = Pipeline::parse(pipeline(params), "p.json", {}, r).resolved_json();
   for (const char* key : {"\"a-a\"", "\"a-b\"", "\"a-c\"", "\"b-b\"", "\"b-c\"", "\"c-c\""})
@@ -245,8 +272,9 @@ TEST(PairParams, MatrixOfThreeSpeciesIsSymmetric) {
 
 TEST(PairParams, SweptByPath) {
   const Registry r = material_registry();
-  const std::string text = R"({"name": "t", "source": {"plugin": "materials", "params": {)" + with(kAllPairs) +
-                           R"(}}, "sweep": {"parameters": {"source.params.contacts.*.mu": [0.0, 0.5],
+  const std::string text =
+      R"({"name": "t", "source": {"plugin": "materials", "params": {)" + with(kAllPairs) +
+      R"(}}, "sweep": {"parameters": {"source.params.contacts.*.mu": [0.0, 0.5],
                                                           "source.params.walls.cylinder.mu": [0.0, 0.1, 0.5]}}})";
   EXPECT_EQ(Pipeline::parse(text, "p.json", {}, r).points(), 6u);
 }
@@ -255,17 +283,21 @@ TEST(SchemaDeclarations, MistakesOfThePluginAreInternalErrors) {
   Schema species;
   species.real("diameter", 1.0, "diameter");
   Schema s;
-  EXPECT_THROW(s.pair_table("contacts", "species", Schema{}, std::nullopt, "no species table yet"), InternalError);
+  EXPECT_THROW(s.pair_table("contacts", "species", Schema{}, std::nullopt, "no species table yet"),
+               InternalError);
   Schema with_name;
   with_name.string("name", std::nullopt, "a second name");
-  EXPECT_THROW(s.species_table("species", with_name, std::nullopt, "name is implied"), InternalError);
+  EXPECT_THROW(s.species_table("species", with_name, std::nullopt, "name is implied"),
+               InternalError);
   Schema with_path;
   with_path.path("file", std::string(""), "a file");
   EXPECT_THROW(s.object("o", with_path, "paths are top-level only"), InternalError);
-  EXPECT_THROW(s.species_table("species", species, R"([{"name": "a b"}])", "a bad default"), InternalError);
+  EXPECT_THROW(s.species_table("species", species, R"([{"name": "a b"}])", "a bad default"),
+               InternalError);
   s.species_table("species", species, R"([{"name": "a"}, {"name": "b"}])", "a good default");
   Schema pair;
   pair.real("k_n", std::nullopt, "stiffness");
-  EXPECT_THROW(s.pair_table("contacts", "species", pair, R"({"a-a": {"k_n": 1}})", "b-b missing"), InternalError);
+  EXPECT_THROW(s.pair_table("contacts", "species", pair, R"({"a-a": {"k_n": 1}})", "b-b missing"),
+               InternalError);
   s.pair_table("contacts", "species", pair, R"({"*": {"k_n": 1}})", "every pair");
 }

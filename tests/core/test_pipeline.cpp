@@ -19,7 +19,9 @@ namespace {
 class RandomSource : public Source {
  public:
   explicit RandomSource(const PluginContext& c)
-      : frames_(c.params.integer("frames")), n_(c.params.integer("n")), rng_(c.seeds.stream("points")) {}
+      : frames_(c.params.integer("frames")),
+        n_(c.params.integer("n")),
+        rng_(c.seeds.stream("points")) {}
   FrameContent content() const override { return {.dim = 2}; }
   bool next(Frame& f) override {
     if (emitted_ == frames_) return false;
@@ -42,7 +44,9 @@ class RandomSource : public Source {
 class MeanXAnalyzer : public Analyzer {
  public:
   explicit MeanXAnalyzer(const PluginContext& c) : scale_(c.params.real("scale")) {}
-  void consume(const Frame& f, FrameCache&) override { mean_.add(f.position().col(0).mean() * scale_); }
+  void consume(const Frame& f, FrameCache&) override {
+    mean_.add(f.position().col(0).mean() * scale_);
+  }
   void finish(Results& r) override { r.add_scalar("mean_x", mean_.mean(), mean_.standard_error()); }
 
  private:
@@ -99,7 +103,8 @@ const char* kGood = R"({
 })";
 
 fs::path fresh_dir(const std::string& name) {
-  fs::path d = fs::temp_directory_path() / ("granpipe_test_pipeline_" + name + "_" + std::to_string(::getpid()));
+  fs::path d = fs::temp_directory_path() /
+               ("granpipe_test_pipeline_" + name + "_" + std::to_string(::getpid()));
   fs::remove_all(d);
   return d;
 }
@@ -126,7 +131,9 @@ TEST(PipelineErrors, NestingDeeperThan64LevelsIsRefused) {
     for (int k = 0; k < n; ++k) out += s;
     return out;
   };
-  const auto nested = [](int levels) { return std::string(levels, '[') + std::string(levels, ']'); };
+  const auto nested = [](int levels) {
+    return std::string(levels, '[') + std::string(levels, ']');
+  };
   EXPECT_EQ(error_of("{\"description\": " + nested(63) + "}"),
             "p.json: description: expected a string, got " + repeat("[", 57) + "...");
   const std::string deepest = "p.json: description" + repeat("[0]", 63) +
@@ -138,7 +145,8 @@ TEST(PipelineErrors, NestingDeeperThan64LevelsIsRefused) {
             "--set source.params.n=" + repeat("[", 61) + "...: " + repeat("[0]", 61) +
                 ": expected JSON nested at most 64 levels deep, got deeper");
   EXPECT_EQ(error_of(kGood, {"source.params" + repeat(".a", 100) + "=1"}),
-            "--set source.params" + repeat(".a", 32) + "...: expected a path of at most 64 parts, got more");
+            "--set source.params" + repeat(".a", 32) +
+                "...: expected a path of at most 64 parts, got more");
 }
 
 TEST(PipelineErrors, DuplicateKeysAreRefusedNotOverwritten) {
@@ -146,29 +154,38 @@ TEST(PipelineErrors, DuplicateKeysAreRefusedNotOverwritten) {
             "p.json: name: expected each key once in an object, got \"name\" again");
   EXPECT_EQ(error_of(R"({"source": {"plugin": "random"}, "analyzers": [{"plugin": "meanx"},
                         {"plugin": "meanx", "name": "b", "params": {"scale": 1, "scale": 2}}]})"),
-            "p.json: analyzers[1].params.scale: expected each key once in an object, got \"scale\" again");
-  EXPECT_EQ(error_of(kGood, {R"(source.params={"n": 1, "n": 2})"}),
-            R"(--set source.params={"n": 1, "n": 2}: n: expected each key once in an object, got "n" again)");
+            "p.json: analyzers[1].params.scale: expected each key once in an object, got \"scale\" "
+            "again");
+  EXPECT_EQ(
+      error_of(kGood, {R"(source.params={"n": 1, "n": 2})"}),
+      R"(--set source.params={"n": 1, "n": 2}: n: expected each key once in an object, got "n" again)");
 }
 
 TEST(PipelineErrors, NumbersBeyondDoubleRangeNameTheirPath) {
   EXPECT_EQ(error_of(R"({"source": {"plugin": "random", "params": {"n": 1e400}}})"),
             "p.json: source.params.n: expected a number of magnitude below 1.8e308, got 1e400");
-  EXPECT_EQ(error_of(R"({"source": {"plugin": "random"}, "sweep": {"parameters": {"source.params.n": [1, -2E+999]}}})"),
-            "p.json: sweep.parameters.source.params.n[1]: expected a number of magnitude below 1.8e308, got -2E+999");
+  EXPECT_EQ(
+      error_of(
+          R"({"source": {"plugin": "random"}, "sweep": {"parameters": {"source.params.n": [1, -2E+999]}}})"),
+      "p.json: sweep.parameters.source.params.n[1]: expected a number of magnitude below 1.8e308, "
+      "got -2E+999");
   EXPECT_EQ(error_of(kGood, {"source.params.n=1e400"}),
             "--set source.params.n=1e400: expected a number of magnitude below 1.8e308, got 1e400");
 }
 
 TEST(PipelineErrors, UnknownTopLevelKeyGetsDidYouMean) {
   const std::string e = error_of(R"({"source": {"plugin": "random"}, "analyzer": []})");
-  EXPECT_EQ(e, "p.json: analyzer: unknown key (did you mean \"analyzers\"?); known: name, description, "
-               "seed, source, analyzers, writers, output, sweep");
+  EXPECT_EQ(
+      e,
+      "p.json: analyzer: unknown key (did you mean \"analyzers\"?); known: name, description, "
+      "seed, source, analyzers, writers, output, sweep");
 }
 
 TEST(PipelineErrors, UnknownParameterGetsDidYouMean) {
   const std::string e = error_of(R"({"source": {"plugin": "random", "params": {"frams": 2}}})");
-  EXPECT_EQ(e, "p.json: source.params.frams: unknown parameter (did you mean \"frames\"?); known: frames, n");
+  EXPECT_EQ(e,
+            "p.json: source.params.frams: unknown parameter (did you mean \"frames\"?); known: "
+            "frames, n");
 }
 
 TEST(PipelineErrors, WrongType) {
@@ -193,41 +210,56 @@ TEST(PipelineErrors, UnknownPluginAndWrongKind) {
 }
 
 TEST(PipelineErrors, DuplicateAnalyzerNames) {
-  EXPECT_EQ(error_of(R"({"source": {"plugin": "random"}, "analyzers": [{"plugin": "meanx"}, {"plugin": "meanx"}]})"),
-            "p.json: analyzers[1].name: expected a name not used by another analyzer or writer, got \"meanx\" again");
+  EXPECT_EQ(
+      error_of(
+          R"({"source": {"plugin": "random"}, "analyzers": [{"plugin": "meanx"}, {"plugin": "meanx"}]})"),
+      "p.json: analyzers[1].name: expected a name not used by another analyzer or writer, got "
+      "\"meanx\" again");
 }
 
 TEST(PipelineErrors, AnalyzerNamesArePlainAndFreeOfRunnerGroups) {
   const std::string too_long = "\"" + std::string(101, 'a') + "\"";
-  for (const std::string bad : {R"(5)", R"("")", R"("a/b")", R"("..")", R"("a\nb")", R"("a.b")", R"("source")",
-                                R"("point_001")", too_long.c_str()}) {
-    const std::string text = R"({"source": {"plugin": "random"}, "analyzers": [{"plugin": "meanx", "name": )" +
-                             bad + "}]}";
-    EXPECT_EQ(error_of(text), "p.json: analyzers[0].name: expected a name of at most 100 letters, digits and _, "
-                              "starting with a letter (not source, sweep or point_*), got " +
-                                  (bad.size() > 60 ? bad.substr(0, 57) + "...\"" : bad));
+  for (const std::string bad : {R"(5)", R"("")", R"("a/b")", R"("..")", R"("a\nb")", R"("a.b")",
+                                R"("source")", R"("point_001")", too_long.c_str()}) {
+    const std::string text =
+        R"({"source": {"plugin": "random"}, "analyzers": [{"plugin": "meanx", "name": )" + bad +
+        "}]}";
+    EXPECT_EQ(error_of(text),
+              "p.json: analyzers[0].name: expected a name of at most 100 letters, digits and _, "
+              "starting with a letter (not source, sweep or point_*), got " +
+                  (bad.size() > 60 ? bad.substr(0, 57) + "...\"" : bad));
   }
-  EXPECT_EQ(error_of(R"({"source": {"plugin": "random"}, "sweep": {"mode": 3, "parameters": {"source.params.n": [1]}}})"),
-            "p.json: sweep.mode: expected one of \"grid\", \"zip\", got 3");
+  EXPECT_EQ(
+      error_of(
+          R"({"source": {"plugin": "random"}, "sweep": {"mode": 3, "parameters": {"source.params.n": [1]}}})"),
+      "p.json: sweep.mode: expected one of \"grid\", \"zip\", got 3");
 }
 
 // The run's name is the default output directory and goes into every CSV header line.
 TEST(PipelineErrors, PipelineNamesCannotLeaveTheOutputFolderOrAddLines) {
-  for (const std::string bad : {R"("")", R"("../up")", R"("a/b")", R"("..")", R"(".hidden")", R"("a\nb")",
-                                R"("a\u0001b")", R"("a b")", R"(3)"}) {
+  for (const std::string bad : {R"("")", R"("../up")", R"("a/b")", R"("..")", R"(".hidden")",
+                                R"("a\nb")", R"("a\u0001b")", R"("a b")", R"(3)"}) {
     EXPECT_EQ(error_of(R"({"source": {"plugin": "random"}, "name": )" + bad + "}"),
-              "p.json: name: expected a name of at most 100 letters, digits, _, - and . (not first), got " + bad);
+              "p.json: name: expected a name of at most 100 letters, digits, _, - and . (not "
+              "first), got " +
+                  bad);
   }
-  EXPECT_EQ(error_of(kGood, {R"(name="x\ny")"}),
-            R"(--set name="x\ny": expected a name of at most 100 letters, digits, _, - and . (not first), got "x\ny")");
+  EXPECT_EQ(
+      error_of(kGood, {R"(name="x\ny")"}),
+      R"(--set name="x\ny": expected a name of at most 100 letters, digits, _, - and . (not first), got "x\ny")");
   const Registry r = test_registry();
-  EXPECT_EQ(Pipeline::parse(R"({"source": {"plugin": "random"}, "name": "run-2.b_3"})", "p.json", {}, r).points(), 1u);
+  EXPECT_EQ(
+      Pipeline::parse(R"({"source": {"plugin": "random"}, "name": "run-2.b_3"})", "p.json", {}, r)
+          .points(),
+      1u);
   try {
     Pipeline::parse(R"({"source": {"plugin": "random"}})", "my pipeline.json", {}, r);
     FAIL() << "expected an InputError";
   } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(), "my pipeline.json: name: expected a name of at most 100 letters, digits, _, - and . "
-                           "(not first), got none, and the file name \"my pipeline\" is not one");
+    EXPECT_STREQ(
+        e.what(),
+        "my pipeline.json: name: expected a name of at most 100 letters, digits, _, - and . "
+        "(not first), got none, and the file name \"my pipeline\" is not one");
   }
 }
 
@@ -236,58 +268,71 @@ TEST(PipelineErrors, SetOverridesAreValidatedToo) {
             "--set source.params.frames=-1: expected an integer >= 1, got -1");
   EXPECT_EQ(error_of(kGood, {"source.params.frames"}),
             "--set source.params.frames: expected path=value, got no '='");
-  EXPECT_EQ(error_of(kGood, {"seed=-1", "source.params.n=2"}), "--set seed=-1: expected an integer >= 0, got -1");
-  EXPECT_EQ(error_of(kGood, {R"(analyzers[0]={"plugin": "meanx", "params": {"scale": 0}})"}),
-            R"(--set analyzers[0]={"plugin": "meanx", "params": {"scale": 0}}: analyzers[0].params.scale: )"
-            "expected a number > 0, got 0");
+  EXPECT_EQ(error_of(kGood, {"seed=-1", "source.params.n=2"}),
+            "--set seed=-1: expected an integer >= 0, got -1");
+  EXPECT_EQ(
+      error_of(kGood, {R"(analyzers[0]={"plugin": "meanx", "params": {"scale": 0}})"}),
+      R"(--set analyzers[0]={"plugin": "meanx", "params": {"scale": 0}}: analyzers[0].params.scale: )"
+      "expected a number > 0, got 0");
   // What the file says, and what the --set did not touch, is still the file's.
-  EXPECT_EQ(error_of(R"({"source": {"plugin": "random", "params": {"n": 0}}})", {"source.params.frames=2"}),
+  EXPECT_EQ(error_of(R"({"source": {"plugin": "random", "params": {"n": 0}}})",
+                     {"source.params.frames=2"}),
             "p.json: source.params.n: expected an integer in [1, 1000], got 0");
   // The sweep's value replaces the --set's.
-  EXPECT_EQ(error_of(R"({"source": {"plugin": "random"}, "sweep": {"parameters": {"source.params.n": [5000]}}})",
-                     {"source.params.n=5"}),
-            "p.json: source.params.n: expected an integer in [1, 1000], got 5000 (sweep point 0: "
-            "source.params.n = 5000)");
+  EXPECT_EQ(
+      error_of(
+          R"({"source": {"plugin": "random"}, "sweep": {"parameters": {"source.params.n": [5000]}}})",
+          {"source.params.n=5"}),
+      "p.json: source.params.n: expected an integer in [1, 1000], got 5000 (sweep point 0: "
+      "source.params.n = 5000)");
 }
 
 TEST(PipelineErrors, SetListIndexBeyond64BitsIsNoEntry) {
-  EXPECT_EQ(error_of(kGood, {"analyzers[99999999999999999999999].params.scale=1"}),
-            "--set analyzers[99999999999999999999999].params.scale=1: expected an existing list entry "
-            "analyzers[99999999999999999999999], got a list of 1 entry");
+  EXPECT_EQ(
+      error_of(kGood, {"analyzers[99999999999999999999999].params.scale=1"}),
+      "--set analyzers[99999999999999999999999].params.scale=1: expected an existing list entry "
+      "analyzers[99999999999999999999999], got a list of 1 entry");
   EXPECT_EQ(error_of(kGood, {"analyzers[1].params.scale=1"}),
-            "--set analyzers[1].params.scale=1: expected an existing list entry analyzers[1], got a list of 1 entry");
+            "--set analyzers[1].params.scale=1: expected an existing list entry analyzers[1], got "
+            "a list of 1 entry");
 }
 
 TEST(PipelineErrors, SetIndexIntoAnObjectSaysItIsAnObject) {
   EXPECT_EQ(error_of(kGood, {"source[0]=1"}),
             "--set source[0]=1: expected a list at \"source\" for [0], got an object");
-  EXPECT_EQ(error_of(kGood, {"seed.x=1"}), "--set seed.x=1: expected an object at \"seed\" for \"x\", got a number");
+  EXPECT_EQ(error_of(kGood, {"seed.x=1"}),
+            "--set seed.x=1: expected an object at \"seed\" for \"x\", got a number");
 }
 
 TEST(PipelineErrors, SweepPathOfAMissingAnalyzerSaysHowManyThereAre) {
-  EXPECT_EQ(error_of(R"({"source": {"plugin": "random"}, "analyzers": [{"plugin": "meanx"}],
+  EXPECT_EQ(
+      error_of(R"({"source": {"plugin": "random"}, "analyzers": [{"plugin": "meanx"}],
                          "sweep": {"parameters": {"analyzers[2].params.scale": [1, 2]}}})"),
-            "p.json: sweep.parameters[\"analyzers[2].params.scale\"]: expected an existing list entry "
-            "analyzers[2], got a list of 1 entry");
+      "p.json: sweep.parameters[\"analyzers[2].params.scale\"]: expected an existing list entry "
+      "analyzers[2], got a list of 1 entry");
 }
 
 // Found by fuzz_pipeline: a bare-word --set value that is not UTF-8 became a JSON string
 // that threw when written out (exit 1, "internal error").
 TEST(PipelineErrors, SetThatIsNotUtf8IsRefused) {
-  EXPECT_EQ(error_of(kGood, {"name=ab\x98\x98n"}), "--set name=ab...: expected UTF-8 text, got the byte 0x98 next");
+  EXPECT_EQ(error_of(kGood, {"name=ab\x98\x98n"}),
+            "--set name=ab...: expected UTF-8 text, got the byte 0x98 next");
   EXPECT_EQ(error_of(kGood, {"source.params.\xc3=1"}),
             "--set source.params....: expected UTF-8 text, got the byte 0xc3 next");
   // Overlong forms and surrogates are not UTF-8 either; the rest of Unicode is.
-  EXPECT_EQ(error_of(kGood, {"name=\xc0\xaf"}), "--set name=...: expected UTF-8 text, got the byte 0xc0 next");
-  EXPECT_EQ(error_of(kGood, {"name=\xed\xa0\x80"}), "--set name=...: expected UTF-8 text, got the byte 0xed next");
+  EXPECT_EQ(error_of(kGood, {"name=\xc0\xaf"}),
+            "--set name=...: expected UTF-8 text, got the byte 0xc0 next");
+  EXPECT_EQ(error_of(kGood, {"name=\xed\xa0\x80"}),
+            "--set name=...: expected UTF-8 text, got the byte 0xed next");
   EXPECT_EQ(error_of(kGood, {"description=caf\xc3\xa9 \xe2\x82\xac \xf0\x9f\x8e\xb2"}), "no error");
 }
 
 TEST(PipelineErrors, SweepValueOutOfRangeNamesThePoint) {
   const std::string e = error_of(
       R"({"source": {"plugin": "random"}, "sweep": {"parameters": {"source.params.n": [5, 5000]}}})");
-  EXPECT_EQ(e, "p.json: source.params.n: expected an integer in [1, 1000], got 5000 (sweep point 1: "
-               "source.params.n = 5000)");
+  EXPECT_EQ(e,
+            "p.json: source.params.n: expected an integer in [1, 1000], got 5000 (sweep point 1: "
+            "source.params.n = 5000)");
 }
 
 // A sweep's size is known from its lists' lengths: too many points are refused before
@@ -298,44 +343,58 @@ TEST(PipelineErrors, SweepOfTooManyPointsIsRefusedBeforeExpanding) {
     for (int k = 1; k < n; ++k) s += ", 1";
     return s + "]";
   };
-  EXPECT_EQ(error_of(R"({"source": {"plugin": "random"}, "analyzers": [{"plugin": "meanx"}], "sweep": {"parameters": {
-                        "source.params.n": )" + list(1000) + R"(, "source.params.frames": )" + list(1000) +
-                     R"(, "analyzers[0].params.scale": )" + list(1000) + "}}}"),
-            "p.json: sweep.parameters: expected at most 100000 sweep points, got 1e+09 (grid of 1000 x 1000 x 1000 values)");
-  EXPECT_EQ(error_of(R"({"source": {"plugin": "random"}, "sweep": {"mode": "zip", "parameters": {"source.params.n": )" +
-                     list(100001) + "}}}"),
-            "p.json: sweep.parameters: expected at most 100000 sweep points, got 100001 (zip of 100001 values)");
+  EXPECT_EQ(
+      error_of(
+          R"({"source": {"plugin": "random"}, "analyzers": [{"plugin": "meanx"}], "sweep": {"parameters": {
+                        "source.params.n": )" +
+          list(1000) + R"(, "source.params.frames": )" + list(1000) +
+          R"(, "analyzers[0].params.scale": )" + list(1000) + "}}}"),
+      "p.json: sweep.parameters: expected at most 100000 sweep points, got 1e+09 (grid of 1000 x "
+      "1000 x 1000 values)");
+  EXPECT_EQ(
+      error_of(
+          R"({"source": {"plugin": "random"}, "sweep": {"mode": "zip", "parameters": {"source.params.n": )" +
+          list(100001) + "}}}"),
+      "p.json: sweep.parameters: expected at most 100000 sweep points, got 100001 (zip of 100001 "
+      "values)");
   const Registry r = test_registry();
-  const std::string at_limit = R"({"source": {"plugin": "random"}, "sweep": {"parameters": {"source.params.n": )" +
-                               list(100) + R"(, "source.params.frames": )" + list(1000) + "}}}";
+  const std::string at_limit =
+      R"({"source": {"plugin": "random"}, "sweep": {"parameters": {"source.params.n": )" +
+      list(100) + R"(, "source.params.frames": )" + list(1000) + "}}}";
   EXPECT_EQ(Pipeline::parse(at_limit, "p.json", {}, r).points(), 100000u);
 }
 
 TEST(PipelineErrors, SweepPathsAreCheckedWithoutRecursion) {
   const std::string name(200000, 'a');
-  EXPECT_EQ(error_of(R"({"source": {"plugin": "random"}, "sweep": {"parameters": {"source.params.)" + name +
-                     R"(": [1]}}})"),
-            "p.json: source.params." + name + ": unknown parameter; known: frames, n (sweep point 0: source.params." +
-                name + " = 1)");
-  EXPECT_EQ(error_of(R"({"source": {"plugin": "random"}, "sweep": {"parameters": {"source.params.n+)" + name +
-                     R"(": [1]}}})"),
-            "p.json: sweep.parameters[\"source.params.n+aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa...\"]: expected a plugin "
-            "parameter path like source.params.name or analyzers[0].params.name, got \"source.params.n+aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa...\"");
+  EXPECT_EQ(
+      error_of(R"({"source": {"plugin": "random"}, "sweep": {"parameters": {"source.params.)" +
+               name + R"(": [1]}}})"),
+      "p.json: source.params." + name +
+          ": unknown parameter; known: frames, n (sweep point 0: source.params." + name + " = 1)");
+  EXPECT_EQ(
+      error_of(R"({"source": {"plugin": "random"}, "sweep": {"parameters": {"source.params.n+)" +
+               name + R"(": [1]}}})"),
+      "p.json: sweep.parameters[\"source.params.n+aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa...\"]: "
+      "expected a plugin "
+      "parameter path like source.params.name or analyzers[0].params.name, got "
+      "\"source.params.n+aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa...\"");
 }
 
 TEST(PipelineErrors, AnalyzerNeedsWhatTheSourceLacks) {
   const Registry r = test_registry();
   const Pipeline p = Pipeline::parse(
-      R"({"source": {"plugin": "random"}, "analyzers": [{"plugin": "needs_supports"}]})", "p.json", {}, r);
+      R"({"source": {"plugin": "random"}, "analyzers": [{"plugin": "needs_supports"}]})", "p.json",
+      {}, r);
   Log log;
   log.set_quiet(true);
   try {
     p.check(log);
     FAIL() << "expected an InputError";
   } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(), "p.json: analyzers[0]: analyzer \"needs_supports\" needs particle column "
-                           "\"supports\", which neither the source nor an analyzer before it provides "
-                           "(source \"random\")");
+    EXPECT_STREQ(e.what(),
+                 "p.json: analyzers[0]: analyzer \"needs_supports\" needs particle column "
+                 "\"supports\", which neither the source nor an analyzer before it provides "
+                 "(source \"random\")");
   }
 }
 
@@ -380,7 +439,8 @@ TEST(Pipeline, SweepGridAndZip) {
 
 TEST(Pipeline, SameSeedSameResultsAndSweepPointsIndependentOfThreads) {
   const Registry r = test_registry();
-  const char* text = R"({"seed": 9, "source": {"plugin": "random"}, "analyzers": [{"plugin": "meanx"}],
+  const char* text =
+      R"({"seed": 9, "source": {"plugin": "random"}, "analyzers": [{"plugin": "meanx"}],
     "output": {"save_frames": false}, "sweep": {"parameters": {"source.params.n": [10, 20, 30]}}})";
   const Pipeline p = Pipeline::parse(text, "p.json", {}, r);
   Log log;
@@ -472,8 +532,9 @@ TEST(Frame, CheckNamesInconsistentContacts) {
     f.check("x.h5: frame 3");
     FAIL() << "expected an InputError";
   } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(), "x.h5: frame 3: contact 0: expected particle indices below 2 (or a wall code -2 "
-                           "to -8 as second partner), got 0 and 2");
+    EXPECT_STREQ(e.what(),
+                 "x.h5: frame 3: contact 0: expected particle indices below 2 (or a wall code -2 "
+                 "to -8 as second partner), got 0 and 2");
   }
   f.contact_j()[0] = partner::wall(Wall::YLow);
   EXPECT_NO_THROW(f.check("x.h5: frame 3"));

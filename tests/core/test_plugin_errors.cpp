@@ -59,9 +59,9 @@ std::string run_error(const std::string& analyzer) {
   s.real("r_max", 0.1, "range");
   r.add_analyzer<RangeTooShort>("short_range", "complains about r_max", s);
   r.add_analyzer<NoContacts>("no_contacts", "complains about the frame", Schema{});
-  const Pipeline p = Pipeline::parse(R"({"source": {"plugin": "one"}, "analyzers": [{"plugin": ")" +
-                                         analyzer + R"("}]})",
-                                     "p.json", {}, r);
+  const Pipeline p = Pipeline::parse(
+      R"({"source": {"plugin": "one"}, "analyzers": [{"plugin": ")" + analyzer + R"("}]})",
+      "p.json", {}, r);
   Log log;
   log.set_quiet(true);
   RunOptions o;

@@ -17,7 +17,9 @@ TEST(PropertyDocs, FileFormatPageListsEveryStandardColumnWithItsTypeAndUnit) {
   for (const Property& p : standard_properties()) {
     std::ostringstream row;
     row << "| " << to_string(p.scope) << " | `" << p.name << "` | "
-        << (p.type == ValueType::Real ? "real" : p.type == ValueType::Integer ? "integer" : "small");
+        << (p.type == ValueType::Real      ? "real"
+            : p.type == ValueType::Integer ? "integer"
+                                           : "small");
     if (p.components == kDimComponents) row << "[dim]";
     if (p.components == kSpinComponents) row << "[spin]";
     if (p.components > 1) row << "[" << p.components << "]";

@@ -18,7 +18,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const Property kLabel{"label", Scope::Particle, ValueType::Integer, 1, "", "particle index times 3"};
+const Property kLabel{"label", Scope::Particle,         ValueType::Integer, 1,
+                      "",      "particle index times 3"};
 
 // A fixed frame of 5 particles along x, one per frame.
 class LineSource : public Source {
@@ -138,21 +139,27 @@ class LazyLabeller : public Labeller {
 class ShortLabeller : public Labeller {
  public:
   using Labeller::Labeller;
-  void publish(PropertyTable& columns) override { columns.get<IndexArray>("label") = IndexArray::Zero(3); }
+  void publish(PropertyTable& columns) override {
+    columns.get<IndexArray>("label") = IndexArray::Zero(3);
+  }
 };
 
 // Fills label through add(), which hands out the declared column.
 class AddingLabeller : public Labeller {
  public:
   using Labeller::Labeller;
-  void publish(PropertyTable& columns) override { columns.add<IndexArray>(kLabel) = 3 * IndexArray::LinSpaced(5, 0, 4); }
+  void publish(PropertyTable& columns) override {
+    columns.add<IndexArray>(kLabel) = 3 * IndexArray::LinSpaced(5, 0, 4);
+  }
 };
 
 // Fills a column it did not declare (a typo).
 class TypoLabeller : public Labeller {
  public:
   using Labeller::Labeller;
-  void publish(PropertyTable& columns) override { columns.get<IndexArray>("lable") = IndexArray::Zero(5); }
+  void publish(PropertyTable& columns) override {
+    columns.get<IndexArray>("lable") = IndexArray::Zero(5);
+  }
 };
 
 // Needs label as a real column, and a column nobody provides under a near name.
@@ -196,7 +203,8 @@ Registry registry_with_h5md() {
   load_plugins(r, plugin_search_path());  // the real h5md source
   r.add_source<LineSource>("line", "five particles on a line", Schema{});
   r.add_analyzer<Labeller>("labeller", "publishes label", Schema{});
-  r.add_analyzer<ObservableLabeller>("observable_labeller", "publishes label and pressure", Schema{});
+  r.add_analyzer<ObservableLabeller>("observable_labeller", "publishes label and pressure",
+                                     Schema{});
   r.add_analyzer<LabelSum>("label_sum", "sums label", Schema{});
   r.add_source<ChainSource>("chain", "five particles on a line, neighbours in contact", Schema{});
   r.add_analyzer<BondLabeller>("bond_labeller", "publishes label and bond", Schema{});
@@ -234,7 +242,8 @@ double run_label_sum(const std::string& text, const Registry& r, const fs::path&
 std::string refusal_of(const std::string& analyzers, const std::string& source = "line") {
   const Registry r = registry_with_h5md();
   const Pipeline p = Pipeline::parse(
-      R"({"source": {"plugin": ")" + source + R"("}, "analyzers": )" + analyzers + "}", "p.json", {}, r);
+      R"({"source": {"plugin": ")" + source + R"("}, "analyzers": )" + analyzers + "}", "p.json",
+      {}, r);
   Log log;
   log.set_quiet(true);
   try {
@@ -252,7 +261,9 @@ TEST(PublishedColumns, SeenByLaterAnalyzersWrittenAndReadBackByTheH5mdSource) {
   const fs::path first = fresh_dir("first"), second = fresh_dir("second");
   // 2 frames x (0 + 3 + 6 + 9 + 12)
   EXPECT_EQ(run_label_sum(R"({"source": {"plugin": "line"},
-      "analyzers": [{"plugin": "labeller"}, {"plugin": "label_sum"}]})", r, first), 60.0);
+      "analyzers": [{"plugin": "labeller"}, {"plugin": "label_sum"}]})",
+                          r, first),
+            60.0);
 
   FrameReader saved(first / "frames.h5");
   ASSERT_TRUE(saved.info().has("label"));
@@ -267,15 +278,18 @@ TEST(PublishedColumns, SeenByLaterAnalyzersWrittenAndReadBackByTheH5mdSource) {
 
   // Reprocessed by the analyzer that made the column: its new values replace the saved ones.
   const fs::path third = fresh_dir("third");
-  const std::string again = R"({"source": {"plugin": "h5md", "params": {"file": ")" +
-                            (first / "frames.h5").string() +
-                            R"("}}, "analyzers": [{"plugin": "labeller"}, {"plugin": "label_sum"}]})";
+  const std::string again =
+      R"({"source": {"plugin": "h5md", "params": {"file": ")" + (first / "frames.h5").string() +
+      R"("}}, "analyzers": [{"plugin": "labeller"}, {"plugin": "label_sum"}]})";
   EXPECT_EQ(run_label_sum(again, r, third), 60.0);
   std::ifstream log(third / "run.log");
   const std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
-  EXPECT_NE(text.find("warning: p.json: analyzers[0]: analyzer \"labeller\" replaces the particle column "
-                      "\"label\" that the source \"h5md\" provides (an earlier run's, read back) with its own"),
-            std::string::npos) << text;
+  EXPECT_NE(
+      text.find(
+          "warning: p.json: analyzers[0]: analyzer \"labeller\" replaces the particle column "
+          "\"label\" that the source \"h5md\" provides (an earlier run's, read back) with its own"),
+      std::string::npos)
+      << text;
   fs::remove_all(third);
   fs::remove_all(first);
   fs::remove_all(second);
@@ -302,10 +316,11 @@ std::string run_error_of(const std::string& analyzers, const std::string& name) 
 }
 
 TEST(PublishedColumns, AColumnPublishedTwiceIsRefusedNamingBothPublishers) {
-  EXPECT_EQ(refusal_of(R"([{"plugin": "labeller"}, {"plugin": "labeller", "name": "again"}])"),
-            "p.json: analyzers[1]: analyzer \"again\" (labeller) publishes the particle column "
-            "\"label\", which analyzer \"labeller\" at analyzers[0] publishes too; give one of them "
-            "\"publish\": false (docs/pipelines.md, \"Published columns\")");
+  EXPECT_EQ(
+      refusal_of(R"([{"plugin": "labeller"}, {"plugin": "labeller", "name": "again"}])"),
+      "p.json: analyzers[1]: analyzer \"again\" (labeller) publishes the particle column "
+      "\"label\", which analyzer \"labeller\" at analyzers[0] publishes too; give one of them "
+      "\"publish\": false (docs/pipelines.md, \"Published columns\")");
 }
 
 TEST(PublishedColumns, ASecondInstanceWithPublishFalseRunsAndLeavesTheColumnToTheFirst) {
@@ -313,11 +328,14 @@ TEST(PublishedColumns, ASecondInstanceWithPublishFalseRunsAndLeavesTheColumnToTh
   const fs::path out = fresh_dir("publish_false");
   EXPECT_EQ(run_label_sum(R"({"source": {"plugin": "line"},
       "analyzers": [{"plugin": "labeller"}, {"plugin": "short_labeller", "publish": false},
-                    {"plugin": "label_sum"}]})", r, out), 60.0);
+                    {"plugin": "label_sum"}]})",
+                          r, out),
+            60.0);
   fs::remove_all(out);
   try {
-    Pipeline::parse(R"({"source": {"plugin": "line"}, "analyzers": [{"plugin": "labeller", "publish": 1}]})",
-                    "p.json", {}, r);
+    Pipeline::parse(
+        R"({"source": {"plugin": "line"}, "analyzers": [{"plugin": "labeller", "publish": 1}]})",
+        "p.json", {}, r);
     ADD_FAILURE() << "\"publish\": 1 was accepted";
   } catch (const InputError& e) {
     EXPECT_STREQ(e.what(), "p.json: analyzers[0].publish: expected true or false, got 1");
@@ -326,30 +344,35 @@ TEST(PublishedColumns, ASecondInstanceWithPublishFalseRunsAndLeavesTheColumnToTh
 
 TEST(PublishedColumns, AColumnOfAnotherTypeThanTheSourcesOrTheStandardOneIsRefused) {
   EXPECT_EQ(refusal_of(R"([{"plugin": "labeller"}])", "real_labelled_line"),
-            "p.json: analyzers[0]: analyzer \"labeller\" publishes the particle column \"label\" as integer, "
+            "p.json: analyzers[0]: analyzer \"labeller\" publishes the particle column \"label\" "
+            "as integer, "
             "but the source \"real_labelled_line\" provides it as real: choose another name");
   EXPECT_EQ(refusal_of(R"([{"plugin": "integer_velocity"}])"),
-            "p.json: analyzers[0]: analyzer \"integer_velocity\" publishes the particle column \"velocity\" "
+            "p.json: analyzers[0]: analyzer \"integer_velocity\" publishes the particle column "
+            "\"velocity\" "
             "as integer, but the standard column of that name is real[dim]: choose another name");
 }
 
 TEST(PublishedColumns, ANeededTypeMismatchNamesThePublisher) {
   EXPECT_EQ(refusal_of(R"([{"plugin": "labeller"}, {"plugin": "real_label_reader"}])"),
-            "p.json: analyzers[1]: analyzer \"real_label_reader\" needs particle column \"label\" as real, "
+            "p.json: analyzers[1]: analyzer \"real_label_reader\" needs particle column \"label\" "
+            "as real, "
             "but analyzer \"labeller\" at analyzers[0] publishes it as integer");
   EXPECT_EQ(refusal_of(R"([{"plugin": "real_label_reader"}])", "real_labelled_line"), "no error");
 }
 
 TEST(PublishedColumns, ANeededColumnNameGetsADidYouMean) {
-  EXPECT_EQ(refusal_of(R"([{"plugin": "labeller"}, {"plugin": "misspelt_label_reader"}])"),
-            "p.json: analyzers[1]: analyzer \"misspelt_label_reader\" needs particle column \"lable\" "
-            "(did you mean \"label\"?), which neither the source nor an analyzer before it provides "
-            "(source \"line\")");
+  EXPECT_EQ(
+      refusal_of(R"([{"plugin": "labeller"}, {"plugin": "misspelt_label_reader"}])"),
+      "p.json: analyzers[1]: analyzer \"misspelt_label_reader\" needs particle column \"lable\" "
+      "(did you mean \"label\"?), which neither the source nor an analyzer before it provides "
+      "(source \"line\")");
 }
 
 TEST(PublishedColumns, AColumnPublishNeverFilledStopsTheRunInsteadOfSavingZeros) {
   EXPECT_EQ(run_error_of(R"([{"plugin": "lazy_labeller"}, {"plugin": "label_sum"}])", "lazy"),
-            "p.json: analyzers[0]: analyzer \"lazy_labeller\": publish() never filled the particle column "
+            "p.json: analyzers[0]: analyzer \"lazy_labeller\": publish() never filled the particle "
+            "column "
             "\"label\" it declares");
 }
 
@@ -357,17 +380,22 @@ TEST(PublishedColumns, AColumnFilledThroughAddCountsAsFilled) {
   const Registry r = registry_with_h5md();
   const fs::path out = fresh_dir("adding");
   EXPECT_EQ(run_label_sum(R"({"source": {"plugin": "line"},
-      "analyzers": [{"plugin": "adding_labeller"}, {"plugin": "label_sum"}]})", r, out), 60.0);
+      "analyzers": [{"plugin": "adding_labeller"}, {"plugin": "label_sum"}]})",
+                          r, out),
+            60.0);
   fs::remove_all(out);
 }
 
 TEST(PublishedColumns, PublishErrorsNameTheAnalyzerTheColumnAndTheSizes) {
   EXPECT_EQ(run_error_of(R"([{"plugin": "short_labeller"}, {"plugin": "label_sum"}])", "short"),
-            "p.json: analyzers[0]: analyzer \"short_labeller\": publish() gave the particle column \"label\" "
+            "p.json: analyzers[0]: analyzer \"short_labeller\": publish() gave the particle column "
+            "\"label\" "
             "3 rows x 1 component, expected 5 rows x 1 component (one row per particle)");
   EXPECT_EQ(run_error_of(R"([{"plugin": "typo_labeller"}, {"plugin": "label_sum"}])", "typo"),
-            "p.json: analyzers[0]: analyzer \"typo_labeller\": publish(): the particle table has no column "
-            "\"lable\" (did you mean \"label\"?); known: label; publish() fills only the columns publishes() "
+            "p.json: analyzers[0]: analyzer \"typo_labeller\": publish(): the particle table has "
+            "no column "
+            "\"lable\" (did you mean \"label\"?); known: label; publish() fills only the columns "
+            "publishes() "
             "declares");
 }
 
@@ -382,7 +410,9 @@ TEST(PublishedColumns, ContactColumnsJoinTheContactTableAndAreWritten) {
   const fs::path out = fresh_dir("contacts");
   // 2 frames x (0 + 10 + 20 + 30)
   EXPECT_EQ(run_label_sum(R"({"source": {"plugin": "chain"},
-      "analyzers": [{"plugin": "bond_labeller"}, {"plugin": "bond_sum", "name": "label_sum"}]})", r, out), 120.0);
+      "analyzers": [{"plugin": "bond_labeller"}, {"plugin": "bond_sum", "name": "label_sum"}]})",
+                          r, out),
+            120.0);
   FrameReader saved(out / "frames.h5");
   const Frame f = saved.read(1);
   ASSERT_TRUE(f.contacts && f.contacts->has("bond"));
@@ -396,7 +426,9 @@ TEST(PublishedColumns, ContactColumnsAreLeftOutOfFramesWithoutContacts) {
   const fs::path out = fresh_dir("no_contacts");
   // The particle column is published; the contact column has no table to join.
   EXPECT_EQ(run_label_sum(R"({"source": {"plugin": "line"},
-      "analyzers": [{"plugin": "bond_labeller"}, {"plugin": "label_sum"}]})", r, out), 10.0);
+      "analyzers": [{"plugin": "bond_labeller"}, {"plugin": "label_sum"}]})",
+                          r, out),
+            10.0);
   FrameReader saved(out / "frames.h5");
   EXPECT_FALSE(saved.read(0).contacts.has_value());
   fs::remove_all(out);
@@ -406,7 +438,8 @@ TEST(PublishedColumns, ContactColumnsAreLeftOutOfFramesWithoutContacts) {
 TEST(PublishedColumns, TwoPackingAnalyzersMeasureTwoRegionsInTheirOwnGroups) {
   Registry r;
   load_plugins(r, plugin_search_path());
-  const std::string source = R"({"source": {"plugin": "lattice", "params": {"lattice": "fcc", "cells": [4, 4, 8],
+  const std::string source =
+      R"({"source": {"plugin": "lattice", "params": {"lattice": "fcc", "cells": [4, 4, 8],
       "boundary": "walls", "jitter": 0.05, "frames": 2}}, "analyzers": [
       {"plugin": "packing", "name": "lower", "params": {"exclude_top": 4, "contact_tolerance": 0.11}},
       {"plugin": "packing", "name": "upper", )";
@@ -417,10 +450,12 @@ TEST(PublishedColumns, TwoPackingAnalyzersMeasureTwoRegionsInTheirOwnGroups) {
     Pipeline::parse(source + upper, "p.json", {}, r).check(log);
     ADD_FAILURE() << "two packing analyzers that both publish coordination were accepted";
   } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(), "p.json: analyzers[1]: analyzer \"upper\" (packing) publishes the particle "
-                           "column \"coordination\", which analyzer \"lower\" (packing) at analyzers[0] "
-                           "publishes too; give one of them \"publish\": false (docs/pipelines.md, \"Published "
-                           "columns\")");
+    EXPECT_STREQ(
+        e.what(),
+        "p.json: analyzers[1]: analyzer \"upper\" (packing) publishes the particle "
+        "column \"coordination\", which analyzer \"lower\" (packing) at analyzers[0] "
+        "publishes too; give one of them \"publish\": false (docs/pipelines.md, \"Published "
+        "columns\")");
   }
 
   const Pipeline p = Pipeline::parse(source + R"("publish": false, )" + upper, "p.json", {}, r);
@@ -428,7 +463,8 @@ TEST(PublishedColumns, TwoPackingAnalyzersMeasureTwoRegionsInTheirOwnGroups) {
   o.progress = false;
   o.out = fresh_dir("two_packings");
   const ResultSet results = p.run(o, log).results;
-  const double lower = results.at("lower").scalar("phi").value, top = results.at("upper").scalar("phi").value;
+  const double lower = results.at("lower").scalar("phi").value,
+               top = results.at("upper").scalar("phi").value;
   // Jitter 0.05 shrinks the radii of the fcc crystal (0.74) by 5 %: about 0.56.
   EXPECT_GT(lower, 0.5);
   EXPECT_LT(lower, 0.65);

@@ -26,10 +26,10 @@ TEST(RampMeans, BranchesOfHalfCycles) {
 TEST(RampMeans, GroupsByBranchAndTime) {
   RampMeans m({"phi"});
   m.add(at(0, 1.1), {0.80});
-  m.add(at(0, 1.1), {0.82});  // the first rise: kept apart
-  m.add(at(1, 1.1), {0.84});  // decreasing, first cycle
-  m.add(at(3, 1.1), {0.86});  // decreasing, second cycle: pooled with it
-  m.add(at(2, 1.1), {0.83});  // a later increase: its own branch
+  m.add(at(0, 1.1), {0.82});   // the first rise: kept apart
+  m.add(at(1, 1.1), {0.84});   // decreasing, first cycle
+  m.add(at(3, 1.1), {0.86});   // decreasing, second cycle: pooled with it
+  m.add(at(2, 1.1), {0.83});   // a later increase: its own branch
   m.add(at(-1, 1.1), {0.10});  // no cycle: not part of any branch
   const Table t = m.table("doc");
   ASSERT_EQ(t.rows(), 3u);

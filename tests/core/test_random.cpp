@@ -73,7 +73,8 @@ TEST(Random, ShufflesAreUniformPermutations) {
   }
   ASSERT_EQ(seen.size(), 6u);
   double chi2 = 0;
-  for (const auto& [order, count] : seen) chi2 += std::pow(count - trials / 6.0, 2) / (trials / 6.0);
+  for (const auto& [order, count] : seen)
+    chi2 += std::pow(count - trials / 6.0, 2) / (trials / 6.0);
   EXPECT_LT(chi2, 20.5);
   std::vector<int> hits(7, 0);
   for (int t = 0; t < 70000; ++t) ++hits[rng.below(7)];

@@ -21,8 +21,8 @@ constexpr long kFirstFrames = 100;
 
 // A file of this process's own, rewritten for every input (HDF5 reads files by name).
 const std::filesystem::path& input_file() {
-  static const std::filesystem::path path =
-      std::filesystem::temp_directory_path() / ("granpipe_fuzz_" + std::to_string(getpid()) + ".h5");
+  static const std::filesystem::path path = std::filesystem::temp_directory_path() /
+                                            ("granpipe_fuzz_" + std::to_string(getpid()) + ".h5");
   return path;
 }
 
@@ -36,7 +36,9 @@ void read_checked(const granpipe::FrameReader& reader, long k) {
 // meets the sizes of a damaged file with a failed malloc and an error, which granpipe turns
 // into an InputError; an allocation of granpipe's own throws std::bad_alloc, a finding.
 // HDF5 1.10 leaks a few bytes on some damaged object headers: not granpipe's to find.
-extern "C" const char* __asan_default_options() { return "allocator_may_return_null=1:detect_leaks=0"; }
+extern "C" const char* __asan_default_options() {
+  return "allocator_may_return_null=1:detect_leaks=0";
+}
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   {

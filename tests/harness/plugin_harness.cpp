@@ -9,7 +9,8 @@ PluginHarness::PluginHarness(const Schema& schema, nlohmann::json params, std::u
                              std::filesystem::path output_dir, std::string name) {
   log_.set_quiet(true);
   progress_.set_enabled(false);
-  params_ = validate_params(params, schema, JsonLocation{"test", "params"}, std::filesystem::current_path());
+  params_ = validate_params(params, schema, JsonLocation{"test", "params"},
+                            std::filesystem::current_path());
   context_ = std::make_unique<PluginContext>(PluginContext{
       params_, Seeds(seed), 1, log_, progress_, std::move(output_dir), std::move(name), "params"});
 }

@@ -24,7 +24,9 @@ class PluginHarness {
   PluginHarness& operator=(const PluginHarness&) = delete;
 
   const PluginContext& context() const { return *context_; }
-  operator const PluginContext&() const { return *context_; }  // NOLINT: a context is what it is for
+  operator const PluginContext&() const {
+    return *context_;
+  }  // NOLINT: a context is what it is for
   const Params& params() const { return params_; }
   Log& log() { return log_; }
 
@@ -39,8 +41,8 @@ class PluginHarness {
 std::unique_ptr<PluginHarness> make_context(const Schema& schema, nlohmann::json params = {},
                                             std::uint64_t seed = 1,
                                             std::filesystem::path output_dir = {});
-// The context of the installed plugin `plugin`, named after it (found on GRANPIPE_PLUGIN_PATH by the real
-// loader, whose registry stays loaded for the test program).
+// The context of the installed plugin `plugin`, named after it (found on GRANPIPE_PLUGIN_PATH by
+// the real loader, whose registry stays loaded for the test program).
 std::unique_ptr<PluginHarness> make_context(const std::string& plugin, nlohmann::json params = {},
                                             std::uint64_t seed = 1,
                                             std::filesystem::path output_dir = {});

@@ -155,7 +155,8 @@ std::vector<ga::Arch> arches_of(const Frame& f) {
 }
 
 ga::ContactCensus census_of(const Frame& f) {
-  return ga::census_contacts(ga::Supports::of(f), granpipe::find_contacts_by_distance(f, kTolerance));
+  return ga::census_contacts(ga::Supports::of(f),
+                             granpipe::find_contacts_by_distance(f, kTolerance));
 }
 
 // The same census by brute force over all pairs and walls, with its own contact rule.
@@ -198,8 +199,8 @@ void expect_eq4_identity(const Frame& f) {
   EXPECT_NEAR(st.z_eq4() - sc.z_direct(), 2.0 * static_cast<double>(sc.missing_supports()) / n,
               1e-12);
   // Eq. (3), written out from p1 and p2, is Eq. (4).
-  EXPECT_NEAR(st.z_eq4(), 4.0 - static_cast<double>(st.p1) / n - 2.0 * static_cast<double>(st.p2) / n,
-              1e-12);
+  EXPECT_NEAR(st.z_eq4(),
+              4.0 - static_cast<double>(st.p1) / n - 2.0 * static_cast<double>(st.p2) / n, 1e-12);
 }
 
 struct Summary {
@@ -393,9 +394,11 @@ TEST(Arches, Eq4IdentityHoldsForRandomLabels) {
       auto& d = disks[static_cast<std::size_t>(i)];
       d.x = 0.5 + i;
       d.y = 0.5 + static_cast<double>(rng() % 5);
-      const std::int64_t lefts[] = {kNone, kLeftWall, kBase, i > 0 ? static_cast<std::int64_t>(rng() % i) : kNone};
-      const std::int64_t rights[] = {kNone, kRightWall, kBase,
-                                     i + 1 < n ? i + 1 + static_cast<std::int64_t>(rng() % (n - i - 1)) : kNone};
+      const std::int64_t lefts[] = {kNone, kLeftWall, kBase,
+                                    i > 0 ? static_cast<std::int64_t>(rng() % i) : kNone};
+      const std::int64_t rights[] = {
+          kNone, kRightWall, kBase,
+          i + 1 < n ? i + 1 + static_cast<std::int64_t>(rng() % (n - i - 1)) : kNone};
       d.left = lefts[rng() % 4];
       d.right = rights[rng() % 4];
     }
@@ -439,8 +442,7 @@ TEST(Arches, BadSupportLabelsAreInputErrors) {
 }
 
 TEST(Arches, RingOfMutualSupportsIsAnInputError) {
-  const Frame f = make_frame(
-      {{1.0, 1.0, 2, 1}, {2.0, 1.0, 0, 2}, {3.0, 1.0, 1, 0}}, 4.0);
+  const Frame f = make_frame({{1.0, 1.0, 2, 1}, {2.0, 1.0, 0, 2}, {3.0, 1.0, 1, 0}}, 4.0);
   ga::check_supports(f, "test");
   EXPECT_THROW(ga::find_arches(f, "test"), granpipe::InputError);
 }
@@ -491,15 +493,18 @@ TEST(ArchesSvg, OneCirclePerDiskAndOneLinePerMutualLink) {
   std::function<void(const boost::property_tree::ptree&)> collect = [&](const auto& node) {
     for (const auto& [name, child] : node) {
       if (name == "line") {
-        ends.insert({child.template get<double>("<xmlattr>.x1"), child.template get<double>("<xmlattr>.y1")});
-        ends.insert({child.template get<double>("<xmlattr>.x2"), child.template get<double>("<xmlattr>.y2")});
+        ends.insert({child.template get<double>("<xmlattr>.x1"),
+                     child.template get<double>("<xmlattr>.y1")});
+        ends.insert({child.template get<double>("<xmlattr>.x2"),
+                     child.template get<double>("<xmlattr>.y2")});
       }
       collect(child);
     }
   };
   collect(tree);
   std::set<std::pair<double, double>> expected;
-  for (Eigen::Index i : {a1, a2, a3, U, V}) expected.insert({f.position()(i, 0), f.position()(i, 1)});
+  for (Eigen::Index i : {a1, a2, a3, U, V})
+    expected.insert({f.position()(i, 0), f.position()(i, 1)});
   ASSERT_EQ(ends.size(), expected.size());
   for (auto e = ends.begin(), x = expected.begin(); e != ends.end(); ++e, ++x) {
     EXPECT_NEAR(e->first, x->first, 1e-6);
@@ -532,7 +537,8 @@ TEST(ArchesAnalyzer, AveragesOverFramesWithStandardErrors) {
   EXPECT_TRUE(analyzer.needs().columns[0].matches(ga::supports_property()));
 
   Frame first = two_disk_arch(), second = three_disk_chain();
-  const granpipe::Property tap{"tap", granpipe::Scope::Frame, granpipe::ValueType::Integer, 1, "", ""};
+  const granpipe::Property tap{"tap", granpipe::Scope::Frame, granpipe::ValueType::Integer, 1, "",
+                               ""};
   first.set_observable(tap, std::int64_t{7});
   second.set_observable(tap, std::int64_t{8});
   granpipe::FrameCache cache;
@@ -583,7 +589,8 @@ TEST(ArchesAnalyzer, AveragesOverFramesWithStandardErrors) {
   EXPECT_DOUBLE_EQ(density_at("span_all", 1.5), 0.0);
   for (const auto& [name, h] : r.histograms()) {
     double integral = 0;
-    for (std::size_t b = 0; b < h.values.size(); ++b) integral += h.values[b] * (h.edges[b + 1] - h.edges[b]);
+    for (std::size_t b = 0; b < h.values.size(); ++b)
+      integral += h.values[b] * (h.edges[b + 1] - h.edges[b]);
     EXPECT_DOUBLE_EQ(integral, name == "span_s4" ? 0.0 : 1.0) << name;
   }
   // Per frame, Eq. (4) exceeds the direct count by 2 N_base / N.

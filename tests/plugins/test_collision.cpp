@@ -64,7 +64,8 @@ std::vector<Frame> exact_collision(double step, double until) {
     }
     frames.push_back(pair_frame(t, -overlap, rate, overlap > 0.0));
     if (overlap > 0.0) {  // the law's force on sphere 0 (on the right) from sphere 1: along +x
-      auto& force = frames.back().contacts->add<Coordinates>(*find_standard("normal_force", Scope::Contact));
+      auto& force =
+          frames.back().contacts->add<Coordinates>(*find_standard("normal_force", Scope::Contact));
       force.setZero();
       force(0, 0) = kKn * overlap + kGamma * m_eff * rate;
     }
@@ -73,7 +74,8 @@ std::vector<Frame> exact_collision(double step, double until) {
 }
 
 std::unique_ptr<test::PluginHarness> context(double kn = kKn) {
-  return test::make_context(collision::schema(), {{"k_n", kn}, {"gamma_n", kGamma}, {"density", {kDensity}}});
+  return test::make_context(collision::schema(),
+                            {{"k_n", kn}, {"gamma_n", kGamma}, {"density", {kDensity}}});
 }
 
 // The analyzer on `frames`, saved every `save_every` steps, told the stiffness `kn`.
@@ -91,7 +93,8 @@ Results analyse(std::vector<Frame> frames, std::int64_t save_every = 1, double k
 }
 
 // The InputError message of analysing `frames`, or "" when there is none.
-std::string refusal(const std::vector<Frame>& frames, std::int64_t save_every = 1, double kn = kKn) {
+std::string refusal(const std::vector<Frame>& frames, std::int64_t save_every = 1,
+                    double kn = kKn) {
   try {
     analyse(frames, save_every, kn);
   } catch (const InputError& e) {
@@ -114,7 +117,8 @@ TEST(Collision, TheExactSolutionIsMeasuredWithinTheInterpolation) {
   const double t_c = collision::predict_linear(kKn, kGamma, kMass / 2.0, "test").contact_time;
   const Results r = analyse(exact_collision(0.02 * t_c, 0.03));
   EXPECT_NEAR(r.scalars().at("contact_time_rel_error").value, 0.0, 1e-4);
-  EXPECT_NEAR(r.scalars().at("restitution_rel_error").value, 0.0, 1e-12);  // free flight on both sides
+  EXPECT_NEAR(r.scalars().at("restitution_rel_error").value, 0.0,
+              1e-12);  // free flight on both sides
   EXPECT_NEAR(r.scalars().at("approach_speed").value, kSpeed, 1e-12);
   EXPECT_NEAR(r.scalars().at("frames_in_contact").value, 50.0, 1.0);
 }
@@ -132,8 +136,9 @@ TEST(Collision, ASphereTouchingAWallIsRefused) {
   f.add_contacts(1);
   f.contact_i()[0] = 1;
   f.contact_j()[0] = partner::wall(Wall::XLow);
-  EXPECT_EQ(refusal({f}), "frame 0: expected the spheres in free flight, got sphere 1 touching wall x_low "
-                          "(a larger container?)");
+  EXPECT_EQ(refusal({f}),
+            "frame 0: expected the spheres in free flight, got sphere 1 touching wall x_low "
+            "(a larger container?)");
 }
 
 TEST(Collision, NoContactIsRefused) {
@@ -142,15 +147,17 @@ TEST(Collision, NoContactIsRefused) {
 }
 
 TEST(Collision, TouchingInTheFirstFrameIsRefused) {
-  EXPECT_EQ(refusal({pair_frame(0.0, -0.001, 1.0, true)}),
-            "frame 0: expected the spheres apart in the first frame (the approach before the collision), "
-            "got them touching");
+  EXPECT_EQ(
+      refusal({pair_frame(0.0, -0.001, 1.0, true)}),
+      "frame 0: expected the spheres apart in the first frame (the approach before the collision), "
+      "got them touching");
 }
 
 TEST(Collision, AContactThatHasNotEndedIsRefused) {
-  EXPECT_EQ(refusal({pair_frame(0.0, 0.001, 1.0, false), pair_frame(0.01, -0.001, 1.0, true)}),
-            "collision: 2 frames: expected the contact to end by the last frame, got the spheres still "
-            "touching (a longer duration?)");
+  EXPECT_EQ(
+      refusal({pair_frame(0.0, 0.001, 1.0, false), pair_frame(0.01, -0.001, 1.0, true)}),
+      "collision: 2 frames: expected the contact to end by the last frame, got the spheres still "
+      "touching (a longer duration?)");
 }
 
 TEST(Collision, ASecondContactIsRefused) {
@@ -162,7 +169,8 @@ TEST(Collision, ASecondContactIsRefused) {
 TEST(Collision, ASpeciesWithoutADensityIsRefused) {
   Frame f = pair_frame(0.0, 0.1, 1.0, false);
   f.species()[1] = 1;
-  EXPECT_EQ(refusal({f}), "params.density: expected a density for species 1 of sphere 1, got 1 densities");
+  EXPECT_EQ(refusal({f}),
+            "params.density: expected a density for species 1 of sphere 1, got 1 densities");
 }
 
 TEST(Collision, AnOverdampedPairIsRefused) {
@@ -170,8 +178,9 @@ TEST(Collision, AnOverdampedPairIsRefused) {
     collision::predict_linear(1.0, 4.0, 1.0, "collision");
     FAIL() << "expected an InputError";
   } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(), "collision: expected an underdamped pair (k_n/m_eff > gamma_n^2/4), got "
-                           "k_n/m_eff = 1 and gamma_n^2/4 = 4");
+    EXPECT_STREQ(e.what(),
+                 "collision: expected an underdamped pair (k_n/m_eff > gamma_n^2/4), got "
+                 "k_n/m_eff = 1 and gamma_n^2/4 = 4");
   }
 }
 
@@ -179,9 +188,10 @@ TEST(Collision, AnOverdampedPairIsRefused) {
 // would widen them by up to 10 steps without a word.
 TEST(Collision, FramesThatAreNotEveryStepAreRefused) {
   const double t_c = collision::predict_linear(kKn, kGamma, kMass / 2.0, "test").contact_time;
-  EXPECT_EQ(refusal(exact_collision(0.02 * t_c, 0.03), 10),
-            "frame 1: expected a frame every time step (the source's save_every 1), got step 10 after "
-            "step 0 (a gap of 10 steps)");
+  EXPECT_EQ(
+      refusal(exact_collision(0.02 * t_c, 0.03), 10),
+      "frame 1: expected a frame every time step (the source's save_every 1), got step 10 after "
+      "step 0 (a gap of 10 steps)");
 }
 
 // The frames' normal forces are the law's at kKn: an analyzer told half of it would compare
@@ -189,9 +199,12 @@ TEST(Collision, FramesThatAreNotEveryStepAreRefused) {
 TEST(Collision, AStiffnessOtherThanTheForcesShowIsRefused) {
   const double t_c = collision::predict_linear(kKn, kGamma, kMass / 2.0, "test").contact_time;
   const std::vector<Frame> frames = exact_collision(0.02 * t_c, 0.03);
-  const auto touching = std::count_if(frames.begin(), frames.end(), [](const Frame& f) { return f.contacts->rows() > 0; });
+  const auto touching = std::count_if(frames.begin(), frames.end(),
+                                      [](const Frame& f) { return f.contacts->rows() > 0; });
   EXPECT_EQ(refusal(frames, 1, 1.01 * kKn), "") << "within the tolerance";
-  EXPECT_EQ(refusal(frames, 1, 1e5),
-            "params.k_n: expected the source's normal stiffness, got 100000, while the frames' normal "
-            "forces show k_n = 2e+05 (fitted over " + std::to_string(touching) + " frames in contact)");
+  EXPECT_EQ(
+      refusal(frames, 1, 1e5),
+      "params.k_n: expected the source's normal stiffness, got 100000, while the frames' normal "
+      "forces show k_n = 2e+05 (fitted over " +
+          std::to_string(touching) + " frames in contact)");
 }

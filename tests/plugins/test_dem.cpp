@@ -5,14 +5,14 @@
 // detection and the emitted frame.
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdlib>
 #include <numbers>
 #include <numeric>
 #include <set>
 #include <string>
-#include <atomic>
-#include <cstdlib>
 #include <utility>
 #include <vector>
 
@@ -26,13 +26,13 @@
 #include "time_step.hpp"
 
 namespace dem = granpipe::dem;
+using Eigen::Vector3d;
 using granpipe::Boundary;
 using granpipe::Container;
 using granpipe::ContainerShape;
 using granpipe::Frame;
 using granpipe::InputError;
 using granpipe::Wall;
-using Eigen::Vector3d;
 namespace partner = granpipe::partner;
 
 // Every heap allocation of this test program (operator new and Eigen both end in malloc)
@@ -132,7 +132,9 @@ Vector3d contact_vector(const Frame& f, const char* name, Eigen::Index k) {
 }
 
 // Time at which f (sampled at steps) crosses zero between t0 (f0) and t1 (f1).
-double crossing(double t0, double f0, double t1, double f1) { return t0 + (t1 - t0) * f0 / (f0 - f1); }
+double crossing(double t0, double f0, double t1, double f1) {
+  return t0 + (t1 - t0) * f0 / (f0 - f1);
+}
 
 struct Collision {
   double contact_time, restitution;
@@ -184,13 +186,26 @@ TEST(DemCollision, HertzHeadOnLastsTheAnalyticHertzContactTime) {
 TEST(DemEnergy, ElasticSpheresInABoxKeepTheirEnergy) {
   // Ten spheres of diameter 0.5 bouncing in a closed box without damping or friction.
   dem::ContactMaterial m = material(kKn, 0.0, 0.0);
-  dem::InitialState s = spheres({{0.5, 0.5, 0.5}, {1.5, 0.5, 0.5}, {2.5, 0.5, 0.5},
-                                 {0.5, 1.5, 0.5}, {1.5, 1.5, 1.5}, {2.5, 2.5, 0.5},
-                                 {0.5, 2.5, 2.5}, {1.5, 2.5, 1.5}, {2.5, 1.5, 2.5},
+  dem::InitialState s = spheres({{0.5, 0.5, 0.5},
+                                 {1.5, 0.5, 0.5},
+                                 {2.5, 0.5, 0.5},
+                                 {0.5, 1.5, 0.5},
+                                 {1.5, 1.5, 1.5},
+                                 {2.5, 2.5, 0.5},
+                                 {0.5, 2.5, 2.5},
+                                 {1.5, 2.5, 1.5},
+                                 {2.5, 1.5, 2.5},
                                  {0.5, 0.5, 2.5}},
-                                {{1, 0.3, -0.2}, {-0.5, 1, 0.1}, {0.2, -0.7, 1}, {-1, -1, 0.4},
-                                 {0.6, 0.1, -1}, {0.9, -0.4, 0.3}, {-0.2, 0.8, -0.6},
-                                 {0.4, 0.4, 0.9}, {-0.8, 0.2, -0.3}, {0.1, -0.9, 0.7}},
+                                {{1, 0.3, -0.2},
+                                 {-0.5, 1, 0.1},
+                                 {0.2, -0.7, 1},
+                                 {-1, -1, 0.4},
+                                 {0.6, 0.1, -1},
+                                 {0.9, -0.4, 0.3},
+                                 {-0.2, 0.8, -0.6},
+                                 {0.4, 0.4, 0.9},
+                                 {-0.8, 0.2, -0.3},
+                                 {0.1, -0.9, 0.7}},
                                 0.25);
   const double tc = dem::linear_contact_time(kKn, 0.0, 0.5 * std::pow(0.5, 3));
   dem::Settings st = settings(tc / 50);
@@ -216,8 +231,7 @@ dem::Engine on_incline(double theta, double mu) {
   dem::Settings s = settings(1e-4, g);
   s.rotation = false;
   const double rest = 0.5 - std::cos(theta) / kKn;  // the centre height at rest
-  return dem::Engine(one_species(m), dem::WallSet(base_only(), {}), s,
-                     spheres({{0, 0, rest}}, {}));
+  return dem::Engine(one_species(m), dem::WallSet(base_only(), {}), s, spheres({{0, 0, rest}}, {}));
 }
 
 }  // namespace
@@ -250,8 +264,7 @@ TEST(DemFriction, SlidingContactCarriesExactlyMuTimesTheNormalForce) {
   // (after 2 v0 / (7 mu g)); until then |F_t| = mu |F_n| in the emitted contact table.
   const double mu = 0.3;
   dem::ContactMaterial m = material(kKn, dem::damping_for_restitution(0.5, kKn, 1.0), mu);
-  dem::Engine e(one_species(m), dem::WallSet(base_only(), {}),
-                settings(1e-4, -Vector3d::UnitZ()),
+  dem::Engine e(one_species(m), dem::WallSet(base_only(), {}), settings(1e-4, -Vector3d::UnitZ()),
                 spheres({{0, 0, 0.5 - 1.0 / kKn}}, {{1.0, 0, 0}}));
   e.record_contacts(true);
   const double rolling_from = 2.0 / (7.0 * mu);
@@ -292,7 +305,8 @@ TEST(DemWalls, SphereAtRestOnTheBasePressesItByItsWeightOverTheStiffness) {
     e.run(30000);
     const double overlap = 0.5 - position(e, 0).z();
     // m g = k_n delta (linear), = k_n delta^(3/2) / sqrt(d) with d = 2 R = 1 (Hertz).
-    const double expected = law == dem::ContactLaw::Linear ? 1.0 / kKn : std::pow(1.0 / kKn, 2.0 / 3.0);
+    const double expected =
+        law == dem::ContactLaw::Linear ? 1.0 / kKn : std::pow(1.0 / kKn, 2.0 / 3.0);
     EXPECT_NEAR(overlap / expected, 1.0, 1e-9) << static_cast<int>(law);
     EXPECT_LT(velocity(e, 0).norm(), 1e-12);
   }
@@ -368,7 +382,8 @@ TEST(DemWalls, SphereOnAVibratedBaseFollowsItWithoutDrift) {
   drive.form = dem::Drive::Form::Sine;
   drive.amplitude = 0.5;
   drive.angular_frequency = 1.0;
-  dem::Engine e(one_species(m), dem::WallSet(base_only(), drive), settings(1e-4, -Vector3d::UnitZ()),
+  dem::Engine e(one_species(m), dem::WallSet(base_only(), drive),
+                settings(1e-4, -Vector3d::UnitZ()),
                 spheres({{0, 0, 0.5 - 1.0 / kKn}}, {{0, 0, 0.5}}));
   double worst = 0.0;
   for (int k = 0; k < 100; ++k) {
@@ -405,8 +420,8 @@ namespace {
 // `stir` per component.
 dem::Engine dropped_bed(int n, double R, dem::Settings s, const dem::Drive& drive = {},
                         double stir = 0.0) {
-  dem::InitialState bed = dem::loose_lattice({.count = n, .radius = 0.5, .cylinder_radius = R,
-                                              .spacing = 1.03, .seed = 7});
+  dem::InitialState bed = dem::loose_lattice(
+      {.count = n, .radius = 0.5, .cylinder_radius = R, .spacing = 1.03, .seed = 7});
   // In random order, so that tags say nothing about where a sphere is.
   granpipe::RandomStream random(11);
   std::vector<int> order(static_cast<std::size_t>(n));
@@ -456,8 +471,8 @@ TEST(DemHistory, ContactThatOpensAndClosesWithinOneListIntervalStartsAfresh) {
     } else if (!before) {
       // A new contact holds one step of tangential slip, v_t dt, and nothing older.
       ++contacts;
-      const double slip = (velocity(e, 0) - velocity(e, 1)).norm() +
-                          0.5 * (spin(e, 0).norm() + spin(e, 1).norm());
+      const double slip =
+          (velocity(e, 0) - velocity(e, 1)).norm() + 0.5 * (spin(e, 0).norm() + spin(e, 1).norm());
       EXPECT_LE(u.norm(), 1.5 * slip * s.dt) << "contact " << contacts;
     }
     longest = std::max(longest, u.norm());
@@ -494,7 +509,8 @@ TEST(DemThreads, OneAndTwoThreadsGiveBitIdenticalRuns) {
   dem::Settings one = settings(1e-4, -Vector3d::UnitZ()), two = one;
   one.skin = two.skin = 0.002;
   two.threads = 2;
-  dem::Engine a = dropped_bed(400, 4.0, one, drive, 1.0), b = dropped_bed(400, 4.0, two, drive, 1.0);
+  dem::Engine a = dropped_bed(400, 4.0, one, drive, 1.0),
+              b = dropped_bed(400, 4.0, two, drive, 1.0);
   a.run(600);
   b.run(600);
   EXPECT_GT(a.neighbors().builds(), 5);
@@ -592,7 +608,8 @@ TEST(DemNeighbours, HalfListHoldsEveryNearPairOnceWithBigParticlesAmongSmallOnes
   s.position.resize(3, n);
   s.radius.resize(n);
   for (int i = 0; i < n; ++i) {
-    s.position.col(i) = Vector3d(random.uniform(0, 12), random.uniform(0, 12), random.uniform(0, 12));
+    s.position.col(i) =
+        Vector3d(random.uniform(0, 12), random.uniform(0, 12), random.uniform(0, 12));
     s.radius[i] = i % 100 == 0 ? 1.58 : i % 2 ? 0.5 : 0.6;
   }
   s.species = Eigen::ArrayXi::Zero(n);
@@ -612,7 +629,8 @@ TEST(DemNeighbours, HalfListHoldsEveryNearPairOnceWithBigParticlesAmongSmallOnes
   for (int i = 0; i < n; ++i) {
     for (int j = i + 1; j < n; ++j) {
       const double reach = s.radius[i] + s.radius[j] + skin;
-      if ((s.position.col(i) - s.position.col(j)).squaredNorm() < reach * reach) near.insert({i, j});
+      if ((s.position.col(i) - s.position.col(j)).squaredNorm() < reach * reach)
+        near.insert({i, j});
     }
   }
   EXPECT_EQ(listed, near);
@@ -630,7 +648,8 @@ TEST(DemNeighbours, IntruderOnABedFeelsTheSumOfItsManyContacts) {
   const Vector3d centre(0, 0, big);
   std::vector<Vector3d> x{centre};
   for (Eigen::Index k = 0; k < lattice.radius.size(); ++k) {
-    if ((lattice.position.col(k) - centre).norm() > big + 0.55) x.push_back(lattice.position.col(k));
+    if ((lattice.position.col(k) - centre).norm() > big + 0.55)
+      x.push_back(lattice.position.col(k));
   }
   dem::InitialState bed = spheres(x, {});
   bed.radius[0] = big;
@@ -647,7 +666,8 @@ TEST(DemNeighbours, IntruderOnABedFeelsTheSumOfItsManyContacts) {
   Vector3d on_intruder = Vector3d::Zero(), on_walls = Vector3d::Zero();
   int intruder_contacts = 0;
   for (Eigen::Index k = 0; k < f.contacts->rows(); ++k) {
-    const Vector3d force = contact_vector(f, "normal_force", k) + contact_vector(f, "tangential_force", k);
+    const Vector3d force =
+        contact_vector(f, "normal_force", k) + contact_vector(f, "tangential_force", k);
     if (f.contact_i()[k] == n || f.contact_j()[k] == n) {
       ++intruder_contacts;
       on_intruder += f.contact_i()[k] == n ? force : Vector3d(-force);
@@ -656,8 +676,7 @@ TEST(DemNeighbours, IntruderOnABedFeelsTheSumOfItsManyContacts) {
   }
   const double weight = 221.0;
   EXPECT_GE(intruder_contacts, 10);
-  EXPECT_LT((e.particles().force.col(e.index_of(n)) - on_intruder).norm(),
-            1e-12 * weight);
+  EXPECT_LT((e.particles().force.col(e.index_of(n)) - on_intruder).norm(), 1e-12 * weight);
   EXPECT_LT((e.particles().force.rowwise().sum() - on_walls).norm(), 1e-12 * weight);
 }
 
@@ -679,8 +698,9 @@ TEST(DemTimeStep, ShortestContactIsBetweenTheLightestSpheres) {
   radius << 0.5, 1.58, 0.5;
   Eigen::ArrayXi species(3);
   species << 0, 1, 0;
-  const dem::ContactTime t = dem::smallest_contact_time(
-      bnp_model(), dem::WallSet(cylinder(6.125), {}), radius, species, dem::ContactLaw::Linear, 0.0);
+  const dem::ContactTime t =
+      dem::smallest_contact_time(bnp_model(), dem::WallSet(cylinder(6.125), {}), radius, species,
+                                 dem::ContactLaw::Linear, 0.0);
   const double small = 1.91 * std::numbers::pi / 6.0;
   EXPECT_DOUBLE_EQ(t.t_c, dem::linear_contact_time(2e5, 40.0, small / 2));
   EXPECT_NEAR(t.t_c, 4.97e-3, 1e-5);
@@ -716,8 +736,9 @@ TEST(DemTimeStep, WallsAndStiffSpeciesCountToo) {
           dem::smallest_contact_time(model, dem::WallSet(cylinder(6.125), {}), radius, species,
                                      dem::ContactLaw::Hertz, 0.0);
         } catch (const InputError& e) {
-          EXPECT_STREQ(e.what(), "dem: impact speed for the Hertz contact time: expected a finite "
-                                 "value > 0, got 0");
+          EXPECT_STREQ(e.what(),
+                       "dem: impact speed for the Hertz contact time: expected a finite "
+                       "value > 0, got 0");
           throw;
         }
       },
@@ -836,16 +857,17 @@ std::string pass_through(dem::ContactLaw law, bool friction, bool rotation, int 
 TEST(DemHealth, EveryKernelStopsAContactPastTheOverlapLimitInTheStepItHappens) {
   // 3 of gap closed at 0.2 per step: the contact starts in step 15 and its overlap passes
   // 0.3 of the radius (0.15) in step 16.
-  const std::string expected =
-      "dem: step 16 (t = 0.0032): particles 0 and 1 overlap by ";
+  const std::string expected = "dem: step 16 (t = 0.0032): particles 0 and 1 overlap by ";
   for (const dem::ContactLaw law : {dem::ContactLaw::Linear, dem::ContactLaw::Hertz}) {
-    for (const auto& [friction, rotation] : {std::pair{false, false}, std::pair{true, false}, std::pair{true, true}}) {
+    for (const auto& [friction, rotation] :
+         {std::pair{false, false}, std::pair{true, false}, std::pair{true, true}}) {
       const std::string one = pass_through(law, friction, rotation, 1);
       EXPECT_EQ(one.rfind(expected, 0), 0u) << one;
       EXPECT_NE(one.find(" % of the smaller radius (a sound run stays within 30 %): the contacts "
                          "are too soft for the speed of impact, or dt too long; raise k_n, lower "
                          "the speeds or reduce dt (now 0.0002)"),
-                std::string::npos) << one;
+                std::string::npos)
+          << one;
       EXPECT_EQ(pass_through(law, friction, rotation, 2), one);  // the same step and overlap
     }
   }
@@ -854,8 +876,8 @@ TEST(DemHealth, EveryKernelStopsAContactPastTheOverlapLimitInTheStepItHappens) {
 TEST(DemHealth, AContactWithinTheOverlapLimitRunsOn) {
   // Relative speed 30: the linear law's undamped overlap v sqrt(m_eff / k_n) is 0.047, 9.5 %
   // of the radius.
-  dem::Engine e(one_species(material(kKn, 40.0, 0.5)), dem::WallSet(no_walls(), {}),
-                settings(2e-4), spheres({{-1, 0, 0}, {1, 0, 0}}, {{15, 0, 0}, {-15, 0, 0}}));
+  dem::Engine e(one_species(material(kKn, 40.0, 0.5)), dem::WallSet(no_walls(), {}), settings(2e-4),
+                spheres({{-1, 0, 0}, {1, 0, 0}}, {{15, 0, 0}, {-15, 0, 0}}));
   EXPECT_NO_THROW(e.run(200));
   EXPECT_GT(velocity(e, 1).x(), 0.0);  // bounced
 }

@@ -17,12 +17,12 @@
 #include "plugin_harness.hpp"
 
 namespace dem = granpipe::dem;
+using Eigen::Vector3d;
 using granpipe::Boundary;
 using granpipe::Container;
 using granpipe::ContainerShape;
 using granpipe::Frame;
 using granpipe::InputError;
-using Eigen::Vector3d;
 
 namespace {
 
@@ -41,7 +41,8 @@ Container open_cylinder(double radius) {
   Container c;
   c.shape = ContainerShape::Cylinder;
   c.cylinder_radius = radius;
-  c.boundary = {{{Boundary::Open, Boundary::Open}, {Boundary::Open, Boundary::Open},
+  c.boundary = {{{Boundary::Open, Boundary::Open},
+                 {Boundary::Open, Boundary::Open},
                  {Boundary::Wall, Boundary::Open}}};
   return c;
 }
@@ -106,8 +107,11 @@ TEST(DemFixed, AFixedSphereRidesWithTheContainerAndCarriesASphereAtItsStaticOver
 TEST(DemFixed, TheFixedIntruderHoldsItsPlaceUnderAFallingBedThroughListRebuilds) {
   // 200 spheres dropped onto a fixed intruder: the particles are re-sorted in space at
   // every rebuild, and the intruder is found again each time.
-  const dem::InitialState bed = dem::loose_lattice(
-      {.count = 200, .radius = 0.5, .cylinder_radius = 3.0, .spacing = 1.03, .intruder_radius = 1.58});
+  const dem::InitialState bed = dem::loose_lattice({.count = 200,
+                                                    .radius = 0.5,
+                                                    .cylinder_radius = 3.0,
+                                                    .spacing = 1.03,
+                                                    .intruder_radius = 1.58});
   dem::Settings s = settings(2e-4);
   s.gravity = -Vector3d::UnitZ();
   dem::Engine e(free_and_fixed(), dem::WallSet(open_cylinder(3.0), {}), s, bed);
@@ -138,8 +142,12 @@ TEST(DemDrive, AStoppedDriveRestsWhereItStartedAfterWholePeriodsOfOneMinusCos) {
 }
 
 TEST(DemBed, TheLooseBedSurroundsTheIntruderWithoutASingleContact) {
-  const dem::LooseLattice spec{.count = 500, .radius = 0.5, .cylinder_radius = 6.125,
-                               .spacing = 1.03, .jitter = 0.01, .intruder_radius = 1.58};
+  const dem::LooseLattice spec{.count = 500,
+                               .radius = 0.5,
+                               .cylinder_radius = 6.125,
+                               .spacing = 1.03,
+                               .jitter = 0.01,
+                               .intruder_radius = 1.58};
   const dem::InitialState bed = dem::loose_lattice(spec);
   ASSERT_EQ(bed.radius.size(), 501);
   EXPECT_EQ(bed.species[0], 1);
@@ -162,8 +170,9 @@ namespace {
 // then left to relax.
 nlohmann::json small_preparation() {
   return {{"bed", {{"small", 60}, {"intruder_diameter", 1.5}, {"cylinder_diameter", 4.0}}},
-          {"species", {{{"name", "small"}, {"density", 1.91}},
-                       {{"name", "large"}, {"density", 13.54}, {"fixed", true}}}},
+          {"species",
+           {{{"name", "small"}, {"density", 1.91}},
+            {{"name", "large"}, {"density", 13.54}, {"fixed", true}}}},
           {"drive", {{"amplitude", 0.02}, {"frequency", 2.0}, {"periods", 4}}},
           {"duration", 20.0},
           {"save_every", 5000},
@@ -184,12 +193,14 @@ TEST(DemSource, APreparationRunEndsOnceTheStoppedBedHasRelaxed) {
   EXPECT_GT(last.time, 2.0);   // not before the drive stopped
   EXPECT_LT(last.time, 20.0);  // but well before the duration
   EXPECT_EQ(last.size(), 61);
-  EXPECT_TRUE((last.position().row(0) == first.position().row(0)).all());  // the intruder never moved
+  EXPECT_TRUE(
+      (last.position().row(0) == first.position().row(0)).all());  // the intruder never moved
   double kinetic = 0.0;
   const auto v = last.table<double>("velocity");
   for (Eigen::Index i = 1; i < last.size(); ++i) {
     const double r = last.radius()[i];
-    kinetic += 0.5 * 1.91 * 4.0 / 3.0 * std::numbers::pi * r * r * r * v.row(i).matrix().squaredNorm();
+    kinetic +=
+        0.5 * 1.91 * 4.0 / 3.0 * std::numbers::pi * r * r * r * v.row(i).matrix().squaredNorm();
   }
   EXPECT_LT(kinetic / 61, 1e-6);
   ASSERT_TRUE(last.contacts.has_value());
@@ -213,12 +224,14 @@ TEST(DemSource, TheStartIsEitherAFileOrABed) {
   one_species["species"] = {{{"name", "small"}, {"density", 1.91}}};
   nlohmann::json wide = small_preparation();
   wide["bed"]["intruder_diameter"] = 4.0;
-  expect_refusal(wide, "params.bed.intruder_diameter: expected less than cylinder_diameter (4), got 4");
+  expect_refusal(wide,
+                 "params.bed.intruder_diameter: expected less than cylinder_diameter (4), got 4");
   nlohmann::json narrow = small_preparation();
   narrow["bed"]["intruder_diameter"] = 0.0;
   narrow["bed"]["cylinder_diameter"] = 1.0;
-  expect_refusal(narrow, "params.bed.cylinder_diameter: expected at least 1.03 (a sphere of "
-                         "diameter 1 and its nudge), got 1");
+  expect_refusal(narrow,
+                 "params.bed.cylinder_diameter: expected at least 1.03 (a sphere of "
+                 "diameter 1 and its nudge), got 1");
   expect_refusal(one_species,
                  "params.species: expected a second species for the bed's intruder (species 1), "
                  "got 1 species");

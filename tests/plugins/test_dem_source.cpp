@@ -5,18 +5,18 @@
 #include <unistd.h>
 
 #include <cmath>
-#include <functional>
-#include <string>
 #include <filesystem>
+#include <functional>
 #include <numbers>
+#include <string>
 #include <vector>
 
 #include "blow_up.hpp"
 #include "dem_source.hpp"
-#include "memory_check.hpp"
-#include "model.hpp"
 #include "granpipe/format_number.hpp"
 #include "granpipe/frame_store.hpp"
+#include "memory_check.hpp"
+#include "model.hpp"
 #include "plugin_harness.hpp"
 
 using namespace granpipe;
@@ -28,7 +28,8 @@ namespace {
 // open-top box (4 wide, or `width`), moving with `velocities` if given.
 fs::path start_file(const std::vector<Eigen::Vector3d>& centres = {{0.0, 0.0, 0.5}},
                     const std::vector<Eigen::Vector3d>& velocities = {}, double width = 4.0) {
-  const fs::path p = fs::temp_directory_path() / ("granpipe_dem_start_" + std::to_string(::getpid()) + ".h5");
+  const fs::path p =
+      fs::temp_directory_path() / ("granpipe_dem_start_" + std::to_string(::getpid()) + ".h5");
   fs::remove(p);
   Frame f;
   f.resize(static_cast<Eigen::Index>(centres.size()), 3);
@@ -39,7 +40,8 @@ fs::path start_file(const std::vector<Eigen::Vector3d>& centres = {{0.0, 0.0, 0.
   if (!velocities.empty()) {
     f.add("velocity");
     for (std::size_t k = 0; k < velocities.size(); ++k) {
-      f.table<double>("velocity").row(static_cast<Eigen::Index>(k)) = velocities[k].transpose().array();
+      f.table<double>("velocity").row(static_cast<Eigen::Index>(k)) =
+          velocities[k].transpose().array();
     }
   }
   const double h = 0.5 * width;
@@ -80,9 +82,8 @@ std::string blow_up(const nlohmann::json& params, int& frames) {
 
 TEST(DemSource, ASphereOnTheBaseSettlesAtTheOverlapOfItsWeight) {
   const fs::path file = start_file();
-  const auto ctx = test::make_context(dem::schema(), {{"initial_file", file.string()},
-                                                      {"duration", 2.0},
-                                                      {"save_every", 5000}});
+  const auto ctx = test::make_context(
+      dem::schema(), {{"initial_file", file.string()}, {"duration", 2.0}, {"save_every", 5000}});
   dem::DemSource source(*ctx);
   Frame f;
   std::vector<Frame> frames;
@@ -104,7 +105,8 @@ TEST(DemSource, ASphereOnTheBaseSettlesAtTheOverlapOfItsWeight) {
 TEST(DemSource, ATimeStepAboveTheShortestContactTimeIsRefusedNamingDt) {
   const fs::path file = start_file();
   try {
-    const auto ctx = test::make_context(dem::schema(), {{"initial_file", file.string()}, {"dt", 1e-2}});
+    const auto ctx =
+        test::make_context(dem::schema(), {{"initial_file", file.string()}, {"dt", 1e-2}});
     dem::DemSource source(*ctx);
     FAIL() << "expected an InputError";
   } catch (const InputError& e) {
@@ -133,22 +135,21 @@ TEST(DemSource, SaveFromEmitsOnlyTheFramesDueFromThatTimeOn) {
 TEST(DemSource, ASaveFromBeyondTheDurationIsRefusedNamingIt) {
   const fs::path file = start_file();
   try {
-    const auto ctx = test::make_context(dem::schema(), {{"initial_file", file.string()},
-                                                        {"duration", 1.0},
-                                                        {"save_from", 2.0}});
+    const auto ctx = test::make_context(
+        dem::schema(), {{"initial_file", file.string()}, {"duration", 1.0}, {"save_from", 2.0}});
     dem::DemSource source(*ctx);
     FAIL() << "expected an InputError";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), "params.save_from: expected a time within the duration (1), got 2");
+    EXPECT_EQ(std::string(e.what()),
+              "params.save_from: expected a time within the duration (1), got 2");
   }
   fs::remove(file);
 }
 
 TEST(DemSource, TheTimingTableCountsEveryStepOnceAndItsPartsFitInIt) {
   const fs::path file = start_file();
-  const auto ctx = test::make_context(dem::schema(), {{"initial_file", file.string()},
-                                                      {"duration", 1.0},
-                                                      {"save_every", 2000}});
+  const auto ctx = test::make_context(
+      dem::schema(), {{"initial_file", file.string()}, {"duration", 1.0}, {"save_every", 2000}});
   dem::DemSource source(*ctx);
   Frame f;
   while (source.next(f)) {
@@ -172,10 +173,11 @@ TEST(DemSource, TheTimingTableCountsEveryStepOnceAndItsPartsFitInIt) {
 TEST(DemSource, FramesCarryTheDrivesCyclesAndTheContainersVelocity) {
   const fs::path file = start_file();
   const auto ctx = test::make_context(
-      dem::schema(), {{"initial_file", file.string()},
-                      {"duration", 1.5},
-                      {"save_every", 2500},
-                      {"drive", {{"form", "one_minus_cos"}, {"amplitude", 0.001}, {"frequency", 0.5}}}});
+      dem::schema(),
+      {{"initial_file", file.string()},
+       {"duration", 1.5},
+       {"save_every", 2500},
+       {"drive", {{"form", "one_minus_cos"}, {"amplitude", 0.001}, {"frequency", 0.5}}}});
   dem::DemSource source(*ctx);
   Frame f;
   while (source.next(f)) {
@@ -191,9 +193,9 @@ TEST(DemSource, AnEnergyBlowUpStopsTheRunNamingTheOverlaps) {
   // spring releases k 0.1^2 / 2 = 1000, where the scene's speeds (nothing moves, nothing
   // falls) allow 1e-4, and the run stops at the first check.
   const fs::path file = start_file({{0.0, 0.0, 0.5}, {0.9, 0.0, 0.5}});
-  const auto ctx = test::make_context(dem::schema(), {{"initial_file", file.string()},
-                                                      {"duration", 1.0},
-                                                      {"gravity", {0.0, 0.0, 0.0}}});
+  const auto ctx = test::make_context(
+      dem::schema(),
+      {{"initial_file", file.string()}, {"duration", 1.0}, {"gravity", {0.0, 0.0, 0.0}}});
   dem::DemSource source(*ctx);
   Frame f;
   ASSERT_TRUE(source.next(f));  // the start
@@ -204,7 +206,9 @@ TEST(DemSource, AnEnergyBlowUpStopsTheRunNamingTheOverlaps) {
     const std::string m = e.what();
     EXPECT_EQ(m.rfind("dem: step 1000 (t = 0.2): kinetic energy ", 0), 0u) << m;
     EXPECT_NE(m.find(": the run blew up; reduce dt (now 0.0002) against the shortest contact "
-                     "time, or the initial overlaps"), std::string::npos) << m;
+                     "time, or the initial overlaps"),
+              std::string::npos)
+        << m;
   }
   fs::remove(file);
 }
@@ -213,9 +217,8 @@ TEST(DemSource, ASphereDroppedOntoTheBaseIsNoBlowUp) {
   // Started 10 diameters above the base it lands at sqrt(2 g h) = 4.4: the bound counts the
   // drop from the walls, not only the particles' own spread (none for one sphere).
   const fs::path file = start_file({{0.0, 0.0, 10.5}});
-  const auto ctx = test::make_context(dem::schema(), {{"initial_file", file.string()},
-                                                      {"duration", 6.0},
-                                                      {"save_every", 100}});
+  const auto ctx = test::make_context(
+      dem::schema(), {{"initial_file", file.string()}, {"duration", 6.0}, {"save_every", 100}});
   dem::DemSource source(*ctx);
   Frame f;
   double rebound = 0.0;
@@ -234,9 +237,10 @@ TEST(DemSource, AStartWithASphereOutsideItsContainerIsRefusedNamingItAndTheWall)
   const std::string m = refusal({{"initial_file", file.string()}});
   EXPECT_EQ(m.rfind("params.initial_file: ", 0), 0u) << m;
   const std::string tail = m.substr(m.find(": frame 0: "));
-  EXPECT_EQ(tail, ": frame 0: particle 1 (id 1) at (2.3, 0, 0.5) reaches 0.8 past wall x_high "
-                  "(160 % of its radius): expected particles inside the container, touching its "
-                  "walls by at most 30 % of their radius");
+  EXPECT_EQ(tail,
+            ": frame 0: particle 1 (id 1) at (2.3, 0, 0.5) reaches 0.8 past wall x_high "
+            "(160 % of its radius): expected particles inside the container, touching its "
+            "walls by at most 30 % of their radius");
   fs::remove(file);
   // Pressed 0.1 into the wall (20 % of its radius), as a saved frame of a run may hold it.
   const fs::path touching = start_file({{1.6, 0.0, 0.5}});
@@ -307,18 +311,22 @@ TEST(DemSource, AnAbsurdDensityIsRefusedNamingIt) {
 
 TEST(DemSource, TheHertzTimeStepCheckCountsTheStartVelocities) {
   // Two spheres approaching at 1, no gravity: the Hertz contact time at impact speed 1.
-  const fs::path file = start_file({{-1.0, 0.0, 5.0}, {1.0, 0.0, 5.0}},
-                                   {{0.5, 0.0, 0.0}, {-0.5, 0.0, 0.0}});
+  const fs::path file =
+      start_file({{-1.0, 0.0, 5.0}, {1.0, 0.0, 5.0}}, {{0.5, 0.0, 0.0}, {-0.5, 0.0, 0.0}});
   const double mass = 1.91 * std::numbers::pi / 6.0;
   const double t_c = dem::hertz_contact_time(2e5, 1.0, 0.5 * mass, 1.0);
   const auto check = [&](double steps_per_contact) {
-    return refusal({{"initial_file", file.string()}, {"law", "hertz"},
-                    {"gravity", {0.0, 0.0, 0.0}}, {"dt", t_c / steps_per_contact}});
+    return refusal({{"initial_file", file.string()},
+                    {"law", "hertz"},
+                    {"gravity", {0.0, 0.0, 0.0}},
+                    {"dt", t_c / steps_per_contact}});
   };
   for (const double steps : {5.1, 3.0}) {
     const std::string m = check(steps);
-    const std::string ratio = "is t_c/" + format_number(steps) + " for the shortest contact "
-                              "(species 0 and species 0, t_c = " + format_number(t_c) + ")";
+    const std::string ratio = "is t_c/" + format_number(steps) +
+                              " for the shortest contact "
+                              "(species 0 and species 0, t_c = " +
+                              format_number(t_c) + ")";
     EXPECT_NE(m.find(ratio), std::string::npos) << m;
     EXPECT_EQ(m.rfind("params.dt: ", 0), 0u) << m;
   }
@@ -333,8 +341,10 @@ TEST(DemSource, TwoSpheresMeetingTooFastToStopAreStoppedBeforePassingThrough) {
     const fs::path file = start_file({{-2.0, 0.0, 5.0}, {2.0, 0.0, 5.0}},
                                      {{500.0, 0.0, 0.0}, {-500.0, 0.0, 0.0}}, 100.0);
     int frames = 0;
-    const std::string m = blow_up({{"initial_file", file.string()}, {"law", law},
-                                   {"gravity", {0.0, 0.0, 0.0}}, {"duration", 0.1}},
+    const std::string m = blow_up({{"initial_file", file.string()},
+                                   {"law", law},
+                                   {"gravity", {0.0, 0.0, 0.0}},
+                                   {"duration", 0.1}},
                                   frames);
     EXPECT_EQ(m.rfind("dem: step 16 (t = 0.0032): particles 0 and 1 overlap by ", 0), 0u) << m;
     EXPECT_EQ(frames, 1);  // the start
@@ -347,8 +357,10 @@ TEST(DemSource, ASphereDroppedFromFarTooHighIsStoppedAtTheBase) {
   for (const char* law : {"linear", "hertz"}) {
     const fs::path file = start_file({{0.0, 0.0, 1e4}});
     int frames = 0;
-    const std::string m = blow_up({{"initial_file", file.string()}, {"law", law},
-                                   {"duration", 150.0}, {"save_every", 1000000}},
+    const std::string m = blow_up({{"initial_file", file.string()},
+                                   {"law", law},
+                                   {"duration", 150.0},
+                                   {"save_every", 1000000}},
                                   frames);
     EXPECT_NE(m.find("): particle 0 overlaps wall z_low by "), std::string::npos) << m;
     EXPECT_EQ(frames, 1);
@@ -365,8 +377,10 @@ TEST(DemSource, AScenePastTheAvailableMemoryIsRefusedBeforeAnythingIsAllocated) 
   } catch (const InputError& e) {
     const std::string m = e.what();
     EXPECT_EQ(m.rfind("params.bed.small: 1e+15 spheres need about 2e+09 GB (2 kB each), this "
-                      "machine has ", 0),
-              0u) << m;
+                      "machine has ",
+                      0),
+              0u)
+        << m;
     EXPECT_NE(m.find(" GB available: expected at most "), std::string::npos) << m;
   }
   EXPECT_NO_THROW(dem::check_memory("params.bed.small", 1000.0));

@@ -2,7 +2,6 @@
 // the Manna-Khakhar deposition, whole depositions checked against an independent test
 // of stability, the tap, the schedules and reproducibility.
 #include <gtest/gtest.h>
-
 #include <unistd.h>
 
 #include <algorithm>
@@ -68,7 +67,8 @@ void expect_deposited(const dt::DiskPacking& p) {
   ASSERT_TRUE(f.has("supports"));
   for (Eigen::Index k = 0; k < f.size(); ++k) {
     const auto i = static_cast<std::size_t>(k);
-    const std::int64_t left = f.table<std::int64_t>("supports")(k, 0), right = f.table<std::int64_t>("supports")(k, 1);
+    const std::int64_t left = f.table<std::int64_t>("supports")(k, 0),
+                       right = f.table<std::int64_t>("supports")(k, 1);
     const std::int64_t base = partner::wall(Wall::YLow);
     if (left == base || right == base) {
       EXPECT_EQ(left, base);
@@ -140,7 +140,7 @@ TEST(Disks2dTapFall, StopsExactlyOnARestingDisk) {
   for (const double offset : {0.0, 0.3, -1.1, 1.6}) {  // 1.6: a grazing contact (2r = 1.614)
     dt::DiskPacking p;
     p.width = 10.0;
-    p.add(5.0, kR, kR);             // on the base
+    p.add(5.0, kR, kR);            // on the base
     p.add(5.0 + offset, 9.0, kR);  // falls onto it
     dt::Deposit d(p, {});
     move_until(d, 1, dt::Move::LandOnDisk);
@@ -236,11 +236,11 @@ TEST(Disks2dTapSupports, DisksRestingOnAMovingDiskLoseIt) {
   dt::DiskPacking p;
   p.width = 20.0;
   const double a20 = std::numbers::pi / 9, a30 = std::numbers::pi / 6;
-  p.add(5.0, kR, kR);                                                          // 0: S
-  p.add(5.0 + 2 * kR * std::cos(a20), kR + 2 * kR * std::sin(a20), kR);        // 1: M
+  p.add(5.0, kR, kR);                                                    // 0: S
+  p.add(5.0 + 2 * kR * std::cos(a20), kR + 2 * kR * std::sin(a20), kR);  // 1: M
   const double tx = p.x[1] + 2 * kR * std::cos(a30), ty = p.y[1] + 2 * kR * std::sin(a30);
-  p.add(tx + std::sqrt(4 * kR * kR - (ty - kR) * (ty - kR)), kR, kR);          // 2: Q
-  p.add(tx, ty, kR);                                                           // 3: T
+  p.add(tx + std::sqrt(4 * kR * kR - (ty - kR) * (ty - kR)), kR, kR);  // 2: Q
+  p.add(tx, ty, kR);                                                   // 3: T
   p.first[1] = 0;
   p.first[3] = 1;
   p.second[3] = 2;
@@ -267,7 +267,7 @@ TEST(Disks2dTapSupports, ALoneWallHoldsNothingUp) {
   // A disk held by a disk and the right wall falls when that disk moves away.
   dt::DiskPacking p;
   p.width = 3.0 * kR;
-  p.add(kR, kR + 2.0, kR);  // 0: lifted off the base, about to fall
+  p.add(kR, kR + 2.0, kR);                              // 0: lifted off the base, about to fall
   p.add(2.0 * kR, kR + 2.0 + std::sqrt(3.0) * kR, kR);  // 1: against the right wall on 0
   p.first[1] = 0;
   p.second[1] = dt::kRightWall;
@@ -523,8 +523,10 @@ TEST(Disks2dTapPacking, ADepositedBedReadBackFromItsFrameStaysPut) {
   // The labels are found again, except where a disk touches more than two others and
   // another touching pair holds it as well (the contacts found at zero distance tie).
   for (Eigen::Index k = 0; k < redeposited.size(); ++k) {
-    if (redeposited.table<std::int64_t>("supports")(k, 0) == saved.table<std::int64_t>("supports")(k, 0) &&
-        redeposited.table<std::int64_t>("supports")(k, 1) == saved.table<std::int64_t>("supports")(k, 1)) {
+    if (redeposited.table<std::int64_t>("supports")(k, 0) ==
+            saved.table<std::int64_t>("supports")(k, 0) &&
+        redeposited.table<std::int64_t>("supports")(k, 1) ==
+            saved.table<std::int64_t>("supports")(k, 1)) {
       continue;
     }
     const auto i = static_cast<std::size_t>(k);
@@ -609,8 +611,8 @@ TEST(Disks2dTapSchedule, AnnealedRampsUpAndDown) {
   }
   for (std::int64_t t = 1; t <= s.total(); ++t) saves += s.at(t).save;
   EXPECT_EQ(saves, 16);
-  EXPECT_EQ(amplitudes, (std::vector<double>{1.25, 1.5, 1.75, 2.0, 1.75, 1.5, 1.25, 1.0, 1.25,
-                                             1.5, 1.75, 2.0, 1.75, 1.5, 1.25, 1.0}));
+  EXPECT_EQ(amplitudes, (std::vector<double>{1.25, 1.5, 1.75, 2.0, 1.75, 1.5, 1.25, 1.0, 1.25, 1.5,
+                                             1.75, 2.0, 1.75, 1.5, 1.25, 1.0}));
   EXPECT_EQ(cycles, (std::vector<std::int64_t>{0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3}));
 }
 
@@ -620,7 +622,7 @@ TEST(Disks2dTapSchedule, RisingAndFallingRampsVisitTheSameAmplitudes) {
   const std::int64_t steps = 20;
   const auto s = dt::TapSchedule::annealed(1.0, 2.0, steps, 1, 1, 1);
   for (std::int64_t k = 1; k < steps; ++k) {
-    const double up = s.at(k).amplitude;              // level k on the way up
+    const double up = s.at(k).amplitude;                // level k on the way up
     const double down = s.at(2 * steps - k).amplitude;  // level k on the way down
     EXPECT_EQ(up, down) << "level " << k;
     EXPECT_NEAR(up, 1.0 + 0.05 * static_cast<double>(k), 1e-15);
@@ -646,10 +648,13 @@ std::vector<Frame> run_source(const nlohmann::json& params, std::uint64_t seed,
 }  // namespace
 
 TEST(Disks2dTapSource, SameSeedSameFrames) {
-  const auto params =
-      nlohmann::json({{"N", std::int64_t{120}}, {"width", 10.0}, {"delta", 0.05},
-                     {"equilibration_taps", std::int64_t{3}}, {"production_taps", std::int64_t{4}},
-                     {"save_every", std::int64_t{2}}, {"A", 1.3}});
+  const auto params = nlohmann::json({{"N", std::int64_t{120}},
+                                      {"width", 10.0},
+                                      {"delta", 0.05},
+                                      {"equilibration_taps", std::int64_t{3}},
+                                      {"production_taps", std::int64_t{4}},
+                                      {"save_every", std::int64_t{2}},
+                                      {"A", 1.3}});
   granpipe::Results results;
   const auto a = run_source(params, 77, &results), b = run_source(params, 77);
   const auto c = run_source(params, 78);
@@ -664,7 +669,8 @@ TEST(Disks2dTapSource, SameSeedSameFrames) {
     EXPECT_EQ(a[k].time, static_cast<double>(5 + 2 * k));  // time counts taps
     EXPECT_EQ(a[k].dim, 2);
     EXPECT_TRUE((a[k].position() == b[k].position()).all());
-    EXPECT_TRUE((a[k].table<std::int64_t>("supports") == b[k].table<std::int64_t>("supports")).all());
+    EXPECT_TRUE(
+        (a[k].table<std::int64_t>("supports") == b[k].table<std::int64_t>("supports")).all());
     EXPECT_FALSE((a[k].position() == c[k].position()).all());
     EXPECT_FALSE((a[k].position() == d[k].position()).all());
     EXPECT_NO_THROW(a[k].check("frame"));
@@ -677,27 +683,38 @@ TEST(Disks2dTapSource, SameSeedSameFrames) {
 
 TEST(Disks2dTapSource, ShuffledMonteCarloOrderIsReproducibleAndChangesTheRun) {
   auto params = [](const std::string& order) {
-    return nlohmann::json({{"N", std::int64_t{120}}, {"width", 10.0}, {"delta", 0.05},
-                          {"equilibration_taps", std::int64_t{2}}, {"production_taps", std::int64_t{2}},
-                          {"save_every", std::int64_t{1}}, {"A", 1.2}, {"mc_order", order}});
+    return nlohmann::json({{"N", std::int64_t{120}},
+                           {"width", 10.0},
+                           {"delta", 0.05},
+                           {"equilibration_taps", std::int64_t{2}},
+                           {"production_taps", std::int64_t{2}},
+                           {"save_every", std::int64_t{1}},
+                           {"A", 1.2},
+                           {"mc_order", order}});
   };
   const auto a = run_source(params("shuffled"), 21), b = run_source(params("shuffled"), 21);
   const auto by_index = run_source(params("index"), 21);
   ASSERT_EQ(a.size(), 2u);
   for (std::size_t k = 0; k < a.size(); ++k) {
     EXPECT_TRUE((a[k].position() == b[k].position()).all());
-    EXPECT_TRUE((a[k].table<std::int64_t>("supports") == b[k].table<std::int64_t>("supports")).all());
+    EXPECT_TRUE(
+        (a[k].table<std::int64_t>("supports") == b[k].table<std::int64_t>("supports")).all());
     EXPECT_FALSE((a[k].position() == by_index[k].position()).all());
     EXPECT_NO_THROW(a[k].check("frame"));
   }
 }
 
 TEST(Disks2dTapSource, AnnealedFramesCarryCycleAndAmplitude) {
-  const auto params = nlohmann::json(
-      {{"N", std::int64_t{60}}, {"width", 8.0}, {"delta", 0.05}, {"protocol", std::string("annealed")},
-       {"anneal_steps", std::int64_t{2}}, {"anneal_taps_per_step", std::int64_t{1}},
-       {"anneal_cycles", std::int64_t{1}}, {"save_every", std::int64_t{1}},
-       {"anneal_A_min", 1.0}, {"anneal_A_max", 1.4}});
+  const auto params = nlohmann::json({{"N", std::int64_t{60}},
+                                      {"width", 8.0},
+                                      {"delta", 0.05},
+                                      {"protocol", std::string("annealed")},
+                                      {"anneal_steps", std::int64_t{2}},
+                                      {"anneal_taps_per_step", std::int64_t{1}},
+                                      {"anneal_cycles", std::int64_t{1}},
+                                      {"save_every", std::int64_t{1}},
+                                      {"anneal_A_min", 1.0},
+                                      {"anneal_A_max", 1.4}});
   const auto frames = run_source(params, 5);
   ASSERT_EQ(frames.size(), 4u);
   const double amplitudes[] = {1.2, 1.4, 1.2, 1.0};
@@ -710,15 +727,21 @@ TEST(Disks2dTapSource, AnnealedFramesCarryCycleAndAmplitude) {
 }
 
 TEST(Disks2dTapSource, CoolsBeforeTheConstantTaps) {
-  const auto params = nlohmann::json(
-      {{"N", std::int64_t{60}}, {"width", 8.0}, {"delta", 0.05}, {"A", 1.1}, {"cool_from", 1.3},
-       {"cool_step", 0.1}, {"cool_taps_per_step", std::int64_t{2}},
-       {"equilibration_taps", std::int64_t{1}}, {"production_taps", std::int64_t{2}},
-       {"save_every", std::int64_t{1}}});
+  const auto params = nlohmann::json({{"N", std::int64_t{60}},
+                                      {"width", 8.0},
+                                      {"delta", 0.05},
+                                      {"A", 1.1},
+                                      {"cool_from", 1.3},
+                                      {"cool_step", 0.1},
+                                      {"cool_taps_per_step", std::int64_t{2}},
+                                      {"equilibration_taps", std::int64_t{1}},
+                                      {"production_taps", std::int64_t{2}},
+                                      {"save_every", std::int64_t{1}}});
   granpipe::Results results;
   const auto frames = run_source(params, 9, &results);
   ASSERT_EQ(frames.size(), 2u);
-  EXPECT_EQ(frames[0].integer_observable("tap").value(), 6);  // 2 taps at 1.3 and 2 at 1.2, one to equilibrate
+  EXPECT_EQ(frames[0].integer_observable("tap").value(),
+            6);  // 2 taps at 1.3 and 2 at 1.2, one to equilibrate
   EXPECT_EQ(frames[1].integer_observable("tap").value(), 7);
   EXPECT_EQ(frames[1].real_observable("amplitude").value(), 1.1);
   EXPECT_EQ(results.scalar("taps").value, 7.0);
@@ -728,7 +751,8 @@ TEST(Disks2dTapSource, RejectsImpossibleParameters) {
   EXPECT_THROW(run_source(nlohmann::json({{"delta", 0.9}}), 1), InputError);  // > radius
   EXPECT_THROW(run_source(nlohmann::json({{"width", 1.5}}), 1), InputError);  // disk too wide
   EXPECT_THROW(run_source(nlohmann::json({{"protocol", std::string("annealed")},
-                                         {"anneal_A_min", 2.0}, {"anneal_A_max", 1.5}}),
+                                          {"anneal_A_min", 2.0},
+                                          {"anneal_A_max", 1.5}}),
                           1),
                InputError);
   EXPECT_THROW(run_source(nlohmann::json({{"production_taps", std::int64_t{5}}}), 1), InputError);
@@ -736,7 +760,7 @@ TEST(Disks2dTapSource, RejectsImpossibleParameters) {
   EXPECT_THROW(run_source(nlohmann::json({{"cool_from", 1.05}, {"A", 1.1}}), 1), InputError);
   // An annealed run whose steps are shorter than save_every would save nothing.
   EXPECT_THROW(run_source(nlohmann::json({{"protocol", std::string("annealed")},
-                                         {"anneal_taps_per_step", std::int64_t{5}}}),
+                                          {"anneal_taps_per_step", std::int64_t{5}}}),
                           1),
                InputError);
 }
@@ -748,7 +772,9 @@ TEST(Disks2dTapSource, WidthIsBoundedInDiametersBeforeAllocating) {
     run_source(nlohmann::json({{"width", 1e9}, {"radius", 0.5}}), 1);
     FAIL() << "expected an InputError";
   } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(), "params.width: expected at most 1e+06 diameters of the smallest disk (1), got 1e+09");
+    EXPECT_STREQ(
+        e.what(),
+        "params.width: expected at most 1e+06 diameters of the smallest disk (1), got 1e+09");
   }
 }
 
@@ -762,10 +788,13 @@ TEST(Disks2dTapSource, PlacesAtTheLargestAllowedInitialFraction) {
   ASSERT_GT(largest, 0.0);
   for (const std::uint64_t seed : {1, 2, 3}) {
     for (const auto& [n, spread] : {std::pair{std::int64_t{2000}, 0.0}, {std::int64_t{500}, 0.5}}) {
-      const auto params = nlohmann::json(
-          {{"N", n}, {"radius_spread", spread}, {"initial_fraction", largest},
-           {"equilibration_taps", std::int64_t{0}}, {"production_taps", std::int64_t{1}},
-           {"save_every", std::int64_t{1}}, {"A", 1.02}});
+      const auto params = nlohmann::json({{"N", n},
+                                          {"radius_spread", spread},
+                                          {"initial_fraction", largest},
+                                          {"equilibration_taps", std::int64_t{0}},
+                                          {"production_taps", std::int64_t{1}},
+                                          {"save_every", std::int64_t{1}},
+                                          {"A", 1.02}});
       const auto frames = run_source(params, seed);
       ASSERT_EQ(frames.size(), 1u);
       EXPECT_EQ(frames[0].size(), n);
@@ -774,15 +803,20 @@ TEST(Disks2dTapSource, PlacesAtTheLargestAllowedInitialFraction) {
 }
 
 TEST(Disks2dTapSource, StartsFromAFrameOfASavedFile) {
-  const fs::path dir = fs::temp_directory_path() / ("granpipe_disks2d_tap_" + std::to_string(getpid()));
+  const fs::path dir =
+      fs::temp_directory_path() / ("granpipe_disks2d_tap_" + std::to_string(getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   // A polydisperse bed saved by one run...
-  const auto saved = run_source(
-      nlohmann::json({{"N", std::int64_t{80}}, {"width", 9.0}, {"delta", 0.05}, {"radius_spread", 0.3},
-                     {"equilibration_taps", std::int64_t{0}}, {"production_taps", std::int64_t{2}},
-                     {"save_every", std::int64_t{1}}, {"A", 1.2}}),
-      3);
+  const auto saved = run_source(nlohmann::json({{"N", std::int64_t{80}},
+                                                {"width", 9.0},
+                                                {"delta", 0.05},
+                                                {"radius_spread", 0.3},
+                                                {"equilibration_taps", std::int64_t{0}},
+                                                {"production_taps", std::int64_t{2}},
+                                                {"save_every", std::int64_t{1}},
+                                                {"A", 1.2}}),
+                                3);
   const fs::path file = dir / "bed.h5";
   {
     granpipe::FrameWriter w(file, "{}");
@@ -791,8 +825,13 @@ TEST(Disks2dTapSource, StartsFromAFrameOfASavedFile) {
   }
   // ...is what a monodisperse run started from it taps: the file's radii, not its own.
   const auto from_file = [&](const nlohmann::json& extra) {
-    nlohmann::json params{{"initial_file", file.string()}, {"N", 80}, {"width", 9.0}, {"delta", 0.05},
-                          {"equilibration_taps", 0}, {"production_taps", 1}, {"save_every", 1}};
+    nlohmann::json params{{"initial_file", file.string()},
+                          {"N", 80},
+                          {"width", 9.0},
+                          {"delta", 0.05},
+                          {"equilibration_taps", 0},
+                          {"production_taps", 1},
+                          {"save_every", 1}};
     params.update(extra);
     return run_source(params, 4);
   };

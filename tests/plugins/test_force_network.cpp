@@ -33,7 +33,7 @@ const std::int64_t kBase = partner::wall(Wall::ZLow);
 // force; pairs 9-10 and 11-12 (listed first, so that the label order is not the table's);
 // 4 touches only the base. Edge forces sum to 20 over 8 edges: <F_n> = 2.5.
 const std::vector<ContactSpec> kTable = {
-    {11, 12, 4, 3}, {5, 6, 1, 1}, {2, 3, 6, 1}, {7, 8, 0, 1}, {0, 1, 1, 1}, {4, kBase, 10, 0},
+    {11, 12, 4, 3}, {5, 6, 1, 1}, {2, 3, 6, 1}, {7, 8, 0, 1}, {0, 1, 1, 1},    {4, kBase, 10, 0},
     {9, 10, 2, 1},  {1, 2, 2, 1}, {6, 7, 1, 2}, {2, 0, 3, 2}, {0, kBase, 5, 0}};
 
 Property pass_property() { return {"mst_pass", Scope::Contact, ValueType::Integer, 1, "", "pass"}; }
@@ -76,7 +76,8 @@ Outcome run(const Frame& frame, const nlohmann::json& params = nlohmann::json::o
   ForceNetworkAnalyzer analyzer(*ctx);
   FrameCache cache;
   analyzer.consume(frame, cache);
-  PropertyTable particles(Scope::Particle, frame.size(), 3), contacts(Scope::Contact, frame.contacts->rows(), 3);
+  PropertyTable particles(Scope::Particle, frame.size(), 3),
+      contacts(Scope::Contact, frame.contacts->rows(), 3);
   particles.add(ForceNetworkAnalyzer::network_property());
   contacts.add(ForceNetworkAnalyzer::strong_property());
   analyzer.publish(particles);
@@ -143,7 +144,7 @@ TEST(ForceNetwork, StrongSubNetworkIsTheContactsAboveTheMean) {
 TEST(ForceNetwork, WallContactsJoinTheStatisticsOnlyWhenAsked) {
   const Outcome r = run(frame_of(kTable), {{"walls", true}});
   EXPECT_EQ(per_frame(r, "samples"), 10);
-  EXPECT_EQ(per_frame(r, "mean_force"), 3.5);  // (20 + 10 + 5) / 10
+  EXPECT_EQ(per_frame(r, "mean_force"), 3.5);     // (20 + 10 + 5) / 10
   EXPECT_EQ(per_frame(r, "strong_contacts"), 2);  // 6 and 4
   EXPECT_EQ(per_frame(r, "networks"), 4);         // walls never link particles
 }
@@ -181,7 +182,8 @@ TEST(ForceNetwork, WithoutLoadedContactsTheStatisticsAreUndefinedNotZero) {
   for (ContactSpec& s : unloaded) s.force = 0.0;
   const std::set<std::string> undefined = {"mean_force", "z_largest", "density", "error"};
   for (const auto& table : {unloaded, std::vector<ContactSpec>{}}) {
-    const fs::path log = fs::temp_directory_path() / ("granpipe_fn_" + std::to_string(getpid()) + ".log");
+    const fs::path log =
+        fs::temp_directory_path() / ("granpipe_fn_" + std::to_string(getpid()) + ".log");
     fs::remove(log);
     const auto ctx = test::make_context("force_network");
     ctx->log().open_file(log.string());
@@ -205,9 +207,10 @@ TEST(ForceNetwork, WithoutLoadedContactsTheStatisticsAreUndefinedNotZero) {
     for (std::string line; std::getline(in, line);) lines.push_back(line);
     fs::remove(log);
     ASSERT_EQ(lines.size(), 1u);
-    EXPECT_EQ(lines[0], "warning: force_network: frame 0: no contact with |F_n| > min_force: its "
-                        "mean_force, z_largest and force PDF are undefined (nan in the results, "
-                        "not 0; docs/force_network.md); said for the first such frame only");
+    EXPECT_EQ(lines[0],
+              "warning: force_network: frame 0: no contact with |F_n| > min_force: its "
+              "mean_force, z_largest and force PDF are undefined (nan in the results, "
+              "not 0; docs/force_network.md); said for the first such frame only");
   }
 }
 
@@ -230,26 +233,30 @@ TEST(ForceNetwork, ASpikeOfEqualForcesIsNotFittedAndStaysFinite) {
 TEST(ForceNetwork, AFrameWithoutContactsIsRefused) {
   Frame f = frame_of(kTable);
   f.contacts.reset();
-  EXPECT_EQ(refusal(f), "frame 0: expected a contact table with normal_force, got a frame "
-                        "without contacts");
+  EXPECT_EQ(refusal(f),
+            "frame 0: expected a contact table with normal_force, got a frame "
+            "without contacts");
 }
 
 TEST(ForceNetwork, ANonFiniteContactPointIsRefused) {
   Frame f = frame_of(kTable);
   f.contacts->get<Coordinates>("point")(4, 1) = std::nan("");
-  EXPECT_EQ(refusal(f), "frame 0: contact 4: expected a finite contact point, got a NaN or "
-                        "infinite coordinate");
+  EXPECT_EQ(refusal(f),
+            "frame 0: contact 4: expected a finite contact point, got a NaN or "
+            "infinite coordinate");
 }
 
 TEST(ForceNetwork, ANaNForceOrARowJoiningAParticleToItselfIsRefused) {
   Frame nan_force = frame_of(kTable);
   nan_force.contacts->get<Coordinates>("normal_force")(5, 0) = std::nan("");  // a wall row
-  EXPECT_EQ(refusal(nan_force), "frame 0: contact 5: expected a finite normal_force, got nan in "
-                                "component x");
+  EXPECT_EQ(refusal(nan_force),
+            "frame 0: contact 5: expected a finite normal_force, got nan in "
+            "component x");
   Frame self = frame_of(kTable);
   self.contact_j()[2] = 2;
-  EXPECT_EQ(refusal(self), "frame 0: contact 2: expected two different particles, got particle 2 "
-                           "twice");
+  EXPECT_EQ(refusal(self),
+            "frame 0: contact 2: expected two different particles, got particle 2 "
+            "twice");
 }
 
 TEST(ForceNetwork, RMaxBeyondHalfAPeriodicBoxIsRefused) {
@@ -257,7 +264,10 @@ TEST(ForceNetwork, RMaxBeyondHalfAPeriodicBoxIsRefused) {
   f.container = Container::periodic_box(3, Eigen::Vector3d(-2, -2, -2), Eigen::Vector3d(26, 2, 2));
   const std::string m = refusal(f, {{"r_max", 3}});
   EXPECT_EQ(m.rfind("frame 0: F(r) up to r_max (parameter r_max): neighbour search: expected a "
-                    "periodic box of length at least 6", 0), 0u) << m;
+                    "periodic box of length at least 6",
+                    0),
+            0u)
+      << m;
 }
 
 TEST(ForceNetwork, BadParametersAreRefusedWithTheirPath) {
@@ -286,8 +296,8 @@ std::vector<double> eq11_samples(double b, double beta, std::size_t count) {
 
 // The a that normalises Eq. (11) over f > 0.
 double normalising_a(double b, double beta) {
-  const double bump = 0.5 * std::sqrt(std::numbers::pi) * std::exp(0.25 * beta * beta) *
-                      std::erfc(0.5 * beta);
+  const double bump =
+      0.5 * std::sqrt(std::numbers::pi) * std::exp(0.25 * beta * beta) * std::erfc(0.5 * beta);
   return 1.0 / (1.0 / beta - b * bump);
 }
 
@@ -314,13 +324,15 @@ TEST(ForceNetwork, AParameterTheDataDoNotDetermineIsNotReportedAsFitted) {
   ForcePdf pdf{.edges = {}, .counts = {}, .samples = 100000};
   for (int k = 0; k <= 60; ++k) pdf.edges.push_back(0.1 * k);
   for (int k = 0; k < 60; ++k) {
-    pdf.counts.push_back(100000.0 * (std::exp(-beta * pdf.edges[k]) - std::exp(-beta * pdf.edges[k + 1])));
+    pdf.counts.push_back(100000.0 *
+                         (std::exp(-beta * pdf.edges[k]) - std::exp(-beta * pdf.edges[k + 1])));
   }
   FitRequest shift;
   shift.start = {normalising_a(0.83, beta), 0.83, 0.0, beta, 0.0};
   shift.free = {false, false, true, false, true};
   const PdfFit fit = fit_pdf(pdf, shift);
-  EXPECT_EQ(fit.status, FitStatus::NotDetermined) << fit.value[kAlpha] << " +- " << fit.error[kAlpha];
+  EXPECT_EQ(fit.status, FitStatus::NotDetermined)
+      << fit.value[kAlpha] << " +- " << fit.error[kAlpha];
   EXPECT_STREQ(describe(fit.status), "not fitted: a parameter is not determined by the data");
   EXPECT_EQ(fit.value[kAlpha], 0.0);
   EXPECT_EQ(fit.error[kAlpha], 0.0);
@@ -387,7 +399,7 @@ TEST(ForceNetwork, ByPassReportsTheContactsOfPassesOneToK) {
   const Outcome r = run(frame_of(kTable), {{"by_pass", "mst_pass"}});
   const Table& fits = r.results.tables().at("pass_fits");
   ASSERT_EQ(fits.rows(), 3u);
-  EXPECT_EQ(fits.column("contacts"), (std::vector<double>{5, 7, 8}));  // 7-8 carries no force
+  EXPECT_EQ(fits.column("contacts"), (std::vector<double>{5, 7, 8}));      // 7-8 carries no force
   EXPECT_EQ(fits.column("free_status"), (std::vector<double>{1, 1, 1}));   // too few samples
   EXPECT_EQ(fits.column("shift_status"), (std::vector<double>{3, 3, 3}));  // no Eq. (11) fit
   const Table& pdf = r.results.tables().at("pass_pdf");

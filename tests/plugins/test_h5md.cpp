@@ -18,8 +18,8 @@ class H5mdSourceTest : public ::testing::Test {
  protected:
   void SetUp() override {
     const auto* t = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("granpipe_h5md_" + std::to_string(getpid()) + "_" + t->name());
+    dir_ =
+        fs::temp_directory_path() / ("granpipe_h5md_" + std::to_string(getpid()) + "_" + t->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
@@ -125,8 +125,9 @@ TEST_F(H5mdSourceTest, StrideIsAtMostTheNumberOfFrames) {
     source(p, 1, -1, std::numeric_limits<std::int64_t>::max());
     FAIL() << "expected an InputError";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), "params.stride: expected at most the number of frames, got 9223372036854775807 (" +
-                                         p.string() + " holds 4 frames)");
+    EXPECT_EQ(std::string(e.what()),
+              "params.stride: expected at most the number of frames, got 9223372036854775807 (" +
+                  p.string() + " holds 4 frames)");
   }
 }
 
@@ -171,8 +172,9 @@ std::string error_of(Make&& make) {
 TEST_F(H5mdSourceTest, OverlappingParticlesAreRefusedWithThePair) {
   const fs::path p = write_pair(dir_, 0.9);  // overlap 0.1 = 20% of the radius
   EXPECT_EQ(error_of([&] { return source(p, 0, -1, 1); }),
-            p.string() + ": frame 0: particles 0 and 1 (ids 0, 1) overlap by 0.2 of the smaller "
-                         "radius, expected at most 1e-06 (raise params.max_overlap for soft-particle data)");
+            p.string() +
+                ": frame 0: particles 0 and 1 (ids 0, 1) overlap by 0.2 of the smaller "
+                "radius, expected at most 1e-06 (raise params.max_overlap for soft-particle data)");
   EXPECT_EQ(error_of([&] { return source(p, 0, -1, 1, 0.25); }), "(no InputError)");
 }
 
@@ -188,7 +190,8 @@ TEST_F(H5mdSourceTest, FramesWithoutParticlesAreRefused) {
   f.resize(0, 2);
   w.append(f);
   w.close();
-  EXPECT_EQ(error_of([&] { return source(p, 0, -1, 1); }), p.string() + ": frame 0: expected particles, got none");
+  EXPECT_EQ(error_of([&] { return source(p, 0, -1, 1); }),
+            p.string() + ": frame 0: expected particles, got none");
 }
 
 // An infinite periodic box gave phi = 0 with exit 0.
@@ -199,16 +202,21 @@ TEST_F(H5mdSourceTest, AnInfiniteBoxIsRefusedWithFileAndFrame) {
   f.resize(2, 2);
   f.position()(1, 0) = 2.0;
   f.radius().setConstant(0.5);
-  f.container = Container::periodic_box(2, Eigen::Vector3d::Zero(), Eigen::Vector3d(1e308, 1e308, 0));
+  f.container =
+      Container::periodic_box(2, Eigen::Vector3d::Zero(), Eigen::Vector3d(1e308, 1e308, 0));
   w.append(f);
   w.close();
   EXPECT_EQ(error_of([&] { return source(p, 0, -1, 1); }),
-            p.string() + ": frame 0: neighbour search: expected a box at most 1e+09 contact ranges (1) long along x, "
-                         "got a periodic box of length 1e+308");
+            p.string() +
+                ": frame 0: neighbour search: expected a box at most 1e+09 contact ranges (1) long "
+                "along x, "
+                "got a periodic box of length 1e+308");
 }
 
 TEST_F(H5mdSourceTest, NanPositionsAreRefusedWithFileAndFrame) {
   const fs::path p = write_pair(dir_, std::nan(""));
-  EXPECT_EQ(error_of([&] { return source(p, 0, -1, 1); }),
-            p.string() + ": frame 0: particle 1 (id 1): expected a finite position, got nan in coordinate x");
+  EXPECT_EQ(
+      error_of([&] { return source(p, 0, -1, 1); }),
+      p.string() +
+          ": frame 0: particle 1 (id 1): expected a finite position, got nan in coordinate x");
 }

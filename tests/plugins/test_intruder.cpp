@@ -41,7 +41,7 @@ Results analyze(const std::vector<Frame>& frames) {
 TEST(Intruder, HeightsAreAboveTheMovingBaseAndCoordinationCountsPairsOnly) {
   const intruder::BedState s = intruder::measure_bed(bed(), "test");
   EXPECT_DOUBLE_EQ(s.intruder_height, 4.0);
-  EXPECT_DOUBLE_EQ(s.bed_height, 1.0);           // mean of 0.5 and 1.5
+  EXPECT_DOUBLE_EQ(s.bed_height, 1.0);          // mean of 0.5 and 1.5
   EXPECT_DOUBLE_EQ(s.coordination, 2.0 / 3.0);  // one pair contact, three particles
 }
 
@@ -76,8 +76,9 @@ TEST(Intruder, ABedWithoutAnIntruderIsRefused) {
     analyze({f});
     FAIL() << "expected an InputError";
   } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(), "frame 0: expected an intruder (one particle larger than every other), "
-                           "got 3 particles of the largest radius 0.5 (a bed without an intruder?)");
+    EXPECT_STREQ(e.what(),
+                 "frame 0: expected an intruder (one particle larger than every other), "
+                 "got 3 particles of the largest radius 0.5 (a bed without an intruder?)");
   }
   // Two large spheres: neither is the intruder. Radii equal to float precision are equal.
   f.radius() << 1.5, 1.5 * (1.0 + 1e-8), 0.5;

@@ -31,7 +31,8 @@ std::string refusal(const std::string& content) {
 // A data file of two spheres of radius 0.5 (atom ids 1 and 7) at these positions.
 std::string two_spheres(const std::string& at1, const std::string& at7) {
   return "LAMMPS data file via write_data\n\n2 atoms\n1 atom types\n\nAtoms # sphere\n\n"
-         "1 1 1 1.91 " + at1 + " 0 0 0\n7 1 1 1.91 " + at7 + " 0 0 0\n";
+         "1 1 1 1.91 " +
+         at1 + " 0 0 0\n7 1 1 1.91 " + at7 + " 0 0 0\n";
 }
 
 }  // namespace
@@ -75,8 +76,9 @@ TEST(LammpsData, AMalformedLineIsNamed) {
 // atom_style full has sphere's 7 columns: read as sphere, the molecule id would be the type
 // and the type the diameter.
 TEST(LammpsData, AnotherAtomStyleIsRefusedByName) {
-  EXPECT_EQ(refusal("title\n1 atoms\n\nAtoms # full\n\n1 3 1 -0.5 0 0 0\n"),
-            "x.data: line 4: expected the Atoms section of atom_style sphere, got atom_style \"full\"");
+  EXPECT_EQ(
+      refusal("title\n1 atoms\n\nAtoms # full\n\n1 3 1 -0.5 0 0 0\n"),
+      "x.data: line 4: expected the Atoms section of atom_style sphere, got atom_style \"full\"");
 }
 
 // Without the style comment the columns decide: atom_style charge has 6.
@@ -87,14 +89,16 @@ TEST(LammpsData, WithoutAStyleTheColumnsMustBeSpheres) {
 }
 
 TEST(LammpsData, TooFewAtomsNameTheSectionAndTheHeader) {
-  EXPECT_EQ(refusal("title\n\n3 atoms\n\nAtoms # sphere\n\n1 1 1 1 0 0 0\n2 1 1 1 2 0 0\n\n"
-                    "Velocities\n\n1 0 0 0 0 0 0\n"),
-            "x.data: line 5: expected the Atoms section to hold 3 atoms (the header's, line 3), got 2");
+  EXPECT_EQ(
+      refusal("title\n\n3 atoms\n\nAtoms # sphere\n\n1 1 1 1 0 0 0\n2 1 1 1 2 0 0\n\n"
+              "Velocities\n\n1 0 0 0 0 0 0\n"),
+      "x.data: line 5: expected the Atoms section to hold 3 atoms (the header's, line 3), got 2");
 }
 
 TEST(LammpsData, TooManyAtomsAreRefused) {
-  EXPECT_EQ(refusal("title\n1 atoms\nAtoms # sphere\n1 1 1 1 0 0 0\n2 1 1 1 2 0 0\n"),
-            "x.data: line 3: expected the Atoms section to hold 1 atoms (the header's, line 2), got 2");
+  EXPECT_EQ(
+      refusal("title\n1 atoms\nAtoms # sphere\n1 1 1 1 0 0 0\n2 1 1 1 2 0 0\n"),
+      "x.data: line 3: expected the Atoms section to hold 1 atoms (the header's, line 2), got 2");
 }
 
 TEST(LammpsData, AnAtomIdGivenTwiceIsRefusedWithBothLines) {
@@ -116,7 +120,8 @@ class LammpsDataSource : public ::testing::Test {
     const fs::path file = dir_ / "spheres.data";
     std::ofstream(file) << content;
     harness_ = test::make_context(
-        "lammps_data", {{"file", file.string()}, {"cylinder_radius", 2.0}, {"base", 0.0}, {"top", top}});
+        "lammps_data",
+        {{"file", file.string()}, {"cylinder_radius", 2.0}, {"base", 0.0}, {"top", top}});
     try {
       lammps_data::LammpsDataSource source(*harness_);
       EXPECT_EQ(source.work().total, 1.0);  // one frame, announced as such

@@ -128,9 +128,11 @@ TEST(Lattice, CellsMustMatchTheDimension) {
     EXPECT_NE(std::string(e.what()).find("cells: expected 3 entries"), std::string::npos)
         << e.what();
   }
-  EXPECT_THROW(run({{"lattice", std::string("square")}, {"cells", std::vector<std::int64_t>{2, 2, 2}}}),
-               granpipe::InputError);
-  const Frame f = run({{"lattice", std::string("hcp")}, {"cells", std::vector<std::int64_t>{2, 3, 5}}}).at(0);
+  EXPECT_THROW(
+      run({{"lattice", std::string("square")}, {"cells", std::vector<std::int64_t>{2, 2, 2}}}),
+      granpipe::InputError);
+  const Frame f =
+      run({{"lattice", std::string("hcp")}, {"cells", std::vector<std::int64_t>{2, 3, 5}}}).at(0);
   EXPECT_EQ(f.size(), 4 * 2 * 3 * 5);
 }
 
@@ -138,20 +140,25 @@ TEST(Lattice, CellsMustMatchTheDimension) {
 // was a std::bad_alloc, exit 1).
 TEST(Lattice, TooManyParticlesAreRefusedBeforeAllocating) {
   try {
-    run({{"lattice", std::string("fcc")}, {"cells", std::vector<std::int64_t>{100000, 100000, 100000}}});
+    run({{"lattice", std::string("fcc")},
+         {"cells", std::vector<std::int64_t>{100000, 100000, 100000}}});
     FAIL() << "expected an InputError";
   } catch (const granpipe::InputError& e) {
-    EXPECT_STREQ(e.what(), "params.cells: expected at most 1e+07 particles (4 per cell), got 4e+15");
+    EXPECT_STREQ(e.what(),
+                 "params.cells: expected at most 1e+07 particles (4 per cell), got 4e+15");
   }
-  EXPECT_THROW(run({{"lattice", std::string("sc")}, {"cells", std::vector<std::int64_t>{216, 216, 216}}}),
-               granpipe::InputError);
+  EXPECT_THROW(
+      run({{"lattice", std::string("sc")}, {"cells", std::vector<std::int64_t>{216, 216, 216}}}),
+      granpipe::InputError);
 }
 
 TEST(Lattice, JitteredFramesNeverOverlap) {
   for (const std::string name : {"triangular", "fcc", "bcc"}) {
     for (const std::string boundary : {"periodic", "walls"}) {
-      const auto frames = run({{"lattice", name}, {"boundary", boundary},
-                               {"jitter", 0.4}, {"frames", std::int64_t{3}}});
+      const auto frames = run({{"lattice", name},
+                               {"boundary", boundary},
+                               {"jitter", 0.4},
+                               {"frames", std::int64_t{3}}});
       ASSERT_EQ(frames.size(), 3u);
       for (const Frame& f : frames) {
         EXPECT_DOUBLE_EQ(f.radius()[0], 0.5 * 0.6);
@@ -191,7 +198,8 @@ TEST(Lattice, SameSeedSameFramesOtherSeedOtherFrames) {
     EXPECT_EQ(a[k].species()[5], 0);
   }
   // Without jitter the seed plays no part.
-  const auto d = run({{"lattice", std::string("hcp")}}, 1), e = run({{"lattice", std::string("hcp")}}, 2);
+  const auto d = run({{"lattice", std::string("hcp")}}, 1),
+             e = run({{"lattice", std::string("hcp")}}, 2);
   EXPECT_TRUE((d[0].position() == e[0].position()).all());
 }
 

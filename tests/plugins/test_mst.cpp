@@ -32,7 +32,8 @@ using Pair = std::pair<std::uint32_t, std::uint32_t>;
 Frame open_frame(Eigen::Index n, double side) {
   Frame f;
   f.resize(n, 3);
-  f.container = Container::open_top_box(3, Eigen::Vector3d::Zero(), Eigen::Vector3d::Constant(side));
+  f.container =
+      Container::open_top_box(3, Eigen::Vector3d::Zero(), Eigen::Vector3d::Constant(side));
   return f;
 }
 
@@ -134,15 +135,16 @@ MstOptions options(Candidates c, int passes = 5) {
 Frame figure_13() {
   Frame f = open_frame(5, 20.0);
   f.radius().setConstant(0.5);
-  f.position() << 1, 1, 1,   //
-      1.96, 1, 1,            // 0.96 from 1
-      1.52, 1.83, 1,         // 0.979 from 1, 0.939 from 2
-      2.6, 2.4, 1,           // 1.22 from 3
-      3.5, 2.6, 1;           // 0.922 from 4
+  f.position() << 1, 1, 1,  //
+      1.96, 1, 1,           // 0.96 from 1
+      1.52, 1.83, 1,        // 0.979 from 1, 0.939 from 2
+      2.6, 2.4, 1,          // 1.22 from 3
+      3.5, 2.6, 1;          // 0.922 from 4
   f.add_contacts(6);
   f.contact_i() << 0, 1, 0, 3, 4, 2;
   f.contact_j() << 1, 2, 2, 4, partner::wall(Wall::ZLow), 3;
-  ValueTable<double>& force = f.contacts->add<ValueTable<double>>(*find_standard("normal_force", Scope::Contact));
+  ValueTable<double>& force =
+      f.contacts->add<ValueTable<double>>(*find_standard("normal_force", Scope::Contact));
   force.col(2).setConstant(1.0);
   force(5, 2) = 0.0;  // 3-4: in the table, without force
   return f;
@@ -302,7 +304,8 @@ TEST(Mst, FramesWithoutContactsHaveNoLoadedContacts) {
 // No contact to recover: the share recovered is 0/0, undefined (NaN), not 0 — and run.log
 // says so once; the counts of trees and contacts are 0.
 TEST(Mst, WithoutContactsTheRecoveredFractionIsUndefined) {
-  const fs::path log = fs::temp_directory_path() / ("granpipe_mst_" + std::to_string(getpid()) + ".log");
+  const fs::path log =
+      fs::temp_directory_path() / ("granpipe_mst_" + std::to_string(getpid()) + ".log");
   fs::remove(log);
   const auto ctx = test::make_context("mst", {{"passes", 2}});
   ctx->log().open_file(log.string());
@@ -327,8 +330,9 @@ TEST(Mst, WithoutContactsTheRecoveredFractionIsUndefined) {
   for (std::string line; std::getline(in, line);) lines.push_back(line);
   fs::remove(log);
   ASSERT_EQ(lines.size(), 1u);
-  EXPECT_EQ(lines[0], "warning: mst: frame 0: no contacts: its recovered_fraction is undefined (nan "
-                      "in per_frame, not 0; docs/mst.md); said for the first such frame only");
+  EXPECT_EQ(lines[0],
+            "warning: mst: frame 0: no contacts: its recovered_fraction is undefined (nan "
+            "in per_frame, not 0; docs/mst.md); said for the first such frame only");
 }
 
 TEST(Mst, ANaNForceOrARowJoiningAParticleToItselfIsRefused) {
@@ -341,7 +345,8 @@ TEST(Mst, ANaNForceOrARowJoiningAParticleToItselfIsRefused) {
     tcp_report(nan_force, cache, o, "frame 3");
     FAIL() << "expected an InputError";
   } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(), "frame 3: contact 1: expected a finite normal_force, got nan in component x");
+    EXPECT_STREQ(e.what(),
+                 "frame 3: contact 1: expected a finite normal_force, got nan in component x");
   }
   Frame self = figure_13();
   self.contact_j()[0] = 0;
@@ -349,7 +354,8 @@ TEST(Mst, ANaNForceOrARowJoiningAParticleToItselfIsRefused) {
     tcp_report(self, cache, options(Candidates::Cutoff, 2), "frame 3");
     FAIL() << "expected an InputError";
   } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(), "frame 3: contact 0: expected two different particles, got particle 0 twice");
+    EXPECT_STREQ(e.what(),
+                 "frame 3: contact 0: expected two different particles, got particle 0 twice");
   }
 }
 
@@ -398,7 +404,8 @@ TEST(Mst, TheAnalyzerPublishesPassesAndTreesAndKeepsTheMostLoadedFrame) {
   analyzer.consume(f, cache);
 
   PropertyTable contacts(Scope::Contact, f.contacts->rows(), 3), particles(Scope::Particle, 5, 3);
-  for (const Property& p : analyzer.publishes()) (p.scope == Scope::Contact ? contacts : particles).add(p);
+  for (const Property& p : analyzer.publishes())
+    (p.scope == Scope::Contact ? contacts : particles).add(p);
   analyzer.publish(contacts);
   analyzer.publish(particles);
   const IndexArray& pass = contacts.get<IndexArray>("mst_pass");

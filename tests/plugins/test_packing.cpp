@@ -129,9 +129,9 @@ TEST(Packing, WallContactsInATightBox) {
 TEST(Packing, RegionOfWholeCellsAtAnyOffsetHasTheLatticeFraction) {
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> u(-0.5, 1.0);
-  const std::map<std::string, std::vector<int>> per_axis{
-      {"square", {4, 4}}, {"triangular", {4, 4}}, {"sc", {4, 4, 4}},
-      {"bcc", {4, 4, 4}},  {"fcc", {4, 4, 4}},        {"hcp", {4, 4, 4}}};
+  const std::map<std::string, std::vector<int>> per_axis{{"square", {4, 4}}, {"triangular", {4, 4}},
+                                                         {"sc", {4, 4, 4}},  {"bcc", {4, 4, 4}},
+                                                         {"fcc", {4, 4, 4}}, {"hcp", {4, 4, 4}}};
   for (const auto& e : lattices()) {
     const Frame f = one(e.name, "periodic", {{"radius", 0.8}});
     const int dim = f.dim;
@@ -195,8 +195,8 @@ TEST(Packing, ContactListIsSharedThroughTheFrameCache) {
   PackingSettings s;
   s.tolerance = 1e-7;
   measure_packing(f, cache, s);
-  const auto& shared = cache.get<granpipe::DistanceContacts>(
-      granpipe::contacts_by_distance_key(1e-7), [] {
+  const auto& shared =
+      cache.get<granpipe::DistanceContacts>(granpipe::contacts_by_distance_key(1e-7), [] {
         ADD_FAILURE() << "the contacts were not in the cache";
         return granpipe::DistanceContacts{};
       });
@@ -388,8 +388,9 @@ TEST(Packing, AnalyzerAveragesFrames) {
 
 // Through a periodic side shorter than two contact distances a pair would touch twice.
 TEST(Packing, TooShortPeriodicBoxIsRefusedForContacts) {
-  const Frame f = lattice({{"lattice", std::string("sc")},
-                           {"cells", std::vector<std::int64_t>{2, 3, 3}}}).at(0);
+  const Frame f =
+      lattice({{"lattice", std::string("sc")}, {"cells", std::vector<std::int64_t>{2, 3, 3}}})
+          .at(0);
   EXPECT_THROW(granpipe::find_contacts_by_distance(f, 1e-9), granpipe::InputError);
 }
 
@@ -412,7 +413,8 @@ TEST(Packing, OneParticle) {
 TEST(Packing, PublishesTheCoordinationOfEachParticle) {
   for (const auto& [name, z] : {std::pair{"fcc", 12}, {"triangular", 6}}) {
     const Frame f = one(name);
-    const auto ctx = granpipe::test::make_context(granpipe::packing::schema(), {{"contact_tolerance", 1e-9}});
+    const auto ctx =
+        granpipe::test::make_context(granpipe::packing::schema(), {{"contact_tolerance", 1e-9}});
     granpipe::packing::PackingAnalyzer analyzer(*ctx);
     FrameCache cache;
     analyzer.consume(f, cache);

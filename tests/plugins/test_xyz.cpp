@@ -36,7 +36,8 @@ Frame two_disks() {
 
 TEST(Xyz, CommentLineListsTheBoxItsOriginThePeriodicSidesAndEveryColumn) {
   EXPECT_EQ(xyz::comment_line(two_disks()),
-            "Lattice=\"4 0 0 0 2.5 0 0 0 1\" Origin=\"-1 0.5 0\" Properties=pos:R:3:radius:R:1:id:I:1:species:I:1:"
+            "Lattice=\"4 0 0 0 2.5 0 0 0 1\" Origin=\"-1 0.5 0\" "
+            "Properties=pos:R:3:radius:R:1:id:I:1:species:I:1:"
             "supports:I:2 pbc=\"T T F\" Time=1.5 Step=7");
 }
 
@@ -52,7 +53,8 @@ TEST(Xyz, APipelineWritesTheFramesThatFramesH5Holds) {
   const Pipeline p = Pipeline::parse(R"({"seed": 4,
       "source": {"plugin": "lattice", "params": {"lattice": "bcc", "cells": [2, 2, 2], "jitter": 0.1,
                                                  "frames": 3}},
-      "writers": [{"plugin": "xyz", "name": "movie"}]})", "p.json", {}, r);
+      "writers": [{"plugin": "xyz", "name": "movie"}]})",
+                                     "p.json", {}, r);
   Log log;
   log.set_quiet(true);
   RunOptions o;

@@ -30,7 +30,8 @@ TEST(Tap2dPaper, OrderedAtSmallAmplitudeDisorderedAtLarge) {
   log.set_quiet(true);
   RunOptions options;
   options.progress = false;
-  options.out = std::filesystem::temp_directory_path() / ("granpipe_tap2d_validation_" + std::to_string(::getpid()));
+  options.out = std::filesystem::temp_directory_path() /
+                ("granpipe_tap2d_validation_" + std::to_string(::getpid()));
   std::filesystem::remove_all(*options.out);
   const RunSummary run = p.run(options, log);
   std::filesystem::remove_all(*options.out);
@@ -39,7 +40,8 @@ TEST(Tap2dPaper, OrderedAtSmallAmplitudeDisorderedAtLarge) {
   const Results& large_packing = run.results.at("point_001/packing");
   const Results& small_arches = run.results.at("point_000/arches");
   const Results& large_arches = run.results.at("point_001/arches");
-  const double phi_small = small_packing.scalar("phi").value, phi_large = large_packing.scalar("phi").value;
+  const double phi_small = small_packing.scalar("phi").value,
+               phi_large = large_packing.scalar("phi").value;
   const double z_small = small_arches.scalar("z_support_eq4").value;
   const double z_large = large_arches.scalar("z_support_eq4").value;
 
@@ -57,7 +59,8 @@ TEST(Tap2dPaper, OrderedAtSmallAmplitudeDisorderedAtLarge) {
   }
   EXPECT_GT(z_small - z_large, 0.05);
   // More arches per particle in the disordered bed (Eq. 4: arches and <z> go together).
-  EXPECT_GT(large_arches.scalar("arches_per_particle").value, small_arches.scalar("arches_per_particle").value);
+  EXPECT_GT(large_arches.scalar("arches_per_particle").value,
+            small_arches.scalar("arches_per_particle").value);
 
   // On every frame of the real runs, Eq. (4) and the direct count of supporting contacts
   // differ exactly by 2 N_base / N (Eq. 4 counts a base disk as if it had two supports),

@@ -9,11 +9,11 @@
 #include <initializer_list>
 
 #include "granpipe/container.hpp"
-#include "granpipe/plugin.hpp"
 #include "granpipe/frame.hpp"
 #include "granpipe/frame_cache.hpp"
 #include "granpipe/log.hpp"
 #include "granpipe/params.hpp"
+#include "granpipe/plugin.hpp"
 #include "granpipe/progress.hpp"
 #include "granpipe/property.hpp"
 #include "granpipe/property_table.hpp"
@@ -39,16 +39,21 @@ constexpr std::uint64_t fnv1a(std::initializer_list<std::uint64_t> values) {
 // Sizes and alignments of every public type that crosses the plugin boundary.
 #define GRANPIPE_LAYOUT_OF(T) sizeof(T), alignof(T)
 inline constexpr std::uint64_t kLayoutFingerprint = abi_detail::fnv1a({
-    GRANPIPE_LAYOUT_OF(Property), GRANPIPE_LAYOUT_OF(Column), GRANPIPE_LAYOUT_OF(PropertyTable),
-    GRANPIPE_LAYOUT_OF(Frame), GRANPIPE_LAYOUT_OF(Container), GRANPIPE_LAYOUT_OF(Coordinates),
-    GRANPIPE_LAYOUT_OF(FrameCache), GRANPIPE_LAYOUT_OF(Log), GRANPIPE_LAYOUT_OF(ParamSpec),
-    GRANPIPE_LAYOUT_OF(Schema), GRANPIPE_LAYOUT_OF(Params), GRANPIPE_LAYOUT_OF(SpeciesTable),
-    GRANPIPE_LAYOUT_OF(PairTable), GRANPIPE_LAYOUT_OF(PairMatrix), GRANPIPE_LAYOUT_OF(Progress),
-    GRANPIPE_LAYOUT_OF(RandomStream), GRANPIPE_LAYOUT_OF(Seeds), GRANPIPE_LAYOUT_OF(Scalar),
-    GRANPIPE_LAYOUT_OF(Table), GRANPIPE_LAYOUT_OF(Histogram), GRANPIPE_LAYOUT_OF(Fit),
-    GRANPIPE_LAYOUT_OF(Plot), GRANPIPE_LAYOUT_OF(Results), GRANPIPE_LAYOUT_OF(RunningMean),
+    GRANPIPE_LAYOUT_OF(Property),      GRANPIPE_LAYOUT_OF(Column),
+    GRANPIPE_LAYOUT_OF(PropertyTable), GRANPIPE_LAYOUT_OF(Frame),
+    GRANPIPE_LAYOUT_OF(Container),     GRANPIPE_LAYOUT_OF(Coordinates),
+    GRANPIPE_LAYOUT_OF(FrameCache),    GRANPIPE_LAYOUT_OF(Log),
+    GRANPIPE_LAYOUT_OF(ParamSpec),     GRANPIPE_LAYOUT_OF(Schema),
+    GRANPIPE_LAYOUT_OF(Params),        GRANPIPE_LAYOUT_OF(SpeciesTable),
+    GRANPIPE_LAYOUT_OF(PairTable),     GRANPIPE_LAYOUT_OF(PairMatrix),
+    GRANPIPE_LAYOUT_OF(Progress),      GRANPIPE_LAYOUT_OF(RandomStream),
+    GRANPIPE_LAYOUT_OF(Seeds),         GRANPIPE_LAYOUT_OF(Scalar),
+    GRANPIPE_LAYOUT_OF(Table),         GRANPIPE_LAYOUT_OF(Histogram),
+    GRANPIPE_LAYOUT_OF(Fit),           GRANPIPE_LAYOUT_OF(Plot),
+    GRANPIPE_LAYOUT_OF(Results),       GRANPIPE_LAYOUT_OF(RunningMean),
     GRANPIPE_LAYOUT_OF(StreamedTable), GRANPIPE_LAYOUT_OF(FrameContent),
-    GRANPIPE_LAYOUT_OF(PluginContext), GRANPIPE_LAYOUT_OF(PluginInfo), GRANPIPE_LAYOUT_OF(Registry),
+    GRANPIPE_LAYOUT_OF(PluginContext), GRANPIPE_LAYOUT_OF(PluginInfo),
+    GRANPIPE_LAYOUT_OF(Registry),
 });
 #undef GRANPIPE_LAYOUT_OF
 

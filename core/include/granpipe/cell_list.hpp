@@ -3,9 +3,9 @@
 // sides (minimum image). Building is O(N); a pair loop visits only neighbouring cells.
 #include <Eigen/Core>
 #include <array>
-#include <utility>
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "granpipe/container.hpp"
@@ -113,7 +113,8 @@ void CellList::for_each_pair(F&& f) const {
             return;
           }
           for (int k = begin; k < end; ++k)
-            for (int l = cell_start_[other]; l < cell_start_[other + 1]; ++l) visit(order_[k], order_[l]);
+            for (int l = cell_start_[other]; l < cell_start_[other + 1]; ++l)
+              visit(order_[k], order_[l]);
         });
       }
 }

@@ -28,7 +28,9 @@ struct ConnectedComponents {
   // The largest component's size; zero when there is none.
   ComponentSize largest() const { return size.empty() ? ComponentSize{} : size.front(); }
   // How many components besides the largest, and their edges summed.
-  std::int64_t others() const { return size.empty() ? 0 : static_cast<std::int64_t>(size.size()) - 1; }
+  std::int64_t others() const {
+    return size.empty() ? 0 : static_cast<std::int64_t>(size.size()) - 1;
+  }
   std::int64_t edges_of_others() const;
 };
 

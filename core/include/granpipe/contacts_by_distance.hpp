@@ -39,7 +39,8 @@ struct DistanceContacts {
 // the largest contact distance (a pair would touch through two images), or the box is
 // absurdly large for the particles (see CellList); the message starts with `where`
 // ("frame at step S" if not given).
-DistanceContacts find_contacts_by_distance(const Frame& frame, double tolerance, const std::string& where);
+DistanceContacts find_contacts_by_distance(const Frame& frame, double tolerance,
+                                           const std::string& where);
 DistanceContacts find_contacts_by_distance(const Frame& frame, double tolerance);
 
 // The FrameCache key of the contacts for this tolerance.

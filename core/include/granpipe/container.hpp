@@ -28,8 +28,8 @@ struct Container {
   Eigen::Vector3d hi = Eigen::Vector3d::Ones();
   // boundary[axis][0] is the low side, [1] the high side.
   std::array<std::array<Boundary, 2>, 3> boundary{{{Boundary::Wall, Boundary::Wall},
-                                                    {Boundary::Wall, Boundary::Wall},
-                                                    {Boundary::Wall, Boundary::Wall}}};
+                                                   {Boundary::Wall, Boundary::Wall},
+                                                   {Boundary::Wall, Boundary::Wall}}};
   // Vertical cylinder (3D only): axis along z through (center_x, center_y).
   double cylinder_radius = 0.0;
   Eigen::Vector2d cylinder_center = Eigen::Vector2d::Zero();

@@ -14,18 +14,18 @@ namespace granpipe {
 
 struct FrameFileInfo {
   std::string path;
-  std::string group = "all";      // H5MD particles group read
+  std::string group = "all";  // H5MD particles group read
   long frames = 0;
   long particles = 0;
   int dim = 0;
-  bool complete = true;           // false: the writer never closed it (killed or crashed)
-  bool granpipe_file = false;     // written by granpipe (has the extension groups)
+  bool complete = true;        // false: the writer never closed it (killed or crashed)
+  bool granpipe_file = false;  // written by granpipe (has the extension groups)
   // What each frame holds beyond positions: particle columns (radius, velocity, a
   // plugin's own), per-frame observables, and the contact columns (when it has contacts).
   std::vector<Property> columns, observables, contact_columns;
   bool has_contacts = false;
   bool has(std::string_view column) const;
-  std::string creator;            // /h5md/creator name and version
+  std::string creator;  // /h5md/creator name and version
 };
 
 class FrameWriter {

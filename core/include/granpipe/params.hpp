@@ -16,7 +16,14 @@
 namespace granpipe {
 
 enum class ParamType : std::uint8_t {
-  Bool, Int, Real, String, Choice, Path, IntList, RealList,
+  Bool,
+  Int,
+  Real,
+  String,
+  Choice,
+  Path,
+  IntList,
+  RealList,
   Object,   // an object with its own schema
   Species,  // a list of species objects, each named
   Pairs,    // an object of species-pair objects, keyed "a-b" (and "*" for the others)
@@ -28,9 +35,10 @@ class Schema;
 class SpeciesTable;
 class PairTable;
 
-using ParamValue = std::variant<bool, std::int64_t, double, std::string, std::vector<std::int64_t>,
-                                std::vector<double>, std::shared_ptr<const Params>,
-                                std::shared_ptr<const SpeciesTable>, std::shared_ptr<const PairTable>>;
+using ParamValue =
+    std::variant<bool, std::int64_t, double, std::string, std::vector<std::int64_t>,
+                 std::vector<double>, std::shared_ptr<const Params>,
+                 std::shared_ptr<const SpeciesTable>, std::shared_ptr<const PairTable>>;
 
 struct ParamSpec {
   std::string name;
@@ -70,11 +78,30 @@ class Schema {
   class Entry {
    public:
     explicit Entry(ParamSpec& s) : s_(s) {}
-    Entry& range(double lo, double hi) { s_.min = lo; s_.max = hi; return *this; }
-    Entry& min(double lo, bool exclusive = false) { s_.min = lo; s_.min_exclusive = exclusive; return *this; }
-    Entry& max(double hi, bool exclusive = false) { s_.max = hi; s_.max_exclusive = exclusive; return *this; }
-    Entry& unit(std::string u) { s_.unit = std::move(u); return *this; }
-    Entry& length(std::size_t n) { s_.list_length = n; return *this; }
+    Entry& range(double lo, double hi) {
+      s_.min = lo;
+      s_.max = hi;
+      return *this;
+    }
+    Entry& min(double lo, bool exclusive = false) {
+      s_.min = lo;
+      s_.min_exclusive = exclusive;
+      return *this;
+    }
+    Entry& max(double hi, bool exclusive = false) {
+      s_.max = hi;
+      s_.max_exclusive = exclusive;
+      return *this;
+    }
+    Entry& unit(std::string u) {
+      s_.unit = std::move(u);
+      return *this;
+    }
+    Entry& length(std::size_t n) {
+      s_.list_length = n;
+      return *this;
+    }
+
    private:
     ParamSpec& s_;
   };
@@ -88,7 +115,8 @@ class Schema {
   Entry choice(const std::string& name, std::optional<E> def, const std::string& doc) {
     std::vector<std::string> names;
     for (const auto& entry : choice_names(E{})) names.push_back(entry.first);
-    return add_choice(name, std::move(names), def ? std::optional(choice_name(*def)) : std::nullopt, doc);
+    return add_choice(name, std::move(names), def ? std::optional(choice_name(*def)) : std::nullopt,
+                      doc);
   }
   // A file that must exist when the pipeline is validated.
   Entry path(const std::string& name, std::optional<std::string> def, const std::string& doc);
@@ -103,8 +131,8 @@ class Schema {
   // A list of species, [{"name": "small", <fields>}, ...]: each entry has a unique name and
   // the keys `fields` declares; a species' index is its place in the list.
   // `default_json` (JSON text) is used when the pipeline leaves the parameter out.
-  Entry species_table(const std::string& name, Schema fields, std::optional<std::string> default_json,
-                      const std::string& doc);
+  Entry species_table(const std::string& name, Schema fields,
+                      std::optional<std::string> default_json, const std::string& doc);
   // Values for every pair of the species of `species` (a species_table declared before):
   // {"*": {<fields>}, "small-large": {<fields>}}. A pair's keys override "*"'s, "*"'s
   // override the defaults of `fields`; a-b is b-a.
@@ -138,7 +166,8 @@ class Params {
     const std::string& value = string(name);
     for (const auto& [n, e] : choice_names(E{}))
       if (n == value) return e;
-    throw InternalError("parameter '" + name + "' holds \"" + value + "\", not one of its choice_names");
+    throw InternalError("parameter '" + name + "' holds \"" + value +
+                        "\", not one of its choice_names");
   }
   const Params& object(const std::string& name) const;
   const SpeciesTable& species(const std::string& name) const;

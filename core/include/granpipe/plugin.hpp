@@ -175,7 +175,6 @@ class Registry {
   std::shared_ptr<struct LoadReport> report_;
 };
 
-
 }  // namespace granpipe
 
 #include "granpipe/abi_fingerprint.hpp"  // of every type above
@@ -193,10 +192,10 @@ extern "C" struct granpipe_plugin_entry {
 
 // Use once per plugin library:
 //   GRANPIPE_PLUGIN(registry) { registry.add_analyzer<MyAnalyzer>("my", "...", schema()); }
-#define GRANPIPE_PLUGIN(registry)                                                  \
-  static void granpipe_register_plugins(granpipe::Registry& registry);             \
-  extern "C" __attribute__((visibility("default"))) const granpipe_plugin_entry   \
-      granpipe_plugin = {GRANPIPE_ABI_VERSION, granpipe::kLayoutFingerprint,         \
-                         GRANPIPE_VERSION,                                         \
-                         &granpipe_register_plugins};                              \
+#define GRANPIPE_PLUGIN(registry)                                                                \
+  static void granpipe_register_plugins(granpipe::Registry& registry);                           \
+  extern "C" __attribute__((visibility("default")))                                              \
+  const granpipe_plugin_entry granpipe_plugin = {GRANPIPE_ABI_VERSION,                           \
+                                                 granpipe::kLayoutFingerprint, GRANPIPE_VERSION, \
+                                                 &granpipe_register_plugins};                    \
   static void granpipe_register_plugins(granpipe::Registry& registry)

@@ -32,9 +32,9 @@ using IntArray = Values<std::int32_t>;
 
 class Column {
  public:
-  using Storage = std::variant<Values<double>, ValueTable<double>, Values<std::int64_t>,
-                               ValueTable<std::int64_t>, Values<std::int32_t>,
-                               ValueTable<std::int32_t>>;
+  using Storage =
+      std::variant<Values<double>, ValueTable<double>, Values<std::int64_t>,
+                   ValueTable<std::int64_t>, Values<std::int32_t>, ValueTable<std::int32_t>>;
 
   // Zero-filled, `rows` rows, components as the property asks in dimension `dim`.
   Column(Property property, Eigen::Index rows, int dim);

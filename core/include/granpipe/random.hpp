@@ -23,7 +23,8 @@ class RandomStream {
     unsigned __int128 m = static_cast<unsigned __int128>(engine_()) * n;
     if (static_cast<std::uint64_t>(m) < n) {
       const std::uint64_t threshold = (0 - n) % n;
-      while (static_cast<std::uint64_t>(m) < threshold) m = static_cast<unsigned __int128>(engine_()) * n;
+      while (static_cast<std::uint64_t>(m) < threshold)
+        m = static_cast<unsigned __int128>(engine_()) * n;
     }
     return static_cast<std::uint64_t>(m >> 64);
   }
@@ -56,7 +57,8 @@ void RandomStream::shuffle(std::vector<T>& v) {
     std::uint64_t m = static_cast<std::uint64_t>(draw32()) * n32;
     if (static_cast<std::uint32_t>(m) < n32) {
       const std::uint32_t threshold = (0u - n32) % n32;
-      while (static_cast<std::uint32_t>(m) < threshold) m = static_cast<std::uint64_t>(draw32()) * n32;
+      while (static_cast<std::uint32_t>(m) < threshold)
+        m = static_cast<std::uint64_t>(draw32()) * n32;
     }
     std::swap(v[n - 1], v[static_cast<std::size_t>(m >> 32)]);
   }

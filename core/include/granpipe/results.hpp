@@ -20,7 +20,7 @@ struct Scalar {
 // Columns of equal length: a series (x and one or more y), or any table.
 struct Table {
   std::vector<std::string> columns;
-  std::vector<std::string> units;  // one per column, "" dimensionless
+  std::vector<std::string> units;         // one per column, "" dimensionless
   std::vector<std::vector<double>> data;  // data[column][row]
   std::string doc;
 

@@ -1,9 +1,8 @@
 // contact_forces.cpp: the mean normal force between particles, read from the standard
 // contact column, and the fabric tensor of the contact normals, reported as a table.
 // The README shows this file; the out-of-tree test builds it.
-#include <granpipe/plugin.hpp>
-
 #include <cmath>
+#include <granpipe/plugin.hpp>
 #include <string>
 #include <vector>
 
@@ -15,7 +14,8 @@ class ContactForces : public granpipe::Analyzer {
 
   // A contact table with the standard normal_force column (docs/file-format.md).
   granpipe::FrameContent needs() const override {
-    return {.contacts = true, .columns = {*granpipe::find_standard("normal_force", granpipe::Scope::Contact)}};
+    return {.contacts = true,
+            .columns = {*granpipe::find_standard("normal_force", granpipe::Scope::Contact)}};
   }
 
   void consume(const granpipe::Frame& frame, granpipe::FrameCache&) override {
@@ -60,5 +60,6 @@ class ContactForces : public granpipe::Analyzer {
 }  // namespace
 
 GRANPIPE_PLUGIN(registry) {
-  registry.add_analyzer<ContactForces>("contact_forces", "mean normal force, fabric tensor", granpipe::Schema{});
+  registry.add_analyzer<ContactForces>("contact_forces", "mean normal force, fabric tensor",
+                                       granpipe::Schema{});
 }

@@ -1,7 +1,6 @@
 // radius_stats.cpp: mean radius, a histogram of radii, and each particle's scaled radius
 // published as a column. The README shows this file; the out-of-tree test builds it.
 #include <granpipe/plugin.hpp>
-
 #include <vector>
 
 namespace {
