@@ -30,29 +30,14 @@ void SphereGrid::put(std::int32_t i, const Eigen::Vector3d& x) {
 
 bool SphereGrid::any_within(const Eigen::Vector3d& x, double reach, std::int32_t self,
                             const std::vector<Eigen::Vector3d>& centres) const {
-  int x0, x1, y0, y1;
-  axis_range(x.x() - reach, x.x() + reach, x0, x1);
-  axis_range(x.y() - reach, x.y() + reach, y0, y1);
-  const int z0 = layer_of(x.z() - reach),
-            z1 = std::min(floor_int((x.z() + reach) * inv_cell_), layers_ - 1);
+  const Eigen::Vector3d lo = x.array() - reach, hi = x.array() + reach;
   const double reach2 = reach * reach;
-  for (int iz = z0; iz <= z1; ++iz) {
-    for (int iy = y0; iy <= y1; ++iy) {
-      const int wy = ((iy % n_) + n_) % n_;
-      const double shift_y = box_.side * static_cast<double>((iy - wy) / n_);
-      const std::int32_t* row = cells_.data() + (static_cast<std::size_t>(iz) * n_ + wy) * n_;
-      for (int ix = x0; ix <= x1; ++ix) {
-        const int wx = ((ix % n_) + n_) % n_;
-        const std::int32_t j = row[wx];
-        if (j == kEmpty || j == self) continue;
-        const Eigen::Vector3d& c = centres[static_cast<std::size_t>(j)];
-        const double dx = c.x() + box_.side * static_cast<double>((ix - wx) / n_) - x.x();
-        const double dy = c.y() + shift_y - x.y(), dz = c.z() - x.z();
-        if (dx * dx + dy * dy + dz * dz < reach2) return true;
-      }
-    }
-  }
-  return false;
+  return first_in(lo, hi, [&](std::int32_t j, double shift_x, double shift_y) {
+    if (j == self) return false;
+    const Eigen::Vector3d& c = centres[static_cast<std::size_t>(j)];
+    const double dx = c.x() + shift_x - x.x(), dy = c.y() + shift_y - x.y(), dz = c.z() - x.z();
+    return dx * dx + dy * dy + dz * dz < reach2;
+  });
 }
 
 void SphereGrid::axis_range(double lo, double hi, int& first, int& last) const {

@@ -41,6 +41,10 @@ class SphereGrid {
                   const std::vector<Eigen::Vector3d>& centres) const;
 
  private:
+  // Calls stop(j, shift_x, shift_y) for the spheres for_each_in visits, in the same order,
+  // until it returns true; true when it did.
+  template <class F>
+  bool first_in(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, F&& stop) const;
   static int floor_int(double v) {
     const int t = static_cast<int>(v);
     return t - (v < static_cast<double>(t));
@@ -58,7 +62,7 @@ class SphereGrid {
 };
 
 template <class F>
-void SphereGrid::for_each_in(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, F&& f) const {
+bool SphereGrid::first_in(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, F&& stop) const {
   int x0, x1, y0, y1;
   axis_range(lo.x(), hi.x(), x0, x1);
   axis_range(lo.y(), hi.y(), y0, y1);
@@ -71,11 +75,20 @@ void SphereGrid::for_each_in(const Eigen::Vector3d& lo, const Eigen::Vector3d& h
       for (int ix = x0; ix <= x1; ++ix) {
         const int wx = ((ix % n_) + n_) % n_;
         const std::int32_t j = row[wx];
-        if (j == kEmpty) continue;
-        f(j, Eigen::Vector3d(box_.side * static_cast<double>((ix - wx) / n_), shift_y, 0.0));
+        if (j != kEmpty && stop(j, box_.side * static_cast<double>((ix - wx) / n_), shift_y))
+          return true;
       }
     }
   }
+  return false;
+}
+
+template <class F>
+void SphereGrid::for_each_in(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, F&& f) const {
+  first_in(lo, hi, [&](std::int32_t j, double shift_x, double shift_y) {
+    f(j, Eigen::Vector3d(shift_x, shift_y, 0.0));
+    return false;
+  });
 }
 
 }  // namespace granpipe::spheres3d_tap
