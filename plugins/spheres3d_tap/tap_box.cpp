@@ -1,7 +1,5 @@
 #include "tap_box.hpp"
 
-#include <cmath>
-
 #include "granpipe/container.hpp"
 
 namespace granpipe::spheres3d_tap {
@@ -17,12 +15,17 @@ std::vector<CentrePlane> TapBox::centre_planes() const {
   return planes;
 }
 
+Container TapBox::container(double top) const {
+  Container c =
+      Container::open_top_box(3, Eigen::Vector3d::Zero(), Eigen::Vector3d(side, side, top));
+  if (periodic()) c.boundary[0] = c.boundary[1] = {Boundary::Periodic, Boundary::Periodic};
+  return c;
+}
+
 Eigen::Vector3d TapBox::wrap(Eigen::Vector3d x) const {
-  if (!periodic()) return x;
-  for (int a = 0; a < 2; ++a) {
-    x[a] -= side * std::floor(x[a] / side);
-    if (x[a] >= side) x[a] = 0.0;  // a hair below 0 rounds up to L
-  }
+  // The container's wrap, which also keeps a coordinate a hair below 0 off L.
+  const Container c = container(1.0);
+  for (int a = 0; a < 2; ++a) x[a] = c.wrap(a, x[a]);
   return x;
 }
 

@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "granpipe/container.hpp"
 #include "granpipe/params.hpp"
 
 namespace granpipe::spheres3d_tap {
@@ -31,6 +32,8 @@ struct TapBox {
   bool periodic() const { return sides == Sides::Periodic; }
   // The bottom and, with walls, the four sides, as planes of the centres.
   std::vector<CentrePlane> centre_planes() const;
+  // The frame's container: [0, L]^2 x [0, top], open at the top.
+  Container container(double top) const;
   // x and y brought into [0, L) on a periodic box (unchanged with walls).
   Eigen::Vector3d wrap(Eigen::Vector3d x) const;
 };

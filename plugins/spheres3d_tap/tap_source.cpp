@@ -198,12 +198,7 @@ void TapSource::to_frame(Frame& frame, const TapStats& stats, const EpsilonAt& e
     top = std::max(top, centres_[static_cast<std::size_t>(k)].z() + box_.radius);
   }
   frame.radius().setConstant(box_.radius);
-  frame.container = Container::open_top_box(3, Eigen::Vector3d::Zero(),
-                                            Eigen::Vector3d(box_.side, box_.side, top));
-  if (box_.periodic()) {
-    for (int a = 0; a < 2; ++a)
-      frame.container.boundary[a] = {Boundary::Periodic, Boundary::Periodic};
-  }
+  frame.container = box_.container(top);
   frame.step = tap_;
   frame.time = static_cast<double>(tap_);  // the scene's clock counts taps
   frame.set_observable(tap_property(), tap_);

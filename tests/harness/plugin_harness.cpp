@@ -1,5 +1,10 @@
 #include "plugin_harness.hpp"
 
+#include <unistd.h>
+
+#include <fstream>
+#include <string>
+
 #include "granpipe/plugin_loader.hpp"
 #include "param_validation.hpp"
 
@@ -13,6 +18,22 @@ PluginHarness::PluginHarness(const Schema& schema, nlohmann::json params, std::u
                             std::filesystem::current_path());
   context_ = std::make_unique<PluginContext>(PluginContext{
       params_, Seeds(seed), 1, log_, progress_, std::move(output_dir), std::move(name), "params"});
+}
+
+void PluginHarness::keep_log() {
+  log_file_ = std::filesystem::temp_directory_path() /
+              ("granpipe_test_" + std::to_string(getpid()) + "_" + context_->name + ".log");
+  std::filesystem::remove(log_file_);
+  log_.open_file(log_file_.string());
+}
+
+std::vector<std::string> PluginHarness::logged_lines() {
+  log_.close_file();
+  std::vector<std::string> lines;
+  std::ifstream in(log_file_);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  std::filesystem::remove(log_file_);
+  return lines;
 }
 
 std::unique_ptr<PluginHarness> make_context(const Schema& schema, nlohmann::json params,

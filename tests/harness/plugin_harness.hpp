@@ -8,6 +8,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "granpipe/plugin.hpp"
 
@@ -29,9 +30,14 @@ class PluginHarness {
   }  // NOLINT: a context is what it is for
   const Params& params() const { return params_; }
   Log& log() { return log_; }
+  // Sends the log to a file of the test program's own, as a run sends it to run.log;
+  // logged_lines() ends it and gives its lines (the file removed).
+  void keep_log();
+  std::vector<std::string> logged_lines();
 
  private:
   Log log_;
+  std::filesystem::path log_file_;
   Progress progress_;
   Params params_;
   std::unique_ptr<PluginContext> context_;

@@ -1,11 +1,8 @@
 // force_network on hand-made contact tables whose answers are counted by hand, the Eq. (11)
 // fit on samples drawn from Eq. (11), and F(r) against a direct O(M^2) sum.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <numbers>
 #include <random>
 #include <set>
@@ -17,7 +14,6 @@
 
 using namespace granpipe;
 using namespace granpipe::force_network;
-namespace fs = std::filesystem;
 
 namespace {
 
@@ -182,11 +178,8 @@ TEST(ForceNetwork, WithoutLoadedContactsTheStatisticsAreUndefinedNotZero) {
   for (ContactSpec& s : unloaded) s.force = 0.0;
   const std::set<std::string> undefined = {"mean_force", "z_largest", "density", "error"};
   for (const auto& table : {unloaded, std::vector<ContactSpec>{}}) {
-    const fs::path log =
-        fs::temp_directory_path() / ("granpipe_fn_" + std::to_string(getpid()) + ".log");
-    fs::remove(log);
     const auto ctx = test::make_context("force_network");
-    ctx->log().open_file(log.string());
+    ctx->keep_log();
     ForceNetworkAnalyzer analyzer(*ctx);
     FrameCache cache;
     for (int frame = 0; frame < 2; ++frame) analyzer.consume(frame_of(table), cache);
@@ -202,10 +195,7 @@ TEST(ForceNetwork, WithoutLoadedContactsTheStatisticsAreUndefinedNotZero) {
       }
     }
     EXPECT_EQ(results.tables().at("per_frame").column("networks").at(0), 0.0);
-    std::ifstream in(log);
-    std::vector<std::string> lines;
-    for (std::string line; std::getline(in, line);) lines.push_back(line);
-    fs::remove(log);
+    const std::vector<std::string> lines = ctx->logged_lines();
     ASSERT_EQ(lines.size(), 1u);
     EXPECT_EQ(lines[0],
               "warning: force_network: frame 0: no contact with |F_n| > min_force: its "
