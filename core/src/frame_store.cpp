@@ -1,9 +1,10 @@
 // FrameWriter: frames.h5 as H5MD 1.1 plus the /granpipe extension (docs/file-format.md).
 //
-// Crash safety rests on three things: HDF5's SWMR mode (a killed writer leaves a file
-// whose flushed state is consistent), a fixed write order within a frame (every other
-// dataset first, then time, then step), and the reader counting only frames present in
-// every dataset. The `complete` attribute is set only by close(), after SWMR has ended.
+// Crash safety rests on four things: HDF5's SWMR mode (a killed writer leaves a file
+// whose flushed state is consistent), paged file space (a killed write never tears a
+// metadata block, h5_file.hpp), a fixed write order within a frame (every other dataset
+// first, then time, then step), and the reader counting only frames present in every
+// dataset. The `complete` attribute is set only by close(), after SWMR has ended.
 #include "granpipe/frame_store.hpp"
 
 #include <algorithm>
@@ -80,13 +81,6 @@ hsize_t chunk_rows(const h5::Shape& item, std::size_t bytes, hsize_t max_rows) {
 constexpr hsize_t kFrameRows = 256;     // per-frame datasets
 constexpr hsize_t kContactRows = 4096;  // concatenated contact arrays
 
-hid_t file_access_latest() {
-  hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
-  // SWMR needs the latest file format.
-  if (fapl >= 0) H5Pset_libver_bounds(fapl, H5F_LIBVER_LATEST, H5F_LIBVER_LATEST);
-  return fapl;
-}
-
 }  // namespace
 
 struct FrameWriter::Impl {
@@ -158,8 +152,7 @@ struct FrameWriter::Impl {
 };
 
 void FrameWriter::Impl::create_file(const std::string& provenance) {
-  h5::Object fapl = h5::owned(file_access_latest(), "cannot make the file access list");
-  file = h5::create_file(name, H5F_ACC_EXCL, fapl.id());
+  file = h5::create_swmr_file(name);
   h5::Object h5md = h5::create_group(file.id(), "/h5md");
   h5::write_attribute(h5md.id(), "version", std::vector<int>{1, 1});
   h5::Object author = h5::create_group(file.id(), "/h5md/author");
@@ -354,7 +347,7 @@ void FrameWriter::close() {
     const hid_t file = w.file.id();
     h5::check(H5Fclose(file), "cannot close the file (is the disk full?)");
     static_cast<void>(w.file.release());
-    h5::Object fapl = h5::owned(file_access_latest(), "cannot make the file access list");
+    const h5::Object fapl = h5::latest_format_access();
     h5::Object reopened = h5::owned(H5Fopen(w.name.c_str(), H5F_ACC_RDWR, fapl.id()),
                                     "cannot reopen the file to mark it complete");
     h5::Object ext = h5::open_group(reopened.id(), L::kExtension);

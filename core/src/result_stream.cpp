@@ -29,11 +29,7 @@ struct ResultStream::Impl {
 };
 
 void ResultStream::Impl::create(const Provenance& provenance) {
-  h5::Object fapl = h5::owned(H5Pcreate(H5P_FILE_ACCESS), "cannot make the file access list");
-  // SWMR needs the latest file format.
-  h5::check(H5Pset_libver_bounds(fapl.id(), H5F_LIBVER_LATEST, H5F_LIBVER_LATEST),
-            "cannot ask for the latest file format");
-  file = h5::create_file(name, H5F_ACC_EXCL, fapl.id());
+  file = h5::create_swmr_file(name);
   write_provenance(file.id(), provenance);
   for (Declared& t : tables) {
     const std::string path = "/" + t.group + "/" + t.name;
