@@ -4,7 +4,7 @@
 // particle then still reaches into the surface on the low side. Below the lowest point
 // of the surface it does not.
 #include "granpipe/frame.hpp"
-#include "region.hpp"
+#include "granpipe/region.hpp"
 
 namespace granpipe::packing {
 

@@ -5,7 +5,7 @@
 #include <numeric>
 #include <sstream>
 
-#include "cut_profile.hpp"
+#include "granpipe/cut_profile.hpp"
 #include "granpipe/contacts_by_distance.hpp"
 #include "lowest_surface.hpp"
 
@@ -146,7 +146,7 @@ PackingMeasurement measure_packing(const Frame& frame, FrameCache& cache,
     const Heights h =
         vertical_range(frame, s.top == Top::LowestSurface ? Top::Surface : s.top, region);
     const int count = static_cast<int>(std::ceil((h.top - h.base) / step - 1e-9));
-    m.profile = cut_fractions(frame, region, h.base, step, count);
+    m.profile = cut_fractions(frame, region, frame.dim - 1, h.base, step, count);
   }
   m.phi_cuts = std::nan("");
   if (s.cuts_step > 0.0) {
@@ -156,7 +156,8 @@ PackingMeasurement measure_packing(const Frame& frame, FrameCache& cache,
     const double height = region.hi[v] - region.lo[v];
     const int cuts =
         std::max(1, static_cast<int>(std::ceil(height / (s.cuts_step * m.diameter) - 1e-9)));
-    const std::vector<double> f = cut_fractions(frame, region, region.lo[v], height / cuts, cuts);
+    const std::vector<double> f =
+        cut_fractions(frame, region, v, region.lo[v], height / cuts, cuts);
     m.phi_cuts = std::accumulate(f.begin(), f.end(), 0.0) / cuts;
   }
   return m;

@@ -8,7 +8,7 @@
 #include "granpipe/contacts_by_distance.hpp"
 #include "granpipe/plugin.hpp"
 #include "granpipe/ramp_means.hpp"
-#include "region.hpp"
+#include "granpipe/region.hpp"
 
 namespace granpipe::packing {
 

@@ -11,13 +11,13 @@
 #include <random>
 #include <string>
 
-#include "cut_profile.hpp"
+#include "granpipe/cut_profile.hpp"
 #include "granpipe/contacts_by_distance.hpp"
 #include "granpipe/errors.hpp"
 #include "granpipe/overlap.hpp"
 #include "packing_analyzer.hpp"
 #include "plugin_harness.hpp"
-#include "region.hpp"
+#include "granpipe/region.hpp"
 
 namespace {
 
@@ -26,7 +26,7 @@ using granpipe::FrameCache;
 using granpipe::packing::measure_packing;
 using granpipe::packing::PackingMeasurement;
 using granpipe::packing::PackingSettings;
-using granpipe::packing::Region;
+using granpipe::Region;
 
 constexpr double kPi = std::numbers::pi;
 
@@ -143,7 +143,7 @@ TEST(Packing, RegionOfWholeCellsAtAnyOffsetHasTheLatticeFraction) {
         region.lo[a] = u(rng) * f.container.length(a);
         region.hi[a] = region.lo[a] + (1 + trial % 3) * cell;
       }
-      const double phi = granpipe::packing::particle_measure_in(f, region) / region.volume();
+      const double phi = granpipe::particle_measure_in(f, region) / region.volume();
       EXPECT_NEAR(phi, e.phi, 1e-12 * e.phi) << e.name << " trial " << trial;
     }
   }

@@ -7,7 +7,7 @@
 
 #include "granpipe/frame.hpp"
 
-namespace granpipe::packing {
+namespace granpipe {
 
 struct Region {
   int dim = 3;
@@ -27,4 +27,4 @@ double particle_measure_in(const Frame& frame, const Region& region);
 // coordinates taken back into the container first.
 std::vector<char> centres_in(const Frame& frame, const Region& region);
 
-}  // namespace granpipe::packing
+}  // namespace granpipe

@@ -1,10 +1,10 @@
-#include "region.hpp"
+#include "granpipe/region.hpp"
 
 #include <cmath>
 
 #include "granpipe/overlap.hpp"
 
-namespace granpipe::packing {
+namespace granpipe {
 
 double Region::volume() const {
   double v = 1.0;
@@ -67,4 +67,4 @@ std::vector<char> centres_in(const Frame& frame, const Region& region) {
   return in;
 }
 
-}  // namespace granpipe::packing
+}  // namespace granpipe

@@ -1,0 +1,43 @@
+#pragma once
+// Weighted non-linear least squares of a model y(x; p) to points (x, y, sigma), by GSL's
+// trust-region minimiser: the fits of the tapping papers' equations (a density profile,
+// a compaction law, an ageing function). The standard errors come from the covariance,
+// scaled by chi^2/dof when that exceeds 1 (the sigmas then understate the scatter), so
+// that unweighted data (sigma = 1) get the usual errors.
+#include <Eigen/Core>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace granpipe {
+
+// The model's value at x for parameters p, and its gradient with respect to p.
+struct CurveModel {
+  std::function<double(const Eigen::VectorXd& p, double x)> value;
+  std::function<Eigen::VectorXd(const Eigen::VectorXd& p, double x)> gradient;
+};
+
+enum class CurveFitStatus : std::uint8_t {
+  Fitted,
+  TooFewPoints,   // no more points than parameters
+  NotConverged,   // or a non-finite result
+  NotDetermined,  // converged, but a parameter is not determined (singular Jacobian)
+};
+std::string describe(CurveFitStatus s);
+
+struct CurveFit {
+  CurveFitStatus status = CurveFitStatus::TooFewPoints;
+  Eigen::VectorXd value, error;  // NaN when not fitted: undefined, not zero
+  double chi2 = 0.0;
+  int dof = 0;
+  bool fitted() const { return status == CurveFitStatus::Fitted; }
+};
+
+// Fits from `start`. `sigma` empty: every point weighs 1. Points whose x, y or sigma is
+// not finite are left out.
+CurveFit fit_curve(const CurveModel& model, const std::vector<double>& x,
+                   const std::vector<double>& y, const std::vector<double>& sigma,
+                   const Eigen::VectorXd& start);
+
+}  // namespace granpipe

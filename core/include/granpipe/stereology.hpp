@@ -1,0 +1,32 @@
+#pragma once
+// The global packing fractions of the 3D tapping paper (Sec. II), from horizontal cuts
+// integrated exactly (cut_profile.hpp) over the container's whole cross-section:
+//  - phi_b, the fraction between the bottom and bulk_top mean radii above it;
+//  - phi_c, the fraction from the bottom up to the height below which `fraction` of the
+//    centres lie, its layer between the bottom and perturbed_top radii multiplied by
+//    perturbed_factor (the perturbed-zone model: 16/11 for spheres on a plane), i.e.
+//    phi_c = [factor * Phi(0, R1) R1 + Phi(R1, H) (H - R1)] / H.
+// Heights are above the container's bottom, in mean particle radii R.
+#include "granpipe/frame.hpp"
+
+namespace granpipe {
+
+struct StereologySettings {
+  double bulk_top = 4.0;                   // R
+  double perturbed_top = 1.0;              // R
+  double perturbed_factor = 16.0 / 11.0;   // the bottom layer's correction
+  double fraction = 0.9;                   // of the centres, below the top of phi_c's zone
+};
+
+struct GlobalFractions {
+  double radius = 0.0;    // the mean radius R, the unit of the settings
+  double phi_b = 0.0;     // NaN when the frame has no particles
+  double phi_c = 0.0;     // NaN when the zone is not above the perturbed layer
+  double height_c = 0.0;  // H, the top of phi_c's zone above the bottom (length)
+};
+
+// Throws InputError for a container that is not a box (the cuts need a rectangular
+// cross-section).
+GlobalFractions global_fractions(const Frame& frame, const StereologySettings& settings);
+
+}  // namespace granpipe

@@ -1,0 +1,58 @@
+#include "granpipe/stereology.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "granpipe/cut_profile.hpp"
+#include "granpipe/errors.hpp"
+
+namespace granpipe {
+namespace {
+
+// The mean cut fraction between heights a and b above the bottom (one exact bin).
+double fraction_between(const Frame& frame, const Region& cross, double a, double b) {
+  const int v = frame.dim - 1;
+  const double base = frame.container.lo[v];
+  return bin_fractions(frame, cross, v, base + a, b - a, 1)[0];
+}
+
+// The height above the bottom below which `fraction` of the centres lie (the smallest
+// centre height with at least that share of centres at or below it).
+double quantile_height(const Frame& frame, double fraction) {
+  const int v = frame.dim - 1;
+  std::vector<double> z(frame.position().col(v).begin(), frame.position().col(v).end());
+  const auto n = static_cast<double>(z.size());
+  const auto k = static_cast<std::size_t>(std::max(0.0, std::ceil(fraction * n) - 1.0));
+  std::nth_element(z.begin(), z.begin() + static_cast<long>(k), z.end());
+  return z[k] - frame.container.lo[v];
+}
+
+}  // namespace
+
+GlobalFractions global_fractions(const Frame& frame, const StereologySettings& s) {
+  if (frame.container.shape != ContainerShape::Box) {
+    throw InputError("stereology: expected a box container (cuts need a rectangular "
+                     "cross-section), got a cylinder");
+  }
+  GlobalFractions g;
+  g.phi_b = g.phi_c = std::nan("");
+  if (frame.size() == 0) return g;
+  g.radius = frame.radius().mean();
+  Region cross;
+  cross.dim = frame.dim;
+  cross.lo = frame.container.lo;
+  cross.hi = frame.container.hi;
+  const double r = g.radius;
+  g.phi_b = fraction_between(frame, cross, 0.0, s.bulk_top * r);
+  g.height_c = quantile_height(frame, s.fraction);
+  const double layer = s.perturbed_top * r, h = g.height_c;
+  if (h > layer) {
+    g.phi_c = (s.perturbed_factor * fraction_between(frame, cross, 0.0, layer) * layer +
+               fraction_between(frame, cross, layer, h) * (h - layer)) /
+              h;
+  }
+  return g;
+}
+
+}  // namespace granpipe
