@@ -14,6 +14,7 @@ namespace {
 
 struct Points {
   const CurveModel& model;
+  bool weighted = false;
   std::vector<double> x, y, sigma;
 };
 
@@ -62,7 +63,7 @@ struct MatrixFree {
 // precision: the covariance is rounding noise, a parameter is not determined.
 const double kMinRcond = std::sqrt(std::numeric_limits<double>::epsilon());
 
-CurveFitStatus read_solution(gsl_multifit_nlinear_workspace* w, CurveFit& fit) {
+CurveFitStatus read_solution(gsl_multifit_nlinear_workspace* w, bool weighted, CurveFit& fit) {
   double rcond = 0.0;
   if (gsl_multifit_nlinear_rcond(&rcond, w) != GSL_SUCCESS || rcond < kMinRcond)
     return CurveFitStatus::NotDetermined;
@@ -72,11 +73,14 @@ CurveFitStatus read_solution(gsl_multifit_nlinear_workspace* w, CurveFit& fit) {
     return CurveFitStatus::NotConverged;
   const double norm = gsl_blas_dnrm2(gsl_multifit_nlinear_residual(w));
   fit.chi2 = norm * norm;
-  const double scale = std::max(1.0, fit.chi2 / fit.dof);
+  // Unweighted points: the scatter about the fit is their error (chi^2/dof estimates the
+  // variance). Weighted: the sigmas are trusted, unless the scatter shows them too small.
+  const double scale = weighted ? std::max(1.0, fit.chi2 / fit.dof) : fit.chi2 / fit.dof;
   fit.value = parameters(gsl_multifit_nlinear_position(w));
   fit.error.resize(static_cast<Eigen::Index>(p));
   for (std::size_t m = 0; m < p; ++m) {
-    fit.error[static_cast<Eigen::Index>(m)] = std::sqrt(scale * gsl_matrix_get(covariance.get(), m, m));
+    fit.error[static_cast<Eigen::Index>(m)] =
+        std::sqrt(scale * gsl_matrix_get(covariance.get(), m, m));
   }
   const bool finite = std::isfinite(fit.chi2) && fit.value.allFinite() && fit.error.allFinite();
   return finite ? CurveFitStatus::Fitted : CurveFitStatus::NotConverged;
@@ -102,7 +106,7 @@ CurveFit fit_curve(const CurveModel& model, const std::vector<double>& x,
                    const std::vector<double>& y, const std::vector<double>& sigma,
                    const Eigen::VectorXd& start) {
   gsl_reports_by_return_codes();
-  Points pts{model, {}, {}, {}};
+  Points pts{model, !sigma.empty(), {}, {}, {}};
   for (std::size_t k = 0; k < x.size() && k < y.size(); ++k) {
     const double s = sigma.empty() ? 1.0 : sigma[k];
     if (std::isfinite(x[k]) && std::isfinite(y[k]) && std::isfinite(s) && s > 0.0) {
@@ -132,7 +136,8 @@ CurveFit fit_curve(const CurveModel& model, const std::vector<double>& x,
                          gsl_multifit_nlinear_driver(500, 1e-10, 1e-10, 0.0, nullptr, nullptr,
                                                      &info, w.get()) == GSL_SUCCESS;
   CurveFit solved = fit;
-  solved.status = converged ? read_solution(w.get(), solved) : CurveFitStatus::NotConverged;
+  solved.status =
+      converged ? read_solution(w.get(), pts.weighted, solved) : CurveFitStatus::NotConverged;
   if (solved.fitted()) return solved;
   fit.status = solved.status;
   return fit;

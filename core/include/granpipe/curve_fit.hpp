@@ -1,9 +1,9 @@
 #pragma once
 // Weighted non-linear least squares of a model y(x; p) to points (x, y, sigma), by GSL's
 // trust-region minimiser: the fits of the tapping papers' equations (a density profile,
-// a compaction law, an ageing function). The standard errors come from the covariance,
-// scaled by chi^2/dof when that exceeds 1 (the sigmas then understate the scatter), so
-// that unweighted data (sigma = 1) get the usual errors.
+// a compaction law, an ageing function). The standard errors come from the covariance:
+// of unweighted points scaled by chi^2/dof (the scatter is the points' error); of weighted
+// points scaled by chi^2/dof only when that exceeds 1 (the sigmas understate the scatter).
 #include <Eigen/Core>
 #include <cstdint>
 #include <functional>
