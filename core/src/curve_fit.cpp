@@ -77,11 +77,13 @@ CurveFitStatus read_solution(gsl_multifit_nlinear_workspace* w, bool weighted, C
   // variance). Weighted: the sigmas are trusted, unless the scatter shows them too small.
   const double scale = weighted ? std::max(1.0, fit.chi2 / fit.dof) : fit.chi2 / fit.dof;
   fit.value = parameters(gsl_multifit_nlinear_position(w));
-  fit.error.resize(static_cast<Eigen::Index>(p));
-  for (std::size_t m = 0; m < p; ++m) {
-    fit.error[static_cast<Eigen::Index>(m)] =
-        std::sqrt(scale * gsl_matrix_get(covariance.get(), m, m));
-  }
+  const auto n = static_cast<Eigen::Index>(p);
+  fit.covariance.resize(n, n);
+  for (Eigen::Index m = 0; m < n; ++m)
+    for (Eigen::Index l = 0; l < n; ++l)
+      fit.covariance(m, l) = scale * gsl_matrix_get(covariance.get(), static_cast<std::size_t>(m),
+                                                    static_cast<std::size_t>(l));
+  fit.error = fit.covariance.diagonal().cwiseSqrt();
   const bool finite = std::isfinite(fit.chi2) && fit.value.allFinite() && fit.error.allFinite();
   return finite ? CurveFitStatus::Fitted : CurveFitStatus::NotConverged;
 }

@@ -29,6 +29,7 @@ std::string describe(CurveFitStatus s);
 struct CurveFit {
   CurveFitStatus status = CurveFitStatus::TooFewPoints;
   Eigen::VectorXd value, error;  // NaN when not fitted: undefined, not zero
+  Eigen::MatrixXd covariance;    // scaled as the errors are; empty when not fitted
   double chi2 = 0.0;
   int dof = 0;
   bool fitted() const { return status == CurveFitStatus::Fitted; }

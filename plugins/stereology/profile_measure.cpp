@@ -1,0 +1,65 @@
+#include "profile_measure.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "granpipe/cut_profile.hpp"
+#include "granpipe/errors.hpp"
+
+namespace granpipe::stereology {
+namespace {
+
+Region whole_box(const Frame& f) {
+  Region r;
+  r.dim = f.dim;
+  r.lo = f.container.lo;
+  r.hi = f.container.hi;
+  return r;
+}
+
+double highest_top(const Frame& f) { return (f.position().col(f.dim - 1) + f.radius()).maxCoeff(); }
+
+std::vector<double> bin_heights(std::size_t count, double step) {
+  std::vector<double> z(count);
+  for (std::size_t k = 0; k < count; ++k) z[k] = (static_cast<double>(k) + 0.5) * step;
+  return z;
+}
+
+// Lateral and central fractions of the heights 0..H, across x.
+void measure_zones(const Frame& f, const Region& zone, double band, ProfileMeasurement& m) {
+  const double lo = zone.lo[0], hi = zone.hi[0];
+  const double near_low = bin_fractions(f, zone, 0, lo, band, 1)[0];
+  const double near_high = bin_fractions(f, zone, 0, hi - band, band, 1)[0];
+  m.lateral = 0.5 * (near_low + near_high);
+  m.central = hi - lo > 2.0 * band
+                  ? bin_fractions(f, zone, 0, lo + band, hi - lo - 2.0 * band, 1)[0]
+                  : std::nan("");
+}
+
+}  // namespace
+
+ProfileMeasurement measure_profiles(const Frame& frame, const ProfileSettings& s) {
+  if (frame.size() == 0) throw InputError("stereology: the frame has no particles");
+  ProfileMeasurement m;
+  m.global = global_fractions(frame, s.global);
+  const int v = frame.dim - 1;
+  const double r = m.global.radius, base = frame.container.lo[v];
+  const Region box = whole_box(frame);
+
+  const double step = s.step * r;
+  const int count = std::max(1, static_cast<int>(std::ceil((highest_top(frame) - base) / step)));
+  m.vertical = bin_fractions(frame, box, v, base, step, count);
+
+  Region zone = box;
+  zone.hi[v] = base + m.global.height_c;
+  const double width = box.hi[0] - box.lo[0];
+  const int across = std::max(1, static_cast<int>(std::lround(width / step)));
+  m.transversal_step = width / across / r;
+  m.transversal = bin_fractions(frame, zone, 0, box.lo[0], width / across, across);
+  measure_zones(frame, zone, std::min(s.lateral_band * r, 0.5 * width), m);
+
+  m.fit = fit_fermi_profile(bin_heights(m.vertical.size(), s.step), m.vertical, s.fit_from);
+  return m;
+}
+
+}  // namespace granpipe::stereology

@@ -1,0 +1,192 @@
+#include "stereology_analyzer.hpp"
+
+#include <cmath>
+#include <string>
+
+namespace granpipe::stereology {
+
+Schema schema() {
+  Schema s;
+  s.real("step", 0.1, "width of the bins of the vertical and transversal profiles")
+      .min(0.0, true)
+      .unit("mean radii");
+  s.real("bulk_top", 4.0, "phi_b is the packing fraction between the bottom and this height")
+      .min(0.0, true)
+      .unit("mean radii");
+  s.real("perturbed_top", 1.0,
+         "top of the bottom layer perturbed by the wall, whose fraction phi_c corrects")
+      .min(0.0)
+      .unit("mean radii");
+  s.real("perturbed_factor", 16.0 / 11.0,
+         "phi_c multiplies the bottom layer's fraction by this (the perturbed-zone model's "
+         "16/11 for spheres on a plane; 1: no correction)")
+      .min(0.0, true);
+  s.real("fraction", 0.9,
+         "phi_c's zone reaches the height below which this fraction of the centres lie")
+      .min(0.0, true)
+      .max(1.0);
+  s.real("lateral_band", 7.0,
+         "the lateral fraction is that within this distance of either side across x, the "
+         "central fraction that of the rest")
+      .min(0.0, true)
+      .unit("mean radii");
+  s.real("fit_from", 5.0, "Eq. (7) is fitted to the vertical profile from this height up")
+      .min(0.0)
+      .unit("mean radii");
+  return s;
+}
+
+void MeanProfile::add(const std::vector<double>& profile) {
+  if (profile.size() > bins_.size()) {
+    const std::size_t old = bins_.size();
+    bins_.resize(profile.size());
+    for (std::size_t k = old; k < bins_.size(); ++k) bins_[k].add(0.0, frames_);
+  }
+  for (std::size_t k = 0; k < bins_.size(); ++k) {
+    bins_[k].add(k < profile.size() ? profile[k] : 0.0);
+  }
+  ++frames_;
+}
+
+namespace {
+
+std::vector<std::string> per_frame_columns() {
+  std::vector<std::string> c{"frame",         "step",         "tap",         "phi_b",
+                             "phi_c",         "height_c",     "phi_lateral", "phi_central",
+                             "delta_lateral", "delta_central"};
+  for (const char* name : kFermiNames) {
+    c.push_back(std::string("fit_") + name);
+    c.push_back(std::string("fit_") + name + "_err");
+  }
+  return c;
+}
+
+Table profile_table(const MeanProfile& mean, const std::vector<double>& first,
+                    const std::vector<double>& last, double step, const std::string& doc) {
+  Table t({"position", "phi", "phi_err", "phi_first", "phi_last"}, doc);
+  t.units = {"mean radii", "", "", "", ""};
+  const auto at = [](const std::vector<double>& p, std::size_t k) {
+    return k < p.size() ? p[k] : 0.0;
+  };
+  for (std::size_t k = 0; k < mean.bins().size(); ++k) {
+    t.add_row({(static_cast<double>(k) + 0.5) * step, mean.bins()[k].mean(),
+               mean.bins()[k].standard_error(), at(first, k), at(last, k)});
+  }
+  return t;
+}
+
+}  // namespace
+
+StereologyAnalyzer::StereologyAnalyzer(const PluginContext& ctx)
+    : log_(ctx.log),
+      per_frame_(ctx.stream_table(
+          "per_frame",
+          Table(per_frame_columns(),
+                "per-frame phi_b, phi_c (its zone's top height_c in mean radii), lateral and "
+                "central fractions and their increases over the first frame, Eq. (7) fit"))) {
+  const Params& p = ctx.params;
+  settings_.step = p.real("step");
+  settings_.global.bulk_top = p.real("bulk_top");
+  settings_.global.perturbed_top = p.real("perturbed_top");
+  settings_.global.perturbed_factor = p.real("perturbed_factor");
+  settings_.global.fraction = p.real("fraction");
+  settings_.lateral_band = p.real("lateral_band");
+  settings_.fit_from = p.real("fit_from");
+}
+
+void StereologyAnalyzer::consume(const Frame& frame, FrameCache& /*cache*/) {
+  const ProfileMeasurement m = measure_profiles(frame, settings_);
+  if (!first_) first_ = m;
+  if (!m.fit.fitted() && frames_ == 0) {
+    log_.warn("stereology: Eq. (7) not fitted to the first frame's profile (" +
+              describe(m.fit.status) + "); its columns are NaN where that happens");
+  }
+  transversal_step_ = m.transversal_step;
+  phi_b_.add(m.global.phi_b);
+  if (std::isfinite(m.global.phi_c)) phi_c_.add(m.global.phi_c);
+  lateral_.add(m.lateral);
+  if (std::isfinite(m.central)) central_.add(m.central);
+  vertical_.add(m.vertical);
+  transversal_.add(m.transversal);
+  last_vertical_ = m.vertical;
+  last_transversal_ = m.transversal;
+
+  const auto tap = frame.integer_observable("tap");
+  std::vector<double> row{static_cast<double>(frames_),
+                          static_cast<double>(frame.step),
+                          tap ? static_cast<double>(*tap) : std::nan(""),
+                          m.global.phi_b,
+                          m.global.phi_c,
+                          m.global.height_c / m.global.radius,
+                          m.lateral,
+                          m.central,
+                          m.lateral - first_->lateral,
+                          m.central - first_->central};
+  for (int q = 0; q < kFermiParameters; ++q) {
+    row.push_back(m.fit.value[q]);
+    row.push_back(m.fit.error[q]);
+  }
+  per_frame_.add_row(row);
+  ++frames_;
+}
+
+void StereologyAnalyzer::add_profiles(Results& results) const {
+  results.add_table("vertical_profile",
+                    profile_table(vertical_, first_->vertical, last_vertical_, settings_.step,
+                                  "packing fraction of horizontal slices against height above "
+                                  "the bottom: mean over frames, first and last frame"));
+  results.add_table(
+      "transversal_profile",
+      profile_table(transversal_, first_->transversal, last_transversal_, transversal_step_,
+                    "packing fraction of vertical slices across x (from the low "
+                    "side), heights 0..height_c: mean, first and last frame"));
+  results.add_plot("vertical_profile", {.table = "vertical_profile",
+                                        .x = "position",
+                                        .y = {"phi", "phi_first", "phi_last"},
+                                        .xlabel = "height / R",
+                                        .ylabel = "packing fraction",
+                                        .title = "vertical profile"});
+  results.add_plot("transversal_profile", {.table = "transversal_profile",
+                                           .x = "position",
+                                           .y = {"phi_first", "phi_last"},
+                                           .xlabel = "x / R",
+                                           .ylabel = "packing fraction",
+                                           .title = "transversal profile"});
+}
+
+void StereologyAnalyzer::add_mean_fit(Results& results) const {
+  std::vector<double> z, phi;
+  for (std::size_t k = 0; k < vertical_.bins().size(); ++k) {
+    z.push_back((static_cast<double>(k) + 0.5) * settings_.step);
+    phi.push_back(vertical_.bins()[k].mean());
+  }
+  const CurveFit fit = fit_fermi_profile(z, phi, settings_.fit_from);
+  if (!fit.fitted()) {
+    log_.warn("stereology: Eq. (7) not fitted to the mean profile (" + describe(fit.status) + ")");
+  }
+  Fit out;
+  out.model = kFermiFormula;
+  out.names.assign(std::begin(kFermiNames), std::end(kFermiNames));
+  out.values.assign(fit.value.begin(), fit.value.end());
+  out.errors.assign(fit.error.begin(), fit.error.end());
+  out.covariance = fit.covariance;
+  out.chi2 = fit.fitted() ? fit.chi2 : std::nan("");
+  out.dof = fit.dof;
+  results.add_fit("eq7_mean_profile", std::move(out));
+}
+
+void StereologyAnalyzer::finish(Results& results) {
+  results.add_scalar("frames", static_cast<double>(frames_));
+  results.add_table("per_frame", per_frame_.table());
+  if (frames_ == 0) return;
+  results.add_mean("phi_b", phi_b_, "", "packing fraction between the bottom and bulk_top");
+  results.add_mean("phi_c", phi_c_, "",
+                   "packing fraction of the zone below height_c, its bottom layer corrected");
+  results.add_mean("phi_lateral", lateral_, "",
+                   "packing fraction within lateral_band of x's sides");
+  results.add_mean("phi_central", central_, "", "packing fraction of the rest across x");
+  add_profiles(results);
+  add_mean_fit(results);
+}
+
+}  // namespace granpipe::stereology

@@ -1,0 +1,127 @@
+// The stereology analyzer: Eq. (7) recovered from a noisy synthetic profile, and a layered
+// crystal measured exactly (its fraction in every zone, no change over identical frames).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "fermi_profile.hpp"
+#include "granpipe/errors.hpp"
+#include "plugin_harness.hpp"
+#include "profile_measure.hpp"
+#include "stereology_analyzer.hpp"
+
+using namespace granpipe;
+using namespace granpipe::stereology;
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// A simple cubic crystal of unit spheres (cells of side 2), `layers` deep on the bottom,
+// walls on every side, with a tap observable.
+Frame cubic_layers(int cells, int layers, std::int64_t tap = 0) {
+  Frame f;
+  f.dim = 3;
+  f.container.hi = Eigen::Vector3d(2.0 * cells, 2.0 * cells, 2.0 * layers + 5.0);
+  f.resize(static_cast<Eigen::Index>(cells * cells * layers), 3);
+  Eigen::Index k = 0;
+  for (int z = 0; z < layers; ++z)
+    for (int y = 0; y < cells; ++y)
+      for (int x = 0; x < cells; ++x, ++k) {
+        f.position().row(k) << 2.0 * x + 1.0, 2.0 * y + 1.0, 2.0 * z + 1.0;
+        f.radius()[k] = 1.0;
+      }
+  f.set_observable(Property{"tap", Scope::Frame, ValueType::Integer, 1, "", "tap"}, tap);
+  return f;
+}
+
+}  // namespace
+
+TEST(FermiProfile, FitRecoversEq7FromANoisyProfile) {
+  Eigen::VectorXd truth(kFermiParameters);
+  truth << 0.60, 0.002, 2.5, 24.0;
+  std::mt19937_64 rng(5);
+  std::normal_distribution<double> noise(0.0, 0.01);
+  std::vector<double> z, phi;
+  for (int k = 0; k < 300; ++k) {
+    z.push_back(0.05 + 0.1 * k);
+    phi.push_back(fermi_model().value(truth, z.back()) + noise(rng));
+  }
+  const CurveFit fit = fit_fermi_profile(z, phi, 5.0);
+  ASSERT_TRUE(fit.fitted()) << describe(fit.status);
+  for (int q = 0; q < kFermiParameters; ++q) {
+    EXPECT_NEAR(fit.value[q], truth[q], 3.0 * fit.error[q]) << kFermiNames[q];
+    EXPECT_LT(fit.error[q], 0.1 * std::abs(truth[q]) + 1e-3) << kFermiNames[q];
+  }
+}
+
+TEST(FermiProfile, GradientIsTheModelsDerivative) {
+  Eigen::VectorXd p(kFermiParameters);
+  p << 0.6, 0.01, 1.7, 10.0;
+  for (double z : {2.0, 9.5, 10.0, 12.0, 40.0}) {
+    const Eigen::VectorXd g = fermi_model().gradient(p, z);
+    for (int q = 0; q < kFermiParameters; ++q) {
+      Eigen::VectorXd hi = p, lo = p;
+      hi[q] += 1e-6;
+      lo[q] -= 1e-6;
+      const double numeric = (fermi_model().value(hi, z) - fermi_model().value(lo, z)) / 2e-6;
+      EXPECT_NEAR(g[q], numeric, 1e-7) << kFermiNames[q] << " at z = " << z;
+    }
+  }
+}
+
+TEST(ProfileMeasure, OfALayeredCrystalIsItsFractionEverywhere) {
+  const Frame f = cubic_layers(8, 10);
+  ProfileSettings s;
+  s.step = 0.5;
+  s.lateral_band = 4.0;
+  const ProfileMeasurement m = measure_profiles(f, s);
+  EXPECT_NEAR(m.global.phi_b, kPi / 6.0, 1e-13);
+  // Bins of half a radius: pairs of bins sum to a half layer of the crystal's fraction.
+  ASSERT_EQ(m.vertical.size(), 40u);
+  for (std::size_t k = 0; k + 1 < m.vertical.size(); k += 2) {
+    EXPECT_NEAR(0.5 * (m.vertical[k] + m.vertical[k + 1]), kPi / 6.0, 1e-13) << k;
+  }
+  // Heights 0..17 across x: whole cells of side 2 lie in bands of 4, and so on.
+  EXPECT_NEAR(m.lateral, kPi / 6.0, 1e-13);
+  EXPECT_NEAR(m.central, kPi / 6.0, 1e-13);
+  EXPECT_DOUBLE_EQ(m.transversal_step, 0.5);
+  ASSERT_EQ(m.transversal.size(), 32u);
+  for (std::size_t k = 0; k < m.transversal.size(); k += 4) {
+    double cell = 0.0;
+    for (std::size_t j = k; j < k + 4; ++j) cell += m.transversal[j] / 4.0;
+    EXPECT_NEAR(cell, kPi / 6.0, 1e-13) << k;
+  }
+}
+
+TEST(StereologyAnalyzer, IdenticalFramesChangeNothingAndTheTapIsRecorded) {
+  const auto ctx = granpipe::test::make_context(schema(), {{"step", 0.5}, {"lateral_band", 4.0}});
+  StereologyAnalyzer a(*ctx);
+  FrameCache cache;
+  for (std::int64_t tap : {0, 10, 20}) a.consume(cubic_layers(8, 10, tap), cache);
+  Results r;
+  a.finish(r);
+  EXPECT_EQ(r.scalar("frames").value, 3.0);
+  EXPECT_NEAR(r.scalar("phi_b").value, kPi / 6.0, 1e-13);
+  EXPECT_NEAR(r.scalar("phi_c").value, kPi / 6.0 * (16.0 / 11.0 + 16.0) / 17.0, 1e-13);
+  const Table& t = r.tables().at("per_frame");
+  ASSERT_EQ(t.rows(), 3u);
+  EXPECT_EQ(t.column("tap")[2], 20.0);
+  EXPECT_EQ(t.column("delta_lateral")[2], 0.0);
+  EXPECT_EQ(t.column("delta_central")[2], 0.0);
+  EXPECT_DOUBLE_EQ(t.column("height_c")[2], 17.0);
+  const Table& v = r.tables().at("vertical_profile");
+  EXPECT_EQ(v.rows(), 40u);
+  EXPECT_EQ(v.column("phi_first")[3], v.column("phi_last")[3]);
+}
+
+TEST(StereologyAnalyzer, ACylinderIsRefused) {
+  const auto ctx = granpipe::test::make_context(schema());
+  StereologyAnalyzer a(*ctx);
+  FrameCache cache;
+  Frame f = cubic_layers(2, 2);
+  f.container.shape = ContainerShape::Cylinder;
+  EXPECT_THROW(a.consume(f, cache), InputError);
+}
