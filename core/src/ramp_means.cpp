@@ -12,7 +12,7 @@ RampBranch ramp_branch(std::int64_t cycle) {
 }
 
 void RampMeans::add(const Frame& frame, const std::vector<double>& values) {
-  const std::optional<std::int64_t> cycle = frame.integer_observable("cycle");
+  const std::optional<std::int64_t> cycle = frame.integer_observable(cycle_);
   const std::optional<double> control = frame.real_observable(control_);
   if (!cycle || *cycle < 0 || !control) return;
   if (values.size() != names_.size())

@@ -218,6 +218,7 @@ void TapSource::record(const TapStats& stats, const EpsilonAt& e) {
   per_tap_.add_row({static_cast<double>(tap_), e.epsilon, static_cast<double>(e.leg),
                     mean_height(centres_), static_cast<double>(stats.trials), acceptance});
   unconverged_ += !stats.converged;
+  trials_ += static_cast<double>(stats.trials);
 }
 
 bool TapSource::next(Frame& frame) {
@@ -247,6 +248,9 @@ void TapSource::finish(Results& results) {
   results.add_scalar("unconverged_taps", static_cast<double>(unconverged_), std::nan(""), "",
                      "taps whose redeposition reached max_checks before <Z> settled to eta");
   results.add_scalar("seconds", seconds_, std::nan(""), "s", "wall time of deposition and taps");
+  results.add_scalar("mc_trials", trials_, std::nan(""), "", "Monte Carlo trial moves of all taps");
+  results.add_scalar("final_mean_height", mean_height(centres_), std::nan(""), "length",
+                     "<Z>, the mean centre height, after the last tap");
 }
 
 }  // namespace granpipe::spheres3d_tap

@@ -43,7 +43,7 @@ class TapSource : public Source {
   std::int64_t n_ = 0, tap_ = -1, unconverged_ = 0;
   std::vector<Eigen::Vector3d> centres_;
   StreamedTable per_tap_;
-  double seconds_ = 0.0;
+  double seconds_ = 0.0, trials_ = 0.0;
 };
 
 }  // namespace granpipe::spheres3d_tap

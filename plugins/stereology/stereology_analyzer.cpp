@@ -106,8 +106,10 @@ void StereologyAnalyzer::consume(const Frame& frame, FrameCache& /*cache*/) {
   if (std::isfinite(m.global.phi_c)) phi_c_.add(m.global.phi_c);
   lateral_.add(m.lateral);
   if (std::isfinite(m.central)) central_.add(m.central);
+  by_leg_.add(frame, {m.global.phi_b, m.global.phi_c});
   vertical_.add(m.vertical);
   transversal_.add(m.transversal);
+  last_ = m.global;
   last_vertical_ = m.vertical;
   last_transversal_ = m.transversal;
 
@@ -182,11 +184,18 @@ void StereologyAnalyzer::finish(Results& results) {
   results.add_mean("phi_b", phi_b_, "", "packing fraction between the bottom and bulk_top");
   results.add_mean("phi_c", phi_c_, "",
                    "packing fraction of the zone below height_c, its bottom layer corrected");
+  results.add_scalar("phi_b_last", last_.phi_b, std::nan(""), "", "phi_b of the last frame");
+  results.add_scalar("phi_c_last", last_.phi_c, std::nan(""), "", "phi_c of the last frame");
   results.add_mean("phi_lateral", lateral_, "",
                    "packing fraction within lateral_band of x's sides");
   results.add_mean("phi_central", central_, "", "packing fraction of the rest across x");
   add_profiles(results);
   add_mean_fit(results);
+  if (!by_leg_.empty()) {
+    results.add_table("by_leg", by_leg_.table("phi_b and phi_c per leg of a ramp (0 first "
+                                              "increase, 1 decreasing, 2 increasing) and "
+                                              "epsilon, over the frames saved there"));
+  }
 }
 
 }  // namespace granpipe::stereology

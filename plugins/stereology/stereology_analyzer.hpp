@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "granpipe/plugin.hpp"
+#include "granpipe/ramp_means.hpp"
 #include "profile_measure.hpp"
 
 namespace granpipe::stereology {
@@ -40,9 +41,11 @@ class StereologyAnalyzer : public Analyzer {
   long frames_ = 0;
   double transversal_step_ = 0.0;
   std::optional<ProfileMeasurement> first_;
+  GlobalFractions last_;
   std::vector<double> last_vertical_, last_transversal_;
   RunningMean phi_b_, phi_c_, lateral_, central_;
   MeanProfile vertical_, transversal_;
+  RampMeans by_leg_{{"phi_b", "phi_c"}, "epsilon", "leg"};
   StreamedTable per_frame_;
 };
 

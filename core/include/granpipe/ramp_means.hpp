@@ -23,8 +23,10 @@ RampBranch ramp_branch(std::int64_t cycle);
 
 class RampMeans {
  public:
-  explicit RampMeans(std::vector<std::string> quantities, std::string control = "amplitude")
-      : names_(std::move(quantities)), control_(std::move(control)) {}
+  // The 3D tapping source names its observables `epsilon` and `leg`.
+  explicit RampMeans(std::vector<std::string> quantities, std::string control = "amplitude",
+                     std::string cycle = "cycle")
+      : names_(std::move(quantities)), control_(std::move(control)), cycle_(std::move(cycle)) {}
   // Adds one frame's values (one per quantity); frames without a cycle and a control
   // value among their observables are ignored.
   void add(const Frame& frame, const std::vector<double>& values);
@@ -36,7 +38,7 @@ class RampMeans {
 
  private:
   std::vector<std::string> names_;
-  std::string control_;
+  std::string control_, cycle_;
   std::map<std::pair<RampBranch, double>, std::vector<RunningMean>> means_;
 };
 
