@@ -76,7 +76,8 @@ CurveFitStatus read_solution(gsl_multifit_nlinear_workspace* w, CurveFit& fit) {
   fit.value = parameters(gsl_multifit_nlinear_position(w));
   fit.error.resize(static_cast<Eigen::Index>(p));
   for (std::size_t m = 0; m < p; ++m) {
-    fit.error[static_cast<Eigen::Index>(m)] = std::sqrt(scale * gsl_matrix_get(covariance.get(), m, m));
+    fit.error[static_cast<Eigen::Index>(m)] =
+        std::sqrt(scale * gsl_matrix_get(covariance.get(), m, m));
   }
   const bool finite = std::isfinite(fit.chi2) && fit.value.allFinite() && fit.error.allFinite();
   return finite ? CurveFitStatus::Fitted : CurveFitStatus::NotConverged;

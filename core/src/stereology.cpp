@@ -32,8 +32,9 @@ double quantile_height(const Frame& frame, double fraction) {
 
 GlobalFractions global_fractions(const Frame& frame, const StereologySettings& s) {
   if (frame.container.shape != ContainerShape::Box) {
-    throw InputError("stereology: expected a box container (cuts need a rectangular "
-                     "cross-section), got a cylinder");
+    throw InputError(
+        "stereology: expected a box container (cuts need a rectangular "
+        "cross-section), got a cylinder");
   }
   GlobalFractions g;
   g.phi_b = g.phi_c = std::nan("");

@@ -5,8 +5,8 @@
 #include <numeric>
 #include <sstream>
 
-#include "granpipe/cut_profile.hpp"
 #include "granpipe/contacts_by_distance.hpp"
+#include "granpipe/cut_profile.hpp"
 #include "lowest_surface.hpp"
 
 namespace granpipe::packing {

@@ -11,22 +11,22 @@
 #include <random>
 #include <string>
 
-#include "granpipe/cut_profile.hpp"
 #include "granpipe/contacts_by_distance.hpp"
+#include "granpipe/cut_profile.hpp"
 #include "granpipe/errors.hpp"
 #include "granpipe/overlap.hpp"
+#include "granpipe/region.hpp"
 #include "packing_analyzer.hpp"
 #include "plugin_harness.hpp"
-#include "granpipe/region.hpp"
 
 namespace {
 
 using granpipe::Frame;
 using granpipe::FrameCache;
+using granpipe::Region;
 using granpipe::packing::measure_packing;
 using granpipe::packing::PackingMeasurement;
 using granpipe::packing::PackingSettings;
-using granpipe::Region;
 
 constexpr double kPi = std::numbers::pi;
 

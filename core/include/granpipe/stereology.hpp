@@ -12,10 +12,10 @@
 namespace granpipe {
 
 struct StereologySettings {
-  double bulk_top = 4.0;                   // R
-  double perturbed_top = 1.0;              // R
-  double perturbed_factor = 16.0 / 11.0;   // the bottom layer's correction
-  double fraction = 0.9;                   // of the centres, below the top of phi_c's zone
+  double bulk_top = 4.0;                  // R
+  double perturbed_top = 1.0;             // R
+  double perturbed_factor = 16.0 / 11.0;  // the bottom layer's correction
+  double fraction = 0.9;                  // of the centres, below the top of phi_c's zone
 };
 
 struct GlobalFractions {
