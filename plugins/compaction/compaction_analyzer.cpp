@@ -1,0 +1,100 @@
+#include "compaction_analyzer.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "granpipe/errors.hpp"
+
+namespace granpipe::compaction {
+
+Schema schema() {
+  Schema s;
+  s.real("bulk_top", 4.0, "phi_b is the fraction between the bottom and this height")
+      .min(0.0, true)
+      .unit("mean radii");
+  s.real("perturbed_top", 1.0,
+         "top of the bottom layer whose fraction <phi^c> multiplies by perturbed_factor")
+      .min(0.0)
+      .unit("mean radii");
+  s.real("perturbed_factor", 16.0 / 11.0,
+         "the perturbed-zone correction of the bottom layer (16/11 for spheres on a plane)")
+      .min(0.0, true);
+  s.real("fraction", 0.9, "<phi^c>'s zone ends where this fraction of the centres lie below")
+      .range(0.0, 1.0);
+  s.real("fit_from", 0.0, "first tap of the fits of Eqs. (3) and (4)").min(0.0).unit("taps");
+  s.real("fit_to", -1.0, "last tap of the fits; negative: the last frame's").unit("taps");
+  s.real("steady_from", -1.0,
+         "the steady state (mean, sigma, power spectrum) starts at this tap; negative: half "
+         "the last frame's")
+      .unit("taps");
+  s.integers("waiting_times", std::vector<std::int64_t>{10, 100, 1000},
+             "t_w of the ageing squared differences (<Z>(t_w) - <Z>(t_w + t))^2; a t_w that is "
+             "no frame's tap is left out with a warning");
+  return s;
+}
+
+namespace {
+
+std::string frame_name(long index, const Frame& frame) {
+  return "compaction: frame " + std::to_string(index) + " (step " + std::to_string(frame.step) +
+         ")";
+}
+
+// The fits and the spectrum need the taps in order.
+void check_tap_follows(const std::string& where, double tap, const Series& series) {
+  if (series.empty() || tap > series.tap.back()) return;
+  std::ostringstream m;
+  m << where << ": expected a tap after the previous frame's " << series.tap.back() << ", got "
+    << tap;
+  throw InputError(m.str());
+}
+
+}  // namespace
+
+CompactionAnalyzer::CompactionAnalyzer(const PluginContext& ctx)
+    : log_(ctx.log),
+      per_frame_(ctx.stream_table(
+          "per_frame", Table({"frame", "tap", "z_mean", "phi_b", "phi_c", "height_c"},
+                             "per-frame <Z> (mean centre height above the bottom), phi_b, "
+                             "<phi^c> and the top of <phi^c>'s zone, in mean radii R"))) {
+  const Params& p = ctx.params;
+  stereology_.bulk_top = p.real("bulk_top");
+  stereology_.perturbed_top = p.real("perturbed_top");
+  stereology_.perturbed_factor = p.real("perturbed_factor");
+  stereology_.fraction = p.real("fraction");
+  report_.fit_from = p.real("fit_from");
+  report_.fit_to = p.real("fit_to");
+  report_.steady_from = p.real("steady_from");
+  report_.waiting_times = p.integers("waiting_times");
+  if (report_.fit_to >= 0.0 && report_.fit_to <= report_.fit_from) {
+    std::ostringstream m;
+    m << ctx.param("fit_to") << ": expected a tap after fit_from (" << report_.fit_from
+      << ") or a negative value (the last frame's), got " << report_.fit_to;
+    throw InputError(m.str());
+  }
+}
+
+void CompactionAnalyzer::consume(const Frame& frame, FrameCache&) {
+  const std::string where = frame_name(frames_, frame);
+  const FramePoint p = measure_frame(frame, stereology_, where);
+  check_tap_follows(where, p.tap, series_);
+  series_.add(p);
+  per_frame_.add_row({static_cast<double>(frames_), p.tap, p.z_mean, p.phi_b, p.phi_c, p.height_c});
+  ++frames_;
+}
+
+void CompactionAnalyzer::finish(Results& results) {
+  results.add_table("per_frame", per_frame_.table());
+  results.add_plot("per_frame", {.table = "per_frame",
+                                 .x = "tap",
+                                 .y = {"phi_b", "phi_c"},
+                                 .xlabel = "tap",
+                                 .ylabel = "packing fraction",
+                                 .title = "compaction (the paper's Fig. 2)"});
+  results.add_scalar("frames", static_cast<double>(frames_), std::nan(""), "", "frames measured");
+  if (series_.empty()) return;  // nothing to fit
+  report_compaction(series_, report_, results, log_);
+}
+
+}  // namespace granpipe::compaction

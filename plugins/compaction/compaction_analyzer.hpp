@@ -1,0 +1,30 @@
+#pragma once
+// `compaction`: the global compaction dynamics of one tapping run (the 3D tapping paper,
+// Sec. III). Each frame gives a row of <Z>, phi_b and <phi^c> against its tap; the run's
+// end gives the fits of Eqs. (3) and (4), the steady state and its power spectrum, and the
+// ageing squared differences of Eq. (5). It keeps four numbers per frame (the fits need
+// the whole series), never a frame.
+#include "compaction_report.hpp"
+#include "granpipe/plugin.hpp"
+#include "granpipe/stereology.hpp"
+
+namespace granpipe::compaction {
+
+Schema schema();
+
+class CompactionAnalyzer : public Analyzer {
+ public:
+  explicit CompactionAnalyzer(const PluginContext& ctx);
+  void consume(const Frame& frame, FrameCache& cache) override;
+  void finish(Results& results) override;
+
+ private:
+  StereologySettings stereology_;
+  ReportSettings report_;
+  Log& log_;
+  long frames_ = 0;
+  Series series_;
+  StreamedTable per_frame_;
+};
+
+}  // namespace granpipe::compaction

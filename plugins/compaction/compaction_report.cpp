@@ -1,0 +1,183 @@
+#include "compaction_report.hpp"
+
+#include <array>
+#include <cmath>
+#include <string>
+#include <utility>
+
+#include "ageing.hpp"
+#include "compaction_laws.hpp"
+#include "law_fit.hpp"
+#include "power_spectrum.hpp"
+#include "steady_state.hpp"
+
+namespace granpipe::compaction {
+
+namespace {
+
+const char* const kStatusCodes =
+    " (status 0 fitted, 1 no more points than parameters, 2 no convergence, 3 a parameter "
+    "not determined)";
+
+// The three global values, the law each follows and its unit.
+struct Quantity {
+  const char* name;
+  std::vector<double> Series::*values;
+  const Law& (*law)();
+  const char* fit_name;
+  const char* unit;
+};
+const std::array<Quantity, 3> kQuantities{{
+    {"z_mean", &Series::z_mean, eq4_law, "eq4_z_mean", "R"},
+    {"phi_b", &Series::phi_b, eq3_law, "eq3_phi_b", ""},
+    {"phi_c", &Series::phi_c, eq3_law, "eq3_phi_c", ""},
+}};
+
+// The series' entries with fit_from <= tap <= fit_to.
+Series within(const Series& s, double from, double to) {
+  Series out;
+  for (std::size_t k = 0; k < s.tap.size(); ++k) {
+    if (s.tap[k] >= from && s.tap[k] <= to)
+      out.add({s.tap[k], s.z_mean[k], s.phi_b[k], s.phi_c[k], 0.0});
+  }
+  return out;
+}
+
+void add_law_fit(Results& results, const std::string& name, const Law& law, const LawFit& fit,
+                 const std::string& doc) {
+  results.add_scalar(name + "_status", static_cast<double>(fit.status), std::nan(""), "",
+                     doc + ": " + describe(fit.status) + kStatusCodes);
+  results.add_scalar(name + "_scatter", fit.scatter, std::nan(""), "",
+                     doc + ": rms residual of the points about the law (their sigma in the fit)");
+  Fit out;
+  out.model = law.formula;
+  out.names = law.names;
+  out.values = fit.value;  // NaN when not fitted: undefined, never 0
+  out.errors = fit.error;
+  out.chi2 = fit.chi2;
+  out.dof = fit.dof;
+  results.add_fit(name, std::move(out));
+}
+
+void report_fits(const Series& s, double from, double to, Results& results) {
+  results.add_scalar("fit_from", from, std::nan(""), "taps", "first tap of the fits' range");
+  results.add_scalar("fit_to", to, std::nan(""), "taps", "last tap of the fits' range");
+  const Series range = within(s, from, to);
+  for (const Quantity& q : kQuantities) {
+    const Law& law = q.law();
+    add_law_fit(results, q.fit_name, law, fit_law(law, range.tap, range.*q.values),
+                std::string("fit of ") + q.name + " against the tap, taps " +
+                    std::to_string(static_cast<long long>(from)) + " to " +
+                    std::to_string(static_cast<long long>(to)));
+  }
+}
+
+void report_steady_state(const Series& ss, Results& results) {
+  for (const Quantity& q : kQuantities) {
+    const SteadyState st = steady_state(ss.*q.values);
+    const std::string name = q.name;
+    results.add_scalar(
+        name + "_ss", st.mean, st.mean_error, q.unit,
+        "steady-state mean of " + name + " (error as if the frames were independent)");
+    results.add_scalar(name + "_sigma", st.sigma, std::nan(""), q.unit,
+                       "sigma = sqrt(<(X - X_SS)^2>) of " + name + " in the steady state");
+  }
+  results.add_scalar("steady_frames", static_cast<double>(ss.tap.size()), std::nan(""), "",
+                     "frames of the steady state");
+}
+
+// Fewer evenly spaced frames leave fewer than four frequencies for the slope.
+constexpr std::size_t kMinSpectrumFrames = 8;
+
+void report_spectrum(const Series& ss, Results& results, Log& log) {
+  const EvenFrames even = evenly_spaced(ss.tap);
+  results.add_scalar("spectrum_spacing", even.spacing, std::nan(""), "taps",
+                     "spacing of the steady-state frames the spectrum uses");
+  results.add_scalar("spectrum_frames", static_cast<double>(even.index.size()), std::nan(""), "",
+                     "evenly spaced steady-state frames the spectrum uses");
+  const bool enough = even.index.size() >= kMinSpectrumFrames;
+  if (!enough) {
+    log.warn("compaction: the power spectrum needs " + std::to_string(kMinSpectrumFrames) +
+             " evenly spaced frames from steady_from on, got " + std::to_string(even.index.size()) +
+             "; its slopes are left undefined");
+  }
+  Table t({"frequency", "z_mean", "phi_b", "phi_c"},
+          "one-sided power spectrum of X - X_SS over the evenly spaced steady-state frames");
+  t.units = {"1/taps", "R^2 taps", "taps", "taps"};
+  std::array<Spectrum, 3> spectra;
+  for (std::size_t q = 0; q < kQuantities.size(); ++q) {
+    std::vector<double> values;
+    for (std::size_t k : even.index) values.push_back((ss.*kQuantities[q].values)[k]);
+    if (enough) spectra[q] = power_spectrum(values, even.spacing);
+    const Slope slope = log_log_slope(spectra[q]);
+    results.add_scalar(std::string("spectrum_slope_") + kQuantities[q].name, slope.value,
+                       slope.error, "",
+                       std::string("slope of ln S against ln f of ") + kQuantities[q].name +
+                           " (f > 0; the paper finds about -1 to -1.5 for z_mean)");
+  }
+  for (std::size_t k = 0; k < spectra[0].frequency.size(); ++k)
+    t.add_row(
+        {spectra[0].frequency[k], spectra[0].power[k], spectra[1].power[k], spectra[2].power[k]});
+  results.add_table("spectrum", std::move(t));
+  results.add_plot("spectrum", {.table = "spectrum",
+                                .x = "frequency",
+                                .y = {"z_mean"},
+                                .xlabel = "frequency (1/taps)",
+                                .ylabel = "S of <Z> - <Z>_SS",
+                                .title = "power spectrum of the fluctuations of <Z>",
+                                .logx = true,
+                                .logy = true});
+}
+
+void report_ageing(const Series& s, const std::vector<std::int64_t>& waiting_times,
+                   Results& results, Log& log) {
+  const Ageing a = ageing(s.tap, s.z_mean, waiting_times);
+  for (const std::int64_t t_w : a.left_out)
+    log.warn("compaction: waiting_times: " + std::to_string(t_w) + " is no frame's tap; left out");
+  Table points({"t_w", "t", "squared_difference"},
+               "(<Z>(t_w) - <Z>(t_w + t))^2 of this realization: Eq. (5) before the mean over "
+               "realizations (scripts/pool_ageing.py)");
+  points.units = {"taps", "taps", "R^2"};
+  Table fits({"t_w", "points", "status", "A_inf", "A_inf_err", "B", "B_err", "tau", "tau_err"},
+             std::string("Eq. (6) fitted to this realization's squared differences, per t_w") +
+                 kStatusCodes);
+  fits.units = {"taps", "", "", "R^2", "R^2", "", "", "taps", "taps"};
+  for (std::size_t k = 0; k < a.points.size();) {
+    std::vector<double> t, y;
+    const double t_w = a.points[k].t_w;
+    for (; k < a.points.size() && a.points[k].t_w == t_w; ++k) {
+      points.add_row({t_w, a.points[k].t, a.points[k].squared_difference});
+      t.push_back(a.points[k].t);
+      y.push_back(a.points[k].squared_difference);
+    }
+    const LawFit f = fit_law(eq6_law(), t, y);
+    fits.add_row({t_w, static_cast<double>(t.size()), static_cast<double>(f.status), f.value[0],
+                  f.error[0], f.value[1], f.error[1], f.value[2], f.error[2]});
+  }
+  results.add_table("ageing", std::move(points));
+  results.add_table("ageing_fits", std::move(fits));
+}
+
+}  // namespace
+
+void Series::add(const FramePoint& p) {
+  tap.push_back(p.tap);
+  z_mean.push_back(p.z_mean);
+  phi_b.push_back(p.phi_b);
+  phi_c.push_back(p.phi_c);
+}
+
+void report_compaction(const Series& series, const ReportSettings& settings, Results& results,
+                       Log& log) {
+  const double last = series.tap.back();
+  report_fits(series, settings.fit_from, settings.fit_to < 0.0 ? last : settings.fit_to, results);
+  const double steady_from = settings.steady_from < 0.0 ? 0.5 * last : settings.steady_from;
+  results.add_scalar("steady_from", steady_from, std::nan(""), "taps",
+                     "first tap of the steady state");
+  const Series ss = within(series, steady_from, last);
+  report_steady_state(ss, results);
+  report_spectrum(ss, results, log);
+  report_ageing(series, settings.waiting_times, results, log);
+}
+
+}  // namespace granpipe::compaction

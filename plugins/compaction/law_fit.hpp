@@ -1,0 +1,35 @@
+#pragma once
+// A law of compaction_laws.hpp fitted to a series (t, y) of one run by the core fitter.
+// The points carry no errors of their own: the fit is unweighted, and the scatter s of the
+// points about the law (root mean square residual over the degrees of freedom) stands for
+// every point's sigma. The core scales the errors of a fit with chi^2/dof > 1 to s already;
+// below 1 (y much smaller than 1, as a packing fraction's scatter) it does not, and the
+// errors are scaled here, so that they are the usual least-squares ones whatever the size
+// of y. Successive frames of one run are correlated: the errors are those of independent
+// points.
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "compaction_laws.hpp"
+#include "granpipe/curve_fit.hpp"
+
+namespace granpipe::compaction {
+
+struct LawFit {
+  CurveFitStatus status = CurveFitStatus::TooFewPoints;
+  std::vector<double> value, error;  // in Law::names order, tau itself; NaN when not fitted
+  double scatter = 0.0;              // s, the points' spread about the law
+  double chi2 = 0.0;
+  int dof = 0;
+  bool fitted() const { return status == CurveFitStatus::Fitted; }
+};
+
+// Points with a non-finite t or y are left out.
+LawFit fit_law(const Law& law, const std::vector<double>& t, const std::vector<double>& y);
+
+// The start values fit_law begins from (tau itself), from the ends of the finite points.
+std::vector<double> law_start(const Law& law, const std::vector<double>& t,
+                              const std::vector<double>& y);
+
+}  // namespace granpipe::compaction

@@ -1,0 +1,120 @@
+#include "power_spectrum.hpp"
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_fft_real.h>
+
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <memory>
+
+#include "granpipe/errors.hpp"
+
+namespace granpipe::compaction {
+
+namespace {
+
+// Taps are whole numbers; compared as such, rounding cannot break a grid.
+std::int64_t whole(double tap) { return std::llround(tap); }
+
+std::int64_t commonest_gap(const std::vector<double>& taps) {
+  std::map<std::int64_t, long> count;
+  for (std::size_t k = 1; k < taps.size(); ++k) ++count[whole(taps[k]) - whole(taps[k - 1])];
+  std::int64_t gap = 0;
+  long most = 0;
+  for (const auto& [g, c] : count) {
+    if (c >= most) {  // ascending gaps: a tie goes to the larger
+      gap = g;
+      most = c;
+    }
+  }
+  return gap;
+}
+
+struct WavetableFree {
+  void operator()(gsl_fft_real_wavetable* w) const { gsl_fft_real_wavetable_free(w); }
+};
+struct WorkspaceFree {
+  void operator()(gsl_fft_real_workspace* w) const { gsl_fft_real_workspace_free(w); }
+};
+
+}  // namespace
+
+EvenFrames evenly_spaced(const std::vector<double>& taps) {
+  EvenFrames even;
+  if (taps.empty()) return even;
+  const std::int64_t gap = commonest_gap(taps);
+  std::size_t k = taps.size() - 1;
+  even.index.push_back(k);
+  if (gap <= 0) return even;
+  even.spacing = static_cast<double>(gap);
+  std::int64_t next = whole(taps[k]) - gap;
+  while (k-- > 0) {
+    const std::int64_t t = whole(taps[k]);
+    if (t < next) break;  // the grid tap `next` has no frame
+    if (t == next) {
+      even.index.insert(even.index.begin(), k);
+      next -= gap;
+    }
+  }
+  return even;
+}
+
+Spectrum power_spectrum(const std::vector<double>& values, double spacing) {
+  Spectrum s;
+  const std::size_t n = values.size();
+  if (n < 2) return s;
+  double mean = 0.0;
+  for (double v : values) mean += v / static_cast<double>(n);
+  std::vector<double> data;
+  for (double v : values) data.push_back(v - mean);
+  const std::unique_ptr<gsl_fft_real_wavetable, WavetableFree> table(
+      gsl_fft_real_wavetable_alloc(n));
+  const std::unique_ptr<gsl_fft_real_workspace, WorkspaceFree> work(
+      gsl_fft_real_workspace_alloc(n));
+  if (gsl_fft_real_transform(data.data(), 1, n, table.get(), work.get()) != GSL_SUCCESS)
+    throw InternalError("compaction: GSL's real FFT failed for " + std::to_string(n) + " values");
+  // Half-complex order: data[2k-1], data[2k] the real and imaginary parts of term k; for an
+  // even n, data[n-1] the real Nyquist term, counted once in the one-sided spectrum.
+  const double scale = spacing / static_cast<double>(n);
+  for (std::size_t k = 1; 2 * k <= n; ++k) {
+    const bool nyquist = 2 * k == n;
+    const double re = data[2 * k - 1], im = nyquist ? 0.0 : data[2 * k];
+    s.frequency.push_back(static_cast<double>(k) / (static_cast<double>(n) * spacing));
+    s.power.push_back((nyquist ? 1.0 : 2.0) * scale * (re * re + im * im));
+  }
+  return s;
+}
+
+Slope log_log_slope(const Spectrum& s) {
+  Slope slope{std::nan(""), std::nan("")};
+  std::vector<double> x, y;
+  for (std::size_t k = 0; k < s.frequency.size(); ++k) {
+    if (s.power[k] > 0.0) {
+      x.push_back(std::log(s.frequency[k]));
+      y.push_back(std::log(s.power[k]));
+    }
+  }
+  const std::size_t m = x.size();
+  if (m < 3) return slope;
+  double mx = 0.0, my = 0.0;
+  for (std::size_t k = 0; k < m; ++k) {
+    mx += x[k] / static_cast<double>(m);
+    my += y[k] / static_cast<double>(m);
+  }
+  double sxx = 0.0, sxy = 0.0;
+  for (std::size_t k = 0; k < m; ++k) {
+    sxx += (x[k] - mx) * (x[k] - mx);
+    sxy += (x[k] - mx) * (y[k] - my);
+  }
+  slope.value = sxy / sxx;
+  double residuals = 0.0;
+  for (std::size_t k = 0; k < m; ++k) {
+    const double r = y[k] - my - slope.value * (x[k] - mx);
+    residuals += r * r;
+  }
+  slope.error = std::sqrt(residuals / static_cast<double>(m - 2) / sxx);
+  return slope;
+}
+
+}  // namespace granpipe::compaction

@@ -1,0 +1,125 @@
+#!/usr/bin/env python3
+"""Pools the ageing squared differences of the compaction analyzer over independent
+realizations, the mean of Eq. (5) of the 3D tapping paper, and fits Eq. (6) per waiting time
+(its Fig. 5):
+
+  A(t, t_w) = mean over realizations of (<Z>(t_w) - <Z>(t_w + t))^2
+  A(t)      = A_inf (1 - 1 / (1 + B ln(1 + t/tau)))
+
+Each realization is a sweep point that differs from the others only in the --over parameter
+(default source.params.replica), as for scripts/pool_replicas.py; points that share all other
+swept values form a group. Rows of <analyzer>.ageing with the same (t_w, t) are pooled: A is
+the mean over the group's realizations, A_err the standard error across them (NaN for one).
+Eq. (6) is fitted per group and t_w by scipy's curve_fit, weighted by A_err when every point
+has one, from tau = 1 tap, B = 1 and the A_inf that puts the curve through the last point.
+Writes, beside the input:
+
+  pooled.<analyzer>.ageing.csv       group, t_w, t, realizations, A, A_err
+  pooled.<analyzer>.ageing_fits.csv  group, t_w, points, A_inf, B, tau with errors (NaN: no fit)
+
+    scripts/pool_ageing.py out/tap3d_ageing
+"""
+import argparse
+import csv
+import math
+import os
+
+import numpy as np
+from scipy.optimize import curve_fit
+
+from input_error import read_pipeline, refuse
+from result_csv import read_table
+
+
+def eq6(t, a_inf, b, tau):
+    return a_inf * (1.0 - 1.0 / (1.0 + b * np.log1p(t / tau)))
+
+
+def pool(tables):
+    """tables: list of (path, header, rows). Returns sorted rows (t_w, t, n, A, A_err)."""
+    by_key = {}
+    for path, header, rows in tables:
+        for column in ("t_w", "t", "squared_difference"):
+            if column not in header:
+                refuse(f"{path}: expected a column {column}, found {header}")
+        tw, t, sq = (header.index(c) for c in ("t_w", "t", "squared_difference"))
+        for row in rows:
+            by_key.setdefault((row[tw], row[t]), []).append(row[sq])
+    out = []
+    for key in sorted(by_key):
+        values = by_key[key]
+        n = len(values)
+        mean = sum(values) / n
+        err = math.sqrt(sum((v - mean) ** 2 for v in values) / (n - 1) / n) if n > 1 else math.nan
+        out.append((*key, n, mean, err))
+    return out
+
+
+def fit(rows):
+    """Eq. (6) to rows (t_w, t, n, A, A_err) of one t_w: values and errors, NaN when it fails."""
+    t = np.array([r[1] for r in rows])
+    a = np.array([r[3] for r in rows])
+    err = np.array([r[4] for r in rows])
+    undefined = [math.nan] * 6
+    if len(t) <= 3:
+        return undefined
+    log_time = math.log1p(max(t[-1], 1.0))
+    start = [a[-1] * (1.0 + log_time) / log_time, 1.0, 1.0]
+    weighted = bool(np.all(np.isfinite(err)) and np.all(err > 0))
+    try:
+        p, cov = curve_fit(eq6, t, a, p0=start, sigma=err if weighted else None,
+                           absolute_sigma=weighted, bounds=([-np.inf, 0.0, 1e-9], np.inf))
+    except (RuntimeError, ValueError):
+        return undefined
+    e = np.sqrt(np.diag(cov))
+    if not (np.all(np.isfinite(p)) and np.all(np.isfinite(e))):
+        return undefined
+    return [p[0], e[0], p[1], e[1], p[2], e[2]]
+
+
+def write(path, provenance, header, rows):
+    with open(path, "w", newline="") as f:
+        f.write(f"{provenance} pooled by scripts/pool_ageing.py\n")
+        csv.writer(f).writerows([header] + rows)
+    print(f"{path}: {len(rows)} rows")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("out", help="output directory of a sweep run over realizations")
+    ap.add_argument("--analyzer", default="compaction", help="name of the compaction analyzer in the pipeline")
+    ap.add_argument("--over", default="source.params.replica", help="the swept parameter that numbers the realizations")
+    args = ap.parse_args()
+    points_path = os.path.join(args.out, "sweep.points.csv")
+    _, header, points = read_table(points_path)
+    if args.over not in header:
+        refuse(f"{points_path}: expected a swept column {args.over}, found {header[1:4]}...")
+    swept = list(read_pipeline(args.out).get("sweep", {}).get("parameters", {}).keys())
+    others = [s for s in swept if s != args.over and s in header]
+    groups = {}
+    for p in points:
+        key = tuple(p[header.index(s)] for s in others)
+        groups.setdefault(key, []).append(int(p[header.index("point")]))
+    provenance, pooled_rows, fit_rows = "", [], []
+    for gkey, members in sorted(groups.items()):
+        group = ", ".join(f"{s.split('.')[-1]}={v:g}" for s, v in zip(others, gkey)) or "all"
+        tables = []
+        for point in members:
+            path = os.path.join(args.out, f"point_{point:03d}.{args.analyzer}.ageing.csv")
+            if not os.path.exists(path):
+                refuse(f"{path}: expected the ageing table of point {point}, found no file")
+            provenance, h, rows = read_table(path)
+            tables.append((path, h, rows))
+        rows = pool(tables)
+        pooled_rows += [[group, *r] for r in rows]
+        for t_w in sorted({r[0] for r in rows}):
+            one = [r for r in rows if r[0] == t_w]
+            fit_rows.append([group, t_w, len(one), *fit(one)])
+    base = os.path.join(args.out, f"pooled.{args.analyzer}")
+    write(base + ".ageing.csv", provenance, ["group", "t_w", "t", "realizations", "A", "A_err"], pooled_rows)
+    write(base + ".ageing_fits.csv", provenance,
+          ["group", "t_w", "points", "A_inf", "A_inf_err", "B", "B_err", "tau", "tau_err"], fit_rows)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,69 @@
+"""scripts/pool_ageing.py on hand-made realizations: A is the mean of the realizations'
+squared differences and A_err the standard error across them; Eq. (6) fitted to pooled rows
+that follow it recovers A_inf, B and tau within three errors; a missing table is refused in
+one line with exit code 2."""
+import csv
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+
+script = sys.argv[1]
+truth = (0.05, 1.0, 20.0)
+
+
+def eq6(t):
+    a_inf, b, tau = truth
+    return a_inf * (1.0 - 1.0 / (1.0 + b * math.log1p(t / tau)))
+
+
+def write(out, name, lines):
+    with open(os.path.join(out, name), "w") as f:
+        f.write("# granpipe test\n" + "\n".join(lines) + "\n")
+
+
+def rows(path):
+    with open(path) as f:
+        return list(csv.DictReader(line for line in f if not line.startswith("#")))
+
+
+failures = []
+with tempfile.TemporaryDirectory() as out:
+    with open(os.path.join(out, "pipeline.json"), "w") as f:
+        json.dump({"sweep": {"parameters": {"source.params.replica": [0, 1]}}}, f)
+    write(out, "sweep.points.csv", ["point,source.params.replica", "0,0", "1,1"])
+    taps = range(1, 200)
+    # The two realizations straddle the law by +-1e-4, alternating: their mean is the law.
+    for point, sign in ((0, 1.0), (1, -1.0)):
+        lines = ["t_w,t,squared_difference", "3,1,0.5"]
+        lines += [f"10,{t},{eq6(t) + sign * (1e-4 if t % 2 else -1e-4)!r}" for t in taps]
+        write(out, f"point_00{point}.compaction.ageing.csv", lines)
+    r = subprocess.run([sys.executable, script, out], capture_output=True, text=True)
+    if r.returncode != 0:
+        failures.append(r.stderr)
+    else:
+        pooled = rows(os.path.join(out, "pooled.compaction.ageing.csv"))
+        first = pooled[0]
+        if (float(first["t_w"]), float(first["A"]), float(first["A_err"])) != (3.0, 0.5, 0.0):
+            failures.append(f"pooled row {first}")
+        second = pooled[1]
+        if abs(float(second["A"]) - eq6(1.0)) > 1e-12 or abs(float(second["A_err"]) - 1e-4) > 1e-12:
+            failures.append(f"pooled row {second}: expected A {eq6(1.0)}, A_err 1e-4")
+        fits = {float(f["t_w"]): f for f in rows(os.path.join(out, "pooled.compaction.ageing_fits.csv"))}
+        if not math.isnan(float(fits[3.0]["A_inf"])):
+            failures.append(f"a fit of one point: {fits[3.0]}")
+        fit = fits[10.0]
+        for name, value in zip(("A_inf", "B", "tau"), truth):
+            got, err = float(fit[name]), float(fit[name + "_err"])
+            if not abs(got - value) <= 3 * err or not err < 0.5 * value:
+                failures.append(f"{name}: {got} +- {err}, expected {value}")
+    os.remove(os.path.join(out, "point_001.compaction.ageing.csv"))
+    r = subprocess.run([sys.executable, script, out], capture_output=True, text=True)
+    if r.returncode != 2 or "expected the ageing table of point 1, found no file" not in r.stderr:
+        failures.append(f"missing table: exit {r.returncode}, {r.stderr!r}")
+
+if failures:
+    print("\n".join(failures))
+    sys.exit(1)

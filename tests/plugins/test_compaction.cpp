@@ -1,0 +1,280 @@
+// The compaction analyzer's maths on synthetic data with known answers: the laws of Eqs.
+// (3), (4) and (6) fitted back from noisy samples, the power spectrum of shaped 1/f^alpha
+// noise, the steady state of a known series, <Z> of a lattice, the ageing differences, and
+// the analyzer on the spheres3d_tap source's own frames.
+#include <gsl/gsl_fft_halfcomplex.h>
+#include <gsl/gsl_fft_real.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "ageing.hpp"
+#include "compaction_analyzer.hpp"
+#include "compaction_laws.hpp"
+#include "frame_measure.hpp"
+#include "granpipe/container.hpp"
+#include "granpipe/errors.hpp"
+#include "law_fit.hpp"
+#include "plugin_harness.hpp"
+#include "power_spectrum.hpp"
+#include "steady_state.hpp"
+
+using namespace granpipe;
+using namespace granpipe::compaction;
+
+namespace {
+
+// Taps as a tapping run saves them: every 20th up to 4000, and ten per decade below.
+std::vector<double> run_taps() {
+  std::vector<double> t;
+  for (int k = 0; k <= 4000; k += 20) t.push_back(k);
+  for (int d = 0; d < 30; ++d) t.push_back(std::round(std::pow(10.0, d / 10.0)));
+  std::sort(t.begin(), t.end());
+  t.erase(std::unique(t.begin(), t.end()), t.end());
+  return t;
+}
+
+// The law at `truth` (tau itself, last) plus Gaussian noise of this sigma.
+std::vector<double> noisy(const Law& law, const std::vector<double>& truth,
+                          const std::vector<double>& t, double sigma, unsigned seed) {
+  Eigen::VectorXd p = Eigen::Map<const Eigen::VectorXd>(truth.data(), truth.size());
+  p[p.size() - 1] = std::log(p[p.size() - 1]);
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> noise(0.0, sigma);
+  std::vector<double> y;
+  for (double x : t) y.push_back(law.model.value(p, x) + noise(rng));
+  return y;
+}
+
+void expect_recovered(const Law& law, const std::vector<double>& truth, double sigma) {
+  const std::vector<double> t = run_taps();
+  for (unsigned seed : {1u, 2u, 3u}) {
+    const LawFit fit = fit_law(law, t, noisy(law, truth, t, sigma, seed));
+    ASSERT_TRUE(fit.fitted()) << law.formula << ": " << describe(fit.status);
+    for (std::size_t q = 0; q < truth.size(); ++q) {
+      EXPECT_NEAR(fit.value[q], truth[q], 3.0 * fit.error[q])
+          << law.formula << ", " << law.names[q] << ", seed " << seed;
+      EXPECT_LT(fit.error[q], 0.5 * std::abs(truth[q])) << law.names[q] << " barely determined";
+    }
+    EXPECT_NEAR(fit.scatter, sigma, 0.2 * sigma);
+  }
+}
+
+TEST(Compaction, Eq3FitRecoversThePackingFractionLaw) {
+  expect_recovered(eq3_law(), {0.62, 0.04, 0.5, 5.0}, 5e-4);
+}
+
+TEST(Compaction, Eq4FitRecoversTheMeanHeightLaw) {
+  expect_recovered(eq4_law(), {14.0, 15.0, 0.5, 3.0}, 0.01);
+}
+
+TEST(Compaction, Eq6FitRecoversTheAgeingLaw) {
+  expect_recovered(eq6_law(), {0.05, 1.0, 20.0}, 5e-4);
+}
+
+// The analytic gradients against central differences, for the minimiser's sake.
+TEST(Compaction, LawGradientsMatchFiniteDifferences) {
+  for (const Law* law : {&eq3_law(), &eq4_law(), &eq6_law()}) {
+    Eigen::VectorXd p(law->names.size());
+    if (p.size() == 4)
+      p << 0.7, 0.2, 0.8, std::log(3.0);
+    else
+      p << 0.3, 0.8, std::log(3.0);
+    for (double t : {0.0, 1.0, 37.0, 2500.0}) {
+      const Eigen::VectorXd g = law->model.gradient(p, t);
+      for (Eigen::Index q = 0; q < p.size(); ++q) {
+        Eigen::VectorXd up = p, down = p;
+        up[q] += 1e-6;
+        down[q] -= 1e-6;
+        const double numeric = (law->model.value(up, t) - law->model.value(down, t)) / 2e-6;
+        EXPECT_NEAR(g[q], numeric, 1e-6 * (1.0 + std::abs(numeric))) << law->formula << " q " << q;
+      }
+    }
+  }
+}
+
+TEST(Compaction, StartValuesPassThroughBothEnds) {
+  const std::vector<double> t{0, 10, 100, 1000}, y{0.58, 0.59, 0.60, 0.61};
+  const std::vector<double> p = law_start(eq3_law(), t, y);
+  ASSERT_EQ(p.size(), 4u);
+  EXPECT_DOUBLE_EQ(p[0] - p[1], 0.58);  // X(0) = X_inf - dX
+  EXPECT_DOUBLE_EQ(p[3], 1.0);          // tau = 1 tap
+  EXPECT_NEAR(p[0] - p[1] / (1.0 + p[2] * std::log1p(1000.0)), 0.61, 1e-12);
+}
+
+TEST(Compaction, TooFewPointsLeaveTheFitUndefined) {
+  const LawFit fit = fit_law(eq3_law(), {0, 1, 2}, {0.58, 0.59, 0.60});
+  EXPECT_EQ(fit.status, CurveFitStatus::TooFewPoints);
+  for (double v : fit.value) EXPECT_TRUE(std::isnan(v));
+  for (double e : fit.error) EXPECT_TRUE(std::isnan(e));
+}
+
+// n samples of noise with S(f) ~ f^-alpha: white noise shaped by f^(-alpha/2) in Fourier space.
+std::vector<double> power_law_noise(double alpha, std::size_t n, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> white(0.0, 1.0);
+  std::vector<double> x(n);
+  for (double& v : x) v = white(rng);
+  gsl_fft_real_wavetable* rt = gsl_fft_real_wavetable_alloc(n);
+  gsl_fft_halfcomplex_wavetable* ht = gsl_fft_halfcomplex_wavetable_alloc(n);
+  gsl_fft_real_workspace* work = gsl_fft_real_workspace_alloc(n);
+  gsl_fft_real_transform(x.data(), 1, n, rt, work);
+  x[0] = 0.0;
+  for (std::size_t k = 1; 2 * k <= n; ++k) {
+    const double shape = std::pow(static_cast<double>(k), -alpha / 2.0);
+    x[2 * k - 1] *= shape;
+    if (2 * k < n) x[2 * k] *= shape;
+  }
+  gsl_fft_halfcomplex_inverse(x.data(), 1, n, ht, work);
+  gsl_fft_real_workspace_free(work);
+  gsl_fft_halfcomplex_wavetable_free(ht);
+  gsl_fft_real_wavetable_free(rt);
+  return x;
+}
+
+TEST(Compaction, SpectrumSlopeRecoversThePowerLawExponent) {
+  for (double alpha : {1.0, 1.5}) {
+    for (unsigned seed : {4u, 5u}) {
+      const Slope s = log_log_slope(power_spectrum(power_law_noise(alpha, 4096, seed), 10.0));
+      EXPECT_NEAR(-s.value, alpha, std::max(s.error, 0.1)) << "alpha " << alpha;
+      EXPECT_GT(s.error, 0.0);
+      EXPECT_LT(s.error, 0.1);
+    }
+  }
+}
+
+// Parseval: the one-sided spectrum integrates to the variance (population) of the series.
+TEST(Compaction, SpectrumIntegratesToTheVariance) {
+  for (std::size_t n : {64u, 75u}) {  // even and odd lengths
+    const std::vector<double> x = power_law_noise(1.0, n, 6);
+    const Spectrum s = power_spectrum(x, 5.0);
+    ASSERT_EQ(s.frequency.size(), n / 2);
+    EXPECT_DOUBLE_EQ(s.frequency[0], 1.0 / (5.0 * static_cast<double>(n)));
+    double integral = 0.0;
+    for (double p : s.power) integral += p / (5.0 * static_cast<double>(n));
+    EXPECT_NEAR(integral, steady_state(x).sigma * steady_state(x).sigma, 1e-12);
+  }
+}
+
+TEST(Compaction, TheSpectrumUsesTheLastUnbrokenGridOfFrames) {
+  // Saved every 10 taps, the log frames 63 and 79 between, the save of tap 60 missing.
+  const std::vector<double> taps{40, 50, 63, 70, 79, 80, 90, 100, 110, 120};
+  const EvenFrames even = evenly_spaced(taps);
+  EXPECT_EQ(even.spacing, 10.0);
+  std::vector<double> used;
+  for (std::size_t k : even.index) used.push_back(taps[k]);
+  EXPECT_EQ(used, (std::vector<double>{70, 80, 90, 100, 110, 120}));
+}
+
+TEST(Compaction, SteadyStateOfAKnownSeries) {
+  const SteadyState s = steady_state({1.0, 2.0, std::nan(""), 3.0, 4.0});
+  EXPECT_EQ(s.frames, 4);
+  EXPECT_DOUBLE_EQ(s.mean, 2.5);
+  EXPECT_DOUBLE_EQ(s.sigma, std::sqrt(1.25));
+  EXPECT_DOUBLE_EQ(s.mean_error, std::sqrt(1.25 / 3.0));
+}
+
+// A simple cubic stack of spheres of radius 1, three layers on a base at z = -2.
+Frame cubic_stack(std::int64_t tap) {
+  Frame f;
+  f.resize(27, 3);
+  f.radius().setConstant(1.0);
+  for (int k = 0; k < 27; ++k)
+    f.position().row(k) << 1 + 2 * (k % 3), 1 + 2 * (k / 3 % 3), -1 + 2 * (k / 9);
+  f.container = Container::open_top_box(3, Eigen::Vector3d(0, 0, -2), Eigen::Vector3d(6, 6, 10));
+  if (tap >= 0) f.set_observable({"tap", Scope::Frame, ValueType::Integer, 1, "", "tap"}, tap);
+  return f;
+}
+
+TEST(Compaction, MeanHeightOfALatticeIsInMeanRadiiAboveTheBottom) {
+  // Centres at 1, 3 and 5 radii above the base.
+  EXPECT_DOUBLE_EQ(mean_height_in_radii(cubic_stack(0)), 3.0);
+  Frame raised = cubic_stack(0);
+  raised.container.wall_offset.z() = 0.5;  // a driven base half a radius up
+  EXPECT_DOUBLE_EQ(mean_height_in_radii(raised), 2.5);
+  // The lowest layer's cut fraction is pi/6 (simple cubic) over its two radii, and so is
+  // phi_b over four radii: two whole layers.
+  const FramePoint p = measure_frame(cubic_stack(7), StereologySettings{}, "test");
+  EXPECT_EQ(p.tap, 7.0);
+  EXPECT_NEAR(p.phi_b, M_PI / 6.0, 1e-9);
+}
+
+TEST(Compaction, AFrameWithoutATapIsRefused) {
+  try {
+    measure_frame(cubic_stack(-1), StereologySettings{}, "compaction: frame 3 (step 0)");
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(),
+                 "compaction: frame 3 (step 0): expected the observable \"tap\" (frames of a "
+                 "tapping source such as spheres3d_tap), got a frame without it");
+  }
+}
+
+Results analyze(const std::vector<Frame>& frames, nlohmann::json params = {}) {
+  const auto ctx = test::make_context("compaction", std::move(params));
+  CompactionAnalyzer analyzer(*ctx);
+  FrameCache cache;
+  for (const Frame& f : frames) analyzer.consume(f, cache);
+  Results r;
+  analyzer.finish(r);
+  return r;
+}
+
+TEST(Compaction, TapsGoingBackAreRefused) {
+  EXPECT_THROW(analyze({cubic_stack(5), cubic_stack(5)}), InputError);
+}
+
+TEST(Compaction, AgeingSquaresTheChangeSinceEachWaitingTime) {
+  const Ageing a = ageing({0, 1, 2, 4}, {10.0, 9.0, 8.5, 8.0}, {1, 3});
+  ASSERT_EQ(a.points.size(), 2u);
+  EXPECT_EQ(a.points[0].t_w, 1.0);
+  EXPECT_EQ(a.points[0].t, 1.0);
+  EXPECT_DOUBLE_EQ(a.points[0].squared_difference, 0.25);
+  EXPECT_EQ(a.points[1].t, 3.0);
+  EXPECT_DOUBLE_EQ(a.points[1].squared_difference, 1.0);
+  EXPECT_EQ(a.left_out, (std::vector<std::int64_t>{3}));
+}
+
+TEST(Compaction, AShortRunReportsUndefinedFitsNotZeros) {
+  const Results r = analyze({cubic_stack(0), cubic_stack(1), cubic_stack(2)});
+  EXPECT_EQ(r.tables().at("per_frame").rows(), 3u);
+  EXPECT_EQ(r.scalar("eq3_phi_b_status").value, 1.0);  // too few points
+  for (double v : r.fits().at("eq3_phi_b").values) EXPECT_TRUE(std::isnan(v));
+  EXPECT_TRUE(std::isnan(r.scalar("spectrum_slope_z_mean").value));
+  EXPECT_DOUBLE_EQ(r.scalar("z_mean_ss").value, 3.0);
+  EXPECT_DOUBLE_EQ(r.scalar("z_mean_sigma").value, 0.0);
+}
+
+// A few taps of the 3D source: <Z> is its own mean_height observable in radii.
+TEST(Compaction, OnTheTappingSourceMeanHeightIsTheSourcesObservable) {
+  const auto ctx = test::make_context("spheres3d_tap", {{"N", 64},
+                                                        {"side", 6},
+                                                        {"radius", 0.5},
+                                                        {"taps", 24},
+                                                        {"save_every", 1},
+                                                        {"epsilon", 0.1},
+                                                        {"log_frames", false}});
+  auto source = test::installed_plugins().find("spheres3d_tap")->make_source(*ctx);
+  std::vector<Frame> frames;
+  Frame f;
+  while (source->next(f)) {
+    const double bottom = f.container.lo.z();
+    EXPECT_NEAR(mean_height_in_radii(f) * 0.5 + bottom, *f.real_observable("mean_height"), 1e-12);
+    frames.push_back(f);
+  }
+  ASSERT_EQ(frames.size(), 25u);
+  const Results r = analyze(frames, {{"waiting_times", {0, 5}}, {"steady_from", 8}});
+  EXPECT_EQ(r.tables().at("per_frame").rows(), 25u);
+  EXPECT_EQ(r.tables().at("spectrum").rows(), 8u);  // taps 8 to 24
+  EXPECT_EQ(r.tables().at("ageing").rows(), 24u + 19u);
+  EXPECT_EQ(r.tables().at("ageing_fits").rows(), 2u);
+  const double phi_b = r.scalar("phi_b_ss").value;
+  EXPECT_GT(phi_b, 0.4);
+  EXPECT_LT(phi_b, 0.75);
+}
+
+}  // namespace
