@@ -9,7 +9,13 @@ error for scale) and speed_vs_error.svg (seconds against |deviation|, log-log).
     scripts/speed_vs_error.py out/tap2d_delta_study \
         --knob source.params.delta --time source.seconds \
         --quantity packing.phi --quantity arches.z_support_eq4
+
+With --pool PARAMETER (e.g. source.params.replica), each value of that swept parameter is
+its own group with its own reference, and the table has, per knob value, the mean over them
+of the seconds and of each |deviation|, with the standard error of that mean (_err).
 """
+import math
+import statistics
 import argparse
 import csv
 import os
@@ -30,6 +36,7 @@ def main():
     ap.add_argument("--knob", required=True, help="swept resolution column; its smallest value is the reference")
     ap.add_argument("--time", required=True, help="column holding the run time of a point")
     ap.add_argument("--quantity", action="append", required=True, help="result column to compare (repeatable)")
+    ap.add_argument("--pool", help="swept parameter (e.g. replicas) to average the deviations over")
     args = ap.parse_args()
 
     points, header = read_points(os.path.join(args.out, "sweep.points.csv"))
@@ -58,6 +65,10 @@ def main():
                 if p is not ref:
                     series.setdefault(f"{q} ({tag})", []).append((p[args.time], abs(p[q] - ref[q]), f"{args.knob}={p[args.knob]:g}"))
             rows.append(row)
+    if args.pool:
+        if args.pool not in swept:
+            refuse(f"{args.out}/sweep.points.csv: --pool {args.pool}: expected a swept parameter, got none")
+        rows, series = pooled(rows, swept, args)
     with open(os.path.join(args.out, "speed_vs_error.csv"), "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
         writer.writeheader()
@@ -65,9 +76,34 @@ def main():
     loglog_chart(series, "run time of the point (s)", "|deviation from the finest point|",
              os.path.join(args.out, "speed_vs_error.svg"))
     cols = ["group", args.knob, "seconds"] + [q + "_deviation" for q in args.quantity]
+    if args.pool:
+        cols += [q + "_deviation_err" for q in args.quantity]
     print("  ".join(f"{c:>24}" for c in cols))
     for r in rows:
         print("  ".join(f"{r[c]:>24}" if isinstance(r[c], str) else f"{r[c]:>24.4g}" for c in cols))
+
+
+def pooled(rows, swept, args):
+    """The rows averaged over the values of args.pool: one row per (other groups, knob)."""
+    pool_name = args.pool.split(".")[-1]
+    keep = lambda tag: ", ".join(t for t in tag.split(", ") if not t.startswith(pool_name + "=")) or "all"
+    groups = {}
+    for r in rows:
+        groups.setdefault((keep(r["group"]), r[args.knob]), []).append(r)
+    out, series = [], {}
+    for (tag, knob), members in sorted(groups.items(), key=lambda kv: (kv[0][0], -kv[0][1])):
+        row = {"group": tag, args.knob: knob, "replicas": len(members),
+               "seconds": statistics.fmean(m["seconds"] for m in members)}
+        for q in args.quantity:
+            devs = [m[q + "_deviation"] for m in members]
+            row[q + "_deviation"] = statistics.fmean(devs)
+            row[q + "_deviation_err"] = (statistics.stdev(devs) / math.sqrt(len(devs))
+                                         if len(devs) > 1 else float("nan"))
+            if row[q + "_deviation"] > 0:
+                series.setdefault(f"{q} ({tag})", []).append(
+                    (row["seconds"], row[q + "_deviation"], f"{args.knob}={knob:g}"))
+        out.append(row)
+    return out, series
 
 
 if __name__ == "__main__":

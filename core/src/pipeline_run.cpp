@@ -77,7 +77,7 @@ PointPlugins make_plugins(const Pipeline::Impl& p, std::size_t k, int threads, L
                           Progress& progress, const fs::path& out, ResultStreams* streams) {
   const fs::path dir = point_directory(p, k, out);
   const PointSpec& point = p.points[k];
-  const Seeds seeds = Seeds(p.seed).derive("point", k);
+  const Seeds seeds = Seeds(p.seed).derive("point", p.shared_seeds ? 0 : k);
   PointPlugins made;
   // Plugins check what the schema cannot (one parameter against another, a file's
   // content); their messages name the parameter (ctx.param) and get the file in front.

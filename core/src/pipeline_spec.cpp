@@ -214,8 +214,10 @@ Pipeline Pipeline::parse(const std::string& text, const std::string& origin,
   out["frame_stride"] = impl->frame_stride;
 
   std::vector<json> assignments{json::object()};
-  if (root.contains("sweep"))
+  if (root.contains("sweep")) {
     assignments = expand_sweep(root["sweep"], top.child("sweep"), impl->sweep_paths);
+    impl->shared_seeds = shared_sweep_seeds(root["sweep"], top.child("sweep"));
+  }
   // A swept value comes from the file's sweep, even where a --set put one before.
   for (const auto& path : impl->sweep_paths) impl->overrides.push_back({path, ""});
   // Each point starts from the pipeline without its sweep, whose length would make

@@ -105,11 +105,20 @@ std::vector<json> grid_points(const std::vector<const json*>& lists,
 
 std::vector<json> expand_sweep(const json& sweep, const JsonLocation& at,
                                std::vector<std::string>& paths) {
-  check_keys(sweep, {"mode", "parameters"}, at);
+  check_keys(sweep, {"mode", "parameters", "seeds"}, at);
   const std::string mode = read_mode(sweep, at);
   const JsonLocation pat = at.child("parameters");
   const std::vector<const json*> lists = read_lists(sweep, pat, paths);
   return mode == "zip" ? zip_points(lists, paths, pat) : grid_points(lists, paths, pat);
+}
+
+bool shared_sweep_seeds(const json& sweep, const JsonLocation& at) {
+  const json seeds = sweep.value("seeds", json("per_point"));
+  if (seeds != "per_point" && seeds != "shared") {
+    throw InputError(at.child("seeds").str() + ": expected one of \"per_point\", \"shared\", got " +
+                     json_brief(seeds));
+  }
+  return seeds == "shared";
 }
 
 }  // namespace granpipe

@@ -19,4 +19,9 @@ inline constexpr std::size_t kMaxSweepPoints = 100000;
 std::vector<nlohmann::json> expand_sweep(const nlohmann::json& sweep, const JsonLocation& at,
                                          std::vector<std::string>& paths);
 
+// The sweep's "seeds": "per_point" (the default: each point its own seeds, independent
+// realizations) or "shared" (every point point 0's seeds, so that points differ only by
+// their swept values: common random numbers for a resolution study). True for shared.
+bool shared_sweep_seeds(const nlohmann::json& sweep, const JsonLocation& at);
+
 }  // namespace granpipe

@@ -32,4 +32,23 @@ with tempfile.TemporaryDirectory() as out:
     if bad or markers != 2:
         print("FAIL", got, markers)
         sys.exit(1)
-print("speed against error: deviations from the finest point of each group are right")
+# --pool: two replicas, each against its own finest point, averaged per knob value.
+with tempfile.TemporaryDirectory() as out:
+    with open(os.path.join(out, "pipeline.json"), "w") as f:
+        json.dump({"sweep": {"parameters": {"source.params.eta": [1e-3, 1e-6],
+                                            "source.params.replica": [0, 1]}}}, f)
+    with open(os.path.join(out, "sweep.points.csv"), "w") as f:
+        f.write("# granpipe test\n")
+        f.write("point,source.params.eta,source.params.replica,phi,source.seconds\n")
+        f.write("0,0.001,0,0.50,1.0\n1,0.001,1,0.54,3.0\n2,1e-06,0,0.58,10.0\n3,1e-06,1,0.57,20.0\n")
+    subprocess.run([sys.executable, script, out, "--knob", "source.params.eta", "--time", "source.seconds",
+                    "--quantity", "phi", "--pool", "source.params.replica"], check=True, capture_output=True)
+    rows = {float(r["source.params.eta"]): r for r in csv.DictReader(open(os.path.join(out, "speed_vs_error.csv")))}
+    coarse = rows[1e-3]
+    # Deviations |0.50 - 0.58| = 0.08 and |0.54 - 0.57| = 0.03: mean 0.055, standard error 0.025.
+    if (abs(float(coarse["phi_deviation"]) - 0.055) > 1e-12 or abs(float(coarse["seconds"]) - 2.0) > 1e-12
+            or abs(float(coarse["phi_deviation_err"]) - 0.025) > 1e-12 or coarse["group"] != "all"
+            or float(rows[1e-6]["phi_deviation"]) != 0.0):
+        print("FAIL pooled", rows)
+        sys.exit(1)
+print("speed against error: deviations from the finest point of each group, and pooled, are right")

@@ -463,6 +463,36 @@ TEST(Pipeline, SameSeedSameResultsAndSweepPointsIndependentOfThreads) {
   fs::remove_all(*two.out);
 }
 
+// "seeds": "shared" gives every point point 0's seeds: points that differ only in a
+// parameter the random numbers do not depend on give the same bits.
+TEST(Pipeline, SharedSweepSeedsGiveEveryPointTheSameRandomNumbers) {
+  const Registry r = test_registry();
+  const auto mean_x = [&](const std::string& seeds) {
+    const std::string text =
+        R"({"seed": 9, "source": {"plugin": "random"}, "analyzers": [{"plugin": "meanx"}],
+        "output": {"save_frames": false},
+        "sweep": {"seeds": ")" + seeds + R"(", "parameters": {"analyzers[0].params.scale": [1, 1]}}})";
+    const Pipeline p = Pipeline::parse(text, "p.json", {}, r);
+    Log log;
+    log.set_quiet(true);
+    RunOptions o = quiet_options();
+    o.out = fresh_dir("seeds_" + seeds);
+    const RunSummary s = p.run(o, log);
+    fs::remove_all(*o.out);
+    return std::pair(s.results.at("point_000/meanx").scalar("mean_x").value,
+                     s.results.at("point_001/meanx").scalar("mean_x").value);
+  };
+  const auto [shared0, shared1] = mean_x("shared");
+  EXPECT_EQ(shared0, shared1);
+  const auto [own0, own1] = mean_x("per_point");
+  EXPECT_NE(own0, own1);
+  EXPECT_EQ(own0, shared0);  // point 0 is the same run either way
+  EXPECT_EQ(
+      error_of(
+          R"({"source": {"plugin": "random"}, "sweep": {"seeds": "same", "parameters": {"source.params.n": [1]}}})"),
+      "p.json: sweep.seeds: expected one of \"per_point\", \"shared\", got \"same\"");
+}
+
 TEST(Pipeline, SameSeedAndThreadsTwiceGivesTheSameBits) {
   const Registry r = test_registry();
   const Pipeline p = Pipeline::parse(kGood, "p.json", {}, r);
