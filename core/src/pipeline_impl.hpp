@@ -39,7 +39,7 @@ struct Pipeline::Impl {
   bool save_frames = true;
   std::int64_t frame_stride = 1;
   std::vector<std::string> sweep_paths;
-  bool shared_seeds = false;  // every sweep point point 0's seeds (sweep "seeds": "shared")
+  bool shared_seeds = false;        // every sweep point point 0's seeds (sweep "seeds": "shared")
   std::vector<Override> overrides;  // --set values, then the sweep's paths
   JsonLocation top() const { return {origin, "", &overrides}; }
   std::vector<PointSpec> points;

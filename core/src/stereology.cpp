@@ -30,6 +30,30 @@ double quantile_height(const Frame& frame, double fraction) {
 
 }  // namespace
 
+void declare_stereology_settings(Schema& s) {
+  const StereologySettings d;
+  s.real("bulk_top", d.bulk_top, "phi_b is the packing fraction between the bottom and this height")
+      .min(0.0, true)
+      .unit("mean radii");
+  s.real("perturbed_top", d.perturbed_top,
+         "top of the bottom layer perturbed by the wall, whose fraction phi_c corrects")
+      .min(0.0)
+      .unit("mean radii");
+  s.real("perturbed_factor", d.perturbed_factor,
+         "phi_c multiplies the bottom layer's fraction by this (the perturbed-zone model's "
+         "16/11 for spheres on a plane; 1: no correction)")
+      .min(0.0, true);
+  s.real("fraction", d.fraction,
+         "phi_c's zone reaches the height below which this fraction of the centres lie")
+      .min(0.0, true)
+      .max(1.0);
+}
+
+StereologySettings stereology_settings(const Params& p) {
+  return {p.real("bulk_top"), p.real("perturbed_top"), p.real("perturbed_factor"),
+          p.real("fraction")};
+}
+
 GlobalFractions global_fractions(const Frame& frame, const StereologySettings& s) {
   if (frame.container.shape != ContainerShape::Box) {
     throw InputError(

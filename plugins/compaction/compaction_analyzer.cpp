@@ -10,18 +10,7 @@ namespace granpipe::compaction {
 
 Schema schema() {
   Schema s;
-  s.real("bulk_top", 4.0, "phi_b is the fraction between the bottom and this height")
-      .min(0.0, true)
-      .unit("mean radii");
-  s.real("perturbed_top", 1.0,
-         "top of the bottom layer whose fraction <phi^c> multiplies by perturbed_factor")
-      .min(0.0)
-      .unit("mean radii");
-  s.real("perturbed_factor", 16.0 / 11.0,
-         "the perturbed-zone correction of the bottom layer (16/11 for spheres on a plane)")
-      .min(0.0, true);
-  s.real("fraction", 0.9, "<phi^c>'s zone ends where this fraction of the centres lie below")
-      .range(0.0, 1.0);
+  declare_stereology_settings(s);
   s.real("fit_from", 0.0, "first tap of the fits of Eqs. (3) and (4)").min(0.0).unit("taps");
   s.real("fit_to", -1.0, "last tap of the fits; negative: the last frame's").unit("taps");
   s.real("steady_from", -1.0,
@@ -59,10 +48,7 @@ CompactionAnalyzer::CompactionAnalyzer(const PluginContext& ctx)
                              "per-frame <Z> (mean centre height above the bottom), phi_b, "
                              "<phi^c> and the top of <phi^c>'s zone, in mean radii R"))) {
   const Params& p = ctx.params;
-  stereology_.bulk_top = p.real("bulk_top");
-  stereology_.perturbed_top = p.real("perturbed_top");
-  stereology_.perturbed_factor = p.real("perturbed_factor");
-  stereology_.fraction = p.real("fraction");
+  stereology_ = stereology_settings(p);
   report_.fit_from = p.real("fit_from");
   report_.fit_to = p.real("fit_to");
   report_.steady_from = p.real("steady_from");

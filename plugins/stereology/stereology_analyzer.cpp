@@ -3,6 +3,8 @@
 #include <cmath>
 #include <string>
 
+#include "granpipe/stereology.hpp"
+
 namespace granpipe::stereology {
 
 Schema schema() {
@@ -10,21 +12,7 @@ Schema schema() {
   s.real("step", 0.1, "width of the bins of the vertical and transversal profiles")
       .min(0.0, true)
       .unit("mean radii");
-  s.real("bulk_top", 4.0, "phi_b is the packing fraction between the bottom and this height")
-      .min(0.0, true)
-      .unit("mean radii");
-  s.real("perturbed_top", 1.0,
-         "top of the bottom layer perturbed by the wall, whose fraction phi_c corrects")
-      .min(0.0)
-      .unit("mean radii");
-  s.real("perturbed_factor", 16.0 / 11.0,
-         "phi_c multiplies the bottom layer's fraction by this (the perturbed-zone model's "
-         "16/11 for spheres on a plane; 1: no correction)")
-      .min(0.0, true);
-  s.real("fraction", 0.9,
-         "phi_c's zone reaches the height below which this fraction of the centres lie")
-      .min(0.0, true)
-      .max(1.0);
+  declare_stereology_settings(s);
   s.real("lateral_band", 7.0,
          "the lateral fraction is that within this distance of either side across x, the "
          "central fraction that of the rest")
@@ -86,10 +74,7 @@ StereologyAnalyzer::StereologyAnalyzer(const PluginContext& ctx)
                 "central fractions and their increases over the first frame, Eq. (7) fit"))) {
   const Params& p = ctx.params;
   settings_.step = p.real("step");
-  settings_.global.bulk_top = p.real("bulk_top");
-  settings_.global.perturbed_top = p.real("perturbed_top");
-  settings_.global.perturbed_factor = p.real("perturbed_factor");
-  settings_.global.fraction = p.real("fraction");
+  settings_.global = stereology_settings(p);
   settings_.lateral_band = p.real("lateral_band");
   settings_.fit_from = p.real("fit_from");
 }

@@ -471,7 +471,8 @@ TEST(Pipeline, SharedSweepSeedsGiveEveryPointTheSameRandomNumbers) {
     const std::string text =
         R"({"seed": 9, "source": {"plugin": "random"}, "analyzers": [{"plugin": "meanx"}],
         "output": {"save_frames": false},
-        "sweep": {"seeds": ")" + seeds + R"(", "parameters": {"analyzers[0].params.scale": [1, 1]}}})";
+        "sweep": {"seeds": ")" +
+        seeds + R"(", "parameters": {"analyzers[0].params.scale": [1, 1]}}})";
     const Pipeline p = Pipeline::parse(text, "p.json", {}, r);
     Log log;
     log.set_quiet(true);

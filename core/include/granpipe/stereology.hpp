@@ -8,6 +8,7 @@
 //    phi_c = [factor * Phi(0, R1) R1 + Phi(R1, H) (H - R1)] / H.
 // Heights are above the container's bottom, in mean particle radii R.
 #include "granpipe/frame.hpp"
+#include "granpipe/params.hpp"
 
 namespace granpipe {
 
@@ -24,6 +25,11 @@ struct GlobalFractions {
   double phi_c = 0.0;     // NaN when the zone is not above the perturbed layer
   double height_c = 0.0;  // H, the top of phi_c's zone above the bottom (length)
 };
+
+// The four settings as parameters of an analyzer's schema (bulk_top, perturbed_top,
+// perturbed_factor, fraction), and read back from its validated parameters.
+void declare_stereology_settings(Schema& schema);
+StereologySettings stereology_settings(const Params& params);
 
 // Throws InputError for a container that is not a box (the cuts need a rectangular
 // cross-section).
