@@ -55,7 +55,7 @@ DelaunayCell cell_of(const Delaunay::Cell_handle& c) {
 std::string id_of(const Frame& f, std::uint32_t k) { return std::to_string(f.id()[k]); }
 
 // The triangulation keeps one vertex per position: a particle without one shares it.
-void refuse_duplicates(const Frame& f, const Delaunay& t,
+void refuse_duplicates(const Frame& f, const Centres& centres, const Delaunay& t,
                        const std::vector<std::pair<Point, std::uint32_t>>& points,
                        const std::string& where) {
   if (t.number_of_vertices() == points.size()) return;
@@ -65,25 +65,27 @@ void refuse_duplicates(const Frame& f, const Delaunay& t,
   for (const auto& [p, k] : points) {
     if (kept[k]) continue;
     throw InputError(where + ": expected distinct particle centres, got particles " +
-                     id_of(f, t.nearest_vertex(p)->info()) + " and " + id_of(f, k) +
-                     " at one position");
+                     id_of(f, centres.particle[t.nearest_vertex(p)->info()]) + " and " +
+                     id_of(f, centres.particle[k]) + " at one position");
   }
 }
 
 }  // namespace
 
-std::vector<DelaunayCell> delaunay_cells(const Frame& frame, const std::string& where) {
-  if (frame.size() > Eigen::Index{UINT32_MAX}) {
-    throw InputError(where + ": expected fewer than 2^32 particles, got " +
-                     std::to_string(frame.size()));
+std::vector<DelaunayCell> delaunay_cells(const Centres& centres, const Frame& frame,
+                                         const std::string& where) {
+  if (centres.points.size() > std::size_t{UINT32_MAX}) {
+    throw InputError(where + ": expected fewer than 2^32 centres and images, got " +
+                     std::to_string(centres.points.size()));
   }
   std::vector<std::pair<Point, std::uint32_t>> points;
-  points.reserve(static_cast<std::size_t>(frame.size()));
-  const auto& x = frame.position();
-  for (Eigen::Index k = 0; k < frame.size(); ++k)
-    points.emplace_back(Point(x(k, 0), x(k, 1), x(k, 2)), static_cast<std::uint32_t>(k));
+  points.reserve(centres.points.size());
+  for (std::size_t k = 0; k < centres.points.size(); ++k) {
+    const Eigen::Vector3d& x = centres.points[k];
+    points.emplace_back(Point(x[0], x[1], x[2]), static_cast<std::uint32_t>(k));
+  }
   const Delaunay t(points.begin(), points.end());
-  refuse_duplicates(frame, t, points, where);
+  refuse_duplicates(frame, centres, t, points, where);
   if (t.dimension() < 3) {
     throw InputError(where + ": expected particle centres spanning a volume, got all of them " +
                      (t.dimension() == 2 ? "in one plane" : "on one line"));

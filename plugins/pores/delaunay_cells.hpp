@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "granpipe/frame.hpp"
+#include "periodic_images.hpp"
 
 namespace granpipe::pores {
 
@@ -15,8 +16,10 @@ struct DelaunayCell {
   double height = 0.0;     // how far the cell is from flat
 };
 
-// Throws InputError after `where` for two particles at one
-// position (naming both) and centres that span no volume (all coplanar or collinear).
-std::vector<DelaunayCell> delaunay_cells(const Frame& frame, const std::string& where);
+// The cells of `centres` (the frame names their particles). Throws InputError after
+// `where` for two particles at one position (naming both) and centres that span no
+// volume (all coplanar or collinear).
+std::vector<DelaunayCell> delaunay_cells(const Centres& centres, const Frame& frame,
+                                         const std::string& where);
 
 }  // namespace granpipe::pores

@@ -1,7 +1,8 @@
 #pragma once
 // The pores of one frame of equal spheres: each Delaunay cell of the centres (cells of
 // one circumsphere merged) gives the sphere touching its four particles, of radius
-// r = circumradius - R; xi = r / R.
+// r = circumradius - R; xi = r / R. Along periodic sides the centres are triangulated
+// with their images near the sides, and each pore is counted once.
 #include <optional>
 #include <string>
 #include <vector>
@@ -29,8 +30,8 @@ struct PoreMeasurement {
 };
 
 // Throws InputError after `where` for a frame the pores cannot be measured on: not 3D,
-// fewer than four particles, NaN or infinite coordinates, a periodic side, unequal radii, and the
-// cases of delaunay_cells and pore_region.
+// fewer than four particles, NaN or infinite coordinates, unequal radii, a periodic box
+// narrower than its pores, and the cases of delaunay_cells and pore_region.
 PoreMeasurement measure_pores(const Frame& frame, const PoreSettings& settings,
                               const std::string& where);
 

@@ -1,5 +1,6 @@
 #include "pore_region.hpp"
 
+#include <limits>
 #include <sstream>
 
 #include "granpipe/errors.hpp"
@@ -46,11 +47,17 @@ std::optional<Region> pore_region(const Frame& frame, const RegionSettings& s, d
   Region r;
   r.dim = 3;
   for (int a = 0; a < 3; ++a) {
-    const double margin = frame.container.periodic(a) ? 0.0 : s.margin * radius;
-    r.lo[a] = side(frame, a, 0) + margin;
-    r.hi[a] = side(frame, a, 1) - margin;
+    // Along a periodic axis every pore is in the region once (measure_pores picks one image).
+    const double reach =
+        frame.container.periodic(a) ? std::numeric_limits<double>::infinity() : -s.margin * radius;
+    r.lo[a] = side(frame, a, 0) - reach;
+    r.hi[a] = side(frame, a, 1) + reach;
   }
   const double top = r.hi[2];
+  if (s.height > 0.0 && frame.container.periodic(2)) {
+    throw InputError(where + ": expected height 0 for a container periodic along z, got " +
+                     std::to_string(s.height));
+  }
   if (s.height > 0.0) r.hi[2] = r.lo[2] + s.height * radius;
   check_inside(r, top, s, where);
   return r;

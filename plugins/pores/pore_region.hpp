@@ -22,10 +22,11 @@ struct RegionSettings {
   double height = 0.0;  // particle radii above the region's bottom; 0: up to the top
 };
 
-// Nothing for kind All. For Inner, the box container shrunk by `margin` radii on every
-// side, its top the container's or, for an open top, the highest particle top, and
-// `height` radii high when height > 0. Throws InputError after `where` for a cylinder, and
-// for a region of no volume or reaching above that top.
+// Nothing for kind All. For Inner, the box container shrunk by `margin` radii from every
+// wall (unbounded along periodic axes), its top the container's or, for an open top, the
+// highest particle top, and `height` radii high when height > 0. Throws InputError after
+// `where` for a cylinder, for a region of no volume or reaching above that top, and for a
+// height along a periodic z.
 std::optional<Region> pore_region(const Frame& frame, const RegionSettings& settings, double radius,
                                   const std::string& where);
 

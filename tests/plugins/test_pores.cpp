@@ -140,6 +140,26 @@ TEST(Pores, BccHasSixDistortedTetrahedralSitesPerSphere) {
   expect_kinds(m, {{std::sqrt(5.0 / 3.0) - 1.0, 6}}, "bcc");
 }
 
+// A periodic box of whole cells: every sphere and every pore once, also those exactly on
+// the box's sides, wherever the crystal sits in the box.
+TEST(Pores, PeriodicCrystalsCountEachPoreOnce) {
+  const std::vector<std::pair<Crystal, std::vector<Kind>>> crystals{
+      {fcc(), {{kTetrahedral, 2}, {kOctahedral, 1}}},
+      {hcp(), {{kTetrahedral, 2}, {kOctahedral, 1}}},
+      {sc(), {{std::sqrt(3.0) - 1.0, 1}}},
+      {bcc(), {{std::sqrt(5.0 / 3.0) - 1.0, 6}}}};
+  for (const auto& [c, kinds] : crystals) {
+    for (double offset : {0.0, 0.37}) {
+      Frame f = crystal_frame(c, 3);
+      f.container = granpipe::Container::periodic_box(3, {0, 0, 0}, 3 * c.cell);
+      f.position().rowwise() += offset * c.cell.transpose().array();
+      const PoreMeasurement m = measure_pores(f, std::nullopt, 1e-9, "test");
+      EXPECT_EQ(m.spheres, f.size());
+      expect_kinds(m, kinds, "periodic, offset " + std::to_string(offset));
+    }
+  }
+}
+
 TEST(Pores, FourTouchingSpheresMakeOneTetrahedralPore) {
   Frame f;
   f.resize(4, 3);
@@ -307,9 +327,13 @@ TEST(Pores, BadInputIsRefusedWithOneLine) {
   nan.position()(3, 1) = std::numeric_limits<double>::quiet_NaN();
   EXPECT_NE(refusal(nan), "accepted");
 
-  Frame periodic = f;
-  periodic.container.boundary[0] = {granpipe::Boundary::Periodic, granpipe::Boundary::Periodic};
-  EXPECT_NE(refusal(periodic).find("periodic"), std::string::npos);
+  Frame tiny;  // a periodic slab far thinner than the pores between its spheres
+  tiny.resize(4, 3);
+  tiny.radius().setConstant(0.1);
+  tiny.position() << 0.2, 10, 10, 0.5, 20, 10, 0.7, 10, 30, 0.3, 40, 40;
+  tiny.container = granpipe::Container::periodic_box(3, {0, 0, 0}, {1, 100, 100});
+  EXPECT_NE(refusal(tiny).find("expected periodic sides longer than the pores"), std::string::npos)
+      << refusal(tiny);
 
   Frame unequal = f;
   unequal.radius()[0] = 0.9;
