@@ -1,0 +1,42 @@
+#pragma once
+// The pores of one frame of equal spheres: each Delaunay cell of the centres (cells of
+// one circumsphere merged) gives the sphere touching its four particles, of radius
+// r = circumradius - R; xi = r / R. Along periodic sides the centres are triangulated
+// with their images near the sides, and each pore is counted once.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "granpipe/frame.hpp"
+#include "granpipe/region.hpp"
+#include "pore_region.hpp"
+
+namespace granpipe::pores {
+
+// Relative spread of the radii still taken as one radius (radii stored in single precision).
+constexpr double kEqualRadii = 1e-6;
+
+struct PoreSettings {
+  double tolerance = 1e-9;  // same sphere, flat cell: relative to the particle radius
+  RegionSettings region;
+};
+
+struct PoreMeasurement {
+  double radius = 0.0;     // R, the particles' radius
+  std::vector<double> xi;  // of the pores counted (centre in the region)
+  long spheres = 0;        // particle centres in the region
+  long cells = 0;          // Delaunay cells, all of them
+  long flat_cells = 0;     // of them, left out as flat
+};
+
+// Throws InputError after `where` for a frame the pores cannot be measured on: not 3D,
+// fewer than four particles, NaN or infinite coordinates, unequal radii, a periodic box
+// narrower than its pores, and the cases of delaunay_cells and pore_region.
+PoreMeasurement measure_pores(const Frame& frame, const PoreSettings& settings,
+                              const std::string& where);
+
+// With the region given (nothing: every pore and every particle).
+PoreMeasurement measure_pores(const Frame& frame, const std::optional<Region>& region,
+                              double tolerance, const std::string& where);
+
+}  // namespace granpipe::pores

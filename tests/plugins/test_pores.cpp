@@ -1,0 +1,347 @@
+// The pores analyzer on crystals built here: the exact pore sizes and counts per sphere of
+// fcc, hcp, sc and bcc (degenerate sites merged into one pore, whatever the triangulation's
+// tie-breaking), the same counts after a jitter far below the tolerance, Bernal's holes,
+// the region, and the inputs refused.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "bernal_holes.hpp"
+#include "granpipe/errors.hpp"
+#include "measure_pores.hpp"
+#include "plugin_harness.hpp"
+#include "pore_region.hpp"
+#include "pore_statistics.hpp"
+
+namespace {
+
+using granpipe::Frame;
+using granpipe::InputError;
+using granpipe::Region;
+using granpipe::pores::measure_pores;
+using granpipe::pores::PoreMeasurement;
+
+const double kTetrahedral = std::sqrt(1.5) - 1.0;
+const double kOctahedral = std::sqrt(2.0) - 1.0;
+
+// A crystal of cells[a] rectangular unit cells per axis, `cell` and `basis` in radii.
+struct Crystal {
+  Eigen::Vector3d cell;
+  std::vector<Eigen::Vector3d> basis;
+};
+
+Crystal fcc() {
+  const double a = 2.0 * std::sqrt(2.0);
+  return {{a, a, a}, {{0, 0, 0}, {a / 2, a / 2, 0}, {a / 2, 0, a / 2}, {0, a / 2, a / 2}}};
+}
+Crystal hcp() {  // orthohexagonal cell, layers stacked along z
+  const double s3 = std::sqrt(3.0), c = std::sqrt(8.0 / 3.0);
+  return {{2, 2 * s3, 2 * c}, {{0, 0, 0}, {1, s3, 0}, {1, s3 / 3, c}, {0, s3 / 3 + s3, c}}};
+}
+Crystal sc() { return {{2, 2, 2}, {{0, 0, 0}}}; }
+Crystal bcc() {
+  const double a = 4.0 / std::sqrt(3.0);
+  return {{a, a, a}, {{0, 0, 0}, {a / 2, a / 2, a / 2}}};
+}
+
+// Walls around the particles: a container of no periodic side.
+Frame crystal_frame(const Crystal& c, int cells, double radius = 1.0) {
+  Frame f;
+  f.resize(static_cast<Eigen::Index>(c.basis.size()) * cells * cells * cells, 3);
+  f.radius().setConstant(radius);
+  Eigen::Index k = 0;
+  for (int i = 0; i < cells; ++i)
+    for (int j = 0; j < cells; ++j)
+      for (int l = 0; l < cells; ++l)
+        for (const auto& b : c.basis) {
+          const Eigen::Vector3d site(i, j, l);
+          f.position().row(k++) = radius * (site.cwiseProduct(c.cell) + b).transpose();
+        }
+  for (int a = 0; a < 3; ++a) {
+    f.container.lo[a] = f.position().col(a).minCoeff() - radius;
+    f.container.hi[a] = f.position().col(a).maxCoeff() + radius;
+  }
+  return f;
+}
+
+// Unit cells `from` to `to` of the crystal, shifted by a tenth of a cell so that no
+// particle and no pore lies on its sides: it holds whole cells' worth of each.
+Region inner_cells(const Crystal& c, int from, int to, double radius = 1.0) {
+  Region r;
+  for (int a = 0; a < 3; ++a) {
+    r.lo[a] = radius * c.cell[a] * (from + 0.1);
+    r.hi[a] = radius * c.cell[a] * (to + 0.1);
+  }
+  return r;
+}
+
+long count_near(const std::vector<double>& xi, double value, double tolerance) {
+  return std::count_if(xi.begin(), xi.end(),
+                       [&](double x) { return std::abs(x - value) <= tolerance; });
+}
+
+struct Kind {
+  double xi;
+  long per_sphere;
+};
+
+// Every pore is of one of the kinds, in the given numbers per sphere, to 1e-9.
+void expect_kinds(const PoreMeasurement& m, const std::vector<Kind>& kinds,
+                  const std::string& name) {
+  ASSERT_GT(m.spheres, 0) << name;
+  long all = 0;
+  for (const Kind& k : kinds) {
+    EXPECT_EQ(count_near(m.xi, k.xi, 1e-9), k.per_sphere * m.spheres) << name << " xi " << k.xi;
+    all += k.per_sphere * m.spheres;
+  }
+  EXPECT_EQ(static_cast<long>(m.xi.size()), all) << name;
+}
+
+PoreMeasurement inner(const Crystal& c, int cells, const Frame& f) {
+  return measure_pores(f, inner_cells(c, 2, cells - 2, f.radius()[0]), 1e-9, "test");
+}
+
+TEST(Pores, FccHasTetrahedralAndOctahedralSites) {
+  for (double radius : {1e-3, 1.0, 1e3}) {
+    const Frame f = crystal_frame(fcc(), 6, radius);
+    const PoreMeasurement m = inner(fcc(), 6, f);
+    EXPECT_EQ(m.spheres, 4 * 8);
+    expect_kinds(m, {{kTetrahedral, 2}, {kOctahedral, 1}}, "fcc radius " + std::to_string(radius));
+  }
+}
+
+TEST(Pores, HcpHasTheSameSitesAsFcc) {
+  const Frame f = crystal_frame(hcp(), 6);
+  const PoreMeasurement m = inner(hcp(), 6, f);
+  EXPECT_EQ(m.spheres, 4 * 8);
+  expect_kinds(m, {{kTetrahedral, 2}, {kOctahedral, 1}}, "hcp");
+}
+
+TEST(Pores, SimpleCubicHasOneCubicSitePerSphere) {
+  const PoreMeasurement m = inner(sc(), 7, crystal_frame(sc(), 7));
+  EXPECT_EQ(m.spheres, 27);
+  expect_kinds(m, {{std::sqrt(3.0) - 1.0, 1}}, "sc");
+}
+
+// BCC's Delaunay cells are tetrahedra with two corners on a cube edge and two at the
+// centres of the cubes beside it: circumradius sqrt(5)/4 a with a = 4R/sqrt(3), so
+// xi = sqrt(5/3) - 1, six per sphere (the 24 vertices of the truncated octahedron, each
+// shared by four cells).
+TEST(Pores, BccHasSixDistortedTetrahedralSitesPerSphere) {
+  const PoreMeasurement m = inner(bcc(), 6, crystal_frame(bcc(), 6));
+  EXPECT_EQ(m.spheres, 2 * 8);
+  expect_kinds(m, {{std::sqrt(5.0 / 3.0) - 1.0, 6}}, "bcc");
+}
+
+// A periodic box of whole cells: every sphere and every pore once, also those exactly on
+// the box's sides, wherever the crystal sits in the box.
+TEST(Pores, PeriodicCrystalsCountEachPoreOnce) {
+  const std::vector<std::pair<Crystal, std::vector<Kind>>> crystals{
+      {fcc(), {{kTetrahedral, 2}, {kOctahedral, 1}}},
+      {hcp(), {{kTetrahedral, 2}, {kOctahedral, 1}}},
+      {sc(), {{std::sqrt(3.0) - 1.0, 1}}},
+      {bcc(), {{std::sqrt(5.0 / 3.0) - 1.0, 6}}}};
+  for (const auto& [c, kinds] : crystals) {
+    for (double offset : {0.0, 0.37}) {
+      Frame f = crystal_frame(c, 3);
+      f.container = granpipe::Container::periodic_box(3, {0, 0, 0}, 3 * c.cell);
+      f.position().rowwise() += offset * c.cell.transpose().array();
+      const PoreMeasurement m = measure_pores(f, std::nullopt, 1e-9, "test");
+      EXPECT_EQ(m.spheres, f.size());
+      expect_kinds(m, kinds, "periodic, offset " + std::to_string(offset));
+    }
+  }
+}
+
+TEST(Pores, FourTouchingSpheresMakeOneTetrahedralPore) {
+  Frame f;
+  f.resize(4, 3);
+  f.radius().setConstant(0.5);
+  const double s = 1.0 / std::sqrt(2.0);  // the corners of a cube alternately: edge 1
+  f.position() << s, s, s, s, -s, -s, -s, s, -s, -s, -s, s;
+  f.position() *= 0.5;
+  f.container.lo.setConstant(-2);
+  f.container.hi.setConstant(2);
+  const PoreMeasurement m = measure_pores(f, std::nullopt, 1e-9, "test");
+  ASSERT_EQ(m.xi.size(), 1u);
+  EXPECT_NEAR(m.xi[0], kTetrahedral, 1e-12);
+  EXPECT_EQ(m.spheres, 4);
+}
+
+// The same crystal with its particles in another order: the triangulation splits the
+// degenerate sites otherwise, the pores are the same.
+TEST(Pores, CountsDoNotDependOnTheTriangulationsTieBreaking) {
+  for (const Crystal& c : {fcc(), sc()}) {
+    const Frame f = crystal_frame(c, 6);
+    Frame shuffled = f;
+    std::vector<Eigen::Index> order(static_cast<std::size_t>(f.size()));
+    std::iota(order.begin(), order.end(), 0);
+    std::shuffle(order.begin(), order.end(), std::mt19937(5));
+    for (Eigen::Index k = 0; k < f.size(); ++k)
+      shuffled.position().row(k) = f.position().row(order[static_cast<std::size_t>(k)]);
+    const PoreMeasurement a = inner(c, 6, f), b = inner(c, 6, shuffled);
+    ASSERT_EQ(a.xi.size(), b.xi.size());
+    std::vector<double> xa = a.xi, xb = b.xi;
+    std::sort(xa.begin(), xa.end());
+    std::sort(xb.begin(), xb.end());
+    for (std::size_t k = 0; k < xa.size(); ++k) EXPECT_NEAR(xa[k], xb[k], 1e-12);
+  }
+}
+
+// Displacements of 1e-12 R make the degenerate sites non-degenerate, split them into
+// cells of slightly different spheres and add slivers: none of it is a new pore.
+TEST(Pores, AJitterBelowTheToleranceChangesNoCount) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> shift(-1e-12, 1e-12);
+  struct Case {
+    Crystal crystal;
+    std::vector<Kind> kinds;
+    bool degenerate;  // sites of more than four cospherical particles
+  };
+  const std::vector<Case> cases{{fcc(), {{kTetrahedral, 2}, {kOctahedral, 1}}, true},
+                                {sc(), {{std::sqrt(3.0) - 1.0, 1}}, true},
+                                {bcc(), {{std::sqrt(5.0 / 3.0) - 1.0, 6}}, false}};
+  for (const auto& [c, kinds, degenerate] : cases) {
+    Frame f = crystal_frame(c, 6);
+    for (Eigen::Index k = 0; k < f.size(); ++k)
+      for (int a = 0; a < 3; ++a) f.position()(k, a) += shift(rng);
+    const std::size_t merged = inner(c, 6, f).xi.size();
+    expect_kinds(inner(c, 6, f), kinds, "jittered");
+    // A tolerance below the jitter sees the pieces of the split sites as pores.
+    const std::size_t resolved = measure_pores(f, inner_cells(c, 2, 4), 1e-14, "test").xi.size();
+    if (degenerate) {
+      EXPECT_GT(resolved, merged);
+    } else {
+      EXPECT_EQ(resolved, merged);
+    }
+  }
+}
+
+TEST(Pores, FccPoresAreTwoThirdsTetrahedraByNumber) {
+  granpipe::pores::PoreStatistics stats(0.01, 1.0);
+  stats.add(inner(fcc(), 6, crystal_frame(fcc(), 6)));
+  const auto& counts = stats.hole_counts();
+  EXPECT_EQ(counts[0], 64);  // tetrahedra
+  EXPECT_EQ(counts[2], 32);  // octahedra
+  EXPECT_EQ(stats.pores(), 96);
+  const double t3 = std::pow(kTetrahedral, 3), o3 = std::pow(kOctahedral, 3);
+  EXPECT_NEAR(stats.nu(), (2 * t3 + o3) / 3, 1e-12);
+  EXPECT_NEAR(stats.hole_volumes()[2] / (64 * t3 + 32 * o3), o3 / (2 * t3 + o3), 1e-12);
+  const auto& bins = stats.counts();
+  EXPECT_EQ(bins[static_cast<std::size_t>(kTetrahedral / 0.01)], 64);
+  EXPECT_EQ(bins[static_cast<std::size_t>(kOctahedral / 0.01)], 32);
+}
+
+TEST(Pores, PoresAreNearTheirCanonicalHole) {
+  using granpipe::pores::nearest_hole;
+  EXPECT_EQ(nearest_hole(kTetrahedral), 0u);
+  EXPECT_EQ(nearest_hole(0.36), 1u);
+  EXPECT_EQ(nearest_hole(kOctahedral), 2u);
+  EXPECT_EQ(nearest_hole(std::sqrt(7.0 / 3.0) - 1.0), 3u);  // the regular trigonal prism
+  EXPECT_EQ(nearest_hole(0.65), 4u);
+  EXPECT_EQ(nearest_hole(0.1), 5u);  // overlapping spheres
+  EXPECT_EQ(nearest_hole(0.9), 5u);  // near a wall or the free surface
+}
+
+TEST(Pores, InnerRegionKeepsItsMarginFromTheWalls) {
+  Frame f = crystal_frame(sc(), 5);  // centres 0..8, walls at -1 and 9
+  granpipe::pores::RegionSettings s{granpipe::pores::RegionKind::Inner, 2.0, 3.0};
+  const auto r = granpipe::pores::pore_region(f, s, 1.0, "test");
+  ASSERT_TRUE(r);
+  EXPECT_DOUBLE_EQ(r->lo[0], 1.0);
+  EXPECT_DOUBLE_EQ(r->hi[1], 7.0);
+  EXPECT_DOUBLE_EQ(r->lo[2], 1.0);
+  EXPECT_DOUBLE_EQ(r->hi[2], 4.0);
+  s.height = 8.0;  // above the top of the packing
+  EXPECT_THROW(granpipe::pores::pore_region(f, s, 1.0, "test"), InputError);
+  s.kind = granpipe::pores::RegionKind::All;
+  EXPECT_FALSE(granpipe::pores::pore_region(f, s, 1.0, "test"));
+}
+
+// The analyzer as a pipeline runs it.
+TEST(Pores, AnalyzerPoolsFrames) {
+  const auto ctx = granpipe::test::make_context("pores", {{"region", "inner"}, {"margin", 3.0}});
+  auto analyzer = granpipe::test::installed_plugins().find("pores")->make_analyzer(*ctx);
+  const Frame f = crystal_frame(fcc(), 5);
+  granpipe::FrameCache cache;
+  analyzer->consume(f, cache);
+  analyzer->consume(f, cache);
+  granpipe::Results results;
+  analyzer->finish(results);
+  EXPECT_EQ(results.scalar("frames").value, 2);
+  const double pores = results.scalar("pores").value;
+  EXPECT_GT(pores, 0);
+  const auto& counts = results.tables().at("bernal").column("count");
+  EXPECT_EQ(counts[0] + counts[2], pores);  // tetrahedra and octahedra only
+  EXPECT_EQ(results.tables().at("per_frame").rows(), 2u);
+}
+
+std::string refusal(const Frame& f) {
+  try {
+    measure_pores(f, std::nullopt, 1e-9, "test");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "accepted";
+}
+
+Frame square_layer() {  // 3 x 3 centres in the plane z = 0
+  Frame f;
+  f.resize(9, 3);
+  f.radius().setConstant(1.0);
+  for (Eigen::Index k = 0; k < 9; ++k) f.position().row(k) << 2.0 * (k % 3), 2.0 * (k / 3), 0.0;
+  f.container.lo.setConstant(-1);
+  f.container.hi.setConstant(5);
+  return f;
+}
+
+TEST(Pores, BadInputIsRefusedWithOneLine) {
+  Frame f = crystal_frame(sc(), 2);
+  EXPECT_EQ(refusal(f), "accepted");
+
+  Frame three = f;
+  three.resize(3, 3);  // at the origin, of radius 0
+  three.radius().setConstant(1.0);
+  three.position().col(0) << 0, 2, 4;
+  EXPECT_NE(refusal(three).find("expected at least 4 particles"), std::string::npos);
+
+  Frame duplicate = f;
+  duplicate.position().row(5) = duplicate.position().row(2);
+  EXPECT_NE(refusal(duplicate).find("particles 2 and 5 at one position"), std::string::npos)
+      << refusal(duplicate);
+
+  EXPECT_NE(refusal(square_layer()).find("in one plane"), std::string::npos);
+  Frame line = square_layer();
+  line.position().col(1).setZero();
+  line.position().col(0) = Eigen::ArrayXd::LinSpaced(9, 0, 16);
+  EXPECT_NE(refusal(line).find("on one line"), std::string::npos) << refusal(line);
+
+  Frame nan = f;
+  nan.position()(3, 1) = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_NE(refusal(nan), "accepted");
+
+  Frame tiny;  // a periodic slab far thinner than the pores between its spheres
+  tiny.resize(4, 3);
+  tiny.radius().setConstant(0.1);
+  tiny.position() << 0.2, 10, 10, 0.5, 20, 10, 0.7, 10, 30, 0.3, 40, 40;
+  tiny.container = granpipe::Container::periodic_box(3, {0, 0, 0}, {1, 100, 100});
+  EXPECT_NE(refusal(tiny).find("expected periodic sides longer than the pores"), std::string::npos)
+      << refusal(tiny);
+
+  Frame unequal = f;
+  unequal.radius()[0] = 0.9;
+  EXPECT_NE(refusal(unequal).find("expected equal radii"), std::string::npos);
+  for (const std::string& message :
+       {refusal(three), refusal(duplicate), refusal(nan), refusal(unequal)}) {
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+}
+
+}  // namespace
