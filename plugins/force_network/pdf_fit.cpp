@@ -1,15 +1,11 @@
 #include "pdf_fit.hpp"
 
-#include <gsl/gsl_blas.h>
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_multifit_nlinear.h>
-
+#include <algorithm>
 #include <cmath>
-#include <limits>
-#include <memory>
-#include <mutex>
 #include <numbers>
 #include <vector>
+
+#include "granpipe/curve_fit.hpp"
 
 namespace granpipe::force_network {
 
@@ -25,129 +21,66 @@ Parameters eq13_gradient(const Parameters& p, double f) {
           -2.0 * p[kA] * p[kB] * u * bump * decay, -(f - p[kGamma]) * value, p[kBeta] * value};
 }
 
-// What the minimiser sees: the histogram, the fixed values and which parameters it moves.
-struct Problem {
+// What the fitter sees: x is a bin's index and the model's value there its mean over the
+// bin (Simpson's rule), which the histogram measures; only the free parameters move.
+struct BinMeanModel {
   const ForcePdf& pdf;
   Parameters fixed;
-  std::vector<int> moved;  // the parameter of each entry of the minimiser's vector
+  std::vector<int> moved;  // the parameter of each entry of the fitter's vector
 
-  Parameters parameters(const gsl_vector* x) const {
+  Parameters parameters(const Eigen::VectorXd& x) const {
     Parameters p = fixed;
-    for (std::size_t m = 0; m < moved.size(); ++m) p[moved[m]] = gsl_vector_get(x, m);
+    for (std::size_t m = 0; m < moved.size(); ++m) p[moved[m]] = x[static_cast<Eigen::Index>(m)];
     return p;
   }
-  // Poisson error of bin k; an empty bin counts as one, so that no weight is infinite.
-  double sigma(std::size_t k) const {
-    return std::sqrt(std::max(pdf.counts[k], 1.0)) /
-           (static_cast<double>(pdf.samples) * pdf.width(k));
+  template <class F>
+  auto simpson(double x, F&& f) const {
+    const auto k = static_cast<std::size_t>(x);
+    return (f(pdf.edges[k]) + 4.0 * f(pdf.centre(k)) + f(pdf.edges[k + 1])) / 6.0;
+  }
+  CurveModel model() const {
+    return {[this](const Eigen::VectorXd& x, double bin) {
+              const Parameters p = parameters(x);
+              return simpson(bin, [&](double f) { return eq13(p, f); });
+            },
+            [this](const Eigen::VectorXd& x, double bin) {
+              const Parameters p = parameters(x);
+              Eigen::VectorXd g(static_cast<Eigen::Index>(moved.size()));
+              for (std::size_t m = 0; m < moved.size(); ++m) {
+                g[static_cast<Eigen::Index>(m)] =
+                    simpson(bin, [&](double f) { return eq13_gradient(p, f)[moved[m]]; });
+              }
+              return g;
+            }};
   }
 };
 
-int residuals(const gsl_vector* x, void* data, gsl_vector* r) {
-  const auto& problem = *static_cast<const Problem*>(data);
-  const Parameters p = problem.parameters(x);
-  const ForcePdf& pdf = problem.pdf;
-  for (std::size_t k = 0; k < pdf.bins(); ++k) {
-    // Simpson's rule: the model's mean over the bin, which the histogram measures.
-    const double mean =
-        (eq13(p, pdf.edges[k]) + 4.0 * eq13(p, pdf.centre(k)) + eq13(p, pdf.edges[k + 1])) / 6.0;
-    gsl_vector_set(r, k, (mean - pdf.density(k)) / problem.sigma(k));
+FitStatus status_of(CurveFitStatus s) {
+  switch (s) {
+    case CurveFitStatus::Fitted:
+      return FitStatus::Fitted;
+    case CurveFitStatus::TooFewPoints:
+      return FitStatus::TooFewSamples;
+    case CurveFitStatus::NotConverged:
+      return FitStatus::NotConverged;
+    case CurveFitStatus::NotDetermined:
+      return FitStatus::NotDetermined;
   }
-  return GSL_SUCCESS;
+  return FitStatus::NotConverged;
 }
 
-int jacobian(const gsl_vector* x, void* data, gsl_matrix* jac) {
-  const auto& problem = *static_cast<const Problem*>(data);
-  const Parameters p = problem.parameters(x);
-  const ForcePdf& pdf = problem.pdf;
-  for (std::size_t k = 0; k < pdf.bins(); ++k) {
-    const Parameters lo = eq13_gradient(p, pdf.edges[k]), mid = eq13_gradient(p, pdf.centre(k)),
-                     hi = eq13_gradient(p, pdf.edges[k + 1]);
-    for (std::size_t m = 0; m < problem.moved.size(); ++m) {
-      const int q = problem.moved[m];
-      gsl_matrix_set(jac, k, m, (lo[q] + 4.0 * mid[q] + hi[q]) / 6.0 / problem.sigma(k));
-    }
-  }
-  return GSL_SUCCESS;
-}
-
-// GSL's default handler aborts the process on a numerical error; a fit that fails must
-// instead come back as "not converged", so GSL reports by return codes in this process.
-void gsl_reports_by_return_codes() {
-  static std::once_flag once;
-  std::call_once(once, [] { gsl_set_error_handler_off(); });
-}
-
-struct WorkspaceFree {
-  void operator()(gsl_multifit_nlinear_workspace* w) const { gsl_multifit_nlinear_free(w); }
-};
-struct MatrixFree {
-  void operator()(gsl_matrix* m) const { gsl_matrix_free(m); }
-};
-
-// Fills fit.value, fit.error, chi2 from a converged workspace; false when any is not finite.
-bool read_solution(gsl_multifit_nlinear_workspace* w, const Problem& problem, PdfFit& fit) {
-  const std::size_t p = problem.moved.size();
-  const std::unique_ptr<gsl_matrix, MatrixFree> covariance(gsl_matrix_alloc(p, p));
-  if (gsl_multifit_nlinear_covar(gsl_multifit_nlinear_jac(w), 0.0, covariance.get()) != GSL_SUCCESS)
-    return false;
-  const double norm = gsl_blas_dnrm2(gsl_multifit_nlinear_residual(w));
-  fit.chi2 = norm * norm;
-  const double scale = std::max(1.0, fit.chi2 / fit.dof);
-  fit.value = problem.parameters(gsl_multifit_nlinear_position(w));
-  fit.fitted_parameters = problem.moved;
-  fit.covariance.resize(static_cast<Eigen::Index>(p), static_cast<Eigen::Index>(p));
-  for (std::size_t m = 0; m < p; ++m) {
-    for (std::size_t l = 0; l < p; ++l) {
-      fit.covariance(static_cast<Eigen::Index>(m), static_cast<Eigen::Index>(l)) =
-          scale * gsl_matrix_get(covariance.get(), m, l);
-    }
-    fit.error[problem.moved[m]] =
-        std::sqrt(fit.covariance(static_cast<Eigen::Index>(m), static_cast<Eigen::Index>(m)));
-  }
-  bool finite = std::isfinite(fit.chi2);
-  for (int q = 0; q < kParameters; ++q) {
-    finite = finite && std::isfinite(fit.value[q]) && std::isfinite(fit.error[q]);
-  }
-  return finite && fit.covariance.allFinite();
-}
-
-// Below this reciprocal condition number of the Jacobian, J^T J's is below the double
-// precision: the covariance, and the errors, are rounding noise. That is a parameter the
-// data do not determine, such as the alpha of a bump that the minimiser moved out of the
-// bins (errors of 1e8 and more, where determined fits have rcond above 0.01).
-const double kMinRcond = std::sqrt(std::numeric_limits<double>::epsilon());
-
-// Whether the converged workspace's parameters are all determined by the data.
-bool determined(const gsl_multifit_nlinear_workspace* w) {
-  double rcond = 0.0;
-  return gsl_multifit_nlinear_rcond(&rcond, w) == GSL_SUCCESS && rcond >= kMinRcond;
-}
-
-// Runs the trust-region minimiser from `start`: Fitted when it converged to finite values
-// and errors of determined parameters, which it leaves in `fit` (whose dof is set).
-FitStatus minimise(Problem& problem, const Parameters& start, PdfFit& fit) {
-  gsl_reports_by_return_codes();
-  const std::size_t n = problem.pdf.bins(), p = problem.moved.size();
-  gsl_multifit_nlinear_fdf fdf{};
-  fdf.f = residuals;
-  fdf.df = jacobian;
-  fdf.n = n;
-  fdf.p = p;
-  fdf.params = &problem;
-  const gsl_multifit_nlinear_parameters settings = gsl_multifit_nlinear_default_parameters();
-  const std::unique_ptr<gsl_multifit_nlinear_workspace, WorkspaceFree> w(
-      gsl_multifit_nlinear_alloc(gsl_multifit_nlinear_trust, &settings, n, p));
-  std::vector<double> x;
-  for (int q : problem.moved) x.push_back(start[q]);
-  gsl_vector_view x0 = gsl_vector_view_array(x.data(), p);
-  int info = 0;
-  const bool converged = gsl_multifit_nlinear_init(&x0.vector, &fdf, w.get()) == GSL_SUCCESS &&
-                         gsl_multifit_nlinear_driver(500, 1e-10, 1e-10, 0.0, nullptr, nullptr,
-                                                     &info, w.get()) == GSL_SUCCESS;
-  if (!converged) return FitStatus::NotConverged;
-  if (!determined(w.get())) return FitStatus::NotDetermined;
-  return read_solution(w.get(), problem, fit) ? FitStatus::Fitted : FitStatus::NotConverged;
+// The fitter's result in the PDF's parameters: fixed ones at their values, error 0.
+PdfFit pdf_fit_of(const CurveFit& c, const BinMeanModel& m) {
+  PdfFit fit;
+  fit.status = status_of(c.status);
+  fit.value = m.parameters(c.value);
+  for (std::size_t q = 0; q < m.moved.size(); ++q)
+    fit.error[m.moved[q]] = c.error[static_cast<Eigen::Index>(q)];
+  fit.fitted_parameters = m.moved;
+  fit.covariance = c.covariance;
+  fit.chi2 = c.chi2;
+  fit.dof = c.dof;
+  return fit;
 }
 
 }  // namespace
@@ -174,18 +107,27 @@ const char* describe(FitStatus s) {
 }
 
 PdfFit fit_pdf(const ForcePdf& pdf, const FitRequest& request) {
-  Problem problem{pdf, request.start, {}};
+  BinMeanModel model{pdf, request.start, {}};
   for (int q = 0; q < kParameters; ++q) {
-    if (request.free[q]) problem.moved.push_back(q);
+    if (request.free[q]) model.moved.push_back(q);
   }
-  PdfFit fit;
-  const std::size_t n = pdf.bins(), p = problem.moved.size();
-  if (pdf.samples < request.min_samples || n <= p || p == 0) return fit;
-  fit.dof = static_cast<int>(n - p);
-  fit.status = minimise(problem, request.start, fit);
-  if (fit.fitted()) return fit;
+  const std::size_t n = pdf.bins(), p = model.moved.size();
+  if (pdf.samples < request.min_samples || n <= p || p == 0) return {};
+  std::vector<double> bins, density, sigma;
+  for (std::size_t k = 0; k < n; ++k) {
+    bins.push_back(static_cast<double>(k));
+    density.push_back(pdf.density(k));
+    // Poisson error; an empty bin counts as one, so that no weight is infinite.
+    sigma.push_back(std::sqrt(std::max(pdf.counts[k], 1.0)) /
+                    (static_cast<double>(pdf.samples) * pdf.width(k)));
+  }
+  Eigen::VectorXd start(static_cast<Eigen::Index>(p));
+  for (std::size_t m = 0; m < p; ++m)
+    start[static_cast<Eigen::Index>(m)] = request.start[model.moved[m]];
+  const CurveFit c = fit_curve(model.model(), bins, density, sigma, start);
+  if (c.fitted()) return pdf_fit_of(c, model);
   PdfFit none;  // no values from a failed minimisation
-  none.status = fit.status;
+  none.status = status_of(c.status);
   return none;
 }
 

@@ -3,7 +3,7 @@
 //   P(f) = a (1 - b exp(-(f - alpha)^2)) exp(-beta (f - gamma)),
 // of which Eq. (11) is the case alpha = gamma = 0. Any parameter may be held fixed.
 //
-// Weighted non-linear least squares (GSL's gsl_multifit_nlinear, trust region with
+// Weighted non-linear least squares (the core's curve fitter: GSL's trust region with
 // Levenberg–Marquardt steps): the model's mean over each bin (Simpson's rule) against the
 // bin's density, each bin weighted by its Poisson error (an empty bin by the error of one
 // count). The standard errors come from the covariance of the fit, scaled by chi^2/dof
