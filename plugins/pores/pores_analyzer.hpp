@@ -1,5 +1,5 @@
 #pragma once
-// `pores`: the Delaunay pores of packings of equal spheres (docs/pores.md), pooled over
+// `pores`: the Delaunay pores of packings of spheres (docs/pores.md), pooled over
 // frames, with a per-frame series.
 #include "granpipe/plugin.hpp"
 #include "measure_pores.hpp"
