@@ -54,6 +54,11 @@ Region primary_cell(const Container& c, double shift) {
   return r;
 }
 
+long count_inside(const Region& r, const std::vector<Eigen::Vector3d>& points) {
+  return std::count_if(points.begin(), points.end(),
+                       [&](const Eigen::Vector3d& x) { return inside(r, x); });
+}
+
 double shortest_period(const Container& c) {
   double shortest = std::numeric_limits<double>::infinity();
   for (int a = 0; a < 3; ++a)
@@ -71,7 +76,7 @@ TangentCells pore_cells(const Frame& frame, const Radii& radii, double tolerance
                         const std::string& where) {
   const Centres centres = centres_with_images(frame, skin);
   std::vector<DelaunayCell> cells = delaunay_cells(centres, frame, where);
-  if (radii.equal) return {std::move(cells), 0};
+  if (radii.equal) return {std::move(cells), {}};
   return tangent_cells(cells, centres, frame, radii.mean, tolerance * radii.mean);
 }
 
@@ -90,9 +95,9 @@ TriangulatedPores triangulated_pores(const Frame& frame, const Radii& radii, dou
     const TangentCells cells = pore_cells(frame, radii, tolerance, skin, where);
     MergedPores merged = merge_cells(cells.cells, radius, tolerance);
     TriangulatedPores found{{},
-                            static_cast<long>(cells.cells.size()) + cells.untangent,
+                            static_cast<long>(cells.cells.size() + cells.untangent.size()),
                             merged.flat_cells,
-                            cells.untangent};
+                            count_inside(primary, cells.untangent)};
     bool held = true;
     for (const Pore& p : merged.pores) {
       if (!inside(primary, p.centre)) continue;

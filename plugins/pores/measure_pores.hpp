@@ -24,12 +24,14 @@ struct PoreSettings {
 };
 
 struct PoreMeasurement {
-  double radius = 0.0;       // R, the particles' mean radius
-  std::vector<double> xi;    // of the pores counted (centre in the region)
-  long spheres = 0;          // particle centres in the region
-  long cells = 0;            // Delaunay cells, all of them
-  long flat_cells = 0;       // of them, left out as flat
-  long untangent_cells = 0;  // of them, left out for want of a tangent sphere (unequal radii)
+  double radius = 0.0;     // R, the particles' mean radius
+  std::vector<double> xi;  // of the pores counted (centre in the region)
+  long spheres = 0;        // particle centres in the region
+  long cells = 0;          // Delaunay cells, all of them
+  long flat_cells = 0;     // of them, left out as flat
+  // Of them, left out for want of a tangent sphere (unequal radii), with their circumcentre
+  // in the box along periodic axes (not the hull cells of the images).
+  long untangent_cells = 0;
 };
 
 // Throws InputError after `where` for a frame the pores cannot be measured on: not 3D,

@@ -24,7 +24,7 @@ TangentCells tangent_cells(const std::vector<DelaunayCell>& cells, const Centres
     }
     const std::optional<TangentSphere> sphere = tangent_sphere(x, r);
     if (!sphere) {
-      ++tangent.untangent;
+      tangent.untangent.push_back(cell.centre);
       continue;
     }
     DelaunayCell& t = tangent.cells.emplace_back(cell);

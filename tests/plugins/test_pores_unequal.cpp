@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/LU>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <optional>
@@ -154,6 +155,42 @@ TEST(PoresUnequal, FrameOfFourSpheresHasTheTangentPore) {
   ASSERT_EQ(m.xi.size(), 1u);
   EXPECT_NEAR(m.xi[0], rho / 1.5, 1e-12);
   EXPECT_DOUBLE_EQ(m.radius, 1.5);
+}
+
+// Spheres of radii 0.5 to 1 at random without overlap in a periodic box: shifting them all
+// (the images near the sides change, and which image of a pore is kept) changes no pore,
+// and every cell in the box has its tangent sphere (those without are hull cells of the
+// images, far outside).
+TEST(PoresUnequal, PeriodicPoresDoNotDependOnWhereTheBoxIs) {
+  const double side = 9.0;
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> coordinate(0.0, side), radius(0.5, 1.0);
+  Frame f;
+  f.resize(60, 3);
+  f.container = granpipe::Container::periodic_box(3, {0, 0, 0}, {side, side, side});
+  for (Eigen::Index k = 0; k < f.size();) {
+    const Eigen::Vector3d x(coordinate(rng), coordinate(rng), coordinate(rng));
+    const double r = radius(rng);
+    bool free = true;
+    for (Eigen::Index j = 0; j < k; ++j) {
+      Eigen::Vector3d d = x - f.position().row(j).transpose().matrix();
+      for (int a = 0; a < 3; ++a) d[a] = f.container.minimum_image(a, d[a]);
+      free = free && d.norm() >= r + f.radius()[j];
+    }
+    if (!free) continue;
+    f.position().row(k) = x.transpose().array();
+    f.radius()[k++] = r;
+  }
+  Frame shifted = f;
+  shifted.position().rowwise() += Eigen::RowVector3d(1.3, 2.7, 0.4).array();
+  PoreMeasurement a = measure_pores(f, std::nullopt, 1e-9, "test");
+  PoreMeasurement b = measure_pores(shifted, std::nullopt, 1e-9, "test");
+  ASSERT_GT(a.xi.size(), 6u * 60u);  // about 6.8 tetrahedra per sphere
+  ASSERT_EQ(a.xi.size(), b.xi.size());
+  std::sort(a.xi.begin(), a.xi.end());
+  std::sort(b.xi.begin(), b.xi.end());
+  for (std::size_t k = 0; k < a.xi.size(); ++k) EXPECT_NEAR(a.xi[k], b.xi[k], 1e-9);
+  EXPECT_EQ(a.untangent_cells, 0);
 }
 
 }  // namespace
