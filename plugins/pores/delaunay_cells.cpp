@@ -41,11 +41,14 @@ double height_of(const std::array<Eigen::Vector3d, 4>& p) {
 }
 
 DelaunayCell cell_of(const Delaunay::Cell_handle& c) {
+  DelaunayCell cell;
   std::array<Eigen::Vector3d, 4> p;
-  for (int k = 0; k < 4; ++k) p[k] = vector_of(c->vertex(k)->point());
+  for (int k = 0; k < 4; ++k) {
+    p[k] = vector_of(c->vertex(k)->point());
+    cell.vertices[k] = c->vertex(k)->info();
+  }
   const Point centre = CGAL::circumcenter(c->vertex(0)->point(), c->vertex(1)->point(),
                                           c->vertex(2)->point(), c->vertex(3)->point());
-  DelaunayCell cell;
   cell.centre = vector_of(centre);
   cell.radius = (cell.centre - p[0]).norm();
   cell.height = height_of(p);

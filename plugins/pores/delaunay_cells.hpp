@@ -3,6 +3,9 @@
 // exact predicates): each cell's circumsphere and its height, the smallest distance from
 // a vertex to the plane of the other three.
 #include <Eigen/Core>
+#include <array>
+#include <cstdint>
+#include <string>
 #include <vector>
 
 #include "granpipe/frame.hpp"
@@ -11,9 +14,10 @@
 namespace granpipe::pores {
 
 struct DelaunayCell {
-  Eigen::Vector3d centre;  // of the circumsphere
-  double radius = 0.0;     // of the circumsphere
-  double height = 0.0;     // how far the cell is from flat
+  Eigen::Vector3d centre;                   // of the circumsphere
+  double radius = 0.0;                      // of the circumsphere
+  double height = 0.0;                      // how far the cell is from flat
+  std::array<std::uint32_t, 4> vertices{};  // rows of the Centres triangulated
 };
 
 // The cells of `centres` (the frame names their particles). Throws InputError after

@@ -4,10 +4,12 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <utility>
 
 #include "granpipe/errors.hpp"
 #include "merge_cells.hpp"
 #include "periodic_images.hpp"
+#include "tangent_cells.hpp"
 
 namespace granpipe::pores {
 
@@ -24,17 +26,14 @@ void check_frame(const Frame& frame, const std::string& where) {
   }
 }
 
-// R, when every radius is R within kEqualRadii.
-double common_radius(const Frame& frame, const std::string& where) {
+struct Radii {
+  double mean = 0.0, largest = 0.0;
+  bool equal = true;  // within kEqualRadii
+};
+
+Radii radii_of(const Frame& frame) {
   const double small = frame.radius().minCoeff(), large = frame.radius().maxCoeff();
-  if (large - small > kEqualRadii * large) {
-    std::ostringstream m;
-    m << where << ": expected equal radii (within a relative " << kEqualRadii
-      << "), got radii from " << small << " to " << large
-      << " (pores of unequal spheres are not implemented yet)";
-    throw InputError(m.str());
-  }
-  return frame.radius().mean();
+  return {frame.radius().mean(), large, large - small <= kEqualRadii * large};
 }
 
 bool inside(const Region& r, const Eigen::Vector3d& x) {
@@ -55,6 +54,11 @@ Region primary_cell(const Container& c, double shift) {
   return r;
 }
 
+long count_inside(const Region& r, const std::vector<Eigen::Vector3d>& points) {
+  return std::count_if(points.begin(), points.end(),
+                       [&](const Eigen::Vector3d& x) { return inside(r, x); });
+}
+
 double shortest_period(const Container& c) {
   double shortest = std::numeric_limits<double>::infinity();
   for (int a = 0; a < 3; ++a)
@@ -64,28 +68,41 @@ double shortest_period(const Container& c) {
 
 struct TriangulatedPores {
   std::vector<Pore> pores;  // in the primary cell
-  long cells = 0, flat_cells = 0;
+  long cells = 0, flat_cells = 0, untangent_cells = 0;
 };
 
+// The Delaunay cells with their pore spheres (circumspheres for equal radii).
+TangentCells pore_cells(const Frame& frame, const Radii& radii, double tolerance, double skin,
+                        const std::string& where) {
+  const Centres centres = centres_with_images(frame, skin);
+  std::vector<DelaunayCell> cells = delaunay_cells(centres, frame, where);
+  if (radii.equal) return {std::move(cells), {}};
+  return tangent_cells(cells, centres, frame, radii.mean, tolerance * radii.mean);
+}
+
 // The pores in the primary cell, from the centres and their images within a skin that
-// starts at kFirstSkin radii and doubles until it holds the sphere of every pore found.
-TriangulatedPores triangulated_pores(const Frame& frame, double radius, double tolerance,
+// starts at kFirstSkin radii and doubles until it holds the sphere of every pore found,
+// grown by the largest particle radius (the circumsphere of the pore's centres).
+TriangulatedPores triangulated_pores(const Frame& frame, const Radii& radii, double tolerance,
                                      const std::string& where) {
+  const double radius = radii.mean, reach = radii.largest - radii.mean;
   constexpr double kFirstSkin = 4.0;
   const Region primary = primary_cell(frame.container, tolerance * radius / 2.0);
   const double period = shortest_period(frame.container);
   const bool periodic = std::isfinite(period);
   double skin = std::min(kFirstSkin * radius, period);
   while (true) {
-    const std::vector<DelaunayCell> cells =
-        delaunay_cells(centres_with_images(frame, skin), frame, where);
-    MergedPores merged = merge_cells(cells, radius, tolerance);
-    TriangulatedPores found{{}, static_cast<long>(cells.size()), merged.flat_cells};
+    const TangentCells cells = pore_cells(frame, radii, tolerance, skin, where);
+    MergedPores merged = merge_cells(cells.cells, radius, tolerance);
+    TriangulatedPores found{{},
+                            static_cast<long>(cells.cells.size() + cells.untangent.size()),
+                            merged.flat_cells,
+                            count_inside(primary, cells.untangent)};
     bool held = true;
     for (const Pore& p : merged.pores) {
       if (!inside(primary, p.centre)) continue;
       found.pores.push_back(p);
-      held = held && (!periodic || p.radius <= skin);
+      held = held && (!periodic || p.radius + reach <= skin);
     }
     if (held) return found;
     if (skin >= period) {
@@ -103,10 +120,12 @@ PoreMeasurement measure_pores(const Frame& frame, const std::optional<Region>& r
                               double tolerance, const std::string& where) {
   check_frame(frame, where);
   PoreMeasurement m;
-  m.radius = common_radius(frame, where);
-  const TriangulatedPores found = triangulated_pores(frame, m.radius, tolerance, where);
+  const Radii radii = radii_of(frame);
+  m.radius = radii.mean;
+  const TriangulatedPores found = triangulated_pores(frame, radii, tolerance, where);
   m.cells = found.cells;
   m.flat_cells = found.flat_cells;
+  m.untangent_cells = found.untangent_cells;
   for (const Pore& p : found.pores) {
     if (!region || inside(*region, p.centre)) m.xi.push_back(p.radius / m.radius - 1.0);
   }
@@ -121,8 +140,7 @@ PoreMeasurement measure_pores(const Frame& frame, const std::optional<Region>& r
 PoreMeasurement measure_pores(const Frame& frame, const PoreSettings& settings,
                               const std::string& where) {
   check_frame(frame, where);
-  return measure_pores(frame,
-                       pore_region(frame, settings.region, common_radius(frame, where), where),
+  return measure_pores(frame, pore_region(frame, settings.region, radii_of(frame).mean, where),
                        settings.tolerance, where);
 }
 

@@ -1,8 +1,9 @@
 #pragma once
-// The pores of one frame of equal spheres: each Delaunay cell of the centres (cells of
-// one circumsphere merged) gives the sphere touching its four particles, of radius
-// r = circumradius - R; xi = r / R. Along periodic sides the centres are triangulated
-// with their images near the sides, and each pore is counted once.
+// The pores of one frame: each Delaunay cell of the centres (cells of one sphere merged)
+// gives the sphere touching its four particles, of radius r = circumradius - R for equal
+// spheres, the tangent sphere's for unequal ones; xi = r / R, R the mean radius. Along
+// periodic sides the centres are triangulated with their images near the sides, and each
+// pore is counted once.
 #include <optional>
 #include <string>
 #include <vector>
@@ -13,7 +14,8 @@
 
 namespace granpipe::pores {
 
-// Relative spread of the radii still taken as one radius (radii stored in single precision).
+// Relative spread of the radii still taken as one radius (radii stored in single
+// precision): such frames keep the circumsphere, exact predicates' circumcentre included.
 constexpr double kEqualRadii = 1e-6;
 
 struct PoreSettings {
@@ -22,15 +24,18 @@ struct PoreSettings {
 };
 
 struct PoreMeasurement {
-  double radius = 0.0;     // R, the particles' radius
+  double radius = 0.0;     // R, the particles' mean radius
   std::vector<double> xi;  // of the pores counted (centre in the region)
   long spheres = 0;        // particle centres in the region
   long cells = 0;          // Delaunay cells, all of them
   long flat_cells = 0;     // of them, left out as flat
+  // Of them, left out for want of a tangent sphere (unequal radii), with their circumcentre
+  // in the box along periodic axes (not the hull cells of the images).
+  long untangent_cells = 0;
 };
 
 // Throws InputError after `where` for a frame the pores cannot be measured on: not 3D,
-// fewer than four particles, NaN or infinite coordinates, unequal radii, a periodic box
+// fewer than four particles, NaN or infinite coordinates, a periodic box
 // narrower than its pores, and the cases of delaunay_cells and pore_region.
 PoreMeasurement measure_pores(const Frame& frame, const PoreSettings& settings,
                               const std::string& where);

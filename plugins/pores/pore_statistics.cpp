@@ -17,6 +17,7 @@ void PoreStatistics::add(const PoreMeasurement& m) {
   pores_ += static_cast<long>(m.xi.size());
   spheres_ += m.spheres;
   flat_cells_ += m.flat_cells;
+  untangent_cells_ += m.untangent_cells;
   for (double xi : m.xi) {
     const double volume = xi * xi * xi;
     xi3_sum_ += volume;
@@ -85,6 +86,9 @@ void PoreStatistics::report(Results& results) const {
                      "pores with xi outside the histogram's range (in P's normalisation)");
   results.add_scalar("flat_cells", static_cast<double>(flat_cells_), std::nan(""), "",
                      "Delaunay cells left out as flat within the tolerance, all frames");
+  results.add_scalar("untangent_cells", static_cast<double>(untangent_cells_), std::nan(""), "",
+                     "Delaunay cells of unequal spheres left out: no sphere touches their four "
+                     "from outside, all frames");
   results.add_table("xi_distribution", distribution_table());
   results.add_plot("xi3_P", {.table = "xi_distribution",
                              .x = "xi",

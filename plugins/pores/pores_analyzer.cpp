@@ -1,6 +1,13 @@
 #include "pores_analyzer.hpp"
 
 #include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "granpipe/random.hpp"
+#include "granpipe/region.hpp"
+#include "pore_region.hpp"
+#include "void_probes.hpp"
 
 namespace granpipe::pores {
 
@@ -24,6 +31,14 @@ Schema schema() {
       .unit("particle radii");
   s.real("bin_width", 0.01, "bin width of P(xi)").range(1e-6, 1.0);
   s.real("xi_max", 1.0, "upper end of the histogram of xi = r/R").range(1e-3, 1e3);
+  s.integer("probes", 0,
+            "random probes of P0(sigma) per frame, uniform in the region cut to the box "
+            "container; 0: P0 not measured")
+      .min(0.0);
+  s.real("sigma_step", 0.05, "step of the grid of P0(sigma)").range(1e-4, 1.0);
+  s.real("sigma_max", 1.0, "largest probe radius of P0(sigma)")
+      .range(0.0, 10.0)
+      .unit("particle radii");
   return s;
 }
 
@@ -43,16 +58,31 @@ PoreSettings settings_from(const Params& p) {
 PoresAnalyzer::PoresAnalyzer(const PluginContext& ctx)
     : settings_(settings_from(ctx.params)),
       statistics_(ctx.params.real("bin_width"), ctx.params.real("xi_max")),
+      seeds_(ctx.seeds),
+      probes_(static_cast<long>(ctx.params.integer("probes"))),
+      void_probability_(ctx.params.real("sigma_step"), ctx.params.real("sigma_max")),
       per_frame_(ctx.stream_table(
           "per_frame", Table({"frame", "step", "time", "pores", "spheres", "pores_per_sphere", "nu",
                               "flat_cells"},
                              "per-frame pores and particle centres in the region, nu = <xi^3> "
                              "and the cells left out as flat"))) {}
 
+// Each frame its own stream, so that P0 does not depend on which frames a run skips.
+void PoresAnalyzer::probe_voids(const Frame& frame, double mean_radius, const std::string& where) {
+  const Region box =
+      probe_region(frame, pore_region(frame, settings_.region, mean_radius, where), where);
+  RandomStream stream = seeds_.stream("probes", static_cast<std::uint64_t>(frames_));
+  std::vector<double> gaps =
+      probe_gaps(frame, box, probes_, void_probability_.sigma_max() * mean_radius, stream, where);
+  for (double& gap : gaps) gap /= mean_radius;
+  void_probability_.add(gaps, particle_measure_in(frame, box), box.volume());
+}
+
 void PoresAnalyzer::consume(const Frame& frame, FrameCache&) {
-  const PoreMeasurement m =
-      measure_pores(frame, settings_, "pores: frame at step " + std::to_string(frame.step));
+  const std::string where = "pores: frame at step " + std::to_string(frame.step);
+  const PoreMeasurement m = measure_pores(frame, settings_, where);
   statistics_.add(m);
+  if (probes_ > 0) probe_voids(frame, m.radius, where);
   double xi3 = 0.0;
   for (double xi : m.xi) xi3 += xi * xi * xi;
   const auto pores = static_cast<double>(m.xi.size());
@@ -67,6 +97,7 @@ void PoresAnalyzer::consume(const Frame& frame, FrameCache&) {
 void PoresAnalyzer::finish(Results& results) {
   results.add_scalar("frames", static_cast<double>(frames_), std::nan(""), "", "frames measured");
   statistics_.report(results);
+  if (probes_ > 0) void_probability_.report(results);
   results.add_table("per_frame", per_frame_.table());
 }
 

@@ -1,9 +1,12 @@
 #pragma once
-// `pores`: the Delaunay pores of packings of equal spheres (docs/pores.md), pooled over
-// frames, with a per-frame series.
+// `pores`: the Delaunay pores of packings of spheres (docs/pores.md) and the probability
+// P0 that a random probe overlaps no sphere, pooled over frames, with a per-frame series.
+#include <string>
+
 #include "granpipe/plugin.hpp"
 #include "measure_pores.hpp"
 #include "pore_statistics.hpp"
+#include "void_probability.hpp"
 
 namespace granpipe::pores {
 
@@ -18,7 +21,12 @@ class PoresAnalyzer : public Analyzer {
 
  private:
   PoreSettings settings_;
+  void probe_voids(const Frame& frame, double mean_radius, const std::string& where);
+
   PoreStatistics statistics_;
+  Seeds seeds_;
+  long probes_;  // per frame; 0: P0 not measured
+  VoidProbability void_probability_;
   StreamedTable per_frame_;
   long frames_ = 0;
 };

@@ -1,0 +1,46 @@
+#include "void_probes.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "granpipe/cell_list.hpp"
+#include "granpipe/errors.hpp"
+
+namespace granpipe::pores {
+
+Region probe_region(const Frame& frame, const std::optional<Region>& region,
+                    const std::string& where) {
+  const Container& c = frame.container;
+  if (c.shape != ContainerShape::Box) {
+    throw InputError(where + ": P0 probes expected a box container, got a " + to_string(c.shape) +
+                     " (set probes 0)");
+  }
+  Region box;
+  box.dim = 3;
+  for (int a = 0; a < 3; ++a) {
+    box.lo[a] = region ? std::max(region->lo[a], c.lo[a]) : c.lo[a];
+    box.hi[a] = region ? std::min(region->hi[a], c.hi[a]) : c.hi[a];
+  }
+  return box;
+}
+
+std::vector<double> probe_gaps(const Frame& frame, const Region& box, long probes, double reach,
+                               RandomStream& stream, const std::string& where) {
+  const double cutoff = reach + frame.radius().maxCoeff();
+  const CellList cells(frame.position(), frame.container, 3, cutoff, where);
+  std::vector<double> gaps;
+  gaps.reserve(static_cast<std::size_t>(probes));
+  for (long k = 0; k < probes; ++k) {
+    double x[3];
+    for (int a = 0; a < 3; ++a) x[a] = stream.uniform(box.lo[a], box.hi[a]);
+    double gap = std::numeric_limits<double>::infinity();
+    cells.for_each_near(x, cutoff, [&](int j, const double*, double r2) {
+      gap = std::min(gap, std::sqrt(r2) - frame.radius()[j]);
+    });
+    gaps.push_back(gap);
+  }
+  return gaps;
+}
+
+}  // namespace granpipe::pores

@@ -1,0 +1,196 @@
+// Pores of spheres of unequal radii: the tangent sphere against a Newton solution written
+// here and a symmetric case solved by hand, its choice of root, the merge of degenerate
+// cells and the frames measured.
+#include <gtest/gtest.h>
+
+#include <Eigen/LU>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <optional>
+#include <random>
+#include <vector>
+
+#include "granpipe/frame.hpp"
+#include "granpipe/region.hpp"
+#include "measure_pores.hpp"
+#include "tangent_sphere.hpp"
+
+namespace {
+
+using granpipe::Frame;
+using granpipe::pores::measure_pores;
+using granpipe::pores::PoreMeasurement;
+using granpipe::pores::tangent_sphere;
+using granpipe::pores::TangentSphere;
+using Centres = std::array<Eigen::Vector3d, 4>;
+using Radii = std::array<double, 4>;
+
+// Newton's method on f_i(c, rho) = |c - x_i| - r_i - rho from the centroid.
+TangentSphere newton(const Centres& x, const Radii& r) {
+  Eigen::Vector4d u;
+  u.head<3>() = (x[0] + x[1] + x[2] + x[3]) / 4.0;
+  u[3] = 0.0;
+  for (int iteration = 0; iteration < 100; ++iteration) {
+    Eigen::Matrix4d jacobian;
+    Eigen::Vector4d f;
+    for (int i = 0; i < 4; ++i) {
+      const Eigen::Vector3d d = u.head<3>() - x[i];
+      f[i] = d.norm() - r[i] - u[3];
+      jacobian.row(i) << d.transpose() / d.norm(), -1.0;
+    }
+    u -= jacobian.partialPivLu().solve(f);
+  }
+  return {u.head<3>(), u[3]};
+}
+
+// Four spheres around a regular tetrahedron of edge 2.2, their radii drawn in [0.6, 1.1]:
+// they leave a gap all four bound.
+TEST(PoresUnequal, TangentSphereAgreesWithNewton) {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> radius(0.6, 1.1), jitter(-0.05, 0.05);
+  const double s = 2.2 / std::sqrt(8.0);
+  const Centres corners{Eigen::Vector3d(s, s, s), Eigen::Vector3d(s, -s, -s),
+                        Eigen::Vector3d(-s, s, -s), Eigen::Vector3d(-s, -s, s)};
+  for (int trial = 0; trial < 50; ++trial) {
+    Centres x = corners;
+    Radii r{};
+    for (int i = 0; i < 4; ++i) {
+      x[i] += Eigen::Vector3d(jitter(rng), jitter(rng), jitter(rng));
+      r[i] = radius(rng);
+    }
+    const std::optional<TangentSphere> t = tangent_sphere(x, r);
+    ASSERT_TRUE(t);
+    const TangentSphere n = newton(x, r);
+    EXPECT_NEAR(t->radius, n.radius, 1e-12);
+    EXPECT_NEAR((t->centre - n.centre).norm(), 0.0, 1e-12);
+    for (int i = 0; i < 4; ++i) {  // tangent to each from outside, overlapping none
+      EXPECT_NEAR((t->centre - x[i]).norm(), r[i] + t->radius, 1e-12);
+      EXPECT_GE((t->centre - x[i]).norm(), r[i] + t->radius - 1e-12);
+    }
+  }
+}
+
+// Three spheres of radius 1 touching each other in the plane z = 0 (centres at distance
+// s = 2/sqrt(3) from the z axis) and a fourth of radius b touching all three on the axis at
+// height h, s^2 + h^2 = (1 + b)^2. By symmetry the pore's centre is on the axis at z, below
+// the fourth sphere: s^2 + z^2 = (1 + rho)^2 and h - z = b + rho. Putting z = h - b - rho in
+// the first: rho = ((h - b)^2 - 1 + s^2) / (2 (h - b) + 2).
+TEST(PoresUnequal, SymmetricCaseSolvedByHand) {
+  const double s = 2.0 / std::sqrt(3.0);
+  for (double b : {0.3, 1.0, 3.0}) {
+    const double h = std::sqrt((1 + b) * (1 + b) - s * s);
+    const double rho = ((h - b) * (h - b) - 1 + s * s) / (2 * (h - b) + 2);
+    Centres x;
+    for (int i = 0; i < 3; ++i) {
+      const double angle = 2.0 * M_PI * i / 3.0;
+      x[i] = Eigen::Vector3d(s * std::cos(angle), s * std::sin(angle), 0.0);
+    }
+    x[3] = Eigen::Vector3d(0, 0, h);
+    const std::optional<TangentSphere> t = tangent_sphere(x, {1, 1, 1, b});
+    ASSERT_TRUE(t) << b;
+    EXPECT_NEAR(t->radius, rho, 1e-12) << b;
+    EXPECT_NEAR((t->centre - Eigen::Vector3d(0, 0, h - b - rho)).norm(), 0.0, 1e-12) << b;
+  }
+  // b = 1: four touching equal spheres, the tetrahedral pore.
+  EXPECT_NEAR(((std::sqrt(8.0 / 3.0) - 1) * (std::sqrt(8.0 / 3.0) - 1) - 1 + s * s) /
+                  (2 * std::sqrt(8.0 / 3.0)),
+              std::sqrt(1.5) - 1, 1e-15);
+}
+
+// A sphere inside another: a sphere touching the outer one from outside cannot reach the
+// inner one, |c - x_0| <= |c - x_3| + |x_3 - x_0| < r_0 + rho.
+TEST(PoresUnequal, NoTangentSphereReachesAHiddenSphere) {
+  const Centres x{Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(2.5, 0, 0), Eigen::Vector3d(0, 2.5, 0),
+                  Eigen::Vector3d(0.1, 0.1, 0.1)};
+  EXPECT_FALSE(tangent_sphere(x, {1, 1, 1, 0.2}));
+  EXPECT_TRUE(tangent_sphere(x, {1, 1, 1, 1}));  // where the same centres bound a gap
+}
+
+// A simple cubic crystal of radius 1 with one corner sphere smaller: the frame has unequal
+// radii, and every cube away from that corner is still one pore of xi = (sqrt(3) - 1) / R
+// with R the mean radius, whatever the number of cells the triangulation splits it into.
+TEST(PoresUnequal, DegenerateCellsStillMerge) {
+  const int n = 6;
+  Frame f;
+  f.resize(n * n * n, 3);
+  f.radius().setConstant(1.0);
+  Eigen::Index k = 0;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      for (int l = 0; l < n; ++l) f.position().row(k++) << 2.0 * i, 2.0 * j, 2.0 * l;
+  f.radius()[0] = 0.5;
+  f.container.lo.setConstant(-1);
+  f.container.hi.setConstant(2 * n - 1);
+  granpipe::Region inner;
+  inner.lo.setConstant(4.5);
+  inner.hi.setConstant(8.5);  // two by two by two cubes, far from the small sphere
+  const PoreMeasurement m = measure_pores(f, inner, 1e-9, "test");
+  const double mean = f.radius().mean();
+  ASSERT_EQ(m.xi.size(), 8u);
+  for (double xi : m.xi) EXPECT_NEAR(xi, (std::sqrt(3.0) - 1.0) / mean, 1e-9);
+  EXPECT_EQ(m.untangent_cells, 0);
+  // A tolerance of 1e-12 R still merges them: the split cells' tangent spheres agree to
+  // rounding.
+  EXPECT_EQ(measure_pores(f, inner, 1e-12, "test").xi.size(), 8u);
+}
+
+// The symmetric case as a frame: one pore, xi = rho / R with R the mean radius.
+TEST(PoresUnequal, FrameOfFourSpheresHasTheTangentPore) {
+  const double s = 2.0 / std::sqrt(3.0), b = 3.0;
+  const double h = std::sqrt((1 + b) * (1 + b) - s * s);
+  const double rho = ((h - b) * (h - b) - 1 + s * s) / (2 * (h - b) + 2);
+  Frame f;
+  f.resize(4, 3);
+  for (int i = 0; i < 3; ++i) {
+    const double angle = 2.0 * M_PI * i / 3.0;
+    f.position().row(i) << s * std::cos(angle), s * std::sin(angle), 0.0;
+    f.radius()[i] = 1.0;
+  }
+  f.position().row(3) << 0, 0, h;
+  f.radius()[3] = b;
+  f.container.lo.setConstant(-10);
+  f.container.hi.setConstant(10);
+  const PoreMeasurement m = measure_pores(f, std::nullopt, 1e-9, "test");
+  ASSERT_EQ(m.xi.size(), 1u);
+  EXPECT_NEAR(m.xi[0], rho / 1.5, 1e-12);
+  EXPECT_DOUBLE_EQ(m.radius, 1.5);
+}
+
+// Spheres of radii 0.5 to 1 at random without overlap in a periodic box: shifting them all
+// (the images near the sides change, and which image of a pore is kept) changes no pore,
+// and every cell in the box has its tangent sphere (those without are hull cells of the
+// images, far outside).
+TEST(PoresUnequal, PeriodicPoresDoNotDependOnWhereTheBoxIs) {
+  const double side = 9.0;
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> coordinate(0.0, side), radius(0.5, 1.0);
+  Frame f;
+  f.resize(60, 3);
+  f.container = granpipe::Container::periodic_box(3, {0, 0, 0}, {side, side, side});
+  for (Eigen::Index k = 0; k < f.size();) {
+    const Eigen::Vector3d x(coordinate(rng), coordinate(rng), coordinate(rng));
+    const double r = radius(rng);
+    bool free = true;
+    for (Eigen::Index j = 0; j < k; ++j) {
+      Eigen::Vector3d d = x - f.position().row(j).transpose().matrix();
+      for (int a = 0; a < 3; ++a) d[a] = f.container.minimum_image(a, d[a]);
+      free = free && d.norm() >= r + f.radius()[j];
+    }
+    if (!free) continue;
+    f.position().row(k) = x.transpose().array();
+    f.radius()[k++] = r;
+  }
+  Frame shifted = f;
+  shifted.position().rowwise() += Eigen::RowVector3d(1.3, 2.7, 0.4).array();
+  PoreMeasurement a = measure_pores(f, std::nullopt, 1e-9, "test");
+  PoreMeasurement b = measure_pores(shifted, std::nullopt, 1e-9, "test");
+  ASSERT_GT(a.xi.size(), 6u * 60u);  // about 6.8 tetrahedra per sphere
+  ASSERT_EQ(a.xi.size(), b.xi.size());
+  std::sort(a.xi.begin(), a.xi.end());
+  std::sort(b.xi.begin(), b.xi.end());
+  for (std::size_t k = 0; k < a.xi.size(); ++k) EXPECT_NEAR(a.xi[k], b.xi[k], 1e-9);
+  EXPECT_EQ(a.untangent_cells, 0);
+}
+
+}  // namespace
