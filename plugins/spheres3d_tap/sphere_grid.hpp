@@ -45,6 +45,22 @@ class SphereGrid {
   // until it returns true; true when it did.
   template <class F>
   bool first_in(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, F&& stop) const;
+  // A cell index taken back into [0, n) along a periodic side, and the image shift that
+  // takes a centre in that cell to the unwrapped one.
+  struct Wrapped {
+    int index;
+    double shift;
+    void step(int n, double side) {
+      if (++index == n) {
+        index = 0;
+        shift += side;
+      }
+    }
+  };
+  Wrapped wrapped(int i) const {
+    const int w = ((i % n_) + n_) % n_;
+    return {w, box_.side * static_cast<double>((i - w) / n_)};
+  }
   static int floor_int(double v) {
     const int t = static_cast<int>(v);
     return t - (v < static_cast<double>(t));
@@ -67,16 +83,17 @@ bool SphereGrid::first_in(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, 
   axis_range(lo.x(), hi.x(), x0, x1);
   axis_range(lo.y(), hi.y(), y0, y1);
   const int z0 = layer_of(lo.z()), z1 = std::min(floor_int(hi.z() * inv_cell_), layers_ - 1);
+  // Wrapped indices step along with the unwrapped ones: no division in the loops, which
+  // an overlap test of ~100 cells would otherwise spend most of its time in.
+  const Wrapped first_x = wrapped(x0), first_y = wrapped(y0);
   for (int iz = z0; iz <= z1; ++iz) {
-    for (int iy = y0; iy <= y1; ++iy) {
-      const int wy = ((iy % n_) + n_) % n_;
-      const double shift_y = box_.side * static_cast<double>((iy - wy) / n_);
-      const std::int32_t* row = cells_.data() + (static_cast<std::size_t>(iz) * n_ + wy) * n_;
-      for (int ix = x0; ix <= x1; ++ix) {
-        const int wx = ((ix % n_) + n_) % n_;
-        const std::int32_t j = row[wx];
-        if (j != kEmpty && stop(j, box_.side * static_cast<double>((ix - wx) / n_), shift_y))
-          return true;
+    Wrapped y = first_y;
+    for (int iy = y0; iy <= y1; ++iy, y.step(n_, box_.side)) {
+      const std::int32_t* row = cells_.data() + (static_cast<std::size_t>(iz) * n_ + y.index) * n_;
+      Wrapped x = first_x;
+      for (int ix = x0; ix <= x1; ++ix, x.step(n_, box_.side)) {
+        const std::int32_t j = row[x.index];
+        if (j != kEmpty && stop(j, x.shift, y.shift)) return true;
       }
     }
   }
