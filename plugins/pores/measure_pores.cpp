@@ -84,6 +84,7 @@ TangentCells pore_cells(const Frame& frame, const Radii& radii, double tolerance
 // starts at kFirstSkin radii and doubles until it holds the sphere of every pore found,
 // grown by the largest particle radius (the circumsphere of the pore's centres).
 TriangulatedPores triangulated_pores(const Frame& frame, const Radii& radii, double tolerance,
+                                     const std::optional<Region>& region,
                                      const std::string& where) {
   const double radius = radii.mean, reach = radii.largest - radii.mean;
   constexpr double kFirstSkin = 4.0;
@@ -102,7 +103,10 @@ TriangulatedPores triangulated_pores(const Frame& frame, const Radii& radii, dou
     for (const Pore& p : merged.pores) {
       if (!inside(primary, p.centre)) continue;
       found.pores.push_back(p);
-      held = held && (!periodic || p.radius + reach <= skin);
+      // Only the pores counted need the skin: the huge cells above an open-topped
+      // packing with periodic sides never fit in it, and lie outside a region below the top.
+      const bool counted = !region || inside(*region, p.centre);
+      held = held && (!periodic || !counted || p.radius + reach <= skin);
     }
     if (held) return found;
     if (skin >= period) {
@@ -122,7 +126,7 @@ PoreMeasurement measure_pores(const Frame& frame, const std::optional<Region>& r
   PoreMeasurement m;
   const Radii radii = radii_of(frame);
   m.radius = radii.mean;
-  const TriangulatedPores found = triangulated_pores(frame, radii, tolerance, where);
+  const TriangulatedPores found = triangulated_pores(frame, radii, tolerance, region, where);
   m.cells = found.cells;
   m.flat_cells = found.flat_cells;
   m.untangent_cells = found.untangent_cells;

@@ -160,6 +160,36 @@ TEST(Pores, PeriodicCrystalsCountEachPoreOnce) {
   }
 }
 
+// Periodic sides and an open top with a bumpy surface (two spheres sitting on the top
+// layer, far apart): the cells above the surface are far wider than the box, and a region
+// below the top does not need them; before, the whole frame was refused for them.
+TEST(Pores, PeriodicSidesWithAnOpenTopCountTheRegionBelowIt) {
+  const Crystal c = sc();
+  const int cells = 6, layers = 4;
+  Frame layered = crystal_frame(c, cells);
+  Frame f;
+  f.resize(static_cast<Eigen::Index>(cells * cells * layers + 2), 3);
+  f.radius().setConstant(1.0);
+  Eigen::Index k = 0;
+  for (Eigen::Index i = 0; i < layered.size(); ++i) {
+    if (layered.position()(i, 2) < 2.0 * layers) f.position().row(k++) = layered.position().row(i);
+  }
+  ASSERT_EQ(k, cells * cells * layers);
+  const double top = 2.0 * (layers - 1);                    // the top layer's centres
+  f.position().row(k++) << 1.0, 1.0, top + std::sqrt(2.0);  // in the hollow of four
+  f.position().row(k++) << 7.0, 5.0, top + std::sqrt(2.0);
+  f.container = granpipe::Container::periodic_box(3, {-1, -1, -1}, {11, 11, 30});
+  f.container.boundary[2] = {granpipe::Boundary::Wall, granpipe::Boundary::Open};
+  Region below;
+  below.lo = Eigen::Vector3d(-1, -1, 0.5);
+  below.hi = Eigen::Vector3d(11, 11, top - 0.5);
+  const PoreMeasurement m = measure_pores(f, below, 1e-9, "test");
+  // The cubes between layers 0-1, 1-2 and 2-3: 6 x 6 each, centred below top - 1.
+  EXPECT_EQ(m.xi.size(), static_cast<std::size_t>(cells * cells * (layers - 1)));
+  for (double xi : m.xi) EXPECT_NEAR(xi, std::sqrt(3.0) - 1.0, 1e-9);
+  EXPECT_THROW(measure_pores(f, std::nullopt, 1e-9, "test"), granpipe::InputError);
+}
+
 TEST(Pores, FourTouchingSpheresMakeOneTetrahedralPore) {
   Frame f;
   f.resize(4, 3);
