@@ -7,6 +7,7 @@
 #include "measure_pores.hpp"
 #include "pore_statistics.hpp"
 #include "void_probability.hpp"
+#include "volume_distribution.hpp"
 
 namespace granpipe::pores {
 
@@ -24,6 +25,7 @@ class PoresAnalyzer : public Analyzer {
   void probe_voids(const Frame& frame, double mean_radius, const std::string& where);
 
   PoreStatistics statistics_;
+  VolumeDistribution volumes_;
   Seeds seeds_;
   long probes_;  // per frame; 0: P0 not measured
   VoidProbability void_probability_;

@@ -19,6 +19,7 @@
 #include "plugin_harness.hpp"
 #include "pore_region.hpp"
 #include "pore_statistics.hpp"
+#include "volume_distribution.hpp"
 
 namespace {
 
@@ -371,3 +372,31 @@ TEST(Pores, BadInputIsRefusedWithOneLine) {
 }
 
 }  // namespace
+
+// Pores whose volumes v have the number density ~ exp(-v / lambda) / v (rejection from an
+// exponential): the volume-weighted rho_v is then exactly ~ exp(-v / lambda), and the tail
+// fit must give lambda back; rho_v integrates to <v> = nu when every pore is in range.
+TEST(PoresVolume, TailFitRecoversAnExponentialAndRhoIntegratesToNu) {
+  const double lambda = 0.05, v_min = 0.01;
+  std::mt19937_64 rng(17);
+  std::exponential_distribution<double> exponential(1.0 / lambda);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<double> xi;
+  double v_sum = 0.0;
+  while (xi.size() < 200000) {
+    const double v = v_min + exponential(rng);
+    if (v > 0.9 || u(rng) > v_min / v) continue;
+    xi.push_back(std::cbrt(v));
+    v_sum += v;
+  }
+  granpipe::pores::VolumeDistribution d(0.005, 1.0, 0.05);
+  d.add(xi);
+  const double nu = v_sum / static_cast<double>(xi.size());
+  double integral = 0.0;
+  for (double rho : d.density()) integral += rho * 0.005;
+  EXPECT_NEAR(integral, nu, 1e-12);
+  const granpipe::CurveFit fit = d.tail_fit(nu);
+  ASSERT_TRUE(fit.fitted()) << granpipe::describe(fit.status);
+  EXPECT_NEAR(fit.value[1], lambda, 3.0 * fit.error[1]);
+  EXPECT_LT(fit.error[1], 0.05 * lambda);
+}
