@@ -20,12 +20,13 @@ class PoreStatistics {
   long pores() const { return pores_; }
   double nu() const;  // <xi^3> over every pore, NaN for none
   const std::vector<double>& counts() const { return counts_; }
+  // P(xi), its error and xi^3 P(xi) at the bin centres.
+  Table distribution_table() const;
   // Per canonical hole (bernal_holes() order, then the pores near none).
   const std::vector<long>& hole_counts() const { return hole_counts_; }
   const std::vector<double>& hole_volumes() const { return hole_volumes_; }
 
  private:
-  Table distribution_table() const;
   Table bernal_table() const;
 
   double bin_width_;

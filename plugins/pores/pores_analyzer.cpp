@@ -38,6 +38,9 @@ Schema schema() {
          "rho_v's exponential tail is fitted from this v up (default: the octahedral site's "
          "(sqrt 2 - 1)^3, where the paper's distributions part)")
       .min(0.0);
+  s.boolean("frame_distributions", false,
+            "also P(xi), xi^3 P(xi) and rho_v(v) of every frame, in the tables frame_xi and "
+            "frame_v (the paper's Fig. 10: one packing at several stages of its compaction)");
   s.integer("probes", 0,
             "random probes of P0(sigma) per frame, uniform in the region cut to the box "
             "container; 0: P0 not measured")
@@ -73,7 +76,35 @@ PoresAnalyzer::PoresAnalyzer(const PluginContext& ctx)
           "per_frame", Table({"frame", "step", "time", "pores", "spheres", "pores_per_sphere", "nu",
                               "flat_cells"},
                              "per-frame pores and particle centres in the region, nu = <xi^3> "
-                             "and the cells left out as flat"))) {}
+                             "and the cells left out as flat"))),
+      bin_width_(ctx.params.real("bin_width")),
+      xi_max_(ctx.params.real("xi_max")),
+      v_bin_width_(ctx.params.real("v_bin_width")),
+      v_max_(ctx.params.real("v_max")) {
+  if (!ctx.params.boolean("frame_distributions")) return;
+  frame_xi_ =
+      ctx.stream_table("frame_xi", Table({"frame", "step", "xi", "P", "xi3_P"},
+                                         "P(xi) and xi^3 P(xi) of each frame, at the bin centres"));
+  frame_v_ = ctx.stream_table(
+      "frame_v", Table({"frame", "step", "v", "rho_v"}, "rho_v(v) of each frame, v = xi^3"));
+}
+
+void PoresAnalyzer::add_frame_distributions(const Frame& frame, const PoreMeasurement& m) {
+  const auto frame_index = static_cast<double>(frames_), step = static_cast<double>(frame.step);
+  PoreStatistics one(bin_width_, xi_max_);
+  one.add(m);
+  const Table xi = one.distribution_table();
+  for (std::size_t k = 0; k < xi.rows(); ++k) {
+    frame_xi_->add_row(
+        {frame_index, step, xi.column("xi")[k], xi.column("P")[k], xi.column("xi3_P")[k]});
+  }
+  VolumeDistribution volumes(v_bin_width_, v_max_, 0.0);
+  volumes.add(m.xi);
+  const std::vector<double> rho = volumes.density();
+  for (std::size_t k = 0; k < rho.size(); ++k) {
+    frame_v_->add_row({frame_index, step, (static_cast<double>(k) + 0.5) * v_bin_width_, rho[k]});
+  }
+}
 
 // Each frame its own stream, so that P0 does not depend on which frames a run skips.
 void PoresAnalyzer::probe_voids(const Frame& frame, double mean_radius, const std::string& where) {
@@ -91,6 +122,7 @@ void PoresAnalyzer::consume(const Frame& frame, FrameCache&) {
   const PoreMeasurement m = measure_pores(frame, settings_, where);
   statistics_.add(m);
   volumes_.add(m.xi);
+  if (frame_xi_) add_frame_distributions(frame, m);
   if (probes_ > 0) probe_voids(frame, m.radius, where);
   double xi3 = 0.0;
   for (double xi : m.xi) xi3 += xi * xi * xi;
@@ -109,6 +141,10 @@ void PoresAnalyzer::finish(Results& results) {
   volumes_.report(results, statistics_.nu());
   if (probes_ > 0) void_probability_.report(results);
   results.add_table("per_frame", per_frame_.table());
+  if (frame_xi_) {
+    results.add_table("frame_xi", frame_xi_->table());
+    results.add_table("frame_v", frame_v_->table());
+  }
 }
 
 }  // namespace granpipe::pores

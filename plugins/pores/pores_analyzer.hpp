@@ -1,6 +1,7 @@
 #pragma once
 // `pores`: the Delaunay pores of packings of spheres (docs/pores.md) and the probability
 // P0 that a random probe overlaps no sphere, pooled over frames, with a per-frame series.
+#include <optional>
 #include <string>
 
 #include "granpipe/plugin.hpp"
@@ -23,6 +24,7 @@ class PoresAnalyzer : public Analyzer {
  private:
   PoreSettings settings_;
   void probe_voids(const Frame& frame, double mean_radius, const std::string& where);
+  void add_frame_distributions(const Frame& frame, const PoreMeasurement& m);
 
   PoreStatistics statistics_;
   VolumeDistribution volumes_;
@@ -30,6 +32,9 @@ class PoresAnalyzer : public Analyzer {
   long probes_;  // per frame; 0: P0 not measured
   VoidProbability void_probability_;
   StreamedTable per_frame_;
+  // With frame_distributions: P(xi) and rho_v(v) of every frame (the paper's Fig. 10).
+  std::optional<StreamedTable> frame_xi_, frame_v_;
+  double bin_width_, xi_max_, v_bin_width_, v_max_;
   long frames_ = 0;
 };
 

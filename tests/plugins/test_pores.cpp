@@ -314,6 +314,29 @@ TEST(Pores, AnalyzerPoolsFrames) {
   EXPECT_EQ(results.tables().at("per_frame").rows(), 2u);
 }
 
+// frame_distributions: each frame's P(xi) and rho_v(v), which for one frame are the pooled
+// ones; here two frames of a crystal, so both frames' rows equal the pooled table.
+TEST(Pores, FrameDistributionsAreEachFramesOwn) {
+  const auto ctx = granpipe::test::make_context(
+      "pores", {{"region", "inner"}, {"margin", 3.0}, {"frame_distributions", true}});
+  auto analyzer = granpipe::test::installed_plugins().find("pores")->make_analyzer(*ctx);
+  const Frame f = crystal_frame(fcc(), 5);
+  granpipe::FrameCache cache;
+  analyzer->consume(f, cache);
+  analyzer->consume(f, cache);
+  granpipe::Results results;
+  analyzer->finish(results);
+  const granpipe::Table& pooled = results.tables().at("xi_distribution");
+  const granpipe::Table& per_frame = results.tables().at("frame_xi");
+  ASSERT_EQ(per_frame.rows(), 2 * pooled.rows());
+  for (std::size_t k = 0; k < per_frame.rows(); ++k) {
+    EXPECT_EQ(per_frame.column("P")[k], pooled.column("P")[k % pooled.rows()]) << k;
+  }
+  const granpipe::Table& volumes = results.tables().at("volume_distribution");
+  ASSERT_EQ(results.tables().at("frame_v").rows(), 2 * volumes.rows());
+  EXPECT_EQ(results.tables().at("frame_v").column("rho_v")[3], volumes.column("rho_v")[3]);
+}
+
 std::string refusal(const Frame& f) {
   try {
     measure_pores(f, std::nullopt, 1e-9, "test");
