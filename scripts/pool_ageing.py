@@ -27,8 +27,8 @@ import os
 import numpy as np
 from scipy.optimize import curve_fit
 
-from input_error import read_pipeline, refuse
-from result_csv import read_table
+from input_error import refuse
+from result_csv import read_table, sweep_groups
 
 
 def eq6(t, a_inf, b, tau):
@@ -90,16 +90,7 @@ def main():
     ap.add_argument("--analyzer", default="compaction", help="name of the compaction analyzer in the pipeline")
     ap.add_argument("--over", default="source.params.replica", help="the swept parameter that numbers the realizations")
     args = ap.parse_args()
-    points_path = os.path.join(args.out, "sweep.points.csv")
-    _, header, points = read_table(points_path)
-    if args.over not in header:
-        refuse(f"{points_path}: expected a swept column {args.over}, found {header[1:4]}...")
-    swept = list(read_pipeline(args.out).get("sweep", {}).get("parameters", {}).keys())
-    others = [s for s in swept if s != args.over and s in header]
-    groups = {}
-    for p in points:
-        key = tuple(p[header.index(s)] for s in others)
-        groups.setdefault(key, []).append(int(p[header.index("point")]))
+    _, _, _, others, groups = sweep_groups(args.out, args.over)
     provenance, pooled_rows, fit_rows = "", [], []
     for gkey, members in sorted(groups.items()):
         group = ", ".join(f"{s.split('.')[-1]}={v:g}" for s, v in zip(others, gkey)) or "all"

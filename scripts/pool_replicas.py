@@ -28,8 +28,8 @@ import math
 import os
 
 from charts import line_chart
-from input_error import read_pipeline, refuse
-from result_csv import read_table
+from input_error import refuse
+from result_csv import read_table, sweep_groups
 
 BRANCHES = {0: "first increase", 1: "decreasing", 2: "increasing"}
 
@@ -76,15 +76,7 @@ def main():
     ap.add_argument("--reference-x", default="source.params.A", help="column of the reference's sweep.points.csv for x")
     args = ap.parse_args()
     points_path = os.path.join(args.out, "sweep.points.csv")
-    points_provenance, header, points = read_table(points_path)
-    if args.over not in header:
-        refuse(f"{points_path}: expected a swept column {args.over}, found {header[1:4]}...")
-    swept = list(read_pipeline(args.out).get("sweep", {}).get("parameters", {}).keys())
-    others = [s for s in swept if s != args.over and s in header]
-    groups = {}
-    for p in points:
-        key = tuple(p[header.index(s)] for s in others)
-        groups.setdefault(key, []).append(int(p[header.index("point")]))
+    points_provenance, header, points, others, groups = sweep_groups(args.out, args.over)
 
     row_of_point = {int(p[header.index("point")]): p for p in points}
     if "points" in args.table and args.plot and not others:

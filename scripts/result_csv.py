@@ -2,7 +2,9 @@
 then rows of numbers (string sweep values appear as their index in the sweep list)."""
 import csv
 
-from input_error import refuse
+import os
+
+from input_error import read_pipeline, refuse
 
 
 def read_table(path):
@@ -25,3 +27,21 @@ def read_table(path):
         except ValueError:
             refuse(f"{path}: data row {k}: expected numbers, found {row}")
     return provenance, rows[0], numbers
+
+
+def sweep_groups(out, over):
+    """The sweep points of the run in `out` grouped by every swept parameter but `over` (the
+    replicas or realizations pooled): (provenance, header, points, the other swept columns,
+    {their values: [point numbers]})."""
+    points_path = os.path.join(out, "sweep.points.csv")
+    provenance, header, points = read_table(points_path)
+    if over not in header:
+        refuse(f"{points_path}: expected a swept column {over}, found {header[1:4]}...")
+    swept = list(read_pipeline(out).get("sweep", {}).get("parameters", {}).keys())
+    others = [s for s in swept if s != over and s in header]
+    groups = {}
+    for p in points:
+        key = tuple(p[header.index(s)] for s in others)
+        groups.setdefault(key, []).append(int(p[header.index("point")]))
+    return provenance, header, points, others, groups
+
