@@ -8,6 +8,7 @@
 #include <limits>
 #include <memory>
 #include <mutex>
+#include <utility>
 
 namespace granpipe {
 namespace {
@@ -143,6 +144,18 @@ CurveFit fit_curve(const CurveModel& model, const std::vector<double>& x,
   if (solved.fitted()) return solved;
   fit.status = solved.status;
   return fit;
+}
+
+Fit result_fit(const CurveFit& fit, std::string model, std::vector<std::string> names) {
+  Fit out;
+  out.model = std::move(model);
+  out.names = std::move(names);
+  out.values.assign(fit.value.begin(), fit.value.end());
+  out.errors.assign(fit.error.begin(), fit.error.end());
+  out.covariance = fit.covariance;
+  out.chi2 = fit.fitted() ? fit.chi2 : std::nan("");
+  out.dof = fit.dof;
+  return out;
 }
 
 }  // namespace granpipe

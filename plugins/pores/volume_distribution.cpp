@@ -64,16 +64,9 @@ void VolumeDistribution::report(Results& results, double nu) const {
     t.add_row({centre(k), counts_[k], rho[k], err});
   }
   results.add_table("volume_distribution", std::move(t));
-  const CurveFit fit = tail_fit(nu);
-  Fit out;
-  out.model = "rho_v(v) = A exp(-v / lambda), v >= v_tail";
-  out.names = {"A", "lambda"};
-  out.values.assign(fit.value.begin(), fit.value.end());
-  out.errors.assign(fit.error.begin(), fit.error.end());
-  out.covariance = fit.covariance;
-  out.chi2 = fit.fitted() ? fit.chi2 : std::nan("");
-  out.dof = fit.dof;
-  results.add_fit("rho_v_tail", std::move(out));
+  results.add_fit(
+      "rho_v_tail",
+      result_fit(tail_fit(nu), "rho_v(v) = A exp(-v / lambda), v >= v_tail", {"A", "lambda"}));
 }
 
 }  // namespace granpipe::pores

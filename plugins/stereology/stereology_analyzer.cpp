@@ -151,15 +151,8 @@ void StereologyAnalyzer::add_mean_fit(Results& results) const {
   if (!fit.fitted()) {
     log_.warn("stereology: Eq. (7) not fitted to the mean profile (" + describe(fit.status) + ")");
   }
-  Fit out;
-  out.model = kFermiFormula;
-  out.names.assign(std::begin(kFermiNames), std::end(kFermiNames));
-  out.values.assign(fit.value.begin(), fit.value.end());
-  out.errors.assign(fit.error.begin(), fit.error.end());
-  out.covariance = fit.covariance;
-  out.chi2 = fit.fitted() ? fit.chi2 : std::nan("");
-  out.dof = fit.dof;
-  results.add_fit("eq7_mean_profile", std::move(out));
+  results.add_fit("eq7_mean_profile",
+                  result_fit(fit, kFermiFormula, {std::begin(kFermiNames), std::end(kFermiNames)}));
 }
 
 void StereologyAnalyzer::finish(Results& results) {

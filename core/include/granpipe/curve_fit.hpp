@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "granpipe/results.hpp"
+
 namespace granpipe {
 
 // The model's value at x for parameters p, and its gradient with respect to p.
@@ -40,5 +42,9 @@ struct CurveFit {
 CurveFit fit_curve(const CurveModel& model, const std::vector<double>& x,
                    const std::vector<double>& y, const std::vector<double>& sigma,
                    const Eigen::VectorXd& start);
+
+// The fit as a result (Results::add_fit) of the formula `model` with these parameter
+// names; values and errors NaN, chi2 NaN when it was not fitted.
+Fit result_fit(const CurveFit& fit, std::string model, std::vector<std::string> names);
 
 }  // namespace granpipe
