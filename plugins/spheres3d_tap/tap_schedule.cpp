@@ -5,7 +5,8 @@
 namespace granpipe::spheres3d_tap {
 
 bool SaveSchedule::saves(std::int64_t tap) const {
-  if (tap == 0 || tap % every == 0) return true;
+  if (tap == 0) return start;
+  if (tap % every == 0) return true;
   if (!logarithmic) return false;
   // Tap t is saved when it is the first tap at or past 10^(k/10) for some k: the largest
   // such power not above t lies above t - 1.

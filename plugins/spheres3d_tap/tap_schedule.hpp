@@ -8,6 +8,7 @@ namespace granpipe::spheres3d_tap {
 struct SaveSchedule {
   std::int64_t every = 10;
   bool logarithmic = true;
+  bool start = true;  // tap 0, the deposition or the saved packing
 
   bool saves(std::int64_t tap) const;
 };

@@ -134,6 +134,9 @@ Schema schema() {
             "save every k-th tap, the start (tap 0) and, in a ramp, the last tap at each value")
       .min(1);
   s.boolean("log_frames", true, "also save taps spaced evenly in log(tap), ten per decade");
+  s.boolean("save_start", true,
+            "save tap 0 (the deposition or the saved packing); false: only tapped packings, e.g. "
+            "a sweep over taps with shared seeds whose points each measure one stage");
   s.real("d_max", 0.2, "largest Monte Carlo displacement, in units of R (the paper's R/5)")
       .range(1e-6, 2.0);
   s.real("theta0", std::numbers::pi / 4.0,
@@ -161,7 +164,8 @@ TapSource::TapSource(const PluginContext& ctx)
       deposition_rng_(replica_seeds(ctx).stream("deposition")),
       tap_rng_(replica_seeds(ctx).stream("tap")),
       redeposition_(box_, redeposition_options(ctx.params)),
-      schedule_{ctx.params.integer("save_every"), ctx.params.boolean("log_frames")},
+      schedule_{ctx.params.integer("save_every"), ctx.params.boolean("log_frames"),
+                ctx.params.boolean("save_start")},
       protocol_(epsilon_protocol(ctx)),
       initial_file_(ctx.params.string("initial_file")),
       initial_param_(ctx.param("initial_file")),

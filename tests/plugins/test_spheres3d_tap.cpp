@@ -317,6 +317,14 @@ TEST(SaveSchedule, SavesTenTapsPerDecadeAndEveryKth) {
   for (std::int64_t t = 0; t <= 100; ++t) EXPECT_EQ(every.saves(t), t % 25 == 0) << t;
 }
 
+TEST(SaveSchedule, TheStartCanBeLeftOut) {
+  const SaveSchedule tapped_only{50, false, false};
+  EXPECT_FALSE(tapped_only.saves(0));
+  EXPECT_FALSE(tapped_only.saves(1));
+  EXPECT_TRUE(tapped_only.saves(50));
+  EXPECT_TRUE((SaveSchedule{50, false, true}.saves(0)));
+}
+
 TEST(EpsilonProtocol, RampsStepTheRootUpDownAndUpAgainEndingEachStep) {
   // sqrt(epsilon) 0.1, 0.2, 0.3 up, 0.2, 0.1 down, 0.2, 0.3 up; two taps each.
   const EpsilonProtocol ramp = EpsilonProtocol::ramp(0.1, 0.3, 0.1, 2, 3);
