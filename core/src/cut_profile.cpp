@@ -85,52 +85,56 @@ double slab_measure(int dim, double r, double a, double b) {
                   : overlap::disk_segment_area(r, a) - overlap::disk_segment_area(r, b);
 }
 
+// What `add(at, r, sum)` puts into the slots of `sum` for every image (centre `at`, radius r)
+// of every particle that reaches the range [x0, x0 + step count) along `axis`, over `norm`.
+template <class Add>
+std::vector<double> summed_over_images(const Frame& frame, const Region& region, int axis,
+                                       double x0, double step, int count, double norm, Add&& add) {
+  std::vector<double> sum(static_cast<std::size_t>(std::max(count, 0)), 0.0);
+  if (count <= 0) return sum;
+  for (Eigen::Index k = 0; k < frame.size(); ++k) {
+    const double r = frame.radius()[k];
+    for_each_image(frame, k, region, axis, x0, x0 + step * count,
+                   [&](const auto& at) { add(at, r, sum); });
+  }
+  for (double& s : sum) s /= norm;
+  return sum;
+}
+
 }  // namespace
 
 std::vector<double> cut_fractions(const Frame& frame, const Region& region, int axis, double x0,
                                   double step, int count) {
-  std::vector<double> sum(static_cast<std::size_t>(std::max(count, 0)), 0.0);
-  if (count <= 0) return sum;
   const int dim = frame.dim;
-  for (Eigen::Index k = 0; k < frame.size(); ++k) {
-    const double r = frame.radius()[k];
-    for_each_image(frame, k, region, axis, x0, x0 + step * count, [&](const auto& at) {
-      const auto [first, last] = cuts_reached(at[axis], r, x0, step, count);
-      for (int m = first; m <= last; ++m) {
-        const double w = overlap::cut_radius(r, x0 + (m + 0.5) * step - at[axis]);
-        if (w > 0.0) sum[static_cast<std::size_t>(m)] += section_in(dim, at, w, region, axis);
-      }
-    });
-  }
-  const double area = cross_section(dim, region, axis);
-  for (double& s : sum) s /= area;
-  return sum;
+  return summed_over_images(
+      frame, region, axis, x0, step, count, cross_section(dim, region, axis),
+      [&](const std::array<double, 3>& at, double r, std::vector<double>& sum) {
+        const auto [first, last] = cuts_reached(at[axis], r, x0, step, count);
+        for (int m = first; m <= last; ++m) {
+          const double w = overlap::cut_radius(r, x0 + (m + 0.5) * step - at[axis]);
+          if (w > 0.0) sum[static_cast<std::size_t>(m)] += section_in(dim, at, w, region, axis);
+        }
+      });
 }
 
 std::vector<double> bin_fractions(const Frame& frame, const Region& region, int axis, double x0,
                                   double step, int count) {
-  std::vector<double> sum(static_cast<std::size_t>(std::max(count, 0)), 0.0);
-  if (count <= 0) return sum;
   const int dim = frame.dim;
-  for (Eigen::Index k = 0; k < frame.size(); ++k) {
-    const double r = frame.radius()[k];
-    for_each_image(frame, k, region, axis, x0, x0 + step * count, [&](const auto& at) {
-      const auto [first, last] = bins_reached(at[axis], r, x0, step, count);
-      const bool whole_across = inside_across(dim, at, r, region, axis);
-      Region bin = region;
-      for (int m = first; m <= last; ++m) {
-        bin.lo[axis] = x0 + m * step;
-        bin.hi[axis] = x0 + (m + 1) * step;
-        sum[static_cast<std::size_t>(m)] +=
-            whole_across
-                ? slab_measure(dim, r, bin.lo[axis] - at[axis], bin.hi[axis] - at[axis])
-                : overlap::ball_box_measure(dim, at.data(), r, bin.lo.data(), bin.hi.data());
-      }
-    });
-  }
-  const double volume = cross_section(dim, region, axis) * step;
-  for (double& s : sum) s /= volume;
-  return sum;
+  return summed_over_images(
+      frame, region, axis, x0, step, count, cross_section(dim, region, axis) * step,
+      [&](const std::array<double, 3>& at, double r, std::vector<double>& sum) {
+        const auto [first, last] = bins_reached(at[axis], r, x0, step, count);
+        const bool whole_across = inside_across(dim, at, r, region, axis);
+        Region bin = region;
+        for (int m = first; m <= last; ++m) {
+          bin.lo[axis] = x0 + m * step;
+          bin.hi[axis] = x0 + (m + 1) * step;
+          sum[static_cast<std::size_t>(m)] +=
+              whole_across
+                  ? slab_measure(dim, r, bin.lo[axis] - at[axis], bin.hi[axis] - at[axis])
+                  : overlap::ball_box_measure(dim, at.data(), r, bin.lo.data(), bin.hi.data());
+        }
+      });
 }
 
 }  // namespace granpipe

@@ -12,6 +12,14 @@ double Region::volume() const {
   return v;
 }
 
+Region container_region(const Frame& frame) {
+  Region r;
+  r.dim = frame.dim;
+  r.lo = frame.container.lo;
+  r.hi = frame.container.hi;
+  return r;
+}
+
 void image_shifts(double x, double r, double a, double b, bool periodic, double period,
                   std::vector<double>& out) {
   out.clear();

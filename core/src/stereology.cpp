@@ -6,6 +6,7 @@
 
 #include "granpipe/cut_profile.hpp"
 #include "granpipe/errors.hpp"
+#include "granpipe/region.hpp"
 
 namespace granpipe {
 namespace {
@@ -64,10 +65,7 @@ GlobalFractions global_fractions(const Frame& frame, const StereologySettings& s
   g.phi_b = g.phi_c = std::nan("");
   if (frame.size() == 0) return g;
   g.radius = frame.radius().mean();
-  Region cross;
-  cross.dim = frame.dim;
-  cross.lo = frame.container.lo;
-  cross.hi = frame.container.hi;
+  const Region cross = container_region(frame);
   const double r = g.radius;
   g.phi_b = fraction_between(frame, cross, 0.0, s.bulk_top * r);
   g.height_c = quantile_height(frame, s.fraction);

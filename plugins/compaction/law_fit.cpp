@@ -35,24 +35,16 @@ SeriesEnds series_ends(const Points& p) {
   return e;
 }
 
-double scatter(const Law& law, const CurveFit& fit, const Points& p) {
-  double sum = 0.0;
-  for (std::size_t k = 0; k < p.t.size(); ++k) {
-    const double r = law.model.value(fit.value, p.t[k]) - p.y[k];
-    sum += r * r;
-  }
-  return std::sqrt(sum / fit.dof);
-}
-
-// The fitted parameters with tau = exp(ln tau) and its error propagated.
-LawFit reported(const CurveFit& fit, double s) {
+// The fitted parameters with tau = exp(ln tau) and its error propagated; the points'
+// scatter about the law is sqrt(chi^2 / dof), as they are unweighted.
+LawFit reported(const CurveFit& fit) {
   LawFit out;
   out.status = fit.status;
   out.value.assign(fit.value.begin(), fit.value.end());
   out.error.assign(fit.error.begin(), fit.error.end());
   out.value.back() = std::exp(fit.value[fit.value.size() - 1]);
   out.error.back() = out.value.back() * fit.error[fit.error.size() - 1];
-  out.scatter = fit.fitted() ? s : std::nan("");
+  out.scatter = fit.fitted() ? std::sqrt(fit.chi2 / fit.dof) : std::nan("");
   out.chi2 = fit.chi2;
   out.dof = fit.dof;
   return out;
@@ -69,9 +61,7 @@ std::vector<double> law_start(const Law& law, const std::vector<double>& t,
 
 LawFit fit_law(const Law& law, const std::vector<double>& t, const std::vector<double>& y) {
   const Points p = finite_points(t, y);
-  const CurveFit fit = fit_curve(law.model, p.t, p.y, {}, law.start(series_ends(p)));
-  if (!fit.fitted()) return reported(fit, 0.0);
-  return reported(fit, scatter(law, fit, p));
+  return reported(fit_curve(law.model, p.t, p.y, {}, law.start(series_ends(p))));
 }
 
 }  // namespace granpipe::compaction

@@ -199,15 +199,7 @@ void PackingAnalyzer::consume(const Frame& frame, FrameCache& cache) {
                       m.phi, m.number_density, m.centres > 0 ? m.z_mean : std::nan("")});
   if (settings_.cuts_step > 0.0) phi_cuts_.add(m.phi_cuts);
   if (settings_.profile_step > 0.0) {
-    // Heights a frame does not reach (above its surface) have an empty cut: zeros, so
-    // that the profile is the plain mean over frames.
-    if (m.profile.size() > profile_.size()) {
-      const std::size_t old = profile_.size();
-      profile_.resize(m.profile.size());
-      for (std::size_t k = old; k < profile_.size(); ++k) profile_[k].add(0.0, frames_);
-    }
-    for (std::size_t k = 0; k < profile_.size(); ++k)
-      profile_[k].add(k < m.profile.size() ? m.profile[k] : 0.0);
+    profile_.add(m.profile);
   }
   ++frames_;
 }
@@ -244,9 +236,9 @@ void PackingAnalyzer::finish(Results& results) {
     Table t({"height", "phi", "phi_err"},
             "area fraction of horizontal cuts against height above the base, mean over frames");
     t.units = {"mean diameters", "", ""};
-    for (std::size_t k = 0; k < profile_.size(); ++k) {
-      t.add_row({(static_cast<double>(k) + 0.5) * settings_.profile_step, profile_[k].mean(),
-                 profile_[k].standard_error()});
+    for (std::size_t k = 0; k < profile_.bins().size(); ++k) {
+      t.add_row({(static_cast<double>(k) + 0.5) * settings_.profile_step, profile_.bins()[k].mean(),
+                 profile_.bins()[k].standard_error()});
     }
     results.add_table("profile", std::move(t));
     results.add_plot("profile", {.table = "profile",

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "granpipe/contacts_by_distance.hpp"
+#include "granpipe/mean_profile.hpp"
 #include "granpipe/plugin.hpp"
 #include "granpipe/ramp_means.hpp"
 #include "granpipe/region.hpp"
@@ -83,7 +84,7 @@ class PackingAnalyzer : public Analyzer {
   RunningMean phi_, density_, z_, z_walls_, phi_cuts_;
   RampMeans by_ramp_{{"phi", "z_mean"}};
   StreamedTable per_frame_;
-  std::vector<RunningMean> profile_;
+  MeanProfile profile_;  // the vertical profile, over frames
 };
 
 }  // namespace granpipe::packing

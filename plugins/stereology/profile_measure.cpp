@@ -5,17 +5,10 @@
 
 #include "granpipe/cut_profile.hpp"
 #include "granpipe/errors.hpp"
+#include "granpipe/region.hpp"
 
 namespace granpipe::stereology {
 namespace {
-
-Region whole_box(const Frame& f) {
-  Region r;
-  r.dim = f.dim;
-  r.lo = f.container.lo;
-  r.hi = f.container.hi;
-  return r;
-}
 
 double highest_top(const Frame& f) { return (f.position().col(f.dim - 1) + f.radius()).maxCoeff(); }
 
@@ -44,7 +37,7 @@ ProfileMeasurement measure_profiles(const Frame& frame, const ProfileSettings& s
   m.global = global_fractions(frame, s.global);
   const int v = frame.dim - 1;
   const double r = m.global.radius, base = frame.container.lo[v];
-  const Region box = whole_box(frame);
+  const Region box = container_region(frame);
 
   const double step = s.step * r;
   const int count = std::max(1, static_cast<int>(std::ceil((highest_top(frame) - base) / step)));

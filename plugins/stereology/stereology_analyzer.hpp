@@ -6,6 +6,7 @@
 #include <optional>
 #include <vector>
 
+#include "granpipe/mean_profile.hpp"
 #include "granpipe/plugin.hpp"
 #include "granpipe/ramp_means.hpp"
 #include "profile_measure.hpp"
@@ -13,18 +14,6 @@
 namespace granpipe::stereology {
 
 Schema schema();
-
-// Mean over frames of profiles of varying length: a frame shorter than the longest
-// (its surface lower) counts zeros above its top, so that the mean is over every frame.
-class MeanProfile {
- public:
-  void add(const std::vector<double>& profile);
-  const std::vector<RunningMean>& bins() const { return bins_; }
-
- private:
-  std::vector<RunningMean> bins_;
-  long frames_ = 0;
-};
 
 class StereologyAnalyzer : public Analyzer {
  public:

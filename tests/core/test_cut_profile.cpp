@@ -59,14 +59,6 @@ Frame random_spheres(bool periodic, double side, double height, double r, int tr
   return f;
 }
 
-Region whole(const Frame& f) {
-  Region r;
-  r.dim = f.dim;
-  r.lo = f.container.lo;
-  r.hi = f.container.hi;
-  return r;
-}
-
 // A simple cubic crystal of spheres of radius 1 touching (cells of side 2) with `layers`
 // layers on the bottom, centres at heights 1, 3, 5, ..., lateral sides periodic.
 Frame cubic_layers(int cells, int layers) {
@@ -93,7 +85,7 @@ TEST(BinFractions, EqualTheSphereSlabVolumesOfRandomPackings) {
     const Frame f = random_spheres(periodic, side, 6.0, r, 4000);
     ASSERT_GT(f.size(), 100);
     const int count = 17;
-    const std::vector<double> bins = bin_fractions(f, whole(f), 2, 0.1, step, count);
+    const std::vector<double> bins = bin_fractions(f, container_region(f), 2, 0.1, step, count);
     for (int m = 0; m < count; ++m) {
       double volume = 0.0;
       const double a = 0.1 + m * step, b = a + step;
@@ -108,7 +100,7 @@ TEST(BinFractions, EqualTheSphereSlabVolumesOfRandomPackings) {
 
 TEST(BinFractions, AcrossAnyAxisAddUpToTheParticleVolumeOfTheRegion) {
   const Frame f = random_spheres(true, 8.0, 6.0, 0.5, 3000);
-  Region region = whole(f);
+  Region region = container_region(f);
   region.lo = Eigen::Vector3d(0.3, -0.2, 1.1);
   region.hi = Eigen::Vector3d(7.1, 5.3, 4.4);
   const double total = particle_measure_in(f, region);
@@ -123,7 +115,7 @@ TEST(BinFractions, AcrossAnyAxisAddUpToTheParticleVolumeOfTheRegion) {
 
 TEST(CutFractions, DenseCutsConvergeToTheExactBinsAlongEveryAxis) {
   const Frame f = random_spheres(false, 8.0, 6.0, 0.5, 3000);
-  const Region region = whole(f);
+  const Region region = container_region(f);
   for (int axis = 0; axis < 3; ++axis) {
     const double x0 = 0.5, width = 2.0;
     const double exact = bin_fractions(f, region, axis, x0, width, 1)[0];
@@ -135,9 +127,9 @@ TEST(CutFractions, DenseCutsConvergeToTheExactBinsAlongEveryAxis) {
 
 TEST(BinFractions, OfWholeLatticePeriodsAreTheLatticeFraction) {
   const Frame f = cubic_layers(4, 6);
-  const std::vector<double> z = bin_fractions(f, whole(f), 2, 0.0, 2.0, 6);
+  const std::vector<double> z = bin_fractions(f, container_region(f), 2, 0.0, 2.0, 6);
   for (double phi : z) EXPECT_NEAR(phi, kPi / 6.0, 1e-13);
-  const std::vector<double> x = bin_fractions(f, whole(f), 0, 0.0, 4.0, 2);
+  const std::vector<double> x = bin_fractions(f, container_region(f), 0, 0.0, 4.0, 2);
   // Across x the region's height holds 6 layers of 2 and 5 empty units above.
   for (double phi : x) EXPECT_NEAR(phi, kPi / 6.0 * 12.0 / 17.0, 1e-13);
 }
@@ -153,7 +145,7 @@ TEST(BinFractions, DisksOfASquareLatticeInTwoDimensions) {
     f.radius()[k] = 1.0;
   }
   for (int axis = 0; axis < 2; ++axis) {
-    for (double phi : bin_fractions(f, whole(f), axis, 0.0, 2.0, 3)) {
+    for (double phi : bin_fractions(f, container_region(f), axis, 0.0, 2.0, 3)) {
       EXPECT_NEAR(phi, kPi / 4.0, 1e-13) << "axis " << axis;
     }
   }

@@ -15,6 +15,9 @@ struct Region {
   double volume() const;  // area in 2D
 };
 
+// The container's box [lo, hi] as a region (for a cylinder, its bounding box).
+Region container_region(const Frame& frame);
+
 // Shifts k*L (k integer) along a periodic axis of length L that make [x - r, x + r]
 // overlap [a, b]; on a non-periodic axis just 0 when they overlap. Written into `out`.
 void image_shifts(double x, double r, double a, double b, bool periodic, double period,
