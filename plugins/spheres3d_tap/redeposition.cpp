@@ -3,42 +3,63 @@
 #include <cmath>
 
 namespace granpipe::spheres3d_tap {
+namespace {
+// How far a sphere may stray before its neighbour list is renewed, in units of the
+// longest move: measured at the paper's settings, renewals then cost a few per cent of
+// the trials' time while the lists stay about a dozen spheres long.
+constexpr double kSlackPerMove = 1.0;
+}  // namespace
 
 Redeposition::Redeposition(const TapBox& box, RedepositionOptions options)
-    : box_(box), options_(options), grid_(box) {}
+    : box_(box),
+      options_(options),
+      grid_(box),
+      lists_(box, options.move.d_max(), kSlackPerMove * options.move.d_max()) {}
 
 void Redeposition::rebuild(const std::vector<Eigen::Vector3d>& centres) {
   grid_ = SphereGrid(box_);
   for (std::size_t i = 0; i < centres.size(); ++i)
     grid_.put(static_cast<std::int32_t>(i), centres[i]);
+  lists_.rebuild(centres, grid_);
 }
 
-bool Redeposition::fits(const std::vector<Eigen::Vector3d>& centres, std::int32_t i,
-                        const Eigen::Vector3d& x) const {
+bool Redeposition::inside(const Eigen::Vector3d& x) const {
   const double r = box_.radius;
   if (x.z() < r) return false;
-  if (!box_.periodic() &&
-      (x.x() < r || x.y() < r || x.x() > box_.side - r || x.y() > box_.side - r))
-    return false;
-  return !grid_.any_within(x, 2.0 * r, i, centres);
+  return box_.periodic() ||
+         (x.x() >= r && x.y() >= r && x.x() <= box_.side - r && x.y() <= box_.side - r);
 }
 
-bool Redeposition::trial(std::vector<Eigen::Vector3d>& centres, RandomStream& rng,
-                         double& height_sum) {
+std::int32_t Redeposition::pick(const std::vector<Eigen::Vector3d>& centres,
+                                FastRandomStream& rng) {
   const auto i = static_cast<std::int32_t>(rng.below(centres.size()));
+  lists_.prefetch(i);
+  __builtin_prefetch(centres.data() + i);
+  return i;
+}
+
+bool Redeposition::trial(std::vector<Eigen::Vector3d>& centres, FastRandomStream& rng,
+                         double& height_sum) {
+  // The sphere after this one is drawn now, so that its list and centre come from memory
+  // while this trial runs: misses on them were a third of a trial's time.
+  const std::int32_t i = next_;
+  next_ = pick(centres, rng);
   Eigen::Vector3d& c = centres[static_cast<std::size_t>(i)];
-  const Eigen::Vector3d x = box_.wrap(c + options_.move.draw(rng));
-  if (!fits(centres, i, x)) return false;
+  const Eigen::Vector3d x = c + options_.move.draw(rng);
+  if (!inside(x) || lists_.overlaps(i, x, centres)) return false;
+  const Eigen::Vector3d wrapped = box_.wrap(x);
   grid_.erase(c);
-  grid_.put(i, x);
-  height_sum += x.z() - c.z();
-  c = x;
+  grid_.put(i, wrapped);
+  height_sum += wrapped.z() - c.z();
+  c = wrapped;
+  lists_.moved(i, centres, grid_);
   return true;
 }
 
 TapStats Redeposition::shake(std::vector<Eigen::Vector3d>& centres, std::int64_t n,
-                             RandomStream& rng) {
+                             FastRandomStream& rng) {
   rebuild(centres);
+  next_ = pick(centres, rng);
   TapStats stats;
   double height_sum = 0.0;
   for (; stats.trials < n; ++stats.trials) stats.accepted += trial(centres, rng, height_sum);
@@ -46,10 +67,11 @@ TapStats Redeposition::shake(std::vector<Eigen::Vector3d>& centres, std::int64_t
 }
 
 TapStats Redeposition::tap(std::vector<Eigen::Vector3d>& centres, double epsilon,
-                           RandomStream& rng) {
+                           FastRandomStream& rng) {
   // Vertical distances only grow, so the dilated packing overlaps nothing.
   for (auto& c : centres) c.z() *= 1.0 + epsilon;
   rebuild(centres);
+  next_ = pick(centres, rng);
   const std::int64_t per_check =
       options_.check_moves > 0 ? options_.check_moves : static_cast<std::int64_t>(centres.size());
   double height_sum = 0.0;

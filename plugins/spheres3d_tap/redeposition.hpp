@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "granpipe/random.hpp"
+#include "neighbour_lists.hpp"
 #include "sphere_grid.hpp"
 #include "tap_box.hpp"
 #include "trial_move.hpp"
@@ -32,20 +33,26 @@ class Redeposition {
   Redeposition(const TapBox& box, RedepositionOptions options);
 
   // Dilates and redeposits `centres` in place.
-  TapStats tap(std::vector<Eigen::Vector3d>& centres, double epsilon, RandomStream& rng);
+  TapStats tap(std::vector<Eigen::Vector3d>& centres, double epsilon, FastRandomStream& rng);
   // Trials only, no dilation and no stopping rule: n trial moves.
-  TapStats shake(std::vector<Eigen::Vector3d>& centres, std::int64_t n, RandomStream& rng);
+  TapStats shake(std::vector<Eigen::Vector3d>& centres, std::int64_t n, FastRandomStream& rng);
+  // Neighbour lists renewed one sphere at a time since the object was made.
+  std::size_t list_renewals() const { return lists_.renewals(); }
 
  private:
   void rebuild(const std::vector<Eigen::Vector3d>& centres);
+  // A random sphere, whose list and centre are then fetched ahead of its trial.
+  std::int32_t pick(const std::vector<Eigen::Vector3d>& centres, FastRandomStream& rng);
   // One trial move of a random sphere; true when accepted. `height_sum` follows.
-  bool trial(std::vector<Eigen::Vector3d>& centres, RandomStream& rng, double& height_sum);
-  bool fits(const std::vector<Eigen::Vector3d>& centres, std::int32_t i,
-            const Eigen::Vector3d& x) const;
+  bool trial(std::vector<Eigen::Vector3d>& centres, FastRandomStream& rng, double& height_sum);
+  // The bottom and the walls (centre planes) leave room for a sphere at x.
+  bool inside(const Eigen::Vector3d& x) const;
 
   TapBox box_;
   RedepositionOptions options_;
   SphereGrid grid_;
+  NeighbourLists lists_;
+  std::int32_t next_ = 0;  // the sphere of the next trial
 };
 
 }  // namespace granpipe::spheres3d_tap

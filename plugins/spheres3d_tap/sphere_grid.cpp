@@ -28,18 +28,6 @@ void SphereGrid::put(std::int32_t i, const Eigen::Vector3d& x) {
   cell = i;
 }
 
-bool SphereGrid::any_within(const Eigen::Vector3d& x, double reach, std::int32_t self,
-                            const std::vector<Eigen::Vector3d>& centres) const {
-  const Eigen::Vector3d lo = x.array() - reach, hi = x.array() + reach;
-  const double reach2 = reach * reach;
-  return first_in(lo, hi, [&](std::int32_t j, double shift_x, double shift_y) {
-    if (j == self) return false;
-    const Eigen::Vector3d& c = centres[static_cast<std::size_t>(j)];
-    const double dx = c.x() + shift_x - x.x(), dy = c.y() + shift_y - x.y(), dz = c.z() - x.z();
-    return dx * dx + dy * dy + dz * dz < reach2;
-  });
-}
-
 void SphereGrid::axis_range(double lo, double hi, int& first, int& last) const {
   first = floor_int(lo * inv_cell_);
   last = floor_int(hi * inv_cell_);

@@ -1,9 +1,10 @@
 #pragma once
 // A grid of cubic cells small enough that no two non-overlapping spheres can have their
 // centres in one cell (side < 2R / sqrt 3), so each cell holds one sphere index or none:
-// O(1) moves and flat-array queries, no lists, which is what makes a Monte Carlo trial
-// move cheap. Cells cover the box's cross-section; layers are added upwards as the
-// packing grows. Along periodic sides queries wrap and report the image's shift.
+// O(1) moves and flat-array queries, no lists: the Monte Carlo moves one sphere per
+// accepted trial and asks for the neighbours of one when its list is renewed. Cells cover the box's
+// cross-section; layers are added upwards as the packing grows. Along periodic sides queries wrap
+// and report the image's shift.
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
@@ -34,17 +35,8 @@ class SphereGrid {
   // sides). A range wider than a period visits a sphere once per image it covers.
   template <class F>
   void for_each_in(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, F&& f) const;
-  // True when a sphere other than `self` has its centre closer than `reach` to x (an
-  // image's, along periodic sides); stops at the first one found. The Monte Carlo's
-  // overlap test, so it visits only the cells the sphere of radius reach can touch.
-  bool any_within(const Eigen::Vector3d& x, double reach, std::int32_t self,
-                  const std::vector<Eigen::Vector3d>& centres) const;
 
  private:
-  // Calls stop(j, shift_x, shift_y) for the spheres for_each_in visits, in the same order,
-  // until it returns true; true when it did.
-  template <class F>
-  bool first_in(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, F&& stop) const;
   // A cell index taken back into [0, n) along a periodic side, and the image shift that
   // takes a centre in that cell to the unwrapped one.
   struct Wrapped {
@@ -78,13 +70,13 @@ class SphereGrid {
 };
 
 template <class F>
-bool SphereGrid::first_in(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, F&& stop) const {
+void SphereGrid::for_each_in(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, F&& f) const {
   int x0, x1, y0, y1;
   axis_range(lo.x(), hi.x(), x0, x1);
   axis_range(lo.y(), hi.y(), y0, y1);
   const int z0 = layer_of(lo.z()), z1 = std::min(floor_int(hi.z() * inv_cell_), layers_ - 1);
-  // Wrapped indices step along with the unwrapped ones: no division in the loops, which
-  // an overlap test of ~100 cells would otherwise spend most of its time in.
+  // Wrapped indices step along with the unwrapped ones: no division in the loops over
+  // the few hundred cells of a query.
   const Wrapped first_x = wrapped(x0), first_y = wrapped(y0);
   for (int iz = z0; iz <= z1; ++iz) {
     Wrapped y = first_y;
@@ -93,19 +85,10 @@ bool SphereGrid::first_in(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, 
       Wrapped x = first_x;
       for (int ix = x0; ix <= x1; ++ix, x.step(n_, box_.side)) {
         const std::int32_t j = row[x.index];
-        if (j != kEmpty && stop(j, x.shift, y.shift)) return true;
+        if (j != kEmpty) f(j, Eigen::Vector3d(x.shift, y.shift, 0.0));
       }
     }
   }
-  return false;
-}
-
-template <class F>
-void SphereGrid::for_each_in(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, F&& f) const {
-  first_in(lo, hi, [&](std::int32_t j, double shift_x, double shift_y) {
-    f(j, Eigen::Vector3d(shift_x, shift_y, 0.0));
-    return false;
-  });
 }
 
 }  // namespace granpipe::spheres3d_tap

@@ -42,8 +42,7 @@ Property acceptance_property() {
 
 RedepositionOptions redeposition_options(const Params& p) {
   RedepositionOptions o;
-  o.move.d_max = p.real("d_max") * p.real("radius");
-  o.move.theta0 = p.real("theta0");
+  o.move = TrialMove(p.real("d_max") * p.real("radius"), p.real("theta0"));
   o.eta = p.real("eta");
   o.check_moves = p.integer("check_moves");
   o.max_checks = p.integer("max_checks");
@@ -162,7 +161,7 @@ TapSource::TapSource(const PluginContext& ctx)
     : progress_(ctx.progress),
       box_(tap_box(ctx)),
       deposition_rng_(replica_seeds(ctx).stream("deposition")),
-      tap_rng_(replica_seeds(ctx).stream("tap")),
+      tap_rng_(replica_seeds(ctx).derive("tap").seed()),
       redeposition_(box_, redeposition_options(ctx.params)),
       schedule_{ctx.params.integer("save_every"), ctx.params.boolean("log_frames"),
                 ctx.params.boolean("save_start")},

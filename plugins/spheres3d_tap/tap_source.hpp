@@ -34,7 +34,8 @@ class TapSource : public Source {
 
   Progress& progress_;
   TapBox box_;
-  RandomStream deposition_rng_, tap_rng_;
+  RandomStream deposition_rng_;
+  FastRandomStream tap_rng_;
   Redeposition redeposition_;
   SaveSchedule schedule_;
   EpsilonProtocol protocol_;

@@ -2,7 +2,9 @@
 // different, uncorrelated streams; uniform() has the right moments.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <vector>
 
@@ -81,4 +83,20 @@ TEST(Random, ShufflesAreUniformPermutations) {
   chi2 = 0;
   for (int h : hits) chi2 += std::pow(h - 10000.0, 2) / 10000.0;
   EXPECT_LT(chi2, 22.5);  // 6 degrees of freedom, p = 0.001
+}
+
+TEST(Xoshiro, MatchesTheAuthorsReferenceOutputs) {
+  // The first outputs of xoshiro256plusplus.c (Blackman and Vigna) from the state 1, 2, 3, 4.
+  Xoshiro256pp g(std::array<std::uint64_t, 4>{1, 2, 3, 4});
+  const std::vector<std::uint64_t> expected{41943041ull,
+                                            58720359ull,
+                                            3588806011781223ull,
+                                            3591011842654386ull,
+                                            9228616714210784205ull,
+                                            9973669472204895162ull,
+                                            14011001112246962877ull,
+                                            12406186145184390807ull,
+                                            15849039046786891736ull,
+                                            10450023813501588000ull};
+  for (std::uint64_t e : expected) EXPECT_EQ(g(), e);
 }

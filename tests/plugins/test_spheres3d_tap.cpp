@@ -12,7 +12,9 @@
 #include "epsilon_protocol.hpp"
 #include "granpipe/container.hpp"
 #include "granpipe/frame.hpp"
+#include "neighbour_lists.hpp"
 #include "redeposition.hpp"
+#include "sphere_grid.hpp"
 #include "tap_schedule.hpp"
 #include "trial_move.hpp"
 
@@ -184,33 +186,61 @@ double chi2(const std::vector<double>& counts, const std::vector<double>& expect
 constexpr double kChi2Critical19 = 43.82;
 constexpr int kBins = 20;
 
-TEST(TrialMove, ThePolarAngleHasTheDensityOfEquationOneTruncatedAtNinetyDegrees) {
-  const TrialMove move;
-  RandomStream rng(31);
-  const int n = 200000;
+// Counts of the polar angle theta in kBins bins of [0, pi/2] against Eq. (1)'s density
+// exp(-(t/t0)^2) integrated over each bin: (sqrt(pi)/2) t0 (erf(b/t0) - erf(a/t0)).
+double polar_chi2(const std::vector<double>& thetas, double theta0) {
   const double width = std::numbers::pi / 2.0 / kBins;
   std::vector<double> counts(kBins, 0.0), expected(kBins, 0.0);
-  for (int k = 0; k < n; ++k)
-    counts[std::min(kBins - 1, static_cast<int>(move.polar(rng) / width))] += 1.0;
-  // exp(-(t/t0)^2) integrated over each bin: (sqrt(pi)/2) t0 (erf(b/t0) - erf(a/t0)).
+  for (double t : thetas) counts[std::min(kBins - 1, static_cast<int>(t / width))] += 1.0;
   double total = 0.0;
   for (int b = 0; b < kBins; ++b) {
-    expected[b] = std::erf((b + 1) * width / move.theta0) - std::erf(b * width / move.theta0);
+    expected[b] = std::erf((b + 1) * width / theta0) - std::erf(b * width / theta0);
     total += expected[b];
   }
-  for (double& e : expected) e *= n / total;
-  EXPECT_LT(chi2(counts, expected), kChi2Critical19);
+  for (double& e : expected) e *= static_cast<double>(thetas.size()) / total;
+  return chi2(counts, expected);
+}
+
+TEST(TrialMove, ThePolarAngleHasTheDensityOfEquationOneTruncatedAtNinetyDegrees) {
+  // Both the angle drawn and the angle of the displacement vector, whose sines and
+  // cosines come from tables and series: each against the density, for the paper's
+  // width and a narrower one (whose envelope falls a hundredfold over the strips).
+  for (double theta0 : {std::numbers::pi / 4.0, 0.6}) {
+    const TrialMove move(0.2, theta0);
+    FastRandomStream rng(31);
+    std::vector<double> drawn, of_vector;
+    for (int k = 0; k < 200000; ++k) {
+      drawn.push_back(move.polar(rng));
+      const Eigen::Vector3d d = move.draw(rng);
+      of_vector.push_back(std::acos(std::clamp(-d.z() / d.norm(), -1.0, 1.0)));
+    }
+    EXPECT_LT(polar_chi2(drawn, theta0), kChi2Critical19) << theta0;
+    EXPECT_LT(polar_chi2(of_vector, theta0), kChi2Critical19) << theta0;
+  }
+}
+
+TEST(TrialMove, SinesAndCosinesAreExactToRounding) {
+  // |d| is the drawn length to rounding only if sin^2 + cos^2 = 1 for both angles: the
+  // length is uniform, so |d| / d_max spread over [0, 1) with no point above 1.
+  const TrialMove move(1.0, std::numbers::pi / 4.0);
+  FastRandomStream a(33), b(33);
+  for (int k = 0; k < 100000; ++k) {
+    const double length = b.uniform();
+    b.bits();  // the azimuth's draw
+    move.polar(b);
+    EXPECT_NEAR(move.draw(a).norm(), length, 4e-16);
+  }
 }
 
 TEST(TrialMove, LengthAndAzimuthAreUniformAndNoMoveGoesUp) {
   const TrialMove move{0.2, std::numbers::pi / 4.0};
-  RandomStream rng(32);
+  FastRandomStream rng(32);
   const int n = 200000;
   std::vector<double> length(kBins, 0.0), azimuth(kBins, 0.0);
   for (int k = 0; k < n; ++k) {
     const Eigen::Vector3d d = move.draw(rng);
     ASSERT_LE(d.z(), 0.0);
-    length[std::min(kBins - 1, static_cast<int>(d.norm() / move.d_max * kBins))] += 1.0;
+    length[std::min(kBins - 1, static_cast<int>(d.norm() / move.d_max() * kBins))] += 1.0;
     const double phi = std::atan2(d.y(), d.x()) + std::numbers::pi;
     azimuth[std::min(kBins - 1, static_cast<int>(phi / (2.0 * std::numbers::pi) * kBins))] += 1.0;
   }
@@ -249,12 +279,83 @@ void expect_no_overlap_inside(const TapBox& b, const std::vector<Eigen::Vector3d
   }
 }
 
+// The overlap test by the lists against all spheres' nearest images, over moves accepted
+// by the brute-force test, in boxes wide and narrow (where a sphere's images crowd).
+void expect_lists_agree_with_every_sphere(const TapBox& b, int n, std::uint64_t seed) {
+  std::vector<Eigen::Vector3d> c = deposited(b, n, seed);
+  const TrialMove move(0.3, 1.0);
+  NeighbourLists lists(b, move.d_max(), 0.5 * move.d_max());
+  FastRandomStream rng(seed + 1);
+  int overlapping = 0, accepted = 0;
+  for (int tap = 0; tap < 20; ++tap) {
+    // Dilated, as by a tap: a packing at rest has no free downward move.
+    for (auto& x : c) x.z() *= 1.1;
+    SphereGrid grid(b);
+    for (std::size_t i = 0; i < c.size(); ++i) grid.put(static_cast<std::int32_t>(i), c[i]);
+    lists.rebuild(c, grid);
+    for (int k = 0; k < 2000; ++k) {
+      const auto i = static_cast<std::int32_t>(rng.below(c.size()));
+      Eigen::Vector3d& x = c[static_cast<std::size_t>(i)];
+      const Eigen::Vector3d t = x + move.draw(rng);
+      bool any = false;
+      for (std::size_t j = 0; j < c.size(); ++j)
+        any |= j != static_cast<std::size_t>(i) && separation(b, t, c[j]).norm() < 2.0 * kR;
+      ASSERT_EQ(lists.overlaps(i, t, c), any) << tap << " " << k;
+      overlapping += any;
+      const bool in_walls = b.periodic() || (t.x() >= kR && t.y() >= kR && t.x() <= b.side - kR &&
+                                             t.y() <= b.side - kR);
+      if (any || t.z() < kR || !in_walls) continue;
+      grid.erase(x);
+      x = b.wrap(t);
+      grid.put(i, x);
+      lists.moved(i, c, grid);
+      ++accepted;
+    }
+  }
+  // Both outcomes were tried many times, and lists were renewed along the way.
+  EXPECT_GT(overlapping, 1000) << b.side;
+  EXPECT_GT(accepted, 1000) << b.side;
+  EXPECT_GT(lists.renewals(), 100u) << b.side;
+}
+
+TEST(NeighbourLists, ListTheWorstCaseAcrossAPeriodicSide) {
+  // Two spheres just within reach = 2R + move + 2 slack of each other when listed, across
+  // the periodic side at x = 0; each then strays by the slack towards the other (no
+  // renewal yet) and i tries the longest move towards j: they overlap, and the lists know.
+  const TapBox b = box(10.0, Sides::Periodic);
+  const double move = 0.3, slack = 0.2, reach = 2.0 * kR + move + 2.0 * slack;
+  std::vector<Eigen::Vector3d> c{{0.5, 5.0, 3.0}, b.wrap({0.5 - reach + 1e-9, 5.0, 3.0})};
+  SphereGrid grid(b);
+  for (std::int32_t i = 0; i < 2; ++i) grid.put(i, c[static_cast<std::size_t>(i)]);
+  NeighbourLists lists(b, move, slack);
+  lists.rebuild(c, grid);
+  for (std::int32_t i = 0; i < 2; ++i) {
+    const Eigen::Vector3d towards(i == 0 ? -slack : slack, 0.0, 0.0);
+    grid.erase(c[static_cast<std::size_t>(i)]);
+    c[static_cast<std::size_t>(i)] = b.wrap(c[static_cast<std::size_t>(i)] + towards);
+    grid.put(i, c[static_cast<std::size_t>(i)]);
+    lists.moved(i, c, grid);
+  }
+  EXPECT_EQ(lists.renewals(), 0u);
+  const Eigen::Vector3d t = c[0] - Eigen::Vector3d(move, 0.0, 0.0);
+  ASSERT_LT(separation(b, t, c[1]).norm(), 2.0 * kR);
+  EXPECT_TRUE(lists.overlaps(0, t, c));
+}
+
+TEST(NeighbourLists, AgreeWithEverySphereAfterManyMoves) {
+  expect_lists_agree_with_every_sphere(box(8.0, Sides::Periodic), 150, 51);
+  expect_lists_agree_with_every_sphere(box(8.0, Sides::Walls), 150, 52);
+  expect_lists_agree_with_every_sphere(box(2.5, Sides::Periodic), 12, 53);
+  // Wider than a query, but not than the cells the query touches.
+  expect_lists_agree_with_every_sphere(box(6.0, Sides::Periodic), 80, 54);
+}
+
 TEST(Redeposition, TapsLeaveNoOverlapAndNoSphereOutsideTheBox) {
   for (Sides sides : {Sides::Periodic, Sides::Walls}) {
     const TapBox b = box(8.0, sides);
     std::vector<Eigen::Vector3d> c = deposited(b, 250, 41);
     Redeposition redeposition(b, RedepositionOptions{TrialMove{}, 1e-4, 0, 1000});
-    RandomStream rng(42);
+    FastRandomStream rng(42);
     for (int tap = 0; tap < 3; ++tap) {
       const TapStats stats = redeposition.tap(c, 0.1, rng);
       EXPECT_GT(stats.accepted, 0);
@@ -269,7 +370,7 @@ TEST(Redeposition, TrialMovesNeverRaiseTheMeanHeight) {
   const TapBox b = box(8.0, Sides::Periodic);
   std::vector<Eigen::Vector3d> c = deposited(b, 250, 43);
   Redeposition redeposition(b, RedepositionOptions{});
-  RandomStream rng(44);
+  FastRandomStream rng(44);
   double before = mean_z(c);
   redeposition.shake(c, 20000, rng);
   EXPECT_LE(mean_z(c), before);
@@ -284,7 +385,7 @@ TEST(Redeposition, ATapWithoutDilationOnlySettlesThePacking) {
   const TapBox b = box(8.0, Sides::Walls);
   std::vector<Eigen::Vector3d> c = deposited(b, 250, 47);
   Redeposition redeposition(b, RedepositionOptions{});
-  RandomStream rng(48);
+  FastRandomStream rng(48);
   const double before = mean_z(c);
   const TapStats stats = redeposition.tap(c, 0.0, rng);
   EXPECT_TRUE(stats.converged);
@@ -298,7 +399,7 @@ TEST(Redeposition, TheSameSeedGivesTheSameBits) {
   auto run = [&] {
     std::vector<Eigen::Vector3d> c = deposited(b, 150, 45);
     Redeposition redeposition(b, RedepositionOptions{TrialMove{}, 1e-4, 0, 100});
-    RandomStream rng(46);
+    FastRandomStream rng(46);
     redeposition.tap(c, 0.1, rng);
     return c;
   };
