@@ -20,11 +20,13 @@ Centres centres_with_images(const Frame& frame, double skin) {
   Centres centres;
   centres.points.reserve(static_cast<std::size_t>(frame.size()));
   centres.particle.reserve(static_cast<std::size_t>(frame.size()));
+  centres.primary.reserve(static_cast<std::size_t>(frame.size()));
   for (Eigen::Index k = 0; k < frame.size(); ++k) {
     Eigen::Vector3d x;
     for (int a = 0; a < 3; ++a) x[a] = c.wrap(a, frame.position()(k, a));
     const auto sx = shifts_along(c, 0, x[0], skin), sy = shifts_along(c, 1, x[1], skin),
                sz = shifts_along(c, 2, x[2], skin);
+    centres.primary.push_back(static_cast<std::uint32_t>(centres.points.size()));  // shift 0 first
     for (double dx : sx)
       for (double dy : sy)
         for (double dz : sz) {

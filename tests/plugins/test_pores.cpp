@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "bernal_holes.hpp"
+#include "crystals.hpp"
 #include "granpipe/errors.hpp"
 #include "measure_pores.hpp"
 #include "plugin_harness.hpp"
@@ -28,49 +29,15 @@ using granpipe::InputError;
 using granpipe::Region;
 using granpipe::pores::measure_pores;
 using granpipe::pores::PoreMeasurement;
+using granpipe::test::bcc;
+using granpipe::test::Crystal;
+using granpipe::test::crystal_frame;
+using granpipe::test::fcc;
+using granpipe::test::hcp;
+using granpipe::test::sc;
 
 const double kTetrahedral = std::sqrt(1.5) - 1.0;
 const double kOctahedral = std::sqrt(2.0) - 1.0;
-
-// A crystal of cells[a] rectangular unit cells per axis, `cell` and `basis` in radii.
-struct Crystal {
-  Eigen::Vector3d cell;
-  std::vector<Eigen::Vector3d> basis;
-};
-
-Crystal fcc() {
-  const double a = 2.0 * std::sqrt(2.0);
-  return {{a, a, a}, {{0, 0, 0}, {a / 2, a / 2, 0}, {a / 2, 0, a / 2}, {0, a / 2, a / 2}}};
-}
-Crystal hcp() {  // orthohexagonal cell, layers stacked along z
-  const double s3 = std::sqrt(3.0), c = std::sqrt(8.0 / 3.0);
-  return {{2, 2 * s3, 2 * c}, {{0, 0, 0}, {1, s3, 0}, {1, s3 / 3, c}, {0, s3 / 3 + s3, c}}};
-}
-Crystal sc() { return {{2, 2, 2}, {{0, 0, 0}}}; }
-Crystal bcc() {
-  const double a = 4.0 / std::sqrt(3.0);
-  return {{a, a, a}, {{0, 0, 0}, {a / 2, a / 2, a / 2}}};
-}
-
-// Walls around the particles: a container of no periodic side.
-Frame crystal_frame(const Crystal& c, int cells, double radius = 1.0) {
-  Frame f;
-  f.resize(static_cast<Eigen::Index>(c.basis.size()) * cells * cells * cells, 3);
-  f.radius().setConstant(radius);
-  Eigen::Index k = 0;
-  for (int i = 0; i < cells; ++i)
-    for (int j = 0; j < cells; ++j)
-      for (int l = 0; l < cells; ++l)
-        for (const auto& b : c.basis) {
-          const Eigen::Vector3d site(i, j, l);
-          f.position().row(k++) = radius * (site.cwiseProduct(c.cell) + b).transpose();
-        }
-  for (int a = 0; a < 3; ++a) {
-    f.container.lo[a] = f.position().col(a).minCoeff() - radius;
-    f.container.hi[a] = f.position().col(a).maxCoeff() + radius;
-  }
-  return f;
-}
 
 // Unit cells `from` to `to` of the crystal, shifted by a tenth of a cell so that no
 // particle and no pore lies on its sides: it holds whole cells' worth of each.

@@ -185,7 +185,11 @@ TEST(PoresUnequal, PeriodicPoresDoNotDependOnWhereTheBoxIs) {
   shifted.position().rowwise() += Eigen::RowVector3d(1.3, 2.7, 0.4).array();
   PoreMeasurement a = measure_pores(f, std::nullopt, 1e-9, "test");
   PoreMeasurement b = measure_pores(shifted, std::nullopt, 1e-9, "test");
-  ASSERT_GT(a.xi.size(), 6u * 60u);  // about 6.8 tetrahedra per sphere
+  // About 6.8 tetrahedra per sphere; in so loose a packing of radii 0.5 to 1 a quarter of
+  // them have a tangent sphere that overlaps a fifth sphere, which is then no pore.
+  ASSERT_GT(a.xi.size() + static_cast<std::size_t>(a.fifth_sphere_cells), 6u * 60u);
+  EXPECT_GT(a.fifth_sphere_cells, 0);
+  EXPECT_EQ(a.fifth_sphere_cells, b.fifth_sphere_cells);
   ASSERT_EQ(a.xi.size(), b.xi.size());
   std::sort(a.xi.begin(), a.xi.end());
   std::sort(b.xi.begin(), b.xi.end());
