@@ -304,6 +304,56 @@ TEST(Pores, FrameDistributionsAreEachFramesOwn) {
   EXPECT_EQ(results.tables().at("frame_v").column("rho_v")[3], volumes.column("rho_v")[3]);
 }
 
+// pore_table: a row per pore, merged sites one row. A periodic fcc crystal has per sphere
+// two tetrahedral pores of one Delaunay cell each and one octahedral pore, a regular
+// octahedron, which any triangulation splits into four cells around a diagonal. With it the
+// published columns: every cell the rhombic dodecahedron, 4 sqrt 2 R^3, at a packing
+// fraction pi / (3 sqrt 2).
+TEST(Pores, PoreTableListsEachPoreWithItsCells) {
+  const auto ctx = granpipe::test::make_context("pores", {{"pore_table", true}});
+  auto analyzer = granpipe::test::installed_plugins().find("pores")->make_analyzer(*ctx);
+  Frame f = crystal_frame(fcc(), 3);
+  f.container = granpipe::Container::periodic_box(3, {0, 0, 0}, 3 * fcc().cell);
+  granpipe::FrameCache cache;
+  analyzer->consume(f, cache);
+  granpipe::PropertyTable columns(granpipe::Scope::Particle, f.size());
+  for (const auto& p : analyzer->publishes()) columns.add(p);
+  analyzer->publish(columns);
+  granpipe::Results results;
+  analyzer->finish(results);
+  const granpipe::Table& t = results.tables().at("pore_table");
+  ASSERT_EQ(t.rows(), static_cast<std::size_t>(3 * f.size()));
+  long tetrahedral = 0, octahedral = 0;
+  for (std::size_t k = 0; k < t.rows(); ++k) {
+    const double xi = t.column("xi")[k], cells = t.column("cells")[k];
+    tetrahedral += std::abs(xi - kTetrahedral) < 1e-9 && cells == 1;
+    octahedral += std::abs(xi - kOctahedral) < 1e-9 && cells == 4;
+    EXPECT_EQ(t.column("in_region")[k], 1.0);
+    EXPECT_EQ(t.column("frame")[k], 0.0);
+  }
+  EXPECT_EQ(tetrahedral, 2 * f.size());
+  EXPECT_EQ(octahedral, f.size());
+  EXPECT_EQ(results.scalar("undefined_volumes").value, 0);
+  const auto& volume = columns.get<Eigen::ArrayXd>("voronoi_volume");
+  const auto& fraction = columns.get<Eigen::ArrayXd>("local_packing_fraction");
+  for (Eigen::Index k = 0; k < f.size(); ++k) {
+    EXPECT_NEAR(volume[k], 4.0 * std::sqrt(2.0), 1e-9) << k;
+    EXPECT_NEAR(fraction[k], M_PI / (3.0 * std::sqrt(2.0)), 1e-9) << k;
+  }
+}
+
+// Without pore_table no table; the columns are published all the same.
+TEST(Pores, PoreTableIsLeftOutByDefault) {
+  const auto ctx = granpipe::test::make_context("pores", {});
+  auto analyzer = granpipe::test::installed_plugins().find("pores")->make_analyzer(*ctx);
+  granpipe::FrameCache cache;
+  analyzer->consume(crystal_frame(sc(), 3), cache);
+  granpipe::Results results;
+  analyzer->finish(results);
+  EXPECT_EQ(results.tables().count("pore_table"), 0u);
+  EXPECT_EQ(analyzer->publishes().size(), 2u);
+}
+
 std::string refusal(const Frame& f) {
   try {
     measure_pores(f, std::nullopt, 1e-9, "test");
