@@ -69,9 +69,11 @@ void refuse_duplicates(const Frame& f, const Centres& centres, const Delaunay& t
     kept[v->info()] = true;
   for (const auto& [p, k] : points) {
     if (kept[k]) continue;
+    // Named in the frame's order, whichever the triangulation kept.
+    const auto [first, second] =
+        std::minmax(centres.particle[t.nearest_vertex(p)->info()], centres.particle[k]);
     throw InputError(where + ": expected distinct particle centres, got particles " +
-                     id_of(f, centres.particle[t.nearest_vertex(p)->info()]) + " and " +
-                     id_of(f, centres.particle[k]) + " at one position");
+                     id_of(f, first) + " and " + id_of(f, second) + " at one position");
   }
 }
 

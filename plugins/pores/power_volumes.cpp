@@ -47,6 +47,10 @@ PowerVolumes power_volumes(const std::vector<Eigen::Vector3d>& points,
                    std::vector<std::uint8_t>(points.size(), 0),
                    std::vector<double>(points.size(), 0.0)};
   Accumulator sum{points, weights, out};
+  // The neighbours' centres are read in no spatial order: from an array a third the size
+  // of the cells', more of it in cache.
+  std::vector<Eigen::Vector3d> centre(cells.size());
+  for (std::size_t t = 0; t < cells.size(); ++t) centre[t] = cells[t].centre;
   for (std::size_t t = 0; t < cells.size(); ++t) {
     const Cell& cell = cells[t];
     const std::uint32_t v0 = cell.vertices[0];
@@ -67,8 +71,7 @@ PowerVolumes power_volumes(const std::vector<Eigen::Vector3d>& points,
         continue;
       }
       if (n < t) continue;  // the pair was added from n
-      for (int e = 0; e < 3; ++e)
-        sum.add_wedge(face[e], face[(e + 1) % 3], cells[n].centre, cell.centre);
+      for (int e = 0; e < 3; ++e) sum.add_wedge(face[e], face[(e + 1) % 3], centre[n], cell.centre);
     }
   }
   return out;
