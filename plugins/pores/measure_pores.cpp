@@ -101,19 +101,21 @@ TriangulatedPores triangulated(const Frame& frame, const Radii& radii, double to
 // The skin the images need: every counted pore's sphere, grown by the largest particle
 // radius (the circumsphere of the pore's centres), and every cell's orthogonal sphere
 // inside it.
-bool skin_holds(const TriangulatedPores& found, const Radii& radii,
-                const std::optional<Region>& region, double skin) {
+double skin_needed(const TriangulatedPores& found, const Radii& radii,
+                   const std::optional<Region>& region) {
   const double reach = radii.largest - radii.mean;
+  double needed = found.volumes.skin_needed;
   // Only the pores counted need the skin: the huge cells above an open-topped packing
   // with periodic sides never fit in it, and lie outside a region below the top.
   for (const Pore& p : found.pores) {
-    if ((!region || inside(*region, p.centre)) && p.radius + reach > skin) return false;
+    if (!region || inside(*region, p.centre)) needed = std::max(needed, p.radius + reach);
   }
-  return found.volumes.skin_needed <= skin;
+  return needed;
 }
 
-// Along periodic sides, the images within a skin that starts at kFirstSkin radii and
-// doubles until it holds what skin_holds asks.
+// Along periodic sides, the images within a skin that starts at kFirstSkin radii and grows
+// to what skin_needed asks (a tenth more, and by a quarter at least: what a thin skin
+// measures can be short, its cells near the skin being wrong).
 TriangulatedPores triangulated_pores(const Frame& frame, const Radii& radii, double tolerance,
                                      const std::optional<Region>& region,
                                      const std::string& where) {
@@ -123,7 +125,8 @@ TriangulatedPores triangulated_pores(const Frame& frame, const Radii& radii, dou
   double skin = std::min(kFirstSkin * radii.mean, period);
   while (true) {
     TriangulatedPores found = triangulated(frame, radii, tolerance, skin, primary, where);
-    if (!std::isfinite(period) || skin_holds(found, radii, region, skin)) return found;
+    const double needed = skin_needed(found, radii, region);
+    if (!std::isfinite(period) || needed <= skin) return found;
     if (skin >= period) {
       std::ostringstream m;
       m << where << ": expected periodic sides longer than the pores (" << period
@@ -131,9 +134,10 @@ TriangulatedPores triangulated_pores(const Frame& frame, const Radii& radii, dou
            "small are not computed";
       throw InputError(m.str());
     }
-    skin = std::min(2.0 * skin, period);
+    skin = std::min(std::max(1.1 * needed, 1.25 * skin), period);
   }
 }
+
 }  // namespace
 
 PoreMeasurement measure_pores(const Frame& frame, const std::optional<Region>& region,

@@ -113,5 +113,5 @@ int main(int argc, char** argv) {
   std::printf("  merge %.3f s\n", seconds_since(start));
   start = Clock::now();
   const auto volumes = voronoi_volumes(t, cells, centres, f, 1e-9);
-  std::printf("  volumes %.3f s\n", seconds_since(start));
+  std::printf("  volumes %.3f s (skin needed %.2f)\n", seconds_since(start), volumes.skin_needed);
 }
