@@ -6,8 +6,9 @@
 #include <sstream>
 #include <utility>
 
+#include "cell_volumes.hpp"
+#include "delaunay_cells.hpp"
 #include "granpipe/errors.hpp"
-#include "merge_cells.hpp"
 #include "periodic_images.hpp"
 #include "tangent_cells.hpp"
 
@@ -68,56 +69,75 @@ double shortest_period(const Container& c) {
 
 struct TriangulatedPores {
   std::vector<Pore> pores;  // in the primary cell
-  long cells = 0, flat_cells = 0, untangent_cells = 0;
+  long cells = 0, flat_cells = 0, untangent_cells = 0, fifth_sphere_cells = 0;
+  CellVolumes volumes;
 };
 
-// The Delaunay cells with their pore spheres (circumspheres for equal radii).
-TangentCells pore_cells(const Frame& frame, const Radii& radii, double tolerance, double skin,
-                        const std::string& where) {
+// The pores of the Delaunay cells (circumspheres for equal radii, tangent spheres for
+// unequal ones) in the primary cell, and the particles' cells, from the centres and their
+// images within `skin`.
+TriangulatedPores triangulated(const Frame& frame, const Radii& radii, double tolerance,
+                               double skin, const Region& primary, const std::string& where) {
+  const double length = tolerance * radii.mean;
   const Centres centres = centres_with_images(frame, skin);
-  std::vector<DelaunayCell> cells = delaunay_cells(centres, frame, where);
-  if (radii.equal) return {std::move(cells), {}};
-  return tangent_cells(cells, centres, frame, radii.mean, tolerance * radii.mean);
+  DelaunayTriangulation t(centres, frame, where);
+  std::vector<DelaunayCell> cells = t.cells();
+  TriangulatedPores found;
+  found.cells = static_cast<long>(cells.size());
+  if (!radii.equal) {
+    const NonPoreCells left_out = tangent_cells(cells, centres, frame, radii.mean, length);
+    found.untangent_cells = count_inside(primary, left_out.untangent);
+    found.fifth_sphere_cells = count_inside(primary, left_out.fifth_sphere);
+  }
+  MergedPores merged = merge_cells(cells, radii.mean, tolerance);
+  found.flat_cells = merged.flat_cells;
+  for (const Pore& p : merged.pores)
+    if (inside(primary, p.centre)) found.pores.push_back(p);
+  found.volumes = radii.equal ? voronoi_volumes(t, cells, centres, frame, length)
+                              : laguerre_volumes(centres, frame, length);
+  return found;
 }
 
-// The pores in the primary cell, from the centres and their images within a skin that
-// starts at kFirstSkin radii and doubles until it holds the sphere of every pore found,
-// grown by the largest particle radius (the circumsphere of the pore's centres).
+// The skin the images need: every counted pore's sphere, grown by the largest particle
+// radius (the circumsphere of the pore's centres), and every cell's orthogonal sphere
+// inside it.
+double skin_needed(const TriangulatedPores& found, const Radii& radii,
+                   const std::optional<Region>& region) {
+  const double reach = radii.largest - radii.mean;
+  double needed = found.volumes.skin_needed;
+  // Only the pores counted need the skin: the huge cells above an open-topped packing
+  // with periodic sides never fit in it, and lie outside a region below the top.
+  for (const Pore& p : found.pores) {
+    if (!region || inside(*region, p.centre)) needed = std::max(needed, p.radius + reach);
+  }
+  return needed;
+}
+
+// Along periodic sides, the images within a skin that starts at kFirstSkin radii and grows
+// to what skin_needed asks (a tenth more, and by a quarter at least: what a thin skin
+// measures can be short, its cells near the skin being wrong).
 TriangulatedPores triangulated_pores(const Frame& frame, const Radii& radii, double tolerance,
                                      const std::optional<Region>& region,
                                      const std::string& where) {
-  const double radius = radii.mean, reach = radii.largest - radii.mean;
   constexpr double kFirstSkin = 4.0;
-  const Region primary = primary_cell(frame.container, tolerance * radius / 2.0);
+  const Region primary = primary_cell(frame.container, tolerance * radii.mean / 2.0);
   const double period = shortest_period(frame.container);
-  const bool periodic = std::isfinite(period);
-  double skin = std::min(kFirstSkin * radius, period);
+  double skin = std::min(kFirstSkin * radii.mean, period);
   while (true) {
-    const TangentCells cells = pore_cells(frame, radii, tolerance, skin, where);
-    MergedPores merged = merge_cells(cells.cells, radius, tolerance);
-    TriangulatedPores found{{},
-                            static_cast<long>(cells.cells.size() + cells.untangent.size()),
-                            merged.flat_cells,
-                            count_inside(primary, cells.untangent)};
-    bool held = true;
-    for (const Pore& p : merged.pores) {
-      if (!inside(primary, p.centre)) continue;
-      found.pores.push_back(p);
-      // Only the pores counted need the skin: the huge cells above an open-topped
-      // packing with periodic sides never fit in it, and lie outside a region below the top.
-      const bool counted = !region || inside(*region, p.centre);
-      held = held && (!periodic || !counted || p.radius + reach <= skin);
-    }
-    if (held) return found;
+    TriangulatedPores found = triangulated(frame, radii, tolerance, skin, primary, where);
+    const double needed = skin_needed(found, radii, region);
+    if (!std::isfinite(period) || needed <= skin) return found;
     if (skin >= period) {
       std::ostringstream m;
       m << where << ": expected periodic sides longer than the pores (" << period
-        << "), got a pore sphere wider than the box; pores of boxes this small are not computed";
+        << "), got a pore sphere or a particle's cell wider than the box; pores of boxes this "
+           "small are not computed";
       throw InputError(m.str());
     }
-    skin = std::min(2.0 * skin, period);
+    skin = std::min(std::max(1.1 * needed, 1.25 * skin), period);
   }
 }
+
 }  // namespace
 
 PoreMeasurement measure_pores(const Frame& frame, const std::optional<Region>& region,
@@ -126,13 +146,21 @@ PoreMeasurement measure_pores(const Frame& frame, const std::optional<Region>& r
   PoreMeasurement m;
   const Radii radii = radii_of(frame);
   m.radius = radii.mean;
-  const TriangulatedPores found = triangulated_pores(frame, radii, tolerance, region, where);
+  TriangulatedPores found = triangulated_pores(frame, radii, tolerance, region, where);
   m.cells = found.cells;
   m.flat_cells = found.flat_cells;
   m.untangent_cells = found.untangent_cells;
+  m.fifth_sphere_cells = found.fifth_sphere_cells;
+  m.in_region.reserve(found.pores.size());
   for (const Pore& p : found.pores) {
-    if (!region || inside(*region, p.centre)) m.xi.push_back(p.radius / m.radius - 1.0);
+    const bool counted = !region || inside(*region, p.centre);
+    m.in_region.push_back(counted ? 1 : 0);
+    if (counted) m.xi.push_back(p.radius / m.radius - 1.0);
   }
+  m.pores = std::move(found.pores);
+  m.cell_volume = std::move(found.volumes.volume);
+  m.undefined_volumes = found.volumes.undefined;
+  m.hidden_spheres = found.volumes.hidden;
   for (Eigen::Index k = 0; k < frame.size(); ++k) {
     Eigen::Vector3d x;
     for (int a = 0; a < 3; ++a) x[a] = frame.container.wrap(a, frame.position()(k, a));

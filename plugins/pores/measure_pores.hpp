@@ -3,13 +3,16 @@
 // gives the sphere touching its four particles, of radius r = circumradius - R for equal
 // spheres, the tangent sphere's for unequal ones; xi = r / R, R the mean radius. Along
 // periodic sides the centres are triangulated with their images near the sides, and each
-// pore is counted once.
+// pore is counted once. The same triangulation gives each particle's Voronoi cell
+// (Laguerre cell for unequal radii, from a regular triangulation).
+#include <Eigen/Core>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "granpipe/frame.hpp"
 #include "granpipe/region.hpp"
+#include "merge_cells.hpp"
 #include "pore_region.hpp"
 
 namespace granpipe::pores {
@@ -32,6 +35,18 @@ struct PoreMeasurement {
   // Of them, left out for want of a tangent sphere (unequal radii), with their circumcentre
   // in the box along periodic axes (not the hull cells of the images).
   long untangent_cells = 0;
+  // Of them, left out as their tangent sphere overlaps a fifth sphere (unequal radii), in
+  // the box along periodic axes.
+  long fifth_sphere_cells = 0;
+  // Every pore found (each once along periodic sides), and whether it is counted.
+  std::vector<Pore> pores;
+  std::vector<char> in_region;
+  // Per particle: the volume of its Voronoi (Laguerre) cell; NaN where undefined (a cell
+  // unbounded, or reaching beyond the packing's open surface or a cylinder), 0 for a
+  // sphere whose Laguerre cell is empty (hidden by overlapping neighbours).
+  Eigen::ArrayXd cell_volume;
+  long undefined_volumes = 0;
+  long hidden_spheres = 0;
 };
 
 // Throws InputError after `where` for a frame the pores cannot be measured on: not 3D,

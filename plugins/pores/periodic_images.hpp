@@ -15,6 +15,7 @@ namespace granpipe::pores {
 struct Centres {
   std::vector<Eigen::Vector3d> points;
   std::vector<std::uint32_t> particle;  // the frame's row of each point
+  std::vector<std::uint32_t> primary;   // per particle: the row of its point in the box
 };
 
 // Without periodic sides (or skin 0): the frame's centres as they are.

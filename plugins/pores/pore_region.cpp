@@ -11,19 +11,6 @@ namespace {
 
 const char* axis_name(int a) { return a == 0 ? "x" : a == 1 ? "y" : "z"; }
 
-// Where the packing ends on one side of an axis: the wall (moved by the wall offset), the
-// box side for a periodic axis, the outermost particle surface for an open side.
-double side(const Frame& f, int axis, int high) {
-  const Container& c = f.container;
-  const Boundary b = c.boundary[axis][high];
-  if (b == Boundary::Open) {
-    return high ? (f.position().col(axis) + f.radius()).maxCoeff()
-                : (f.position().col(axis) - f.radius()).minCoeff();
-  }
-  const double wall = high ? c.hi[axis] : c.lo[axis];
-  return b == Boundary::Wall ? wall + c.wall_offset[axis] : wall;
-}
-
 void check_inside(const Region& r, double top, const RegionSettings& s, const std::string& where) {
   for (int a = 0; a < 3; ++a) {
     if (r.hi[a] > r.lo[a] && (a < 2 || r.hi[a] <= top)) continue;
@@ -36,6 +23,17 @@ void check_inside(const Region& r, double top, const RegionSettings& s, const st
 }
 
 }  // namespace
+
+double packing_side(const Frame& f, int axis, int high) {
+  const Container& c = f.container;
+  const Boundary b = c.boundary[axis][high];
+  if (b == Boundary::Open) {
+    return high ? (f.position().col(axis) + f.radius()).maxCoeff()
+                : (f.position().col(axis) - f.radius()).minCoeff();
+  }
+  const double wall = high ? c.hi[axis] : c.lo[axis];
+  return b == Boundary::Wall ? wall + c.wall_offset[axis] : wall;
+}
 
 std::optional<Region> pore_region(const Frame& frame, const RegionSettings& s, double radius,
                                   const std::string& where) {
@@ -50,8 +48,8 @@ std::optional<Region> pore_region(const Frame& frame, const RegionSettings& s, d
     // Along a periodic axis every pore is in the region once (measure_pores picks one image).
     const double reach =
         frame.container.periodic(a) ? std::numeric_limits<double>::infinity() : -s.margin * radius;
-    r.lo[a] = side(frame, a, 0) - reach;
-    r.hi[a] = side(frame, a, 1) + reach;
+    r.lo[a] = packing_side(frame, a, 0) - reach;
+    r.hi[a] = packing_side(frame, a, 1) + reach;
   }
   const double top = r.hi[2];
   if (s.height > 0.0 && frame.container.periodic(2)) {

@@ -22,6 +22,11 @@ struct RegionSettings {
   double height = 0.0;  // particle radii above the region's bottom; 0: up to the top
 };
 
+// Where the packing ends on one side of an axis (high: 1 for the upper side): the wall
+// (moved by the wall offset), the box side along a periodic axis, the outermost particle
+// surface at an open side.
+double packing_side(const Frame& frame, int axis, int high);
+
 // Nothing for kind All. For Inner, the box container shrunk by `margin` radii from every
 // wall (unbounded along periodic axes), its top the container's or, for an open top, the
 // highest particle top, and `height` radii high when height > 0. Throws InputError after

@@ -18,6 +18,7 @@ void PoreStatistics::add(const PoreMeasurement& m) {
   spheres_ += m.spheres;
   flat_cells_ += m.flat_cells;
   untangent_cells_ += m.untangent_cells;
+  fifth_sphere_cells_ += m.fifth_sphere_cells;
   for (double xi : m.xi) {
     const double volume = xi * xi * xi;
     xi3_sum_ += volume;
@@ -89,6 +90,10 @@ void PoreStatistics::report(Results& results) const {
   results.add_scalar("untangent_cells", static_cast<double>(untangent_cells_), std::nan(""), "",
                      "Delaunay cells of unequal spheres left out: no sphere touches their four "
                      "from outside, all frames");
+  results.add_scalar("fifth_sphere_cells", static_cast<double>(fifth_sphere_cells_), std::nan(""),
+                     "",
+                     "Delaunay cells of unequal spheres left out: their tangent sphere overlaps a "
+                     "sphere next to their four, all frames");
   results.add_table("xi_distribution", distribution_table());
   results.add_plot("xi3_P", {.table = "xi_distribution",
                              .x = "xi",

@@ -49,10 +49,28 @@ Schema schema() {
   s.real("sigma_max", 1.0, "largest probe radius of P0(sigma)")
       .range(0.0, 10.0)
       .unit("particle radii");
+  s.boolean("pore_table", false,
+            "also a table of every pore of every frame: centre, xi, Delaunay cells merged, "
+            "whether in the region (a row per pore: some 6 per sphere)");
   return s;
 }
 
 namespace {
+
+const Property kCellVolume{"voronoi_volume",
+                           Scope::Particle,
+                           ValueType::Real,
+                           1,
+                           "length^3",
+                           "volume of the particle's Voronoi cell (Laguerre cell, weights r^2, for "
+                           "unequal radii); NaN where undefined (unbounded, or beyond an open "
+                           "surface or a cylinder)"};
+const Property kLocalFraction{"local_packing_fraction",
+                              Scope::Particle,
+                              ValueType::Real,
+                              1,
+                              "",
+                              "particle volume over its voronoi_volume; NaN where undefined"};
 
 PoreSettings settings_from(const Params& p) {
   PoreSettings s;
@@ -81,6 +99,13 @@ PoresAnalyzer::PoresAnalyzer(const PluginContext& ctx)
       xi_max_(ctx.params.real("xi_max")),
       v_bin_width_(ctx.params.real("v_bin_width")),
       v_max_(ctx.params.real("v_max")) {
+  if (ctx.params.boolean("pore_table")) {
+    pore_table_ = ctx.stream_table(
+        "pore_table", Table({"frame", "step", "x", "y", "z", "xi", "cells", "in_region"},
+                            "every pore of each frame (each once along periodic sides): its "
+                            "centre, xi, the Delaunay cells merged into it, 1 if counted in "
+                            "the region"));
+  }
   if (!ctx.params.boolean("frame_distributions")) return;
   frame_xi_ =
       ctx.stream_table("frame_xi", Table({"frame", "step", "xi", "P", "xi3_P"},
@@ -106,6 +131,32 @@ void PoresAnalyzer::add_frame_distributions(const Frame& frame, const PoreMeasur
   }
 }
 
+void PoresAnalyzer::add_pore_rows(const Frame& frame, const PoreMeasurement& m) {
+  const auto frame_index = static_cast<double>(frames_), step = static_cast<double>(frame.step);
+  for (std::size_t k = 0; k < m.pores.size(); ++k) {
+    const Pore& p = m.pores[k];
+    pore_table_->add_row({frame_index, step, p.centre[0], p.centre[1], p.centre[2],
+                          p.radius / m.radius - 1.0, static_cast<double>(p.cells),
+                          static_cast<double>(m.in_region[k])});
+  }
+}
+
+void PoresAnalyzer::keep_cells(const Frame& frame, const PoreMeasurement& m) {
+  cell_volume_ = m.cell_volume;
+  // A hidden sphere's empty cell has no packing fraction: NaN, as undefined volumes give.
+  local_fraction_ = (4.0 * M_PI / 3.0) * frame.radius().cube() / cell_volume_;
+  local_fraction_ = (cell_volume_ > 0.0).select(local_fraction_, std::nan(""));
+  undefined_volumes_ += m.undefined_volumes;
+  hidden_spheres_ += m.hidden_spheres;
+}
+
+std::vector<Property> PoresAnalyzer::publishes() const { return {kCellVolume, kLocalFraction}; }
+
+void PoresAnalyzer::publish(PropertyTable& columns) {
+  columns.get<Eigen::ArrayXd>(kCellVolume.name) = cell_volume_;
+  columns.get<Eigen::ArrayXd>(kLocalFraction.name) = local_fraction_;
+}
+
 // Each frame its own stream, so that P0 does not depend on which frames a run skips.
 void PoresAnalyzer::probe_voids(const Frame& frame, double mean_radius, const std::string& where) {
   const Region box =
@@ -123,6 +174,8 @@ void PoresAnalyzer::consume(const Frame& frame, FrameCache&) {
   statistics_.add(m);
   volumes_.add(m.xi);
   if (frame_xi_) add_frame_distributions(frame, m);
+  if (pore_table_) add_pore_rows(frame, m);
+  keep_cells(frame, m);
   if (probes_ > 0) probe_voids(frame, m.radius, where);
   double xi3 = 0.0;
   for (double xi : m.xi) xi3 += xi * xi * xi;
@@ -140,7 +193,14 @@ void PoresAnalyzer::finish(Results& results) {
   statistics_.report(results);
   volumes_.report(results, statistics_.nu());
   if (probes_ > 0) void_probability_.report(results);
+  results.add_scalar("undefined_volumes", static_cast<double>(undefined_volumes_), std::nan(""), "",
+                     "spheres whose Voronoi (Laguerre) cell is undefined (voronoi_volume NaN): "
+                     "unbounded, or reaching beyond an open surface or a cylinder, all frames");
+  results.add_scalar("hidden_spheres", static_cast<double>(hidden_spheres_), std::nan(""), "",
+                     "unequal radii: spheres whose Laguerre cell is empty (voronoi_volume 0, "
+                     "local_packing_fraction NaN), all frames");
   results.add_table("per_frame", per_frame_.table());
+  if (pore_table_) results.add_table("pore_table", pore_table_->table());
   if (frame_xi_) {
     results.add_table("frame_xi", frame_xi_->table());
     results.add_table("frame_v", frame_v_->table());

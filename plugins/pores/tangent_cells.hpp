@@ -11,18 +11,21 @@
 
 namespace granpipe::pores {
 
-struct TangentCells {
-  // Centre: the tangent sphere's. Radius: its radius plus the mean particle radius R, so
-  // that, as for equal spheres' circumspheres, radius / R - 1 is xi and the merge and the
-  // periodic skin treat both alike.
-  std::vector<DelaunayCell> cells;
-  // The circumcentres of the cells whose four spheres no sphere touches from outside, left
-  // out: where they are tells the primary cell's from those at the hull of the images.
-  std::vector<Eigen::Vector3d> untangent;
+// The cells left out, by their circumcentres (where they are tells the primary cell's
+// from those at the hull of the images).
+struct NonPoreCells {
+  std::vector<Eigen::Vector3d> untangent;     // no sphere touches their four from outside
+  std::vector<Eigen::Vector3d> fifth_sphere;  // their tangent sphere overlaps a fifth sphere
 };
 
-// Cells lower than flat_height are kept as they are, for merge_cells to count as flat.
-TangentCells tangent_cells(const std::vector<DelaunayCell>& cells, const Centres& centres,
-                           const Frame& frame, double mean_radius, double flat_height);
+// Each cell's centre becomes its tangent sphere's, its radius that sphere's radius plus
+// the mean particle radius R, so that, as for equal spheres' circumspheres, radius / R - 1
+// is xi and the merge and the periodic skin treat both alike. Cells lower than `length`
+// (flat) are kept as they are, for merge_cells to count as flat. A cell without a
+// tangent sphere, or whose tangent sphere overlaps by more than `length` one of the
+// spheres next to its four (their neighbours in the triangulation), is no pore: it is no
+// vertex of the spheres' additively weighted Voronoi diagram.
+NonPoreCells tangent_cells(std::vector<DelaunayCell>& cells, const Centres& centres,
+                           const Frame& frame, double mean_radius, double length);
 
 }  // namespace granpipe::pores

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "bernal_holes.hpp"
+#include "crystals.hpp"
 #include "granpipe/errors.hpp"
 #include "measure_pores.hpp"
 #include "plugin_harness.hpp"
@@ -28,49 +29,15 @@ using granpipe::InputError;
 using granpipe::Region;
 using granpipe::pores::measure_pores;
 using granpipe::pores::PoreMeasurement;
+using granpipe::test::bcc;
+using granpipe::test::Crystal;
+using granpipe::test::crystal_frame;
+using granpipe::test::fcc;
+using granpipe::test::hcp;
+using granpipe::test::sc;
 
 const double kTetrahedral = std::sqrt(1.5) - 1.0;
 const double kOctahedral = std::sqrt(2.0) - 1.0;
-
-// A crystal of cells[a] rectangular unit cells per axis, `cell` and `basis` in radii.
-struct Crystal {
-  Eigen::Vector3d cell;
-  std::vector<Eigen::Vector3d> basis;
-};
-
-Crystal fcc() {
-  const double a = 2.0 * std::sqrt(2.0);
-  return {{a, a, a}, {{0, 0, 0}, {a / 2, a / 2, 0}, {a / 2, 0, a / 2}, {0, a / 2, a / 2}}};
-}
-Crystal hcp() {  // orthohexagonal cell, layers stacked along z
-  const double s3 = std::sqrt(3.0), c = std::sqrt(8.0 / 3.0);
-  return {{2, 2 * s3, 2 * c}, {{0, 0, 0}, {1, s3, 0}, {1, s3 / 3, c}, {0, s3 / 3 + s3, c}}};
-}
-Crystal sc() { return {{2, 2, 2}, {{0, 0, 0}}}; }
-Crystal bcc() {
-  const double a = 4.0 / std::sqrt(3.0);
-  return {{a, a, a}, {{0, 0, 0}, {a / 2, a / 2, a / 2}}};
-}
-
-// Walls around the particles: a container of no periodic side.
-Frame crystal_frame(const Crystal& c, int cells, double radius = 1.0) {
-  Frame f;
-  f.resize(static_cast<Eigen::Index>(c.basis.size()) * cells * cells * cells, 3);
-  f.radius().setConstant(radius);
-  Eigen::Index k = 0;
-  for (int i = 0; i < cells; ++i)
-    for (int j = 0; j < cells; ++j)
-      for (int l = 0; l < cells; ++l)
-        for (const auto& b : c.basis) {
-          const Eigen::Vector3d site(i, j, l);
-          f.position().row(k++) = radius * (site.cwiseProduct(c.cell) + b).transpose();
-        }
-  for (int a = 0; a < 3; ++a) {
-    f.container.lo[a] = f.position().col(a).minCoeff() - radius;
-    f.container.hi[a] = f.position().col(a).maxCoeff() + radius;
-  }
-  return f;
-}
 
 // Unit cells `from` to `to` of the crystal, shifted by a tenth of a cell so that no
 // particle and no pore lies on its sides: it holds whole cells' worth of each.
@@ -335,6 +302,56 @@ TEST(Pores, FrameDistributionsAreEachFramesOwn) {
   const granpipe::Table& volumes = results.tables().at("volume_distribution");
   ASSERT_EQ(results.tables().at("frame_v").rows(), 2 * volumes.rows());
   EXPECT_EQ(results.tables().at("frame_v").column("rho_v")[3], volumes.column("rho_v")[3]);
+}
+
+// pore_table: a row per pore, merged sites one row. A periodic fcc crystal has per sphere
+// two tetrahedral pores of one Delaunay cell each and one octahedral pore, a regular
+// octahedron, which any triangulation splits into four cells around a diagonal. With it the
+// published columns: every cell the rhombic dodecahedron, 4 sqrt 2 R^3, at a packing
+// fraction pi / (3 sqrt 2).
+TEST(Pores, PoreTableListsEachPoreWithItsCells) {
+  const auto ctx = granpipe::test::make_context("pores", {{"pore_table", true}});
+  auto analyzer = granpipe::test::installed_plugins().find("pores")->make_analyzer(*ctx);
+  Frame f = crystal_frame(fcc(), 3);
+  f.container = granpipe::Container::periodic_box(3, {0, 0, 0}, 3 * fcc().cell);
+  granpipe::FrameCache cache;
+  analyzer->consume(f, cache);
+  granpipe::PropertyTable columns(granpipe::Scope::Particle, f.size());
+  for (const auto& p : analyzer->publishes()) columns.add(p);
+  analyzer->publish(columns);
+  granpipe::Results results;
+  analyzer->finish(results);
+  const granpipe::Table& t = results.tables().at("pore_table");
+  ASSERT_EQ(t.rows(), static_cast<std::size_t>(3 * f.size()));
+  long tetrahedral = 0, octahedral = 0;
+  for (std::size_t k = 0; k < t.rows(); ++k) {
+    const double xi = t.column("xi")[k], cells = t.column("cells")[k];
+    tetrahedral += std::abs(xi - kTetrahedral) < 1e-9 && cells == 1;
+    octahedral += std::abs(xi - kOctahedral) < 1e-9 && cells == 4;
+    EXPECT_EQ(t.column("in_region")[k], 1.0);
+    EXPECT_EQ(t.column("frame")[k], 0.0);
+  }
+  EXPECT_EQ(tetrahedral, 2 * f.size());
+  EXPECT_EQ(octahedral, f.size());
+  EXPECT_EQ(results.scalar("undefined_volumes").value, 0);
+  const auto& volume = columns.get<Eigen::ArrayXd>("voronoi_volume");
+  const auto& fraction = columns.get<Eigen::ArrayXd>("local_packing_fraction");
+  for (Eigen::Index k = 0; k < f.size(); ++k) {
+    EXPECT_NEAR(volume[k], 4.0 * std::sqrt(2.0), 1e-9) << k;
+    EXPECT_NEAR(fraction[k], M_PI / (3.0 * std::sqrt(2.0)), 1e-9) << k;
+  }
+}
+
+// Without pore_table no table; the columns are published all the same.
+TEST(Pores, PoreTableIsLeftOutByDefault) {
+  const auto ctx = granpipe::test::make_context("pores", {});
+  auto analyzer = granpipe::test::installed_plugins().find("pores")->make_analyzer(*ctx);
+  granpipe::FrameCache cache;
+  analyzer->consume(crystal_frame(sc(), 3), cache);
+  granpipe::Results results;
+  analyzer->finish(results);
+  EXPECT_EQ(results.tables().count("pore_table"), 0u);
+  EXPECT_EQ(analyzer->publishes().size(), 2u);
 }
 
 std::string refusal(const Frame& f) {

@@ -1,0 +1,52 @@
+#include "cell_bounds.hpp"
+
+#include <algorithm>
+#include <limits>
+
+#include "pore_region.hpp"
+
+namespace granpipe::pores {
+
+CellBounds::CellBounds(const Frame& frame, double tolerance)
+    : box_lo_(frame.container.lo), box_hi_(frame.container.hi) {
+  const Container& c = frame.container;
+  constexpr double infinity = std::numeric_limits<double>::infinity();
+  cylinder_ = c.shape == ContainerShape::Cylinder;
+  for (int a = 0; a < 3; ++a) {
+    periodic_[a] = c.periodic(a);
+    for (int high = 0; high < 2; ++high) {
+      const double outward = high ? 1.0 : -1.0;
+      const Boundary b = c.boundary[a][high];
+      const bool free = b == Boundary::Periodic || (cylinder_ && a < 2);
+      // Open sides end at the packing's surface: a cell reaching beyond it is not enclosed
+      // by particles, and its volume would count the space above the packing.
+      limit_[a][high] =
+          free ? outward * infinity : packing_side(frame, a, high) + outward * tolerance;
+      flag_[a][high] = free ? 0 : b == Boundary::Wall ? kBeyondWall : kOutside;
+    }
+  }
+  axis_ = c.cylinder_center + c.wall_offset.head<2>();
+  cylinder_limit_ = c.cylinder_radius + tolerance;
+}
+
+std::uint8_t CellBounds::breach(const Eigen::Vector3d& c) const {
+  std::uint8_t flags = 0;
+  for (int a = 0; a < 3; ++a) {
+    if (c[a] < limit_[a][0]) flags |= flag_[a][0];
+    if (c[a] > limit_[a][1]) flags |= flag_[a][1];
+  }
+  if (cylinder_ && (c.head<2>() - axis_).squaredNorm() > cylinder_limit_ * cylinder_limit_)
+    flags |= kOutside;
+  return flags;
+}
+
+double CellBounds::periodic_overshoot(const Eigen::Vector3d& c, double reach) const {
+  double overshoot = 0.0;
+  for (int a = 0; a < 3; ++a) {
+    if (!periodic_[a]) continue;
+    overshoot = std::max({overshoot, box_lo_[a] - (c[a] - reach), c[a] + reach - box_hi_[a]});
+  }
+  return overshoot;
+}
+
+}  // namespace granpipe::pores
