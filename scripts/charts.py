@@ -56,3 +56,26 @@ def loglog_chart(series, xlabel, ylabel, path):
     ax.grid(alpha=0.3, which="both")
     ax.legend(loc="center left", bbox_to_anchor=(1.02, 0.5), fontsize=9)
     _save(fig, path)
+
+
+def compaction_chart(series, fits, ylabel, path):
+    """Fig. 2 of the 3D tapping paper: series {name: [(t, y)]} against the number of taps t on a
+    log axis (left, t > 0) and a linear one (right); fits {name: [(t, y)]} drawn dotted."""
+    fig, axes = plt.subplots(1, 2, figsize=(SIZE[0] * 1.4, SIZE[1]))
+    for ax, log in zip(axes, (True, False)):
+        for k, (name, points) in enumerate(sorted(series.items())):
+            points = [(t, y) for t, y in sorted(points) if t > 0 or not log]
+            if not points:
+                continue
+            ts, ys = zip(*points)
+            line, = ax.plot(ts, ys, linewidth=1, label=name, gid=f"series-{k}")
+            if fits.get(name):
+                ft, fy = zip(*[(t, y) for t, y in sorted(fits[name]) if t > 0 or not log])
+                ax.plot(ft, fy, linestyle=":", linewidth=2, color=line.get_color(), gid=f"fit-{k}")
+        if log:
+            ax.set_xscale("log")
+        ax.set_xlabel("taps t")
+        ax.set_ylabel(ylabel)
+        ax.grid(alpha=0.3, which="both")
+    axes[1].legend(loc="center left", bbox_to_anchor=(1.02, 0.5), fontsize=9)
+    _save(fig, path)

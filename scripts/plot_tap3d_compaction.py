@@ -1,0 +1,88 @@
+#!/usr/bin/env python3
+"""Fig. 2 and the fit table of the 3D tapping paper from a run of tap3d_compaction.json (one
+sweep point per epsilon): Phi_b, <Phi^c> and <Z> against the number of taps, log and linear,
+with the Eq. (3) and (4) fits of the `compaction` analyzer dotted; and a CSV of the fitted
+parameters, the steady states and the spectrum slopes per epsilon.
+
+usage: plot_tap3d_compaction.py RUN_DIR OUT_PREFIX
+writes OUT_PREFIX_phi_b.svg, OUT_PREFIX_phi_c.svg, OUT_PREFIX_z.svg and OUT_PREFIX.csv"""
+import csv
+import math
+import os
+import sys
+
+from charts import compaction_chart
+from input_error import refuse
+from result_csv import read_table
+
+# The laws of the paper: Eq. (3) for a packing fraction, Eq. (4) for <Z>.
+def eq3(t, p):
+    return p["X_inf"] - p["dX_inf"] / (1.0 + p["B"] * math.log(1.0 + t / p["tau"]))
+
+
+def eq4(t, p):
+    g = p["B"] * math.log(1.0 + t / p["tau"])
+    return p["Z_inf"] * (1.0 + g) / (p["Z_inf"] / p["Z_0"] + g)
+
+
+SERIES = [  # (column of per_frame, fit table, law, axis label, file suffix)
+    ("phi_b", "eq3_phi_b", eq3, "bottom packing fraction Φ_b", "phi_b"),
+    ("phi_c", "eq3_phi_c", eq3, "⟨Φ^c⟩", "phi_c"),
+    ("z_mean", "eq4_z_mean", eq4, "⟨Z⟩ (R)", "z"),
+]
+
+
+def point_files(run, point):
+    return lambda name: os.path.join(run, f"point_{point:03d}.compaction.{name}.csv")
+
+
+def named_rows(path):
+    """{name: (value, error)} of a table whose rows start with a name (fit parameters, scalars)."""
+    try:
+        with open(path) as f:
+            rows = list(csv.reader(line for line in f if not line.startswith("#")))
+    except OSError as e:
+        refuse(f"{path}: expected a granpipe table, found none: {e.strerror}")
+    try:
+        return {row[0]: (float(row[1]), float(row[2])) for row in rows[1:]}
+    except (ValueError, IndexError):
+        refuse(f"{path}: expected rows of a name, a value and an error, found {rows[1:2]}")
+
+
+def main(run, prefix):
+    _, header, points = read_table(os.path.join(run, "sweep.points.csv"))
+    column = "source.params.epsilon"
+    if column not in header:
+        refuse(f"{run}/sweep.points.csv: expected a sweep over {column}, found {header[1:3]}...")
+    summary = []
+    for label, table, law, ylabel, suffix in SERIES:
+        series, fits = {}, {}
+        for p in points:
+            point, eps = int(p[0]), p[header.index(column)]
+            files = point_files(run, point)
+            _, ph, rows = read_table(files("per_frame"))
+            name = f"ε = {eps:g}"
+            series[name] = [(r[ph.index("tap")], r[ph.index(label)]) for r in rows]
+            params = named_rows(files(table))
+            values = {k: v for k, (v, _) in params.items()}
+            if all(math.isfinite(v) for v in values.values()):
+                taps = sorted(t for t, _ in series[name])
+                fits[name] = [(t, law(t, values)) for t in taps]
+            for k, (v, e) in params.items():
+                summary.append((eps, table, k, v, e))
+        compaction_chart(series, fits, ylabel, f"{prefix}_{suffix}.svg")
+    for p in points:
+        point, eps = int(p[0]), p[header.index(column)]
+        for name, (v, e) in named_rows(point_files(run, point)("scalars")).items():
+            if name.endswith(("_ss", "_sigma")) or name.startswith(("spectrum_slope", "steady_from")):
+                summary.append((eps, "steady", name, v, e))
+    with open(f"{prefix}.csv", "w") as f:
+        f.write("epsilon,table,parameter,value,error\n")
+        for eps, table, k, v, e in summary:
+            f.write(f"{eps:g},{table},{k},{v:.6g},{e:.3g}\n")
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 3:
+        refuse("usage: plot_tap3d_compaction.py RUN_DIR OUT_PREFIX")
+    main(sys.argv[1], sys.argv[2])

@@ -1,0 +1,50 @@
+"""scripts/plot_tap3d_compaction.py on a toy run of tap3d_compaction.json: three SVGs with one
+line per epsilon (gid series-<k>), the fit table with every epsilon's parameters; the laws it
+draws equal their values at t = 0 (Eq. 3: X_inf - dX_inf; Eq. 4: <Z>_0); a run that is not a
+sweep over epsilon is refused in one line."""
+import os
+import subprocess
+import sys
+import tempfile
+import xml.etree.ElementTree as ET
+
+script, exe, pipeline = sys.argv[1], sys.argv[2], sys.argv[3]
+sys.path.insert(0, os.path.dirname(script))
+import plot_tap3d_compaction as plot  # noqa: E402
+
+failures = []
+p3 = {"X_inf": 0.6, "dX_inf": 0.05, "B": 2.0, "tau": 3.0}
+p4 = {"Z_inf": 14.0, "Z_0": 15.0, "B": 2.0, "tau": 3.0}
+if abs(plot.eq3(0.0, p3) - 0.55) > 1e-15 or abs(plot.eq4(0.0, p4) - 15.0) > 1e-12:
+    failures.append(f"laws at t = 0: {plot.eq3(0.0, p3)}, {plot.eq4(0.0, p4)}")
+if not plot.eq3(1e6, p3) < 0.6 or not plot.eq4(1e6, p4) > 14.0:
+    failures.append("the laws cross their limits")
+with tempfile.TemporaryDirectory() as work:
+    run = os.path.join(work, "run")
+    subprocess.run([exe, pipeline, "--set", "source.params.N=64", "--set", "source.params.side=6",
+                    "--set", "source.params.taps=3", "--quiet", "--out", run], check=True)
+    prefix = os.path.join(work, "fig2")
+    r = subprocess.run([sys.executable, script, run, prefix], capture_output=True, text=True)
+    if r.returncode != 0:
+        failures.append(r.stderr)
+    else:
+        for suffix in ("phi_b", "phi_c", "z"):
+            root = ET.parse(f"{prefix}_{suffix}.svg").getroot()
+            lines = {g.get("id") for g in root.iter() if g.get("id", "").startswith("series-")}
+            if lines != {"series-0", "series-1", "series-2"}:
+                failures.append(f"{suffix}: lines {sorted(lines)}")
+        with open(f"{prefix}.csv") as f:
+            rows = [line.split(",") for line in f.read().splitlines()[1:]]
+        for eps in ("0.005", "0.05", "0.15"):
+            fitted = {(r[1], r[2]) for r in rows if r[0] == eps}
+            if ("eq3_phi_b", "tau") not in fitted or ("eq4_z_mean", "B") not in fitted:
+                failures.append(f"epsilon {eps}: {sorted(fitted)[:4]}")
+    single = os.path.join(work, "single")
+    os.makedirs(single)
+    r = subprocess.run([sys.executable, script, single, prefix], capture_output=True, text=True)
+    if r.returncode != 2 or "sweep.points.csv: expected a granpipe table" not in r.stderr:
+        failures.append(f"no sweep: {r.returncode} {r.stderr}")
+if failures:
+    print("FAIL", *failures, sep="\n")
+    sys.exit(1)
+print("plot_tap3d_compaction: a line per epsilon in each figure, the fit table, the laws at t = 0")
