@@ -19,9 +19,9 @@ def _save(fig, path):
     plt.close(fig)
 
 
-def line_chart(series, reference, xlabel, ylabel, path):
+def line_chart(series, reference, xlabel, ylabel, path, reference_label="steady state (constant A)"):
     """series: {name: [(x, y, err)]}, each drawn as a line through its points with error bars;
-    reference: [(x, y, err)] drawn as black squares (err may be nan)."""
+    reference: [(x, y, err)] drawn as black squares (err may be nan), named reference_label."""
     fig, ax = plt.subplots(figsize=SIZE)
     for k, (name, points) in enumerate(sorted(series.items())):
         points = sorted(points)
@@ -32,7 +32,7 @@ def line_chart(series, reference, xlabel, ylabel, path):
         xs, ys, errs = zip(*reference)
         errs = [e if math.isfinite(e) else 0.0 for e in errs]
         ax.errorbar(xs, ys, yerr=errs, linestyle="none", marker="s", markersize=4, color="black",
-                    capsize=2, label="steady state (constant A)", gid="reference")
+                    capsize=2, label=reference_label, gid="reference")
     ax.set_xlabel(xlabel)
     ax.set_ylabel(ylabel)
     ax.grid(alpha=0.3)

@@ -1,0 +1,44 @@
+#!/usr/bin/env python3
+"""Fig. 4 of the 3D tapping paper from kept tables: <Phi^c> at the end of each step of the
+ramps of sqrt(epsilon) (the by_leg table of tap3d_hysteresis.json, one line per leg) against
+sqrt(epsilon), with the steady states of tap3d_steady_states.json (its sweep.points.csv) as
+black squares.
+
+    scripts/plot_tap3d_hysteresis.py docs/data/tap3d_hysteresis.by_leg.csv \\
+        docs/data/tap3d_steady_states.sweep.points.csv docs/img/tap3d_fig4.svg
+"""
+import math
+import sys
+
+from charts import line_chart
+from input_error import refuse
+from pool_replicas import BRANCHES
+from result_csv import read_table
+
+
+def column(path, header, name):
+    if name not in header:
+        refuse(f"{path}: expected a column {name}, found {header[:4]}...")
+    return header.index(name)
+
+
+def main(by_leg, points, out):
+    _, header, rows = read_table(by_leg)
+    leg, eps = column(by_leg, header, "branch"), column(by_leg, header, "epsilon")
+    phi, err = column(by_leg, header, "phi_c"), column(by_leg, header, "phi_c_err")
+    series = {}
+    for r in rows:
+        name = f"{int(r[leg])}: {BRANCHES.get(int(r[leg]), 'leg')}"
+        series.setdefault(name, []).append((math.sqrt(r[eps]), r[phi], r[err]))
+    _, pheader, prow = read_table(points)
+    peps = column(points, pheader, "source.params.epsilon")
+    pphi = column(points, pheader, "stereology.phi_c_last")
+    reference = [(math.sqrt(r[peps]), r[pphi], math.nan) for r in prow]
+    line_chart(series, reference, "√ε", "⟨Φ^c⟩ at the end of each step", out,
+               reference_label="after T taps at constant ε, each from the deposition")
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 4:
+        refuse("usage: plot_tap3d_hysteresis.py BY_LEG.csv SWEEP_POINTS.csv OUT.svg")
+    main(*sys.argv[1:])
