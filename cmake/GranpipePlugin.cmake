@@ -9,7 +9,7 @@
 # LIBRARY_SOURCES   the plugin's logic, built as a static <name>_lib that its tests link;
 #                   SOURCES hold the rest (the registration).
 # DEPENDS           what the plugin needs beyond the core: CGAL, Boost (headers),
-#                   Boost.<component> (e.g. Boost.graph), GSL, TBB. Every plugin also links
+#                   Boost.<component> (e.g. Boost.graph), GSL, TBB, ZLIB. Every plugin also links
 #                   OpenMP, since plugins run `num_threads(ctx.threads)` loops.
 #                   If one is not found, the plugin is left out of the build with one
 #                   message and the rest of granpipe builds.
@@ -108,12 +108,15 @@ function(_granpipe_find_dependencies targets missing)
     elseif(dependency STREQUAL "TBB")
       find_package(TBB QUIET)
       set(target TBB::tbb)
+    elseif(dependency STREQUAL "ZLIB")
+      find_package(ZLIB QUIET)
+      set(target ZLIB::ZLIB)
     elseif(dependency STREQUAL "OpenMP")
       find_package(OpenMP QUIET COMPONENTS CXX)
       set(target OpenMP::OpenMP_CXX)
     else()
       message(FATAL_ERROR "granpipe_add_plugin: unknown dependency \"${dependency}\" (expected "
-                          "CGAL, Boost, Boost.<component>, GSL, TBB or OpenMP)")
+                          "CGAL, Boost, Boost.<component>, GSL, TBB, ZLIB or OpenMP)")
     endif()
     if(TARGET ${target})
       list(APPEND found_targets ${target})

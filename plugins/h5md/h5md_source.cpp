@@ -10,10 +10,7 @@ namespace granpipe::h5md {
 Schema schema() {
   Schema s;
   s.path("file", std::nullopt, "the H5MD file to read (a granpipe frames.h5 or another tool's)");
-  s.integer("first", 0, "index of the first frame read (0: the first in the file)").min(0);
-  s.integer("last", -1, "index of the last frame read, inclusive (-1: the last in the file)")
-      .min(-1);
-  s.integer("stride", 1, "read every stride-th frame from first on").min(1);
+  declare_frame_selection(s);
   s.string("group", std::string(""),
            "particles group of the file (/particles/<group>); empty: \"all\" or the only one");
   s.real("radius", 0.5, "radius of every particle when the file stores none (other tools' files)")
@@ -28,9 +25,6 @@ Schema schema() {
 
 H5mdSource::H5mdSource(const PluginContext& ctx)
     : reader_(ctx.params.string("file"), ctx.params.string("group"), ctx.params.real("radius")),
-      first_(static_cast<long>(ctx.params.integer("first"))),
-      last_(static_cast<long>(ctx.params.integer("last"))),
-      stride_(static_cast<long>(ctx.params.integer("stride"))),
       max_overlap_(ctx.params.real("max_overlap")),
       max_overlap_param_(ctx.param("max_overlap")) {
   const FrameFileInfo& info = reader_.info();
@@ -38,35 +32,17 @@ H5mdSource::H5mdSource(const PluginContext& ctx)
   const std::string held = " (" + info.path + " holds " + std::to_string(frames) + " frames)";
   if (frames == 0)
     throw InputError(ctx.param("file") + ": expected a file with frames, got none" + held);
-  if (first_ >= frames) {
-    throw InputError(ctx.param("first") + ": expected a frame index below " +
-                     std::to_string(frames) + ", got " + std::to_string(first_) + held);
-  }
-  if (last_ == -1) last_ = frames - 1;
-  if (last_ >= frames) {
-    throw InputError(ctx.param("last") + ": expected -1 or a frame index below " +
-                     std::to_string(frames) + ", got " + std::to_string(last_) + held);
-  }
-  if (last_ < first_) {
-    throw InputError(ctx.param("last") + ": expected -1 or an index >= first (" +
-                     std::to_string(first_) + "), got " + std::to_string(last_));
-  }
-  // A longer stride reads the first frame only, as this one does; it would overflow the
-  // frame index.
-  if (stride_ > frames) {
-    throw InputError(ctx.param("stride") + ": expected at most the number of frames, got " +
-                     std::to_string(stride_) + held);
-  }
+  selection_ = select_frames(ctx, frames, held);
   if (!info.complete) {
     ctx.log.warn(info.path +
                  ": the writer never finished this file (stopped or crashed); "
                  "reading the " +
                  std::to_string(frames) + " frames it completed");
   }
-  next_ = first_;
+  next_ = selection_.first;
   // The first frame is read and checked now, so that bad particles stop the pipeline at
   // validation, before anything runs.
-  first_frame_ = read_checked(first_);
+  first_frame_ = read_checked(selection_.first);
 }
 
 Frame H5mdSource::read_checked(long index) const {
@@ -89,18 +65,18 @@ FrameContent H5mdSource::content() const {
 }
 
 Source::Work H5mdSource::work() const {
-  return {static_cast<double>((last_ - first_) / stride_ + 1), "frames", false};
+  return {static_cast<double>(selection_.count()), "frames", false};
 }
 
 bool H5mdSource::next(Frame& frame) {
-  if (next_ > last_) return false;
+  if (next_ > selection_.last) return false;
   if (first_frame_) {
     frame = std::move(*first_frame_);
     first_frame_.reset();
   } else {
     frame = read_checked(next_);
   }
-  next_ += stride_;
+  next_ += selection_.stride;
   ++read_;
   return true;
 }

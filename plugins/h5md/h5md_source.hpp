@@ -4,6 +4,7 @@
 // files (positions and the box; radii from the `radius` parameter).
 #include <optional>
 
+#include "granpipe/frame_selection.hpp"
 #include "granpipe/frame_store.hpp"
 #include "granpipe/plugin.hpp"
 
@@ -26,8 +27,7 @@ class H5mdSource : public Source {
   void check_overlaps(const Frame& frame, const std::string& where) const;
   Frame read_checked(long index) const;
   FrameReader reader_;
-  // The selection: first, first + stride, ... up to last (inclusive).
-  long first_ = 0, last_ = 0, stride_ = 1;
+  FrameSelection selection_;
   long next_ = 0, read_ = 0;
   double max_overlap_;
   std::string max_overlap_param_;  // its path in the pipeline, for the message

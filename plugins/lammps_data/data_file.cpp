@@ -69,6 +69,12 @@ AtomsSection find_atoms_section(Lines& lines, const std::string& where) {
   AtomsSection a;
   std::string line;
   lines.next(line);  // the title
+  // A dump's first line would pass for a title, and its lines hold no "N atoms".
+  if (line.starts_with("ITEM:")) {
+    throw InputError(where +
+                     ": line 1: expected a LAMMPS data file (a title, then \"N atoms\"), got " +
+                     quoted(line) + ": this is a LAMMPS dump, use the lammps_dump source");
+  }
   bool header = true;
   while (lines.next(line)) {
     const std::vector<std::string> w = words(before_comment(line));

@@ -17,7 +17,8 @@
 namespace granpipe::lammps_data {
 
 // InputError starting with `where` (the file) and the line, for anything else: another
-// atom style, a malformed line, an atom count other than the header's, an id given twice.
+// atom style, a malformed line, an atom count other than the header's, an id given twice,
+// a LAMMPS dump (named as one: its first line would pass for a title).
 Frame read_atoms(std::istream& in, const std::string& where);
 
 }  // namespace granpipe::lammps_data

@@ -106,6 +106,13 @@ TEST(LammpsData, AnAtomIdGivenTwiceIsRefusedWithBothLines) {
             "x.data: line 5: expected each atom id once, got id 4 again (first on line 4)");
 }
 
+// A dump's first line would pass for a title: the dump is named as such.
+TEST(LammpsData, ADumpIsNamedWithTheSourceThatReadsIt) {
+  EXPECT_EQ(refusal("ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n2\n"),
+            "x.data: line 1: expected a LAMMPS data file (a title, then \"N atoms\"), got "
+            "\"ITEM: TIMESTEP\": this is a LAMMPS dump, use the lammps_dump source");
+}
+
 class LammpsDataSource : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -147,6 +154,25 @@ TEST_F(LammpsDataSource, ASphereThroughTheCylinderIsRefusedByAtomId) {
             "spheres.data: atom 7 at (1.9, 0, 1), radius 0.5: expected an overlap with the wall "
             "cylinder (radius 2 about (0, 0)) of at most 0.025 (0.05 of its radius), got 0.4 (the "
             "container of params.cylinder_radius)");
+}
+
+// The container's parameters are the lammps_dump source's (granpipe/stated_container.hpp).
+TEST_F(LammpsDataSource, TheCylinderAxisAndSideWallsPlaceTheWalls) {
+  std::ofstream(dir_ / "spheres.data") << two_spheres("0 0 0.5", "1.9 0 1");
+  harness_ = test::make_context("lammps_data", {{"file", (dir_ / "spheres.data").string()},
+                                                {"cylinder_radius", 2.0},
+                                                {"cylinder_axis", {0.5, 0}}});
+  Frame f;
+  ASSERT_TRUE(lammps_data::LammpsDataSource(*harness_).next(f));
+  EXPECT_EQ(f.container.cylinder_center, Eigen::Vector2d(0.5, 0));
+  EXPECT_EQ(f.container.lo[0], -1.5);
+  EXPECT_EQ(f.container.hi[1], 2.0);
+  harness_ = test::make_context("lammps_data", {{"file", (dir_ / "spheres.data").string()},
+                                                {"side_walls", {-1, 2.4, -1, 1}}});
+  ASSERT_TRUE(lammps_data::LammpsDataSource(*harness_).next(f));
+  EXPECT_EQ(f.container.shape, ContainerShape::Box);
+  EXPECT_EQ(f.container.hi[0], 2.4);
+  EXPECT_EQ(f.container.boundary[0][1], Boundary::Wall);
 }
 
 TEST_F(LammpsDataSource, ASphereBelowTheBaseOrAboveTheTopIsRefused) {

@@ -1,0 +1,98 @@
+#include "dump_index.hpp"
+
+#include "dump_text.hpp"
+#include "granpipe/errors.hpp"
+#include "not_a_dump.hpp"
+#include "snapshot_header.hpp"
+
+namespace granpipe::lammps_dump {
+
+namespace {
+
+// Reads past blank lines to the next that is not blank, noting where it starts; false at
+// the end of the file.
+bool next_filled_line(TextLines& lines, std::string& line, SnapshotStart& start) {
+  do {
+    start.offset = lines.offset();
+    start.line_before = lines.number();
+    if (!lines.next(line)) return false;
+  } while (trimmed(line).empty());
+  return true;
+}
+
+std::string expected_atoms(const SnapshotHeader& h) {
+  return "expected " + std::to_string(h.atoms) + " atom lines (NUMBER OF ATOMS, line " +
+         std::to_string(h.atoms_line) + "), got ";
+}
+
+// Over the atom lines, counting them.
+void skip_atoms(const SnapshotHeader& h, TextLines& lines) {
+  std::string line;
+  for (std::int64_t k = 0; k < h.atoms; ++k) {
+    next_line_of(h.place, lines, line);
+    if (line.starts_with("ITEM:")) {
+      throw InputError(h.place.at(lines.number()) + expected_atoms(h) + std::to_string(k) +
+                       " before " + quoted(trimmed(line)));
+    }
+    if (trimmed(line).empty()) {
+      throw InputError(h.place.at(lines.number()) + "expected an atom line, got an empty line");
+    }
+  }
+}
+
+void check_columns(const DumpIndex& index, const SnapshotHeader& h) {
+  if (h.columns == index.columns) return;
+  std::string got;
+  for (const auto& c : h.columns) got += (got.empty() ? "" : " ") + c;
+  std::string first;
+  for (const auto& c : index.columns) first += (first.empty() ? "" : " ") + c;
+  throw InputError(h.place.at(h.columns_line) + "expected the columns of the first snapshot (\"" +
+                   first + "\"), got \"" + got + "\"");
+}
+
+// The first line must open a snapshot; otherwise say what the file is.
+void check_is_dump(TextLines& lines, bool found, const std::string& line) {
+  const std::string expected = "expected a LAMMPS dump (starting \"ITEM: TIMESTEP\"), got ";
+  if (!found) throw InputError(lines.path() + ": " + expected + "an empty file");
+  if (line.starts_with("ITEM:")) return;
+  const long number = lines.number();
+  throw InputError(lines.path() + ": line " + std::to_string(number) + ": " + expected +
+                   what_the_file_is(lines, line));
+}
+
+}  // namespace
+
+DumpIndex index_snapshots(TextLines& lines) {
+  DumpIndex index;
+  std::string line;
+  SnapshotStart start;
+  bool found = next_filled_line(lines, line, start);
+  check_is_dump(lines, found, line);
+  std::optional<SnapshotHeader> last;
+  for (; found; found = next_filled_line(lines, line, start)) {
+    if (last && !lines.cut() && !line.starts_with("ITEM:")) {
+      throw InputError(last->place.at(lines.number()) + expected_atoms(*last) +
+                       "more: " + quoted(trimmed(line)));
+    }
+    try {
+      // The file ends inside the first line of a snapshot.
+      if (lines.cut()) throw SnapshotCut{SnapshotPlace{lines.path(), lines.number()}};
+      last = read_header(lines.path(), lines, line);
+      if (index.snapshots.empty()) {
+        index.columns = last->columns;
+        index.columns_at = last->place.at(last->columns_line);
+      }
+      check_columns(index, *last);
+      skip_atoms(*last, lines);
+    } catch (const SnapshotCut& cut) {
+      index.cut = cut.place;
+      break;
+    }
+    start.timestep = *last->place.timestep;
+    index.snapshots.push_back(start);
+  }
+  index.ended_early = lines.ended_early();
+  return index;
+}
+
+}  // namespace granpipe::lammps_dump

@@ -1,0 +1,27 @@
+#pragma once
+// The pieces of a dump's text: words, numbers as LAMMPS writes them, lines quoted in
+// messages.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace granpipe::lammps_dump {
+
+// The words of a line, split at spaces and tabs (trailing ones included).
+std::vector<std::string_view> words(std::string_view line);
+// The same into `out`, whose memory is reused line after line.
+void split_words(std::string_view line, std::vector<std::string_view>& out);
+// The line without the spaces and tabs that end it.
+std::string_view trimmed(std::string_view line);
+// The whole word as a number, or nothing: "12", "-3"; "1.5" and "12abc" are not whole.
+std::optional<std::int64_t> whole_number(std::string_view word);
+// The whole word as a number, or nothing: "0.5", "-1e-3", "+2"; "nan" and "inf" are numbers
+// here (callers decide whether they accept them).
+std::optional<double> real_number(std::string_view word);
+// The start of a line, in quotes, for a message: "\"1 1 0.5 0 0\"" (bytes that are not
+// printable characters as '?').
+std::string quoted(std::string_view line);
+
+}  // namespace granpipe::lammps_dump

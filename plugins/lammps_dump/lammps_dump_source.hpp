@@ -1,0 +1,54 @@
+#pragma once
+// `lammps_dump`: frames from a LAMMPS or LIGGGHTS text dump (`dump custom`, `dump atom`;
+// plain or gzip-compressed), one per snapshot, step = its TIMESTEP, selected by first,
+// last and stride as the h5md source selects frames. A dump records the box but no walls,
+// so the container is stated in the pipeline (granpipe/stated_container.hpp), its periodic
+// sides taken from each snapshot's BOX BOUNDS; an atom outside it is refused with its
+// line. A file that ends inside a snapshot (its writer stopped) gives the complete
+// snapshots before it, with a warning.
+#include <optional>
+#include <string>
+
+#include "atom_columns.hpp"
+#include "dump_index.hpp"
+#include "granpipe/frame_selection.hpp"
+#include "granpipe/plugin.hpp"
+#include "granpipe/stated_container.hpp"
+#include "snapshot_header.hpp"
+#include "text_lines.hpp"
+
+namespace granpipe::lammps_dump {
+
+Schema schema();
+
+class LammpsDumpSource : public Source {
+ public:
+  explicit LammpsDumpSource(const PluginContext& ctx);
+
+  FrameContent content() const override { return {.dim = 3, .columns = columns_.properties()}; }
+  Work work() const override { return {static_cast<double>(selection_.count()), "frames", false}; }
+  bool next(Frame& frame) override;
+  void finish(Results& results) override;
+
+ private:
+  void warn_if_cut(const PluginContext& ctx) const;
+  void check_radius(const PluginContext& ctx) const;
+  Frame read_snapshot(long index);
+  // The frame of the snapshot whose header was just read: its atoms, step, time and
+  // container, every atom checked to be inside.
+  Frame frame_of(const SnapshotHeader& header);
+
+  std::string file_;
+  StatedContainer stated_;
+  double radius_;  // every atom's when the dump has no radius or diameter column; else 0
+  double dt_;      // the run's timestep, for the time of dumps without ITEM: TIME; else 0
+  TextLines lines_;
+  DumpIndex index_;
+  AtomColumns columns_;
+  FrameSelection selection_;
+  long next_ = 0, read_ = 0;
+  // Read when the source is made, so that bad atoms stop the pipeline before it runs.
+  std::optional<Frame> first_frame_;
+};
+
+}  // namespace granpipe::lammps_dump

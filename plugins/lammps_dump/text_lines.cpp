@@ -1,0 +1,67 @@
+#include "text_lines.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <utility>
+
+#include "granpipe/errors.hpp"
+
+namespace granpipe::lammps_dump {
+
+namespace {
+
+// Large reads: a dump is read from start to end, and zlib's default buffer is 8 KiB.
+constexpr unsigned kBufferBytes = 1u << 18;
+
+}  // namespace
+
+TextLines::TextLines(std::string path)
+    : path_(std::move(path)), file_(gzopen(path_.c_str(), "rb")) {
+  if (!file_) throw InputError(path_ + ": cannot open: " + std::strerror(errno));
+  gzbuffer(file_, kBufferBytes);
+}
+
+TextLines::~TextLines() { gzclose(file_); }
+
+bool TextLines::next(std::string& line) {
+  line.clear();
+  char chunk[4096];
+  bool ended = false;
+  while (!ended && gzgets(file_, chunk, sizeof chunk)) {
+    const std::size_t n = std::strlen(chunk);
+    ended = n > 0 && chunk[n - 1] == '\n';
+    line.append(chunk, ended ? n - 1 : n);
+  }
+  if (!ended) check_read_error();
+  if (!ended && line.empty()) return false;
+  if (!line.empty() && line.back() == '\r') line.pop_back();
+  ++number_;
+  cut_ = !ended;
+  return true;
+}
+
+void TextLines::check_read_error() {
+  int code = Z_OK;
+  const char* message = gzerror(file_, &code);
+  if (code == Z_OK) return;
+  // zlib's "unexpected end of file": the compressed stream was cut.
+  if (code == Z_BUF_ERROR) {
+    ended_early_ = true;
+    return;
+  }
+  const std::string why = code == Z_ERRNO ? std::strerror(errno) : message;
+  throw InputError(path_ + ": line " + std::to_string(number_ + 1) + ": cannot read: " + why);
+}
+
+std::int64_t TextLines::offset() const { return gztell(file_); }
+
+void TextLines::seek(std::int64_t offset, long line_before) {
+  if (gzseek(file_, offset, SEEK_SET) != offset) {
+    throw InputError(path_ + ": cannot go back to line " + std::to_string(line_before + 1) +
+                     " (the file changed while it was read?)");
+  }
+  number_ = line_before;
+  cut_ = false;
+}
+
+}  // namespace granpipe::lammps_dump

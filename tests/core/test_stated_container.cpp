@@ -1,0 +1,97 @@
+// The container a pipeline states for a file that records none (LAMMPS data files and
+// dumps): its parameters checked together, the stated walls placed in the file's box, and
+// the first particle outside named with the parameter that placed its wall.
+#include <gtest/gtest.h>
+
+#include "granpipe/stated_container.hpp"
+#include "plugin_harness.hpp"
+
+using namespace granpipe;
+
+namespace {
+
+Schema schema() {
+  Schema s;
+  declare_stated_container(s);
+  return s;
+}
+
+// The refusal of these parameters, or "accepted".
+std::string refusal(nlohmann::json params) {
+  try {
+    auto harness = test::make_context(schema(), std::move(params));
+    StatedContainer stated(*harness);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "accepted";
+}
+
+// A box [0, 4] x [0, 4] x [0, 8], periodic along the axes given.
+Container file_box(bool periodic_x, bool periodic_z) {
+  Container c = Container::periodic_box(3, Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(4, 4, 8));
+  if (!periodic_x) c.boundary[0] = {Boundary::Open, Boundary::Open};
+  c.boundary[1] = {Boundary::Open, Boundary::Open};
+  if (!periodic_z) c.boundary[2] = {Boundary::Open, Boundary::Open};
+  return c;
+}
+
+}  // namespace
+
+TEST(StatedContainer, ParametersThatContradictEachOtherAreRefused) {
+  EXPECT_EQ(refusal({{"side_walls", {0, 1, 0}}}),
+            "params.side_walls: expected [] or [x_lo, x_hi, y_lo, y_hi], got 3 numbers");
+  EXPECT_EQ(refusal({{"side_walls", {0, 1, 0, 1}}, {"cylinder_radius", 2.0}}),
+            "params.side_walls: expected [] in a cylinder (params.cylinder_radius 2), got side "
+            "walls");
+  EXPECT_EQ(refusal({{"side_walls", {0, 1, 3, 3}}}),
+            "params.side_walls: expected y_hi above y_lo, got 3 and 3");
+  EXPECT_EQ(refusal({{"base", 2.0}, {"top", 1.0}}),
+            "params.top: expected a height above base, got 1");
+}
+
+TEST(StatedContainer, StatedWallsReplaceTheFilesSides) {
+  auto harness = test::make_context(
+      schema(), {{"cylinder_radius", 1.5}, {"cylinder_axis", {2, 2.5}}, {"base", 1.0}});
+  const StatedContainer stated(*harness);
+  const Container c = stated.place(file_box(false, false), "x");
+  EXPECT_EQ(c.shape, ContainerShape::Cylinder);
+  EXPECT_EQ(c.cylinder_center, Eigen::Vector2d(2, 2.5));
+  EXPECT_EQ(c.lo, Eigen::Vector3d(0.5, 1, 1));
+  EXPECT_EQ(c.hi, Eigen::Vector3d(3.5, 4, 100));
+  EXPECT_EQ(c.boundary[2][0], Boundary::Wall);
+  EXPECT_EQ(c.boundary[2][1], Boundary::Open);
+  // A box periodic along z keeps its z sides: base and top bound nothing there.
+  const Container periodic_z = stated.place(file_box(false, true), "x");
+  EXPECT_TRUE(periodic_z.periodic(2));
+  EXPECT_EQ(periodic_z.hi[2], 8.0);
+  EXPECT_THROW(
+      {
+        try {
+          stated.place(file_box(true, false), "x.dump: timestep 0, line 5");
+        } catch (const InputError& e) {
+          EXPECT_STREQ(e.what(),
+                       "x.dump: timestep 0, line 5: params.cylinder_radius: expected no walls "
+                       "across the periodic x sides of the box, got a cylinder");
+          throw;
+        }
+      },
+      InputError);
+}
+
+TEST(StatedContainer, TheFirstParticleOutsideNamesThePlacingParameter) {
+  auto harness = test::make_context(schema(), {{"side_walls", {0, 4, 0, 4}}});
+  const StatedContainer stated(*harness);
+  Frame f;
+  f.resize(2, 3);
+  f.radius().setConstant(0.5);
+  f.position() << 2, 2, 1, 0.3, 2, 1;  // the second through the wall x = 0
+  f.id() << 5, 9;
+  f.container = stated.place(file_box(false, false), "x");
+  const auto out = stated.first_outside(f, "the file's box");
+  ASSERT_TRUE(out);
+  EXPECT_EQ(out->particle, 1);
+  EXPECT_EQ(out->message,
+            "atom 9 at (0.3, 2, 1), radius 0.5: expected an overlap with the wall x_low (x = 0) "
+            "of at most 0.025 (0.05 of its radius), got 0.2 (the container of params.side_walls)");
+}
