@@ -1,10 +1,12 @@
 #!/usr/bin/env python3
-"""Fig. 2 and the fit table of the 3D tapping paper from a run of tap3d_compaction.json (one
-sweep point per epsilon): Phi_b, <Phi^c> and <Z> against the number of taps, log and linear,
-with the Eq. (3) and (4) fits of the `compaction` analyzer dotted; and a CSV of the fitted
-parameters, the steady states and the spectrum slopes per epsilon.
+"""Fig. 2 and the fit table of the 3D tapping paper from runs with the `compaction` analyzer:
+Phi_b, <Phi^c> and <Z> against the number of taps, log and linear, with the Eq. (3) and (4)
+fits dotted; and a CSV of the fitted parameters, the steady states and the spectrum slopes.
+A run is a sweep over epsilon (tap3d_compaction.json: one line per point) or a single run
+(one line, named by its epsilon, or by its pipeline's name when it has none - a reprocessing
+of saved frames).
 
-usage: plot_tap3d_compaction.py RUN_DIR OUT_PREFIX
+usage: plot_tap3d_compaction.py RUN_DIR [RUN_DIR...] OUT_PREFIX
 writes OUT_PREFIX_phi_b.svg, OUT_PREFIX_phi_c.svg, OUT_PREFIX_z.svg and OUT_PREFIX.csv"""
 import csv
 import math
@@ -12,7 +14,7 @@ import os
 import sys
 
 from charts import compaction_chart
-from input_error import refuse
+from input_error import read_pipeline, refuse
 from result_csv import read_table
 
 # The laws of the paper: Eq. (3) for a packing fraction, Eq. (4) for <Z>.
@@ -32,8 +34,21 @@ SERIES = [  # (column of per_frame, fit table, law, axis label, file suffix)
 ]
 
 
-def point_files(run, point):
-    return lambda name: os.path.join(run, f"point_{point:03d}.compaction.{name}.csv")
+def curves(run):
+    """[(label, epsilon or nan, path of a table by name)] of a run: each sweep point, or the run."""
+    if not os.path.exists(os.path.join(run, "sweep.points.csv")):
+        pipeline = read_pipeline(run)
+        eps = pipeline.get("source", {}).get("params", {}).get("epsilon")
+        label = f"ε = {eps:g}" if eps is not None else pipeline.get("name", run)
+        return [(label, math.nan if eps is None else eps,
+                 lambda name: os.path.join(run, f"compaction.{name}.csv"))]
+    _, header, points = read_table(os.path.join(run, "sweep.points.csv"))
+    column = "source.params.epsilon"
+    if column not in header:
+        refuse(f"{run}/sweep.points.csv: expected a sweep over {column}, found {header[1:3]}...")
+    return [(f"ε = {p[header.index(column)]:g}", p[header.index(column)],
+             lambda name, k=int(p[0]): os.path.join(run, f"point_{k:03d}.compaction.{name}.csv"))
+            for p in points]
 
 
 def named_rows(path):
@@ -49,40 +64,31 @@ def named_rows(path):
         refuse(f"{path}: expected rows of a name, a value and an error, found {rows[1:2]}")
 
 
-def main(run, prefix):
-    _, header, points = read_table(os.path.join(run, "sweep.points.csv"))
-    column = "source.params.epsilon"
-    if column not in header:
-        refuse(f"{run}/sweep.points.csv: expected a sweep over {column}, found {header[1:3]}...")
+def main(runs, prefix):
+    lines = [c for run in runs for c in curves(run)]
     summary = []
     for label, table, law, ylabel, suffix in SERIES:
         series, fits = {}, {}
-        for p in points:
-            point, eps = int(p[0]), p[header.index(column)]
-            files = point_files(run, point)
+        for name, eps, files in lines:
             _, ph, rows = read_table(files("per_frame"))
-            name = f"ε = {eps:g}"
             series[name] = [(r[ph.index("tap")], r[ph.index(label)]) for r in rows]
             params = named_rows(files(table))
             values = {k: v for k, (v, _) in params.items()}
             if all(math.isfinite(v) for v in values.values()):
-                taps = sorted(t for t, _ in series[name])
-                fits[name] = [(t, law(t, values)) for t in taps]
-            for k, (v, e) in params.items():
-                summary.append((eps, table, k, v, e))
+                fits[name] = [(t, law(t, values)) for t, _ in series[name]]
+            summary += [(name, table, k, v, e) for k, (v, e) in params.items()]
         compaction_chart(series, fits, ylabel, f"{prefix}_{suffix}.svg")
-    for p in points:
-        point, eps = int(p[0]), p[header.index(column)]
-        for name, (v, e) in named_rows(point_files(run, point)("scalars")).items():
-            if name.endswith(("_ss", "_sigma")) or name.startswith(("spectrum_slope", "steady_from")):
-                summary.append((eps, "steady", name, v, e))
+    for name, eps, files in lines:
+        for k, (v, e) in named_rows(files("scalars")).items():
+            if k.endswith(("_ss", "_sigma")) or k.startswith(("spectrum_slope", "steady_from", "fit_")):
+                summary.append((name, "steady", k, v, e))
     with open(f"{prefix}.csv", "w") as f:
-        f.write("epsilon,table,parameter,value,error\n")
-        for eps, table, k, v, e in summary:
-            f.write(f"{eps:g},{table},{k},{v:.6g},{e:.3g}\n")
+        f.write("run,table,parameter,value,error\n")
+        for name, table, k, v, e in summary:
+            f.write(f"{name},{table},{k},{v:.6g},{e:.3g}\n")
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 3:
-        refuse("usage: plot_tap3d_compaction.py RUN_DIR OUT_PREFIX")
-    main(sys.argv[1], sys.argv[2])
+    if len(sys.argv) < 3:
+        refuse("usage: plot_tap3d_compaction.py RUN_DIR [RUN_DIR...] OUT_PREFIX")
+    main(sys.argv[1:-1], sys.argv[-1])

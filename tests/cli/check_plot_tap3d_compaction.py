@@ -1,7 +1,7 @@
 """scripts/plot_tap3d_compaction.py on a toy run of tap3d_compaction.json: three SVGs with one
 line per epsilon (gid series-<k>), the fit table with every epsilon's parameters; the laws it
-draws equal their values at t = 0 (Eq. 3: X_inf - dX_inf; Eq. 4: <Z>_0); a run that is not a
-sweep over epsilon is refused in one line."""
+draws equal their values at t = 0 (Eq. 3: X_inf - dX_inf; Eq. 4: <Z>_0); a folder that is no
+run is refused in one line."""
 import os
 import subprocess
 import sys
@@ -36,14 +36,14 @@ with tempfile.TemporaryDirectory() as work:
         with open(f"{prefix}.csv") as f:
             rows = [line.split(",") for line in f.read().splitlines()[1:]]
         for eps in ("0.005", "0.05", "0.15"):
-            fitted = {(r[1], r[2]) for r in rows if r[0] == eps}
+            fitted = {(r[1], r[2]) for r in rows if r[0] == f"ε = {eps}"}
             if ("eq3_phi_b", "tau") not in fitted or ("eq4_z_mean", "B") not in fitted:
                 failures.append(f"epsilon {eps}: {sorted(fitted)[:4]}")
-    single = os.path.join(work, "single")
-    os.makedirs(single)
-    r = subprocess.run([sys.executable, script, single, prefix], capture_output=True, text=True)
-    if r.returncode != 2 or "sweep.points.csv: expected a granpipe table" not in r.stderr:
-        failures.append(f"no sweep: {r.returncode} {r.stderr}")
+    empty = os.path.join(work, "empty")
+    os.makedirs(empty)
+    r = subprocess.run([sys.executable, script, empty, prefix], capture_output=True, text=True)
+    if r.returncode != 2 or "pipeline.json: expected the pipeline of a granpipe run" not in r.stderr:
+        failures.append(f"not a run: {r.returncode} {r.stderr}")
 if failures:
     print("FAIL", *failures, sep="\n")
     sys.exit(1)
