@@ -70,8 +70,8 @@ void check_overlaps(const std::string& where, const std::vector<Eigen::Vector3d>
 
 }  // namespace
 
-std::vector<Eigen::Vector3d> read_saved_packing(const std::string& where, const std::string& file,
-                                                long frame, const TapBox& box, long n) {
+SavedPacking read_saved_packing(const std::string& where, const std::string& file, long frame,
+                                const TapBox& box, long n) {
   const FrameReader reader(file, "", box.radius);
   const long frames = reader.frames();
   if (frame >= frames || frames == 0) {
@@ -98,7 +98,7 @@ std::vector<Eigen::Vector3d> read_saved_packing(const std::string& where, const 
   for (long k = 0; k < n; ++k) x[static_cast<std::size_t>(k)] = f.position().row(k).transpose();
   check_inside(at, x, box);
   check_overlaps(at, x, box);
-  return x;
+  return {x, f.step};
 }
 
 }  // namespace granpipe::spheres3d_tap

@@ -2,6 +2,7 @@
 // A packing to continue tapping from: a frame of an H5MD file (a granpipe frames.h5 of
 // this source, or another tool's spheres), checked against the box the pipeline asks for.
 #include <Eigen/Core>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -9,11 +10,16 @@
 
 namespace granpipe::spheres3d_tap {
 
+struct SavedPacking {
+  std::vector<Eigen::Vector3d> centres;
+  std::int64_t step = 0;  // the frame's step: its tap, in a file of this source
+};
+
 // The centres of frame `frame` (-1: the last) of `file`. Throws InputError naming
 // `where` (the parameter) and the file when the frame is not 3D, holds other than
 // `n` spheres, other radii than the box's, another box, or spheres that overlap (by more
 // than 1e-9 R) or reach through the bottom or a wall.
-std::vector<Eigen::Vector3d> read_saved_packing(const std::string& where, const std::string& file,
-                                                long frame, const TapBox& box, long n);
+SavedPacking read_saved_packing(const std::string& where, const std::string& file, long frame,
+                                const TapBox& box, long n);
 
 }  // namespace granpipe::spheres3d_tap

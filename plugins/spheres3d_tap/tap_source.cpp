@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 #include <sstream>
+#include <utility>
 
 #include "granpipe/container.hpp"
 #include "saved_packing.hpp"
@@ -114,6 +115,10 @@ Schema schema() {
          "start from a frame of this H5MD file (e.g. a frames.h5 of this source) instead of a "
          "deposition; N, radius, side and sides must match it. Empty: deposit");
   s.integer("initial_frame", -1, "frame of initial_file to start from (-1: the last)").min(-1);
+  s.boolean("continue_count", false,
+            "with initial_file: count taps on from the saved frame's step (its tap), so that a run "
+            "split over sessions keeps one tap axis, save schedule and ramp; taps is then the "
+            "last tap, not the number after the start");
   s.choice<Protocol>("protocol", Protocol::Constant,
                      "constant: taps taps at epsilon; ramp: sqrt(epsilon) stepped from "
                      "ramp_root_min to ramp_root_max and back (the paper's Fig. 4)");
@@ -169,6 +174,8 @@ TapSource::TapSource(const PluginContext& ctx)
       initial_file_(ctx.params.string("initial_file")),
       initial_param_(ctx.param("initial_file")),
       initial_frame_(ctx.params.integer("initial_frame")),
+      continue_count_(ctx.params.boolean("continue_count")),
+      seeds_(replica_seeds(ctx)),
       n_(ctx.params.integer("N")),
       per_tap_(ctx.stream_table(
           "per_tap", Table({"tap", "epsilon", "leg", "mean_height", "mc_trials", "mc_acceptance"},
@@ -183,8 +190,15 @@ FrameContent TapSource::content() const {
 
 void TapSource::start() {
   if (!initial_file_.empty()) {
-    centres_ = read_saved_packing(initial_param_, initial_file_, initial_frame_, box_,
-                                  static_cast<long>(n_));
+    SavedPacking saved = read_saved_packing(initial_param_, initial_file_, initial_frame_, box_,
+                                            static_cast<long>(n_));
+    centres_ = std::move(saved.centres);
+    if (continue_count_) {
+      tap_ = saved.step;
+      // A stream of its own for each start, so that a continuation does not replay the
+      // random numbers its first part began with.
+      tap_rng_ = FastRandomStream(seeds_.derive("tap", static_cast<std::uint64_t>(tap_)).seed());
+    }
     return;
   }
   Deposition deposition(box_);
@@ -225,20 +239,24 @@ void TapSource::record(const TapStats& stats, const EpsilonAt& e) {
 }
 
 bool TapSource::next(Frame& frame) {
-  while (tap_ < protocol_.taps()) {
+  while (!started_ || tap_ < protocol_.taps()) {
     const auto t0 = std::chrono::steady_clock::now();
     TapStats stats;
     EpsilonAt e{0.0, -1, false};  // the start: no tap
-    if (++tap_ == 0) {
+    const bool starting = !started_;
+    if (starting) {
+      tap_ = 0;
       start();
+      started_ = true;
     } else {
+      ++tap_;
       e = protocol_.at(tap_);
       stats = redeposition_.tap(centres_, e.epsilon, tap_rng_);
       progress_.advance(1.0);
     }
     seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     record(stats, e);
-    if (schedule_.saves(tap_) || (e.leg >= 0 && e.ends_step)) {
+    if ((starting ? schedule_.start : schedule_.saves(tap_)) || (e.leg >= 0 && e.ends_step)) {
       to_frame(frame, stats, e);
       return true;
     }

@@ -41,7 +41,9 @@ class TapSource : public Source {
   EpsilonProtocol protocol_;
   std::string initial_file_, initial_param_;
   long initial_frame_ = -1;
-  std::int64_t n_ = 0, tap_ = -1, unconverged_ = 0;
+  bool continue_count_ = false, started_ = false;
+  Seeds seeds_;
+  std::int64_t n_ = 0, tap_ = 0, unconverged_ = 0;
   std::vector<Eigen::Vector3d> centres_;
   StreamedTable per_tap_;
   double seconds_ = 0.0, trials_ = 0.0;

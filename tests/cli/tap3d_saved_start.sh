@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # spheres3d_tap continued from a saved frame: a run's last frame starts a second run,
-# whose tap 0 is that packing to the bit; the same file with two spheres overlapping is
-# refused naming the pair.
+# whose tap 0 is that packing to the bit; with continue_count its taps are counted on from
+# the saved frame's (a run split over sessions keeps one tap axis); the same file with two
+# spheres overlapping is refused naming the pair.
 set -euo pipefail
 exe=$1 expect=$2 python=$3 work=$4
 rm -rf "$work" && mkdir -p "$work"
@@ -20,6 +21,17 @@ import sys, h5py, numpy as np
 first, second = (h5py.File(p, "r")["particles/all/position/value"] for p in sys.argv[1:])
 assert np.array_equal(first[-1], second[0]), "tap 0 of the continued run is not the saved packing"
 print("continued from the saved packing, bit for bit")
+PY
+"$exe" "$pipeline" "${small[@]}" --set source.params.initial_file="$work/first/frames.h5" \
+  --set source.params.continue_count=true --set source.params.taps=6 --out "$work/continued"
+"$python" - "$work/first/frames.h5" "$work/continued/frames.h5" <<'PY'
+import sys, h5py, numpy as np
+first, later = (h5py.File(p, "r")["particles/all/position"] for p in sys.argv[1:])
+steps = list(later["step"][:])
+assert steps == [2, 3, 4, 6], f"expected the taps 2 (the saved one), 3, 4, 6 (the log schedule), found {steps}"
+assert np.array_equal(first["value"][-1], later["value"][0]), "the start is not the saved packing"
+assert not np.array_equal(later["value"][1], later["value"][0]), "tap 3 moved nothing"
+print("continued count: taps 2 to 6 on the log schedule")
 PY
 cp "$work/first/frames.h5" "$work/overlap.h5"
 "$python" - "$work/overlap.h5" <<'PY'
