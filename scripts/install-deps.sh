@@ -5,7 +5,7 @@ packages=(
   g++ cmake ninja-build ccache git pkg-config clang-format
   libeigen3-dev libcgal-dev libboost-graph-dev libhdf5-dev hdf5-tools libgsl-dev zlib1g-dev
   nlohmann-json3-dev libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev libtbb-dev
-  python3 python3-h5py python3-numpy python3-matplotlib python3-scipy voro++ voro++-dev
+  python3 python3-h5py python3-numpy python3-matplotlib python3-scipy python3-vtk9 voro++ voro++-dev
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -1,0 +1,26 @@
+#pragma once
+// The vtk writer: <name>_<frame>.vtp per saved frame (frame = 0, 1, ... in the order
+// written), each written under a temporary name and renamed once complete, and at the end
+// of the run <name>.pvd listing them, so a run stopped early leaves complete frames and no
+// collection that claims to be whole.
+#include <filesystem>
+#include <vector>
+
+#include "granpipe/plugin.hpp"
+#include "vtk_collection.hpp"
+
+namespace granpipe::vtk {
+
+class VtkWriter : public Writer {
+ public:
+  explicit VtkWriter(const PluginContext& ctx);
+  void write(const Frame& frame) override;
+  void close() override;
+
+ private:
+  std::filesystem::path dir_;
+  std::string name_;
+  std::vector<WrittenFrame> written_;
+};
+
+}  // namespace granpipe::vtk
