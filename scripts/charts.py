@@ -79,3 +79,19 @@ def compaction_chart(series, fits, ylabel, path):
         ax.grid(alpha=0.3, which="both")
     axes[1].legend(loc="center left", bbox_to_anchor=(1.02, 0.5), fontsize=9)
     _save(fig, path)
+
+
+def curves_chart(series, xlabel, ylabel, path, log_y=False):
+    """series: {name: [(x, y)]}, each a line in the order given (the legend keeps it)."""
+    fig, ax = plt.subplots(figsize=SIZE)
+    for k, (name, points) in enumerate(series.items()):
+        if points:
+            xs, ys = zip(*points)
+            ax.plot(xs, ys, linewidth=1, label=name, gid=f"series-{k}")
+    if log_y:
+        ax.set_yscale("log")
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(loc="center left", bbox_to_anchor=(1.02, 0.5), fontsize=9)
+    _save(fig, path)
