@@ -12,21 +12,30 @@ CellBounds::CellBounds(const Frame& frame, double tolerance)
   const Container& c = frame.container;
   constexpr double infinity = std::numeric_limits<double>::infinity();
   cylinder_ = c.shape == ContainerShape::Cylinder;
+  axis_ = c.cylinder_center + c.wall_offset.head<2>();
+  cylinder_limit_ = c.cylinder_radius + tolerance;
   for (int a = 0; a < 3; ++a) {
     periodic_[a] = c.periodic(a);
     for (int high = 0; high < 2; ++high) {
       const double outward = high ? 1.0 : -1.0;
       const Boundary b = c.boundary[a][high];
       const bool free = b == Boundary::Periodic || (cylinder_ && a < 2);
+      const bool wall = !free && b == Boundary::Wall;
+      const double side = free ? 0.0 : packing_side(frame, a, high);
       // Open sides end at the packing's surface: a cell reaching beyond it is not enclosed
       // by particles, and its volume would count the space above the packing.
-      limit_[a][high] =
-          free ? outward * infinity : packing_side(frame, a, high) + outward * tolerance;
-      flag_[a][high] = free ? 0 : b == Boundary::Wall ? kBeyondWall : kOutside;
+      limit_[a][high] = free ? outward * infinity : side + outward * tolerance;
+      flag_[a][high] = free ? 0 : wall ? kBeyondWall : kOutside;
+      plane_walls_ = plane_walls_ || wall;
+      // Beyond the container's length past an open side's limit, or past the periodic box
+      // or the cylinder, whose cells never reach that far (or are outside).
+      const double beyond = 1.0 + c.length(a) + (cylinder_ ? 2.0 * cylinder_limit_ : 0.0);
+      const double free_side = cylinder_ && a < 2 ? axis_[a] : high ? c.hi[a] : c.lo[a];
+      cut_box_[high][a] = wall   ? side
+                          : free ? free_side + outward * beyond
+                                 : limit_[a][high] + outward * beyond;
     }
   }
-  axis_ = c.cylinder_center + c.wall_offset.head<2>();
-  cylinder_limit_ = c.cylinder_radius + tolerance;
 }
 
 std::uint8_t CellBounds::breach(const Eigen::Vector3d& c) const {
@@ -37,6 +46,7 @@ std::uint8_t CellBounds::breach(const Eigen::Vector3d& c) const {
   }
   if (cylinder_ && (c.head<2>() - axis_).squaredNorm() > cylinder_limit_ * cylinder_limit_)
     flags |= kOutside;
+  if ((flags & kOutside) && !(flags & kBeyondWall)) flags |= kOutsideWithinWalls;
   return flags;
 }
 

@@ -13,8 +13,11 @@ namespace granpipe::pores {
 enum CellFlag : std::uint8_t {
   kUnbounded = 1,   // a vertex at infinity: a face on the hull of the points triangulated
   kOutside = 2,     // a vertex beyond an open side (the packing's surface) or the cylinder
-  kBeyondWall = 4,  // a vertex beyond a plane wall: mirror images missing
+  kBeyondWall = 4,  // a vertex beyond a plane wall: the cell is to be cut at the wall
   kSeen = 8,        // in some cell (without: hidden in a regular triangulation, no cell)
+  // kOutside at a vertex on the inner side of every wall: the cell cut at the walls keeps
+  // that vertex, and is outside as well.
+  kOutsideWithinWalls = 16,
 };
 
 class CellBounds {
@@ -23,10 +26,18 @@ class CellBounds {
   // the vertices of a lattice's cells that lie on a wall a hair either side of it.
   CellBounds(const Frame& frame, double tolerance);
 
-  // kOutside, kBeyondWall or both for a vertex at `c`; 0 inside.
+  // kOutside (with kOutsideWithinWalls), kBeyondWall or both for a vertex at `c`; 0
+  // inside.
   std::uint8_t breach(const Eigen::Vector3d& c) const;
   // How far the sphere (c, reach) sticks out of the box along its periodic axes; 0 inside.
   double periodic_overshoot(const Eigen::Vector3d& c, double reach) const;
+
+  bool has_plane_walls() const { return plane_walls_; }
+  bool has_periodic_axes() const { return periodic_[0] || periodic_[1] || periodic_[2]; }
+  // The box the cells at plane walls are cut from: the walls themselves; beyond an open
+  // side's limit or the cylinder (a cell reaching that far is outside), a period beyond
+  // the box along periodic axes (the images bound the cells there).
+  const std::array<Eigen::Vector3d, 2>& cut_box() const { return cut_box_; }
 
  private:
   // Per axis and side: the limit (infinite where there is none) and the flag beyond it.
@@ -37,6 +48,8 @@ class CellBounds {
   bool cylinder_ = false;
   Eigen::Vector2d axis_ = Eigen::Vector2d::Zero();  // the cylinder's, moved by the offset
   double cylinder_limit_ = 0.0;                     // its radius plus the tolerance
+  bool plane_walls_ = false;
+  std::array<Eigen::Vector3d, 2> cut_box_;
 };
 
 }  // namespace granpipe::pores

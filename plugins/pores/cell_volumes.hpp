@@ -1,14 +1,15 @@
 #pragma once
 // The volume of each particle's cell: its Voronoi cell for equal spheres, its Laguerre
 // (power) cell, weights r^2, for unequal ones. Periodic sides by the images triangulated,
-// plane walls by mirror images of the particles near them; a cell that stays unbounded or
-// reaches beyond the packing's open surface or the cylinder is undefined (NaN).
+// plane walls by cutting the cells there at the walls (wall_cells); a cell that stays
+// unbounded or reaches beyond the packing's open surface or the cylinder is undefined (NaN).
 #include <Eigen/Core>
 #include <vector>
 
 #include "delaunay_cells.hpp"
 #include "granpipe/frame.hpp"
 #include "periodic_images.hpp"
+#include "power_volumes.hpp"
 
 namespace granpipe::pores {
 
@@ -21,12 +22,22 @@ struct CellVolumes {
   double skin_needed = 0.0;
 };
 
-// Equal spheres: the Voronoi cells, from the triangulation of the pores and its `cells`
-// (mirror images are inserted into it when the container has plane walls).
-CellVolumes voronoi_volumes(DelaunayTriangulation& t, const std::vector<DelaunayCell>& cells,
-                            const Centres& centres, const Frame& frame, double tolerance);
+// Equal spheres: the extents (flags, overshoot) of the Voronoi cells, from the Delaunay
+// cells in any order.
+PowerVolumes voronoi_extents(const std::vector<DelaunayCell>& cells, const Centres& centres,
+                             const Frame& frame, double tolerance, int threads);
+
+// The skin the particles' cells need, as far as the extents tell: the cells to be cut at
+// the walls are left out.
+double skin_for_cells(const PowerVolumes& extents, const Centres& centres);
+
+// Equal spheres: the Voronoi cells, from the Delaunay cells sorted and their extents.
+CellVolumes voronoi_volumes(PowerVolumes extents, const std::vector<DelaunayCell>& cells,
+                            const Centres& centres, const Frame& frame, double tolerance,
+                            int threads);
 
 // Unequal spheres: the Laguerre cells, from a regular triangulation of their own.
-CellVolumes laguerre_volumes(const Centres& centres, const Frame& frame, double tolerance);
+CellVolumes laguerre_volumes(const Centres& centres, const Frame& frame, double tolerance,
+                             int threads);
 
 }  // namespace granpipe::pores

@@ -23,7 +23,6 @@ namespace {
 
 using cgal::Kernel;
 using cgal::Point;
-using cgal::vector_of;
 using Vertex = CGAL::Triangulation_vertex_base_with_info_3<std::uint32_t, Kernel>;
 using Cell =
     CGAL::Triangulation_cell_base_with_info_3<std::uint32_t, Kernel,
@@ -45,16 +44,28 @@ double height_of(const std::array<Eigen::Vector3d, 4>& p) {
   return six_volume / largest_double_area;
 }
 
-DelaunayCell cell_of(const Delaunay::Cell_handle& c) {
+// The circumsphere from the corners relative to the first (as CGAL's circumcenter), and
+// whether the cell is lower than `length`. Its height is at least 6V over the longest edge
+// squared (a face's double area is at most that): only the cells this leaves in doubt have
+// their heights computed.
+DelaunayCell cell_of(const CellTopology& topology, const std::vector<Eigen::Vector3d>& x,
+                     double length) {
   DelaunayCell cell;
-  cgal::fill_dual_cell(c, cell);
-  std::array<Eigen::Vector3d, 4> p;
-  for (int k = 0; k < 4; ++k) p[k] = vector_of(c->vertex(k)->point());
-  const Point centre = CGAL::circumcenter(c->vertex(0)->point(), c->vertex(1)->point(),
-                                          c->vertex(2)->point(), c->vertex(3)->point());
-  cell.centre = vector_of(centre);
-  cell.radius = (cell.centre - p[0]).norm();
-  cell.height = height_of(p);
+  static_cast<CellTopology&>(cell) = topology;
+  const std::array<Eigen::Vector3d, 4> p{x[topology.vertices[0]], x[topology.vertices[1]],
+                                         x[topology.vertices[2]], x[topology.vertices[3]]};
+  const Eigen::Vector3d a = p[1] - p[0], b = p[2] - p[0], c = p[3] - p[0];
+  const Eigen::Vector3d bc = b.cross(c);
+  const double six_volume = a.dot(bc);
+  const Eigen::Vector3d offset =
+      (a.squaredNorm() * bc + b.squaredNorm() * c.cross(a) + c.squaredNorm() * a.cross(b)) /
+      (2.0 * six_volume);
+  cell.centre = p[0] + offset;
+  cell.radius = offset.norm();
+  const double longest =
+      std::max({a.squaredNorm(), b.squaredNorm(), c.squaredNorm(), (b - a).squaredNorm(),
+                (c - a).squaredNorm(), (c - b).squaredNorm()});
+  cell.flat = std::abs(six_volume) < 1.001 * length * longest && height_of(p) < length;
   return cell;
 }
 
@@ -86,24 +97,37 @@ Points numbered(const std::vector<Eigen::Vector3d>& x, std::size_t first_row) {
   return points;
 }
 
+// Each point located from the one before, in the order given: the rows follow a Morton
+// curve, so that the walks are short and the cells come to lie in memory about in the
+// order of their rows, which the sort of the cells profits from (CGAL's insertion of a
+// range sorts it again, along a Hilbert curve in randomised rounds, whose cells lie
+// scattered). A point at the position of another takes its vertex (refuse_duplicates).
+void insert_in_order(Delaunay& t, const Points& points) {
+  Delaunay::Vertex_handle last;
+  for (const auto& [p, row] : points) {
+    last = t.insert(p, last);
+    last->info() = row;
+  }
+}
+
 }  // namespace
 
 struct DelaunayTriangulation::Impl {
   Delaunay t;
-  std::size_t rows = 0;  // points inserted
+  std::vector<Eigen::Vector3d> points;  // by row
 };
 
 DelaunayTriangulation::DelaunayTriangulation(const Centres& centres, const Frame& frame,
                                              const std::string& where)
     : impl_(std::make_unique<Impl>()) {
-  // Room for the mirror images inserted later, within the row numbers.
+  // Room for the images of a wider skin inserted later, within the row numbers.
   if (centres.points.size() > std::size_t{UINT32_MAX / 4}) {
     throw InputError(where + ": expected fewer than 2^30 centres and images, got " +
                      std::to_string(centres.points.size()));
   }
   const Points points = numbered(centres.points, 0);
-  impl_->t.insert(points.begin(), points.end());
-  impl_->rows = points.size();
+  insert_in_order(impl_->t, points);
+  impl_->points = centres.points;
   refuse_duplicates(frame, centres, impl_->t, points, where);
   if (impl_->t.dimension() < 3) {
     throw InputError(where + ": expected particle centres spanning a volume, got all of them " +
@@ -113,19 +137,15 @@ DelaunayTriangulation::DelaunayTriangulation(const Centres& centres, const Frame
 
 DelaunayTriangulation::~DelaunayTriangulation() = default;
 
-std::vector<DelaunayCell> DelaunayTriangulation::cells() {
-  const Delaunay& t = impl_->t;
-  cgal::number_cells(t);
-  std::vector<DelaunayCell> cells;
-  cells.reserve(t.number_of_finite_cells());
-  for (auto c = t.finite_cells_begin(); c != t.finite_cells_end(); ++c) cells.push_back(cell_of(c));
-  return cells;
+std::vector<DelaunayCell> DelaunayTriangulation::cells(double length, int threads) {
+  const std::vector<Eigen::Vector3d>& x = impl_->points;
+  return cgal::sorted_cells<DelaunayCell>(
+      impl_->t, x.size(), threads, [&](const CellTopology& c) { return cell_of(c, x, length); });
 }
 
 void DelaunayTriangulation::insert(const std::vector<Eigen::Vector3d>& points) {
-  const Points numbered_points = numbered(points, impl_->rows);
-  impl_->t.insert(numbered_points.begin(), numbered_points.end());
-  impl_->rows += points.size();
+  insert_in_order(impl_->t, numbered(points, impl_->points.size()));
+  impl_->points.insert(impl_->points.end(), points.begin(), points.end());
 }
 
 }  // namespace granpipe::pores

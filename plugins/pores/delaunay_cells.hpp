@@ -1,8 +1,8 @@
 #pragma once
 // The 3D Delaunay triangulation of a frame's particle centres (CGAL, exact predicates),
-// kept while a frame is measured so that the pores and the Voronoi cells share it. Its
-// finite cells as the pores read them: each cell's circumsphere and its height, the
-// smallest distance from a vertex to the plane of the other three.
+// kept while a frame is measured so that images can be added to it. Its finite cells as
+// the pores and the Voronoi cells read them: each cell's circumsphere and whether it is
+// flat.
 #include <memory>
 #include <string>
 #include <vector>
@@ -15,7 +15,9 @@ namespace granpipe::pores {
 
 struct DelaunayCell : DualCell {
   double radius = 0.0;  // of the circumsphere
-  double height = 0.0;  // how far the cell is from flat
+  // Its smallest height (distance from a corner to the plane of the other three) is below
+  // the length given: its four centres are in one plane at that precision.
+  bool flat = false;
   // False for a cell of unequal spheres left out of the pores (tangent_cells).
   bool pore = true;
 };
@@ -30,9 +32,10 @@ class DelaunayTriangulation {
   DelaunayTriangulation(const DelaunayTriangulation&) = delete;
   DelaunayTriangulation& operator=(const DelaunayTriangulation&) = delete;
 
-  // The finite cells; a cell's neighbours are indices into the same vector.
-  std::vector<DelaunayCell> cells();
-  // Adds points, numbered on from the rows already triangulated (mirror images).
+  // The finite cells in the order of cell_order.hpp; a cell's neighbours are indices into
+  // the same vector. Flat: lower than `length`.
+  std::vector<DelaunayCell> cells(double length, int threads);
+  // Adds points, numbered on from the rows already triangulated (images of a wider skin).
   void insert(const std::vector<Eigen::Vector3d>& points);
 
  private:

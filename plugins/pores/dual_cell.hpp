@@ -12,11 +12,14 @@ namespace granpipe::pores {
 // A neighbour across a face of the convex hull: the infinite cell.
 constexpr std::uint32_t kHull = std::numeric_limits<std::uint32_t>::max();
 
-struct DualCell {
-  // Circumcentre (Delaunay) or power centre (regular: equal power |c - x|^2 - w to its four).
-  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+struct CellTopology {
   std::array<std::uint32_t, 4> vertices{};  // rows of the points triangulated, positively oriented
   std::array<std::uint32_t, 4> neighbours{};  // across the face opposite each vertex; kHull
+};
+
+struct DualCell : CellTopology {
+  // Circumcentre (Delaunay) or power centre (regular: equal power |c - x|^2 - w to its four).
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
 };
 
 }  // namespace granpipe::pores

@@ -67,86 +67,129 @@ double shortest_period(const Container& c) {
   return shortest;
 }
 
+// A tenth more than needed and a quarter more than before at least, at most the period;
+// throws InputError after `where` when the skin spans the period already.
+double wider_skin(double skin, double needed, double period, const std::string& where) {
+  if (skin >= period) {
+    std::ostringstream m;
+    m << where << ": expected periodic sides longer than the pores (" << period
+      << "), got a pore sphere or a particle's cell wider than the box; pores of boxes this "
+         "small are not computed";
+    throw InputError(m.str());
+  }
+  return std::min(std::max(1.1 * needed, 1.25 * skin), period);
+}
+
 struct TriangulatedPores {
   std::vector<Pore> pores;  // in the primary cell
   long cells = 0, flat_cells = 0, untangent_cells = 0, fifth_sphere_cells = 0;
   CellVolumes volumes;
 };
 
-// The pores of the Delaunay cells (circumspheres for equal radii, tangent spheres for
-// unequal ones) in the primary cell, and the particles' cells, from the centres and their
-// images within `skin`.
-TriangulatedPores triangulated(const Frame& frame, const Radii& radii, double tolerance,
-                               double skin, const Region& primary, const std::string& where) {
-  const double length = tolerance * radii.mean;
-  const Centres centres = centres_with_images(frame, skin);
-  DelaunayTriangulation t(centres, frame, where);
-  std::vector<DelaunayCell> cells = t.cells();
-  TriangulatedPores found;
-  found.cells = static_cast<long>(cells.size());
-  if (!radii.equal) {
-    const NonPoreCells left_out = tangent_cells(cells, centres, frame, radii.mean, length);
-    found.untangent_cells = count_inside(primary, left_out.untangent);
-    found.fifth_sphere_cells = count_inside(primary, left_out.fifth_sphere);
-  }
-  MergedPores merged = merge_cells(cells, radii.mean, tolerance);
-  found.flat_cells = merged.flat_cells;
-  for (const Pore& p : merged.pores)
-    if (inside(primary, p.centre)) found.pores.push_back(p);
-  found.volumes = radii.equal ? voronoi_volumes(t, cells, centres, frame, length)
-                              : laguerre_volumes(centres, frame, length);
-  return found;
-}
+struct Measure {
+  const Frame& frame;
+  Radii radii;
+  double tolerance;
+  const std::optional<Region>& region;
+  Region primary;  // each pore once
+  int threads;
 
-// The skin the images need: every counted pore's sphere, grown by the largest particle
-// radius (the circumsphere of the pore's centres), and every cell's orthogonal sphere
-// inside it.
-double skin_needed(const TriangulatedPores& found, const Radii& radii,
-                   const std::optional<Region>& region) {
-  const double reach = radii.largest - radii.mean;
-  double needed = found.volumes.skin_needed;
-  // Only the pores counted need the skin: the huge cells above an open-topped packing
-  // with periodic sides never fit in it, and lie outside a region below the top.
-  for (const Pore& p : found.pores) {
-    if (!region || inside(*region, p.centre)) needed = std::max(needed, p.radius + reach);
+  double length() const { return tolerance * radii.mean; }
+  bool counted(const Eigen::Vector3d& pore_centre) const {
+    return !region || inside(*region, pore_centre);
   }
-  return needed;
-}
 
-// Along periodic sides, the images within a skin that starts at kFirstSkin radii and grows
-// to what skin_needed asks (a tenth more, and by a quarter at least: what a thin skin
-// measures can be short, its cells near the skin being wrong).
-TriangulatedPores triangulated_pores(const Frame& frame, const Radii& radii, double tolerance,
-                                     const std::optional<Region>& region,
-                                     const std::string& where) {
-  constexpr double kFirstSkin = 4.0;
-  const Region primary = primary_cell(frame.container, tolerance * radii.mean / 2.0);
-  const double period = shortest_period(frame.container);
-  double skin = std::min(kFirstSkin * radii.mean, period);
-  while (true) {
-    TriangulatedPores found = triangulated(frame, radii, tolerance, skin, primary, where);
-    const double needed = skin_needed(found, radii, region);
-    if (!std::isfinite(period) || needed <= skin) return found;
-    if (skin >= period) {
-      std::ostringstream m;
-      m << where << ": expected periodic sides longer than the pores (" << period
-        << "), got a pore sphere or a particle's cell wider than the box; pores of boxes this "
-           "small are not computed";
-      throw InputError(m.str());
+  // The pores of the Delaunay cells (sorted; circumspheres for equal radii, tangent
+  // spheres for unequal ones) in the primary cell, and the particles' cells.
+  TriangulatedPores pores_of(std::vector<DelaunayCell>& cells, PowerVolumes extents,
+                             const Centres& centres) const {
+    TriangulatedPores found;
+    found.cells = static_cast<long>(cells.size());
+    if (!radii.equal) {
+      const NonPoreCells left_out =
+          tangent_cells(cells, centres, frame, radii.mean, length(), threads);
+      found.untangent_cells = count_inside(primary, left_out.untangent);
+      found.fifth_sphere_cells = count_inside(primary, left_out.fifth_sphere);
     }
-    skin = std::min(std::max(1.1 * needed, 1.25 * skin), period);
+    MergedPores merged = merge_cells(cells, radii.mean, tolerance, threads);
+    found.flat_cells = merged.flat_cells;
+    found.pores = std::move(merged.pores);
+    std::erase_if(found.pores, [&](const Pore& p) { return !inside(primary, p.centre); });
+    found.volumes =
+        radii.equal ? voronoi_volumes(std::move(extents), cells, centres, frame, length(), threads)
+                    : laguerre_volumes(centres, frame, length(), threads);
+    return found;
   }
-}
+
+  // The skin the images need: every counted pore's sphere, grown by the largest particle
+  // radius (the circumsphere of the pore's centres), and every cell's orthogonal sphere
+  // inside it. Only the pores counted need the skin: the huge cells above an open-topped
+  // packing with periodic sides never fit in it, and lie outside a region below the top.
+  double skin_needed(const TriangulatedPores& found) const {
+    double needed = found.volumes.skin_needed;
+    for (const Pore& p : found.pores)
+      if (counted(p.centre)) needed = std::max(needed, p.radius + radii.largest - radii.mean);
+    return needed;
+  }
+
+  // What skin_needed will ask, from the cells before they are merged and the extents of
+  // the Voronoi cells (which stand for the Laguerre cells of unequal radii): cheap enough
+  // to settle the skin before the pores and volumes are computed.
+  double rough_skin_needed(const std::vector<DelaunayCell>& cells, const PowerVolumes& extents,
+                           const Centres& centres) const {
+    double needed = skin_for_cells(extents, centres);
+    for (const DelaunayCell& c : cells) {
+      if (!c.flat && inside(primary, c.centre) && counted(c.centre))
+        needed = std::max(needed, c.radius + radii.largest - radii.mean);
+    }
+    return needed;
+  }
+
+  // Along periodic sides, the images within a skin that starts at kFirstSkin radii and
+  // widens to what the cells need (a tenth more, and by a quarter at least: what a thin
+  // skin measures can be short, its cells near the skin being wrong). The images of a
+  // wider skin are added to the triangulation made: the Delaunay triangulation of a set of
+  // points is one, whatever the order they come in (CGAL breaks the ties of cospherical
+  // points by a symbolic perturbation that depends on the points alone), and the cells are
+  // sorted in an order of the points alone.
+  TriangulatedPores triangulated_pores(const std::string& where) const {
+    constexpr double kFirstSkin = 4.0;
+    const double period = shortest_period(frame.container);
+    const bool periodic = std::isfinite(period);
+    double skin = std::min(kFirstSkin * radii.mean, period);
+    Centres centres = centres_with_images(frame, skin);
+    DelaunayTriangulation t(centres, frame, where);
+    while (true) {
+      std::vector<DelaunayCell> cells = t.cells(length(), threads);
+      PowerVolumes extents = voronoi_extents(cells, centres, frame, length(), threads);
+      double needed = periodic ? rough_skin_needed(cells, extents, centres) : 0.0;
+      if (needed <= skin) {
+        TriangulatedPores found = pores_of(cells, std::move(extents), centres);
+        needed = periodic ? skin_needed(found) : 0.0;
+        if (needed <= skin) return found;
+      }
+      const double wider = wider_skin(skin, needed, period, where);
+      const Centres more = images_between(frame, skin, wider);
+      t.insert(more.points);
+      centres.points.insert(centres.points.end(), more.points.begin(), more.points.end());
+      centres.particle.insert(centres.particle.end(), more.particle.begin(), more.particle.end());
+      skin = wider;
+    }
+  }
+};
 
 }  // namespace
 
 PoreMeasurement measure_pores(const Frame& frame, const std::optional<Region>& region,
-                              double tolerance, const std::string& where) {
+                              double tolerance, const std::string& where, int threads) {
   check_frame(frame, where);
   PoreMeasurement m;
   const Radii radii = radii_of(frame);
   m.radius = radii.mean;
-  TriangulatedPores found = triangulated_pores(frame, radii, tolerance, region, where);
+  const Measure measure{
+      frame,  radii, tolerance, region, primary_cell(frame.container, tolerance * radii.mean / 2.0),
+      threads};
+  TriangulatedPores found = measure.triangulated_pores(where);
   m.cells = found.cells;
   m.flat_cells = found.flat_cells;
   m.untangent_cells = found.untangent_cells;
@@ -173,7 +216,7 @@ PoreMeasurement measure_pores(const Frame& frame, const PoreSettings& settings,
                               const std::string& where) {
   check_frame(frame, where);
   return measure_pores(frame, pore_region(frame, settings.region, radii_of(frame).mean, where),
-                       settings.tolerance, where);
+                       settings.tolerance, where, settings.threads);
 }
 
 }  // namespace granpipe::pores

@@ -24,6 +24,7 @@ constexpr double kEqualRadii = 1e-6;
 struct PoreSettings {
   double tolerance = 1e-9;  // same sphere, flat cell: relative to the particle radius
   RegionSettings region;
+  int threads = 1;  // the results do not depend on it, to the bit
 };
 
 struct PoreMeasurement {
@@ -57,6 +58,6 @@ PoreMeasurement measure_pores(const Frame& frame, const PoreSettings& settings,
 
 // With the region given (nothing: every pore and every particle).
 PoreMeasurement measure_pores(const Frame& frame, const std::optional<Region>& region,
-                              double tolerance, const std::string& where);
+                              double tolerance, const std::string& where, int threads = 1);
 
 }  // namespace granpipe::pores

@@ -21,13 +21,14 @@ struct MergedPores {
   long flat_cells = 0;  // cells thinner than the tolerance, left out
 };
 
-// Cells whose height is below tolerance * radius are left out: their four centres are in
-// one plane at that precision, so that their circumsphere is set by rounding, not by the
+// Flat cells (lower than tolerance * radius) are left out: their four centres are in one
+// plane at that precision, so that their circumsphere is set by rounding, not by the
 // packing. Cells marked no pore are left out too. The others are grouped, transitively,
 // when their circumcentres are within tolerance * radius of each other and so are their
 // circumradii. Only neighbours are compared, across a face or across a flat cell between
 // them: the cells of one empty sphere fill the polyhedron of its cospherical centres, so
 // that they are joined by faces, where rounding may leave slivers.
-MergedPores merge_cells(const std::vector<DelaunayCell>& cells, double radius, double tolerance);
+MergedPores merge_cells(const std::vector<DelaunayCell>& cells, double radius, double tolerance,
+                        int threads);
 
 }  // namespace granpipe::pores

@@ -49,32 +49,74 @@ std::vector<double> shifts_along(const Container& c, int a, double x, double ski
   return shifts;
 }
 
+bool within(const Container& c, const Eigen::Vector3d& x, const Eigen::Vector3d& shift,
+            double skin) {
+  for (int a = 0; a < 3; ++a) {
+    const auto s = shifts_along(c, a, x[a], skin);
+    if (std::find(s.begin(), s.end(), shift[a]) == s.end()) return false;
+  }
+  return true;
+}
+
+// Particle k at x and its images within `skin` of the sides, but those within `thinner`
+// (0: none of them; the unshifted point is within every skin).
+void add_images(Centres& to, const Container& c, std::uint32_t k, const Eigen::Vector3d& x,
+                double skin, double thinner) {
+  const auto sx = shifts_along(c, 0, x[0], skin), sy = shifts_along(c, 1, x[1], skin),
+             sz = shifts_along(c, 2, x[2], skin);
+  for (double dx : sx)
+    for (double dy : sy)
+      for (double dz : sz) {
+        const Eigen::Vector3d shift(dx, dy, dz);
+        if (thinner > 0.0 && within(c, x, shift, thinner)) continue;
+        to.points.push_back(x + shift);
+        to.particle.push_back(k);
+      }
+}
+
+// The points in the order of spatial_order (no primary rows).
+Centres in_spatial_order(const Centres& c) {
+  Centres sorted;
+  sorted.points.reserve(c.points.size());
+  sorted.particle.reserve(c.points.size());
+  for (std::uint32_t row : spatial_order(c.points)) {
+    sorted.points.push_back(c.points[row]);
+    sorted.particle.push_back(c.particle[row]);
+  }
+  return sorted;
+}
+
+std::vector<Eigen::Vector3d> wrapped_centres(const Frame& frame) {
+  const Container& c = frame.container;
+  std::vector<Eigen::Vector3d> wrapped(static_cast<std::size_t>(frame.size()));
+  for (std::size_t k = 0; k < wrapped.size(); ++k)
+    for (int a = 0; a < 3; ++a)
+      wrapped[k][a] = c.wrap(a, frame.position()(static_cast<Eigen::Index>(k), a));
+  return wrapped;
+}
+
 }  // namespace
 
 Centres centres_with_images(const Frame& frame, double skin) {
-  const Container& c = frame.container;
-  const auto n = static_cast<std::size_t>(frame.size());
-  std::vector<Eigen::Vector3d> wrapped(n);
-  for (std::size_t k = 0; k < n; ++k)
-    for (int a = 0; a < 3; ++a)
-      wrapped[k][a] = c.wrap(a, frame.position()(static_cast<Eigen::Index>(k), a));
-  Centres centres;
-  centres.points.reserve(n);
-  centres.particle.reserve(n);
-  centres.primary.resize(n);
-  for (std::uint32_t k : spatial_order(wrapped)) {
-    const Eigen::Vector3d& x = wrapped[k];
-    const auto sx = shifts_along(c, 0, x[0], skin), sy = shifts_along(c, 1, x[1], skin),
-               sz = shifts_along(c, 2, x[2], skin);
-    centres.primary[k] = static_cast<std::uint32_t>(centres.points.size());  // shift 0 first
-    for (double dx : sx)
-      for (double dy : sy)
-        for (double dz : sz) {
-          centres.points.push_back(x + Eigen::Vector3d(dx, dy, dz));
-          centres.particle.push_back(k);
-        }
+  const std::vector<Eigen::Vector3d> wrapped = wrapped_centres(frame);
+  Centres all;
+  for (std::uint32_t k = 0; k < wrapped.size(); ++k)
+    add_images(all, frame.container, k, wrapped[k], skin, 0.0);
+  Centres centres = in_spatial_order(all);
+  centres.primary.resize(wrapped.size());
+  for (std::uint32_t row = 0; row < centres.points.size(); ++row) {
+    const std::uint32_t k = centres.particle[row];
+    if (centres.points[row] == wrapped[k]) centres.primary[k] = row;  // the unshifted point
   }
   return centres;
+}
+
+Centres images_between(const Frame& frame, double thinner, double skin) {
+  const std::vector<Eigen::Vector3d> wrapped = wrapped_centres(frame);
+  Centres images;
+  for (std::uint32_t k = 0; k < wrapped.size(); ++k)
+    add_images(images, frame.container, k, wrapped[k], skin, thinner);
+  return in_spatial_order(images);
 }
 
 }  // namespace granpipe::pores

@@ -21,4 +21,8 @@ struct Centres {
 // Without periodic sides (or skin 0): the frame's centres as they are.
 Centres centres_with_images(const Frame& frame, double skin);
 
+// The images within `skin` of the sides that are not within `thinner`, in the same order
+// (points and particles; no primary rows): what widens the skin of centres_with_images.
+Centres images_between(const Frame& frame, double thinner, double skin);
+
 }  // namespace granpipe::pores

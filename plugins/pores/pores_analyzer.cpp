@@ -72,8 +72,9 @@ const Property kLocalFraction{"local_packing_fraction",
                               "",
                               "particle volume over its voronoi_volume; NaN where undefined"};
 
-PoreSettings settings_from(const Params& p) {
+PoreSettings settings_from(const Params& p, int threads) {
   PoreSettings s;
+  s.threads = threads;
   s.tolerance = p.real("tolerance");
   s.region.kind = p.choice<RegionKind>("region");
   s.region.margin = p.real("margin");
@@ -84,7 +85,7 @@ PoreSettings settings_from(const Params& p) {
 }  // namespace
 
 PoresAnalyzer::PoresAnalyzer(const PluginContext& ctx)
-    : settings_(settings_from(ctx.params)),
+    : settings_(settings_from(ctx.params, ctx.threads)),
       statistics_(ctx.params.real("bin_width"), ctx.params.real("xi_max")),
       volumes_(ctx.params.real("v_bin_width"), ctx.params.real("v_max"), ctx.params.real("v_tail")),
       seeds_(ctx.seeds),

@@ -1,5 +1,7 @@
 #include "power_volumes.hpp"
 
+#include <omp.h>
+
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
@@ -17,72 +19,123 @@ namespace {
 // neighbour N around the edge ab.
 constexpr std::array<std::array<int, 3>, 4> kFaces{{{2, 1, 3}, {0, 2, 3}, {1, 0, 3}, {0, 1, 2}}};
 
-struct Accumulator {
-  const std::vector<Eigen::Vector3d>& x;
-  const std::vector<double>& w;
-  PowerVolumes& out;
+std::array<std::uint32_t, 3> face(const CellTopology& cell, int i) {
+  const auto& v = cell.vertices;
+  return {v[kFaces[i][0]], v[kFaces[i][1]], v[kFaces[i][2]]};
+}
 
-  double weight(std::uint32_t k) const { return w.empty() ? 0.0 : w[k]; }
+// What one thread adds up: the points in rows [first, end).
+struct Share {
+  const WeightedPoints& points;
+  PowerVolumes& out;
+  std::uint32_t first, end;
+
+  bool owns(std::uint32_t k) const { return k >= first && k < end; }
+  bool owns_any(const CellTopology& cell) const {
+    const auto& v = cell.vertices;
+    return std::any_of(v.begin(), v.end(), [&](std::uint32_t k) { return owns(k); });
+  }
+
+  template <class Cell>
+  void add_extent(const Cell& cell, const CellBounds& bounds) {
+    if (!owns_any(cell)) return;
+    const std::uint8_t flags = bounds.breach(cell.centre) | kSeen;
+    const double overshoot =
+        bounds.has_periodic_axes()
+            ? bounds.periodic_overshoot(cell.centre, points.reach(cell.centre, cell.vertices[0]))
+            : 0.0;
+    for (std::uint32_t k : cell.vertices) {
+      if (!owns(k)) continue;
+      out.flags[k] |= flags;
+      out.overshoot[k] = std::max(out.overshoot[k], overshoot);
+    }
+    for (int i = 0; i < 4; ++i) {
+      if (cell.neighbours[i] != kHull) continue;
+      for (std::uint32_t k : face(cell, i))
+        if (owns(k)) out.flags[k] |= kUnbounded;
+    }
+  }
 
   // The wedge of the dual face of ab between c_n and c_t (c_n before c_t around a -> b),
   // as the tetrahedron (x_a, x_b, c_n, c_t) split by the radical plane of a and b.
   void add_wedge(std::uint32_t a, std::uint32_t b, const Eigen::Vector3d& c_n,
                  const Eigen::Vector3d& c_t) {
+    if (!owns(a) && !owns(b)) return;
+    const std::vector<Eigen::Vector3d>& x = points.position;
     const Eigen::Vector3d ab = x[b] - x[a];
     const double six_volume = ab.dot((c_n - x[a]).cross(c_t - x[a]));
     // The radical plane cuts ab at the fraction t_a from a.
-    const double t_a = 0.5 + (weight(a) - weight(b)) / (2.0 * ab.squaredNorm());
-    out.volume[a] += t_a * six_volume / 6.0;
-    out.volume[b] += (1.0 - t_a) * six_volume / 6.0;
+    const double t_a = 0.5 + (points.weight(a) - points.weight(b)) / (2.0 * ab.squaredNorm());
+    if (owns(a)) out.volume[a] += t_a * six_volume / 6.0;
+    if (owns(b)) out.volume[b] += (1.0 - t_a) * six_volume / 6.0;
+  }
+
+  // The wedges of cell t with its neighbours after it (those before added theirs with it).
+  template <class Cell>
+  void add_wedges(const Cell& cell, std::size_t t, const std::vector<Eigen::Vector3d>& centre) {
+    if (!owns_any(cell)) return;
+    for (int i = 0; i < 4; ++i) {
+      const std::uint32_t n = cell.neighbours[i];
+      if (n == kHull || n < t) continue;
+      const std::array<std::uint32_t, 3> f = face(cell, i);
+      for (int e = 0; e < 3; ++e) add_wedge(f[e], f[(e + 1) % 3], centre[n], cell.centre);
+    }
   }
 };
 
+// Runs add(share) on each thread, each with its own share of the points.
+template <class Add>
+void by_shares(const WeightedPoints& points, PowerVolumes& out, int threads, Add add) {
+  const std::size_t n = points.position.size();
+#pragma omp parallel num_threads(threads)
+  {
+    const auto part = static_cast<std::size_t>(omp_get_thread_num());
+    const auto parts = static_cast<std::size_t>(omp_get_num_threads());
+    Share share{points, out, static_cast<std::uint32_t>(n * part / parts),
+                static_cast<std::uint32_t>(n * (part + 1) / parts)};
+    add(share);
+  }
+}
+
 }  // namespace
 
+double WeightedPoints::reach(const Eigen::Vector3d& c, std::uint32_t k) const {
+  const double power = (c - position[k]).squaredNorm() - weight(k);
+  return std::sqrt(std::max(0.0, power + largest_missing_weight));
+}
+
 template <class Cell>
-PowerVolumes power_volumes(const std::vector<Eigen::Vector3d>& points,
-                           const std::vector<double>& weights, double largest_weight,
-                           const std::vector<Cell>& cells, const CellBounds& bounds) {
-  PowerVolumes out{std::vector<double>(points.size(), 0.0),
-                   std::vector<std::uint8_t>(points.size(), 0),
-                   std::vector<double>(points.size(), 0.0)};
-  Accumulator sum{points, weights, out};
-  // The neighbours' centres are read in no spatial order: from an array a third the size
-  // of the cells', more of it in cache.
-  std::vector<Eigen::Vector3d> centre(cells.size());
-  for (std::size_t t = 0; t < cells.size(); ++t) centre[t] = cells[t].centre;
-  for (std::size_t t = 0; t < cells.size(); ++t) {
-    const Cell& cell = cells[t];
-    const std::uint32_t v0 = cell.vertices[0];
-    const double power = (cell.centre - points[v0]).squaredNorm() - sum.weight(v0);
-    const double reach = std::sqrt(std::max(0.0, power + largest_weight));
-    const std::uint8_t flags = bounds.breach(cell.centre) | kSeen;
-    const double overshoot = bounds.periodic_overshoot(cell.centre, reach);
-    for (std::uint32_t v : cell.vertices) {
-      out.flags[v] |= flags;
-      out.overshoot[v] = std::max(out.overshoot[v], overshoot);
-    }
-    for (int i = 0; i < 4; ++i) {
-      const std::uint32_t n = cell.neighbours[i];
-      const std::array<std::uint32_t, 3> face{
-          cell.vertices[kFaces[i][0]], cell.vertices[kFaces[i][1]], cell.vertices[kFaces[i][2]]};
-      if (n == kHull) {
-        for (std::uint32_t v : face) out.flags[v] |= kUnbounded;
-        continue;
-      }
-      if (n < t) continue;  // the pair was added from n
-      for (int e = 0; e < 3; ++e) sum.add_wedge(face[e], face[(e + 1) % 3], centre[n], cell.centre);
-    }
-  }
+PowerVolumes cell_extents(const WeightedPoints& points, const std::vector<Cell>& cells,
+                          const CellBounds& bounds, int threads) {
+  const std::size_t n = points.position.size();
+  PowerVolumes out{std::vector<double>(n, 0.0), std::vector<std::uint8_t>(n, 0),
+                   std::vector<double>(n, 0.0)};
+  by_shares(points, out, threads, [&](Share& share) {
+    for (const Cell& cell : cells) share.add_extent(cell, bounds);
+  });
   return out;
 }
 
-template PowerVolumes power_volumes<DualCell>(const std::vector<Eigen::Vector3d>&,
-                                              const std::vector<double>&, double,
-                                              const std::vector<DualCell>&, const CellBounds&);
-template PowerVolumes power_volumes<DelaunayCell>(const std::vector<Eigen::Vector3d>&,
-                                                  const std::vector<double>&, double,
-                                                  const std::vector<DelaunayCell>&,
-                                                  const CellBounds&);
+template <class Cell>
+void sum_volumes(PowerVolumes& v, const WeightedPoints& points, const std::vector<Cell>& cells,
+                 int threads) {
+  // The neighbours' centres from an array a third the size of the cells', more of it in
+  // cache.
+  std::vector<Eigen::Vector3d> centre(cells.size());
+  for (std::size_t t = 0; t < cells.size(); ++t) centre[t] = cells[t].centre;
+  by_shares(points, v, threads, [&](Share& share) {
+    for (std::size_t t = 0; t < cells.size(); ++t) share.add_wedges(cells[t], t, centre);
+  });
+}
+
+template PowerVolumes cell_extents<DualCell>(const WeightedPoints&, const std::vector<DualCell>&,
+                                             const CellBounds&, int);
+template PowerVolumes cell_extents<DelaunayCell>(const WeightedPoints&,
+                                                 const std::vector<DelaunayCell>&,
+                                                 const CellBounds&, int);
+template void sum_volumes<DualCell>(PowerVolumes&, const WeightedPoints&,
+                                    const std::vector<DualCell>&, int);
+template void sum_volumes<DelaunayCell>(PowerVolumes&, const WeightedPoints&,
+                                        const std::vector<DelaunayCell>&, int);
 
 }  // namespace granpipe::pores

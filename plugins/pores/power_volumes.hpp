@@ -14,6 +14,19 @@
 
 namespace granpipe::pores {
 
+// The points of a power diagram and their weights (squared radii; none: all 0, the
+// Voronoi diagram), and the largest weight of any point that could be missing (0: none).
+struct WeightedPoints {
+  const std::vector<Eigen::Vector3d>& position;
+  const std::vector<double>& weights;
+  double largest_missing_weight = 0.0;
+
+  double weight(std::uint32_t k) const { return weights.empty() ? 0.0 : weights[k]; }
+  // How far from `c` a point could cut the cell of point k that has a vertex at c: the
+  // radius of the sphere orthogonal to k's there, grown by the largest missing weight.
+  double reach(const Eigen::Vector3d& c, std::uint32_t k) const;
+};
+
 struct PowerVolumes {
   std::vector<double> volume;       // per point triangulated
   std::vector<std::uint8_t> flags;  // per point: CellFlag bits
@@ -22,12 +35,16 @@ struct PowerVolumes {
   std::vector<double> overshoot;
 };
 
-// `weights`: one per point (squared radii), or empty for an unweighted (Delaunay)
-// triangulation; `largest_weight` the largest weight of any point that could be missing
-// (0 for none). Cell is DualCell or a type derived from it.
+// Each point's flags and overshoot from its cells, whatever their order; volumes 0.
+// Cell is DualCell or a type derived from it.
 template <class Cell>
-PowerVolumes power_volumes(const std::vector<Eigen::Vector3d>& points,
-                           const std::vector<double>& weights, double largest_weight,
-                           const std::vector<Cell>& cells, const CellBounds& bounds);
+PowerVolumes cell_extents(const WeightedPoints& points, const std::vector<Cell>& cells,
+                          const CellBounds& bounds, int threads);
+
+// Adds each point's volume. Each of `threads` sums the cells of its own share of the
+// points, in the cells' order: the bits do not depend on the threads.
+template <class Cell>
+void sum_volumes(PowerVolumes& v, const WeightedPoints& points, const std::vector<Cell>& cells,
+                 int threads);
 
 }  // namespace granpipe::pores

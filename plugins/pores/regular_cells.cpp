@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <utility>
+#include <vector>
 
 #include "cgal_cells.hpp"
 
@@ -28,14 +29,11 @@ using Regular =
     CGAL::Regular_triangulation_3<Kernel, CGAL::Triangulation_data_structure_3<Vertex, Cell>>;
 using Points = std::vector<std::pair<WeightedPoint, std::uint32_t>>;
 
-Points numbered(const std::vector<Eigen::Vector3d>& x, const std::vector<double>& w,
-                std::size_t first_row) {
+Points numbered(const std::vector<Eigen::Vector3d>& x, const std::vector<double>& w) {
   Points points;
   points.reserve(x.size());
-  for (std::size_t k = 0; k < x.size(); ++k) {
-    points.emplace_back(WeightedPoint(cgal::Point(x[k][0], x[k][1], x[k][2]), w[k]),
-                        static_cast<std::uint32_t>(first_row + k));
-  }
+  for (std::size_t k = 0; k < x.size(); ++k)
+    points.emplace_back(WeightedPoint(cgal::point_of(x[k]), w[k]), static_cast<std::uint32_t>(k));
   return points;
 }
 
@@ -43,36 +41,29 @@ Points numbered(const std::vector<Eigen::Vector3d>& x, const std::vector<double>
 
 struct RegularTriangulation::Impl {
   Regular t;
-  std::size_t rows = 0;
+  std::vector<WeightedPoint> points;  // by row
 };
 
 RegularTriangulation::RegularTriangulation(const std::vector<Eigen::Vector3d>& points,
                                            const std::vector<double>& weights)
     : impl_(std::make_unique<Impl>()) {
-  insert(points, weights);
+  const Points numbered_points = numbered(points, weights);
+  impl_->t.insert(numbered_points.begin(), numbered_points.end());
+  impl_->points.reserve(points.size());
+  for (const auto& [p, row] : numbered_points) impl_->points.push_back(p);
 }
 
 RegularTriangulation::~RegularTriangulation() = default;
 
-std::vector<DualCell> RegularTriangulation::cells() {
-  const Regular& t = impl_->t;
-  cgal::number_cells(t);
-  std::vector<DualCell> cells(t.number_of_finite_cells());
-  auto cell = cells.begin();
-  for (auto c = t.finite_cells_begin(); c != t.finite_cells_end(); ++c, ++cell) {
-    cgal::fill_dual_cell(c, *cell);
-    cell->centre =
-        cgal::vector_of(CGAL::weighted_circumcenter(c->vertex(0)->point(), c->vertex(1)->point(),
-                                                    c->vertex(2)->point(), c->vertex(3)->point()));
-  }
-  return cells;
-}
-
-void RegularTriangulation::insert(const std::vector<Eigen::Vector3d>& points,
-                                  const std::vector<double>& weights) {
-  const Points numbered_points = numbered(points, weights, impl_->rows);
-  impl_->t.insert(numbered_points.begin(), numbered_points.end());
-  impl_->rows += points.size();
+std::vector<DualCell> RegularTriangulation::cells(int threads) {
+  const std::vector<WeightedPoint>& p = impl_->points;
+  return cgal::sorted_cells<DualCell>(impl_->t, p.size(), threads, [&](const CellTopology& c) {
+    DualCell cell;
+    static_cast<CellTopology&>(cell) = c;
+    const auto& v = c.vertices;
+    cell.centre = cgal::vector_of(CGAL::weighted_circumcenter(p[v[0]], p[v[1]], p[v[2]], p[v[3]]));
+    return cell;
+  });
 }
 
 }  // namespace granpipe::pores

@@ -19,10 +19,9 @@ class RegularTriangulation {
   RegularTriangulation(const RegularTriangulation&) = delete;
   RegularTriangulation& operator=(const RegularTriangulation&) = delete;
 
-  // The finite cells, centred on their power centres; neighbours index the same vector.
-  std::vector<DualCell> cells();
-  // Adds weighted points, numbered on from the rows already triangulated (mirror images).
-  void insert(const std::vector<Eigen::Vector3d>& points, const std::vector<double>& weights);
+  // The finite cells in the order of cell_order.hpp, centred on their power centres;
+  // neighbours index the same vector.
+  std::vector<DualCell> cells(int threads);
 
  private:
   struct Impl;

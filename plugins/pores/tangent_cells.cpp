@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <optional>
 
 #include "tangent_sphere.hpp"
@@ -30,11 +31,18 @@ bool overlaps_a_fifth(const DelaunayCell& cell, const TangentSphere& sphere,
 }  // namespace
 
 NonPoreCells tangent_cells(std::vector<DelaunayCell>& cells, const Centres& centres,
-                           const Frame& frame, double mean_radius, double length) {
+                           const Frame& frame, double mean_radius, double length, int threads) {
   const VertexNeighbours neighbours(cells, centres.points.size());
-  NonPoreCells left_out;
-  for (DelaunayCell& cell : cells) {
-    if (cell.height < length) continue;
+  // Each cell's circumcentre before it becomes its tangent sphere's, and why it is left out.
+  enum Kind : std::uint8_t { kPore, kUntangent, kFifthSphere };
+  std::vector<Kind> kind(cells.size(), kPore);
+  std::vector<Eigen::Vector3d> circumcentre(cells.size());
+  const auto n = static_cast<std::ptrdiff_t>(cells.size());
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
+    DelaunayCell& cell = cells[i];
+    circumcentre[i] = cell.centre;
+    if (cell.flat) continue;
     std::array<Eigen::Vector3d, 4> x;
     std::array<double, 4> r{};
     for (int k = 0; k < 4; ++k) {
@@ -43,17 +51,19 @@ NonPoreCells tangent_cells(std::vector<DelaunayCell>& cells, const Centres& cent
     }
     const std::optional<TangentSphere> sphere = tangent_sphere(x, r);
     if (!sphere) {
-      left_out.untangent.push_back(cell.centre);
-      cell.pore = false;
-      continue;
+      kind[i] = kUntangent;
+    } else if (overlaps_a_fifth(cell, *sphere, neighbours, centres, frame, length)) {
+      kind[i] = kFifthSphere;
+    } else {
+      cell.centre = sphere->centre;
+      cell.radius = sphere->radius + mean_radius;
     }
-    if (overlaps_a_fifth(cell, *sphere, neighbours, centres, frame, length)) {
-      left_out.fifth_sphere.push_back(cell.centre);
-      cell.pore = false;
-      continue;
-    }
-    cell.centre = sphere->centre;
-    cell.radius = sphere->radius + mean_radius;
+    cell.pore = kind[i] == kPore;
+  }
+  NonPoreCells left_out;
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    if (kind[i] == kUntangent) left_out.untangent.push_back(circumcentre[i]);
+    if (kind[i] == kFifthSphere) left_out.fifth_sphere.push_back(circumcentre[i]);
   }
   return left_out;
 }

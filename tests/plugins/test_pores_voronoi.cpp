@@ -1,7 +1,8 @@
 // Each sphere's Voronoi cell (Laguerre cell for unequal radii) from the pores analyzer's
-// triangulation: the crystals' cells of known volume, in periodic boxes and in walls (by
-// mirror images), volumes that fill a periodic box, a radical plane placed by hand
-// between spheres of two sizes, and the cells left undefined under an open top.
+// triangulation: the crystals' cells of known volume, in periodic boxes and in walls (the
+// cells there cut at the walls), volumes that fill a periodic box and a walled one, a
+// radical plane placed by hand between spheres of two sizes, and the cells left undefined
+// under an open top.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -50,13 +51,18 @@ TEST(PoresVoronoi, CrystalCellsInPeriodicBoxes) {
 }
 
 // Spheres of `radius` (or radii in [radius / 2, radius]) at random without overlap in a
-// periodic cube of side `side`.
-Frame random_spheres(int n, double side, double radius, bool unequal, unsigned seed) {
+// cube of side `side`, periodic or walled (the spheres inside).
+Frame random_spheres(int n, double side, double radius, bool unequal, unsigned seed,
+                     bool periodic = true) {
   std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> coordinate(0.0, side), r(radius / 2.0, radius);
+  std::uniform_real_distribution<double> coordinate(periodic ? 0.0 : radius,
+                                                    periodic ? side : side - radius);
+  std::uniform_real_distribution<double> r(radius / 2.0, radius);
   Frame f;
   f.resize(n, 3);
   f.container = Container::periodic_box(3, {0, 0, 0}, {side, side, side});
+  if (!periodic) f.container = Container{};  // walls on every side
+  f.container.hi.setConstant(side);
   for (Eigen::Index k = 0; k < f.size();) {
     const Eigen::Vector3d x(coordinate(rng), coordinate(rng), coordinate(rng));
     const double rk = unequal ? r(rng) : radius;
@@ -85,8 +91,21 @@ TEST(PoresVoronoi, RandomPeriodicCellsFillTheBox) {
   }
 }
 
-// A simple cubic crystal in walls one radius from its outermost spheres: with the mirror
-// images, every cell is the cube 8 R^3, at the faces, edges and corners too.
+// The cells of a packing in a box of walls tile the box: those at the walls cut there
+// (the triangulation leaves them unbounded or reaching through a wall).
+TEST(PoresVoronoi, RandomCellsInWallsFillTheBox) {
+  for (bool unequal : {false, true}) {
+    const double side = 16.0;
+    const PoreMeasurement m = measure(random_spheres(200, side, 1.0, unequal, 8, false));
+    EXPECT_EQ(m.undefined_volumes, 0);
+    EXPECT_EQ(m.hidden_spheres, 0);
+    EXPECT_NEAR(m.cell_volume.sum() / (side * side * side), 1.0, 1e-9) << unequal;
+    EXPECT_GT(m.cell_volume.minCoeff(), 0.0);
+  }
+}
+
+// A simple cubic crystal in walls one radius from its outermost spheres: cut at the
+// walls, every cell is the cube 8 R^3, at the faces, edges and corners too.
 TEST(PoresVoronoi, CubicCrystalInWallsHasCubicCellsAtTheWalls) {
   for (double radius : {1e-3, 1.0, 1e3}) {
     const PoreMeasurement m = measure(crystal_frame(granpipe::test::sc(), 5, radius));
