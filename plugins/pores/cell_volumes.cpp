@@ -61,9 +61,10 @@ CellVolumes volumes_of(PowerVolumes v, const WeightedPoints& points, const std::
 
 }  // namespace
 
-PowerVolumes voronoi_extents(const std::vector<DelaunayCell>& cells, const Centres& centres,
+PowerVolumes voronoi_extents(const std::vector<DelaunayCell>& cells,
+                             const std::vector<std::uint32_t>& hull, const Centres& centres,
                              const Frame& frame, double tolerance, int threads) {
-  return cell_extents(WeightedPoints{centres.points, kUnweighted, 0.0}, cells,
+  return cell_extents(WeightedPoints{centres.points, kUnweighted, 0.0}, cells, hull,
                       CellBounds(frame, tolerance), threads);
 }
 
@@ -91,8 +92,8 @@ CellVolumes laguerre_volumes(const Centres& centres, const Frame& frame, double 
   RegularTriangulation t(centres.points, weights);
   const std::vector<DualCell> cells = t.cells(threads);
   const CellBounds bounds(frame, tolerance);
-  return volumes_of(cell_extents(points, cells, bounds, threads), points, cells, centres, bounds,
-                    threads);
+  return volumes_of(cell_extents(points, cells, t.hull(), bounds, threads), points, cells, centres,
+                    bounds, threads);
 }
 
 }  // namespace granpipe::pores

@@ -23,15 +23,16 @@ struct CellVolumes {
 };
 
 // Equal spheres: the extents (flags, overshoot) of the Voronoi cells, from the Delaunay
-// cells in any order.
-PowerVolumes voronoi_extents(const std::vector<DelaunayCell>& cells, const Centres& centres,
+// cells in any order and the points on the hull.
+PowerVolumes voronoi_extents(const std::vector<DelaunayCell>& cells,
+                             const std::vector<std::uint32_t>& hull, const Centres& centres,
                              const Frame& frame, double tolerance, int threads);
 
 // The skin the particles' cells need, as far as the extents tell: the cells to be cut at
 // the walls are left out.
 double skin_for_cells(const PowerVolumes& extents, const Centres& centres);
 
-// Equal spheres: the Voronoi cells, from the Delaunay cells sorted and their extents.
+// Equal spheres: the Voronoi cells, from the Delaunay cells and their extents.
 CellVolumes voronoi_volumes(PowerVolumes extents, const std::vector<DelaunayCell>& cells,
                             const Centres& centres, const Frame& frame, double tolerance,
                             int threads);

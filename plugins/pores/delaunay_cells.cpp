@@ -99,9 +99,9 @@ Points numbered(const std::vector<Eigen::Vector3d>& x, std::size_t first_row) {
 
 // Each point located from the one before, in the order given: the rows follow a Morton
 // curve, so that the walks are short and the cells come to lie in memory about in the
-// order of their rows, which the sort of the cells profits from (CGAL's insertion of a
-// range sorts it again, along a Hilbert curve in randomised rounds, whose cells lie
-// scattered). A point at the position of another takes its vertex (refuse_duplicates).
+// order of their rows (CGAL's insertion of a range sorts it again, along a Hilbert curve
+// in randomised rounds, whose cells lie scattered). A point at the position of another
+// takes its vertex (refuse_duplicates).
 void insert_in_order(Delaunay& t, const Points& points) {
   Delaunay::Vertex_handle last;
   for (const auto& [p, row] : points) {
@@ -139,9 +139,11 @@ DelaunayTriangulation::~DelaunayTriangulation() = default;
 
 std::vector<DelaunayCell> DelaunayTriangulation::cells(double length, int threads) {
   const std::vector<Eigen::Vector3d>& x = impl_->points;
-  return cgal::sorted_cells<DelaunayCell>(
-      impl_->t, x.size(), threads, [&](const CellTopology& c) { return cell_of(c, x, length); });
+  return cgal::cells_of<DelaunayCell>(impl_->t, threads,
+                                      [&](const CellTopology& c) { return cell_of(c, x, length); });
 }
+
+std::vector<std::uint32_t> DelaunayTriangulation::hull() const { return cgal::hull_rows(impl_->t); }
 
 void DelaunayTriangulation::insert(const std::vector<Eigen::Vector3d>& points) {
   insert_in_order(impl_->t, numbered(points, impl_->points.size()));

@@ -3,6 +3,7 @@
 // kept while a frame is measured so that images can be added to it. Its finite cells as
 // the pores and the Voronoi cells read them: each cell's circumsphere and whether it is
 // flat.
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -32,9 +33,11 @@ class DelaunayTriangulation {
   DelaunayTriangulation(const DelaunayTriangulation&) = delete;
   DelaunayTriangulation& operator=(const DelaunayTriangulation&) = delete;
 
-  // The finite cells in the order of cell_order.hpp; a cell's neighbours are indices into
-  // the same vector. Flat: lower than `length`.
+  // The finite cells in the triangulation's order (cgal_cells.hpp); a cell's neighbours
+  // are indices into the same vector. Flat: lower than `length`.
   std::vector<DelaunayCell> cells(double length, int threads);
+  // The rows of the points on the hull, whose cells are unbounded.
+  std::vector<std::uint32_t> hull() const;
   // Adds points, numbered on from the rows already triangulated (images of a wider skin).
   void insert(const std::vector<Eigen::Vector3d>& points);
 

@@ -99,7 +99,7 @@ struct Measure {
     return !region || inside(*region, pore_centre);
   }
 
-  // The pores of the Delaunay cells (sorted; circumspheres for equal radii, tangent
+  // The pores of the Delaunay cells (circumspheres for equal radii, tangent
   // spheres for unequal ones) in the primary cell, and the particles' cells.
   TriangulatedPores pores_of(std::vector<DelaunayCell>& cells, PowerVolumes extents,
                              const Centres& centres) const {
@@ -150,8 +150,7 @@ struct Measure {
   // skin measures can be short, its cells near the skin being wrong). The images of a
   // wider skin are added to the triangulation made: the Delaunay triangulation of a set of
   // points is one, whatever the order they come in (CGAL breaks the ties of cospherical
-  // points by a symbolic perturbation that depends on the points alone), and the cells are
-  // sorted in an order of the points alone.
+  // points by a symbolic perturbation that depends on the points alone).
   TriangulatedPores triangulated_pores(const std::string& where) const {
     constexpr double kFirstSkin = 4.0;
     const double period = shortest_period(frame.container);
@@ -161,7 +160,7 @@ struct Measure {
     DelaunayTriangulation t(centres, frame, where);
     while (true) {
       std::vector<DelaunayCell> cells = t.cells(length(), threads);
-      PowerVolumes extents = voronoi_extents(cells, centres, frame, length(), threads);
+      PowerVolumes extents = voronoi_extents(cells, t.hull(), centres, frame, length(), threads);
       double needed = periodic ? rough_skin_needed(cells, extents, centres) : 0.0;
       if (needed <= skin) {
         TriangulatedPores found = pores_of(cells, std::move(extents), centres);

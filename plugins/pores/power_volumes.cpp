@@ -49,11 +49,6 @@ struct Share {
       out.flags[k] |= flags;
       out.overshoot[k] = std::max(out.overshoot[k], overshoot);
     }
-    for (int i = 0; i < 4; ++i) {
-      if (cell.neighbours[i] != kHull) continue;
-      for (std::uint32_t k : face(cell, i))
-        if (owns(k)) out.flags[k] |= kUnbounded;
-    }
   }
 
   // The wedge of the dual face of ab between c_n and c_t (c_n before c_t around a -> b),
@@ -106,13 +101,15 @@ double WeightedPoints::reach(const Eigen::Vector3d& c, std::uint32_t k) const {
 
 template <class Cell>
 PowerVolumes cell_extents(const WeightedPoints& points, const std::vector<Cell>& cells,
-                          const CellBounds& bounds, int threads) {
+                          const std::vector<std::uint32_t>& hull, const CellBounds& bounds,
+                          int threads) {
   const std::size_t n = points.position.size();
   PowerVolumes out{std::vector<double>(n, 0.0), std::vector<std::uint8_t>(n, 0),
                    std::vector<double>(n, 0.0)};
   by_shares(points, out, threads, [&](Share& share) {
     for (const Cell& cell : cells) share.add_extent(cell, bounds);
   });
+  for (std::uint32_t k : hull) out.flags[k] |= kUnbounded;
   return out;
 }
 
@@ -129,9 +126,11 @@ void sum_volumes(PowerVolumes& v, const WeightedPoints& points, const std::vecto
 }
 
 template PowerVolumes cell_extents<DualCell>(const WeightedPoints&, const std::vector<DualCell>&,
-                                             const CellBounds&, int);
+                                             const std::vector<std::uint32_t>&, const CellBounds&,
+                                             int);
 template PowerVolumes cell_extents<DelaunayCell>(const WeightedPoints&,
                                                  const std::vector<DelaunayCell>&,
+                                                 const std::vector<std::uint32_t>&,
                                                  const CellBounds&, int);
 template void sum_volumes<DualCell>(PowerVolumes&, const WeightedPoints&,
                                     const std::vector<DualCell>&, int);

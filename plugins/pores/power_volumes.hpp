@@ -35,11 +35,12 @@ struct PowerVolumes {
   std::vector<double> overshoot;
 };
 
-// Each point's flags and overshoot from its cells, whatever their order; volumes 0.
-// Cell is DualCell or a type derived from it.
+// Each point's flags and overshoot from its cells, whatever their order and numbering,
+// and the points on the hull (kUnbounded); volumes 0. Cell is DualCell or derived from it.
 template <class Cell>
 PowerVolumes cell_extents(const WeightedPoints& points, const std::vector<Cell>& cells,
-                          const CellBounds& bounds, int threads);
+                          const std::vector<std::uint32_t>& hull, const CellBounds& bounds,
+                          int threads);
 
 // Adds each point's volume. Each of `threads` sums the cells of its own share of the
 // points, in the cells' order: the bits do not depend on the threads.

@@ -57,7 +57,7 @@ RegularTriangulation::~RegularTriangulation() = default;
 
 std::vector<DualCell> RegularTriangulation::cells(int threads) {
   const std::vector<WeightedPoint>& p = impl_->points;
-  return cgal::sorted_cells<DualCell>(impl_->t, p.size(), threads, [&](const CellTopology& c) {
+  return cgal::cells_of<DualCell>(impl_->t, threads, [&](const CellTopology& c) {
     DualCell cell;
     static_cast<CellTopology&>(cell) = c;
     const auto& v = c.vertices;
@@ -65,5 +65,7 @@ std::vector<DualCell> RegularTriangulation::cells(int threads) {
     return cell;
   });
 }
+
+std::vector<std::uint32_t> RegularTriangulation::hull() const { return cgal::hull_rows(impl_->t); }
 
 }  // namespace granpipe::pores

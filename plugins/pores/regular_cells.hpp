@@ -3,6 +3,7 @@
 // (CGAL, exact predicates): the dual of the power (Laguerre) diagram, whose cells are the
 // particles' Laguerre cells. For spheres of unequal radii; equal ones have the Delaunay
 // triangulation as theirs.
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -19,9 +20,11 @@ class RegularTriangulation {
   RegularTriangulation(const RegularTriangulation&) = delete;
   RegularTriangulation& operator=(const RegularTriangulation&) = delete;
 
-  // The finite cells in the order of cell_order.hpp, centred on their power centres;
-  // neighbours index the same vector.
+  // The finite cells in the triangulation's order (cgal_cells.hpp), centred on their power
+  // centres; neighbours index the same vector.
   std::vector<DualCell> cells(int threads);
+  // The rows of the points on the hull, whose cells are unbounded.
+  std::vector<std::uint32_t> hull() const;
 
  private:
   struct Impl;
