@@ -28,6 +28,7 @@ void Progress::start(std::string label, double total, std::string unit) {
   unit_ = std::move(unit);
   total_ = total;
   done_ = 0.0;
+  skipped_ = 0.0;
   terminal_ = isatty(STDERR_FILENO) != 0;
   start_ = std::chrono::steady_clock::now();
   last_print_ns_ = start_.time_since_epoch().count();
@@ -50,6 +51,12 @@ void Progress::advance(double units) {
   print(false);
 }
 
+void Progress::skip(double units) {
+  double old = skipped_.load();
+  while (!skipped_.compare_exchange_weak(old, old + units)) {
+  }
+}
+
 void Progress::set_status(std::string status) {
   std::lock_guard lock(mutex_);
   status_ = std::move(status);
@@ -64,8 +71,9 @@ void Progress::finish() {
 void Progress::print(bool final_line) {
   const double elapsed =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  const double done = done_.load();
-  const double rate = elapsed > 0 ? done / elapsed : 0.0;
+  const double advanced = done_.load();
+  const double done = advanced + skipped_.load();
+  const double rate = elapsed > 0 ? advanced / elapsed : 0.0;
   const double fraction = total_ > 0 ? std::min(1.0, done / total_) : 0.0;
   const double eta = rate > 0 ? (total_ - done) / rate : NAN;
   const std::string status = status_.empty() ? "" : ", " + status_;

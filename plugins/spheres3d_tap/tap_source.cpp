@@ -195,6 +195,7 @@ void TapSource::start() {
     centres_ = std::move(saved.centres);
     if (continue_count_) {
       tap_ = saved.step;
+      progress_.skip(static_cast<double>(tap_));
       // A stream of its own for each start, so that a continuation does not replay the
       // random numbers its first part began with.
       tap_rng_ = FastRandomStream(seeds_.derive("tap", static_cast<std::uint64_t>(tap_)).seed());

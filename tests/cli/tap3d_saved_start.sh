@@ -22,8 +22,12 @@ first, second = (h5py.File(p, "r")["particles/all/position/value"] for p in sys.
 assert np.array_equal(first[-1], second[0]), "tap 0 of the continued run is not the saved packing"
 print("continued from the saved packing, bit for bit")
 PY
-"$exe" "$pipeline" "${small[@]}" --set source.params.initial_file="$work/first/frames.h5" \
-  --set source.params.continue_count=true --set source.params.taps=6 --out "$work/continued"
+"$exe" "$pipeline" --set source.params.initial_file="$work/first/frames.h5" \
+  --set source.params.continue_count=true --set source.params.taps=6 --out "$work/continued" \
+  2>"$work/continued.log"
+# The progress counts the saved taps as done, so that its ETA is that of what is left.
+grep -q "tap3d_saved_start: 6/6 taps (100.0%)" "$work/continued.log" ||
+  { echo "continued progress does not end at 6/6 taps:"; cat "$work/continued.log"; exit 1; }
 "$python" - "$work/first/frames.h5" "$work/continued/frames.h5" <<'PY'
 import sys, h5py, numpy as np
 first, later = (h5py.File(p, "r")["particles/all/position"] for p in sys.argv[1:])

@@ -41,3 +41,15 @@ TEST(Progress, TheSourcesStatusFollowsTheFigures) {
   EXPECT_NE(out.find("ETA done, t = 1.00, cycle 0.11, 2e+07 particle-steps/s\n"), std::string::npos)
       << out;
 }
+
+TEST(Progress, SkippedWorkCountsAsDoneButNotInTheRate) {
+  Progress p;
+  testing::internal::CaptureStderr();
+  p.start("continued", 4000, "taps");
+  p.skip(3550);
+  p.advance(450);
+  p.finish();
+  const std::string out = testing::internal::GetCapturedStderr();
+  EXPECT_NE(out.find("continued: 4000/4000 taps (100.0%)"), std::string::npos) << out;
+  EXPECT_EQ(p.done(), 450.0) << "done() counts this run's work only";
+}

@@ -14,6 +14,9 @@ class Progress {
   Progress() = default;
   void start(std::string label, double total, std::string unit);
   void advance(double units = 1.0);
+  // Work a run begins with already done (a run continued from a saved frame): shown as done
+  // but left out of the rate, so that the ETA is that of what is left.
+  void skip(double units);
   void finish();
   // A line the bar shows after its own figures (a source's simulated time, say); kept
   // until replaced.
@@ -26,6 +29,7 @@ class Progress {
   std::string label_, unit_, status_;
   double total_ = 0;
   std::atomic<double> done_{0.0};
+  std::atomic<double> skipped_{0.0};
   bool enabled_ = true;
   bool terminal_ = false;
   std::chrono::steady_clock::time_point start_;
