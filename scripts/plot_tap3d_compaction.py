@@ -4,9 +4,10 @@ Phi_b, <Phi^c> and <Z> against the number of taps, log and linear, with the Eq. 
 fits dotted; and a CSV of the fitted parameters, the steady states and the spectrum slopes.
 A run is a sweep over epsilon (tap3d_compaction.json: one line per point) or a single run
 (one line, named by its epsilon, or by its pipeline's name when it has none - a reprocessing
-of saved frames).
+of saved frames); RUN_DIR=LABEL names a single run's line LABEL (a reprocessing, e.g. of a run
+split over sessions: "reprocess_eps0.15=ε = 0.15").
 
-usage: plot_tap3d_compaction.py RUN_DIR [RUN_DIR...] OUT_PREFIX
+usage: plot_tap3d_compaction.py RUN_DIR[=LABEL] [RUN_DIR[=LABEL]...] OUT_PREFIX
 writes OUT_PREFIX_phi_b.svg, OUT_PREFIX_phi_c.svg, OUT_PREFIX_z.svg and OUT_PREFIX.csv"""
 import csv
 import math
@@ -34,12 +35,14 @@ SERIES = [  # (column of per_frame, fit table, law, axis label, file suffix)
 ]
 
 
-def curves(run):
+def curves(argument):
     """[(label, epsilon or nan, path of a table by name)] of a run: each sweep point, or the run."""
+    run, _, given_label = argument.partition("=")
     if not os.path.exists(os.path.join(run, "sweep.points.csv")):
         pipeline = read_pipeline(run)
         eps = pipeline.get("source", {}).get("params", {}).get("epsilon")
         label = f"ε = {eps:g}" if eps is not None else pipeline.get("name", run)
+        label = given_label or label
         return [(label, math.nan if eps is None else eps,
                  lambda name: os.path.join(run, f"compaction.{name}.csv"))]
     _, header, points = read_table(os.path.join(run, "sweep.points.csv"))
@@ -90,5 +93,5 @@ def main(runs, prefix):
 
 if __name__ == "__main__":
     if len(sys.argv) < 3:
-        refuse("usage: plot_tap3d_compaction.py RUN_DIR [RUN_DIR...] OUT_PREFIX")
+        refuse("usage: plot_tap3d_compaction.py RUN_DIR[=LABEL] [RUN_DIR[=LABEL]...] OUT_PREFIX")
     main(sys.argv[1:-1], sys.argv[-1])

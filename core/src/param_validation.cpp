@@ -122,6 +122,22 @@ bool as_integer(const nlohmann::json& v, std::int64_t& out) {
   return false;
 }
 
+// A path as the user gave it, resolved against the working directory, then `base_dir`.
+std::string existing_file(const nlohmann::json& v, const JsonLocation& at,
+                          const std::filesystem::path& base_dir) {
+  std::filesystem::path p = v.get<std::string>();
+  if (p.is_relative() && !std::filesystem::exists(p) && std::filesystem::exists(base_dir / p))
+    p = base_dir / p;
+  if (!std::filesystem::is_regular_file(p)) {
+    const char* found = std::filesystem::is_directory(p) ? "a directory"
+                        : std::filesystem::exists(p)     ? "not a regular file"
+                                                         : "no such file";
+    throw InputError(at.str() + ": expected an existing file, got " + json_brief(v) + " (" + found +
+                     ")");
+  }
+  return p.string();
+}
+
 // `earlier`: the values read before this one in its object (a pair table's species).
 ParamValue convert(const nlohmann::json& v, const ParamSpec& s, const JsonLocation& at,
                    const std::filesystem::path& base_dir,
@@ -159,19 +175,17 @@ ParamValue convert(const nlohmann::json& v, const ParamSpec& s, const JsonLocati
       throw InputError(at.str() + ": expected " + describe_expected(s) + ", got " + json_brief(v) +
                        did_you_mean(x, s.choices));
     }
-    case ParamType::Path: {
+    case ParamType::Path:
       if (!v.is_string() || v.get<std::string>().empty()) fail(at, s, v);
-      std::filesystem::path p = v.get<std::string>();
-      if (p.is_relative() && !std::filesystem::exists(p) && std::filesystem::exists(base_dir / p))
-        p = base_dir / p;
-      if (!std::filesystem::is_regular_file(p)) {
-        const char* found = std::filesystem::is_directory(p) ? "a directory"
-                            : std::filesystem::exists(p)     ? "not a regular file"
-                                                             : "no such file";
-        throw InputError(at.str() + ": expected an existing file, got " + json_brief(v) + " (" +
-                         found + ")");
+      return existing_file(v, at, base_dir);
+    case ParamType::PathList: {
+      if (!v.is_array()) fail(at, s, v);
+      std::vector<std::string> files;
+      for (std::size_t k = 0; k < v.size(); ++k) {
+        if (!v[k].is_string() || v[k].get<std::string>().empty()) fail(at.index(k), s, v[k]);
+        files.push_back(existing_file(v[k], at.index(k), base_dir));
       }
-      return p.string();
+      return files;
     }
     case ParamType::IntList:
     case ParamType::RealList: {

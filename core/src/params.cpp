@@ -25,6 +25,8 @@ const char* to_string(ParamType t) {
       return "choice";
     case ParamType::Path:
       return "path";
+    case ParamType::PathList:
+      return "list of paths";
     case ParamType::IntList:
       return "list of integers";
     case ParamType::RealList:
@@ -97,6 +99,13 @@ Schema::Entry Schema::path(const std::string& name, std::optional<std::string> d
   return add(std::move(s));
 }
 
+Schema::Entry Schema::paths(const std::string& name, std::optional<std::vector<std::string>> def,
+                            const std::string& doc) {
+  ParamSpec s = new_spec(name, ParamType::PathList, doc);
+  if (def) s.default_value = *def;
+  return add(std::move(s));
+}
+
 Schema::Entry Schema::integers(const std::string& name,
                                std::optional<std::vector<std::int64_t>> def,
                                const std::string& doc) {
@@ -117,7 +126,7 @@ namespace {
 // level of a schema.
 void refuse_nested_paths(const Schema& fields, const std::string& name) {
   for (const auto& f : fields.specs()) {
-    if (f.type == ParamType::Path) {
+    if (f.type == ParamType::Path || f.type == ParamType::PathList) {
       throw InternalError("schema: '" + name + "' holds the path parameter '" + f.name +
                           "'; paths are top-level parameters only");
     }
@@ -203,6 +212,9 @@ const std::vector<std::int64_t>& Params::integers(const std::string& n) const {
 const std::vector<double>& Params::reals(const std::string& n) const {
   return typed<std::vector<double>>(get(n), n, "list of numbers");
 }
+const std::vector<std::string>& Params::paths(const std::string& n) const {
+  return typed<std::vector<std::string>>(get(n), n, "list of paths");
+}
 const Params& Params::object(const std::string& n) const {
   return *typed<std::shared_ptr<const Params>>(get(n), n, "object");
 }
@@ -242,6 +254,8 @@ std::string format_value(const ParamValue& v) {
         else if constexpr (std::is_same_v<T, std::vector<std::int64_t>> ||
                            std::is_same_v<T, std::vector<double>>)
           return list(x);
+        else if constexpr (std::is_same_v<T, std::vector<std::string>>)
+          return nlohmann::json(x).dump();
         else
           return to_json(x).dump();
       },
@@ -263,6 +277,8 @@ std::string describe_expected(const ParamSpec& spec) {
       return "a string";
     case ParamType::Path:
       return "a path to an existing file";
+    case ParamType::PathList:
+      return "a list of paths to existing files";
     case ParamType::Choice: {
       what = "one of ";
       for (std::size_t k = 0; k < spec.choices.size(); ++k)

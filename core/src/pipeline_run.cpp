@@ -278,9 +278,15 @@ std::vector<InputFile> input_files(const Pipeline::Impl& p) {
   std::vector<InputFile> files;
   if (!p.file.empty()) files.push_back({p.origin, p.file});
   auto add = [&](const Schema& schema, const Params& params, const std::string& at) {
-    for (const ParamSpec& s : schema.specs())
-      if (s.type == ParamType::Path && params.has(s.name))
-        files.push_back({p.origin + ": " + at + "." + s.name, params.string(s.name)});
+    for (const ParamSpec& s : schema.specs()) {
+      if (!params.has(s.name)) continue;
+      const std::string where = p.origin + ": " + at + "." + s.name;
+      if (s.type == ParamType::Path) files.push_back({where, params.string(s.name)});
+      if (s.type != ParamType::PathList) continue;
+      const std::vector<std::string>& list = params.paths(s.name);
+      for (std::size_t k = 0; k < list.size(); ++k)
+        files.push_back({where + "[" + std::to_string(k) + "]", list[k]});
+    }
   };
   for (const PointSpec& point : p.points) {
     add(p.source->schema, point.source_params, "source.params");

@@ -10,6 +10,9 @@ namespace granpipe::h5md {
 Schema schema() {
   Schema s;
   s.path("file", std::nullopt, "the H5MD file to read (a granpipe frames.h5 or another tool's)");
+  s.paths("continued_in", std::vector<std::string>{},
+          "the later parts of a run split over sessions, in order, each started from a saved "
+          "frame of the part before it (spheres3d_tap's continue_count): read on as one run");
   declare_frame_selection(s);
   s.string("group", std::string(""),
            "particles group of the file (/particles/<group>); empty: \"all\" or the only one");
@@ -23,22 +26,56 @@ Schema schema() {
   return s;
 }
 
-H5mdSource::H5mdSource(const PluginContext& ctx)
-    : reader_(ctx.params.string("file"), ctx.params.string("group"), ctx.params.real("radius")),
-      max_overlap_(ctx.params.real("max_overlap")),
-      max_overlap_param_(ctx.param("max_overlap")) {
-  const FrameFileInfo& info = reader_.info();
-  const long frames = info.frames;
-  const std::string held = " (" + info.path + " holds " + std::to_string(frames) + " frames)";
-  if (frames == 0)
-    throw InputError(ctx.param("file") + ": expected a file with frames, got none" + held);
-  selection_ = select_frames(ctx, frames, held);
-  if (!info.complete) {
+namespace {
+
+// " and 2 continuations" after the first file's name, or nothing.
+std::string held_by_parts(const RunParts& parts) {
+  const auto later = parts.parts().size() - 1;
+  if (later == 0) return "";
+  return " and " + std::to_string(later) + (later == 1 ? " continuation" : " continuations");
+}
+
+std::vector<std::string> part_files(const PluginContext& ctx) {
+  std::vector<std::string> files{ctx.params.string("file")};
+  for (const std::string& f : ctx.params.paths("continued_in")) files.push_back(f);
+  return files;
+}
+
+std::vector<std::string> part_names(const PluginContext& ctx) {
+  std::vector<std::string> names{ctx.param("file")};
+  const auto later = ctx.params.paths("continued_in").size();
+  for (std::size_t k = 0; k < later; ++k)
+    names.push_back(ctx.param("continued_in") + "[" + std::to_string(k) + "]");
+  return names;
+}
+
+void warn_unfinished(const PluginContext& ctx, const RunParts& parts) {
+  for (const auto& part : parts.parts()) {
+    const FrameFileInfo& info = part->info();
+    if (info.complete) continue;
     ctx.log.warn(info.path +
                  ": the writer never finished this file (stopped or crashed); "
                  "reading the " +
-                 std::to_string(frames) + " frames it completed");
+                 std::to_string(info.frames) + " frames it completed");
   }
+}
+
+}  // namespace
+
+H5mdSource::H5mdSource(const PluginContext& ctx)
+    : parts_(part_files(ctx), part_names(ctx), ctx.params.string("group"),
+             ctx.params.real("radius")),
+      max_overlap_(ctx.params.real("max_overlap")),
+      max_overlap_param_(ctx.param("max_overlap")) {
+  const FrameFileInfo& info = parts_.first_info();
+  const long frames = parts_.frames();
+  const std::string held = " (" + info.path + held_by_parts(parts_) +
+                           (parts_.parts().size() > 1 ? " hold " : " holds ") +
+                           std::to_string(frames) + " frames)";
+  if (frames == 0)
+    throw InputError(ctx.param("file") + ": expected a file with frames, got none" + held);
+  selection_ = select_frames(ctx, frames, held);
+  warn_unfinished(ctx, parts_);
   next_ = selection_.first;
   // The first frame is read and checked now, so that bad particles stop the pipeline at
   // validation, before anything runs.
@@ -46,8 +83,8 @@ H5mdSource::H5mdSource(const PluginContext& ctx)
 }
 
 Frame H5mdSource::read_checked(long index) const {
-  Frame frame = reader_.read(index);
-  const std::string where = reader_.info().path + ": frame " + std::to_string(index);
+  Frame frame = parts_.read(index);
+  const std::string where = parts_.where(index);
   frame.check(where);
   // Every measure of an empty frame is 0/0.
   if (frame.size() == 0) throw InputError(where + ": expected particles, got none");
@@ -56,7 +93,7 @@ Frame H5mdSource::read_checked(long index) const {
 }
 
 FrameContent H5mdSource::content() const {
-  const FrameFileInfo& info = reader_.info();
+  const FrameFileInfo& info = parts_.first_info();
   FrameContent content{.dim = info.dim, .contacts = info.has_contacts, .columns = info.columns};
   content.columns.insert(content.columns.end(), info.observables.begin(), info.observables.end());
   content.columns.insert(content.columns.end(), info.contact_columns.begin(),
@@ -102,9 +139,9 @@ void H5mdSource::check_overlaps(const Frame& frame, const std::string& where) co
 
 void H5mdSource::finish(Results& results) {
   results.add_scalar("frames_read", static_cast<double>(read_), std::nan(""), "",
-                     "frames read from " + reader_.info().path);
-  results.add_scalar("particles", static_cast<double>(reader_.info().particles), std::nan(""), "",
-                     "particles per frame");
+                     "frames read from " + parts_.first_info().path + held_by_parts(parts_));
+  results.add_scalar("particles", static_cast<double>(parts_.first_info().particles), std::nan(""),
+                     "", "particles per frame");
 }
 
 }  // namespace granpipe::h5md

@@ -1,12 +1,14 @@
 #pragma once
 // `h5md`: saved frames as a source, so that any analyzer can reprocess them without
 // simulating again. Reads granpipe's own frames.h5 bit for bit, and other tools' H5MD
-// files (positions and the box; radii from the `radius` parameter).
+// files (positions and the box; radii from the `radius` parameter). A run split over
+// sessions is read from its parts as one.
 #include <optional>
 
 #include "granpipe/frame_selection.hpp"
 #include "granpipe/frame_store.hpp"
 #include "granpipe/plugin.hpp"
+#include "run_parts.hpp"
 
 namespace granpipe::h5md {
 
@@ -26,7 +28,7 @@ class H5mdSource : public Source {
   // with the pair and the size of the overlap, unless max_overlap allows it.
   void check_overlaps(const Frame& frame, const std::string& where) const;
   Frame read_checked(long index) const;
-  FrameReader reader_;
+  RunParts parts_;
   FrameSelection selection_;
   long next_ = 0, read_ = 0;
   double max_overlap_;

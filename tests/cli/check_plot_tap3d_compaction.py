@@ -2,6 +2,7 @@
 line per epsilon (gid series-<k>), the fit table with every epsilon's parameters; the laws it
 draws equal their values at t = 0 (Eq. 3: X_inf - dX_inf; Eq. 4: <Z>_0); a folder that is no
 run is refused in one line."""
+import json
 import os
 import subprocess
 import sys
@@ -39,6 +40,27 @@ with tempfile.TemporaryDirectory() as work:
             fitted = {(r[1], r[2]) for r in rows if r[0] == f"ε = {eps}"}
             if ("eq3_phi_b", "tau") not in fitted or ("eq4_z_mean", "B") not in fitted:
                 failures.append(f"epsilon {eps}: {sorted(fitted)[:4]}")
+    # A reprocessing of saved frames has no epsilon of its own: named on the command line.
+    saved = os.path.join(work, "saved")
+    subprocess.run([exe, pipeline, "--set", "source.params.N=64", "--set", "source.params.side=6",
+                    "--set", "source.params.taps=3", "--set",
+                    'sweep.parameters={"source.params.epsilon": [0.05]}', "--set",
+                    "output.save_frames=true", "--quiet", "--out", saved], check=True)
+    reprocess = os.path.join(work, "reprocess.json")
+    with open(reprocess, "w") as f:
+        json.dump({"name": "reprocess", "seed": 1,
+                   "source": {"plugin": "h5md",
+                              "params": {"file": os.path.join(saved, "frames.h5")}},
+                   "analyzers": [{"plugin": "stereology", "name": "stereology"},
+                                 {"plugin": "compaction", "name": "compaction"}]}, f)
+    single = os.path.join(work, "single")
+    subprocess.run([exe, reprocess, "--quiet", "--out", single], check=True)
+    r = subprocess.run([sys.executable, script, run, f"{single}=joined parts", prefix],
+                       capture_output=True, text=True)
+    with open(f"{prefix}.csv") as f:
+        names = {line.split(",")[0] for line in f.read().splitlines()[1:]}
+    if r.returncode != 0 or "joined parts" not in names or "ε = 0.15" not in names:
+        failures.append(f"labelled run: {r.returncode} {r.stderr} {sorted(names)}")
     empty = os.path.join(work, "empty")
     os.makedirs(empty)
     r = subprocess.run([sys.executable, script, empty, prefix], capture_output=True, text=True)

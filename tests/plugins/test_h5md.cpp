@@ -220,3 +220,115 @@ TEST_F(H5mdSourceTest, NanPositionsAreRefusedWithFileAndFrame) {
       p.string() +
           ": frame 0: particle 1 (id 1): expected a finite position, got nan in coordinate x");
 }
+
+namespace {
+
+// A run split over sessions: each later part starts with the saved frame it continued from.
+class RunPartsTest : public H5mdSourceTest {
+ protected:
+  // Frames k = first .. last (step 10 k, positions k + i, as write() makes them), velocity
+  // `part` in every entry, so that a frame says which part it was read from.
+  fs::path write_part(const std::string& name, long first, long last, double part,
+                      Eigen::Index particles = 3) {
+    const fs::path p = dir_ / name;
+    FrameWriter w(p, "{}");
+    for (long k = first; k <= last; ++k) {
+      Frame f;
+      f.resize(particles, 2);
+      for (Eigen::Index i = 0; i < particles; ++i) f.position()(i, 0) = static_cast<double>(k + i);
+      f.radius().setConstant(0.5);
+      f.add("velocity");
+      f.table<double>("velocity").setConstant(part);
+      f.step = 10 * k;
+      w.append(f);
+    }
+    w.close();
+    return p;
+  }
+
+  std::unique_ptr<h5md::H5mdSource> joined(const fs::path& first,
+                                           const std::vector<fs::path>& later) {
+    std::vector<std::string> files;
+    for (const auto& p : later) files.push_back(p.string());
+    harness_ =
+        granpipe::test::make_context("h5md", {{"file", first.string()}, {"continued_in", files}});
+    return std::make_unique<h5md::H5mdSource>(*harness_);
+  }
+
+  // The part each frame came from.
+  static std::vector<double> parts_of(Source& s) {
+    std::vector<double> parts;
+    Frame f;
+    while (s.next(f)) parts.push_back(f.table<double>("velocity")(0, 0));
+    return parts;
+  }
+};
+
+TEST_F(RunPartsTest, PartsReadAsOneRunEachFrameOnce) {
+  const fs::path a = write_part("a.h5", 0, 2, 1), b = write_part("b.h5", 2, 4, 2),
+                 c = write_part("c.h5", 4, 5, 3);
+  EXPECT_EQ(steps_of(*joined(a, {b, c})), (Steps{0, 10, 20, 30, 40, 50}));
+  // The saved frame at a join is read from the part that made it (its tap's observables).
+  EXPECT_EQ(parts_of(*joined(a, {b, c})), (std::vector<double>{1, 1, 1, 2, 2, 3}));
+  EXPECT_EQ(joined(a, {b, c})->work().total, 6.0);
+}
+
+TEST_F(RunPartsTest, AStartFromAnEarlierFrameDropsTheFramesAfterIt) {
+  const fs::path a = write_part("a.h5", 0, 4, 1), b = write_part("b.h5", 2, 3, 2);
+  EXPECT_EQ(steps_of(*joined(a, {b})), (Steps{0, 10, 20, 30}));
+  EXPECT_EQ(parts_of(*joined(a, {b})), (std::vector<double>{1, 1, 1, 2}));
+}
+
+TEST_F(RunPartsTest, FrameSelectionAppliesToTheJoinedRun) {
+  const fs::path a = write_part("a.h5", 0, 2, 1), b = write_part("b.h5", 2, 6, 2);
+  harness_ = granpipe::test::make_context(
+      "h5md", {{"file", a.string()}, {"continued_in", {b.string()}}, {"first", 1}, {"stride", 2}});
+  h5md::H5mdSource s(*harness_);
+  EXPECT_EQ(steps_of(s), (Steps{10, 30, 50}));
+}
+
+TEST_F(RunPartsTest, APartThatContinuesNoneIsRefused) {
+  const fs::path a = write_part("a.h5", 0, 2, 1);
+  const fs::path later = write_part("later.h5", 3, 4, 2);  // starts at step 30, a ends at 20
+  EXPECT_EQ(error_of([&] { return joined(a, {later}); }),
+            "params.continued_in[0]: " + later.string() +
+                " starts at step 30, expected a frame that the parts before it hold (not a "
+                "continuation of them)");
+}
+
+TEST_F(RunPartsTest, AnotherPackingAtTheJoinIsRefused) {
+  const fs::path a = write_part("a.h5", 0, 2, 1);
+  const fs::path moved = dir_ / "moved.h5";
+  {
+    FrameWriter w(moved, "{}");
+    Frame f;
+    f.resize(3, 2);
+    f.position()(1, 0) = 7.0;
+    f.radius().setConstant(0.5);
+    f.add("velocity");
+    f.step = 20;
+    w.append(f);
+    w.close();
+  }
+  EXPECT_EQ(error_of([&] { return joined(a, {moved}); }),
+            "params.continued_in[0]: " + moved.string() +
+                " starts at step 20, expected a frame that the parts before it hold, got another "
+                "packing at " +
+                a.string() + ": frame 2 (not a continuation of it)");
+}
+
+TEST_F(RunPartsTest, OtherParticlesAreRefused) {
+  const fs::path a = write_part("a.h5", 0, 2, 1), b = write_part("b.h5", 2, 3, 2, 4);
+  EXPECT_EQ(error_of([&] { return joined(a, {b}); }),
+            "params.continued_in[0]: " + b.string() + ": expected frames of 3 particles in 2D as " +
+                a.string() + " holds, got 4 in 2D");
+}
+
+TEST_F(RunPartsTest, AMissingPartIsRefusedAtValidation) {
+  const fs::path a = write_part("a.h5", 0, 2, 1);
+  EXPECT_EQ(error_of([&] { return joined(a, {"nowhere_part.h5"}); }),
+            "test: params.continued_in[0]: expected an existing file, got \"nowhere_part.h5\" (no "
+            "such file)");
+}
+
+}  // namespace

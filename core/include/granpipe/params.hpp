@@ -22,6 +22,7 @@ enum class ParamType : std::uint8_t {
   String,
   Choice,
   Path,
+  PathList,  // a list of paths to existing files
   IntList,
   RealList,
   Object,   // an object with its own schema
@@ -37,7 +38,7 @@ class PairTable;
 
 using ParamValue =
     std::variant<bool, std::int64_t, double, std::string, std::vector<std::int64_t>,
-                 std::vector<double>, std::shared_ptr<const Params>,
+                 std::vector<double>, std::vector<std::string>, std::shared_ptr<const Params>,
                  std::shared_ptr<const SpeciesTable>, std::shared_ptr<const PairTable>>;
 
 struct ParamSpec {
@@ -120,6 +121,9 @@ class Schema {
   }
   // A file that must exist when the pipeline is validated.
   Entry path(const std::string& name, std::optional<std::string> def, const std::string& doc);
+  // Files that must exist, in a list (which may be empty).
+  Entry paths(const std::string& name, std::optional<std::vector<std::string>> def,
+              const std::string& doc);
   Entry integers(const std::string& name, std::optional<std::vector<std::int64_t>> def,
                  const std::string& doc);
   Entry reals(const std::string& name, std::optional<std::vector<double>> def,
@@ -161,6 +165,7 @@ class Params {
   const std::string& string(const std::string& name) const;  // String, Choice and Path
   const std::vector<std::int64_t>& integers(const std::string& name) const;
   const std::vector<double>& reals(const std::string& name) const;
+  const std::vector<std::string>& paths(const std::string& name) const;
   template <class E>
   E choice(const std::string& name) const {
     const std::string& value = string(name);

@@ -1,0 +1,79 @@
+#include "run_parts.hpp"
+
+#include "granpipe/errors.hpp"
+
+namespace granpipe::h5md {
+namespace {
+
+std::vector<std::string> names_of(const std::vector<Property>& properties) {
+  std::vector<std::string> names;
+  for (const Property& p : properties) names.push_back(p.name);
+  return names;
+}
+
+// What a later part must share with the first for its frames to continue the same run.
+void require_same_content(const FrameFileInfo& first, const FrameFileInfo& later,
+                          const std::string& name) {
+  if (later.particles != first.particles || later.dim != first.dim) {
+    throw InputError(name + ": " + later.path + ": expected frames of " +
+                     std::to_string(first.particles) + " particles in " +
+                     std::to_string(first.dim) + "D as " + first.path + " holds, got " +
+                     std::to_string(later.particles) + " in " + std::to_string(later.dim) + "D");
+  }
+  if (names_of(later.columns) != names_of(first.columns) ||
+      names_of(later.observables) != names_of(first.observables) ||
+      later.has_contacts != first.has_contacts) {
+    throw InputError(name + ": " + later.path + ": expected the columns of " + first.path +
+                     " (the same run continued), got others");
+  }
+}
+
+}  // namespace
+
+RunParts::RunParts(const std::vector<std::string>& files, const std::vector<std::string>& names,
+                   const std::string& group, double default_radius) {
+  for (std::size_t k = 0; k < files.size(); ++k) {
+    parts_.push_back(std::make_unique<FrameReader>(files[k], group, default_radius));
+    if (k) require_same_content(first_info(), parts_[k]->info(), names[k]);
+    append(k, names[k]);
+  }
+}
+
+// The invariant kept: order_ lists every frame read so far once, steps rising. A later
+// part's first frame is the saved frame it started from: the earlier part's frames after
+// that one are dropped (a start from an earlier frame), and the earlier part's copy of it
+// is kept, since it carries that tap's own observables.
+void RunParts::append(std::size_t part, const std::string& name) {
+  const FrameReader& reader = *parts_[part];
+  if (part == 0) {
+    for (long i = 0; i < reader.frames(); ++i) order_.push_back({0, i});
+    return;
+  }
+  if (reader.frames() == 0) return;
+  const Frame start = reader.read(0);
+  while (!order_.empty() && read(frames() - 1).step > start.step) order_.pop_back();
+  const std::string not_continued = name + ": " + reader.info().path + " starts at step " +
+                                    std::to_string(start.step) + ", expected a frame that ";
+  if (order_.empty() || read(frames() - 1).step != start.step) {
+    throw InputError(not_continued + "the parts before it hold (not a continuation of them)");
+  }
+  const Frame saved = read(frames() - 1);
+  if ((saved.position().array() != start.position().array()).any() ||
+      (saved.radius() != start.radius()).any()) {
+    throw InputError(not_continued + "the parts before it hold, got another packing at " +
+                     where(frames() - 1) + " (not a continuation of it)");
+  }
+  for (long i = 1; i < reader.frames(); ++i) order_.push_back({part, i});
+}
+
+Frame RunParts::read(long index) const {
+  const FrameAddress& a = order_.at(static_cast<std::size_t>(index));
+  return parts_[a.part]->read(a.index);
+}
+
+std::string RunParts::where(long index) const {
+  const FrameAddress& a = order_.at(static_cast<std::size_t>(index));
+  return parts_[a.part]->info().path + ": frame " + std::to_string(a.index);
+}
+
+}  // namespace granpipe::h5md
