@@ -3,6 +3,7 @@ install(TARGETS granpipe_core EXPORT granpipeTargets
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(TARGETS granpipe RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(PROGRAMS scripts/report.py DESTINATION ${CMAKE_INSTALL_DATADIR}/granpipe)
 install(DIRECTORY core/include/granpipe DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
         FILES_MATCHING PATTERN "*.hpp")
 install(FILES ${PROJECT_BINARY_DIR}/core/include/granpipe/version.hpp

@@ -59,7 +59,7 @@ std::string check_out(const std::string& text) {
 }
 
 bool is_subcommand(const char* arg) {
-  for (const char* s : {"run", "plugins", "describe", "validate", "inspect"})
+  for (const char* s : {"run", "plugins", "describe", "validate", "inspect", "report"})
     if (std::strcmp(arg, s) == 0) return true;
   return false;
 }
@@ -93,6 +93,8 @@ int main(int argc, char** argv) {
       ->check(CLI::Validator(check_threads, ""));
   run->add_flag("--overwrite", overwrite, "replace an existing granpipe output directory");
   run->add_flag("--quiet", quiet, "no progress or log on stderr");
+  bool no_report = false;
+  run->add_flag("--no-report", no_report, "do not write report.html at the end of the run");
 
   auto* validate = app.add_subcommand("validate", "check a pipeline without running it");
   validate->add_option("pipeline", pipeline_file, "pipeline JSON file")->required();
@@ -110,6 +112,10 @@ int main(int argc, char** argv) {
   inspect->add_option("--rows", rows, "frames to list (default 20)")
       ->check(CLI::Validator(check_rows, ""));
 
+  auto* report = app.add_subcommand("report", "write report.html of a run (finished or not)");
+  std::string run_dir;
+  report->add_option("run_dir", run_dir, "the run's output directory")->required();
+
   try {
     app.parse(static_cast<int>(args.size()), args.data());
   } catch (const CLI::ParseError& e) {
@@ -122,6 +128,12 @@ int main(int argc, char** argv) {
     if (*inspect) {
       app::inspect(h5_file, rows);
       return kOk;
+    }
+    if (*report) {
+      const app::ReportOutcome made = app::write_report(run_dir);
+      if (made.written) return kOk;
+      std::cerr << "granpipe: " << made.why_not << "\n";
+      return kBadInput;
     }
     Registry registry;
     load_plugins(registry, plugin_search_path());
@@ -145,7 +157,11 @@ int main(int argc, char** argv) {
       options.overwrite = overwrite;
       options.progress = !quiet;
       log.set_quiet(quiet);
-      p.run(options, log);
+      const RunSummary summary = p.run(options, log);
+      if (!no_report) {
+        const app::ReportOutcome made = app::write_report(summary.output_dir);
+        if (!made.written) log.warn(made.why_not);
+      }
     }
     return kOk;
   } catch (const InputError& e) {

@@ -1,0 +1,52 @@
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "commands.hpp"
+
+extern char** environ;
+
+namespace granpipe::app {
+namespace fs = std::filesystem;
+
+namespace {
+
+// The report is drawn by matplotlib (the project's figures come from a plotting library,
+// never from code of our own), so it is a Python script, installed beside the plugins'
+// tree: <prefix>/share/granpipe/report.py, which the build tree mirrors.
+fs::path report_script() {
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (ec) return {};
+  return exe.parent_path().parent_path() / "share" / "granpipe" / "report.py";
+}
+
+}  // namespace
+
+ReportOutcome write_report(const fs::path& run_dir) {
+  const fs::path script = report_script();
+  if (script.empty() || !fs::is_regular_file(script))
+    return {false, "report.html not written: " + script.string() + " is missing"};
+  // The configured interpreter, else whichever python3 the PATH finds.
+  std::string python = fs::exists(GRANPIPE_REPORT_PYTHON) ? GRANPIPE_REPORT_PYTHON : "python3";
+  std::string script_arg = script.string(), dir_arg = run_dir.string();
+  std::vector<char*> argv{python.data(), script_arg.data(), dir_arg.data(), nullptr};
+  pid_t pid = 0;
+  if (posix_spawnp(&pid, python.c_str(), nullptr, nullptr, argv.data(), environ) != 0)
+    return {false, "report.html not written: " + python + " was not found"};
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0) {
+    if (errno != EINTR) return {false, "report.html not written: lost the report's process"};
+  }
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return {true, ""};
+  return {false, "report.html not written: " + script.string() + " failed (exit " +
+                     std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) +
+                     "; its message is above)"};
+}
+
+}  // namespace granpipe::app

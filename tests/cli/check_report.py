@@ -1,0 +1,109 @@
+"""report.html at the end of a run: the provenance, each declared plot drawn (an SVG with
+the declared axis labels, points in it), the scalars and fits; a sweep's plots with one line
+per point; `granpipe report` on demand; --no-report; without matplotlib the tables still
+shown and the page says why; a folder that is no run refused in one line with exit 2."""
+import json
+import os
+import subprocess
+import sys
+import tempfile
+from html.parser import HTMLParser
+
+exe, pipeline, python = sys.argv[1], sys.argv[2], sys.argv[3]
+toy = ["--set", "source.params.N=64", "--set", "source.params.side=6", "--set",
+       "source.params.taps=3", "--quiet"]
+failures = []
+
+
+class Page(HTMLParser):
+    """The page's figures (id -> the text inside its SVG and the number of line paths),
+    table cells, and notes."""
+
+    def __init__(self, path):
+        super().__init__()
+        self.figures, self.cells, self.notes = {}, [], []
+        self._figure, self._where = None, None
+        with open(path) as f:
+            self.feed(f.read())
+
+    def handle_starttag(self, tag, attrs):
+        attrs = dict(attrs)
+        if tag == "figure":
+            self._figure = attrs["id"]
+            self.figures[self._figure] = {"text": [], "paths": 0}
+        elif tag == "path" and self._figure:
+            self.figures[self._figure]["paths"] += 1
+        elif tag == "td":
+            self._where = "cell"
+        elif tag == "p" and attrs.get("class") == "note":
+            self._where = "note"
+
+    def handle_endtag(self, tag):
+        if tag == "figure":
+            self._figure = None
+        if tag in ("td", "p"):
+            self._where = None
+
+    def handle_data(self, data):
+        if self._figure:
+            self.figures[self._figure]["text"].append(data)
+        elif self._where == "cell":
+            self.cells.append(data)
+        elif self._where == "note":
+            self.notes.append(data)
+
+
+def check(condition, message):
+    if not condition:
+        failures.append(message)
+
+
+with tempfile.TemporaryDirectory() as work:
+    single = os.path.join(work, "single")
+    subprocess.run([exe, pipeline, *toy, "--set", 'sweep.parameters={"source.params.epsilon": '
+                    '[0.05]}', "--out", single], check=True)
+    page = Page(os.path.join(single, "report.html"))
+    with open(os.path.join(single, "pipeline.json")) as f:
+        seed = json.load(f)["seed"]
+    check(str(seed) in page.cells and "git_commit" in page.cells, f"provenance: {page.cells[:14]}")
+    for plot, label in (("plot-per_frame", "tap"),):
+        figure = page.figures.get(plot)
+        check(figure is not None, f"{plot} missing: {sorted(page.figures)}")
+        if figure:
+            check(any(label in t for t in figure["text"]), f"{plot}: no axis {label}")
+            check(figure["paths"] > 4, f"{plot}: {figure['paths']} paths: nothing drawn")
+    check("X_inf" in page.cells, "the Eq. (3) fit's parameters are not shown")
+
+    sweep = os.path.join(work, "sweep")
+    subprocess.run([exe, pipeline, *toy, "--no-report", "--out", sweep], check=True)
+    check(not os.path.exists(os.path.join(sweep, "report.html")), "--no-report wrote a report")
+    r = subprocess.run([exe, "report", sweep], capture_output=True, text=True)
+    check(r.returncode == 0, f"granpipe report: {r.returncode} {r.stderr}")
+    page = Page(os.path.join(sweep, "report.html"))
+    legend = " ".join(page.figures.get("plot-per_frame", {"text": []})["text"])
+    for eps in ("0.005", "0.05", "0.15"):
+        check(f"epsilon = {eps}" in legend, f"sweep: no line of epsilon {eps} in {legend[:200]}")
+
+    # No matplotlib: a module of that name that fails to import stands for its absence.
+    hidden = os.path.join(work, "hidden")
+    os.makedirs(os.path.join(hidden, "matplotlib"))
+    with open(os.path.join(hidden, "matplotlib", "__init__.py"), "w") as f:
+        f.write("raise ImportError('hidden for the test')\n")
+    script = os.path.join(os.path.dirname(os.path.dirname(exe)), "share", "granpipe", "report.py")
+    env = dict(os.environ, PYTHONPATH=hidden)
+    subprocess.run([python, script, single], check=True, env=env)
+    page = Page(os.path.join(single, "report.html"))
+    check(any("matplotlib is not installed" in n for n in page.notes), f"notes: {page.notes}")
+    check(not page.figures and "X_inf" in page.cells, "without matplotlib: tables missing")
+
+    empty = os.path.join(work, "empty")
+    os.makedirs(empty)
+    r = subprocess.run([exe, "report", empty], capture_output=True, text=True)
+    check(r.returncode == 2 and r.stderr.count("\n") == 2 and
+          "pipeline.json: expected the pipeline of a granpipe run, found none" in r.stderr,
+          f"not a run: {r.returncode} {r.stderr!r}")
+if failures:
+    print("FAIL", *failures, sep="\n")
+    sys.exit(1)
+print("report.html: provenance, declared plots with their axes, fits; sweeps; on demand; "
+      "without matplotlib")
