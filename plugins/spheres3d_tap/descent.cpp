@@ -36,10 +36,15 @@ bool try_supports(const std::vector<Eigen::Vector3d>& normals, std::uint32_t set
     force = lu.solve(-(n.transpose() * kGravity));
     if ((force.array() < -kTiny).any()) return false;
   }
-  Eigen::Vector3d d = kGravity + n * force;
+  // Three independent normals span space, so they balance gravity exactly; and the
+  // projection d of gravity satisfies g . d = |d|^2. What fails either is the solve's
+  // rounding, which, taken for a direction, once rolled a sphere uphill out of its rest
+  // on two spheres and a wall, and back, forever.
+  Eigen::Vector3d d = m == 3 ? Eigen::Vector3d::Zero() : Eigen::Vector3d(kGravity + n * force);
   for (const auto& normal : normals)
     if (normal.dot(d) < -kTiny) return false;
-  out.direction = d.norm() < kTiny ? Eigen::Vector3d::Zero() : d;
+  const bool noise = d.norm() < kTiny || kGravity.dot(d) <= 0.5 * d.squaredNorm();
+  out.direction = noise ? Eigen::Vector3d::Zero() : d;
   out.supports.clear();
   for (Eigen::Index c = 0; c < m; ++c)
     if (force[c] > kLeastForce) out.supports.push_back(chosen[static_cast<std::size_t>(c)]);

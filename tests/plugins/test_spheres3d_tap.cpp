@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "deposit.hpp"
+#include "descent.hpp"
 #include "epsilon_protocol.hpp"
 #include "granpipe/container.hpp"
 #include "granpipe/frame.hpp"
@@ -90,6 +91,24 @@ TEST(Deposition, ASphereFallingBesideAWallSlidesDownItAndRollsOffAwayFromIt) {
   const auto& c = deposition.centres();
   EXPECT_NEAR(c[2].z(), kR, 1e-12);
   EXPECT_GT(c[2].x(), kR + 1.0);
+}
+
+// Found in a deposition of 20000 spheres (walls, L = 52 R): a sphere on two spheres and the
+// x = L - R wall, at rest, whose solve left a direction of 5e-12 pointing up. Taken for a
+// descent it rolled the sphere uphill, it fell back to the same rest, and round again until
+// the deposition gave up with an internal error. Coordinates as they were, to the bit.
+TEST(Deposition, ASphereOnTwoSpheresAndAWallIsAtRestDespiteRounding) {
+  const TapBox b = box(52.0, Sides::Walls);
+  const Eigen::Vector3d p(51.0, 5.935084711835855, 34.547310374217204);
+  std::vector<Obstacle> touching{
+      Obstacle::of_sphere(12962, {51.0, 3.9394377960262936, 34.679194366497491}),
+      Obstacle::of_sphere(12552, {49.525778067774461, 7.2828317561485418, 34.446079948496411})};
+  for (const auto& plane : b.centre_planes())
+    if (plane.label == static_cast<int>(Wall::XHigh)) touching.push_back(Obstacle::of_plane(plane));
+  ASSERT_EQ(touching.size(), 3u);
+  const Descent d = descend(p, touching);
+  EXPECT_TRUE(d.direction.isZero(0.0)) << d.direction.transpose();
+  EXPECT_EQ(d.supports.size(), 3u);
 }
 
 // Forces on the supports of a sphere at rest, found independently of the deposition:
