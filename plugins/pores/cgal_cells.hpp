@@ -8,6 +8,7 @@
 #include <omp.h>
 
 #include <Eigen/Core>
+#include <array>
 #include <cstdint>
 #include <iterator>
 #include <vector>
@@ -40,9 +41,11 @@ std::vector<Item> made_in_runs(std::size_t n, int threads, Make make) {
   return items;
 }
 
-// The finite cells, made by make(topology) from their corners (vertex infos: rows) and
-// neighbours, in the triangulation's order; the cells' infos number them so (the infinite
-// ones kHull).
+// The finite cells, made by make(topology, handle) from their corners (vertex infos: rows)
+// and neighbours, in the triangulation's order; the cells' infos number them so (the
+// infinite ones kHull). The handle gives make the corners' points off the vertices, whose
+// memory reading the infos fetched already (an array of the points by row is a second
+// random read per corner).
 template <class Cell, class Triangulation, class Make>
 std::vector<Cell> cells_of(const Triangulation& t, int threads, Make make) {
   std::vector<typename Triangulation::Cell_handle> finite;
@@ -57,8 +60,15 @@ std::vector<Cell> cells_of(const Triangulation& t, int threads, Make make) {
       cell.vertices[k] = finite[i]->vertex(k)->info();
       cell.neighbours[k] = finite[i]->neighbor(k)->info();
     }
-    return make(cell);
+    return make(cell, finite[i]);
   });
+}
+
+// The points of a cell's four corners, in its vertices' order.
+template <class CellHandle>
+auto corner_points(const CellHandle& c) {
+  return std::array{c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(),
+                    c->vertex(3)->point()};
 }
 
 // The rows of the points on the hull (their cells unbounded).

@@ -48,12 +48,12 @@ double height_of(const std::array<Eigen::Vector3d, 4>& p) {
 // whether the cell is lower than `length`. Its height is at least 6V over the longest edge
 // squared (a face's double area is at most that): only the cells this leaves in doubt have
 // their heights computed.
-DelaunayCell cell_of(const CellTopology& topology, const std::vector<Eigen::Vector3d>& x,
+DelaunayCell cell_of(const CellTopology& topology, const std::array<Point, 4>& corners,
                      double length) {
   DelaunayCell cell;
   static_cast<CellTopology&>(cell) = topology;
-  const std::array<Eigen::Vector3d, 4> p{x[topology.vertices[0]], x[topology.vertices[1]],
-                                         x[topology.vertices[2]], x[topology.vertices[3]]};
+  const std::array<Eigen::Vector3d, 4> p{cgal::vector_of(corners[0]), cgal::vector_of(corners[1]),
+                                         cgal::vector_of(corners[2]), cgal::vector_of(corners[3])};
   const Eigen::Vector3d a = p[1] - p[0], b = p[2] - p[0], c = p[3] - p[0];
   const Eigen::Vector3d bc = b.cross(c);
   const double six_volume = a.dot(bc);
@@ -114,7 +114,7 @@ void insert_in_order(Delaunay& t, const Points& points) {
 
 struct DelaunayTriangulation::Impl {
   Delaunay t;
-  std::vector<Eigen::Vector3d> points;  // by row
+  std::size_t rows = 0;  // points inserted, the images of wider skins included
 };
 
 DelaunayTriangulation::DelaunayTriangulation(const Centres& centres, const Frame& frame,
@@ -127,7 +127,7 @@ DelaunayTriangulation::DelaunayTriangulation(const Centres& centres, const Frame
   }
   const Points points = numbered(centres.points, 0);
   insert_in_order(impl_->t, points);
-  impl_->points = centres.points;
+  impl_->rows = points.size();
   refuse_duplicates(frame, centres, impl_->t, points, where);
   if (impl_->t.dimension() < 3) {
     throw InputError(where + ": expected particle centres spanning a volume, got all of them " +
@@ -138,16 +138,16 @@ DelaunayTriangulation::DelaunayTriangulation(const Centres& centres, const Frame
 DelaunayTriangulation::~DelaunayTriangulation() = default;
 
 std::vector<DelaunayCell> DelaunayTriangulation::cells(double length, int threads) {
-  const std::vector<Eigen::Vector3d>& x = impl_->points;
-  return cgal::cells_of<DelaunayCell>(impl_->t, threads,
-                                      [&](const CellTopology& c) { return cell_of(c, x, length); });
+  return cgal::cells_of<DelaunayCell>(impl_->t, threads, [&](const CellTopology& c, auto cell) {
+    return cell_of(c, cgal::corner_points(cell), length);
+  });
 }
 
 std::vector<std::uint32_t> DelaunayTriangulation::hull() const { return cgal::hull_rows(impl_->t); }
 
 void DelaunayTriangulation::insert(const std::vector<Eigen::Vector3d>& points) {
-  insert_in_order(impl_->t, numbered(points, impl_->points.size()));
-  impl_->points.insert(impl_->points.end(), points.begin(), points.end());
+  insert_in_order(impl_->t, numbered(points, impl_->rows));
+  impl_->rows += points.size();
 }
 
 }  // namespace granpipe::pores

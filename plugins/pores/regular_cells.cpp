@@ -41,7 +41,6 @@ Points numbered(const std::vector<Eigen::Vector3d>& x, const std::vector<double>
 
 struct RegularTriangulation::Impl {
   Regular t;
-  std::vector<WeightedPoint> points;  // by row
 };
 
 RegularTriangulation::RegularTriangulation(const std::vector<Eigen::Vector3d>& points,
@@ -49,19 +48,16 @@ RegularTriangulation::RegularTriangulation(const std::vector<Eigen::Vector3d>& p
     : impl_(std::make_unique<Impl>()) {
   const Points numbered_points = numbered(points, weights);
   impl_->t.insert(numbered_points.begin(), numbered_points.end());
-  impl_->points.reserve(points.size());
-  for (const auto& [p, row] : numbered_points) impl_->points.push_back(p);
 }
 
 RegularTriangulation::~RegularTriangulation() = default;
 
 std::vector<DualCell> RegularTriangulation::cells(int threads) {
-  const std::vector<WeightedPoint>& p = impl_->points;
-  return cgal::cells_of<DualCell>(impl_->t, threads, [&](const CellTopology& c) {
+  return cgal::cells_of<DualCell>(impl_->t, threads, [&](const CellTopology& c, auto handle) {
     DualCell cell;
     static_cast<CellTopology&>(cell) = c;
-    const auto& v = c.vertices;
-    cell.centre = cgal::vector_of(CGAL::weighted_circumcenter(p[v[0]], p[v[1]], p[v[2]], p[v[3]]));
+    const auto p = cgal::corner_points(handle);
+    cell.centre = cgal::vector_of(CGAL::weighted_circumcenter(p[0], p[1], p[2], p[3]));
     return cell;
   });
 }
