@@ -81,7 +81,7 @@ def compaction_chart(series, fits, ylabel, path):
     _save(fig, path)
 
 
-def curves_chart(series, xlabel, ylabel, path, log_y=False):
+def curves_chart(series, xlabel, ylabel, path, log_y=False, log_x=False):
     """series: {name: [(x, y)]}, each a line in the order given (the legend keeps it)."""
     fig, ax = plt.subplots(figsize=SIZE)
     for k, (name, points) in enumerate(series.items()):
@@ -90,6 +90,8 @@ def curves_chart(series, xlabel, ylabel, path, log_y=False):
             ax.plot(xs, ys, linewidth=1, label=name, gid=f"series-{k}")
     if log_y:
         ax.set_yscale("log")
+    if log_x:
+        ax.set_xscale("log")
     ax.set_xlabel(xlabel)
     ax.set_ylabel(ylabel)
     ax.grid(alpha=0.3, which="both")
