@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages granpipe needs that are missing (and nothing else).
+# Installs the Debian 12 packages granpipe needs that are missing (and nothing else);
+# with --test also what only the test suite uses (Chromium, for report.html in a browser).
 set -euo pipefail
 packages=(
   g++ cmake ninja-build ccache git pkg-config clang-format
@@ -7,6 +8,12 @@ packages=(
   nlohmann-json3-dev libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev libtbb-dev
   python3 python3-h5py python3-numpy python3-matplotlib python3-scipy python3-vtk9 voro++ voro++-dev
 )
+if [ "${1:-}" = "--test" ]; then
+  packages+=(chromium)
+elif [ -n "${1:-}" ]; then
+  echo "usage: scripts/install-deps.sh [--test]" >&2
+  exit 2
+fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 mode=${1:-run}
 case "$mode" in run|--test) ;; *) echo "usage: scripts/quickstart.sh [--test]" >&2; exit 2 ;; esac
 
-scripts/install-deps.sh
+if [ "$mode" = "--test" ]; then scripts/install-deps.sh --test; else scripts/install-deps.sh; fi
 jobs=$(nproc)
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j "$jobs"

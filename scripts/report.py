@@ -54,10 +54,11 @@ def csv_name(producer, name):
 
 
 def html_table(header, rows):
-    head = "".join(f"<th>{html.escape(h)}</th>" for h in header)
+    """A table; header None: rows only."""
+    head = "".join(f"<th>{html.escape(h)}</th>" for h in header or [])
     body = "".join("<tr>" + "".join(f"<td>{html.escape(c)}</td>" for c in row) + "</tr>"
                    for row in rows)
-    return f"<table><tr>{head}</tr>{body}</table>"
+    return f"<table>{f'<tr>{head}</tr>' if head else ''}{body}</table>"
 
 
 def scalars_section(group):
@@ -239,7 +240,7 @@ def provenance_section(attrs, partial):
             rows.append([f"seconds in {stage}", number(float(seconds))])
     state = ("<p class=note>this run has not finished (or was stopped): the results so far, "
              "from results.partial.h5</p>" if partial else "")
-    return "<h2>Provenance</h2>" + state + html_table(["", ""], rows)
+    return "<h2>Provenance</h2>" + state + html_table(None, rows)
 
 
 STYLE = """body{font-family:sans-serif;max-width:60em;margin:1em auto;padding:0 1em}
