@@ -249,9 +249,13 @@ text-align:left;font-size:90%}.note{color:#a40}pre{background:#f4f4f4;padding:.5
 overflow-x:auto;font-size:85%}figure{margin:1em 0}svg{max-width:100%;height:auto}"""
 
 
+# Marks a page as ours: a report.html without it is the user's, and is never replaced.
+GENERATOR = "<meta name=generator content=\"granpipe report\">"
+
+
 def page(title, body):
     return (f"<!DOCTYPE html><html lang=en><head><meta charset=utf-8><title>{html.escape(title)}"
-            f"</title><style>{STYLE}</style></head><body><h1>{html.escape(title)}</h1>{body}"
+            f"</title>{GENERATOR}<style>{STYLE}</style></head><body><h1>{html.escape(title)}</h1>{body}"
             "</body></html>\n")
 
 
@@ -265,9 +269,13 @@ def read_results(run):
         path = os.path.join(run, name)
         if os.path.exists(path):
             try:
-                return h5py.File(path, "r", swmr=partial), partial, ""
+                results = h5py.File(path, "r", swmr=partial)
             except OSError as e:
                 refuse(f"{path}: expected a granpipe results file, found one HDF5 cannot open: {e}")
+            if "granpipe_version" not in results.attrs:
+                refuse(f"{path}: expected a granpipe results file, found an HDF5 file without "
+                       "granpipe's provenance")
+            return results, partial, ""
     refuse(f"{run}: expected a granpipe run directory (results.h5 or results.partial.h5), "
            "found neither")
 
@@ -303,6 +311,14 @@ def report_body(run, results, partial, note, plt):
     return "".join(parts)
 
 
+def is_our_page(path):
+    try:
+        with open(path, errors="replace") as f:
+            return GENERATOR in f.read(4096)
+    except OSError:
+        return False
+
+
 def main(run):
     if not os.path.isfile(os.path.join(run, "pipeline.json")):
         refuse(f"{run}/pipeline.json: expected the pipeline of a granpipe run, found none")
@@ -310,10 +326,18 @@ def main(run):
     name = text(results.attrs["pipeline_name"]) if results is not None else os.path.basename(run)
     html_text = page(f"granpipe run {name}", report_body(run, results, partial, note, pyplot()))
     target = os.path.join(run, "report.html")
+    if os.path.lexists(target) and not is_our_page(target):
+        refuse(f"{target}: expected a report granpipe wrote, found another file; it is left as "
+               "it is (move it away to have the report)")
     partial = f"{target}.{os.getpid()}.tmp"  # two reports of one run at once: one wins whole
-    with open(partial, "w") as f:
-        f.write(html_text)
-    os.replace(partial, target)
+    try:
+        with open(partial, "w") as f:
+            f.write(html_text)
+        os.replace(partial, target)
+    except OSError as e:  # a full disk, a folder not ours to write: the run's files stay
+        if os.path.exists(partial):
+            os.remove(partial)
+        refuse(f"{target}: cannot write the report: {e.strerror}")
 
 
 if __name__ == "__main__":

@@ -96,6 +96,15 @@ with tempfile.TemporaryDirectory() as work:
     check(any("matplotlib is not installed" in n for n in page.notes), f"notes: {page.notes}")
     check(not page.figures and "X_inf" in page.cells, "without matplotlib: tables missing")
 
+    # A report.html that granpipe did not write is the user's: refused, left as it was.
+    with open(os.path.join(sweep, "report.html"), "w") as f:
+        f.write("my notes")
+    r = subprocess.run([exe, "report", sweep], capture_output=True, text=True)
+    with open(os.path.join(sweep, "report.html")) as f:
+        kept = f.read()
+    check(r.returncode == 2 and "expected a report granpipe wrote, found another file" in r.stderr
+          and kept == "my notes", f"a user's report.html: {r.returncode} {r.stderr!r} {kept!r}")
+
     empty = os.path.join(work, "empty")
     os.makedirs(empty)
     r = subprocess.run([exe, "report", empty], capture_output=True, text=True)
