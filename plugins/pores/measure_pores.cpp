@@ -90,13 +90,13 @@ struct Measure {
   const Frame& frame;
   Radii radii;
   double tolerance;
-  const std::optional<Region>& region;
+  const std::optional<PoreRegion>& region;
   Region primary;  // each pore once
   int threads;
 
   double length() const { return tolerance * radii.mean; }
   bool counted(const Eigen::Vector3d& pore_centre) const {
-    return !region || inside(*region, pore_centre);
+    return !region || region->contains(pore_centre);
   }
 
   // The pores of the Delaunay cells (circumspheres for equal radii, tangent
@@ -179,7 +179,7 @@ struct Measure {
 
 }  // namespace
 
-PoreMeasurement measure_pores(const Frame& frame, const std::optional<Region>& region,
+PoreMeasurement measure_pores(const Frame& frame, const std::optional<PoreRegion>& region,
                               double tolerance, const std::string& where, int threads) {
   check_frame(frame, where);
   PoreMeasurement m;
@@ -195,7 +195,7 @@ PoreMeasurement measure_pores(const Frame& frame, const std::optional<Region>& r
   m.fifth_sphere_cells = found.fifth_sphere_cells;
   m.in_region.reserve(found.pores.size());
   for (const Pore& p : found.pores) {
-    const bool counted = !region || inside(*region, p.centre);
+    const bool counted = !region || region->contains(p.centre);
     m.in_region.push_back(counted ? 1 : 0);
     if (counted) m.xi.push_back(p.radius / m.radius - 1.0);
   }
@@ -206,7 +206,7 @@ PoreMeasurement measure_pores(const Frame& frame, const std::optional<Region>& r
   for (Eigen::Index k = 0; k < frame.size(); ++k) {
     Eigen::Vector3d x;
     for (int a = 0; a < 3; ++a) x[a] = frame.container.wrap(a, frame.position()(k, a));
-    m.spheres += !region || inside(*region, x) ? 1 : 0;
+    m.spheres += !region || region->contains(x) ? 1 : 0;
   }
   return m;
 }

@@ -57,7 +57,7 @@ PoreMeasurement measure_pores(const Frame& frame, const PoreSettings& settings,
                               const std::string& where);
 
 // With the region given (nothing: every pore and every particle).
-PoreMeasurement measure_pores(const Frame& frame, const std::optional<Region>& region,
+PoreMeasurement measure_pores(const Frame& frame, const std::optional<PoreRegion>& region,
                               double tolerance, const std::string& where, int threads = 1);
 
 }  // namespace granpipe::pores

@@ -35,14 +35,35 @@ double packing_side(const Frame& f, int axis, int high) {
   return b == Boundary::Wall ? wall + c.wall_offset[axis] : wall;
 }
 
-std::optional<Region> pore_region(const Frame& frame, const RegionSettings& s, double radius,
-                                  const std::string& where) {
+bool PoreRegion::contains(const Eigen::Vector3d& x) const {
+  for (int a = 0; a < 3; ++a)
+    if (!(x[a] >= box.lo[a] && x[a] < box.hi[a])) return false;
+  return (x.head<2>() - axis).squaredNorm() < radius * radius;
+}
+
+namespace {
+
+// The cylinder's radius less the margin, about its axis where the walls have moved it.
+void shrink_to_cylinder(const Container& c, double margin, PoreRegion& region,
+                        const std::string& where) {
+  region.axis = c.cylinder_center + c.wall_offset.head<2>();
+  region.radius = c.cylinder_radius - margin;
+  if (region.radius > 0.0) return;
+  std::ostringstream m;
+  m << where << ": expected a margin below the cylinder's radius " << c.cylinder_radius << ", got "
+    << margin;
+  throw InputError(m.str());
+}
+
+}  // namespace
+
+std::optional<PoreRegion> pore_region(const Frame& frame, const RegionSettings& s, double radius,
+                                      const std::string& where) {
   if (s.kind == RegionKind::All) return std::nullopt;
-  if (frame.container.shape != ContainerShape::Box) {
-    throw InputError(where + ": region \"inner\" expected a box container, got a " +
-                     to_string(frame.container.shape) + " (use region \"all\")");
-  }
-  Region r;
+  PoreRegion inner;
+  if (frame.container.shape == ContainerShape::Cylinder)
+    shrink_to_cylinder(frame.container, s.margin * radius, inner, where);
+  Region& r = inner.box;
   r.dim = 3;
   for (int a = 0; a < 3; ++a) {
     // Along a periodic axis every pore is in the region once (measure_pores picks one image).
@@ -58,7 +79,7 @@ std::optional<Region> pore_region(const Frame& frame, const RegionSettings& s, d
   }
   if (s.height > 0.0) r.hi[2] = r.lo[2] + s.height * radius;
   check_inside(r, top, s, where);
-  return r;
+  return inner;
 }
 
 }  // namespace granpipe::pores

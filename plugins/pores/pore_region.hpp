@@ -1,7 +1,10 @@
 #pragma once
-// Which pores a measurement counts: all of them, or those whose centre lies in a box
-// inside the container, away from its walls (the paper: 2 R from the walls, 18 R high).
+// Which pores a measurement counts: all of them, or those whose centre lies inside the
+// container away from its walls (the paper: 2 R from the walls, 18 R high): a box, and in a
+// vertical cylinder also within its radius less the margin.
+#include <Eigen/Core>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 
@@ -22,17 +25,28 @@ struct RegionSettings {
   double height = 0.0;  // particle radii above the region's bottom; 0: up to the top
 };
 
+// The inner region: a box, and in a cylinder container a radius about its axis.
+struct PoreRegion {
+  PoreRegion() = default;
+  PoreRegion(const Region& b) : box(b) {}  // NOLINT: a box is a region of its own
+  Region box;
+  Eigen::Vector2d axis = Eigen::Vector2d::Zero();
+  double radius = std::numeric_limits<double>::infinity();  // none in a box container
+  // In the half-open box [lo, hi) and strictly within the radius.
+  bool contains(const Eigen::Vector3d& x) const;
+};
+
 // Where the packing ends on one side of an axis (high: 1 for the upper side): the wall
 // (moved by the wall offset), the box side along a periodic axis, the outermost particle
 // surface at an open side.
 double packing_side(const Frame& frame, int axis, int high);
 
-// Nothing for kind All. For Inner, the box container shrunk by `margin` radii from every
-// wall (unbounded along periodic axes), its top the container's or, for an open top, the
-// highest particle top, and `height` radii high when height > 0. Throws InputError after
-// `where` for a cylinder, for a region of no volume or reaching above that top, and for a
+// Nothing for kind All. For Inner, the container shrunk by `margin` radii from every wall
+// (unbounded along periodic axes; a cylinder's radius too), its top the container's or, for
+// an open top, the highest particle top, and `height` radii high when height > 0. Throws
+// InputError after `where` for a region of no volume or reaching above that top, and for a
 // height along a periodic z.
-std::optional<Region> pore_region(const Frame& frame, const RegionSettings& settings, double radius,
-                                  const std::string& where);
+std::optional<PoreRegion> pore_region(const Frame& frame, const RegionSettings& settings,
+                                      double radius, const std::string& where);
 
 }  // namespace granpipe::pores

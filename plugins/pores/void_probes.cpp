@@ -9,7 +9,7 @@
 
 namespace granpipe::pores {
 
-Region probe_region(const Frame& frame, const std::optional<Region>& region,
+Region probe_region(const Frame& frame, const std::optional<PoreRegion>& region,
                     const std::string& where) {
   const Container& c = frame.container;
   if (c.shape != ContainerShape::Box) {
@@ -19,8 +19,8 @@ Region probe_region(const Frame& frame, const std::optional<Region>& region,
   Region box;
   box.dim = 3;
   for (int a = 0; a < 3; ++a) {
-    box.lo[a] = region ? std::max(region->lo[a], c.lo[a]) : c.lo[a];
-    box.hi[a] = region ? std::min(region->hi[a], c.hi[a]) : c.hi[a];
+    box.lo[a] = region ? std::max(region->box.lo[a], c.lo[a]) : c.lo[a];
+    box.hi[a] = region ? std::min(region->box.hi[a], c.hi[a]) : c.hi[a];
   }
   return box;
 }

@@ -9,12 +9,13 @@
 #include "granpipe/frame.hpp"
 #include "granpipe/random.hpp"
 #include "granpipe/region.hpp"
+#include "pore_region.hpp"
 
 namespace granpipe::pores {
 
 // The box the probes fill: `region` (the pores' inner region, nothing for all) cut to the
 // container's box. Throws InputError after `where` for a container that is no box.
-Region probe_region(const Frame& frame, const std::optional<Region>& region,
+Region probe_region(const Frame& frame, const std::optional<PoreRegion>& region,
                     const std::string& where);
 
 // For `probes` points uniform in `box`: the distance from each to the nearest sphere
