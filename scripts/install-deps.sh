@@ -7,6 +7,9 @@ packages=(
   nlohmann-json3-dev libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev libtbb-dev
   python3 python3-h5py python3-numpy python3-matplotlib python3-scipy python3-vtk9 voro++ voro++-dev
 )
+# For tests only: the ctest data_samples_lammps_runs_unchanged runs tests/lammps_runs with
+# LIGGGHTS and LAMMPS again (and skips, saying so, without them).
+packages+=(liggghts lammps)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

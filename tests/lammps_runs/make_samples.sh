@@ -3,10 +3,11 @@
 # (liggghts) and LAMMPS (lmp) and writes their dumps, gzip-compressed, into data-samples/:
 #   liggghts_bed.dump.gz, liggghts_bed_pairs.dump.gz, liggghts_bed_walls.dump.gz
 #   lammps_bed.dump.gz, lammps_bed_pairs.dump.gz
-# Usage: tests/lammps_runs/make_samples.sh   (from the repository's top folder)
+# Usage: tests/lammps_runs/make_samples.sh [OUT_DIR]   (OUT_DIR: data-samples/ by default;
+# the ctest data_samples_lammps_runs_unchanged writes elsewhere and compares)
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
-samples=$(cd "$here/../../data-samples" && pwd)
+samples=$(cd "${1:-$here/../../data-samples}" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cp "$here/in.liggghts_bed" "$here/plate.stl" "$here/in.lammps_bed" "$work/"
