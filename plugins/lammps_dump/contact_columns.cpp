@@ -70,11 +70,13 @@ ContactColumns liggghts_columns(const std::vector<std::string>& keywords, bool w
   return c;
 }
 
-// LAMMPS keywords read by the source, and those kept out.
+// LAMMPS keywords the source lets be: p4 ... p99 are pair-style extras past the tangential
+// force.
 bool unused_lammps_keyword(const std::string& w) {
   if (w == "eng" || w == "force" || w == "ptype1" || w == "ptype2") return true;
-  return w.size() >= 2 && w[0] == 'p' &&
-         w.find_first_not_of("0123456789", 1) == std::string::npos && std::stoi(w.substr(1)) >= 4;
+  const bool extra = w.size() >= 2 && w.size() <= 3 && w[0] == 'p' &&
+                     w.find_first_not_of("0123456789", 1) == std::string::npos;
+  return extra && std::stoi(w.substr(1)) >= 4;
 }
 
 ContactColumns lammps_columns(const std::vector<std::string>& keywords, const std::string& param) {

@@ -167,6 +167,22 @@ TEST_F(LammpsDumpContacts, BadPairFilesAreRefusedWithTheirLine) {
             "params.pair_columns: expected keywords of compute pair/gran/local or "
             "wall/gran/local (pos vel id force force_normal force_tangential torque "
             "contactArea delta heatFlux), got \"overlap\"");
+  auto lammps = with_pairs(pair_snapshot(0, kPairs0, 2) + second);
+  lammps["pair_format"] = "lammps";
+  lammps["pair_columns"] = "patom1 patom2 fx fy eng p4 p5";
+  EXPECT_EQ(refusal(lammps),
+            "params.pair_columns: expected patom1 patom2 fx fy fz, got \"patom1 patom2 fx fy eng "
+            "p4 p5\"");
+  lammps["pair_columns"] = "patom1 patom2 fx fy fz p1 p2";
+  EXPECT_EQ(refusal(lammps),
+            "params.pair_columns: expected p1 p2 p3 (the tangential force) together, got "
+            "\"patom1 patom2 fx fy fz p1 p2\"");
+  lammps["pair_columns"] = "patom1 patom2 fx fy fz eng p4";
+  lammps["wall_file"] = lammps["pair_file"];
+  lammps["wall_columns"] = "patom1 patom2 fx fy fz eng p4";
+  EXPECT_EQ(refusal(lammps),
+            "params.wall_file: expected no wall file with pair_format \"lammps\" (LAMMPS has no "
+            "compute of wall contacts), got pairs.dump");
   EXPECT_EQ(refusal({{"file", write(atom_snapshot(0), "one.dump")},
                      {"pair_file", write(atom_snapshot(0), "atoms_again.dump")},
                      {"pair_columns", "id force_normal delta"}}),
