@@ -254,3 +254,21 @@ TEST_F(LammpsDumpContacts, TheLammpsSamplesContactsAreItsPairEntries) {
     EXPECT_TRUE(frame.contacts->has("tangential_force"));
   }
 }
+
+// A pair across the periodic x sides: the overlap from the nearest image (no delta column)
+// and the contact point wrapped into the box.
+TEST_F(LammpsDumpContacts, APairAcrossAPeriodicSideMeetsThroughTheNearestImage) {
+  const std::string atoms =
+      "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n2\nITEM: BOX BOUNDS pp pp ff\n0 10\n0 10\n0 "
+      "10\nITEM: ATOMS id type x y z radius\n1 1 0.25 5 2 0.5\n2 1 9.375 5 2 0.5\n";
+  const std::string pairs =
+      "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ENTRIES\n1\nITEM: BOX BOUNDS pp pp ff\n0 10\n0 10\n0 "
+      "10\nITEM: ENTRIES c_p[1] c_p[2] c_p[3] c_p[4] c_p[5] c_p[6]\n1 2 1 -3 0 0\n";
+  const auto f = frames({{"file", write(atoms, "atoms.dump")},
+                         {"pair_file", write(pairs, "pairs.dump")},
+                         {"pair_columns", "id force_normal"}});
+  ASSERT_EQ(f.at(0).contacts->rows(), 1);
+  EXPECT_EQ(f[0].contacts->get<Eigen::ArrayXd>("overlap")[0], 0.125);  // 1 - 0.875
+  // 0.25 - (0.5 - 0.0625) = -0.1875, wrapped to 9.8125.
+  EXPECT_EQ(f[0].contacts->get<ValueTable<double>>("point")(0, 0), 9.8125);
+}
