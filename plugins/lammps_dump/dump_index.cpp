@@ -20,22 +20,24 @@ bool next_filled_line(TextLines& lines, std::string& line, SnapshotStart& start)
   return true;
 }
 
-std::string expected_atoms(const SnapshotHeader& h) {
-  return "expected " + std::to_string(h.atoms) + " atom lines (NUMBER OF ATOMS, line " +
+std::string expected_atoms(const SnapshotHeader& h, const DumpKind& kind) {
+  const std::string count = std::string(kind.count_item).substr(std::string("ITEM: ").size());
+  return "expected " + std::to_string(h.atoms) + " " + kind.row + " lines (" + count + ", line " +
          std::to_string(h.atoms_line) + "), got ";
 }
 
-// Over the atom lines, counting them.
-void skip_atoms(const SnapshotHeader& h, TextLines& lines) {
+// Over the atom (entry) lines, counting them.
+void skip_atoms(const SnapshotHeader& h, TextLines& lines, const DumpKind& kind) {
   std::string line;
   for (std::int64_t k = 0; k < h.atoms; ++k) {
     next_line_of(h.place, lines, line);
     if (line.starts_with("ITEM:")) {
-      throw InputError(h.place.at(lines.number()) + expected_atoms(h) + std::to_string(k) +
+      throw InputError(h.place.at(lines.number()) + expected_atoms(h, kind) + std::to_string(k) +
                        " before " + quoted(trimmed(line)));
     }
     if (trimmed(line).empty()) {
-      throw InputError(h.place.at(lines.number()) + "expected an atom line, got an empty line");
+      throw InputError(h.place.at(lines.number()) + "expected an " + kind.row +
+                       " line, got an empty line");
     }
   }
 }
@@ -62,7 +64,7 @@ void check_is_dump(TextLines& lines, bool found, const std::string& line) {
 
 }  // namespace
 
-DumpIndex index_snapshots(TextLines& lines) {
+DumpIndex index_snapshots(TextLines& lines, const DumpKind& kind) {
   DumpIndex index;
   std::string line;
   SnapshotStart start;
@@ -71,19 +73,19 @@ DumpIndex index_snapshots(TextLines& lines) {
   std::optional<SnapshotHeader> last;
   for (; found; found = next_filled_line(lines, line, start)) {
     if (last && !lines.cut() && !line.starts_with("ITEM:")) {
-      throw InputError(last->place.at(lines.number()) + expected_atoms(*last) +
+      throw InputError(last->place.at(lines.number()) + expected_atoms(*last, kind) +
                        "more: " + quoted(trimmed(line)));
     }
     try {
       // The file ends inside the first line of a snapshot.
       if (lines.cut()) throw SnapshotCut{SnapshotPlace{lines.path(), lines.number()}};
-      last = read_header(lines.path(), lines, line);
+      last = read_header(lines.path(), lines, line, kind);
       if (index.snapshots.empty()) {
         index.columns = last->columns;
         index.columns_at = last->place.at(last->columns_line);
       }
       check_columns(index, *last);
-      skip_atoms(*last, lines);
+      skip_atoms(*last, lines, kind);
     } catch (const SnapshotCut& cut) {
       index.cut = cut.place;
       break;

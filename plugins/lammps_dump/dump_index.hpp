@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "snapshot_header.hpp"
 #include "snapshot_place.hpp"
 #include "text_lines.hpp"
 
@@ -21,7 +22,7 @@ struct SnapshotStart {
 
 struct DumpIndex {
   std::vector<SnapshotStart> snapshots;  // the complete ones
-  std::vector<std::string> columns;      // of "ITEM: ATOMS", the same in every snapshot
+  std::vector<std::string> columns;      // of "ITEM: ATOMS" (ENTRIES), the same in every snapshot
   std::string columns_at;                // "x.dump: timestep 0, line 9: ", where the first
                                          // snapshot names them, for messages
   std::optional<SnapshotPlace> cut;      // the snapshot the file ends inside
@@ -31,6 +32,6 @@ struct DumpIndex {
 // Reads `lines` to the end. InputError for a file that is not a dump (saying what it looks
 // like), a header that is not a dump's, columns other than the first snapshot's, and atom
 // lines more or fewer than NUMBER OF ATOMS.
-DumpIndex index_snapshots(TextLines& lines);
+DumpIndex index_snapshots(TextLines& lines, const DumpKind& kind = kAtomDump);
 
 }  // namespace granpipe::lammps_dump

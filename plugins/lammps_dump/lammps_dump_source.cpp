@@ -1,7 +1,12 @@
 #include "lammps_dump_source.hpp"
 
+#include <array>
 #include <cmath>
+#include <memory>
+#include <vector>
 
+#include "dump_text.hpp"
+#include "granpipe/contacts_by_distance.hpp"
 #include "granpipe/format_number.hpp"
 #include "snapshot_atoms.hpp"
 
@@ -18,6 +23,12 @@ DumpIndex complete_snapshots(TextLines& lines) {
                      index.cut->name());
   }
   return index;
+}
+
+std::vector<std::string> keywords(const std::string& text) {
+  std::vector<std::string> out;
+  for (std::string_view w : words(text)) out.emplace_back(w);
+  return out;
 }
 
 }  // namespace
@@ -37,6 +48,20 @@ Schema schema() {
       .min(0.0)
       .unit("time");
   declare_stated_container(s);
+  s.path("pair_file", std::string(""),
+         "dump local of the pair contacts at the atom dump's timesteps (LIGGGHTS compute "
+         "pair/gran/local, or LAMMPS compute property/local patom1 patom2 and pair/local); "
+         "\"\": no contacts");
+  s.choice<ContactFormat>("pair_format", ContactFormat::Liggghts,
+                          "the code that wrote pair_file and wall_file");
+  s.string("pair_columns", "",
+           "the keywords of the computes that wrote pair_file, as in the input script: "
+           "LIGGGHTS \"pos id force force_normal contactArea delta\" (any order), LAMMPS "
+           "one per column \"patom1 patom2 dist fx fy fz p1 p2 p3\"");
+  s.path("wall_file", std::string(""),
+         "dump local of LIGGGHTS compute wall/gran/local at the atom dump's timesteps (\"\": "
+         "none); each contact goes to the stated wall nearest to it");
+  s.string("wall_columns", "", "the keywords of compute wall/gran/local, as pair_columns");
   return s;
 }
 
@@ -51,10 +76,83 @@ LammpsDumpSource::LammpsDumpSource(const PluginContext& ctx)
   const long snapshots = static_cast<long>(index_.snapshots.size());
   warn_if_cut(ctx);
   check_radius(ctx);
+  open_contact_dumps(ctx);
   selection_ = select_frames(ctx, snapshots,
                              " (" + file_ + " holds " + std::to_string(snapshots) + " snapshots)");
   next_ = selection_.first;
   first_frame_ = read_snapshot(selection_.first);
+  if (!pairs_) warn_if_coarse(ctx, *first_frame_);
+}
+
+void LammpsDumpSource::warn_if_coarse(const PluginContext& ctx, const Frame& first) const {
+  std::array<double, 3> scale{1.0, 1.0, 1.0};
+  for (int a = 0; a < 3; ++a) {
+    const bool scaled = columns_.coordinate[a] == Coordinate::Scaled ||
+                        columns_.coordinate[a] == Coordinate::ScaledUnwrapped;
+    if (scaled) scale[a] = first.container.length(a);
+  }
+  const std::array<double, 3> r = precision_.rounding(scale);
+  const double centre = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
+  const double contact = 2.0 * first.radius().minCoeff();
+  // Two centres each off by up to `centre`: their distance by up to twice that.
+  const double relative = 2.0 * centre / contact;
+  if (relative <= kDefaultContactTolerance) return;
+  ctx.log.warn(file_ + ": positions printed to " + std::to_string(precision_.significant()) +
+               " significant digits: a centre distance is known to " + format_number(2.0 * centre) +
+               ", " + format_number(relative) + " of the smallest contact distance (" +
+               format_number(contact) + "), coarser than the contact_tolerance " +
+               format_number(kDefaultContactTolerance) +
+               " by which analyzers find contacts from positions: give the run's contacts "
+               "(pair_file) or write positions with dump_modify format float %.17g");
+}
+
+void LammpsDumpSource::add_contacts(Frame& f) {
+  if (!pairs_ && !walls_) return;
+  const std::string place = "timestep " + std::to_string(f.step) + " of " + file_;
+  std::vector<ContactRow> rows;
+  if (pairs_) pairs_->read(f, place, rows);
+  if (walls_) walls_->read(f, place, rows);
+  fill_contacts(rows, tangential(), f);
+}
+
+void LammpsDumpSource::open_contact_dumps(const PluginContext& ctx) {
+  const auto format = ctx.params.choice<ContactFormat>("pair_format");
+  auto open = [&](const char* file, const char* columns,
+                  bool wall) -> std::unique_ptr<ContactDump> {
+    const std::string& path = ctx.params.string(file);
+    if (path.empty()) return nullptr;
+    const std::string& given = ctx.params.string(columns);
+    if (given.empty()) {
+      throw InputError(ctx.param(columns) + ": expected the keywords of the compute that wrote " +
+                       path + ", got none");
+    }
+    if (wall && format == ContactFormat::Lammps) {
+      throw InputError(ctx.param(file) +
+                       ": expected no wall file with pair_format \"lammps\" "
+                       "(LAMMPS has no compute of wall contacts), got " +
+                       path);
+    }
+    auto dump = std::make_unique<ContactDump>(
+        path, contact_columns(format, keywords(given), wall, ctx.param(columns)), wall,
+        ctx.param(columns));
+    dump->check_timesteps(index_, file_);
+    return dump;
+  };
+  pairs_ = open("pair_file", "pair_columns", false);
+  walls_ = open("wall_file", "wall_columns", true);
+}
+
+FrameContent LammpsDumpSource::content() const {
+  FrameContent c{.dim = 3, .contacts = pairs_ || walls_, .columns = columns_.properties()};
+  if (!c.contacts) return c;
+  std::vector<const char*> names{"overlap", "normal_force", "point"};
+  if (tangential()) names.push_back("tangential_force");
+  for (const char* name : names) c.columns.push_back(*find_standard(name, Scope::Contact));
+  return c;
+}
+
+bool LammpsDumpSource::tangential() const {
+  return (!pairs_ || pairs_->has_tangential()) && (!walls_ || walls_->has_tangential());
 }
 
 void LammpsDumpSource::warn_if_cut(const PluginContext& ctx) const {
@@ -105,6 +203,8 @@ Frame LammpsDumpSource::frame_of(const SnapshotHeader& h) {
     throw InputError(h.place.at(atoms.lines[static_cast<std::size_t>(out->particle)]) +
                      out->message);
   }
+  add_contacts(f);
+  precision_ = atoms.precision;
   f.check(h.place.where(h.place.first_line));
   return std::move(f);
 }

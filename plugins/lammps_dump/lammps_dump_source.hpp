@@ -5,15 +5,20 @@
 // so the container is stated in the pipeline (granpipe/stated_container.hpp), its periodic
 // sides taken from each snapshot's BOX BOUNDS; an atom outside it is refused with its
 // line. A file that ends inside a snapshot (its writer stopped) gives the complete
-// snapshots before it, with a warning.
+// snapshots before it, with a warning. Contacts with their forces come from dumps local of
+// the same run (pair_file, wall_file; contact_dump.hpp); without them, a warning says when
+// the positions are printed too coarsely for contacts found from them.
+#include <memory>
 #include <optional>
 #include <string>
 
 #include "atom_columns.hpp"
+#include "contact_dump.hpp"
 #include "dump_index.hpp"
 #include "granpipe/frame_selection.hpp"
 #include "granpipe/plugin.hpp"
 #include "granpipe/stated_container.hpp"
+#include "position_precision.hpp"
 #include "snapshot_header.hpp"
 #include "text_lines.hpp"
 
@@ -25,7 +30,7 @@ class LammpsDumpSource : public Source {
  public:
   explicit LammpsDumpSource(const PluginContext& ctx);
 
-  FrameContent content() const override { return {.dim = 3, .columns = columns_.properties()}; }
+  FrameContent content() const override;
   Work work() const override { return {static_cast<double>(selection_.count()), "frames", false}; }
   bool next(Frame& frame) override;
   void finish(Results& results) override;
@@ -33,6 +38,14 @@ class LammpsDumpSource : public Source {
  private:
   void warn_if_cut(const PluginContext& ctx) const;
   void check_radius(const PluginContext& ctx) const;
+  void open_contact_dumps(const PluginContext& ctx);
+  // Without a pair dump, warns when the first frame's positions are printed too coarsely
+  // for contacts found from them.
+  void warn_if_coarse(const PluginContext& ctx, const Frame& first) const;
+  // The contacts of the frame's timestep from the pair and wall dumps, when given.
+  void add_contacts(Frame& f);
+  // Whether the contact dumps give the tangential force (every one of them must).
+  bool tangential() const;
   Frame read_snapshot(long index);
   // The frame of the snapshot whose header was just read: its atoms, step, time and
   // container, every atom checked to be inside.
@@ -45,6 +58,8 @@ class LammpsDumpSource : public Source {
   TextLines lines_;
   DumpIndex index_;
   AtomColumns columns_;
+  std::unique_ptr<ContactDump> pairs_, walls_;  // none without pair_file, wall_file
+  PositionPrecision precision_;                 // of the snapshot read last
   FrameSelection selection_;
   long next_ = 0, read_ = 0;
   // Read when the source is made, so that bad atoms stop the pipeline before it runs.

@@ -23,6 +23,7 @@ struct AtomLines {
   std::vector<bool> finite;             // whether each of them must be finite
   int size = -1;                        // the radius or diameter column, which must be > 0
   std::vector<std::string_view> words;  // of the line being read
+  PositionPrecision precision;
 };
 
 // Positions, size and vectors must be finite; kept columns are stored as they are (a NaN a
@@ -81,6 +82,7 @@ void parse_line(const std::string& line, const SnapshotPlace& place, long number
     }
     a.values.push_back(*value);
   }
+  for (int axis = 0; axis < 3; ++axis) a.precision.add(axis, word(c.position[axis]));
   a.ids.push_back(*id);
   a.types.push_back(static_cast<std::int32_t>(*type));
   a.lines.push_back(number);
@@ -147,6 +149,7 @@ SnapshotAtoms read_atoms(const SnapshotHeader& header, const AtomColumns& column
     parse_line(line, header.place, lines.number(), columns, a);
   }
   SnapshotAtoms out;
+  out.precision = a.precision;
   fill_frame(a, id_order(a, header.place), columns, header, radius, out);
   return out;
 }

@@ -6,14 +6,16 @@
 
 #include "atom_columns.hpp"
 #include "granpipe/frame.hpp"
+#include "position_precision.hpp"
 #include "snapshot_header.hpp"
 #include "text_lines.hpp"
 
 namespace granpipe::lammps_dump {
 
 struct SnapshotAtoms {
-  Frame frame;              // step, time and container left to the caller
-  std::vector<long> lines;  // the line of each row, for messages
+  Frame frame;                  // step, time and container left to the caller
+  std::vector<long> lines;      // the line of each row, for messages
+  PositionPrecision precision;  // of the position columns as printed
 };
 
 // `radius`: every atom's radius when the columns hold none. InputError starting with the

@@ -8,6 +8,11 @@
 
 namespace granpipe::lammps_dump {
 
+const DumpKind kAtomDump{"ITEM: NUMBER OF ATOMS", "ITEM: ATOMS", "atom",
+                         "a dump local (contacts, bonds), not a dump of atoms"};
+const DumpKind kLocalDump{"ITEM: NUMBER OF ENTRIES", "ITEM: ENTRIES", "entry",
+                          "a dump of atoms, not a dump local"};
+
 namespace {
 
 // Whether `line` is the item `name`, alone or followed by its words ("ITEM: ATOMS id ...").
@@ -17,19 +22,19 @@ bool is_item(std::string_view line, std::string_view name) {
 }
 
 [[noreturn]] void refuse_item(const SnapshotPlace& place, const TextLines& lines,
-                              const std::string& item, std::string_view wanted) {
+                              const std::string& item, std::string_view wanted,
+                              const DumpKind& kind) {
   std::string what = quoted(trimmed(item));
-  if (trimmed(item) == "ITEM: NUMBER OF ENTRIES") {
-    what += ": a dump local (contacts, bonds), not a dump of atoms";
-  }
+  const DumpKind& other = &kind == &kAtomDump ? kLocalDump : kAtomDump;
+  if (trimmed(item) == other.count_item) what += std::string(": ") + kind.other;
   throw InputError(place.at(lines.number()) + "expected \"" + std::string(wanted) + "\", got " +
                    what);
 }
 
 // The line just read must be this item.
 void expect_item(const SnapshotPlace& place, const TextLines& lines, const std::string& item,
-                 std::string_view wanted) {
-  if (!is_item(item, wanted)) refuse_item(place, lines, item, wanted);
+                 std::string_view wanted, const DumpKind& kind) {
+  if (!is_item(item, wanted)) refuse_item(place, lines, item, wanted, kind);
 }
 
 // The value line after an item.
@@ -75,27 +80,29 @@ void read_units_and_time(SnapshotHeader& h, TextLines& lines, std::string& item)
 
 }  // namespace
 
-SnapshotHeader read_header(const std::string& file, TextLines& lines, std::string item) {
+SnapshotHeader read_header(const std::string& file, TextLines& lines, std::string item,
+                           const DumpKind& kind) {
   SnapshotHeader h;
   h.place = SnapshotPlace{file, lines.number()};
   read_units_and_time(h, lines, item);
-  expect_item(h.place, lines, item, "ITEM: TIMESTEP");
+  expect_item(h.place, lines, item, "ITEM: TIMESTEP", kind);
   h.place.timestep = whole_value(h.place, lines, "the timestep");
 
   next_line_of(h.place, lines, item);
-  expect_item(h.place, lines, item, "ITEM: NUMBER OF ATOMS");
+  expect_item(h.place, lines, item, kind.count_item, kind);
   h.atoms_line = lines.number();
-  h.atoms = whole_value(h.place, lines, "the number of atoms");
+  h.atoms = whole_value(h.place, lines,
+                        &kind == &kAtomDump ? "the number of atoms" : "the number of entries");
 
   next_line_of(h.place, lines, item);
-  expect_item(h.place, lines, item, "ITEM: BOX BOUNDS");
+  expect_item(h.place, lines, item, "ITEM: BOX BOUNDS", kind);
   h.box = read_box(item, h.place, lines);
 
   next_line_of(h.place, lines, item);
-  constexpr std::string_view kAtoms = "ITEM: ATOMS";
-  expect_item(h.place, lines, item, kAtoms);
+  const std::string_view columns_item = kind.columns_item;
+  expect_item(h.place, lines, item, columns_item, kind);
   h.columns_line = lines.number();
-  for (std::string_view w : words(std::string_view(item).substr(kAtoms.size())))
+  for (std::string_view w : words(std::string_view(item).substr(columns_item.size())))
     h.columns.emplace_back(w);
   return h;
 }

@@ -6,6 +6,8 @@
 //   ITEM: NUMBER OF ATOMS     the atom lines that follow the header
 //   ITEM: BOX BOUNDS pp pp ff and one "lo hi" line per axis (box_bounds.hpp)
 //   ITEM: ATOMS id type x ... the column names (atom_columns.hpp)
+// and of a `dump local` (contacts, bonds), whose items name entries instead of atoms:
+//   ITEM: NUMBER OF ENTRIES, ITEM: ENTRIES c_pairs[1] ...
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -17,11 +19,20 @@
 
 namespace granpipe::lammps_dump {
 
+// What the rows of a dump are: atoms (dump custom, dump atom) or entries (dump local).
+struct DumpKind {
+  const char* count_item;    // "ITEM: NUMBER OF ATOMS"
+  const char* columns_item;  // "ITEM: ATOMS"
+  const char* row;           // "atom", for messages
+  const char* other;         // what a file of the other kind is, for its refusal
+};
+extern const DumpKind kAtomDump, kLocalDump;
+
 struct SnapshotHeader {
   SnapshotPlace place;
   std::optional<double> time;  // ITEM: TIME
-  std::int64_t atoms = 0;
-  long atoms_line = 0;  // of "ITEM: NUMBER OF ATOMS"
+  std::int64_t atoms = 0;      // rows: atoms, or entries of a dump local
+  long atoms_line = 0;         // of "ITEM: NUMBER OF ATOMS" (or ENTRIES)
   DumpBox box;
   std::vector<std::string> columns;
   long columns_line = 0;  // of "ITEM: ATOMS"
@@ -30,6 +41,7 @@ struct SnapshotHeader {
 // Reads the header whose first line, `item` ("ITEM: ..."), was the line last read from
 // `lines`. InputError starting with the file, timestep and line for an item out of place
 // or a value that is not what it should be; SnapshotCut when the file ends inside it.
-SnapshotHeader read_header(const std::string& file, TextLines& lines, std::string item);
+SnapshotHeader read_header(const std::string& file, TextLines& lines, std::string item,
+                           const DumpKind& kind = kAtomDump);
 
 }  // namespace granpipe::lammps_dump

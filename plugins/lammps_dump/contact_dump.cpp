@@ -1,0 +1,216 @@
+#include "contact_dump.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "dump_text.hpp"
+#include "granpipe/errors.hpp"
+#include "granpipe/format_number.hpp"
+#include "snapshot_header.hpp"
+#include "wall_partner.hpp"
+
+namespace granpipe::lammps_dump {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+DumpIndex contact_snapshots(TextLines& lines) {
+  DumpIndex index = index_snapshots(lines, kLocalDump);
+  if (index.snapshots.empty()) {
+    throw InputError(lines.path() +
+                     ": expected a complete snapshot, got none: the file ends "
+                     "inside " +
+                     index.cut->name());
+  }
+  return index;
+}
+
+// The words of one entry line and where they are, for its values and messages.
+struct Entry {
+  const SnapshotPlace& place;
+  long line;
+  const std::vector<std::string_view>& words;
+
+  std::string at() const { return place.at(line); }
+  double value(int column) const {
+    const std::string_view w = words[static_cast<std::size_t>(column)];
+    const auto x = real_number(w);
+    if (!x || !std::isfinite(*x)) {
+      throw InputError(at() + "expected a finite number in column " + std::to_string(column + 1) +
+                       ", got \"" + std::string(w) + "\"");
+    }
+    return *x;
+  }
+  Eigen::Vector3d vector(const std::array<int, 3>& at) const {
+    return {value(at[0]), value(at[1]), value(at[2])};
+  }
+};
+
+// The frame row of the atom an entry names (ids written as %g numbers: "51", "1e+06").
+std::int64_t row_of(const Entry& e, int column, const Frame& f, const std::string& frame_place) {
+  const double id = e.value(column);
+  const auto& ids = f.id();
+  const auto* end = ids.data() + ids.size();
+  const auto* found = std::lower_bound(ids.data(), end, static_cast<std::int64_t>(id));
+  if (id != std::floor(id) || found == end || static_cast<double>(*found) != id) {
+    throw InputError(e.at() + "expected the id of an atom of " + frame_place + " in column " +
+                     std::to_string(column + 1) + ", got " + format_number(id) +
+                     ", which it does not hold");
+  }
+  return found - ids.data();
+}
+
+Eigen::Vector3d centre(const Frame& f, std::int64_t row) {
+  return f.position().row(row).transpose().matrix();
+}
+
+Eigen::Vector3d separation(const Frame& f, std::int64_t i, std::int64_t j) {
+  Eigen::Vector3d d = centre(f, j) - centre(f, i);
+  for (int a = 0; a < 3; ++a) d[a] = f.container.minimum_image(a, d[a]);
+  return d;
+}
+
+Eigen::Vector3d wrapped(const Container& c, Eigen::Vector3d x) {
+  for (int a = 0; a < 3; ++a) x[a] = c.wrap(a, x[a]);
+  return x;
+}
+
+// The tangential force on atom 1: its own columns, the whole force less the normal one,
+// or NaN.
+Eigen::Vector3d tangential_of(const Entry& e, const ContactColumns& c, const Eigen::Vector3d& n) {
+  if (c.tangential[0] >= 0) return e.vector(c.tangential);
+  if (c.force[0] >= 0) return e.vector(c.force) - n;
+  return Eigen::Vector3d::Constant(kNaN);
+}
+
+ContactRow pair_row(const Entry& e, const ContactColumns& c, const Frame& f,
+                    const std::string& frame_place) {
+  ContactRow r;
+  r.i = row_of(e, c.id1, f, frame_place);
+  r.j = row_of(e, c.id2, f, frame_place);
+  if (r.i == r.j) {
+    throw InputError(e.at() + "expected two different atoms, got id " +
+                     std::to_string(f.id()[r.i]) + " twice");
+  }
+  const Eigen::Vector3d d = separation(f, r.i, r.j);
+  const double ri = f.radius()[r.i], rj = f.radius()[r.j];
+  r.overlap = c.overlap >= 0    ? e.value(c.overlap)
+              : c.distance >= 0 ? ri + rj - e.value(c.distance)
+                                : ri + rj - d.norm();
+  r.normal = e.vector(c.normal);
+  r.tangential = tangential_of(e, c, r.normal);
+  // The middle of the overlap, on the line of the centres, as the dem source places it.
+  r.point = wrapped(f.container, centre(f, r.i) + (ri - 0.5 * r.overlap) / d.norm() * d);
+  return r;
+}
+
+ContactRow wall_row(const Entry& e, const ContactColumns& c, const Frame& f,
+                    const std::string& frame_place) {
+  ContactRow r;
+  r.i = row_of(e, c.id1, f, frame_place);
+  const Eigen::Vector3d x = centre(f, r.i);
+  const double radius = f.radius()[r.i];
+  const auto touch = nearest_wall(f.container, c.point[0] >= 0 ? e.vector(c.point) : x);
+  if (!touch) {
+    throw InputError(e.at() +
+                     "expected a wall of the stated container for the wall contact of "
+                     "atom " +
+                     std::to_string(f.id()[r.i]) +
+                     ", got a container without walls "
+                     "(state its base, cylinder_radius or side_walls)");
+  }
+  r.j = partner::wall(touch->wall);
+  const double gap = nearest_wall(f.container, x)->distance;
+  r.overlap = c.overlap >= 0 ? e.value(c.overlap) : radius - gap;
+  r.normal = e.vector(c.normal);
+  r.tangential = tangential_of(e, c, r.normal);
+  r.point = c.point[0] >= 0 ? e.vector(c.point)
+                            : Eigen::Vector3d(x + (radius - 0.5 * r.overlap) * touch->normal);
+  return r;
+}
+
+}  // namespace
+
+ContactDump::ContactDump(std::string path, ContactColumns columns, bool wall,
+                         const std::string& param)
+    : lines_(std::move(path)),
+      index_(contact_snapshots(lines_)),
+      columns_(columns),
+      wall_(wall),
+      param_(param) {
+  if (index_.columns.size() != columns_.count) {
+    throw InputError(index_.columns_at + "expected " + std::to_string(columns_.count) +
+                     " columns, as " + param_ + "'s keywords give, got " +
+                     std::to_string(index_.columns.size()));
+  }
+  for (std::size_t k = 0; k < index_.snapshots.size(); ++k)
+    by_timestep_.emplace(index_.snapshots[k].timestep, k);
+}
+
+void ContactDump::check_timesteps(const DumpIndex& atoms, const std::string& atom_file) const {
+  const std::int64_t last = atoms.snapshots.back().timestep;
+  for (const SnapshotStart& s : index_.snapshots) {
+    const bool matched =
+        std::any_of(atoms.snapshots.begin(), atoms.snapshots.end(),
+                    [&](const SnapshotStart& a) { return a.timestep == s.timestep; });
+    if (matched || (atoms.cut && s.timestep > last)) continue;
+    throw InputError(path() + ": timestep " + std::to_string(s.timestep) + ", line " +
+                     std::to_string(s.line_before + 1) + ": expected a snapshot of " + atom_file +
+                     "'s timesteps, got one " + atom_file + " does not have");
+  }
+}
+
+void ContactDump::read(const Frame& frame, const std::string& frame_place,
+                       std::vector<ContactRow>& rows) {
+  const auto found = by_timestep_.find(frame.step);
+  if (found == by_timestep_.end()) {
+    throw InputError(path() + ": expected a snapshot of timestep " + std::to_string(frame.step) +
+                     " (" + frame_place + "), got none");
+  }
+  const SnapshotStart& start = index_.snapshots[found->second];
+  lines_.seek(start.offset, start.line_before);
+  std::string line;
+  std::vector<std::string_view> words;
+  try {
+    next_line_of(SnapshotPlace{path(), start.line_before + 1}, lines_, line);
+    const SnapshotHeader h = read_header(path(), lines_, line, kLocalDump);
+    for (std::int64_t k = 0; k < h.atoms; ++k) {
+      next_line_of(h.place, lines_, line);
+      split_words(line, words);
+      const Entry e{h.place, lines_.number(), words};
+      if (words.size() != columns_.count) {
+        throw InputError(e.at() + "expected " + std::to_string(columns_.count) + " values, as " +
+                         param_ + "'s keywords give, got " + std::to_string(words.size()) + ": " +
+                         quoted(trimmed(line)));
+      }
+      rows.push_back(wall_ ? wall_row(e, columns_, frame, frame_place)
+                           : pair_row(e, columns_, frame, frame_place));
+    }
+  } catch (const SnapshotCut& cut) {
+    throw InputError(path() + ": expected " + cut.place.name() +
+                     " to be complete, as it was when the source started, got a shorter file");
+  }
+}
+
+void fill_contacts(const std::vector<ContactRow>& rows, bool tangential, Frame& frame) {
+  PropertyTable& table = frame.add_contacts(static_cast<Eigen::Index>(rows.size()));
+  auto& overlap = table.add<Eigen::ArrayXd>(*find_standard("overlap", Scope::Contact));
+  auto& normal = table.add<Coordinates>(*find_standard("normal_force", Scope::Contact));
+  auto& point = table.add<Coordinates>(*find_standard("point", Scope::Contact));
+  Coordinates* tangent =
+      tangential ? &table.add<Coordinates>(*find_standard("tangential_force", Scope::Contact))
+                 : nullptr;
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    const auto r = static_cast<Eigen::Index>(k);
+    frame.contact_i()[r] = rows[k].i;
+    frame.contact_j()[r] = rows[k].j;
+    overlap[r] = rows[k].overlap;
+    normal.row(r) = rows[k].normal.transpose();
+    point.row(r) = rows[k].point.transpose();
+    if (tangent) tangent->row(r) = rows[k].tangential.transpose();
+  }
+}
+
+}  // namespace granpipe::lammps_dump

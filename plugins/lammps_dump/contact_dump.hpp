@@ -1,0 +1,54 @@
+#pragma once
+// A `dump local` of contacts (LIGGGHTS pair/gran/local or wall/gran/local, LAMMPS
+// pair/local with property/local), joined to the atom dump's frames by TIMESTEP: each
+// entry becomes a contact row of the frame whose snapshot has its timestep, its atoms
+// found by id among that snapshot's.
+#include <Eigen/Core>
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "contact_columns.hpp"
+#include "dump_index.hpp"
+#include "granpipe/frame.hpp"
+#include "text_lines.hpp"
+
+namespace granpipe::lammps_dump {
+
+struct ContactRow {
+  std::int64_t i = 0, j = 0;  // frame rows; j a wall partner for a wall contact
+  double overlap = 0.0;
+  Eigen::Vector3d normal, tangential, point;  // tangential NaN when the dump has none
+};
+
+class ContactDump {
+ public:
+  // `param` names the file's parameter in messages. Indexes the file (InputError as the
+  // atom dump's reader gives them, for a dump local).
+  ContactDump(std::string path, ContactColumns columns, bool wall, const std::string& param);
+
+  // InputError for a snapshot whose timestep no snapshot of the atom dump has (past the
+  // last complete one of an atom dump that was cut, snapshots are let be).
+  void check_timesteps(const DumpIndex& atoms, const std::string& atom_file) const;
+  // Appends the contacts of the snapshot of the frame's step. InputError for a frame whose
+  // step the file has no snapshot of, an entry line with other values than the columns
+  // say, or an atom id the frame does not hold.
+  void read(const Frame& frame, const std::string& frame_place, std::vector<ContactRow>& rows);
+  bool has_tangential() const { return columns_.tangential[0] >= 0 || columns_.force[0] >= 0; }
+  const std::string& path() const { return lines_.path(); }
+
+ private:
+  TextLines lines_;
+  DumpIndex index_;
+  ContactColumns columns_;
+  bool wall_;
+  std::string param_;
+  std::unordered_map<std::int64_t, std::size_t> by_timestep_;
+};
+
+// The frame's contact table from these rows: i, j, overlap, normal_force, point, and
+// tangential_force when `tangential`.
+void fill_contacts(const std::vector<ContactRow>& rows, bool tangential, Frame& frame);
+
+}  // namespace granpipe::lammps_dump

@@ -1,0 +1,34 @@
+#include "wall_partner.hpp"
+
+#include <cmath>
+
+namespace granpipe::lammps_dump {
+
+std::optional<WallTouch> nearest_wall(const Container& c, const Eigen::Vector3d& point) {
+  std::optional<WallTouch> best;
+  auto offer = [&](Wall w, const Eigen::Vector3d& normal, double distance) {
+    if (!best || std::abs(distance) < std::abs(best->distance)) best = {w, normal, distance};
+  };
+  const bool cylinder = c.shape == ContainerShape::Cylinder;
+  for (int a = 0; a < 3; ++a) {
+    if (cylinder && a < 2) continue;  // the side of a cylinder is one round wall
+    for (int side = 0; side < 2; ++side) {
+      if (c.boundary[a][side] != Boundary::Wall) continue;
+      const double wall = (side == 0 ? c.lo[a] : c.hi[a]) + c.wall_offset[a];
+      Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+      normal[a] = side == 0 ? -1.0 : 1.0;
+      offer(static_cast<Wall>(2 * a + side), normal, side == 0 ? point[a] - wall : wall - point[a]);
+    }
+  }
+  if (cylinder) {
+    const Eigen::Vector2d axis = c.cylinder_center + c.wall_offset.head<2>();
+    const Eigen::Vector2d out = point.head<2>() - axis;
+    const double r = out.norm();
+    const Eigen::Vector3d normal =
+        r > 0 ? Eigen::Vector3d(out[0] / r, out[1] / r, 0.0) : Eigen::Vector3d::UnitX();
+    offer(Wall::CylinderSide, normal, c.cylinder_radius - r);
+  }
+  return best;
+}
+
+}  // namespace granpipe::lammps_dump
