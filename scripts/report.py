@@ -19,7 +19,8 @@ import sys
 TABLE_ROWS_SHOWN = 12  # a long table is cut on the page; its CSV file has every row
 SWEEP_ROWS_SHOWN = 100  # the sweep's summary: a row per point
 MARKED_POINTS = 60  # a line of more points is drawn without a marker at each (page size)
-MAX_LEGEND_LINES = 12  # more lines than this make a legend that hides the plot
+MAX_LEGEND_LINES = 12
+MAX_SWEEP_LINES = 24  # a sweep's plots draw at most this many points (the page's size)  # more lines than this make a legend that hides the plot
 
 
 def refuse(message):
@@ -222,10 +223,17 @@ def sweep_section(plt, results):
     parts = ["<h3 id=sweep>sweep</h3>",
              table_section("sweep", "points", points, SWEEP_ROWS_SHOWN)]
     labels = point_labels(results)
+    drawn = sorted(labels)
+    if len(drawn) > MAX_SWEEP_LINES:  # evenly spaced points, the first and the last among them
+        step = (len(drawn) - 1) / (MAX_SWEEP_LINES - 1)
+        drawn = [drawn[round(k * step)] for k in range(MAX_SWEEP_LINES)]
+    which = "every point" if len(drawn) == len(labels) else f"{len(drawn)} of {len(labels)} points"
     names = sorted({sub for p in labels for sub in results[p].keys()})
     for name in names:
-        groups = [(labels[p], results[p][name]) for p in sorted(labels) if name in results[p]]
-        parts.append(f"<h3 id=\"{html.escape(name)}\">{html.escape(name)}, every point</h3>"
+        groups = [(labels[p], results[p][name]) for p in drawn if name in results[p]]
+        if not groups:
+            continue
+        parts.append(f"<h3 id=\"{html.escape(name)}\">{html.escape(name)}, {which}</h3>"
                      + plots_section(plt, groups))
     parts.append("<p>Each point's tables, fits and scalars are in its CSV files (below).</p>")
     return "".join(parts)

@@ -84,6 +84,16 @@ with tempfile.TemporaryDirectory() as work:
     for eps in ("0.005", "0.05", "0.15"):
         check(f"epsilon = {eps}" in legend, f"sweep: no line of epsilon {eps} in {legend[:200]}")
 
+    # A long sweep draws a bounded number of its points (the page's size), and says so.
+    long_sweep = os.path.join(work, "long_sweep")
+    epsilons = ", ".join(f"{0.01 * (k + 1):g}" for k in range(30))
+    subprocess.run([exe, pipeline, *toy, "--no-report", "--set",
+                    f'sweep.parameters={{"source.params.epsilon": [{epsilons}]}}', "--out",
+                    long_sweep], check=True)
+    subprocess.run([exe, "report", long_sweep], check=True)
+    with open(os.path.join(long_sweep, "report.html")) as f:
+        check("compaction, 24 of 30 points" in f.read(), "a long sweep's plots: no bound said")
+
     # No matplotlib: a module of that name that fails to import stands for its absence.
     hidden = os.path.join(work, "hidden")
     os.makedirs(os.path.join(hidden, "matplotlib"))
