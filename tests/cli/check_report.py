@@ -1,5 +1,5 @@
 """report.html at the end of a run: the provenance, each declared plot drawn (an SVG with
-the declared axis labels, points in it), the scalars and fits; a sweep's plots with one line
+the declared axis labels, points in it), the scalars and fits, the last saved frame drawn; a sweep's plots with one line
 per point; `granpipe report` on demand; --no-report; without matplotlib the tables still
 shown and the page says why; a folder that is no run refused in one line with exit 2."""
 import json
@@ -61,7 +61,7 @@ def check(condition, message):
 with tempfile.TemporaryDirectory() as work:
     single = os.path.join(work, "single")
     subprocess.run([exe, pipeline, *toy, "--set", 'sweep.parameters={"source.params.epsilon": '
-                    '[0.05]}', "--out", single], check=True)
+                    '[0.05]}', "--set", "output.save_frames=true", "--out", single], check=True)
     page = Page(os.path.join(single, "report.html"))
     with open(os.path.join(single, "pipeline.json")) as f:
         seed = json.load(f)["seed"]
@@ -73,6 +73,10 @@ with tempfile.TemporaryDirectory() as work:
             check(any(label in t for t in figure["text"]), f"{plot}: no axis {label}")
             check(figure["paths"] > 4, f"{plot}: {figure['paths']} paths: nothing drawn")
     check("X_inf" in page.cells, "the Eq. (3) fit's parameters are not shown")
+    # The saved frames' last one drawn: a side view, a section per sphere in the slab.
+    picture = page.figures.get("configuration", {"text": [], "paths": 0})
+    check(any("side view" in t for t in picture["text"]) and picture["paths"] > 4,
+          f"configuration: {picture['paths']} paths, {picture['text'][:6]}")
 
     sweep = os.path.join(work, "sweep")
     subprocess.run([exe, pipeline, *toy, "--no-report", "--out", sweep], check=True)
