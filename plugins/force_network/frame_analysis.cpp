@@ -90,7 +90,7 @@ std::vector<double> per_frame_row(long index, double time, Eigen::Index particle
           fit.error[kB],
           fit.value[kBeta],
           fit.error[kBeta],
-          fit.dof > 0 && fit.fitted() ? fit.chi2 / fit.dof : 0.0};
+          fit.dof > 0 && fit.fitted() ? fit.chi2 / fit.dof : std::nan("")};
 }
 
 }  // namespace granpipe::force_network

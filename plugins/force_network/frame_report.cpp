@@ -34,9 +34,9 @@ void add_fit(Results& results, const std::string& name, const PdfFit& fit, const
 void add_pdf_table(const PaperFrame& p, Results& results) {
   Table t({"f_lo", "f_hi", "f", "density", "error", "count", "eq11"},
           "PDF of f = |F_n|/<F_n> over the force-network contacts of the paper's frame, with "
-          "the Eq. (11) fit at the bin centre (0 when not fitted)");
+          "the Eq. (11) fit at the bin centre (NaN when not fitted)");
   for (std::size_t k = 0; k < p.pdf.bins(); ++k) {
-    const double model = p.fit.fitted() ? eq13(p.fit.value, p.pdf.centre(k)) : 0.0;
+    const double model = p.fit.fitted() ? eq13(p.fit.value, p.pdf.centre(k)) : std::nan("");
     t.add_row({p.pdf.edges[k], p.pdf.edges[k + 1], p.pdf.centre(k), p.pdf.density(k),
                p.pdf.error(k), p.pdf.counts[k], model});
   }
@@ -77,8 +77,8 @@ void add_pass_fits(const PaperFrame& p, Results& results) {
           "Eq. (13) fits of the PDF of the contacts of passes 1..k: free (a, b, alpha, beta; "
           "gamma = 0) and shift (a, b, beta of the full network's Eq. (11) fit; alpha, gamma "
           "free); status 0 fitted, 1 too few samples, 2 no convergence, 3 no reference fit, 4 "
-          "a parameter not determined; values 0 when not fitted");
-  const auto per_dof = [](const PdfFit& f) { return f.fitted() ? f.chi2 / f.dof : 0.0; };
+          "a parameter not determined; values NaN when not fitted");
+  const auto per_dof = [](const PdfFit& f) { return f.fitted() ? f.chi2 / f.dof : std::nan(""); };
   for (const PassSubset& s : p.passes) {
     const Parameters &fv = s.free_fit.value, &fe = s.free_fit.error;
     const Parameters &sv = s.shift_fit.value, &se = s.shift_fit.error;

@@ -73,7 +73,9 @@ FitStatus status_of(CurveFitStatus s) {
 PdfFit pdf_fit_of(const CurveFit& c, const BinMeanModel& m) {
   PdfFit fit;
   fit.status = status_of(c.status);
+  if (!fit.fitted()) return fit;
   fit.value = m.parameters(c.value);
+  fit.error.fill(0.0);
   for (std::size_t q = 0; q < m.moved.size(); ++q)
     fit.error[m.moved[q]] = c.error[static_cast<Eigen::Index>(q)];
   fit.fitted_parameters = m.moved;

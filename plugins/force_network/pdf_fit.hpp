@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -45,12 +46,19 @@ struct FitRequest {
   long min_samples = 100;  // fewer samples: not fitted
 };
 
+// NaN in every parameter: a fit that was not made has no values, never 0.
+inline Parameters undefined_parameters() {
+  Parameters p;
+  p.fill(std::numeric_limits<double>::quiet_NaN());
+  return p;
+}
+
 struct PdfFit {
   FitStatus status = FitStatus::TooFewSamples;
-  Parameters value{};                  // 0 when not fitted
-  Parameters error{};                  // 0 for fixed parameters and when not fitted
-  std::vector<int> fitted_parameters;  // the free ones, in Parameter order
-  Eigen::MatrixXd covariance;          // of the free ones, scaled as the errors are
+  Parameters value = undefined_parameters();  // NaN when not fitted
+  Parameters error = undefined_parameters();  // 0 for fixed parameters; NaN when not fitted
+  std::vector<int> fitted_parameters;         // the free ones, in Parameter order
+  Eigen::MatrixXd covariance;                 // of the free ones, scaled as the errors are
   double chi2 = 0.0;
   int dof = 0;
   bool fitted() const { return status == FitStatus::Fitted; }

@@ -158,13 +158,16 @@ TEST(ForceNetwork, PdfIsANormalisedDensity) {
   EXPECT_NEAR(pdf.column("f_hi").back(), 2.4, 1e-12);  // largest f = 6 / 2.5, whole bins of 0.2
 }
 
-TEST(ForceNetwork, TooFewSamplesAreNotFittedAndNothingIsNaN) {
+// Too few samples: the fit is undefined (NaN, not 0), every measured statistic finite.
+TEST(ForceNetwork, TooFewSamplesAreNotFittedAndOnlyTheFitIsNaN) {
   const Outcome r = run(frame_of(kTable));
   EXPECT_EQ(r.results.scalar("eq11_status").value, 1.0);  // too few samples
   EXPECT_TRUE(r.results.fits().empty());
+  const std::set<std::string> fit = {"a",        "a_err",        "b",   "b_err", "beta",
+                                     "beta_err", "chi2_per_dof", "eq11"};
   for (const auto& [name, t] : r.results.tables()) {
-    for (const auto& column : t.data) {
-      for (double x : column) EXPECT_TRUE(std::isfinite(x)) << name;
+    for (std::size_t c = 0; c < t.columns.size(); ++c) {
+      for (double x : t.data[c]) EXPECT_EQ(std::isnan(x), fit.contains(t.columns[c])) << name;
     }
   }
   for (const auto& [name, s] : r.results.scalars()) EXPECT_TRUE(std::isfinite(s.value)) << name;
@@ -172,11 +175,14 @@ TEST(ForceNetwork, TooFewSamplesAreNotFittedAndNothingIsNaN) {
 
 // No loaded contact (every force zero, or an empty contact table): <F_n> is 0/0 and there
 // is no network, so the mean force, the largest network's z and the PDF are undefined:
-// NaN, with one warning in run.log for the run. Counts stay counts: 0.
+// NaN, with one warning in run.log for the run, and so is the Eq. (11) fit that could not
+// be made (its parameters, errors, chi^2 per dof and curve). Counts stay counts: 0.
 TEST(ForceNetwork, WithoutLoadedContactsTheStatisticsAreUndefinedNotZero) {
   std::vector<ContactSpec> unloaded = kTable;
   for (ContactSpec& s : unloaded) s.force = 0.0;
-  const std::set<std::string> undefined = {"mean_force", "z_largest", "density", "error"};
+  const std::set<std::string> undefined = {
+      "mean_force", "z_largest", "density",  "error",        "a",   "a_err", "b",
+      "b_err",      "beta",      "beta_err", "chi2_per_dof", "eq11"};
   for (const auto& table : {unloaded, std::vector<ContactSpec>{}}) {
     const auto ctx = test::make_context("force_network");
     ctx->keep_log();
@@ -207,15 +213,13 @@ TEST(ForceNetwork, WithoutLoadedContactsTheStatisticsAreUndefinedNotZero) {
 // All forces equal: f = 1 for every contact, a PDF that is one spike (five bins of 0.2, the
 // last one full), which Eq. (11) cannot follow: the minimiser fails, and that is a status,
 // with finite (zero) values.
-TEST(ForceNetwork, ASpikeOfEqualForcesIsNotFittedAndStaysFinite) {
+// Not fitted is undefined: NaN values and errors, never a 0 that reads as a result.
+TEST(ForceNetwork, ASpikeOfEqualForcesIsNotFittedAndReportedUndefined) {
   std::vector<double> f(500, 1.0);
   const PdfFit fit = fit_pdf(force_pdf(f, pdf_edges(f, 0.0, 0.2)), eq11_request(100));
   EXPECT_EQ(fit.status, FitStatus::NotConverged);
   for (int q = 0; q < kParameters; ++q) {
-    EXPECT_TRUE(std::isfinite(fit.value[q]) && std::isfinite(fit.error[q])) << kParameterNames[q];
-    if (!fit.fitted()) {
-      EXPECT_EQ(fit.value[q], 0.0);
-    }
+    EXPECT_TRUE(std::isnan(fit.value[q]) && std::isnan(fit.error[q])) << kParameterNames[q];
   }
   EXPECT_TRUE(std::isfinite(fit.chi2));
 }
@@ -324,8 +328,8 @@ TEST(ForceNetwork, AParameterTheDataDoNotDetermineIsNotReportedAsFitted) {
   EXPECT_EQ(fit.status, FitStatus::NotDetermined)
       << fit.value[kAlpha] << " +- " << fit.error[kAlpha];
   EXPECT_STREQ(describe(fit.status), "not fitted: a parameter is not determined by the data");
-  EXPECT_EQ(fit.value[kAlpha], 0.0);
-  EXPECT_EQ(fit.error[kAlpha], 0.0);
+  EXPECT_TRUE(std::isnan(fit.value[kAlpha]));
+  EXPECT_TRUE(std::isnan(fit.error[kAlpha]));
 
   // A peak (b < 0) the data hold no trace of: the fit keeps it inside the bins, where
   // alpha is determined.
