@@ -249,8 +249,10 @@ def configuration_svg(plt, frame):
     arch = columns.get("arch")
     colours = ["#c8c8c8" if arch is None or a < 0 else plt.cm.tab20(int(a) % 20)
                for a in (arch if arch is not None else np.full(len(r), -1))]
-    fig, ax = plt.subplots(figsize=(6.4, 6.4))
     index = np.flatnonzero(shown)
+    extent = np.ptp(xy[index], axis=0) + 2.0 * r.max()
+    tall = float(np.clip(extent[1] / extent[0], 0.5, 2.0))  # a tall bed drawn tall, within reason
+    fig, ax = plt.subplots(figsize=(6.4, 6.4 * tall))
     ax.add_collection(PatchCollection([Circle(xy[k], size[k]) for k in index],
                                       facecolors=[colours[k] for k in index], edgecolors="k",
                                       linewidths=0.2))
