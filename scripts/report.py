@@ -11,7 +11,6 @@ says so and shows the tables. The page is written under a temporary name and ren
 a reader never sees half a page and nothing else in RUN_DIR is touched."""
 import html
 import io
-import json
 import math
 import os
 import sys
@@ -335,9 +334,6 @@ def provenance_section(attrs, partial):
     keys = ["pipeline_name", "granpipe_version", "git_commit", "seed", "threads", "started",
             "wall_seconds"]
     rows = [[k, text(attrs[k])] for k in keys if k in attrs]
-    if "stage_seconds" in attrs:
-        for stage, seconds in json.loads(text(attrs["stage_seconds"])).items():
-            rows.append([f"seconds in {stage}", number(float(seconds))])
     state = ("<p class=note>this run has not finished (or was stopped): the results so far, "
              "from results.partial.h5</p>" if partial else "")
     return "<h2>Provenance</h2>" + state + html_table(None, rows)

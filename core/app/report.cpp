@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "granpipe/plugin_loader.hpp"
 
 extern char** environ;
 
@@ -20,10 +21,8 @@ namespace {
 // never from code of our own), so it is a Python script, installed beside the plugins'
 // tree: <prefix>/share/granpipe/report.py, which the build tree mirrors.
 fs::path report_script() {
-  std::error_code ec;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (ec) return {};
-  return exe.parent_path().parent_path() / "share" / "granpipe" / "report.py";
+  const fs::path bin = executable_dir();
+  return bin.empty() ? fs::path() : bin.parent_path() / "share" / "granpipe" / "report.py";
 }
 
 }  // namespace

@@ -14,15 +14,15 @@
 namespace granpipe {
 namespace fs = std::filesystem;
 
-namespace {
-constexpr const char* kPrefix = "granpipe_";
-constexpr const char* kEntrySymbol = "granpipe_plugin";
-
 fs::path executable_dir() {
   std::error_code ec;
   fs::path exe = fs::read_symlink("/proc/self/exe", ec);
   return ec ? fs::path() : exe.parent_path();
 }
+
+namespace {
+constexpr const char* kPrefix = "granpipe_";
+constexpr const char* kEntrySymbol = "granpipe_plugin";
 
 // The plugin name a library file promises, from its name granpipe_<name>.so.
 std::string promised_name(const fs::path& lib) {

@@ -1,5 +1,7 @@
 #include "run_parts.hpp"
 
+#include <optional>
+
 #include "granpipe/errors.hpp"
 
 namespace granpipe::h5md {
@@ -51,15 +53,15 @@ void RunParts::append(std::size_t part, const std::string& name) {
   }
   if (reader.frames() == 0) return;
   const Frame start = reader.read(0);
-  while (!order_.empty() && read(frames() - 1).step > start.step) order_.pop_back();
+  std::optional<Frame> saved;  // the last frame kept so far, read once per step back
+  while (!order_.empty() && (saved = read(frames() - 1))->step > start.step) order_.pop_back();
   const std::string not_continued = name + ": " + reader.info().path + " starts at step " +
                                     std::to_string(start.step) + ", expected a frame that ";
-  if (order_.empty() || read(frames() - 1).step != start.step) {
+  if (order_.empty() || saved->step != start.step) {
     throw InputError(not_continued + "the parts before it hold (not a continuation of them)");
   }
-  const Frame saved = read(frames() - 1);
-  if ((saved.position().array() != start.position().array()).any() ||
-      (saved.radius() != start.radius()).any()) {
+  if ((saved->position().array() != start.position().array()).any() ||
+      (saved->radius() != start.radius()).any()) {
     throw InputError(not_continued + "the parts before it hold, got another packing at " +
                      where(frames() - 1) + " (not a continuation of it)");
   }

@@ -16,17 +16,6 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-DumpIndex contact_snapshots(TextLines& lines) {
-  DumpIndex index = index_snapshots(lines, kLocalDump);
-  if (index.snapshots.empty()) {
-    throw InputError(lines.path() +
-                     ": expected a complete snapshot, got none: the file ends "
-                     "inside " +
-                     index.cut->name());
-  }
-  return index;
-}
-
 // The words of one entry line and where they are, for its values and messages.
 struct Entry {
   const SnapshotPlace& place;
@@ -136,7 +125,7 @@ ContactRow wall_row(const Entry& e, const ContactColumns& c, const Frame& f,
 ContactDump::ContactDump(std::string path, ContactColumns columns, bool wall,
                          const std::string& param)
     : lines_(std::move(path)),
-      index_(contact_snapshots(lines_)),
+      index_(complete_snapshots(lines_, kLocalDump)),
       columns_(columns),
       wall_(wall),
       param_(param) {

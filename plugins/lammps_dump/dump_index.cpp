@@ -97,4 +97,15 @@ DumpIndex index_snapshots(TextLines& lines, const DumpKind& kind) {
   return index;
 }
 
+DumpIndex complete_snapshots(TextLines& lines, const DumpKind& kind) {
+  DumpIndex index = index_snapshots(lines, kind);
+  if (index.snapshots.empty()) {
+    throw InputError(lines.path() +
+                     ": expected a complete snapshot, got none: the file ends "
+                     "inside " +
+                     index.cut->name());
+  }
+  return index;
+}
+
 }  // namespace granpipe::lammps_dump

@@ -34,4 +34,7 @@ struct DumpIndex {
 // lines more or fewer than NUMBER OF ATOMS.
 DumpIndex index_snapshots(TextLines& lines, const DumpKind& kind = kAtomDump);
 
+// index_snapshots, and InputError when the file holds no complete snapshot.
+DumpIndex complete_snapshots(TextLines& lines, const DumpKind& kind = kAtomDump);
+
 }  // namespace granpipe::lammps_dump

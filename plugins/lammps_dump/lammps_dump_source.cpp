@@ -14,17 +14,6 @@ namespace granpipe::lammps_dump {
 
 namespace {
 
-DumpIndex complete_snapshots(TextLines& lines) {
-  DumpIndex index = index_snapshots(lines);
-  if (index.snapshots.empty()) {
-    throw InputError(lines.path() +
-                     ": expected a complete snapshot, got none: the file ends "
-                     "inside " +
-                     index.cut->name());
-  }
-  return index;
-}
-
 std::vector<std::string> keywords(const std::string& text) {
   std::vector<std::string> out;
   for (std::string_view w : words(text)) out.emplace_back(w);

@@ -37,12 +37,6 @@ Radii radii_of(const Frame& frame) {
   return {frame.radius().mean(), large, large - small <= kEqualRadii * large};
 }
 
-bool inside(const Region& r, const Eigen::Vector3d& x) {
-  for (int a = 0; a < 3; ++a)
-    if (!(x[a] >= r.lo[a] && x[a] < r.hi[a])) return false;
-  return true;
-}
-
 // The box along periodic axes, everything along the others: each pore of a periodic
 // packing once. The box is moved down by half the merge tolerance: lattices put pores
 // exactly on its sides, where rounding would keep both images of a pore, or none.
@@ -57,7 +51,7 @@ Region primary_cell(const Container& c, double shift) {
 
 long count_inside(const Region& r, const std::vector<Eigen::Vector3d>& points) {
   return std::count_if(points.begin(), points.end(),
-                       [&](const Eigen::Vector3d& x) { return inside(r, x); });
+                       [&](const Eigen::Vector3d& x) { return in_box(r, x); });
 }
 
 double shortest_period(const Container& c) {
@@ -114,7 +108,7 @@ struct Measure {
     MergedPores merged = merge_cells(cells, radii.mean, tolerance, threads);
     found.flat_cells = merged.flat_cells;
     found.pores = std::move(merged.pores);
-    std::erase_if(found.pores, [&](const Pore& p) { return !inside(primary, p.centre); });
+    std::erase_if(found.pores, [&](const Pore& p) { return !in_box(primary, p.centre); });
     found.volumes =
         radii.equal ? voronoi_volumes(std::move(extents), cells, centres, frame, length(), threads)
                     : laguerre_volumes(centres, frame, length(), threads);
@@ -139,7 +133,7 @@ struct Measure {
                            const Centres& centres) const {
     double needed = skin_for_cells(extents, centres);
     for (const DelaunayCell& c : cells) {
-      if (!c.flat && inside(primary, c.centre) && counted(c.centre))
+      if (!c.flat && in_box(primary, c.centre) && counted(c.centre))
         needed = std::max(needed, c.radius + radii.largest - radii.mean);
     }
     return needed;

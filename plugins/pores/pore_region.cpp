@@ -35,10 +35,14 @@ double packing_side(const Frame& f, int axis, int high) {
   return b == Boundary::Wall ? wall + c.wall_offset[axis] : wall;
 }
 
-bool PoreRegion::contains(const Eigen::Vector3d& x) const {
+bool in_box(const Region& r, const Eigen::Vector3d& x) {
   for (int a = 0; a < 3; ++a)
-    if (!(x[a] >= box.lo[a] && x[a] < box.hi[a])) return false;
-  return (x.head<2>() - axis).squaredNorm() < radius * radius;
+    if (!(x[a] >= r.lo[a] && x[a] < r.hi[a])) return false;
+  return true;
+}
+
+bool PoreRegion::contains(const Eigen::Vector3d& x) const {
+  return in_box(box, x) && (x.head<2>() - axis).squaredNorm() < radius * radius;
 }
 
 namespace {

@@ -36,6 +36,9 @@ struct PoreRegion {
   bool contains(const Eigen::Vector3d& x) const;
 };
 
+// Whether x lies in the half-open box [lo, hi) of `r`.
+bool in_box(const Region& r, const Eigen::Vector3d& x);
+
 // Where the packing ends on one side of an axis (high: 1 for the upper side): the wall
 // (moved by the wall offset), the box side along a periodic axis, the outermost particle
 // surface at an open side.

@@ -11,6 +11,10 @@ namespace granpipe {
 // separated), then the plugin directory of the executable's own prefix (build or install).
 std::vector<std::filesystem::path> plugin_search_path();
 
+// The directory of the running executable (empty if unknown): the build and install trees
+// place the plugins and the report script relative to it.
+std::filesystem::path executable_dir();
+
 // What the loader saw, for the messages of `granpipe plugins` and of a plugin not found.
 struct LoadReport {
   std::vector<std::filesystem::path> searched;  // the directories, in order
