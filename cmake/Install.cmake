@@ -4,6 +4,9 @@ install(TARGETS granpipe_core EXPORT granpipeTargets
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(TARGETS granpipe RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(PROGRAMS scripts/report.py DESTINATION ${CMAKE_INSTALL_DATADIR}/granpipe)
+list(REMOVE_ITEM GRANPIPE_REPORT_SCRIPTS report.py)
+list(TRANSFORM GRANPIPE_REPORT_SCRIPTS PREPEND scripts/ OUTPUT_VARIABLE report_modules)
+install(FILES ${report_modules} DESTINATION ${CMAKE_INSTALL_DATADIR}/granpipe)
 install(DIRECTORY core/include/granpipe DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
         FILES_MATCHING PATTERN "*.hpp")
 install(FILES ${PROJECT_BINARY_DIR}/core/include/granpipe/version.hpp

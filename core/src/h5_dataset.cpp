@@ -317,6 +317,12 @@ void write_attribute(hid_t object, const std::string& name, const std::vector<in
   write_raw_attribute(object, name, type.id(), space.id(), values.data());
 }
 
+void write_attribute(hid_t object, const std::string& name, const std::vector<double>& values) {
+  const hsize_t n = values.size();
+  Object space = owned(H5Screate_simple(1, &n, nullptr), name + ": cannot make the dataspace");
+  write_raw_attribute(object, name, H5T_IEEE_F64LE, space.id(), values.data());
+}
+
 void write_attribute(hid_t object, const std::string& name, int value) {
   Object space = owned(H5Screate(H5S_SCALAR), name + ": cannot make the dataspace");
   write_raw_attribute(object, name, H5T_STD_I32LE, space.id(), &value);

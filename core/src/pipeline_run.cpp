@@ -14,12 +14,14 @@
 
 #include "frames_file_writer.hpp"
 #include "granpipe/atomic_file.hpp"
+#include "granpipe/format_number.hpp"
 #include "granpipe/frame_store.hpp"
 #include "interruption_record.hpp"
 #include "output_directory.hpp"
 #include "pipeline_impl.hpp"
 #include "published_columns.hpp"
 #include "result_stream.hpp"
+#include "stage_clock.hpp"
 
 namespace granpipe {
 namespace fs = std::filesystem;
@@ -162,7 +164,18 @@ std::unique_ptr<Writer> frames_file(const Pipeline::Impl& p, std::size_t k, cons
 struct PointOutcome {
   ResultSet results;
   long frames = 0;
+  std::vector<double> stage_seconds;  // in the order of stage_names()
 };
+
+// The stages a point's time is measured in: the source, the analyzers, the writers, and
+// the frames file when the run saves frames.
+std::vector<std::string> stage_names(const Pipeline::Impl& p) {
+  std::vector<std::string> names{"source " + p.source->name};
+  for (const PluginSpec& a : p.analyzers) names.push_back("analyzer " + a.name);
+  for (const PluginSpec& w : p.writers) names.push_back("writer " + w.name);
+  if (p.save_frames) names.push_back("frames file");
+  return names;
+}
 
 PointOutcome run_point(const Pipeline::Impl& p, std::size_t k, PointPlugins plugins,
                        const ResultStream& stream, Progress& progress, const fs::path& out) {
@@ -192,22 +205,33 @@ PointOutcome run_point(const Pipeline::Impl& p, std::size_t k, PointPlugins plug
     published.push_back(p.analyzers[a].publish ? plugins.analyzers[a]->publishes()
                                                : std::vector<Property>{});
   }
+  const std::size_t n_analyzers = plugins.analyzers.size(), n_writers = plugins.writers.size();
+  const std::size_t first_writer = 1 + n_analyzers, frames_stage = first_writer + n_writers;
+  StageClock clock(stage_names(p).size());
   for (;;) {
     throw_if_stop_requested();  // a SIGINT or SIGTERM: stop between frames, files whole
-    if (!located("source", [&] { return plugins.source->next(frame); })) break;
+    if (!clock.time(0,
+                    [&] { return located("source", [&] { return plugins.source->next(frame); }); }))
+      break;
     frame.check(where + " frame " + std::to_string(outcome.frames));
     cache.clear();
-    for (std::size_t a = 0; a < plugins.analyzers.size(); ++a) {
-      located("analyzers[" + std::to_string(a) + "]", [&] {
-        plugins.analyzers[a]->consume(frame, cache);
-        publish_columns(*plugins.analyzers[a], published[a], analyzer_title(p.analyzers[a]), frame);
+    for (std::size_t a = 0; a < n_analyzers; ++a) {
+      clock.time(1 + a, [&] {
+        located("analyzers[" + std::to_string(a) + "]", [&] {
+          plugins.analyzers[a]->consume(frame, cache);
+          publish_columns(*plugins.analyzers[a], published[a], analyzer_title(p.analyzers[a]),
+                          frame);
+        });
       });
     }
     if (outcome.frames % p.frame_stride == 0) {
-      for (std::size_t w = 0; w < plugins.writers.size(); ++w) {
-        located("writers[" + std::to_string(w) + "]", [&] { plugins.writers[w]->write(frame); });
+      for (std::size_t w = 0; w < n_writers; ++w) {
+        clock.time(first_writer + w, [&] {
+          located("writers[" + std::to_string(w) + "]", [&] { plugins.writers[w]->write(frame); });
+        });
       }
-      if (frames_h5) frames_h5->write(frame);  // it names its own file in its messages
+      // The frames file names itself in its messages.
+      if (frames_h5) clock.time(frames_stage, [&] { frames_h5->write(frame); });
     }
     for (const auto& columns : published) remove_published(columns, frame);
     stream.throw_if_failed();  // a full disk is the output's fault, not an analyzer's
@@ -217,15 +241,19 @@ PointOutcome run_point(const Pipeline::Impl& p, std::size_t k, PointPlugins plug
 
   const std::string prefix = point_prefix(p, k);
   Results source_results;
-  located("source", [&] { plugins.source->finish(source_results); });
+  clock.time(0, [&] { located("source", [&] { plugins.source->finish(source_results); }); });
   if (!source_results.empty()) outcome.results[prefix + "source"] = std::move(source_results);
-  for (std::size_t a = 0; a < plugins.analyzers.size(); ++a) {
+  for (std::size_t a = 0; a < n_analyzers; ++a) {
     Results r;
-    located("analyzers[" + std::to_string(a) + "]", [&] { plugins.analyzers[a]->finish(r); });
+    clock.time(1 + a, [&] {
+      located("analyzers[" + std::to_string(a) + "]", [&] { plugins.analyzers[a]->finish(r); });
+    });
     outcome.results[prefix + p.analyzers[a].name] = std::move(r);
   }
-  for (const auto& writer : plugins.writers) writer->close();
-  if (frames_h5) frames_h5->close();
+  for (std::size_t w = 0; w < n_writers; ++w)
+    clock.time(first_writer + w, [&] { plugins.writers[w]->close(); });
+  if (frames_h5) clock.time(frames_stage, [&] { frames_h5->close(); });
+  outcome.stage_seconds = clock.seconds();
   return outcome;
 }
 
@@ -337,6 +365,14 @@ void Pipeline::check(Log& log) const {
 
 namespace {
 
+// "time per stage: source spheres3d_tap 81.2 s, analyzer stereology 3.07 s, ...".
+std::string stage_times_line(const Provenance& p, std::size_t points) {
+  std::string line = points > 1 ? "time per stage, summed over the points:" : "time per stage:";
+  for (std::size_t s = 0; s < p.stage_names.size(); ++s)
+    line += (s ? ", " : " ") + p.stage_names[s] + " " + format_number(p.stage_seconds[s], 3) + " s";
+  return line;
+}
+
 RunSummary run_in_directory(const Pipeline::Impl& p, const RunOptions& options, Log& log) {
   const auto t0 = std::chrono::steady_clock::now();
   const std::string started = utc_now();
@@ -374,8 +410,8 @@ RunSummary run_in_directory(const Pipeline::Impl& p, const RunOptions& options, 
     const ClosesLog closing{log};
     const std::string resolved = p.resolved.dump(2);
     const auto provenance = [&](double seconds, bool complete) {
-      return Provenance{p.name,  resolved, version(), git_commit(), p.seed,
-                        threads, seconds,  started,   complete};
+      return Provenance{p.name,  resolved, version(), git_commit(), p.seed, threads,
+                        seconds, started,  complete,  {},           {}};
     };
     write_file_atomically(dir / "pipeline.json", resolved + "\n");
     // Until the run ends the streamed tables go to results.partial.h5, marked incomplete
@@ -411,14 +447,23 @@ RunSummary run_in_directory(const Pipeline::Impl& p, const RunOptions& options, 
     for (auto& e : errors)
       if (e) std::rethrow_exception(e);
 
+    Provenance ended = provenance(0.0, true);
+    ended.stage_names = stage_names(p);
+    ended.stage_seconds.assign(ended.stage_names.size(), 0.0);
     for (auto& o : outcomes) {
       summary.frames += o.frames;
       for (auto& [group, r] : o.results) summary.results.emplace(group, std::move(r));
+      for (std::size_t s = 0; s < o.stage_seconds.size(); ++s)
+        ended.stage_seconds[s] += o.stage_seconds[s];
     }
     if (p.points.size() > 1) summary.results["sweep"] = sweep_summary(p, summary.results);
     summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
-    write_results(dir, summary.results, provenance(summary.seconds, true));
+    ended.wall_seconds = summary.seconds;
+    log.info(stage_times_line(ended, p.points.size()));
+    summary.stage_names = ended.stage_names;
+    summary.stage_seconds = ended.stage_seconds;
+    write_results(dir, summary.results, ended);
     fs::remove(dir / "results.partial.h5");
     log.info("done: " + std::to_string(summary.frames) + " frame(s) in " +
              std::to_string(summary.seconds) + " s; results in " +

@@ -9,6 +9,7 @@
 #include "names.hpp"
 #include "param_validation.hpp"
 #include "pipeline_impl.hpp"
+#include "report_spec.hpp"
 #include "strict_json.hpp"
 #include "sweep.hpp"
 
@@ -162,7 +163,8 @@ Pipeline Pipeline::parse(const std::string& text, const std::string& origin,
   for (const auto& s : sets) impl->overrides.push_back(apply_set(root, s));
   const JsonLocation top = impl->top();
   check_keys(root,
-             {"name", "description", "seed", "source", "analyzers", "writers", "output", "sweep"},
+             {"name", "description", "seed", "source", "analyzers", "writers", "output", "sweep",
+              "report"},
              top);
 
   impl->base_dir = fs::path(origin).parent_path();
@@ -218,6 +220,9 @@ Pipeline Pipeline::parse(const std::string& text, const std::string& origin,
     assignments = expand_sweep(root["sweep"], top.child("sweep"), impl->sweep_paths);
     impl->shared_seeds = shared_sweep_seeds(root["sweep"], top.child("sweep"));
   }
+  std::set<std::string> producers{"source"};
+  for (const PluginSpec& a : impl->analyzers) producers.insert(a.name);
+  check_report_spec(root, top, producers, impl->sweep_paths);
   // A swept value comes from the file's sweep, even where a --set put one before.
   for (const auto& path : impl->sweep_paths) impl->overrides.push_back({path, ""});
   // Each point starts from the pipeline without its sweep, whose length would make

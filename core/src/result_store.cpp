@@ -212,6 +212,10 @@ void write_provenance(hid_t file, const Provenance& provenance) {
   write_attribute(file, "complete", static_cast<int>(provenance.complete));
   write_text_attribute(file, "pipeline", provenance.pipeline_json);
   write_text_attribute(file, "pipeline_name", provenance.pipeline_name);
+  if (!provenance.stage_names.empty()) {
+    write_attribute(file, "stage_names", provenance.stage_names);
+    write_attribute(file, "stage_seconds", provenance.stage_seconds);
+  }
 }
 
 // Every file is written under a temporary name and renamed only once all are written,

@@ -1,7 +1,9 @@
-"""report.html at the end of a run: the provenance, each declared plot drawn (an SVG with
-the declared axis labels, points in it), the scalars and fits, the last saved frame drawn; a sweep's plots with one line
-per point; `granpipe report` on demand; --no-report; without matplotlib the tables still
-shown and the page says why; a folder that is no run refused in one line with exit 2."""
+"""report.html at the end of a run: the provenance with the time per stage, each declared
+plot drawn (an SVG with the declared axis labels, points in it), the scalars and fits, the
+last saved frame drawn; a sweep's plots with one line per point; the pipeline's "report"
+section (a result against the swept parameter, the paper's values over a plot, speed against
+error); `granpipe report` on demand; --no-report; without matplotlib the tables still shown
+and the page says why; a folder that is no run refused in one line with exit 2."""
 import json
 import os
 import subprocess
@@ -66,6 +68,9 @@ with tempfile.TemporaryDirectory() as work:
     with open(os.path.join(single, "pipeline.json")) as f:
         seed = json.load(f)["seed"]
     check(str(seed) in page.cells and "git_commit" in page.cells, f"provenance: {page.cells[:14]}")
+    for stage in ("source spheres3d_tap", "analyzer packing", "analyzer compaction",
+                  "frames file"):
+        check(f"seconds in {stage}" in page.cells, f"provenance: no time of {stage}")
     for plot, label in (("plot-per_frame", "tap"),):
         figure = page.figures.get(plot)
         check(figure is not None, f"{plot} missing: {sorted(page.figures)}")
@@ -87,6 +92,28 @@ with tempfile.TemporaryDirectory() as work:
     legend = " ".join(page.figures.get("plot-per_frame", {"text": []})["text"])
     for eps in ("0.005", "0.05", "0.15"):
         check(f"epsilon = {eps}" in legend, f"sweep: no line of epsilon {eps} in {legend[:200]}")
+
+    # The pipeline's "report": phi_c against epsilon, the paper's values over it (and a note
+    # for values whose plot the run did not make), speed against error over epsilon.
+    declared = os.path.join(work, "declared")
+    report = {"sweep_plots": [{"name": "phi", "x": "source.params.epsilon",
+                               "y": ["compaction.phi_c_ss"], "xlabel": "the dilation"}],
+              "paper": [{"plot": "sweep/phi", "label": "values of a paper", "x": [0.05, 0.15],
+                         "y": [0.59, 0.6], "y_err": [0.01, 0.01]},
+                        {"plot": "compaction/no_such_plot", "label": "lost", "x": [1], "y": [1]}],
+              "speed_vs_error": {"knob": "source.params.epsilon", "time": "source.seconds",
+                                 "quantities": ["packing.phi"]}}
+    subprocess.run([exe, pipeline, *toy, "--set", "report=" + json.dumps(report), "--out",
+                    declared], check=True)
+    page = Page(os.path.join(declared, "report.html"))
+    phi = " ".join(page.figures.get("sweep-phi", {"text": []})["text"])
+    check("the dilation" in phi and "values of a paper" in phi, f"sweep plot phi: {phi[:300]}")
+    check(any("compaction/no_such_plot: this run has no such plot" in n for n in page.notes),
+          f"paper values without their plot: not said ({page.notes})")
+    with open(os.path.join(declared, "report.html")) as f:
+        speed_table = "<th>packing.phi_deviation</th>" in f.read()
+    check("speed-vs-error" in page.figures and speed_table,
+          f"speed against error: {sorted(page.figures)}, table {speed_table}")
 
     # A long sweep draws a bounded number of its points (the page's size), and says so.
     long_sweep = os.path.join(work, "long_sweep")

@@ -178,7 +178,7 @@ TEST(PipelineErrors, UnknownTopLevelKeyGetsDidYouMean) {
   EXPECT_EQ(
       e,
       "p.json: analyzer: unknown key (did you mean \"analyzers\"?); known: name, description, "
-      "seed, source, analyzers, writers, output, sweep");
+      "seed, source, analyzers, writers, output, sweep, report");
 }
 
 TEST(PipelineErrors, UnknownParameterGetsDidYouMean) {
@@ -416,6 +416,85 @@ TEST(PipelineErrors, AnAnalyzersRefusalInFinishNamesTheAnalyzer) {
     EXPECT_STREQ(e.what(), "p.json: analyzers[1]: expected at least 5 frames, got 4");
   }
   fs::remove_all(out);
+}
+
+// The "report" section is checked with the pipeline: a misspelled plot or column is
+// refused before the run, not missing from report.html after it.
+TEST(PipelineErrors, ReportSectionNamesWhatItExpected) {
+  const std::string sweep = R"(, "sweep": {"parameters": {"source.params.n": [10, 20]}})";
+  const auto with_report = [&](const std::string& report, const std::string& more = "") {
+    std::string text = kGood;
+    text.insert(text.rfind('}'), more + R"(, "report": )" + report);
+    return error_of(text);
+  };
+  EXPECT_EQ(with_report(R"({"papers": []})"),
+            "p.json: report.papers: unknown key (did you mean \"paper\"?); known: paper, "
+            "sweep_plots, speed_vs_error");
+  EXPECT_EQ(
+      with_report(R"({"paper": [{"plot": "meany/x", "label": "Fig. 1", "x": [1], "y": [2]}]})"),
+      "p.json: report.paper[0].plot: expected \"PRODUCER/NAME\" with PRODUCER one of meanx, "
+      "source, got \"meany/x\"");
+  EXPECT_EQ(
+      with_report(R"({"paper": [{"plot": "meanx/x", "label": "Fig. 1", "x": [1, 2], "y": [2]}]})"),
+      "p.json: report.paper[0].y: expected a list of 2 finite numbers, got [2]");
+  EXPECT_EQ(with_report(R"({"paper": [{"plot": "meanx/x", "label": "Fig. 1", "x": [1], "y": [2],)"
+                        R"( "y_err": [-1]}]})"),
+            "p.json: report.paper[0].y_err[0]: expected a finite number >= 0, got -1");
+  EXPECT_EQ(with_report(R"({"paper": [{"plot": "meanx/x", "x": [1], "y": [2]}]})"),
+            "p.json: report.paper[0].label: expected a value, got null");
+  EXPECT_EQ(
+      with_report(R"({"speed_vs_error": {"knob": "source.params.n", "time": "source.seconds",)"
+                  R"( "quantities": ["meanx.mean_x"]}})"),
+      "p.json: report.speed_vs_error.knob: expected a swept parameter, and so a sweep, got "
+      "\"source.params.n\"");
+  EXPECT_EQ(
+      with_report(R"({"speed_vs_error": {"knob": "source.params.frames", "time": "source.seconds",)"
+                  R"( "quantities": ["meanx.mean_x"]}})",
+                  sweep),
+      "p.json: report.speed_vs_error.knob: expected a swept parameter (source.params.n), got "
+      "\"source.params.frames\"");
+  EXPECT_EQ(
+      with_report(R"({"speed_vs_error": {"knob": "source.params.n", "time": "source.seconds",)"
+                  R"( "quantities": ["mean_x"]}})",
+                  sweep),
+      "p.json: report.speed_vs_error.quantities[0]: expected \"PRODUCER.NAME\" with PRODUCER "
+      "one of meanx, source, got \"mean_x\"");
+  EXPECT_EQ(
+      with_report(R"({"speed_vs_error": {"knob": "source.params.n", "time": "source.seconds",)"
+                  R"( "quantities": ["meanx.mean_x"]}})",
+                  sweep),
+      "no error");
+  const std::string plot = R"({"name": "mean", "x": "source.params.n", "y": ["meanx.mean_x"]})";
+  EXPECT_EQ(with_report(R"({"sweep_plots": [)" + plot + ", " + plot + "]}", sweep),
+            "p.json: report.sweep_plots[1].name: expected a name no other sweep plot has, got "
+            "\"mean\"");
+  const std::string paper = R"(], "paper": [{"label": "Fig. 3", "x": [1], "y": [1], "plot": )";
+  EXPECT_EQ(with_report(R"({"sweep_plots": [)" + plot + paper + R"("sweep/means"}]})", sweep),
+            "p.json: report.paper[0].plot: expected a plot named in report.sweep_plots, got "
+            "\"sweep/means\"");
+  EXPECT_EQ(with_report(R"({"sweep_plots": [)" + plot + paper + R"("sweep/mean"}]})", sweep),
+            "no error");
+}
+
+// Where the time went: one entry per stage, in pipeline order, none longer than the run.
+TEST(Pipeline, StageTimesNameEveryStage) {
+  const Registry r = test_registry();
+  const Pipeline p = Pipeline::parse(kGood, "p.json", {}, r);
+  Log log;
+  log.set_quiet(true);
+  RunOptions o = quiet_options();
+  o.out = fresh_dir("stages");
+  const RunSummary run = p.run(o, log);
+  const std::vector<std::string> expected{"source random", "analyzer meanx", "frames file"};
+  EXPECT_EQ(run.stage_names, expected);
+  ASSERT_EQ(run.stage_seconds.size(), expected.size());
+  double sum = 0;
+  for (double s : run.stage_seconds) {
+    EXPECT_GE(s, 0.0);
+    sum += s;
+  }
+  EXPECT_LE(sum, run.seconds);  // one point: its stages ran one after another
+  fs::remove_all(*o.out);
 }
 
 TEST(Pipeline, DefaultsAreFilledIn) {

@@ -25,6 +25,10 @@ struct RunSummary {
   ResultSet results;
   long frames = 0;
   double seconds = 0.0;
+  // Seconds per stage (the source, each analyzer, each writer, the frames file), summed
+  // over the points, as results.h5 records them.
+  std::vector<std::string> stage_names;
+  std::vector<double> stage_seconds;
 };
 
 class Pipeline {

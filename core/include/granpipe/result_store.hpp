@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "granpipe/results.hpp"
 
@@ -18,6 +19,11 @@ struct Provenance {
   double wall_seconds = 0.0;
   std::string started;  // ISO 8601 UTC
   bool complete = true;
+  // Where the time went: the source, each analyzer, each writer and the frames file, in
+  // pipeline order, summed over sweep points (which may run at once, so the sum can
+  // exceed wall_seconds).
+  std::vector<std::string> stage_names;
+  std::vector<double> stage_seconds;
 };
 
 // One results group per named producer (a sweep point's source and analyzers).

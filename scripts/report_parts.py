@@ -1,0 +1,88 @@
+"""The pieces of report.html: HDF5 attributes as text, numbers ("undefined" for NaN, never a
+plausible zero), HTML tables, and matplotlib figures inlined as SVG."""
+import html
+import io
+import math
+
+TABLE_ROWS_SHOWN = 12  # a long table is cut on the page; its CSV file has every row
+MARKED_POINTS = 60  # a line of more points is drawn without a marker at each (page size)
+MAX_LEGEND_LINES = 12  # more lines than this make a legend that hides the plot
+
+
+def text(value):
+    """An HDF5 attribute as a str (h5py gives bytes or numpy strings)."""
+    if isinstance(value, bytes):
+        return value.decode()
+    return str(value)
+
+
+def texts(value):
+    return [text(v) for v in value]
+
+
+def number(x):
+    if isinstance(x, float) and math.isnan(x):
+        return "undefined"
+    return f"{x:.6g}"
+
+
+def with_error(value, error):
+    return number(value) if math.isnan(error) else f"{number(value)} ± {error:.2g}"
+
+
+def csv_name(producer, name):
+    """The CSV file the run wrote beside results.h5 for a table of `producer`."""
+    return producer.replace("/", ".") + f".{name}.csv"
+
+
+def html_table(header, rows):
+    """A table; header None: rows only."""
+    head = "".join(f"<th>{html.escape(h)}</th>" for h in header or [])
+    body = "".join("<tr>" + "".join(f"<td>{html.escape(c)}</td>" for c in row) + "</tr>"
+                   for row in rows)
+    return f"<table>{f'<tr>{head}</tr>' if head else ''}{body}</table>"
+
+
+def table_section(producer, name, group, rows_shown=TABLE_ROWS_SHOWN):
+    columns, units = texts(group.attrs["columns"]), texts(group.attrs["units"])
+    data = [group[c][()] for c in columns]
+    n = len(data[0]) if data else 0
+    header = [f"{c} ({u})" if u else c for c, u in zip(columns, units)]
+    rows = [[number(float(col[r])) for col in data] for r in range(min(n, rows_shown))]
+    more = (f" — the first {rows_shown} of {n} rows; every row in "
+            f"<a href=\"{csv_name(producer, name)}\">{csv_name(producer, name)}</a>"
+            if n > rows_shown else f" — {n} rows")
+    return (f"<h4>table {html.escape(name)}</h4><p>{html.escape(text(group.attrs['doc']))}{more}"
+            f"</p>" + html_table(header, rows))
+
+
+def axis_label(label, unit):
+    """The plugin's label, with the column's unit when the label does not give one."""
+    return f"{label} ({unit})" if unit and unit not in label else label
+
+
+def drawable(x, y, e, logx, logy):
+    """The points a plot can show: finite, and positive on a log axis."""
+    import numpy as np
+    keep = np.isfinite(x) & np.isfinite(y)
+    if logx:
+        keep &= x > 0
+    if logy:
+        keep &= y > 0
+    return x[keep], y[keep], None if e is None else e[keep]
+
+
+def inline_svg(plt, fig, ax, logx, logy):
+    """The figure as an SVG element to inline (log axes and a legend as asked), closed."""
+    if logx:
+        ax.set_xscale("log")
+    if logy:
+        ax.set_yscale("log")
+    if len(ax.get_lines()) <= MAX_LEGEND_LINES:
+        ax.legend(fontsize="small")
+    fig.tight_layout()
+    out = io.StringIO()
+    fig.savefig(out, format="svg", metadata={"Date": None})  # the same run, the same page
+    plt.close(fig)
+    svg = out.getvalue()
+    return svg[svg.index("<svg"):]  # inline: without the XML prolog

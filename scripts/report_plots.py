@@ -1,0 +1,66 @@
+"""report.html's declared plots: every plot a plugin declared through Results, one line per
+y column (per sweep point in a sweep), axis units from the table, error bars or bands from
+<y>_err columns, and the paper's values over them where the pipeline declares some."""
+import html
+
+from report_parts import MARKED_POINTS, axis_label, drawable, inline_svg, text, texts
+
+
+def plot_svg(plt, declared, tables, plot, paper):
+    """The declared plot as an inline SVG element, or None when no point can be drawn: one
+    line per y column of each (label, table) of `tables` (one table in a single run, one per
+    sweep point in a sweep), and the paper's values for `plot` ("producer/name") over them."""
+    x_name = text(declared.attrs["x"])
+    logx, logy = bool(int(declared.attrs["logx"])), bool(int(declared.attrs["logy"]))
+    fig, ax = plt.subplots(figsize=(6.4, 4.0))
+    drawn = 0
+    for label, table in tables:
+        for y_name in texts(declared.attrs["y"]):
+            error = f"{y_name}_err"
+            x, y, e = drawable(table[x_name][()], table[y_name][()],
+                               table[error][()] if error in table else None, logx, logy)
+            drawn += len(x)
+            line_label = " ".join(part for part in (label, y_name) if part)
+            marker = "." if len(x) <= MARKED_POINTS else None
+            if e is not None and marker:
+                ax.errorbar(x, y, yerr=e, label=line_label, marker=marker, capsize=2)
+                continue
+            (line,) = ax.plot(x, y, label=line_label, marker=marker)
+            if e is not None:  # a band: one path, where error bars would be one per point
+                ax.fill_between(x, y - e, y + e, color=line.get_color(), alpha=0.25, lw=0)
+    if drawn == 0:
+        plt.close(fig)
+        return None
+    paper.draw(ax, plot, lambda x, y, e: drawable(x, y, e, logx, logy))
+    first = tables[0][1]
+    unit_of = dict(zip(texts(first.attrs["columns"]), texts(first.attrs["units"])))
+    ax.set_xlabel(axis_label(text(declared.attrs["xlabel"]), unit_of.get(x_name, "")))
+    ax.set_ylabel(text(declared.attrs["ylabel"]))
+    ax.set_title(text(declared.attrs["title"]))
+    return inline_svg(plt, fig, ax, logx, logy)
+
+
+def plots_section(plt, groups, producer, paper):
+    """Every plot the producer declared; `groups` is [(label, its results group)]: the run's
+    group, or one per sweep point, drawn together."""
+    declared_in = groups[0][1]
+    if "_plots" not in declared_in:
+        return ""
+    if plt is None:
+        return "<p class=note>plots not drawn: matplotlib is not installed</p>"
+    parts = []
+    for name, declared in declared_in["_plots"].items():
+        table = text(declared.attrs["table"])
+        tables = [(label, g[table]) for label, g in groups if table in g]
+        if not tables:
+            parts.append(f"<p class=note>plot {html.escape(name)}: its table {table} is "
+                         "not in the results</p>")
+            continue
+        svg = plot_svg(plt, declared, tables, f"{producer}/{name}", paper)
+        if svg is None:
+            parts.append(f"<p class=note>plot {html.escape(name)}: no point to draw (none finite"
+                         ", or none positive on its log axis)</p>")
+            continue
+        parts.append(f"<figure id=\"plot-{html.escape(name)}\">{svg}"
+                     f"<figcaption>{html.escape(name)}</figcaption></figure>")
+    return "".join(parts)

@@ -1,0 +1,133 @@
+"""report.html of a sweep: the summary table, each producer's declared plots with the points
+drawn together, the plots of a result against the swept parameter the pipeline declares
+("report": {"sweep_plots": [...]}), and run time against error ("speed_vs_error")."""
+import html
+
+from report_parts import drawable, html_table, inline_svg, number, table_section, texts
+from report_plots import plots_section
+from speed_error import deviation_table, other_swept, pooled, value_namer
+
+SWEEP_ROWS_SHOWN = 100  # the sweep's summary: a row per point
+MAX_SWEEP_LINES = 24  # a sweep's plots draw at most this many points (the page's size)
+
+
+def point_labels(results):
+    """{point group name: "point k: swept values"} from the sweep's summary table."""
+    points = results["sweep/points"]
+    columns = texts(points.attrs["columns"])
+    swept = [c for c in columns[1:] if ".params." in c]  # the swept paths, then scalars
+    labels = {}
+    for row in range(len(points["point"][()])):
+        k = int(points["point"][row])
+        values = ", ".join(f"{c.split('.')[-1]} = {number(float(points[c][row]))}" for c in swept)
+        labels[f"point_{k:03d}"] = f"{k}: {values}" if values else str(k)
+    return labels
+
+
+def sweep_section(plt, results, pipeline, paper):
+    """A sweep: its summary table, and each producer's declared plots with every point drawn."""
+    points = results["sweep/points"]
+    parts = ["<h3 id=sweep>sweep</h3>",
+             table_section("sweep", "points", points, SWEEP_ROWS_SHOWN),
+             declared_sweep_section(plt, results, pipeline, paper)]
+    labels = point_labels(results)
+    drawn = sorted(labels)
+    if len(drawn) > MAX_SWEEP_LINES:  # evenly spaced points, the first and the last among them
+        step = (len(drawn) - 1) / (MAX_SWEEP_LINES - 1)
+        drawn = [drawn[round(k * step)] for k in range(MAX_SWEEP_LINES)]
+    which = "every point" if len(drawn) == len(labels) else f"{len(drawn)} of {len(labels)} points"
+    names = sorted({sub for p in labels for sub in results[p].keys()})
+    for name in names:
+        groups = [(labels[p], results[p][name]) for p in drawn if name in results[p]]
+        if not groups:
+            continue
+        parts.append(f"<h3 id=\"{html.escape(name)}\">{html.escape(name)}, {which}</h3>"
+                     + plots_section(plt, groups, name, paper))
+    parts.append("<p>Each point's tables, fits and scalars are in its CSV files (below).</p>")
+    return "".join(parts)
+
+
+def summary_rows(points):
+    """(the sweep's summary table as one {column: value} per point, its columns)."""
+    columns = texts(points.attrs["columns"])
+    data = {c: points[c][()] for c in columns}
+    return [{c: float(data[c][r]) for c in columns} for r in range(len(data[columns[0]]))], columns
+
+
+def missing_columns(what, wanted, columns):
+    """A note naming the columns of `wanted` the summary lacks, or "" when it has them all."""
+    missing = [c for c in wanted if c not in columns]
+    return (f"<p class=note>{html.escape(what)}: the sweep's summary has no column "
+            f"{html.escape(', '.join(missing))}</p>" if missing else "")
+
+
+def sweep_plot(plt, spec, rows, columns, name_of, paper):
+    """A declared result against a swept parameter: a line per y column and per value of the
+    other swept parameters (replicas, a second knob), the paper's values over them."""
+    import numpy as np  # here: a page without h5py (and so numpy) still lists the files
+    name = spec["name"]
+    note = missing_columns(f"sweep plot {name}", [spec["x"]] + spec["y"], columns)
+    if note or plt is None:
+        return note
+    others = other_swept(columns, spec["x"])
+    lines = {}
+    for row in rows:
+        lines.setdefault(tuple(row[c] for c in others), []).append(row)
+    logx, logy = spec.get("logx", False), spec.get("logy", False)
+    fig, ax = plt.subplots(figsize=(6.4, 4.0))
+    for key, members in sorted(lines.items()):
+        members.sort(key=lambda r: r[spec["x"]])
+        tag = ", ".join(f"{c.split('.')[-1]} = {name_of(c, v)}" for c, v in zip(others, key))
+        for y in spec["y"]:
+            x, v, e = (np.array([r.get(c, np.nan) for r in members]) for c in (spec["x"], y, y + "_err"))
+            x, v, e = drawable(x, v, None if np.isnan(e).all() else e, logx, logy)
+            ax.errorbar(x, v, yerr=e, marker="o", markersize=3, capsize=2,
+                        label=" ".join(p for p in (y, tag) if p))
+    paper.draw(ax, f"sweep/{name}", lambda x, y, e: drawable(x, y, e, logx, logy))
+    ax.set_xlabel(spec.get("xlabel", spec["x"]))
+    ax.set_ylabel(spec.get("ylabel", ", ".join(spec["y"])))
+    ax.set_title(spec.get("title", name))
+    return (f"<figure id=\"sweep-{html.escape(name)}\">{inline_svg(plt, fig, ax, logx, logy)}"
+            f"<figcaption>{html.escape(name)}</figcaption></figure>")
+
+
+def speed_error_section(plt, spec, rows, columns, name_of):
+    """Run time against the deviation from the finest point (scripts/speed_vs_error.py's
+    table), as a table and a log-log chart."""
+    knob, quantities = spec["knob"], spec["quantities"]
+    note = missing_columns("speed against error", [knob, spec["time"]] + quantities, columns)
+    if note:
+        return note
+    table, series = deviation_table(rows, other_swept(columns, knob), knob, spec["time"],
+                                    quantities, name_of)
+    if "pool" in spec:
+        table, series = pooled(table, knob, quantities, spec["pool"])
+    shown = ["group", knob, "seconds"] + [c for q in quantities
+                                          for c in (q + "_deviation", q + "_deviation_err")
+                                          if c in table[0]]
+    body = [[r[c] if isinstance(r[c], str) else number(r[c]) for c in shown] for r in table]
+    parts = ["<h3 id=speed_vs_error>speed against error</h3><p>Each point's run time against "
+             f"its deviation from the point of smallest {html.escape(knob)} in its group.</p>",
+             html_table(shown, body)]
+    if plt is not None and series:
+        fig, ax = plt.subplots(figsize=(6.4, 4.0))
+        for label, points in sorted(series.items()):
+            x, y, _ = zip(*sorted(points))
+            ax.plot(x, y, marker="o", label=label)
+        ax.set_xlabel("run time of the point (s)")
+        ax.set_ylabel("|deviation from the finest point|")
+        parts.append(f"<figure id=speed-vs-error>{inline_svg(plt, fig, ax, True, True)}"
+                     "<figcaption>speed against error</figcaption></figure>")
+    return "".join(parts)
+
+
+def declared_sweep_section(plt, results, pipeline, paper):
+    """The sweep plots and the speed-against-error study the pipeline's "report" declares."""
+    report = pipeline.get("report", {})
+    rows, columns = summary_rows(results["sweep/points"])
+    name_of = value_namer(pipeline)
+    parts = [sweep_plot(plt, spec, rows, columns, name_of, paper)
+             for spec in report.get("sweep_plots", [])]
+    if "speed_vs_error" in report:
+        parts.append(speed_error_section(plt, report["speed_vs_error"], rows, columns, name_of))
+    return "".join(parts)
