@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "ageing.hpp"
 #include "compaction_laws.hpp"
@@ -59,17 +60,52 @@ void add_law_fit(Results& results, const std::string& name, const Law& law, cons
   results.add_fit(name, std::move(out));
 }
 
+// Each quantity beside its fitted law over the fit range, and the plots of both: the
+// paper's Fig. 2 with Eqs. (3) and (4) drawn through it.
+void add_fitted_curves(const Series& range, const std::array<LawFit, 3>& fits, Results& results) {
+  Table t({"tap", "z_mean", "z_mean_eq4", "phi_b", "phi_b_eq3", "phi_c", "phi_c_eq3"},
+          "each quantity and its fitted law (Eq. 4 for z_mean, Eq. 3 for phi_b and phi_c) over "
+          "the fits' range; the law's column is NaN when it was not fitted");
+  t.units = {"taps", "R", "R", "", "", "", ""};
+  for (std::size_t k = 0; k < range.tap.size(); ++k) {
+    std::vector<double> row{range.tap[k]};
+    for (std::size_t q = 0; q < kQuantities.size(); ++q) {
+      row.push_back((range.*kQuantities[q].values)[k]);
+      row.push_back(law_value(kQuantities[q].law(), fits[q], range.tap[k]));
+    }
+    t.add_row(row);
+  }
+  results.add_table("fitted_laws", std::move(t));
+  results.add_plot("eq3", {.table = "fitted_laws",
+                           .x = "tap",
+                           .y = {"phi_b", "phi_b_eq3", "phi_c", "phi_c_eq3"},
+                           .xlabel = "tap",
+                           .ylabel = "packing fraction",
+                           .title = "compaction and the fits of Eq. (3)",
+                           .logx = true});
+  results.add_plot("eq4", {.table = "fitted_laws",
+                           .x = "tap",
+                           .y = {"z_mean", "z_mean_eq4"},
+                           .xlabel = "tap",
+                           .ylabel = "<Z>",
+                           .title = "mean height and the fit of Eq. (4)",
+                           .logx = true});
+}
+
 void report_fits(const Series& s, double from, double to, Results& results) {
   results.add_scalar("fit_from", from, std::nan(""), "taps", "first tap of the fits' range");
   results.add_scalar("fit_to", to, std::nan(""), "taps", "last tap of the fits' range");
   const Series range = within(s, from, to);
-  for (const Quantity& q : kQuantities) {
-    const Law& law = q.law();
-    add_law_fit(results, q.fit_name, law, fit_law(law, range.tap, range.*q.values),
-                std::string("fit of ") + q.name + " against the tap, taps " +
+  std::array<LawFit, 3> fits;
+  for (std::size_t q = 0; q < kQuantities.size(); ++q) {
+    const Law& law = kQuantities[q].law();
+    fits[q] = fit_law(law, range.tap, range.*kQuantities[q].values);
+    add_law_fit(results, kQuantities[q].fit_name, law, fits[q],
+                std::string("fit of ") + kQuantities[q].name + " against the tap, taps " +
                     std::to_string(static_cast<long long>(from)) + " to " +
                     std::to_string(static_cast<long long>(to)));
   }
+  add_fitted_curves(range, fits, results);
 }
 
 void report_steady_state(const Series& ss, Results& results) {

@@ -64,4 +64,11 @@ LawFit fit_law(const Law& law, const std::vector<double>& t, const std::vector<d
   return reported(fit_curve(law.model, p.t, p.y, {}, law.start(series_ends(p))));
 }
 
+double law_value(const Law& law, const LawFit& fit, double t) {
+  if (!fit.fitted()) return std::nan("");
+  Eigen::VectorXd p = Eigen::Map<const Eigen::VectorXd>(fit.value.data(), fit.value.size());
+  p[p.size() - 1] = std::log(p[p.size() - 1]);  // the model takes ln tau
+  return law.model.value(p, t);
+}
+
 }  // namespace granpipe::compaction

@@ -25,6 +25,9 @@ struct LawFit {
   bool fitted() const { return status == CurveFitStatus::Fitted; }
 };
 
+// The fitted law at t (for the curve drawn over the points); NaN when it was not fitted.
+double law_value(const Law& law, const LawFit& fit, double t);
+
 // Points with a non-finite t or y are left out.
 LawFit fit_law(const Law& law, const std::vector<double>& t, const std::vector<double>& y);
 

@@ -76,6 +76,20 @@ TEST(Compaction, Eq6FitRecoversTheAgeingLaw) {
   expect_recovered(eq6_law(), {0.05, 1.0, 20.0}, 5e-4);
 }
 
+// The curve drawn through the points is the fitted law itself: on exact Eq. (3) data it
+// passes through every point.
+TEST(Compaction, FittedLawValueReproducesExactData) {
+  const std::vector<double> t = run_taps();
+  const std::vector<double> y = noisy(eq3_law(), {0.62, 0.04, 0.5, 5.0}, t, 0.0, 1);
+  const LawFit fit = fit_law(eq3_law(), t, y);
+  ASSERT_TRUE(fit.fitted());
+  for (std::size_t k = 0; k < t.size(); ++k)
+    EXPECT_NEAR(law_value(eq3_law(), fit, t[k]), y[k], 1e-9);
+  LawFit unfitted = fit;
+  unfitted.status = CurveFitStatus::NotConverged;
+  EXPECT_TRUE(std::isnan(law_value(eq3_law(), unfitted, 10.0)));
+}
+
 // The analytic gradients against central differences, for the minimiser's sake.
 TEST(Compaction, LawGradientsMatchFiniteDifferences) {
   for (const Law* law : {&eq3_law(), &eq4_law(), &eq6_law()}) {
@@ -244,6 +258,10 @@ TEST(Compaction, AShortRunReportsUndefinedFitsNotZeros) {
   EXPECT_EQ(r.tables().at("per_frame").rows(), 3u);
   EXPECT_EQ(r.scalar("eq3_phi_b_status").value, 1.0);  // too few points
   for (double v : r.fits().at("eq3_phi_b").values) EXPECT_TRUE(std::isnan(v));
+  const Table& curves = r.tables().at("fitted_laws");
+  ASSERT_EQ(curves.rows(), 3u);
+  for (double v : curves.column("phi_b_eq3")) EXPECT_TRUE(std::isnan(v));  // drawn as nothing
+  EXPECT_DOUBLE_EQ(curves.column("z_mean")[2], 3.0);
   EXPECT_TRUE(std::isnan(r.scalar("spectrum_slope_z_mean").value));
   EXPECT_DOUBLE_EQ(r.scalar("z_mean_ss").value, 3.0);
   EXPECT_DOUBLE_EQ(r.scalar("z_mean_sigma").value, 0.0);
