@@ -22,3 +22,14 @@ def read_pipeline(out_dir):
         refuse(f"{path}: expected the pipeline of a granpipe run, found none: {e.strerror}")
     except ValueError as e:
         refuse(f"{path}: expected the pipeline of a granpipe run, found no JSON: {e}")
+
+
+def labelled_run(argument):
+    """(run directory, its pipeline, its label) of a RUN_DIR[=LABEL] argument: the LABEL
+    given, else "ε = <epsilon>" from the pipeline's source, else the pipeline's name."""
+    run, _, label = argument.partition("=")
+    pipeline = read_pipeline(run)
+    if not label:
+        eps = pipeline.get("source", {}).get("params", {}).get("epsilon")
+        label = f"ε = {eps:g}" if eps is not None else pipeline.get("name", run)
+    return run, pipeline, label

@@ -15,7 +15,7 @@ import os
 import sys
 
 from charts import compaction_chart
-from input_error import read_pipeline, refuse
+from input_error import labelled_run, refuse
 from result_csv import read_table
 
 # The laws of the paper: Eq. (3) for a packing fraction, Eq. (4) for <Z>.
@@ -37,12 +37,10 @@ SERIES = [  # (column of per_frame, fit table, law, axis label, file suffix)
 
 def curves(argument):
     """[(label, epsilon or nan, path of a table by name)] of a run: each sweep point, or the run."""
-    run, _, given_label = argument.partition("=")
+    run = argument.partition("=")[0]
     if not os.path.exists(os.path.join(run, "sweep.points.csv")):
-        pipeline = read_pipeline(run)
+        _, pipeline, label = labelled_run(argument)
         eps = pipeline.get("source", {}).get("params", {}).get("epsilon")
-        label = f"ε = {eps:g}" if eps is not None else pipeline.get("name", run)
-        label = given_label or label
         return [(label, math.nan if eps is None else eps,
                  lambda name: os.path.join(run, f"compaction.{name}.csv"))]
     _, header, points = read_table(os.path.join(run, "sweep.points.csv"))

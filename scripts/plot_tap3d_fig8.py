@@ -12,7 +12,7 @@ import os
 import sys
 
 from charts import curves_chart
-from input_error import read_pipeline, refuse
+from input_error import labelled_run, refuse
 from result_csv import read_table
 
 TABLE_TAPS = (1, 10, 100, 1000, 4000)  # the CSV's rows: taps a decade apart, and the paper's last
@@ -20,11 +20,7 @@ TABLE_TAPS = (1, 10, 100, 1000, 4000)  # the CSV's rows: taps a decade apart, an
 
 def line(argument):
     """(label, [(tap, delta_lateral, delta_central)]) of one run, tap 0 left out (log axis)."""
-    run, _, label = argument.partition("=")
-    pipeline = read_pipeline(run)
-    if not label:
-        eps = pipeline.get("source", {}).get("params", {}).get("epsilon")
-        label = f"ε = {eps:g}" if eps is not None else pipeline.get("name", run)
+    run, _, label = labelled_run(argument)
     path = os.path.join(run, "stereology.per_frame.csv")
     if not os.path.exists(path):
         refuse(f"{path}: expected the stereology table of a single run, found none")
