@@ -13,7 +13,7 @@
 // t_c/25 (dt = 2e-4, t_c = 4.97e-3 for two small spheres).
 #include <string>
 
-#include "contact_law.hpp"
+#include "contact_parts.hpp"
 #include "model.hpp"
 #include "particles.hpp"
 #include "walls.hpp"
