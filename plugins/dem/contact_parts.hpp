@@ -171,13 +171,14 @@ struct NoRolling {
   static constexpr int kHistory = 0;
 };
 
-// Rolling resistance, the elastic-plastic spring (LIGGGHTS' `rolling_friction epsd2`; Ai
-// et al., Powder Technol. 206, 2011, model C): the relative rolling angle theta (the
-// tangential part of the integral of w_i - w_j) is kept for the life of the contact like u,
-// and gives the torque -f k_r theta on i (+ on the partner), k_r = 2.25 mu_r^2 k_n R_eff^2,
-// capped at mu_r R_eff |F_n| (theta then set to what gives exactly the cap). At the cap a
-// rolling sphere feels the constant torque mu_r R_eff |F_n| against its rolling; below it
-// the spring holds a rattler still instead of letting it rock.
+// Rolling resistance, the elastic-plastic spring without dashpot (LIGGGHTS' `rolling_friction
+// epsd2`, after Iwashita and Oda; the spring-dashpot family is model C of Ai et al., Powder
+// Technol. 206, 2011): the relative rolling angle theta (the tangential part of the
+// integral of w_i - w_j) is kept for the life of the contact like u, and gives the torque
+// -f k_r theta on i (minus it on the partner), k_r = k_t R_eff^2, capped at mu_r R_eff |F_n|
+// (theta then set to what gives exactly the cap). At the cap a rolling sphere feels the
+// constant torque mu_r R_eff |F_n| against its rolling; below it the spring holds a rattler
+// still instead of letting it rock.
 struct RollingSpring {
   static constexpr bool kActive = true;
   static constexpr int kHistory = 3;
@@ -204,16 +205,15 @@ struct RollingSpring {
     return M::select(rolling_plastic, capped, trial);
   }
 
-  static double stiffness(const ContactMaterial& m, double r_eff) {
-    return 2.25 * m.mu_roll * m.mu_roll * m.kn * r_eff * r_eff;
-  }
+  static double stiffness(const ContactMaterial& m, double r_eff) { return m.kt * r_eff * r_eff; }
   static double potential(const ContactMaterial& m, double f, double r_eff, const Vec3& theta) {
     return 0.5 * f * stiffness(m, r_eff) * theta.squaredNorm();
   }
-  // Half the period of the undamped rolling spring, I_eff theta'' = -k_r theta (f = 1).
+  // Half the period of the undamped rolling spring, I_eff theta'' = -k_r theta (f = 1); none
+  // without rolling friction.
   static double contact_time(const ContactMaterial& m, const TwoBodies& b) {
     const double kr = stiffness(m, b.r_eff);
-    if (kr == 0.0) return std::numeric_limits<double>::infinity();
+    if (m.mu_roll == 0.0 || kr == 0.0) return std::numeric_limits<double>::infinity();
     return std::numbers::pi * std::sqrt(b.i_eff / kr);
   }
 };

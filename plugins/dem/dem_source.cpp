@@ -33,7 +33,7 @@ Schema material_fields() {
   m.real("mu", 0.5, "Coulomb friction coefficient").min(0.0);
   m.real("rolling_friction", 0.0,
          "rolling friction coefficient mu_r: a rolling torque up to mu_r R_eff |F_n| (elastic-"
-         "plastic spring, stiffness 2.25 mu_r^2 k_n R_eff^2); 0: none")
+         "plastic spring of stiffness k_t R_eff^2); 0: none")
       .min(0.0);
   return m;
 }

@@ -163,14 +163,14 @@ TEST(DemContactEvaluator, TangentialSpringSticksThenSlidesAtMuTimesTheNormalForc
 
 // The rolling spring alone: a contact pressed by F_n = k_n delta, its bodies turning against
 // each other at a constant rate w about a tangent axis: the torque is -k_r w t (k_r =
-// 2.25 mu_r^2 k_n R_eff^2) until it reaches mu_r R_eff |F_n|, then stays there; a turn about
+// k_t R_eff^2) until it reaches mu_r R_eff |F_n|, then stays there; a turn about
 // the normal (twisting) gives none.
 TEST(DemContactEvaluator, RollingSpringTurnsUntilItsCapThenHoldsIt) {
   const dem::ContactMaterial mat = material(0.0, 0.5, 0.2);
   const dem::LoopMaterial m = dem::loop_material(mat);
   using Rolling = ContactOf<dem::LinearNormal, dem::CoulombSpring, dem::RollingSpring, true>;
   const double delta = 1e-3, dt = 1e-5, w = 0.3, r_eff = 0.25;
-  const double kr = 2.25 * 0.2 * 0.2 * kKn * r_eff * r_eff;
+  const double kr = 2.0 / 7.0 * kKn * r_eff * r_eff;
   const double cap = 0.2 * r_eff * kKn * delta;
   const auto torque_after = [&](int steps, const Vec4& turn) {
     dem::ContactHistory<ScalarMath> h{Vec4::Zero(), Vec4::Zero()};
@@ -294,14 +294,22 @@ TEST(DemContactEvaluator, PartsAddTheirEnergiesAndDurations) {
   EXPECT_EQ(plain.tangential, 0.0);
   EXPECT_EQ(plain.rolling, 0.0);
   EXPECT_DOUBLE_EQ(all.tangential, 0.5 * m.kt * 1e-8);
-  EXPECT_DOUBLE_EQ(all.rolling, 0.5 * 2.25 * 0.04 * kKn * r_eff * r_eff * 4e-6);
-  // Two unit spheres' rolling spring: I_eff = 0.05 (I = 0.1 each), k_r = 2.25 mu_r^2 k_n / 16.
+  EXPECT_DOUBLE_EQ(all.rolling, 0.5 * m.kt * r_eff * r_eff * 4e-6);
+  // Two unit spheres: the rolling spring's half period pi sqrt(I_eff / k_r), I_eff = 0.05
+  // (I = 0.1 each), k_r = k_t / 16, is 2.4 times the normal contact's: the normal law decides.
   const dem::TwoBodies spheres{0.5, 0.05, 1.0, 0.25, 1.0};
-  const double rolling_tc = std::numbers::pi * std::sqrt(0.05 / (0.09 * kKn / 16.0));
-  EXPECT_DOUBLE_EQ(Plain::contact_time(m, spheres), dem::linear_contact_time(kKn, 0.0, 0.5));
-  EXPECT_DOUBLE_EQ(Rolling::contact_time(m, spheres),
-                   std::min(rolling_tc, dem::linear_contact_time(kKn, 0.0, 0.5)));
-  // A stiff rolling spring (mu_r = 1.5) is the shortest.
-  const dem::ContactMaterial stiff = material(0.0, 0.5, 1.5);
-  EXPECT_LT(Rolling::contact_time(stiff, spheres), dem::linear_contact_time(kKn, 0.0, 0.5));
+  const double normal_tc = dem::linear_contact_time(kKn, 0.0, 0.5);
+  EXPECT_DOUBLE_EQ(Plain::contact_time(m, spheres), normal_tc);
+  EXPECT_DOUBLE_EQ(Rolling::contact_time(m, spheres), normal_tc);
+  // A sphere on a wall whose tangential (so rolling) spring is as stiff as the normal one:
+  // pi sqrt(0.1 / (k_n / 4)) is shorter than pi sqrt(1 / k_n), and decides.
+  dem::ContactMaterial stiff = m;
+  stiff.kt = kKn;
+  const dem::TwoBodies on_wall{1.0, 0.1, 1.0, 0.5, 1.0};
+  EXPECT_DOUBLE_EQ(Rolling::contact_time(stiff, on_wall),
+                   std::numbers::pi * std::sqrt(0.1 / (0.25 * kKn)));
+  EXPECT_DOUBLE_EQ(Plain::contact_time(stiff, on_wall), dem::linear_contact_time(kKn, 0.0, 1.0));
+  // Without rolling friction the rolling part has no duration.
+  EXPECT_DOUBLE_EQ(Rolling::contact_time(material(0.0, 0.5), on_wall),
+                   dem::linear_contact_time(kKn, 0.0, 1.0));
 }

@@ -165,11 +165,11 @@ double rolling_distance(double mu_roll, double v0, double below, dem::ContactLaw
 // against a wall) decelerates at (5/7) mu_r g (I = 2/5 m R^2, rolling without slipping:
 // the friction it needs, (5/7) mu_r m g, is far inside mu m g) and stops after
 // s = 7 v0^2 / (10 mu_r g). Without rolling friction it rolls on at v0. Tolerance 1e-3:
-// before the cap the spring winds up by theta_c = mu_r R N / (f k_r), 4e-5 rad for the
-// linear law and 2.6e-3 for Hertz (whose springs are softer by f = sqrt(delta/d) = 0.017
-// here), which lengthens s by about R theta_c / 2: 1e-5 and 4e-4 of it (measured: 1.4e-5,
-// 4.4e-5, 3.8e-4, 4.9e-4); the stop criterion (1e-3 v0) adds 1e-6; Verlet is exact for a
-// constant deceleration.
+// before the cap the spring winds up by theta_c = mu_r N / (f k_t R): 1e-5 rad for the
+// linear law, 6e-4 for Hertz at mu_r = 0.3 (its springs are softer by f = sqrt(delta/d) =
+// 0.017 here), which lengthens s by about R theta_c / 2, up to 3e-4 of it; the stop
+// criterion (1e-3 v0) adds 1e-6; Verlet is exact for a constant deceleration. Measured:
+// 1.4e-5 and 4.4e-5 (linear), 4.1e-5 and 3.8e-4 (Hertz) longer than predicted.
 TEST(DemContactEngine, SphereRollingOnTheBaseStopsWhereTheRollingModelPredicts) {
   const double v0 = 0.5, g = 1.0;
   for (dem::ContactLaw law : {dem::ContactLaw::Linear, dem::ContactLaw::Hertz}) {
