@@ -62,6 +62,12 @@ struct Contact {
   static constexpr bool kSpin = kRotation;
   static_assert(kFriction || !kRotation, "rotation without friction has no torque to apply");
   static_assert(!kRolling || kRotation, "rolling resistance needs rotation");
+  // The engine keeps one 3-vector per contact for each part that keeps a history (u in
+  // NeighborList::history and Particles::wall_history, theta in the rolling_history arrays):
+  // a part with another history needs its own arrays there.
+  static_assert(Tangential::kHistory == (kFriction ? 3 : 0) &&
+                    Rolling::kHistory == (kRolling ? 3 : 0),
+                "a part's history is one 3-vector per contact, or none");
   // The material fields the loop reads.
   static constexpr int kFields = kRolling ? kMaterialFields : kMaterialFieldsWithoutRolling;
 
@@ -89,8 +95,7 @@ struct Contact {
       out.c = M::cross(in.n, ft);
     }
     if constexpr (kRolling) {
-      out.roll =
-          Rolling::template torque<Normal, M>(f, fn, in.n, in.w_rel, in.r_eff, m, h.theta, dt);
+      out.roll = Rolling::template torque<Normal, M>(f, fn, in.w_rel, in.r_eff, m, h.theta, dt);
     }
     return out;
   }

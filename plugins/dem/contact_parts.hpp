@@ -173,12 +173,14 @@ struct NoRolling {
 
 // Rolling resistance, the elastic-plastic spring without dashpot (LIGGGHTS' `rolling_friction
 // epsd2`, after Iwashita and Oda; the spring-dashpot family is model C of Ai et al., Powder
-// Technol. 206, 2011): the relative rolling angle theta (the tangential part of the
-// integral of w_i - w_j) is kept for the life of the contact like u, and gives the torque
-// -f k_r theta on i (minus it on the partner), k_r = k_t R_eff^2, capped at mu_r R_eff |F_n|
-// (theta then set to what gives exactly the cap). At the cap a rolling sphere feels the
-// constant torque mu_r R_eff |F_n| against its rolling; below it the spring holds a rattler
-// still instead of letting it rock.
+// Technol. 206, 2011): the relative rotation theta (the integral of w_i - w_j) is kept for
+// the life of the contact like u, and gives the torque -f k_r theta on i (minus it on the
+// partner), k_r = k_t R_eff^2, capped at mu_r R_eff |F_n| (theta then set to what gives
+// exactly the cap). At the cap a rolling sphere feels the constant torque mu_r R_eff |F_n|
+// against its rolling; below it the spring holds a rattler still instead of letting it
+// rock. Twisting (turning about n) is resisted alike (LIGGGHTS' torsionTorque on): the
+// rattlers of a settled bed that keep turning are spheres spinning about the normal of
+// their one contact (on the base) or of two opposite ones (docs/dem.md).
 struct RollingSpring {
   static constexpr bool kActive = true;
   static constexpr int kHistory = 3;
@@ -186,14 +188,12 @@ struct RollingSpring {
   // The torque on i; theta is advanced in place. w_rel = w_i - w_j.
   template <class Normal, class M>
   [[gnu::always_inline]] static typename M::Vec torque(
-      const typename M::Real& f, const typename M::Real& fn, const typename M::Vec& n,
-      const typename M::Vec& w_rel, const typename M::Real& r_eff,
-      const MaterialOf<typename M::Real>& m, typename M::Vec& theta, const typename M::Real& dt) {
+      const typename M::Real& f, const typename M::Real& fn, const typename M::Vec& w_rel,
+      const typename M::Real& r_eff, const MaterialOf<typename M::Real>& m, typename M::Vec& theta,
+      const typename M::Real& dt) {
     using Real = typename M::Real;
     using Vec = typename M::Vec;
-    const Vec rolling = w_rel - M::dot(w_rel, n) * n;  // twisting is left free
-    Vec turned = theta - M::dot(theta, n) * n;
-    turned = turned + dt * rolling;
+    const Vec turned = theta + dt * w_rel;
     const Real kr = m.k_roll * r_eff * r_eff;
     const Vec trial = Normal::scaled(f, Vec(-(kr * turned)));
     const Real limit = m.mu_roll * r_eff * M::abs(fn);
