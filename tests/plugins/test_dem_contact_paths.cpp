@@ -195,3 +195,21 @@ TEST(DemContactEngine, SphereRollingOnAFixedSphereStopsWhereTheRollingModelPredi
   const double predicted = (b - std::sqrt(b * b - 4.0 * a * c)) / (2.0 * a);
   EXPECT_NEAR(rolling_distance(mu_roll, v0, below, dem::ContactLaw::Linear) / predicted, 1.0, 1e-3);
 }
+
+// Twisting through the wall path: a sphere resting on the base and spinning about the
+// vertical at w0 feels the capped torque mu_r R m g about its contact normal, so it slows at
+// mu_r R m g / (2/5 m R^2) = 2.5 mu_r g / R and stops after t = w0 R / (2.5 mu_r g) (2 here).
+// Tolerance 1e-3: the spin is sampled every 10 steps (1e-3, 5e-4 of t) for its first turn
+// through zero; the spring's wind-up before the cap, mu_r m g / (k_t R) = 3.5e-6 rad, delays
+// the stop by 1e-5.
+TEST(DemContactEngine, SphereSpinningOnTheBaseStopsWhenTheTwistingTorquePredicts) {
+  const double g = 1.0, w0 = 1.0, mu_roll = 0.1, radius = 0.5;
+  const dem::ContactMaterial m = material(42.398, 0.5, mu_roll);
+  const dem::Model model = dem::Model::uniform(1, kUnitMassDensity, m, m);
+  dem::Engine e(
+      model, dem::WallSet(base_only(), {}), settings(1e-4, dem::ContactLaw::Linear, {0, 0, -g}),
+      bodies({{0, 0, radius - g / kKn}}, {Vector3d::Zero()}, {{0, 0, w0}}, {radius}, {0}));
+  const auto spin = [&] { return e.particles().omega.col(0).z(); };
+  while (spin() > 0.0 && e.time() < 10.0) e.run(10);
+  EXPECT_NEAR(e.time() / (w0 * radius / (2.5 * mu_roll * g)), 1.0, 1e-3);
+}
