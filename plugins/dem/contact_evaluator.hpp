@@ -55,8 +55,6 @@ struct ContactResult {
 template <class Normal, class Tangential, class Rolling, bool kRotation>
 struct Contact {
   using NormalPart = Normal;
-  using TangentialPart = Tangential;
-  using RollingPart = Rolling;
   static constexpr bool kFriction = Tangential::kActive;
   static constexpr bool kRolling = Rolling::kActive;
   static constexpr bool kSpin = kRotation;

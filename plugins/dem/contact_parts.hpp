@@ -47,7 +47,6 @@ struct TwoBodies {
 
 // f = 1. Functions of M:: are the arithmetic of contact_math.hpp.
 struct LinearNormal {
-  static constexpr ContactLaw kind = ContactLaw::Linear;
   static constexpr bool kDurationNeedsSpeed = false;
   template <class M>
   static typename M::Real factor(const typename M::Real& /*delta*/, const typename M::Real& /*d*/) {
@@ -81,7 +80,6 @@ struct LinearNormal {
 
 // f = sqrt(delta/d).
 struct HertzNormal {
-  static constexpr ContactLaw kind = ContactLaw::Hertz;
   static constexpr bool kDurationNeedsSpeed = true;
   template <class M>
   static typename M::Real factor(const typename M::Real& delta, const typename M::Real& d) {

@@ -32,8 +32,8 @@ Schema material_fields() {
   m.real("gamma_t", kGammaN / 2, "tangential damping rate, times m_eff").min(0.0).unit("1/time");
   m.real("mu", 0.5, "Coulomb friction coefficient").min(0.0);
   m.real("rolling_friction", 0.0,
-         "rolling friction coefficient mu_r: a rolling torque up to mu_r R_eff |F_n| (elastic-"
-         "plastic spring of stiffness k_t R_eff^2); 0: none")
+         "rolling friction coefficient mu_r: a torque against rolling and twisting up to mu_r "
+         "R_eff |F_n| (elastic-plastic spring of stiffness k_t R_eff^2); 0: none")
       .min(0.0);
   return m;
 }

@@ -8,11 +8,14 @@
 #include <cmath>
 #include <functional>
 #include <numbers>
+#include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "dem_two_body.hpp"
 #include "engine.hpp"
+#include "granpipe/errors.hpp"
 
 namespace dem = granpipe::dem;
 using dem_test::Collision;
@@ -212,4 +215,24 @@ TEST(DemContactEngine, SphereSpinningOnTheBaseStopsWhenTheTwistingTorquePredicts
   const auto spin = [&] { return e.particles().omega.col(0).z(); };
   while (spin() > 0.0 && e.time() < 10.0) e.run(10);
   EXPECT_NEAR(e.time() / (w0 * radius / (2.5 * mu_roll * g)), 1.0, 1e-3);
+}
+
+// A rolling torque acts on rotating spheres through their contacts: rolling friction with
+// friction or rotation off is refused, naming the parameter.
+TEST(DemContactEngine, RollingFrictionWithoutFrictionOrRotationIsRefused) {
+  const dem::ContactMaterial m = material(42.398, 0.5, 0.1);
+  const dem::Model model = dem::Model::uniform(1, kUnitMassDensity, m, m);
+  for (const auto& [friction, rotation] : {std::pair(false, true), std::pair(true, false)}) {
+    dem::Settings s = settings(1e-4, dem::ContactLaw::Linear, Vector3d::Zero());
+    s.friction = friction;
+    s.rotation = rotation;
+    try {
+      dem::Engine e(model, dem::WallSet(base_only(), {}), s,
+                    bodies({{0, 0, 1}}, {Vector3d::Zero()}, {Vector3d::Zero()}, {0.5}, {0}));
+      ADD_FAILURE() << "accepted rolling friction with friction " << friction << ", rotation "
+                    << rotation;
+    } catch (const granpipe::InputError& error) {
+      EXPECT_NE(std::string(error.what()).find("rolling_friction"), std::string::npos);
+    }
+  }
 }
