@@ -31,11 +31,16 @@ Schema material_fields() {
   m.real("gamma_n", kGammaN, "normal damping rate, times m_eff (Table I)").min(0.0).unit("1/time");
   m.real("gamma_t", kGammaN / 2, "tangential damping rate, times m_eff").min(0.0).unit("1/time");
   m.real("mu", 0.5, "Coulomb friction coefficient").min(0.0);
+  m.real("rolling_friction", 0.0,
+         "rolling friction coefficient mu_r: a torque against rolling and twisting up to mu_r "
+         "R_eff |F_n| (elastic-plastic spring of stiffness k_t R_eff^2); 0: none")
+      .min(0.0);
   return m;
 }
 
 ContactMaterial material(const Params& p) {
-  return {p.real("k_n"), p.real("k_t"), p.real("gamma_n"), p.real("gamma_t"), p.real("mu")};
+  return {p.real("k_n"),     p.real("k_t"), p.real("gamma_n"),
+          p.real("gamma_t"), p.real("mu"),  p.real("rolling_friction")};
 }
 
 Model model_of(const Params& p) {

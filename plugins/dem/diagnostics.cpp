@@ -1,19 +1,61 @@
 #include "diagnostics.hpp"
 
 #include <cmath>
+#include <cstdint>
 #include <sstream>
+#include <vector>
 
 namespace granpipe::dem {
 
 namespace {
 
-double normal_potential(ContactLaw law, const ContactMaterial& m, double delta, double d) {
-  return law == ContactLaw::Linear ? 0.5 * m.kn * delta * delta
-                                   : 0.4 * m.kn * delta * delta * std::sqrt(delta / d);
+// Contact k's 3-vector of a per-contact history, zero when the part keeps none (empty).
+Vec3 history_of(const std::vector<double>& history, std::int32_t k) {
+  if (history.empty()) return Vec3::Zero();
+  return Vec3::Map(&history[3 * static_cast<std::size_t>(k)]);
+}
+Vec3 history_of(const std::vector<Vectors>& per_slot, int slot, int i) {
+  return per_slot.empty() ? Vec3::Zero() : Vec3(per_slot[slot].col(i));
 }
 
-double law_scale(ContactLaw law, double delta, double d) {
-  return law == ContactLaw::Linear ? 1.0 : std::sqrt(delta / d);
+void add(Energy& e, const ContactEnergy& c) {
+  e.normal_elastic += c.normal;
+  e.tangential_elastic += c.tangential;
+  e.rolling_elastic += c.rolling;
+}
+
+// The energies with the parts of the engine's contacts (C: its Contact).
+template <class C>
+Energy energy_of(const Engine& e) {
+  const Particles& p = e.particles();
+  const NeighborList& list = e.neighbors();
+  const Eigen::Vector3d offset = e.wall_offset();
+  Energy out;
+  for (int i = 0; i < p.size(); ++i) {
+    const double m = 1.0 / p.inv_mass[i];
+    out.translational += 0.5 * m * p.v.col(i).squaredNorm();
+    out.rotational += 0.5 / p.inv_inertia[i] * p.omega.col(i).squaredNorm();
+    out.gravitational -= m * e.settings().gravity.dot(p.x.col(i));
+    for (std::int32_t k = list.first[i]; k < list.first[i + 1]; ++k) {
+      const int j = list.partner[k];
+      const double d = p.radius[i] + p.radius[j];
+      const double delta = d - (p.x.col(i) - p.x.col(j)).norm();
+      if (delta <= 0.0) continue;
+      add(out, C::energy(e.model().between(p.species[i], p.species[j]), delta, d,
+                         p.radius[i] * p.radius[j] / d, history_of(list.history, k),
+                         history_of(list.rolling_history, k)));
+    }
+    for (int slot = 0; slot < e.walls().count(); ++slot) {
+      Vec3 n;
+      const double delta = e.walls().overlap(slot, p.x.col(i), p.radius[i], offset, n);
+      if (delta <= 0.0) continue;
+      const ContactMaterial& mat = e.model().with_wall(e.walls().wall_of_slot(slot), p.species[i]);
+      add(out,
+          C::energy(mat, delta, 2.0 * p.radius[i], p.radius[i], history_of(p.wall_history, slot, i),
+                    history_of(p.wall_rolling_history, slot, i)));
+    }
+  }
+  return out;
 }
 
 std::string where(const Engine& e) {
@@ -34,42 +76,9 @@ double kinetic_energy(const Particles& p) {
 }
 
 Energy energy(const Engine& e) {
-  const Particles& p = e.particles();
-  const NeighborList& list = e.neighbors();
-  const ContactLaw law = e.settings().law;
-  const bool friction = e.settings().friction;
-  const Eigen::Vector3d offset = e.wall_offset();
-  Energy out;
-  for (int i = 0; i < p.size(); ++i) {
-    const double m = 1.0 / p.inv_mass[i];
-    out.translational += 0.5 * m * p.v.col(i).squaredNorm();
-    out.rotational += 0.5 / p.inv_inertia[i] * p.omega.col(i).squaredNorm();
-    out.gravitational -= m * e.settings().gravity.dot(p.x.col(i));
-    for (std::int32_t k = list.first[i]; k < list.first[i + 1]; ++k) {
-      const int j = list.partner[k];
-      const double d = p.radius[i] + p.radius[j];
-      const double delta = d - (p.x.col(i) - p.x.col(j)).norm();
-      if (delta <= 0.0) continue;
-      const ContactMaterial& mat = e.model().between(p.species[i], p.species[j]);
-      out.normal_elastic += normal_potential(law, mat, delta, d);
-      if (friction) {
-        const Vec3 u = Vec3::Map(&list.history[3 * static_cast<std::size_t>(k)]);
-        out.tangential_elastic += 0.5 * law_scale(law, delta, d) * mat.kt * u.squaredNorm();
-      }
-    }
-    for (int slot = 0; slot < e.walls().count(); ++slot) {
-      Vec3 n;
-      const double delta = e.walls().overlap(slot, p.x.col(i), p.radius[i], offset, n);
-      if (delta <= 0.0) continue;
-      const ContactMaterial& mat = e.model().with_wall(e.walls().wall_of_slot(slot), p.species[i]);
-      out.normal_elastic += normal_potential(law, mat, delta, 2.0 * p.radius[i]);
-      if (friction) {
-        out.tangential_elastic += 0.5 * law_scale(law, delta, 2.0 * p.radius[i]) * mat.kt *
-                                  p.wall_history[slot].col(i).squaredNorm();
-      }
-    }
-  }
-  return out;
+  const Settings& s = e.settings();
+  return with_contact(s.law, s.friction, s.rotation, e.model().rolls(),
+                      [&](auto contact) { return energy_of<decltype(contact)>(e); });
 }
 
 std::optional<std::int32_t> first_non_finite(const Engine& e) {

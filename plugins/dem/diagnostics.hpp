@@ -18,9 +18,11 @@ struct Energy {
   double gravitational = 0.0;       // -m g.x, zero at the origin
   double normal_elastic = 0.0;      // springs of the normal law (pairs and walls)
   double tangential_elastic = 0.0;  // tangential springs, 1/2 f k_t u^2
+  double rolling_elastic = 0.0;     // rolling springs, 1/2 f k_r theta^2
   double kinetic() const { return translational + rotational; }
   double total() const {
-    return translational + rotational + gravitational + normal_elastic + tangential_elastic;
+    return translational + rotational + gravitational + normal_elastic + tangential_elastic +
+           rolling_elastic;
   }
 };
 Energy energy(const Engine& engine);

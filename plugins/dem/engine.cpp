@@ -22,10 +22,6 @@ namespace {
   throw InputError(s.str());
 }
 
-LoopMaterial loop_material(const ContactMaterial& m) {
-  return {m.kn, m.kt, m.gamma_n, m.gamma_t, m.mu, m.kt > 0.0 ? 1.0 / m.kt : 0.0};
-}
-
 void check_vectors(const Vectors& a, Eigen::Index n, const char* name, bool optional) {
   if (optional && a.cols() == 0) return;
   if (a.cols() != n) {
@@ -66,11 +62,18 @@ Engine::Engine(const Model& model, const WallSet& walls, const Settings& setting
     : model_(model), walls_(walls), settings_(settings) {
   settings_.check();
   model_.check();
-  kernels_ = select_kernels(settings_.law, settings_.friction, settings_.rotation);
+  if (model_.rolls() && !(settings_.friction && settings_.rotation)) {
+    throw InputError(
+        "dem: rolling_friction: expected friction and rotation on (a rolling torque acts on "
+        "rolling spheres), got rolling friction with " +
+        std::string(settings_.friction ? "rotation" : "friction") + " off");
+  }
+  kernels_ = select_kernels(settings_.law, settings_.friction, settings_.rotation, model_.rolls());
   load_particles(initial);
   prepare_materials();
   const double smallest = p_.size() > 0 ? 2.0 * p_.radius.minCoeff() : 1.0;
-  list_ = NeighborList(settings_.skin * smallest, kernels_.reaction_stride, settings_.friction);
+  list_ = NeighborList(settings_.skin * smallest, kernels_.reaction_stride, settings_.friction,
+                       model_.rolls());
   rebuild();
   refuse_coincident_centres();
   pin(time(), time());
@@ -139,6 +142,7 @@ void Engine::load_particles(const InitialState& in) {
   }
   hold_fixed_species();
   if (settings_.friction) p_.wall_history.assign(walls_.count(), Vectors::Zero(3, n));
+  if (model_.rolls()) p_.wall_rolling_history.assign(walls_.count(), Vectors::Zero(3, n));
 }
 
 void Engine::prepare_materials() {
@@ -157,6 +161,7 @@ void Engine::prepare_materials() {
   }
   plane_position_.resize(walls_.planes().size());
   wall_history_ptr_.resize(p_.wall_history.size());
+  wall_rolling_history_ptr_.resize(p_.wall_rolling_history.size());
 }
 
 void Engine::hold_fixed_species() {
@@ -207,6 +212,9 @@ ForceContext Engine::force_context(double dt_history, double velocity_time) {
   for (std::size_t s = 0; s < wall_history_ptr_.size(); ++s) {
     wall_history_ptr_[s] = p_.wall_history[s].data();
   }
+  for (std::size_t s = 0; s < wall_rolling_history_ptr_.size(); ++s) {
+    wall_rolling_history_ptr_[s] = p_.wall_rolling_history[s].data();
+  }
   ForceContext c;
   c.n = p_.size();
   c.x = p_.x.data();
@@ -228,6 +236,7 @@ ForceContext Engine::force_context(double dt_history, double velocity_time) {
   c.wall_material = wall_material_.data();
   c.wall_velocity = walls_.drive().velocity(velocity_time);
   c.wall_history = wall_history_ptr_.data();
+  c.wall_rolling_history = wall_rolling_history_ptr_.data();
   c.wall_normal_record = recording_ ? normal_record_ptr_.data() : nullptr;
   c.wall_tangential_record = recording_ ? tangential_record_ptr_.data() : nullptr;
   c.first = list_.first.data();
@@ -236,6 +245,7 @@ ForceContext Engine::force_context(double dt_history, double velocity_time) {
   c.reaction_slot = list_.reaction_slot.data();
   c.work_before = list_.work_before.data();
   c.history = list_.history.data();
+  c.rolling_history = list_.rolling_history.data();
   c.incoming = list_.incoming.data();
   c.reaction = recording_ ? list_.reaction.data() : nullptr;
   c.background_damping = settings_.background_damping;

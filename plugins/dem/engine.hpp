@@ -1,5 +1,6 @@
 #pragma once
-// A soft-sphere DEM run in 3D: particles, walls, contact law, time stepping.
+// A soft-sphere DEM run in 3D: particles, walls, contact law, time stepping. Rolling
+// resistance acts when a material has mu_roll > 0 (it needs friction and rotation).
 //
 // Time step (velocity Verlet, as LAMMPS' nve/sphere):
 //   v(t+dt/2) = v(t) + dt/2 a(t),    w(t+dt/2) = w(t) + dt/2 alpha(t)
@@ -24,7 +25,7 @@
 #include <optional>
 #include <vector>
 
-#include "contact_law.hpp"
+#include "contact_evaluator.hpp"
 #include "kernels.hpp"
 #include "model.hpp"
 #include "neighbor_list.hpp"
@@ -146,7 +147,8 @@ class Engine {
   // Wall geometry for the force loop, refreshed each step.
   std::vector<int> plane_axis_;
   std::vector<double> plane_sign_, plane_position_;
-  std::vector<double*> wall_history_ptr_, normal_record_ptr_, tangential_record_ptr_;
+  std::vector<double*> wall_history_ptr_, wall_rolling_history_ptr_, normal_record_ptr_,
+      tangential_record_ptr_;
   std::vector<Vectors> wall_normal_, wall_tangential_;
   struct Pinned {
     Eigen::Vector3d rest;  // position with the walls at rest

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "contact_evaluator.hpp"
 #include "lanes.hpp"
 #include "walls.hpp"
 
@@ -24,10 +25,11 @@ inline void store_zero(double* a, std::ptrdiff_t i) {
 template <bool kRotation>
 constexpr int kStride = kRotation ? 6 : 3;
 
-// A wall slot particle i does not touch: its history and recorded forces are zero.
-template <bool kFriction>
+// A wall slot particle i does not touch: its histories and recorded forces are zero.
+template <class C>
 [[gnu::always_inline]] inline void clear_wall_contact(const ForceContext& c, int slot, int i) {
-  if constexpr (kFriction) store_zero(c.wall_history[slot], i);
+  if constexpr (C::kFriction) store_zero(c.wall_history[slot], i);
+  if constexpr (C::kRolling) store_zero(c.wall_rolling_history[slot], i);
   if (c.wall_normal_record) {
     store_zero(c.wall_normal_record[slot], i);
     store_zero(c.wall_tangential_record[slot], i);
@@ -38,7 +40,7 @@ template <bool kFriction>
 // particles touch no wall, so everything a contact needs (the mass, the material, the
 // normal) is made only once the overlap says it touches.
 // beyond: the running maximum of overlap - overlap_limit x radius.
-template <class Law, bool kFriction, bool kRotation>
+template <class C>
 [[gnu::always_inline]] inline void add_wall_forces(const ForceContext& c, int i, const Vec4& xi,
                                                    const Vec4& vi, const Vec4& wi, Vec4& f,
                                                    Vec4& spin_sum, double& beyond) {
@@ -46,14 +48,30 @@ template <class Law, bool kFriction, bool kRotation>
   const Vec4 wall_velocity = load3(c.wall_velocity.data());
   const auto touch = [&](int slot, const Vec4& n, double delta) __attribute__((always_inline)) {
     beyond = std::max(beyond, delta - c.overlap_limit * ai);
-    double* u = kFriction ? c.wall_history[slot] + 3 * static_cast<std::ptrdiff_t>(i) : nullptr;
-    const Vec4 spin = kRotation ? Vec4(ai * wi) : Vec4::Zero();
+    const std::ptrdiff_t at = 3 * static_cast<std::ptrdiff_t>(i);
+    ContactHistory<ScalarMath> h;
+    if constexpr (C::kFriction) h.u = load3(c.wall_history[slot] + at);
+    if constexpr (C::kRolling) h.theta = load3(c.wall_rolling_history[slot] + at);
+    ContactInput<ScalarMath> in;
+    in.n = n;
+    in.delta = delta;
+    in.d = 2.0 * ai;
+    in.v_rel = vi - wall_velocity;
+    in.spin = C::kSpin ? Vec4(ai * wi) : Vec4::Zero();
+    in.m_eff = 1.0 / c.inv_mass[i];
+    if constexpr (C::kRolling) {
+      in.w_rel = wi;
+      in.r_eff = ai;
+    }
     const LoopMaterial& material = c.wall_material[slot * c.species_count + c.species[i]];
-    const ContactForce cf =
-        resolve_contact<Law, kFriction, kRotation>(n, delta, 2.0 * ai, vi - wall_velocity, spin,
-                                                   1.0 / c.inv_mass[i], material, u, c.dt_history);
+    const ContactResult<ScalarMath> cf =
+        C::template evaluate<ScalarMath>(in, material, h, c.dt_history);
+    if constexpr (C::kFriction) store3(c.wall_history[slot] + at, h.u);
+    if constexpr (C::kRolling) store3(c.wall_rolling_history[slot] + at, h.theta);
     f += cf.force;
-    if constexpr (kRotation) spin_sum += cf.c;
+    // The torque on i is -a_i times the spin sum (finish_step).
+    if constexpr (C::kSpin) spin_sum += cf.c;
+    if constexpr (C::kRolling) spin_sum -= cf.roll / ai;
     if (c.wall_normal_record) {
       store(c.wall_normal_record[slot], i, cf.normal);
       store(c.wall_tangential_record[slot], i, cf.force - cf.normal);
@@ -64,7 +82,7 @@ template <class Law, bool kFriction, bool kRotation>
     const double sign = c.plane_sign[s];
     const double delta = plane_overlap(sign, xi[axis], c.plane_position[s], ai);
     if (delta <= 0.0) {
-      clear_wall_contact<kFriction>(c, s, i);
+      clear_wall_contact<C>(c, s, i);
       continue;
     }
     Vec4 n = Vec4::Zero();
@@ -76,7 +94,7 @@ template <class Law, bool kFriction, bool kRotation>
     double rho = 0.0;
     const double delta = cylinder_overlap(dx, dy, c.cylinder_radius, ai, rho);
     if (delta <= 0.0) {
-      clear_wall_contact<kFriction>(c, c.planes, i);
+      clear_wall_contact<C>(c, c.planes, i);
     } else {
       touch(c.planes, Vec4(-dx / rho, -dy / rho, 0.0, 0.0), delta);
     }
@@ -95,15 +113,39 @@ struct TouchingPairs {
   std::int32_t pair[kPadded], i[kPadded], j[kPadded];
   double dx[kPadded], dy[kPadded], dz[kPadded], r2[kPadded];
   double fx[kPadded], fy[kPadded], fz[kPadded];  // force on i
-  double cx[kPadded], cy[kPadded], cz[kPadded];  // n x F_t
-  double ux[kPadded], uy[kPadded], uz[kPadded];  // the updated history
+  double cx[kPadded], cy[kPadded], cz[kPadded];  // i's spin sum: n x F_t (- roll / a_i)
+  double px[kPadded], py[kPadded], pz[kPadded];  // with rolling, the partner's: c + roll / a_j
+  double ux[kPadded], uy[kPadded], uz[kPadded];  // the updated histories
+  double rx[kPadded], ry[kPadded], rz[kPadded];
 };
+
+#if defined(__AVX512F__)
+// Zeroes the 3-vectors of a history (3 doubles per pair) of the pairs k .. k+7 that the
+// mask leaves out. Bit a of pair l's three doubles is bit 3 l + a of the store mask.
+inline void clear_history(double* history, std::int32_t k, __mmask8 cleared) {
+  const unsigned clear = _pdep_u32(cleared, 0x249249u) * 7u;
+  double* u = history + 3 * static_cast<std::ptrdiff_t>(k);
+  const __m512d zero = _mm512_setzero_pd();
+  _mm512_mask_storeu_pd(u, static_cast<__mmask8>(clear), zero);
+  _mm512_mask_storeu_pd(u + 8, static_cast<__mmask8>(clear >> 8), zero);
+  _mm512_mask_storeu_pd(u + 16, static_cast<__mmask8>(clear >> 16), zero);
+}
+#else
+// Keeps pair k's history (3 doubles) where keep is all ones, zeroes it where it is zero:
+// u & keep, not a select, which the compiler makes a branch.
+inline void keep_history(double* history, std::int32_t k, std::uint64_t keep) {
+  double* u = history + 3 * static_cast<std::ptrdiff_t>(k);
+  for (int a = 0; a < 3; ++a) {
+    u[a] = std::bit_cast<double>(std::bit_cast<std::uint64_t>(u[a]) & keep);
+  }
+}
+#endif
 
 // Lists the pairs of [k0, k1) that touch into t (from entry 0), clears the history of the
 // others and returns how many touch. Without branches: whether a listed pair touches is
 // close to a coin toss (about half of them do), which a branch per pair would often
 // mispredict.
-template <bool kFriction>
+template <class C>
 [[gnu::always_inline]] inline int list_touching(const ForceContext& c, std::int32_t k0,
                                                 std::int32_t k1, TouchingPairs& t) {
 #if defined(__AVX512F__)
@@ -139,15 +181,8 @@ template <bool kFriction>
     put(t.dz, d.z);
     put(t.r2, r2);
     count += std::popcount(static_cast<unsigned>(touching));
-    if constexpr (kFriction) {
-      // Bit a of pair l's three doubles is bit 3 l + a of the store mask.
-      const unsigned clear = _pdep_u32(valid & ~touching, 0x249249u) * 7u;
-      double* u = c.history + 3 * static_cast<std::ptrdiff_t>(k);
-      const __m512d zero = _mm512_setzero_pd();
-      _mm512_mask_storeu_pd(u, static_cast<__mmask8>(clear), zero);
-      _mm512_mask_storeu_pd(u + 8, static_cast<__mmask8>(clear >> 8), zero);
-      _mm512_mask_storeu_pd(u + 16, static_cast<__mmask8>(clear >> 16), zero);
-    }
+    if constexpr (C::kFriction) clear_history(c.history, k, valid & ~touching);
+    if constexpr (C::kRolling) clear_history(c.rolling_history, k, valid & ~touching);
   }
   return count;
 #else
@@ -167,14 +202,9 @@ template <bool kFriction>
     t.dz[count] = dz;
     t.r2[count] = r2;
     count += touching;
-    if constexpr (kFriction) {
-      // u & keep, not a select, which the compiler makes a branch.
-      double* u = c.history + 3 * static_cast<std::ptrdiff_t>(k);
-      const std::uint64_t keep = -static_cast<std::uint64_t>(touching);
-      for (int a = 0; a < 3; ++a) {
-        u[a] = std::bit_cast<double>(std::bit_cast<std::uint64_t>(u[a]) & keep);
-      }
-    }
+    [[maybe_unused]] const std::uint64_t keep = -static_cast<std::uint64_t>(touching);
+    if constexpr (C::kFriction) keep_history(c.history, k, keep);
+    if constexpr (C::kRolling) keep_history(c.rolling_history, k, keep);
   }
   return count;
 #endif
@@ -183,10 +213,10 @@ template <bool kFriction>
 // The first pass over pairs [k0, k1): lists the touching pairs and clears the history of
 // the pairs out of contact. The list is padded with copies of its last pair to a whole
 // batch of lanes.
-template <bool kFriction>
+template <class C>
 [[gnu::always_inline]] inline void find_touching(const ForceContext& c, std::int32_t k0,
                                                  std::int32_t k1, TouchingPairs& t) {
-  const int count = list_touching<kFriction>(c, k0, k1, t);
+  const int count = list_touching<C>(c, k0, k1, t);
   t.count = count;
   for (int e = count; count > 0 && e % lanes::kWidth != 0; ++e) {
     t.pair[e] = t.pair[count - 1];
@@ -203,52 +233,74 @@ template <bool kFriction>
 // pairs, each field is a register of the table's column, read by a lane permutation (one
 // instruction where a gather takes eight loads).
 struct PairMaterials {
-  const double* table;  // species x species LoopMaterials, 6 doubles each
+  static constexpr int kFields = kMaterialFields;
+  const double* table;  // species x species LoopMaterials, kFields doubles each
   int species;
 #if defined(__AVX512F__)
-  __m512d column[6];
+  __m512d column[kFields];
 #endif
 
   explicit PairMaterials(const ForceContext& c)
       : table(reinterpret_cast<const double*>(c.pair_material)), species(c.species_count) {
-    static_assert(sizeof(LoopMaterial) == 6 * sizeof(double));
+    static_assert(sizeof(LoopMaterial) == kFields * sizeof(double));
 #if defined(__AVX512F__)
     if (species * species > 8) return;
-    for (int f = 0; f < 6; ++f) {
+    for (int f = 0; f < kFields; ++f) {
       alignas(64) double v[8] = {};
-      for (int r = 0; r < species * species; ++r) v[r] = table[6 * r + f];
+      for (int r = 0; r < species * species; ++r) v[r] = table[kFields * r + f];
       column[f] = _mm512_load_pd(v);
     }
 #endif
   }
 
-  // The materials of the lanes' pairs (i, j).
-  MaterialLanes of(const ForceContext& c, const lanes::Indices& i, const lanes::Indices& j) const {
-    if (species == 1) {
-      return {lanes::splat(table[0]), lanes::splat(table[1]), lanes::splat(table[2]),
-              lanes::splat(table[3]), lanes::splat(table[4]), lanes::splat(table[5])};
+  // The first `fields` fields of the lanes' materials (the others zero): a loop without
+  // rolling resistance reads no rolling field.
+  template <int kRead, class Field>
+  static MaterialOf<lanes::Reals> fields(const Field& field) {
+    MaterialOf<lanes::Reals> m{};
+    m.kn = field(0);
+    m.kt = field(1);
+    m.gamma_n = field(2);
+    m.gamma_t = field(3);
+    m.mu = field(4);
+    m.inv_kt = field(5);
+    if constexpr (kRead > kMaterialFieldsWithoutRolling) {
+      m.mu_roll = field(6);
+      m.k_roll = field(7);
     }
+    return m;
+  }
+
+  // The materials of the lanes' pairs (i, j).
+  template <int kRead>
+  MaterialOf<lanes::Reals> of(const ForceContext& c, const lanes::Indices& i,
+                              const lanes::Indices& j) const {
+    if (species == 1) return fields<kRead>([&](int f) { return lanes::splat(table[f]); });
     const lanes::Indices row = lanes::gather(c.species, i) * species + lanes::gather(c.species, j);
 #if defined(__AVX512F__)
     if (species * species <= 8) {
       // (The masked forms: the plain ones start from an undefined register, which GCC
       // warns about.)
       const __m512i r = _mm512_maskz_cvtepi32_epi64(0xff, reinterpret_cast<__m256i>(row));
-      const auto field = [&](int f) { return _mm512_maskz_permutexvar_pd(0xff, r, column[f]); };
-      return {field(0), field(1), field(2), field(3), field(4), field(5)};
+      return fields<kRead>(
+          [&](int f) { return lanes::Reals(_mm512_maskz_permutexvar_pd(0xff, r, column[f])); });
     }
 #endif
-    const lanes::Indices at = row * 6;
-    return {lanes::gather(table, at),     lanes::gather(table + 1, at),
-            lanes::gather(table + 2, at), lanes::gather(table + 3, at),
-            lanes::gather(table + 4, at), lanes::gather(table + 5, at)};
+    const lanes::Indices at = row * kFields;
+    return fields<kRead>([&](int f) { return lanes::gather(table + f, at); });
   }
 };
 
 // The second pass: the touching pairs' forces, a batch of lanes at a time. beyond: the
 // running maximum, per lane, of overlap - overlap_limit x the smaller radius (the padding
 // repeats a listed pair, so it adds nothing).
-template <class Law, bool kFriction, bool kRotation>
+inline void store(double* x, double* y, double* z, int b, const lanes::Vec& v) {
+  lanes::store(x + b, v.x);
+  lanes::store(y + b, v.y);
+  lanes::store(z + b, v.z);
+}
+
+template <class C>
 [[gnu::always_inline]] inline void resolve_touching(const ForceContext& c,
                                                     const PairMaterials& materials,
                                                     TouchingPairs& t, lanes::Reals& beyond) {
@@ -261,39 +313,45 @@ template <class Law, bool kFriction, bool kRotation>
     const Reals ai = lanes::gather(c.radius, i), aj = lanes::gather(c.radius, j);
     const Reals r = lanes::sqrt(load(t.r2 + b)), contact = ai + aj;
     beyond = lanes::max(beyond, (contact - r) - c.overlap_limit * lanes::min(ai, aj));
+    ContactInput<LaneMath> in;
     // One division, not three (divisions are the slowest lane operations).
-    const Vec n = (1.0 / r) * Vec{load(t.dx + b), load(t.dy + b), load(t.dz + b)};
-    Vec spin{};
-    if constexpr (kRotation) {
-      spin = ai * lanes::gather3(c.omega, t.i + b) + aj * lanes::gather3(c.omega, t.j + b);
+    in.n = (1.0 / r) * Vec{load(t.dx + b), load(t.dy + b), load(t.dz + b)};
+    in.delta = contact - r;
+    in.d = contact;
+    in.v_rel = lanes::gather3(c.v, t.i + b) - lanes::gather3(c.v, t.j + b);
+    in.spin = Vec{};
+    if constexpr (C::kSpin) {
+      const Vec wi = lanes::gather3(c.omega, t.i + b), wj = lanes::gather3(c.omega, t.j + b);
+      in.spin = ai * wi + aj * wj;
+      if constexpr (C::kRolling) {
+        in.w_rel = wi - wj;
+        in.r_eff = ai * aj / contact;
+      }
     }
-    Vec u{};
-    if constexpr (kFriction) u = lanes::gather3(c.history, t.pair + b);
-    const Reals m_eff = 1.0 / (lanes::gather(c.inv_mass, i) + lanes::gather(c.inv_mass, j));
-    const ContactLanes cf = resolve_contacts<Law, kFriction, kRotation>(
-        n, contact - r, contact, lanes::gather3(c.v, t.i + b) - lanes::gather3(c.v, t.j + b), spin,
-        m_eff, materials.of(c, i, j), u, c.dt_history);
-    lanes::store(t.fx + b, cf.force.x);
-    lanes::store(t.fy + b, cf.force.y);
-    lanes::store(t.fz + b, cf.force.z);
-    if constexpr (kRotation) {
-      lanes::store(t.cx + b, cf.c.x);
-      lanes::store(t.cy + b, cf.c.y);
-      lanes::store(t.cz + b, cf.c.z);
+    in.m_eff = 1.0 / (lanes::gather(c.inv_mass, i) + lanes::gather(c.inv_mass, j));
+    ContactHistory<LaneMath> h{};
+    if constexpr (C::kFriction) h.u = lanes::gather3(c.history, t.pair + b);
+    if constexpr (C::kRolling) h.theta = lanes::gather3(c.rolling_history, t.pair + b);
+    const ContactResult<LaneMath> cf = C::template evaluate<LaneMath>(
+        in, materials.of<C::kFields>(c, i, j), h, lanes::splat(c.dt_history));
+    store(t.fx, t.fy, t.fz, b, cf.force);
+    if constexpr (C::kRolling) {
+      // The rolling torque enters the spin sums, which finish_step turns into -a times them.
+      store(t.cx, t.cy, t.cz, b, cf.c - (1.0 / ai) * cf.roll);
+      store(t.px, t.py, t.pz, b, cf.c + (1.0 / aj) * cf.roll);
+    } else if constexpr (C::kSpin) {
+      store(t.cx, t.cy, t.cz, b, cf.c);
     }
-    if constexpr (kFriction) {
-      lanes::store(t.ux + b, u.x);
-      lanes::store(t.uy + b, u.y);
-      lanes::store(t.uz + b, u.z);
-    }
+    if constexpr (C::kFriction) store(t.ux, t.uy, t.uz, b, h.u);
+    if constexpr (C::kRolling) store(t.rx, t.ry, t.rz, b, h.theta);
   }
 }
 
 // The touching pairs' results written out in list order: reaction slot (and the pair's
 // reaction when recording), history, and the owner's sums.
-template <bool kFriction, bool kRotation>
+template <class C>
 [[gnu::always_inline]] inline void write_touching(const ForceContext& c, const TouchingPairs& t) {
-  constexpr int stride = kStride<kRotation>;
+  constexpr int stride = kStride<C::kSpin>;
   for (int e = 0; e < t.count; ++e) {
     const std::ptrdiff_t k = t.pair[e], i = t.i[e];
     double* rk = c.incoming + stride * std::ptrdiff_t{c.reaction_slot[k]};
@@ -304,37 +362,44 @@ template <bool kFriction, bool kRotation>
     fi[0] += t.fx[e];
     fi[1] += t.fy[e];
     fi[2] += t.fz[e];
-    if constexpr (kRotation) {
+    if constexpr (C::kSpin) {
       double* ci = c.spin_sum + 3 * i;
-      rk[3] = t.cx[e];
-      rk[4] = t.cy[e];
-      rk[5] = t.cz[e];
+      const bool own = !C::kRolling;  // the partner's spin sum is the owner's, unless rolling
+      rk[3] = own ? t.cx[e] : t.px[e];
+      rk[4] = own ? t.cy[e] : t.py[e];
+      rk[5] = own ? t.cz[e] : t.pz[e];
       ci[0] += t.cx[e];
       ci[1] += t.cy[e];
       ci[2] += t.cz[e];
     }
     if (c.reaction) std::copy(rk, rk + stride, c.reaction + stride * k);
-    if constexpr (kFriction) {
+    if constexpr (C::kFriction) {
       double* u = c.history + 3 * k;
       u[0] = t.ux[e];
       u[1] = t.uy[e];
       u[2] = t.uz[e];
+    }
+    if constexpr (C::kRolling) {
+      double* theta = c.rolling_history + 3 * k;
+      theta[0] = t.rx[e];
+      theta[1] = t.ry[e];
+      theta[2] = t.rz[e];
     }
   }
 }
 
 // Particle i's own forces: background and air damping, then its walls (beyond: as in
 // add_wall_forces).
-template <class Law, bool kFriction, bool kRotation>
+template <class C>
 [[gnu::always_inline]] inline void own_forces(const ForceContext& c, int i, double& beyond) {
   const Vec4 xi = load4(c.x, i), vi = load4(c.v, i);
-  const Vec4 wi = kRotation ? load4(c.omega, i) : Vec4::Zero();
+  const Vec4 wi = C::kSpin ? load4(c.omega, i) : Vec4::Zero();
   const Vec4 wall_velocity = load3(c.wall_velocity.data());
   Vec4 fi = -c.background_damping * vi - c.air_damping * (vi - wall_velocity);
   Vec4 ci = Vec4::Zero();
-  add_wall_forces<Law, kFriction, kRotation>(c, i, xi, vi, wi, fi, ci, beyond);
+  add_wall_forces<C>(c, i, xi, vi, wi, fi, ci, beyond);
   store(c.force, i, fi);
-  if constexpr (kRotation) store(c.spin_sum, i, ci);
+  if constexpr (C::kSpin) store(c.spin_sum, i, ci);
 }
 
 // Where thread `part`'s particles start: the first particle past its share of the
@@ -356,7 +421,7 @@ inline int share_start(const ForceContext& c, int part) {
 // reload.)
 // The deepest contact's overlap beyond the limit is a maximum over threads, which does not
 // depend on the split.
-template <class Law, bool kFriction, bool kRotation>
+template <class C>
 double forces(const ForceContext& context) {
   const ForceContext c = context;
   constexpr double kNone = -std::numeric_limits<double>::infinity();
@@ -367,14 +432,14 @@ double forces(const ForceContext& context) {
   for (int part = 0; part < c.threads; ++part) {
     const int p0 = share_start(c, part), p1 = share_start(c, part + 1);
     double walls = kNone;
-    for (int i = p0; i < p1; ++i) own_forces<Law, kFriction, kRotation>(c, i, walls);
+    for (int i = p0; i < p1; ++i) own_forces<C>(c, i, walls);
     TouchingPairs touching;
     const PairMaterials materials(c);
     lanes::Reals pairs = lanes::splat(kNone);
     for (std::int32_t k0 = c.first[p0]; k0 < c.first[p1]; k0 += kBlock) {
-      find_touching<kFriction>(c, k0, std::min(k0 + kBlock, c.first[p1]), touching);
-      resolve_touching<Law, kFriction, kRotation>(c, materials, touching, pairs);
-      write_touching<kFriction, kRotation>(c, touching);
+      find_touching<C>(c, k0, std::min(k0 + kBlock, c.first[p1]), touching);
+      resolve_touching<C>(c, materials, touching, pairs);
+      write_touching<C>(c, touching);
     }
     deepest = std::max({deepest, walls, lanes::max_of(pairs)});
   }
@@ -489,16 +554,10 @@ double finish_and_start(const KickContext& context) {
   return worst;
 }
 
-template <class Law, bool kFriction, bool kRotation>
+template <class C>
 Kernels kernels_of() {
-  return {&forces<Law, kFriction, kRotation>, &finish_step<kRotation>, &start_step<kRotation>,
-          &finish_and_start<kRotation>, kStride<kRotation>};
-}
-
-template <class Law>
-Kernels kernels_of_law(bool friction, bool rotation) {
-  if (!friction) return kernels_of<Law, false, false>();
-  return rotation ? kernels_of<Law, true, true>() : kernels_of<Law, true, false>();
+  return {&forces<C>, &finish_step<C::kSpin>, &start_step<C::kSpin>, &finish_and_start<C::kSpin>,
+          kStride<C::kSpin>};
 }
 
 }  // namespace
@@ -513,9 +572,9 @@ const char* kernel_instruction_set() {
 #endif
 }
 
-Kernels select_kernels(ContactLaw law, bool friction, bool rotation) {
-  return law == ContactLaw::Linear ? kernels_of_law<LinearLaw>(friction, rotation)
-                                   : kernels_of_law<HertzLaw>(friction, rotation);
+Kernels select_kernels(ContactLaw law, bool friction, bool rotation, bool rolling) {
+  return with_contact(law, friction, rotation, rolling,
+                      [](auto contact) { return kernels_of<decltype(contact)>(); });
 }
 
 }  // namespace granpipe::dem

@@ -1,15 +1,15 @@
 #pragma once
-// The loops of one time step, specialised at compile time by contact law, friction and
-// rotation so that a scene pays only for the physics it uses. The compiled combinations
-// (kernels.cpp instantiates exactly these six, picked by select_kernels):
+// The loops of one time step, specialised at compile time by the contact's parts
+// (contact_evaluator.hpp) and rotation so that a scene pays only for the physics it uses.
+// The compiled combinations (kernels.cpp instantiates exactly these eight, picked by
+// select_kernels through with_contact):
 //
-//   law      friction  rotation   use
-//   Linear   off       off        frictionless spheres: no history, no torques, spins kept
-//   Linear   on        off        friction on non-rotating particles (sliding blocks)
-//   Linear   on        on         the paper's spring-dashpot spheres (the Brazil-nut scene)
-//   Hertz    off       off        as above, Hertzian
-//   Hertz    on        off
-//   Hertz    on        on
+//   law      friction  rotation  rolling   use
+//   Linear   off       off       off       frictionless spheres: no history, no torques
+//   Linear   on        off       off       friction on non-rotating particles (sliding blocks)
+//   Linear   on        on        off       the paper's spring-dashpot spheres (Brazil nut)
+//   Linear   on        on        on        the same with rolling resistance
+//   Hertz    (the same four)
 //
 // Walls (planes and a cylinder) are a short run-time list checked per particle: each
 // check is a few flops with an early exit, against about ten times as many pair contacts.
@@ -25,7 +25,7 @@
 // thread is faster.
 #include <cstdint>
 
-#include "contact_law.hpp"
+#include "contact_evaluator.hpp"
 
 namespace granpipe::dem {
 
@@ -46,6 +46,7 @@ struct ForceContext {
   const LoopMaterial* wall_material;               // slot x species
   Vec3 wall_velocity;                              // at the velocities' time (half step)
   double** wall_history;                           // per slot, 3 x n (friction only)
+  double** wall_rolling_history;                   // per slot, 3 x n (rolling only)
   // Recording (for frames): per slot, normal and tangential force on the particle, 3 x n;
   // null when not recording.
   double** wall_normal_record;
@@ -53,7 +54,8 @@ struct ForceContext {
   // The half list.
   const std::int32_t *first, *partner, *owner, *reaction_slot;
   const double* work_before;  // per particle, n+1: where the threads' shares start
-  double* history;            // 3 per pair
+  double* history;            // 3 per pair: the tangential displacement
+  double* rolling_history;    // 3 per pair: the rolling angle (rolling only)
   double* incoming;           // 3 or 6 per slot, by partner (see NeighborList)
   double* reaction;           // 3 or 6 per pair, by pair; null when not recording
   double background_damping;
@@ -105,7 +107,8 @@ struct Kernels {
 const char* kernel_instruction_set();
 
 // The kernels of one combination; friction=false with rotation=true is served by the
-// frictionless kernels (no tangential force, so no torque).
-Kernels select_kernels(ContactLaw law, bool friction, bool rotation);
+// frictionless kernels (no tangential force, so no torque); rolling needs friction and
+// rotation (the Engine refuses it otherwise).
+Kernels select_kernels(ContactLaw law, bool friction, bool rotation, bool rolling);
 
 }  // namespace granpipe::dem

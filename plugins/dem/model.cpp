@@ -1,5 +1,6 @@
 #include "model.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -26,6 +27,7 @@ void check_material(const ContactMaterial& m, const std::string& where) {
   finite_nonnegative(m.gamma_n, "gamma_n");
   finite_nonnegative(m.gamma_t, "gamma_t");
   finite_nonnegative(m.mu, "mu");
+  finite_nonnegative(m.mu_roll, "rolling_friction");
 }
 
 // Integral of (1 - x^(5/2))^(-1/2) over [0, 1] = (2/5) B(2/5, 1/2): the shape factor of
@@ -54,6 +56,12 @@ void Model::set_walls(int s, const ContactMaterial& m) {
   for (int w = 0; w < kWallCount; ++w) wall[w * species() + s] = m;
 }
 
+bool Model::rolls() const {
+  const auto rolling = [](const ContactMaterial& m) { return m.mu_roll > 0.0; };
+  return std::any_of(pair.begin(), pair.end(), rolling) ||
+         std::any_of(wall.begin(), wall.end(), rolling);
+}
+
 void Model::check() const {
   const int n = species();
   require(n >= 1, "species", "at least one species", n);
@@ -74,7 +82,7 @@ void Model::check() const {
       check_material(between(a, b), where);
       const ContactMaterial &x = between(a, b), &y = between(b, a);
       if (x.kn != y.kn || x.kt != y.kt || x.gamma_n != y.gamma_n || x.gamma_t != y.gamma_t ||
-          x.mu != y.mu) {
+          x.mu != y.mu || x.mu_roll != y.mu_roll) {
         throw InputError("dem: " + where + ": expected the same material as species " +
                          std::to_string(b) + " with " + std::to_string(a) + ", got another");
       }

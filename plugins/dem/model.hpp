@@ -4,6 +4,7 @@
 // Subramaniam 2006, Sec. II, Eqs. 5-6):
 //   F_n = f(delta/d) (k_n delta n - gamma_n m_eff v_n)
 //   F_t = f(delta/d) (-k_t u_t - gamma_t m_eff v_t),   |F_t| <= mu |F_n|
+// and, when mu_roll > 0, a rolling torque |M_r| <= mu_roll R_eff |F_n| (contact_parts.hpp)
 // gamma_n and gamma_t are rates (1/time) multiplied by m_eff = m_i m_j / (m_i + m_j), as the
 // paper's Table I gives them and as LAMMPS' gran/hooke/history takes them; a wall counts
 // as infinitely heavy (m_eff = m_i).
@@ -21,6 +22,9 @@ struct ContactMaterial {
   double gamma_n = 0.0;  // normal damping rate (1/time), times m_eff
   double gamma_t = 0.0;  // tangential damping rate (1/time), times m_eff
   double mu = 0.0;       // Coulomb friction coefficient
+  // Rolling friction coefficient mu_r (a length ratio: the rolling torque's cap over
+  // R_eff |F_n|); 0: no rolling resistance (contact_parts.hpp, RollingSpring).
+  double mu_roll = 0.0;
 };
 
 inline constexpr int kWallCount = static_cast<int>(Wall::Count);
@@ -53,6 +57,8 @@ struct Model {
   void set_pair(int a, int b, const ContactMaterial& m);
   // Sets the material of species s against every wall.
   void set_walls(int s, const ContactMaterial& m);
+  // Whether any material has rolling resistance.
+  bool rolls() const;
 
   // Throws InputError naming the offending entry ("dem: species 1: density: expected a
   // finite value > 0, got -1") on a negative, infinite or NaN coefficient, a zero normal

@@ -24,8 +24,11 @@ constexpr double kContactWork = 6.0;
 
 }  // namespace
 
-NeighborList::NeighborList(double skin, int reaction_stride, bool history)
-    : reaction_stride(reaction_stride), skin_(skin), keep_history_(history) {}
+NeighborList::NeighborList(double skin, int reaction_stride, bool history, bool rolling_history)
+    : reaction_stride(reaction_stride),
+      skin_(skin),
+      keep_history_(history),
+      keep_rolling_history_(rolling_history) {}
 
 int NeighborList::Grid::cell_of(const double* x) const {
   int c[3];
@@ -156,13 +159,14 @@ void NeighborList::list_pairs(const Particles& p, int threads) {
   for (int i = 0; i < n; ++i) work_before[i + 1] += work_before[i];
 }
 
-void NeighborList::restore_history(const Particles& p, int threads) {
+void NeighborList::restore_history(const PairHistory& saved, std::vector<double>& to,
+                                   const Particles& p, int threads) {
   const int n = p.size();
-  history.resize(3 * partner.size());
+  to.resize(3 * partner.size());
 #pragma omp parallel for schedule(dynamic, 128) num_threads(threads)
   for (int i = 0; i < n; ++i) {
     for (int k = first[i]; k < first[i + 1]; ++k) {
-      saved_.find(p.tag[i], p.tag[partner[k]], &history[3 * static_cast<std::size_t>(k)]);
+      saved.find(p.tag[i], p.tag[partner[k]], &to[3 * static_cast<std::size_t>(k)]);
     }
   }
 }
@@ -179,6 +183,7 @@ void NeighborList::index_reverse(int n) {
 void NeighborList::rebuild(Particles& p, int threads) {
   const int n = p.size();
   if (keep_history_) saved_.save(first, partner, history, p.tag);
+  if (keep_rolling_history_) saved_rolling_.save(first, partner, rolling_history, p.tag);
   if (builds_ == 0 && n > 0) {
     std::vector<double> r(p.radius.data(), p.radius.data() + n);
     std::nth_element(r.begin(), r.begin() + n / 2, r.end());
@@ -195,7 +200,8 @@ void NeighborList::rebuild(Particles& p, int threads) {
   big_.resize(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i) big_[i] = p.radius[i] > split_radius_;
   list_pairs(p, threads);
-  if (keep_history_) restore_history(p, threads);
+  if (keep_history_) restore_history(saved_, history, p, threads);
+  if (keep_rolling_history_) restore_history(saved_rolling_, rolling_history, p, threads);
   reaction.resize(static_cast<std::size_t>(reaction_stride) * partner.size());
   incoming.assign(reaction.size(), 0.0);
   index_reverse(n);

@@ -11,7 +11,8 @@
 // particle (a Brazil-nut intruder) searches every cell within its own reach for all its
 // partners, so one large sphere does not inflate the cells of the whole bed.
 //
-// Per pair the list keeps the tangential displacement (history, 3 doubles, with friction)
+// Per pair the list keeps the tangential displacement (history, 3 doubles, with friction),
+// the rolling angle (rolling_history, 3 doubles, with rolling resistance)
 // and a reaction slot the force loop writes (force on the partner, and n x F_t). The slots
 // are laid out by partner, in increasing pair order per partner, so that each particle
 // gathers its reactions in a fixed order from one contiguous run of memory, with no
@@ -28,9 +29,10 @@ namespace granpipe::dem {
 class NeighborList {
  public:
   // skin: the list's distance margin; reaction_stride: doubles per reaction slot (3
-  // without rotation, 6 with: n x F_t too); history: whether pairs keep a tangential displacement.
+  // without rotation, 6 with: n x F_t too); history: whether pairs keep a tangential
+  // displacement; rolling_history: whether they keep a rolling angle.
   NeighborList() = default;
-  NeighborList(double skin, int reaction_stride, bool history);
+  NeighborList(double skin, int reaction_stride, bool history, bool rolling_history);
 
   // Sorts `p` spatially, rebuilds the list and carries the pair histories over.
   void rebuild(Particles& p, int threads);
@@ -45,7 +47,8 @@ class NeighborList {
   // Pairs of owner i are first[i] .. first[i+1]-1; owner[k] is the particle that lists
   // pair k (the force loop runs over pairs, not owners).
   std::vector<std::int32_t> first, partner, owner;
-  std::vector<double> history;  // 3 per pair
+  std::vector<double> history;          // 3 per pair
+  std::vector<double> rolling_history;  // 3 per pair (empty without rolling resistance)
   // The force loop's estimated work for the particles before i (n+1 entries), counting
   // their own forces, their listed pairs and their pairs in contact at the build: the
   // loop gives each thread an equal share of it.
@@ -74,18 +77,20 @@ class NeighborList {
   template <class F>
   void for_each_candidate(const Particles& p, int i, F&& f) const;
   void list_pairs(const Particles& p, int threads);
-  void restore_history(const Particles& p, int threads);
+  // A saved history (tangential or rolling) put back on the new list's pairs.
+  void restore_history(const PairHistory& saved, std::vector<double>& to, const Particles& p,
+                       int threads);
   void index_reverse(int n);
 
   double skin_ = 0.0;
-  bool keep_history_ = false;
+  bool keep_history_ = false, keep_rolling_history_ = false;
   double split_radius_ = 0.0, max_radius_ = 0.0;
   std::int64_t builds_ = 0;
   Grid grid_;
   std::vector<std::int32_t> cell_of_, cell_start_, order_, count_;
   std::vector<unsigned char> big_;
   Vectors x_build_;
-  PairHistory saved_;
+  PairHistory saved_, saved_rolling_;
 };
 
 }  // namespace granpipe::dem

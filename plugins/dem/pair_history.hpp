@@ -1,5 +1,7 @@
 #pragma once
-// Tangential contact history kept across neighbour-list rebuilds, keyed by particle pair.
+// A contact history (the tangential displacement, or the rolling angle: a 3-vector that
+// changes sign with the pair's order) kept across neighbour-list rebuilds, keyed by
+// particle pair.
 //
 // Before a rebuild, every pair with a non-zero tangential displacement u is filed under the
 // smaller tag of its two particles (a per-tag list, compressed rows: counting, prefix sum,

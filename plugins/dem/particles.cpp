@@ -23,6 +23,7 @@ void Particles::permute(const std::vector<std::int32_t>& order) {
   vectors(force);
   vectors(torque);
   for (Vectors& h : wall_history) vectors(h);
+  for (Vectors& h : wall_rolling_history) vectors(h);
   reals(radius);
   reals(inv_mass);
   reals(inv_inertia);

@@ -34,6 +34,8 @@ struct Particles {
   // Tangential elastic displacement against each active wall (slot order of WallSet),
   // zero when not touching it. Empty without friction.
   std::vector<Vectors> wall_history;
+  // The rolling angle against each active wall likewise; empty without rolling resistance.
+  std::vector<Vectors> wall_rolling_history;
 
   int size() const { return static_cast<int>(radius.size()); }
   // Applies the permutation new index k <- old index order[k] to every per-particle array,

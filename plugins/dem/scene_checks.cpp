@@ -5,8 +5,10 @@
 #include <functional>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "contact_evaluator.hpp"
 #include "granpipe/errors.hpp"
 #include "granpipe/format_number.hpp"
 #include "overlap_limit.hpp"
@@ -85,18 +87,17 @@ void check_steps_per_period(const PluginContext& ctx, const Drive& drive, double
 void check_drive(const PluginContext& ctx, const Scene& scene, const Drive& drive, double dt) {
   if (!drive.moves()) return;
   check_steps_per_period(ctx, drive, dt);
-  // The undamped overlap of a sphere hit at speed v (the paper's laws, d = 2a for a wall).
+  // The undamped overlap of a sphere hit at speed v (d = 2a for a wall).
   const double peak = std::abs(drive.amplitude * drive.angular_frequency);
-  const auto hit = [&](const ContactMaterial& m, double mass, double a, double scale) {
-    const double v = peak * scale;
-    return scene.law == ContactLaw::Linear
-               ? v * std::sqrt(mass / m.kn)
-               : std::pow(5.0 * mass * v * v * std::sqrt(2.0 * a) / (4.0 * m.kn), 0.4);
-  };
-  const Deepest d = deepest_against_walls(scene, drive.direction, hit);
+  const auto [d, exponent] = with_contact_law(scene.law, [&](auto normal) {
+    using Normal = decltype(normal);
+    const auto hit = [&](const ContactMaterial& m, double mass, double a, double scale) {
+      return Normal::impact_overlap(m.kn, mass, peak * scale, 2.0 * a);
+    };
+    return std::pair(deepest_against_walls(scene, drive.direction, hit),
+                     Normal::kSpeedPerOverlapExponent);
+  });
   if (d.fraction <= kMaxOverlapFraction) return;
-  // The overlap grows as v (linear) or v^(4/5) (Hertz).
-  const double exponent = scene.law == ContactLaw::Linear ? 1.0 : 1.25;
   const double v_max = peak * std::pow(kMaxOverlapFraction / d.fraction, exponent);
   throw InputError(
       ctx.param("drive") + ": amplitude " + format_number(drive.amplitude) + " and frequency " +
@@ -109,16 +110,15 @@ void check_gravity(const PluginContext& ctx, const Scene& scene, const Eigen::Ve
   const double g = gravity.stableNorm();
   if (g == 0.0) return;
   // The overlap at which a sphere rests on a wall under its weight.
-  const auto rest = [&](const ContactMaterial& m, double mass, double a, double scale) {
-    const double weight = mass * g * scale;
-    return scene.law == ContactLaw::Linear
-               ? weight / m.kn
-               : std::pow(weight * std::sqrt(2.0 * a) / m.kn, 2.0 / 3.0);
-  };
-  const Deepest d = deepest_against_walls(scene, gravity / g, rest);
+  const auto [d, exponent] = with_contact_law(scene.law, [&](auto normal) {
+    using Normal = decltype(normal);
+    const auto rest = [&](const ContactMaterial& m, double mass, double a, double scale) {
+      return Normal::rest_overlap(m.kn, mass * g * scale, 2.0 * a);
+    };
+    return std::pair(deepest_against_walls(scene, gravity / g, rest),
+                     Normal::kWeightPerOverlapExponent);
+  });
   if (d.fraction <= kMaxOverlapFraction) return;
-  // The overlap grows as g (linear) or g^(2/3) (Hertz).
-  const double exponent = scene.law == ContactLaw::Linear ? 1.0 : 1.5;
   const double g_max = g * std::pow(kMaxOverlapFraction / d.fraction, exponent);
   throw InputError(ctx.param("gravity") + ": |g| = " + format_number(g, 3) + " would press " +
                    described(d, "resting on") + ": expected |g| <= " + format_number(g_max, 3));

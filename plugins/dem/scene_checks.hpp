@@ -7,7 +7,7 @@
 //     under gravity, must stay within the overlap limit (overlap_limit.hpp), the largest
 //     sphere of every species that moves, against every wall.
 // Each refusal names the parameter and says how far it may go.
-#include "contact_law.hpp"
+#include "contact_parts.hpp"
 #include "drive.hpp"
 #include "granpipe/plugin.hpp"
 #include "model.hpp"

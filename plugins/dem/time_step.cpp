@@ -6,13 +6,15 @@
 #include <string>
 #include <vector>
 
+#include "contact_evaluator.hpp"
 #include "granpipe/errors.hpp"
 
 namespace granpipe::dem {
 
 namespace {
 
-// The lightest particle of each species (infinite when a species has none), and its radius.
+// The lightest particle of each species (infinite when a species has none), and its radius
+// (its moment of inertia is then 2/5 m a^2).
 struct Lightest {
   double mass = std::numeric_limits<double>::infinity();
   double radius = 0.0;
@@ -40,18 +42,26 @@ std::vector<Lightest> lightest(const Model& model, const Eigen::ArrayXd& radius,
   return out;
 }
 
-double contact_time(const ContactMaterial& m, double m_eff, double d, ContactLaw law,
-                    double speed) {
-  return law == ContactLaw::Linear ? linear_contact_time(m.kn, m.gamma_n, m_eff)
-                                   : hertz_contact_time(m.kn, d, m_eff, speed);
+double inertia(const Lightest& l) { return 0.4 * l.mass * l.radius * l.radius; }
+
+// The two bodies of a pair of species' lightest particles.
+TwoBodies pair_of(const Lightest& a, const Lightest& b, double speed) {
+  const double ia = inertia(a), ib = inertia(b);
+  return {a.mass * b.mass / (a.mass + b.mass), ia * ib / (ia + ib), a.radius + b.radius,
+          a.radius * b.radius / (a.radius + b.radius), speed};
 }
 
-}  // namespace
+// A species' lightest particle against a wall (infinitely heavy).
+TwoBodies wall_pair_of(const Lightest& a, double speed) {
+  return {a.mass, inertia(a), 2.0 * a.radius, a.radius, speed};
+}
 
+// The shortest contact with the parts of C (its Contact).
+template <class C>
 ContactTime smallest_contact_time(const Model& model, const WallSet& walls,
                                   const Eigen::ArrayXd& radius, const Eigen::ArrayXi& species,
-                                  ContactLaw law, double impact_speed) {
-  if (law == ContactLaw::Hertz && !(std::isfinite(impact_speed) && impact_speed > 0.0)) {
+                                  double impact_speed) {
+  if (C::NormalPart::kDurationNeedsSpeed && !(std::isfinite(impact_speed) && impact_speed > 0.0)) {
     std::ostringstream s;
     s << "dem: impact speed for the Hertz contact time: expected a finite value > 0, got "
       << impact_speed;
@@ -68,17 +78,28 @@ ContactTime smallest_contact_time(const Model& model, const WallSet& walls,
     for (int b = a; b < model.species(); ++b) {
       const Lightest& lb = light[static_cast<std::size_t>(b)];
       if (!std::isfinite(lb.mass)) continue;
-      const double m_eff = la.mass * lb.mass / (la.mass + lb.mass);
-      consider(contact_time(model.between(a, b), m_eff, la.radius + lb.radius, law, impact_speed),
+      consider(C::contact_time(model.between(a, b), pair_of(la, lb, impact_speed)),
                "species " + std::to_string(a) + " and species " + std::to_string(b));
     }
     for (int slot = 0; slot < walls.count(); ++slot) {
       const Wall w = walls.wall_of_slot(slot);
-      consider(contact_time(model.with_wall(w, a), la.mass, 2.0 * la.radius, law, impact_speed),
+      consider(C::contact_time(model.with_wall(w, a), wall_pair_of(la, impact_speed)),
                "species " + std::to_string(a) + " and wall " + to_string(w));
     }
   }
   return best;
+}
+
+}  // namespace
+
+ContactTime smallest_contact_time(const Model& model, const WallSet& walls,
+                                  const Eigen::ArrayXd& radius, const Eigen::ArrayXi& species,
+                                  ContactLaw law, double impact_speed) {
+  // Every part's duration counts (a part without its material, e.g. no rolling friction,
+  // gives none); the engine refuses rolling without friction and rotation.
+  return with_contact(law, true, true, model.rolls(), [&](auto contact) {
+    return smallest_contact_time<decltype(contact)>(model, walls, radius, species, impact_speed);
+  });
 }
 
 StepCheck check_time_step(double dt, const ContactTime& shortest) {

@@ -1,6 +1,7 @@
 #pragma once
-// Is the time step small enough? The contact time t_c of Eq. (10) of every species pair
-// and of every species against every wall, with the lightest particles of each species
+// Is the time step small enough? The contact time t_c of every species pair and of every
+// species against every wall (the shortest duration any part of the contact gives: Eq. (10)
+// for the linear law, contact_parts.hpp), with the lightest particles of each species
 // present (the light pairs decide: the Brazil-nut intruder is 220 times heavier than a
 // small sphere), and the verdict on dt:
 //   dt <= t_c / 20         fine
@@ -13,7 +14,7 @@
 // t_c/25 (dt = 2e-4, t_c = 4.97e-3 for two small spheres).
 #include <string>
 
-#include "contact_law.hpp"
+#include "contact_parts.hpp"
 #include "model.hpp"
 #include "particles.hpp"
 #include "walls.hpp"
