@@ -40,14 +40,14 @@ struct Share {
   void add_extent(const Cell& cell, const CellBounds& bounds) {
     if (!owns_any(cell)) return;
     const std::uint8_t flags = bounds.breach(cell.centre) | kSeen;
-    const double overshoot =
+    const double shortfall =
         bounds.has_periodic_axes()
-            ? bounds.periodic_overshoot(cell.centre, points.reach(cell.centre, cell.vertices[0]))
+            ? bounds.periodic_shortfall(cell.centre, points.reach(cell.centre, cell.vertices[0]))
             : 0.0;
     for (std::uint32_t k : cell.vertices) {
       if (!owns(k)) continue;
       out.flags[k] |= flags;
-      out.overshoot[k] = std::max(out.overshoot[k], overshoot);
+      out.shortfall[k] = std::max(out.shortfall[k], shortfall);
     }
   }
 
