@@ -59,8 +59,11 @@ struct Share {
     const std::vector<Eigen::Vector3d>& x = points.position;
     const Eigen::Vector3d ab = x[b] - x[a];
     const double six_volume = ab.dot((c_n - x[a]).cross(c_t - x[a]));
-    // The radical plane cuts ab at the fraction t_a from a.
-    const double t_a = 0.5 + (points.weight(a) - points.weight(b)) / (2.0 * ab.squaredNorm());
+    // The radical plane cuts ab at the fraction t_a from a: the middle without weights
+    // (0.5 + 0 / |ab|^2 too, to the bit, but for the division's time).
+    const double t_a = points.weights.empty()
+                           ? 0.5
+                           : 0.5 + (points.weight(a) - points.weight(b)) / (2.0 * ab.squaredNorm());
     if (owns(a)) out.volume[a] += t_a * six_volume / 6.0;
     if (owns(b)) out.volume[b] += (1.0 - t_a) * six_volume / 6.0;
   }
