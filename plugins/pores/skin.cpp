@@ -37,11 +37,15 @@ Skin first_skin(const Frame& frame, double radius) {
   Skin skin(std::min(kBulk * radius, period));
   skin.edge = std::min(kEdge * radius, period);
   for (int a = 0; a < 3; ++a) {
+    if (c.periodic(a)) continue;
+    const double extent = packing_side(frame, a, 1) - packing_side(frame, a, 0);
     for (int high = 0; high < 2; ++high) {
-      if (c.periodic(a)) continue;
-      const double depth = c.boundary[a][high] == Boundary::Open ? kOpenDepth : kWallDepth;
-      const double inward = high ? -1.0 : 1.0;
-      skin.band[a][high] = packing_side(frame, a, high) + inward * depth * radius;
+      const double depth =
+          (c.boundary[a][high] == Boundary::Open ? kOpenDepth : kWallDepth) * radius;
+      // A band costs few images only in a packing several times deeper than it: in a
+      // shallower one the bulk's width is tried first, and widened as needed.
+      if (3.5 * depth > extent) continue;
+      skin.band[a][high] = packing_side(frame, a, high) + (high ? -depth : depth);
     }
   }
   return skin;

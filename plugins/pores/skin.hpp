@@ -38,8 +38,9 @@ struct Skin {
 // mean: 4 radii in the bulk (enough for a random packing's cells), 10 radii within 24
 // radii of an open side (the hollows of a deposit's rough top need about 7.5 radii at 10^5
 // spheres, 8 at 10^6; their cells' spheres reach down about twice that) and within 8 radii
-// of a wall (the cells cut there need about 4.3 radii at 10^5). Bands this thin cost few
-// images; a skin too thin is widened (measure_pores).
+// of a wall (the cells cut there need about 4.3 radii at 10^5), where the packing is at
+// least three and a half times as deep as the band along its axis. Bands this thin cost few images;
+// a skin too thin is widened (measure_pores).
 Skin first_skin(const Frame& frame, double radius);
 
 }  // namespace granpipe::pores
