@@ -81,6 +81,17 @@ struct Share {
   }
 };
 
+// The neighbours' centres of a cell some cells ahead, fetched into the cache while the
+// cells before it are summed: they lie anywhere in the array, and waiting on them was half
+// of the sums' time.
+constexpr std::size_t kPrefetchAhead = 8;
+
+template <class Cell>
+void prefetch_neighbours(const Cell& cell, const std::vector<Eigen::Vector3d>& centre) {
+  for (std::uint32_t n : cell.neighbours)
+    if (n != kHull) __builtin_prefetch(&centre[n]);
+}
+
 // Runs add(share) on each thread, each with its own share of the points.
 template <class Add>
 void by_shares(const WeightedPoints& points, PowerVolumes& out, int threads, Add add) {
@@ -124,7 +135,10 @@ void sum_volumes(PowerVolumes& v, const WeightedPoints& points, const std::vecto
   std::vector<Eigen::Vector3d> centre(cells.size());
   for (std::size_t t = 0; t < cells.size(); ++t) centre[t] = cells[t].centre;
   by_shares(points, v, threads, [&](Share& share) {
-    for (std::size_t t = 0; t < cells.size(); ++t) share.add_wedges(cells[t], t, centre);
+    for (std::size_t t = 0; t < cells.size(); ++t) {
+      if (t + kPrefetchAhead < cells.size()) prefetch_neighbours(cells[t + kPrefetchAhead], centre);
+      share.add_wedges(cells[t], t, centre);
+    }
   });
 }
 
