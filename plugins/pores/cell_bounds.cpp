@@ -7,8 +7,8 @@
 
 namespace granpipe::pores {
 
-CellBounds::CellBounds(const Frame& frame, double tolerance)
-    : box_lo_(frame.container.lo), box_hi_(frame.container.hi) {
+CellBounds::CellBounds(const Frame& frame, double tolerance, const Skin& skin)
+    : box_lo_(frame.container.lo), box_hi_(frame.container.hi), skin_(skin) {
   const Container& c = frame.container;
   constexpr double infinity = std::numeric_limits<double>::infinity();
   cylinder_ = c.shape == ContainerShape::Cylinder;
@@ -50,13 +50,13 @@ std::uint8_t CellBounds::breach(const Eigen::Vector3d& c) const {
   return flags;
 }
 
-double CellBounds::periodic_overshoot(const Eigen::Vector3d& c, double reach) const {
+double CellBounds::periodic_shortfall(const Eigen::Vector3d& c, double reach) const {
   double overshoot = 0.0;
   for (int a = 0; a < 3; ++a) {
     if (!periodic_[a]) continue;
     overshoot = std::max({overshoot, box_lo_[a] - (c[a] - reach), c[a] + reach - box_hi_[a]});
   }
-  return overshoot;
+  return overshoot > 0.0 ? std::max(0.0, overshoot - skin_.around(c, reach)) : 0.0;
 }
 
 }  // namespace granpipe::pores

@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "granpipe/frame.hpp"
+#include "skin.hpp"
 
 namespace granpipe::pores {
 
@@ -23,14 +24,16 @@ enum CellFlag : std::uint8_t {
 class CellBounds {
  public:
   // A vertex may stray `tolerance` (a length) beyond a wall or the cylinder: rounding puts
-  // the vertices of a lattice's cells that lie on a wall a hair either side of it.
-  CellBounds(const Frame& frame, double tolerance);
+  // the vertices of a lattice's cells that lie on a wall a hair either side of it. The
+  // images along periodic sides reach `skin` beyond the box.
+  CellBounds(const Frame& frame, double tolerance, const Skin& skin);
 
   // kOutside (with kOutsideWithinWalls), kBeyondWall or both for a vertex at `c`; 0
   // inside.
   std::uint8_t breach(const Eigen::Vector3d& c) const;
-  // How far the sphere (c, reach) sticks out of the box along its periodic axes; 0 inside.
-  double periodic_overshoot(const Eigen::Vector3d& c, double reach) const;
+  // How far the sphere (c, reach) sticks out of the box along its periodic axes beyond the
+  // skin; 0 within it.
+  double periodic_shortfall(const Eigen::Vector3d& c, double reach) const;
 
   bool has_plane_walls() const { return plane_walls_; }
   bool has_periodic_axes() const { return periodic_[0] || periodic_[1] || periodic_[2]; }
@@ -45,6 +48,7 @@ class CellBounds {
   std::array<std::array<std::uint8_t, 2>, 3> flag_{};
   std::array<bool, 3> periodic_{};
   Eigen::Vector3d box_lo_, box_hi_;
+  Skin skin_;
   bool cylinder_ = false;
   Eigen::Vector2d axis_ = Eigen::Vector2d::Zero();  // the cylinder's, moved by the offset
   double cylinder_limit_ = 0.0;                     // its radius plus the tolerance

@@ -46,7 +46,7 @@ CellVolumes per_particle(const PowerVolumes& v, const Centres& centres) {
       ++out.undefined;
     }
   }
-  out.skin_needed = skin_for_cells(v, centres);
+  out.shortfall = shortfall_of_cells(v, centres);
   return out;
 }
 
@@ -63,26 +63,25 @@ CellVolumes volumes_of(PowerVolumes v, const WeightedPoints& points, const std::
 
 PowerVolumes voronoi_extents(const std::vector<DelaunayCell>& cells,
                              const std::vector<std::uint32_t>& hull, const Centres& centres,
-                             const Frame& frame, double tolerance, int threads) {
-  return cell_extents(WeightedPoints{centres.points, kUnweighted, 0.0}, cells, hull,
-                      CellBounds(frame, tolerance), threads);
+                             const CellBounds& bounds, int threads) {
+  return cell_extents(WeightedPoints{centres.points, kUnweighted, 0.0}, cells, hull, bounds,
+                      threads);
 }
 
-double skin_for_cells(const PowerVolumes& extents, const Centres& centres) {
-  double needed = 0.0;
+double shortfall_of_cells(const PowerVolumes& extents, const Centres& centres) {
+  double shortfall = 0.0;
   for (std::uint32_t p : centres.primary)
-    if (defined(extents.flags[p])) needed = std::max(needed, extents.overshoot[p]);
-  return needed;
+    if (defined(extents.flags[p])) shortfall = std::max(shortfall, extents.shortfall[p]);
+  return shortfall;
 }
 
 CellVolumes voronoi_volumes(PowerVolumes extents, const std::vector<DelaunayCell>& cells,
-                            const Centres& centres, const Frame& frame, double tolerance,
-                            int threads) {
+                            const Centres& centres, const CellBounds& bounds, int threads) {
   return volumes_of(std::move(extents), WeightedPoints{centres.points, kUnweighted, 0.0}, cells,
-                    centres, CellBounds(frame, tolerance), threads);
+                    centres, bounds, threads);
 }
 
-CellVolumes laguerre_volumes(const Centres& centres, const Frame& frame, double tolerance,
+CellVolumes laguerre_volumes(const Centres& centres, const Frame& frame, const CellBounds& bounds,
                              int threads) {
   std::vector<double> weights(centres.points.size());
   for (std::size_t k = 0; k < weights.size(); ++k)
@@ -91,7 +90,6 @@ CellVolumes laguerre_volumes(const Centres& centres, const Frame& frame, double 
   const WeightedPoints points{centres.points, weights, largest * largest};
   RegularTriangulation t(centres.points, weights);
   const std::vector<DualCell> cells = t.cells(threads);
-  const CellBounds bounds(frame, tolerance);
   return volumes_of(cell_extents(points, cells, t.hull(), bounds, threads), points, cells, centres,
                     bounds, threads);
 }

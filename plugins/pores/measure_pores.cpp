@@ -6,10 +6,12 @@
 #include <sstream>
 #include <utility>
 
+#include "cell_bounds.hpp"
 #include "cell_volumes.hpp"
 #include "delaunay_cells.hpp"
 #include "granpipe/errors.hpp"
 #include "periodic_images.hpp"
+#include "skin.hpp"
 #include "tangent_cells.hpp"
 
 namespace granpipe::pores {
@@ -61,17 +63,16 @@ double shortest_period(const Container& c) {
   return shortest;
 }
 
-// A tenth more than needed and a quarter more than before at least, at most the period;
-// throws InputError after `where` when the skin spans the period already.
-double wider_skin(double skin, double needed, double period, const std::string& where) {
-  if (skin >= period) {
+// Skin::wider; throws InputError after `where` when the skin spans the period already.
+Skin wider_skin(const Skin& skin, double shortfall, double period, const std::string& where) {
+  if (skin.bulk >= period) {
     std::ostringstream m;
     m << where << ": expected periodic sides longer than the pores (" << period
       << "), got a pore sphere or a particle's cell wider than the box; pores of boxes this "
          "small are not computed";
     throw InputError(m.str());
   }
-  return std::min(std::max(1.1 * needed, 1.25 * skin), period);
+  return skin.wider(shortfall, period);
 }
 
 struct TriangulatedPores {
@@ -96,7 +97,7 @@ struct Measure {
   // The pores of the Delaunay cells (circumspheres for equal radii, tangent
   // spheres for unequal ones) in the primary cell, and the particles' cells.
   TriangulatedPores pores_of(std::vector<DelaunayCell>& cells, PowerVolumes extents,
-                             const Centres& centres) const {
+                             const Centres& centres, const CellBounds& bounds) const {
     TriangulatedPores found;
     found.cells = static_cast<long>(cells.size());
     if (!radii.equal) {
@@ -109,59 +110,67 @@ struct Measure {
     found.flat_cells = merged.flat_cells;
     found.pores = std::move(merged.pores);
     std::erase_if(found.pores, [&](const Pore& p) { return !in_box(primary, p.centre); });
-    found.volumes =
-        radii.equal ? voronoi_volumes(std::move(extents), cells, centres, frame, length(), threads)
-                    : laguerre_volumes(centres, frame, length(), threads);
+    found.volumes = radii.equal
+                        ? voronoi_volumes(std::move(extents), cells, centres, bounds, threads)
+                        : laguerre_volumes(centres, frame, bounds, threads);
     return found;
   }
 
-  // The skin the images need: every counted pore's sphere, grown by the largest particle
-  // radius (the circumsphere of the pore's centres), and every cell's orthogonal sphere
-  // inside it. Only the pores counted need the skin: the huge cells above an open-topped
-  // packing with periodic sides never fit in it, and lie outside a region below the top.
-  double skin_needed(const TriangulatedPores& found) const {
-    double needed = found.volumes.skin_needed;
-    for (const Pore& p : found.pores)
-      if (counted(p.centre)) needed = std::max(needed, p.radius + radii.largest - radii.mean);
-    return needed;
+  // How far the sphere of a pore counted, grown by the largest particle radius (the
+  // circumsphere of the pore's centres), reaches beyond the images.
+  double pore_shortfall(const Eigen::Vector3d& centre, double radius,
+                        const CellBounds& bounds) const {
+    return counted(centre) ? bounds.periodic_shortfall(centre, radius + radii.largest - radii.mean)
+                           : 0.0;
   }
 
-  // What skin_needed will ask, from the cells before they are merged and the extents of
+  // How much farther the images must reach for every counted pore's sphere and every
+  // cell's orthogonal sphere. Only the pores counted need the skin: the huge cells above
+  // an open-topped packing with periodic sides never fit in it, and lie outside a region
+  // below the top.
+  double shortfall_of(const TriangulatedPores& found, const CellBounds& bounds) const {
+    double shortfall = found.volumes.shortfall;
+    for (const Pore& p : found.pores)
+      shortfall = std::max(shortfall, pore_shortfall(p.centre, p.radius, bounds));
+    return shortfall;
+  }
+
+  // What shortfall_of will find, from the cells before they are merged and the extents of
   // the Voronoi cells (which stand for the Laguerre cells of unequal radii): cheap enough
   // to settle the skin before the pores and volumes are computed.
-  double rough_skin_needed(const std::vector<DelaunayCell>& cells, const PowerVolumes& extents,
-                           const Centres& centres) const {
-    double needed = skin_for_cells(extents, centres);
+  double rough_shortfall(const std::vector<DelaunayCell>& cells, const PowerVolumes& extents,
+                         const Centres& centres, const CellBounds& bounds) const {
+    double shortfall = shortfall_of_cells(extents, centres);
     for (const DelaunayCell& c : cells) {
-      if (!c.flat && in_box(primary, c.centre) && counted(c.centre))
-        needed = std::max(needed, c.radius + radii.largest - radii.mean);
+      if (!c.flat && in_box(primary, c.centre))
+        shortfall = std::max(shortfall, pore_shortfall(c.centre, c.radius, bounds));
     }
-    return needed;
+    return shortfall;
   }
 
-  // Along periodic sides, the images within a skin that starts at kFirstSkin radii and
-  // widens to what the cells need (a tenth more, and by a quarter at least: what a thin
-  // skin measures can be short, its cells near the skin being wrong). The images of a
-  // wider skin are added to the triangulation made: the Delaunay triangulation of a set of
+  // Along periodic sides, the images within a skin that starts at first_skin and widens
+  // to what the cells need (a tenth more, and by a quarter at least: what a thin skin
+  // measures can be short, its cells near the skin being wrong). The images of a wider
+  // skin are added to the triangulation made: the Delaunay triangulation of a set of
   // points is one, whatever the order they come in (CGAL breaks the ties of cospherical
   // points by a symbolic perturbation that depends on the points alone).
   TriangulatedPores triangulated_pores(const std::string& where) const {
-    constexpr double kFirstSkin = 4.0;
     const double period = shortest_period(frame.container);
     const bool periodic = std::isfinite(period);
-    double skin = std::min(kFirstSkin * radii.mean, period);
+    Skin skin = first_skin(frame, radii.mean);
     Centres centres = centres_with_images(frame, skin);
     DelaunayTriangulation t(centres, frame, where);
     while (true) {
+      const CellBounds bounds(frame, length(), skin);
       std::vector<DelaunayCell> cells = t.cells(length(), threads);
-      PowerVolumes extents = voronoi_extents(cells, t.hull(), centres, frame, length(), threads);
-      double needed = periodic ? rough_skin_needed(cells, extents, centres) : 0.0;
-      if (needed <= skin) {
-        TriangulatedPores found = pores_of(cells, std::move(extents), centres);
-        needed = periodic ? skin_needed(found) : 0.0;
-        if (needed <= skin) return found;
+      PowerVolumes extents = voronoi_extents(cells, t.hull(), centres, bounds, threads);
+      double shortfall = periodic ? rough_shortfall(cells, extents, centres, bounds) : 0.0;
+      if (shortfall <= 0.0) {
+        TriangulatedPores found = pores_of(cells, std::move(extents), centres, bounds);
+        shortfall = periodic ? shortfall_of(found, bounds) : 0.0;
+        if (shortfall <= 0.0) return found;
       }
-      const double wider = wider_skin(skin, needed, period, where);
+      const Skin wider = wider_skin(skin, shortfall, period, where);
       const Centres more = images_between(frame, skin, wider);
       t.insert(more.points);
       centres.points.insert(centres.points.end(), more.points.begin(), more.points.end());

@@ -42,6 +42,15 @@ struct SameSphere {
   }
 };
 
+// The neighbours of a cell some cells ahead, fetched into the cache before their
+// comparison: they lie anywhere in the cells' array.
+constexpr std::size_t kPrefetchAhead = 8;
+
+void prefetch_neighbours(const std::vector<DelaunayCell>& cells, std::size_t i) {
+  for (std::uint32_t n : cells[i].neighbours)
+    if (n != kHull) __builtin_prefetch(&cells[n]);
+}
+
 // The pairs of cells of one sphere, each thread comparing a run of cells: concatenated in
 // the runs' order, they come in the cells' order whatever the threads.
 std::vector<ParticlePair> same_sphere_pairs(const std::vector<DelaunayCell>& cells, double length,
@@ -52,8 +61,10 @@ std::vector<ParticlePair> same_sphere_pairs(const std::vector<DelaunayCell>& cel
     const auto part = static_cast<std::size_t>(omp_get_thread_num());
     const auto parts = static_cast<std::size_t>(omp_get_num_threads());
     SameSphere same{cells, length, {}};
-    for (std::size_t i = cells.size() * part / parts; i < cells.size() * (part + 1) / parts; ++i)
+    for (std::size_t i = cells.size() * part / parts; i < cells.size() * (part + 1) / parts; ++i) {
+      if (i + kPrefetchAhead < cells.size()) prefetch_neighbours(cells, i + kPrefetchAhead);
       same.compare_around(static_cast<std::uint32_t>(i));
+    }
     runs[part] = std::move(same.pairs);
   }
   std::vector<ParticlePair> pairs;

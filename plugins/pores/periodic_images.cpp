@@ -97,11 +97,11 @@ std::vector<Eigen::Vector3d> wrapped_centres(const Frame& frame) {
 
 }  // namespace
 
-Centres centres_with_images(const Frame& frame, double skin) {
+Centres centres_with_images(const Frame& frame, const Skin& skin) {
   const std::vector<Eigen::Vector3d> wrapped = wrapped_centres(frame);
   Centres all;
   for (std::uint32_t k = 0; k < wrapped.size(); ++k)
-    add_images(all, frame.container, k, wrapped[k], skin, 0.0);
+    add_images(all, frame.container, k, wrapped[k], skin.at(wrapped[k]), 0.0);
   Centres centres = in_spatial_order(all);
   centres.primary.resize(wrapped.size());
   for (std::uint32_t row = 0; row < centres.points.size(); ++row) {
@@ -111,11 +111,11 @@ Centres centres_with_images(const Frame& frame, double skin) {
   return centres;
 }
 
-Centres images_between(const Frame& frame, double thinner, double skin) {
+Centres images_between(const Frame& frame, const Skin& thinner, const Skin& skin) {
   const std::vector<Eigen::Vector3d> wrapped = wrapped_centres(frame);
   Centres images;
   for (std::uint32_t k = 0; k < wrapped.size(); ++k)
-    add_images(images, frame.container, k, wrapped[k], skin, thinner);
+    add_images(images, frame.container, k, wrapped[k], skin.at(wrapped[k]), thinner.at(wrapped[k]));
   return in_spatial_order(images);
 }
 

@@ -30,12 +30,12 @@ struct WeightedPoints {
 struct PowerVolumes {
   std::vector<double> volume;       // per point triangulated
   std::vector<std::uint8_t> flags;  // per point: CellFlag bits
-  // Per point: how far the orthogonal sphere of one of its cells sticks out of the box
-  // along periodic axes, at most (a point outside that sphere could cut the cell).
-  std::vector<double> overshoot;
+  // Per point: how far the orthogonal sphere of one of its cells sticks out beyond the
+  // images along periodic axes, at most (a point outside that sphere could cut the cell).
+  std::vector<double> shortfall;
 };
 
-// Each point's flags and overshoot from its cells, whatever their order and numbering,
+// Each point's flags and shortfall from its cells, whatever their order and numbering,
 // and the points on the hull (kUnbounded); volumes 0. Cell is DualCell or derived from it.
 template <class Cell>
 PowerVolumes cell_extents(const WeightedPoints& points, const std::vector<Cell>& cells,

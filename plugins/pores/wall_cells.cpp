@@ -70,18 +70,18 @@ void cut_cell(ConvexCell& cell, std::size_t i, std::uint32_t k, const RowNeighbo
   }
 }
 
-// Sets point k's volume, flags and overshoot from its cell.
+// Sets point k's volume, flags and shortfall from its cell.
 void measure_cell(PowerVolumes& v, std::uint32_t k, const ConvexCell& cell,
                   const WeightedPoints& points, const CellBounds& bounds) {
   const Eigen::Vector3d& p = points.position[k];
   v.volume[k] = cell.volume();
   v.flags[k] = cell.empty() ? 0 : kSeen;
-  v.overshoot[k] = 0.0;
+  v.shortfall[k] = 0.0;
   for (const Eigen::Vector3d& corner : cell.corners()) {
     v.flags[k] |= bounds.breach(corner + p);
     if (bounds.has_periodic_axes()) {
-      v.overshoot[k] = std::max(v.overshoot[k],
-                                bounds.periodic_overshoot(corner + p, points.reach(corner + p, k)));
+      v.shortfall[k] = std::max(v.shortfall[k],
+                                bounds.periodic_shortfall(corner + p, points.reach(corner + p, k)));
     }
   }
 }

@@ -13,7 +13,7 @@
 
 namespace granpipe::pores {
 
-// Replaces the volume, flags and overshoot of each point of `rows` in `v` by those of its
+// Replaces the volume, flags and shortfall of each point of `rows` in `v` by those of its
 // cell cut from bounds.cut_box(); an empty cut cell (a sphere whose cell lies beyond a
 // wall) has no kSeen, as a hidden sphere.
 template <class Cell>

@@ -2,7 +2,7 @@
 centres and against scipy's Delaunay (Qhull), side by side in one run (issue 20).
 
     /usr/bin/python3 tests/bench/pores_vs_qhull.py BUILD [--sizes 1e5 1e6] [--work DIR]
-                                                   [--repeats 2] [--seed 21]
+                                                   [--repeats 2] [--seed 21] [--without-qhull]
 
 The packings are granpipe's own random packings: sequential gravitational depositions
 (the spheres3d_tap source, Jullien-Meakin steepest descent, taps 0) of N spheres of
@@ -21,7 +21,7 @@ it added to the process's peak resident size, per sphere (wait4's ru_maxrss less
 before the timed part). The analysis is bench_pores' (measure_pores with region
 inner, margin 2 R, and the histograms): triangulation of the centres and of the periodic
 images, circumspheres, degenerate merge, histograms and Voronoi volumes (cells at the
-walls cut there).
+walls cut there). --without-qhull leaves Qhull out (minutes a run at 10^6 spheres).
 """
 import argparse
 import json
@@ -102,14 +102,15 @@ def deposit(build, work, n, sides, first_seed, attempts=5):
              f"to {first_seed + attempts - 1}")
 
 
-def measurements(build, frames, points, repeats):
+def measurements(build, frames, points, repeats, with_qhull):
     """Per program, the runs' values; the programs take turns, so that a change of the
     machine's load falls on all of them."""
     bench = f"{build}/bin/bench_pores"
     programs = {"CGAL bare": [bench, "bare", frames],
                 "granpipe 1 thread": [bench, "analysis", frames, "1"],
-                "granpipe 2 threads": [bench, "analysis", frames, "2"],
-                "Qhull": ["/usr/bin/python3", "-c", QHULL, points]}
+                "granpipe 2 threads": [bench, "analysis", frames, "2"]}
+    if with_qhull:
+        programs["Qhull"] = ["/usr/bin/python3", "-c", QHULL, points]
     runs = {name: [] for name in programs}
     for _ in range(repeats):
         for name, command in programs.items():
@@ -142,6 +143,7 @@ def main():
     parser.add_argument("--work")
     parser.add_argument("--repeats", type=int, default=2)
     parser.add_argument("--seed", type=int, default=21)
+    parser.add_argument("--without-qhull", action="store_true")
     args = parser.parse_args()
     work = args.work or os.path.join(args.build, "pores_vs_qhull")
     print(machine())
@@ -151,9 +153,9 @@ def main():
             frames, seed = deposit(args.build, work, n, sides, args.seed)
             points = os.path.join(work, f"points_{n}_{sides}_seed{seed}.bin")
             run([f"{args.build}/bin/bench_pores", "points", frames, points])
-            runs = measurements(args.build, frames, points, args.repeats)
+            runs = measurements(args.build, frames, points, args.repeats, not args.without_qhull)
             bare = summary(runs["CGAL bare"])[0]
-            qhull = summary(runs["Qhull"])[0]
+            qhull = summary(runs["Qhull"])[0] if "Qhull" in runs else math.nan
             for name, values in runs.items():
                 seconds, cpu, added = summary(values)
                 rows.append((n, sides, seed, name, seconds, cpu, seconds / bare,

@@ -16,6 +16,7 @@
 #include "granpipe/frame.hpp"
 #include "measure_pores.hpp"
 #include "periodic_images.hpp"
+#include "skin.hpp"
 
 namespace {
 
@@ -123,6 +124,39 @@ TEST(PoresCells, WideningTheSkinGivesTheCellsOfTheWiderSkin) {
   const auto a = circumcentres(widened, side);
   EXPECT_GT(a.size(), 6u * 300u);
   EXPECT_EQ(a, circumcentres(wide, side));
+}
+
+// A deep box with periodic sides, a wall below and an open top: the first skin is 4 radii
+// wide in the bulk and 10 in the bands along the wall (8 radii deep) and the packing's top
+// (24 deep); a sphere has the band's width only when it lies in the band whole.
+TEST(PoresCells, SkinIsWiderInBandsAlongTheOtherSides) {
+  using namespace granpipe::pores;
+  Container c = Container::open_top_box(3, {0, 0, 0}, {100, 100, 120});
+  for (int a = 0; a < 2; ++a)
+    c.boundary[a] = {granpipe::Boundary::Periodic, granpipe::Boundary::Periodic};
+  const Frame f = random_frame(300, 100.0, c, 3);
+  const Skin skin = first_skin(f, 1.0);
+  const double top = (f.position().col(2).array() + 1.0).maxCoeff();
+  EXPECT_EQ(skin.bulk, 4.0);
+  EXPECT_EQ(skin.edge, 10.0);
+  EXPECT_EQ(skin.band[2][0], 8.0);
+  EXPECT_EQ(skin.band[2][1], top - 24.0);
+  EXPECT_EQ(skin.at({50, 50, 7}), 10.0);
+  EXPECT_EQ(skin.at({50, 50, 12}), 4.0);
+  EXPECT_EQ(skin.at({50, 50, top - 20.0}), 10.0);
+  EXPECT_EQ(skin.around({50, 50, top - 20.0}, 3.0), 10.0);
+  EXPECT_EQ(skin.around({50, 50, top - 20.0}, 5.0), 4.0);  // reaches below the band
+  const Skin wider = skin.wider(1.0, 100.0);
+  EXPECT_DOUBLE_EQ(wider.bulk, 5.5);
+  EXPECT_DOUBLE_EQ(wider.edge, 11.5);
+  // The images a wider skin adds lie within its widths, beyond the first's.
+  const Centres added = images_between(f, skin, wider);
+  EXPECT_FALSE(added.points.empty());
+  for (const Vector3d& x : added.points) {
+    const double out = std::max({-x[0], x[0] - 100.0, -x[1], x[1] - 100.0});
+    EXPECT_LT(out, wider.at(x));
+    EXPECT_GE(out, skin.at(x));
+  }
 }
 
 template <class T>
