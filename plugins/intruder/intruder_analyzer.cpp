@@ -94,10 +94,13 @@ void IntruderAnalyzer::consume(const Frame& frame, FrameCache&) {
 void IntruderAnalyzer::finish(Results& results) {
   results.add_table("per_frame", per_frame_.table());
   results.add_table("transitions", transitions_);
+  // Against the drive's cycles (the paper's intruder height per cycle) when the source
+  // counts them, else against time (frames read back without a drive).
+  const bool by_cycle = std::isfinite(last_cycles_);
   results.add_plot("heights", {.table = "per_frame",
-                               .x = "time",
+                               .x = by_cycle ? "cycles" : "time",
                                .y = {"intruder_height", "bed_height"},
-                               .xlabel = "time",
+                               .xlabel = by_cycle ? "drive cycles" : "time",
                                .ylabel = "height above the base",
                                .title = "intruder and bed centre of mass"});
   results.add_plot("velocities", {.table = "per_frame",

@@ -54,6 +54,7 @@ TEST(Intruder, TheAnalyzerStreamsOneRowPerFrame) {
   ASSERT_EQ(t.rows(), 2u);
   EXPECT_EQ(t.column("intruder_height")[1], 5.0);
   EXPECT_EQ(t.column("time")[1], 1.5);
+  EXPECT_EQ(r.plots().at("heights").x, "time");  // no cycles counted: against time
 }
 
 TEST(Intruder, AFrameWithoutABedIsRefused) {
@@ -124,4 +125,5 @@ TEST(Intruder, LiftOffAndImpactAreTheMidpointsOfTheFramesWhereTheBaseContactChan
   EXPECT_DOUBLE_EQ(t.column("cycles")[1], 0.35);
   EXPECT_EQ(t.column("stage")[1], 1.0);  // impact
   EXPECT_EQ(r.tables().at("per_frame").column("stage")[2], 0.0);
+  EXPECT_EQ(r.plots().at("heights").x, "cycles");  // the paper's height per cycle
 }
