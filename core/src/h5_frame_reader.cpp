@@ -3,6 +3,7 @@
 // positions and whatever standard elements they hold, with radii set to a default and
 // the container made from the H5MD box.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -20,6 +21,16 @@ namespace granpipe {
 namespace L = frame_layout;
 
 namespace {
+
+// Whether the file's superblock (version 2 or later, at the file's start) still carries the
+// "open for writing" flag (bit 0 of byte 11) that its writer clears on closing: HDF5 refuses
+// such a file, and a run killed hard leaves its frames.partial.h5 so.
+bool marked_open_for_writing(const std::string& name) {
+  std::ifstream in(name, std::ios::binary);
+  std::array<unsigned char, 12> head{};
+  if (!in.read(reinterpret_cast<char*>(head.data()), head.size())) return false;
+  return head[8] >= 2 && (head[11] & 0x1u) != 0;
+}
 
 // Checks that `shape` is [rows][item...] and returns rows.
 hsize_t rows_of(const h5::Shape& shape, const h5::Shape& item, const std::string& path) {
@@ -64,6 +75,13 @@ h5::Object open_file(const std::string& name, bool& swmr) {
     swmr = true;
     const h5::Object fapl = swmr_read_access();
     id = H5Fopen(name.c_str(), H5F_ACC_RDONLY | H5F_ACC_SWMR_READ, fapl.id());
+  }
+  if (id < 0 && marked_open_for_writing(name)) {
+    throw InputError(name +
+                     ": expected an HDF5 file its writer closed, found one still marked "
+                     "open for writing (a run killed before it closed the file, or one "
+                     "writing it now); if none writes it, `h5clear -s " +
+                     name + "` clears the mark and its frames can be read");
   }
   if (id < 0) throw InputError(name + ": not a readable HDF5 file (truncated or corrupt)");
   return h5::Object(id);

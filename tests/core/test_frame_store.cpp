@@ -619,6 +619,26 @@ TEST_F(FrameStore, TruncatedFileIsAnInputError) {
   EXPECT_EQ(msg, cut.string() + ": not a readable HDF5 file (truncated or corrupt)");
 }
 
+// A run killed before it closed its frames file leaves the file marked open for writing,
+// which HDF5 refuses to open: the message says so and what clears the mark.
+TEST_F(FrameStore, FileLeftOpenByAKilledWriterSaysHowToClearIt) {
+  const fs::path p = write("left_open.h5", 6, 3, 2);
+  const pid_t child = fork();
+  if (child == 0) {  // opens the file for writing and ends without closing it
+    const hid_t f = H5Fopen(p.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    _exit(f >= 0 && H5Fflush(f, H5F_SCOPE_GLOBAL) >= 0 ? 0 : 1);
+  }
+  int status = 0;
+  waitpid(child, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+  EXPECT_EQ(message_of([&] { FrameReader r(p); }),
+            p.string() +
+                ": expected an HDF5 file its writer closed, found one still marked open for "
+                "writing (a run killed before it closed the file, or one writing it now); if "
+                "none writes it, `h5clear -s " +
+                p.string() + "` clears the mark and its frames can be read");
+}
+
 // A chunked dataset of `dims`, of which only `written` leading elements are written
 // (zeros); `deflate` compresses it.
 void put_chunked(hid_t loc, const char* name, std::vector<hsize_t> dims, std::vector<hsize_t> chunk,
