@@ -207,7 +207,7 @@ PointOutcome run_point(const Pipeline::Impl& p, std::size_t k, PointPlugins plug
   }
   const std::size_t n_analyzers = plugins.analyzers.size(), n_writers = plugins.writers.size();
   const std::size_t first_writer = 1 + n_analyzers, frames_stage = first_writer + n_writers;
-  StageClock clock(stage_names(p).size());
+  StageClock clock(frames_stage + (frames_h5 ? 1 : 0));  // as many as stage_names(p)
   for (;;) {
     throw_if_stop_requested();  // a SIGINT or SIGTERM: stop between frames, files whole
     if (!clock.time(0,
