@@ -85,6 +85,7 @@ Settings settings_of(const PluginContext& ctx) {
   s.background_damping = p.real("background_damping");
   s.air_damping = p.real("air_damping");
   s.threads = ctx.threads;
+  s.instruction_set = p.choice<InstructionSet>("instruction_set");
   return s;
 }
 
@@ -211,6 +212,10 @@ Schema schema() {
       .min(0.0)
       .unit("time");
   s.real("skin", 0.2, "neighbour-list skin, in smallest diameters").min(0.0, true);
+  s.choice<InstructionSet>("instruction_set", InstructionSet::Auto,
+                           "the force loops' vector instructions: auto takes the widest this "
+                           "processor runs (or GRANPIPE_DEM_INSTRUCTION_SET's); the paths "
+                           "differ in the last bits only");
   s.real("background_damping", 0.0, "b of the force -b v on every particle").min(0.0);
   s.real("air_damping", 0.0,
          "b_air of the interstitial air's drag -b_air (v - V), V the container's velocity "
@@ -301,7 +306,7 @@ bool DemSource::next(Frame& frame) {
   if (due < 0) return false;
   if (!started_) {
     // Speeds depend on the instruction set (docs/benchmarks.md): the log says which ran.
-    log_.info(std::string("dem: force loops compiled for ") + kernel_instruction_set() + ", " +
+    log_.info(std::string("dem: force loops for ") + label_of(engine_->instruction_set()) + ", " +
               std::to_string(engine_->particles().size()) + " particles, " +
               std::to_string(engine_->settings().threads) + " thread(s)");
   }

@@ -14,6 +14,13 @@
 
 namespace granpipe::dem {
 
+inline ChoiceNames<InstructionSet> choice_names(InstructionSet) {
+  return {{name_of(InstructionSet::Auto), InstructionSet::Auto},
+          {name_of(InstructionSet::Baseline), InstructionSet::Baseline},
+          {name_of(InstructionSet::Avx2), InstructionSet::Avx2},
+          {name_of(InstructionSet::Avx512), InstructionSet::Avx512}};
+}
+
 inline ChoiceNames<ContactLaw> choice_names(ContactLaw) {
   return {{"linear", ContactLaw::Linear}, {"hertz", ContactLaw::Hertz}};
 }

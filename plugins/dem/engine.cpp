@@ -68,7 +68,9 @@ Engine::Engine(const Model& model, const WallSet& walls, const Settings& setting
         "rolling spheres), got rolling friction with " +
         std::string(settings_.friction ? "rotation" : "friction") + " off");
   }
-  kernels_ = select_kernels(settings_.law, settings_.friction, settings_.rotation, model_.rolls());
+  instruction_set_ = resolve(settings_.instruction_set, "dem: instruction_set");
+  kernels_ = select_kernels(instruction_set_, settings_.law, settings_.friction, settings_.rotation,
+                            model_.rolls());
   load_particles(initial);
   prepare_materials();
   const double smallest = p_.size() > 0 ? 2.0 * p_.radius.minCoeff() : 1.0;

@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "contact_evaluator.hpp"
+#include "instruction_set.hpp"
 #include "kernels.hpp"
 #include "model.hpp"
 #include "neighbor_list.hpp"
@@ -47,6 +48,8 @@ struct Settings {
   // a closed-bottom cylinder, its flow through the pores neglected).
   double air_damping = 0.0;
   int threads = 1;
+  // The loops' path; Auto: resolve() in instruction_set.hpp picks it.
+  InstructionSet instruction_set = InstructionSet::Auto;
 
   // Throws InputError naming the setting on a non-finite or out-of-range value.
   void check() const;
@@ -90,6 +93,8 @@ class Engine {
   double time() const { return static_cast<double>(step_) * settings_.dt; }
   std::int64_t step() const { return step_; }
   const Settings& settings() const { return settings_; }
+  // The path the loops take (settings().instruction_set resolved).
+  InstructionSet instruction_set() const { return instruction_set_; }
   const Model& model() const { return model_; }
   const WallSet& walls() const { return walls_; }
   const Particles& particles() const { return p_; }
@@ -139,6 +144,7 @@ class Engine {
   Model model_;
   WallSet walls_;
   Settings settings_;
+  InstructionSet instruction_set_ = InstructionSet::Baseline;
   Kernels kernels_;
   Particles p_;
   NeighborList list_;

@@ -562,19 +562,21 @@ Kernels kernels_of() {
 
 }  // namespace
 
-const char* kernel_instruction_set() {
+// This copy's entry point (kernels.hpp), in the namespace of the instruction set it is
+// compiled for.
 #if defined(__AVX512F__)
-  return "AVX-512";
+namespace avx512 {
 #elif defined(__AVX2__)
-  return "AVX2";
+namespace avx2 {
 #else
-  return "baseline";
+namespace baseline {
 #endif
-}
 
 Kernels select_kernels(ContactLaw law, bool friction, bool rotation, bool rolling) {
   return with_contact(law, friction, rotation, rolling,
                       [](auto contact) { return kernels_of<decltype(contact)>(); });
 }
+
+}  // namespace avx512, avx2 or baseline
 
 }  // namespace granpipe::dem

@@ -26,6 +26,7 @@
 #include <cstdint>
 
 #include "contact_evaluator.hpp"
+#include "instruction_set.hpp"
 
 namespace granpipe::dem {
 
@@ -101,14 +102,22 @@ struct Kernels {
   int reaction_stride;
 };
 
-// The instruction set the loops were compiled for (CMakeLists.txt picks the widest the
-// build machine runs): "AVX-512", "AVX2" or "baseline". Speeds depend on it, so runs say
-// which one ran.
-const char* kernel_instruction_set();
-
-// The kernels of one combination; friction=false with rotation=true is served by the
-// frictionless kernels (no tangential force, so no torque); rolling needs friction and
-// rotation (the Engine refuses it otherwise).
+// kernels.cpp is compiled once per instruction set (instruction_set.hpp); each copy's
+// entry point: the kernels of one combination. friction=false with rotation=true is served
+// by the frictionless kernels (no tangential force, so no torque); rolling needs friction
+// and rotation (the Engine refuses it otherwise).
+namespace baseline {
 Kernels select_kernels(ContactLaw law, bool friction, bool rotation, bool rolling);
+}
+namespace avx2 {
+Kernels select_kernels(ContactLaw law, bool friction, bool rotation, bool rolling);
+}
+namespace avx512 {
+Kernels select_kernels(ContactLaw law, bool friction, bool rotation, bool rolling);
+}
+
+// The kernels of one combination on one path (resolved: not Auto, and runs_here).
+Kernels select_kernels(InstructionSet path, ContactLaw law, bool friction, bool rotation,
+                       bool rolling);
 
 }  // namespace granpipe::dem

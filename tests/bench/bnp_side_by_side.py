@@ -259,7 +259,7 @@ def granpipe_kernels(run_log):
     "baseline"): the speeds depend on it."""
     with open(run_log) as f:
         for line in f:
-            found = re.match(r"dem: force loops compiled for ([^,]+),", line)
+            found = re.match(r"dem: force loops (?:compiled )?for ([^,]+),", line)
             if found:
                 return found.group(1)
     return "unknown (this build's dem source does not say)"
