@@ -85,6 +85,7 @@ Settings settings_of(const PluginContext& ctx) {
   s.background_damping = p.real("background_damping");
   s.air_damping = p.real("air_damping");
   s.threads = ctx.threads;
+  s.adapt_threads = p.boolean("adapt_threads");
   s.instruction_set = p.choice<InstructionSet>("instruction_set");
   return s;
 }
@@ -212,6 +213,9 @@ Schema schema() {
       .min(0.0)
       .unit("time");
   s.real("skin", 0.2, "neighbour-list skin, in smallest diameters").min(0.0, true);
+  s.boolean("adapt_threads", true,
+            "run on one thread while that is measured to be faster than all (a busy machine); "
+            "false: always all");
   s.choice<InstructionSet>("instruction_set", InstructionSet::Auto,
                            "the force loops' vector instructions: auto takes the widest this "
                            "processor runs (or GRANPIPE_DEM_INSTRUCTION_SET's); the paths "
@@ -395,6 +399,13 @@ void DemSource::finish(Results& results) {
   }
   results.add_table("timing", timing_.table());
   const StepProfile& p = engine_->profile();
+  if (p.steps_on_fewer_threads > 0) {
+    std::ostringstream m;
+    m << "dem: " << p.steps_on_fewer_threads << " of " << engine_->step()
+      << " steps ran on 1 thread, measured faster than " << engine_->settings().threads
+      << " while the machine was busy";
+    log_.info(m.str());
+  }
   const double particle_steps = static_cast<double>(engine_->step()) * engine_->particles().size();
   const double seconds = p.forces + p.integrate + p.neighbour;
   results.add_scalar("particle_steps_per_second", seconds > 0 ? particle_steps / seconds : 0.0,

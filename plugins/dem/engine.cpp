@@ -59,7 +59,10 @@ void Settings::check() const {
 
 Engine::Engine(const Model& model, const WallSet& walls, const Settings& settings,
                const InitialState& initial)
-    : model_(model), walls_(walls), settings_(settings) {
+    : model_(model),
+      walls_(walls),
+      settings_(settings),
+      governor_(std::max(settings.threads, 1), settings.adapt_threads) {
   settings_.check();
   model_.check();
   if (model_.rolls() && !(settings_.friction && settings_.rotation)) {
@@ -178,7 +181,7 @@ void Engine::hold_fixed_species() {
 }
 
 void Engine::rebuild() {
-  list_.rebuild(p_, settings_.threads);
+  list_.rebuild(p_, governor_.threads());
   find_pinned();
 }
 
@@ -254,7 +257,7 @@ ForceContext Engine::force_context(double dt_history, double velocity_time) {
   c.air_damping = settings_.air_damping;
   c.dt_history = dt_history;
   c.overlap_limit = kMaxOverlapFraction;
-  c.threads = settings_.threads;
+  c.threads = governor_.threads();
   c.force = p_.force.data();
   c.spin_sum = spin_sum_.data();
   return c;
@@ -277,7 +280,7 @@ KickContext Engine::kick_context(double dt) {
   c.reverse_first = list_.reverse_first.data();
   c.gravity = settings_.gravity;
   c.dt = dt;
-  c.threads = settings_.threads;
+  c.threads = governor_.threads();
   return c;
 }
 
@@ -306,6 +309,8 @@ class LapTimer {
     last_ = now;
     return seconds;
   }
+  // The steady clock's reading at the last lap, in seconds.
+  double seconds() const { return std::chrono::duration<double>(last_.time_since_epoch()).count(); }
 
  private:
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
@@ -329,6 +334,9 @@ void Engine::run(std::int64_t steps) {
     }
     evaluate_forces(dt, dt, time() - 0.5 * dt, false);
     profile_.forces += timer.lap();
+    // A step is timed from one force pass to the next (a run() may be a single step).
+    if (governor_.threads() < settings_.threads) ++profile_.steps_on_fewer_threads;
+    governor_.step_done(timer.seconds());
     // A contact past the limit ends the run with this step completed.
     if (s + 1 == steps || beyond_limit_ > 0.0) {
       kernels_.finish_step(kick_context(dt));
@@ -356,11 +364,6 @@ void Engine::record_contacts(bool on) {
 }
 
 void Engine::set_drive(const Drive& drive) { walls_.set_drive(drive); }
-
-void Engine::set_threads(int threads) {
-  if (threads < 1) refuse("threads", "at least 1", threads);
-  settings_.threads = threads;
-}
 
 int Engine::index_of(std::int32_t tag) const {
   const auto it = std::find(p_.tag.begin(), p_.tag.end(), tag);

@@ -31,6 +31,7 @@
 #include "model.hpp"
 #include "neighbor_list.hpp"
 #include "particles.hpp"
+#include "thread_governor.hpp"
 #include "walls.hpp"
 
 namespace granpipe::dem {
@@ -47,7 +48,9 @@ struct Settings {
   // container's velocity V, as if the air moved with the container (incompressible air in
   // a closed-bottom cylinder, its flow through the pores neglected).
   double air_damping = 0.0;
-  int threads = 1;
+  int threads = 1;  // the most the loops use
+  // Fewer threads while they are measured to run faster (a busy machine): thread_governor.hpp.
+  bool adapt_threads = true;
   // The loops' path; Auto: resolve() in instruction_set.hpp picks it.
   InstructionSet instruction_set = InstructionSet::Auto;
 
@@ -63,6 +66,7 @@ struct StepProfile {
   double integrate = 0.0;  // reactions gathered, kicks and drift
   double neighbour = 0.0;  // list rebuilds (with the spatial sort)
   std::int64_t rebuilds = 0;
+  std::int64_t steps_on_fewer_threads = 0;  // than Settings::threads (thread_governor.hpp)
 };
 
 class Engine {
@@ -88,7 +92,6 @@ class Engine {
   bool contacts_recorded() const { return recorded_step_ == step_; }
   // Changes the container's motion from now on (the drive's own start time applies).
   void set_drive(const Drive& drive);
-  void set_threads(int threads);
 
   double time() const { return static_cast<double>(step_) * settings_.dt; }
   std::int64_t step() const { return step_; }
@@ -145,6 +148,7 @@ class Engine {
   WallSet walls_;
   Settings settings_;
   InstructionSet instruction_set_ = InstructionSet::Baseline;
+  ThreadGovernor governor_;
   Kernels kernels_;
   Particles p_;
   NeighborList list_;

@@ -1,0 +1,48 @@
+#pragma once
+// How many of the allowed threads the loops use, chosen by measuring. Every step has
+// several barriers (forces, kicks, list rebuilds), and on a machine shared with other work
+// a thread that loses its core stalls the others at each: with one competing process on 2
+// cores, the Brazil-nut scene took 1.9 times as long on 2 threads as on 1 (issue 22).
+// Results are bit-identical for any thread count (kernels.hpp), so the count can change at
+// any step and only the speed depends on it.
+//
+// The governor runs on the count it chose, and now and then times a short window on it
+// and one on the other count (1 when it runs on all, all when it runs on 1); the faster by
+// a clear margin wins. A probe that confirms the choice doubles the wait before the next,
+// up to kLongestWait, so that a quiet machine pays for few probes and a load that comes
+// or goes is noticed within it.
+namespace granpipe::dem {
+
+class ThreadGovernor {
+ public:
+  static constexpr double kFirstWait = 1.0;  // seconds on the chosen count before a probe
+  static constexpr double kLongestWait = 16.0;
+  static constexpr double kWindow = 0.05;  // seconds of each timed window, and
+  static constexpr long kWindowSteps = 3;  // at least this many steps
+  static constexpr double kMargin = 0.9;   // the other count must take < 0.9 x as long
+
+  // allowed: the most threads the run may use; adapt = false keeps to them.
+  ThreadGovernor(int allowed, bool adapt);
+
+  // The count for the next step.
+  int threads() const { return current_; }
+  // A step ended at `now` (seconds on a steady clock); the first call starts the clock.
+  void step_done(double now);
+
+ private:
+  enum class Phase { Running, TimingChosen, TimingOther };
+  void start(Phase phase, int threads, double now);
+  void decide(double other_per_step, double now);
+
+  int allowed_;
+  bool adapt_;
+  int chosen_;
+  int current_;
+  Phase phase_ = Phase::Running;
+  double phase_start_ = -1.0;  // < 0: not started yet (the first step starts the clock)
+  long phase_steps_ = 0;
+  double wait_ = kFirstWait;
+  double chosen_per_step_ = 0.0;
+};
+
+}  // namespace granpipe::dem
