@@ -230,7 +230,8 @@ def run_timed(cmd, cwd, env, cores):
         with open(os.path.join(cwd, "stderr.txt")) as f:
             tail = f.read()[-600:]
         raise SystemExit(f"{' '.join(cmd)} (in {cwd}) failed with exit code {child.returncode}:\n{tail}")
-    return {"wall": wall, "cpu_share": (usage.ru_utime + usage.ru_stime) / (wall * cores), "load_before": load}
+    return {"wall": wall, "cpu_share": (usage.ru_utime + usage.ru_stime) / (wall * cores), "load_before": load,
+            "maxrss_kb": usage.ru_maxrss}
 
 
 def run_dir(work, name):
