@@ -4,17 +4,45 @@
 #include <numeric>
 #include <vector>
 
+#include "granpipe/contact_rows.hpp"
 #include "granpipe/errors.hpp"
 
 namespace granpipe::dem {
 
 namespace {
 
-struct ContactRow {
-  std::int64_t i, j;
-  double overlap;
-  Vec3 normal, tangential, point;
-};
+// Whether particles a and b touch: the force loop's test, on the same positions, so the
+// same contacts.
+bool touches(const Particles& p, int a, int b) {
+  const double contact = p.radius[a] + p.radius[b];
+  return !((p.x.col(a) - p.x.col(b)).squaredNorm() >= contact * contact);
+}
+
+// Whether particle a touches the wall of `slot`, and how deep (wall_contacts' test).
+bool touches_wall(const Engine& e, int slot, int a, double& overlap, Vec3& n) {
+  const Particles& p = e.particles();
+  overlap = e.walls().overlap(slot, p.x.col(a), p.radius[a], e.wall_offset(), n);
+  return !(overlap <= 0.0);
+}
+
+// How many rows pair_contacts and wall_contacts give: counted first, so that the rows take
+// no more memory than they need (at 10^5 spheres and more, the frame's peak).
+std::size_t touching_count(const Engine& e) {
+  const Particles& p = e.particles();
+  const NeighborList& list = e.neighbors();
+  std::size_t count = 0;
+  for (int a = 0; a < p.size(); ++a) {
+    for (std::int32_t k = list.first[a]; k < list.first[a + 1]; ++k) {
+      count += touches(p, a, list.partner[k]);
+    }
+    for (int slot = 0; slot < e.walls().count(); ++slot) {
+      double overlap;
+      Vec3 n;
+      count += touches_wall(e, slot, a, overlap, n);
+    }
+  }
+  return count;
+}
 
 void pair_contacts(const Engine& e, std::vector<ContactRow>& rows) {
   const Particles& p = e.particles();
@@ -22,10 +50,9 @@ void pair_contacts(const Engine& e, std::vector<ContactRow>& rows) {
   for (int a = 0; a < p.size(); ++a) {
     for (std::int32_t k = list.first[a]; k < list.first[a + 1]; ++k) {
       const int b = list.partner[k];
+      if (!touches(p, a, b)) continue;
       const Vec3 d = p.x.col(a) - p.x.col(b);
       const double contact = p.radius[a] + p.radius[b];
-      // The force loop's test, on the same positions: the same contacts.
-      if (d.squaredNorm() >= contact * contact) continue;
       const double r = d.norm();
       const Vec3 n = d / r;
       const double* reaction = &list.reaction[static_cast<std::size_t>(list.reaction_stride) * k];
@@ -43,13 +70,12 @@ void pair_contacts(const Engine& e, std::vector<ContactRow>& rows) {
 
 void wall_contacts(const Engine& e, std::vector<ContactRow>& rows) {
   const Particles& p = e.particles();
-  const Eigen::Vector3d offset = e.wall_offset();
   for (int slot = 0; slot < e.walls().count(); ++slot) {
     const std::int64_t wall = partner::wall(e.walls().wall_of_slot(slot));
     for (int a = 0; a < p.size(); ++a) {
+      double overlap;
       Vec3 n;
-      const double overlap = e.walls().overlap(slot, p.x.col(a), p.radius[a], offset, n);
-      if (overlap <= 0.0) continue;
+      if (!touches_wall(e, slot, a, overlap, n)) continue;
       const Vec3 point = p.x.col(a) - (p.radius[a] - 0.5 * overlap) * n;
       rows.push_back({p.tag[a], wall, overlap, e.recorded_wall_normal()[slot].col(a),
                       e.recorded_wall_tangential()[slot].col(a), point});
@@ -69,26 +95,6 @@ void fill_particles(const Particles& p, Frame& frame) {
     w.row(row) = p.omega.col(a).transpose();
     frame.radius()[row] = p.radius[a];
     frame.species()[row] = p.species[a];
-  }
-}
-
-void fill_contacts(std::vector<ContactRow>& rows, Frame& frame) {
-  std::sort(rows.begin(), rows.end(), [](const ContactRow& a, const ContactRow& b) {
-    return a.i != b.i ? a.i < b.i : a.j < b.j;
-  });
-  PropertyTable& table = frame.add_contacts(static_cast<Eigen::Index>(rows.size()));
-  auto& overlap = table.add<Eigen::ArrayXd>(*find_standard("overlap", Scope::Contact));
-  auto& normal = table.add<Coordinates>(*find_standard("normal_force", Scope::Contact));
-  auto& tangential = table.add<Coordinates>(*find_standard("tangential_force", Scope::Contact));
-  auto& point = table.add<Coordinates>(*find_standard("point", Scope::Contact));
-  for (std::size_t k = 0; k < rows.size(); ++k) {
-    const auto r = static_cast<Eigen::Index>(k);
-    frame.contact_i()[r] = rows[k].i;
-    frame.contact_j()[r] = rows[k].j;
-    overlap[r] = rows[k].overlap;
-    normal.row(r) = rows[k].normal.transpose();
-    tangential.row(r) = rows[k].tangential.transpose();
-    point.row(r) = rows[k].point.transpose();
   }
 }
 
@@ -115,9 +121,13 @@ void fill_frame(const Engine& engine, Frame& frame) {
   }
   fill_particles(engine.particles(), frame);
   std::vector<ContactRow> rows;
+  rows.reserve(touching_count(engine));
   pair_contacts(engine, rows);
   wall_contacts(engine, rows);
-  fill_contacts(rows, frame);
+  std::sort(rows.begin(), rows.end(), [](const ContactRow& a, const ContactRow& b) {
+    return a.i != b.i ? a.i < b.i : a.j < b.j;
+  });
+  fill_contact_table(rows, true, frame);
   frame.container = engine.walls().at(engine.time());
   add_drive_observables(engine.walls().drive(), engine.time(), frame);
   frame.time = engine.time();

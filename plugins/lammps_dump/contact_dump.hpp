@@ -11,16 +11,11 @@
 
 #include "contact_columns.hpp"
 #include "dump_index.hpp"
+#include "granpipe/contact_rows.hpp"
 #include "granpipe/frame.hpp"
 #include "text_lines.hpp"
 
 namespace granpipe::lammps_dump {
-
-struct ContactRow {
-  std::int64_t i = 0, j = 0;  // frame rows; j a wall partner for a wall contact
-  double overlap = 0.0;
-  Eigen::Vector3d normal, tangential, point;  // tangential NaN when the dump has none
-};
 
 class ContactDump {
  public:
@@ -46,9 +41,5 @@ class ContactDump {
   std::string param_;
   std::unordered_map<std::int64_t, std::size_t> by_timestep_;
 };
-
-// The frame's contact table from these rows: i, j, overlap, normal_force, point, and
-// tangential_force when `tangential`.
-void fill_contacts(const std::vector<ContactRow>& rows, bool tangential, Frame& frame);
 
 }  // namespace granpipe::lammps_dump

@@ -101,7 +101,7 @@ void LammpsDumpSource::add_contacts(Frame& f) {
   std::vector<ContactRow> rows;
   if (pairs_) pairs_->read(f, place, rows);
   if (walls_) walls_->read(f, place, rows);
-  fill_contacts(rows, tangential(), f);
+  fill_contact_table(rows, tangential(), f);
 }
 
 void LammpsDumpSource::open_contact_dumps(const PluginContext& ctx) {
