@@ -353,7 +353,13 @@ void Engine::run(std::int64_t steps) {
 
 void Engine::record_contacts(bool on) {
   recording_ = on;
-  if (!on) return;
+  list_.record_reactions(on);
+  if (!on) {
+    // The records are as large as the particle arrays, and kept only for a frame.
+    for (Vectors& record : wall_normal_) record.resize(3, 0);
+    for (Vectors& record : wall_tangential_) record.resize(3, 0);
+    return;
+  }
   wall_normal_.resize(static_cast<std::size_t>(walls_.count()));
   wall_tangential_.resize(static_cast<std::size_t>(walls_.count()));
   normal_record_ptr_.resize(static_cast<std::size_t>(walls_.count()));

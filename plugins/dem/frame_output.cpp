@@ -55,7 +55,7 @@ void pair_contacts(const Engine& e, std::vector<ContactRow>& rows) {
       const double contact = p.radius[a] + p.radius[b];
       const double r = d.norm();
       const Vec3 n = d / r;
-      const double* reaction = &list.reaction[static_cast<std::size_t>(list.reaction_stride) * k];
+      const double* reaction = &list.reaction[3 * static_cast<std::size_t>(k)];
       const Vec3 on_a = -Vec3(reaction[0], reaction[1], reaction[2]);
       const Vec3 normal = on_a.dot(n) * n;
       const double overlap = contact - r;

@@ -372,7 +372,7 @@ template <class C>
       ci[1] += t.cy[e];
       ci[2] += t.cz[e];
     }
-    if (c.reaction) std::copy(rk, rk + stride, c.reaction + stride * k);
+    if (c.reaction) std::copy(rk, rk + 3, c.reaction + 3 * k);
     if constexpr (C::kFriction) {
       double* u = c.history + 3 * k;
       u[0] = t.ux[e];

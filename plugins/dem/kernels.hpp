@@ -58,7 +58,7 @@ struct ForceContext {
   double* history;            // 3 per pair: the tangential displacement
   double* rolling_history;    // 3 per pair: the rolling angle (rolling only)
   double* incoming;           // 3 or 6 per slot, by partner (see NeighborList)
-  double* reaction;           // 3 or 6 per pair, by pair; null when not recording
+  double* reaction;           // 3 per pair: the force on the partner; null when not recording
   double background_damping;
   double air_damping;  // on the slip velocity against wall_velocity
   double dt_history;

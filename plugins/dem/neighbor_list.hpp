@@ -36,6 +36,8 @@ class NeighborList {
 
   // Sorts `p` spatially, rebuilds the list and carries the pair histories over.
   void rebuild(Particles& p, int threads);
+  // Holds `reaction` for the list's pairs from now on (also through rebuilds), or frees it.
+  void record_reactions(bool on);
   // The largest squared displacement since the last rebuild that is still safe.
   double trigger_squared() const { return 0.25 * skin_ * skin_; }
   const Vectors& positions_at_build() const { return x_build_; }
@@ -59,8 +61,9 @@ class NeighborList {
   // slots of touching pairs only, and the gather reads its slots and clears them.
   std::vector<std::int32_t> reverse_first, reaction_slot;
   std::vector<double> incoming;
-  // The same reactions by pair (reaction_stride per pair), for the contacts a frame shows:
-  // written for the touching pairs of the steps that record contacts, and only then.
+  // The force on the partner by pair (3 per pair), for the contacts a frame shows: written
+  // for the touching pairs of the steps that record contacts, and held only then
+  // (record_reactions), since it is as large as the list.
   std::vector<double> reaction;
   int reaction_stride = 3;
 
@@ -89,6 +92,7 @@ class NeighborList {
   Grid grid_;
   std::vector<std::int32_t> cell_of_, cell_start_, order_, count_;
   std::vector<unsigned char> big_;
+  bool recording_reactions_ = false;
   Vectors x_build_;
   PairHistory saved_, saved_rolling_;
 };
