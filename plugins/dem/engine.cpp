@@ -322,6 +322,7 @@ void Engine::run(std::int64_t steps) {
   if (steps <= 0) return;
   const double dt = settings_.dt;
   LapTimer timer;
+  governor_.resume(timer.seconds());
   double moved = kernels_.start_step(kick_context(dt));
   moved = std::max(moved, pin(time() + dt, time() + 0.5 * dt));
   profile_.integrate += timer.lap();

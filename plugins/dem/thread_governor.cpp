@@ -17,9 +17,10 @@ void ThreadGovernor::start(Phase phase, int threads, double now) {
 void ThreadGovernor::step_done(double now) {
   if (!adapt_) return;
   if (phase_start_ < 0.0) {
-    phase_start_ = now;
+    phase_start_ = last_step_ = now;
     return;
   }
+  last_step_ = now;
   ++phase_steps_;
   const double elapsed = now - phase_start_;
   const bool window_done = elapsed >= kWindow && phase_steps_ >= kWindowSteps;
@@ -38,6 +39,12 @@ void ThreadGovernor::step_done(double now) {
       if (window_done) decide(per_step, now);
       break;
   }
+}
+
+void ThreadGovernor::resume(double now) {
+  if (phase_start_ < 0.0) return;
+  phase_start_ += now - last_step_;
+  last_step_ = now;
 }
 
 void ThreadGovernor::decide(double other_per_step, double now) {

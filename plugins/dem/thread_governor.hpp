@@ -28,6 +28,9 @@ class ThreadGovernor {
   int threads() const { return current_; }
   // A step ended at `now` (seconds on a steady clock); the first call starts the clock.
   void step_done(double now);
+  // Steps go on at `now` after a pause (frames written, analyses run): the time since the
+  // last step is not counted against the count that was timed then.
+  void resume(double now);
 
  private:
   enum class Phase { Running, TimingChosen, TimingOther };
@@ -40,6 +43,7 @@ class ThreadGovernor {
   int current_;
   Phase phase_ = Phase::Running;
   double phase_start_ = -1.0;  // < 0: not started yet (the first step starts the clock)
+  double last_step_ = 0.0;
   long phase_steps_ = 0;
   double wait_ = kFirstWait;
   double chosen_per_step_ = 0.0;

@@ -75,6 +75,27 @@ TEST(DemGovernor, KeepsItsCountWhenToldNotToAdaptOrGivenOneThread) {
   EXPECT_EQ(simulate(single, 0.0, 30.0, quiet).fraction_on_one, 1.0);
 }
 
+TEST(DemGovernor, PausesBetweenRunsAreNotCountedAgainstTheCountTimed) {
+  // A busy machine, and every 20 steps a pause of 0.1 s (a frame written): without resume()
+  // the pauses would land in the windows and could make either count look slow.
+  ThreadGovernor g(2, true);
+  double now = 0.0;
+  long steps = 0, on_one = 0;
+  g.step_done(now);
+  while (now < 60.0) {
+    if (steps % 20 == 0) {
+      now += 0.1;
+      g.resume(now);
+    }
+    now += busy(g.threads(), now);
+    on_one += g.threads() == 1;
+    ++steps;
+    g.step_done(now);
+  }
+  EXPECT_EQ(g.threads(), 1);
+  EXPECT_GT(static_cast<double>(on_one) / static_cast<double>(steps), 0.95);
+}
+
 TEST(DemGovernor, AMarginalDifferenceDoesNotSwitch) {
   // One thread 5 % faster: within the margin, so no switch.
   ThreadGovernor g(2, true);
