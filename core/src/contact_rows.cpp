@@ -4,23 +4,35 @@
 
 namespace granpipe {
 
+namespace {
+
+template <class T>
+T& column(PropertyTable& table, const char* name) {
+  return table.add<T>(*find_standard(name, Scope::Contact));
+}
+
+}  // namespace
+
+ContactTableWriter::ContactTableWriter(Frame& frame, Eigen::Index count, bool tangential)
+    : frame_(frame),
+      table_(frame.add_contacts(count)),
+      overlap_(column<Eigen::ArrayXd>(table_, "overlap")),
+      normal_(column<Coordinates>(table_, "normal_force")),
+      point_(column<Coordinates>(table_, "point")),
+      tangential_(tangential ? &column<Coordinates>(table_, "tangential_force") : nullptr) {}
+
+void ContactTableWriter::set(Eigen::Index r, const ContactRow& row) {
+  frame_.contact_i()[r] = row.i;
+  frame_.contact_j()[r] = row.j;
+  overlap_[r] = row.overlap;
+  normal_.row(r) = row.normal.transpose();
+  point_.row(r) = row.point.transpose();
+  if (tangential_) tangential_->row(r) = row.tangential.transpose();
+}
+
 void fill_contact_table(const std::vector<ContactRow>& rows, bool tangential, Frame& frame) {
-  PropertyTable& table = frame.add_contacts(static_cast<Eigen::Index>(rows.size()));
-  auto& overlap = table.add<Eigen::ArrayXd>(*find_standard("overlap", Scope::Contact));
-  auto& normal = table.add<Coordinates>(*find_standard("normal_force", Scope::Contact));
-  auto& point = table.add<Coordinates>(*find_standard("point", Scope::Contact));
-  Coordinates* tangent =
-      tangential ? &table.add<Coordinates>(*find_standard("tangential_force", Scope::Contact))
-                 : nullptr;
-  for (std::size_t k = 0; k < rows.size(); ++k) {
-    const auto r = static_cast<Eigen::Index>(k);
-    frame.contact_i()[r] = rows[k].i;
-    frame.contact_j()[r] = rows[k].j;
-    overlap[r] = rows[k].overlap;
-    normal.row(r) = rows[k].normal.transpose();
-    point.row(r) = rows[k].point.transpose();
-    if (tangent) tangent->row(r) = rows[k].tangential.transpose();
-  }
+  ContactTableWriter table(frame, static_cast<Eigen::Index>(rows.size()), tangential);
+  for (std::size_t k = 0; k < rows.size(); ++k) table.set(static_cast<Eigen::Index>(k), rows[k]);
 }
 
 }  // namespace granpipe

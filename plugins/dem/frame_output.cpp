@@ -18,68 +18,104 @@ bool touches(const Particles& p, int a, int b) {
   return !((p.x.col(a) - p.x.col(b)).squaredNorm() >= contact * contact);
 }
 
-// Whether particle a touches the wall of `slot`, and how deep (wall_contacts' test).
+// Whether particle a touches the wall of `slot`, and how deep.
 bool touches_wall(const Engine& e, int slot, int a, double& overlap, Vec3& n) {
   const Particles& p = e.particles();
   overlap = e.walls().overlap(slot, p.x.col(a), p.radius[a], e.wall_offset(), n);
   return !(overlap <= 0.0);
 }
 
-// How many rows pair_contacts and wall_contacts give: counted first, so that the rows take
-// no more memory than they need (at 10^5 spheres and more, the frame's peak).
-std::size_t touching_count(const Engine& e) {
+// A contact of the frame before its values: its rows (by tag, the smaller first, or the
+// particle and its wall) and where the values come from: listed pair k, or particle a
+// against the wall of `slot`. A quarter of a row's size, so that a frame of 10^6 spheres
+// holds its contacts once as values (in the table) and once as keys, not twice as values.
+struct ContactKey {
+  std::int64_t i, j;
+  std::int32_t from;  // k, or a
+  std::int32_t slot;  // -1 for a pair
+};
+
+std::vector<ContactKey> contact_keys(const Engine& e) {
   const Particles& p = e.particles();
   const NeighborList& list = e.neighbors();
-  std::size_t count = 0;
-  for (int a = 0; a < p.size(); ++a) {
-    for (std::int32_t k = list.first[a]; k < list.first[a + 1]; ++k) {
-      count += touches(p, a, list.partner[k]);
+  std::vector<ContactKey> keys;
+  for (int pass = 0; pass < 2; ++pass) {  // count, then gather into exactly that room
+    std::size_t count = 0;
+    const auto add = [&](const ContactKey& key) {
+      if (pass == 1) keys.push_back(key);
+      ++count;
+    };
+    for (int a = 0; a < p.size(); ++a) {
+      for (std::int32_t k = list.first[a]; k < list.first[a + 1]; ++k) {
+        const int b = list.partner[k];
+        if (touches(p, a, b)) {
+          add({std::min(p.tag[a], p.tag[b]), std::max(p.tag[a], p.tag[b]), k, -1});
+        }
+      }
     }
     for (int slot = 0; slot < e.walls().count(); ++slot) {
-      double overlap;
-      Vec3 n;
-      count += touches_wall(e, slot, a, overlap, n);
+      const std::int64_t wall = partner::wall(e.walls().wall_of_slot(slot));
+      for (int a = 0; a < p.size(); ++a) {
+        double overlap;
+        Vec3 n;
+        if (touches_wall(e, slot, a, overlap, n)) add({p.tag[a], wall, a, slot});
+      }
     }
+    if (pass == 0) keys.reserve(count);
   }
-  return count;
+  std::sort(keys.begin(), keys.end(), [](const ContactKey& x, const ContactKey& y) {
+    return x.i != y.i ? x.i < y.i : x.j < y.j;
+  });
+  return keys;
 }
 
-void pair_contacts(const Engine& e, std::vector<ContactRow>& rows) {
+// The row of listed pair k, whose owner is particle a (the force loop stored the force on
+// the partner, b).
+ContactRow pair_row(const Engine& e, std::int32_t k) {
   const Particles& p = e.particles();
   const NeighborList& list = e.neighbors();
-  for (int a = 0; a < p.size(); ++a) {
-    for (std::int32_t k = list.first[a]; k < list.first[a + 1]; ++k) {
-      const int b = list.partner[k];
-      if (!touches(p, a, b)) continue;
-      const Vec3 d = p.x.col(a) - p.x.col(b);
-      const double contact = p.radius[a] + p.radius[b];
-      const double r = d.norm();
-      const Vec3 n = d / r;
-      const double* reaction = &list.reaction[3 * static_cast<std::size_t>(k)];
-      const Vec3 on_a = -Vec3(reaction[0], reaction[1], reaction[2]);
-      const Vec3 normal = on_a.dot(n) * n;
-      const double overlap = contact - r;
-      const Vec3 point = p.x.col(a) - (p.radius[a] - 0.5 * overlap) * n;
-      // Rows name the smaller index first, with the forces on it.
-      const double sign = p.tag[a] < p.tag[b] ? 1.0 : -1.0;
-      rows.push_back({std::min(p.tag[a], p.tag[b]), std::max(p.tag[a], p.tag[b]), overlap,
-                      sign * normal, sign * (on_a - normal), point});
-    }
-  }
+  const int a = list.owner[static_cast<std::size_t>(k)],
+            b = list.partner[static_cast<std::size_t>(k)];
+  const Vec3 d = p.x.col(a) - p.x.col(b);
+  const double contact = p.radius[a] + p.radius[b];
+  const double r = d.norm();
+  const Vec3 n = d / r;
+  const double* reaction = &list.reaction[3 * static_cast<std::size_t>(k)];
+  const Vec3 on_a = -Vec3(reaction[0], reaction[1], reaction[2]);
+  const Vec3 normal = on_a.dot(n) * n;
+  const double overlap = contact - r;
+  const Vec3 point = p.x.col(a) - (p.radius[a] - 0.5 * overlap) * n;
+  // Rows name the smaller index first, with the forces on it.
+  const double sign = p.tag[a] < p.tag[b] ? 1.0 : -1.0;
+  return {std::min(p.tag[a], p.tag[b]),
+          std::max(p.tag[a], p.tag[b]),
+          overlap,
+          sign * normal,
+          sign * (on_a - normal),
+          point};
 }
 
-void wall_contacts(const Engine& e, std::vector<ContactRow>& rows) {
+ContactRow wall_row(const Engine& e, std::int32_t a, int slot) {
   const Particles& p = e.particles();
-  for (int slot = 0; slot < e.walls().count(); ++slot) {
-    const std::int64_t wall = partner::wall(e.walls().wall_of_slot(slot));
-    for (int a = 0; a < p.size(); ++a) {
-      double overlap;
-      Vec3 n;
-      if (!touches_wall(e, slot, a, overlap, n)) continue;
-      const Vec3 point = p.x.col(a) - (p.radius[a] - 0.5 * overlap) * n;
-      rows.push_back({p.tag[a], wall, overlap, e.recorded_wall_normal()[slot].col(a),
-                      e.recorded_wall_tangential()[slot].col(a), point});
-    }
+  double overlap;
+  Vec3 n;
+  touches_wall(e, slot, a, overlap, n);
+  const Vec3 point = p.x.col(a) - (p.radius[a] - 0.5 * overlap) * n;
+  return {p.tag[a],
+          partner::wall(e.walls().wall_of_slot(slot)),
+          overlap,
+          e.recorded_wall_normal()[slot].col(a),
+          e.recorded_wall_tangential()[slot].col(a),
+          point};
+}
+
+void fill_contacts(const Engine& e, Frame& frame) {
+  const std::vector<ContactKey> keys = contact_keys(e);
+  ContactTableWriter table(frame, static_cast<Eigen::Index>(keys.size()), true);
+  for (std::size_t r = 0; r < keys.size(); ++r) {
+    const ContactKey& key = keys[r];
+    table.set(static_cast<Eigen::Index>(r),
+              key.slot < 0 ? pair_row(e, key.from) : wall_row(e, key.from, key.slot));
   }
 }
 
@@ -120,14 +156,7 @@ void fill_frame(const Engine& engine, Frame& frame) {
                         "(Engine::record_contacts(true) before the last step)");
   }
   fill_particles(engine.particles(), frame);
-  std::vector<ContactRow> rows;
-  rows.reserve(touching_count(engine));
-  pair_contacts(engine, rows);
-  wall_contacts(engine, rows);
-  std::sort(rows.begin(), rows.end(), [](const ContactRow& a, const ContactRow& b) {
-    return a.i != b.i ? a.i < b.i : a.j < b.j;
-  });
-  fill_contact_table(rows, true, frame);
+  fill_contacts(engine, frame);
   frame.container = engine.walls().at(engine.time());
   add_drive_observables(engine.walls().drive(), engine.time(), frame);
   frame.time = engine.time();

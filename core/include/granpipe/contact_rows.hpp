@@ -16,8 +16,23 @@ struct ContactRow {
   Eigen::Vector3d normal, tangential, point;  // forces on i; tangential unused without it
 };
 
-// The frame's contact table, in the rows' order: contact_i, contact_j, overlap,
+// The frame's contact table of `count` rows, written row by row (a source with many
+// contacts need not hold them all as rows too): contact_i, contact_j, overlap,
 // normal_force, point, and tangential_force when `tangential`.
+class ContactTableWriter {
+ public:
+  ContactTableWriter(Frame& frame, Eigen::Index count, bool tangential);
+  void set(Eigen::Index r, const ContactRow& row);
+
+ private:
+  Frame& frame_;
+  PropertyTable& table_;  // made first: the columns below are its
+  Eigen::ArrayXd& overlap_;
+  Coordinates &normal_, &point_;
+  Coordinates* tangential_;
+};
+
+// The table from rows, in their order.
 void fill_contact_table(const std::vector<ContactRow>& rows, bool tangential, Frame& frame);
 
 }  // namespace granpipe
