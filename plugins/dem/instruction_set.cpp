@@ -39,10 +39,16 @@ bool processor_runs(InstructionSet set) {
   switch (set) {
     case InstructionSet::Baseline:
       return true;
+#if defined(__x86_64__)
     case InstructionSet::Avx2:
       return __builtin_cpu_supports("x86-64-v3");
     case InstructionSet::Avx512:
       return __builtin_cpu_supports("x86-64-v4");
+#else
+    case InstructionSet::Avx2:
+    case InstructionSet::Avx512:
+      return false;
+#endif
     case InstructionSet::Auto:
       break;
   }
