@@ -1,9 +1,9 @@
 #pragma once
 // What the CGAL triangulations of this plugin share: the kernel, and their finite cells
-// read out in the triangulation's order. The points are inserted along a Morton curve,
-// each located from the one before, so that this order follows the curve too: cells near
-// each other in the packing lie near each other in memory, which the passes over them
-// profit from (sorting them by their corners' rows took longer than it saved).
+// read out in the triangulation's order. The points are inserted by CGAL's range
+// insertion (a spatial sort in randomised rounds), whose cells lie in memory partly
+// scattered; the passes over them fetch what they read of other cells ahead (sorting the
+// cells by their corners' rows took longer than it saved).
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <omp.h>
 
