@@ -32,7 +32,9 @@ std::vector<Item> made_in_runs(std::size_t n, int threads, Make make) {
     const auto part = static_cast<std::size_t>(omp_get_thread_num());
     const auto parts = static_cast<std::size_t>(omp_get_num_threads());
     const std::size_t first = n * part / parts, end = n * (part + 1) / parts;
-    runs[part].reserve(end - first);
+    // The first run takes the others after it: room for all, so that joining them copies
+    // only theirs (the whole array once more, and its pages, when the first reallocated).
+    runs[part].reserve(part == 0 ? n : end - first);
     for (std::size_t k = first; k < end; ++k) runs[part].push_back(make(k));
   }
   std::vector<Item> items = std::move(runs.front());
