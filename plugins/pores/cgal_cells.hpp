@@ -1,9 +1,9 @@
 #pragma once
 // What the CGAL triangulations of this plugin share: the kernel, and their finite cells
-// read out in the triangulation's order. The points are inserted along a Morton curve,
-// each located from the one before, so that this order follows the curve too: cells near
-// each other in the packing lie near each other in memory, which the passes over them
-// profit from (sorting them by their corners' rows took longer than it saved).
+// read out in the triangulation's order. The points are inserted by CGAL's range
+// insertion (a spatial sort in randomised rounds), whose cells lie in memory partly
+// scattered; the passes over them fetch what they read of other cells ahead (sorting the
+// cells by their corners' rows took longer than it saved).
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <omp.h>
 
@@ -32,7 +32,9 @@ std::vector<Item> made_in_runs(std::size_t n, int threads, Make make) {
     const auto part = static_cast<std::size_t>(omp_get_thread_num());
     const auto parts = static_cast<std::size_t>(omp_get_num_threads());
     const std::size_t first = n * part / parts, end = n * (part + 1) / parts;
-    runs[part].reserve(end - first);
+    // The first run takes the others after it: room for all, so that joining them copies
+    // only theirs (the whole array once more, and its pages, when the first reallocated).
+    runs[part].reserve(part == 0 ? n : end - first);
     for (std::size_t k = first; k < end; ++k) runs[part].push_back(make(k));
   }
   std::vector<Item> items = std::move(runs.front());

@@ -5,6 +5,8 @@
 #include <CGAL/Delaunay_triangulation_cell_base_3.h>
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
+#include <CGAL/property_map.h>
+#include <CGAL/spatial_sort.h>
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -97,12 +99,19 @@ Points numbered(const std::vector<Eigen::Vector3d>& x, std::size_t first_row) {
   return points;
 }
 
-// Each point located from the one before, in the order given: the rows follow a Morton
-// curve, so that the walks are short and the cells come to lie in memory about in the
-// order of their rows (CGAL's insertion of a range sorts it again, along a Hilbert curve
-// in randomised rounds, whose cells lie scattered). A point at the position of another
-// takes its vertex (refuse_duplicates).
-void insert_in_order(Delaunay& t, const Points& points) {
+// In the order of CGAL's insertion of a range (a spatial sort in randomised rounds, BRIO,
+// its random shuffle seeded the same every time), each point located from the one
+// before. About a fifth faster than inserting the points in their rows' Morton order,
+// whose cells lay in memory about in that order, which the passes over the cells profited
+// from: at 10^6 deposited spheres the insertion saves more than the scattered cells cost
+// the passes, at 10^5 about as much. The (point, row) pairs are sorted themselves: CGAL's
+// insertion of pairs sorts their indices, each comparison then reading two points
+// elsewhere (the same order, to the bit: the sort compares the same points). A point at
+// the position of another takes its vertex (refuse_duplicates).
+void insert_points(Delaunay& t, Points points) {
+  using Traits = CGAL::Spatial_sort_traits_adapter_3<
+      Kernel, CGAL::First_of_pair_property_map<std::pair<Point, std::uint32_t>>>;
+  CGAL::spatial_sort(points.begin(), points.end(), Traits());
   Delaunay::Vertex_handle last;
   for (const auto& [p, row] : points) {
     last = t.insert(p, last);
@@ -126,7 +135,7 @@ DelaunayTriangulation::DelaunayTriangulation(const Centres& centres, const Frame
                      std::to_string(centres.points.size()));
   }
   const Points points = numbered(centres.points, 0);
-  insert_in_order(impl_->t, points);
+  insert_points(impl_->t, points);
   impl_->rows = points.size();
   refuse_duplicates(frame, centres, impl_->t, points, where);
   if (impl_->t.dimension() < 3) {
@@ -146,7 +155,7 @@ std::vector<DelaunayCell> DelaunayTriangulation::cells(double length, int thread
 std::vector<std::uint32_t> DelaunayTriangulation::hull() const { return cgal::hull_rows(impl_->t); }
 
 void DelaunayTriangulation::insert(const std::vector<Eigen::Vector3d>& points) {
-  insert_in_order(impl_->t, numbered(points, impl_->rows));
+  insert_points(impl_->t, numbered(points, impl_->rows));
   impl_->rows += points.size();
 }
 

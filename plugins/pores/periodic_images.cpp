@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <limits>
-#include <numeric>
+#include <utility>
 
 namespace granpipe::pores {
 
@@ -27,16 +27,18 @@ std::vector<std::uint32_t> spatial_order(const std::vector<Eigen::Vector3d>& x) 
     hi = hi.cwiseMax(p);
   }
   const Eigen::Vector3d scale = 1023.0 * (hi - lo).cwiseMax(1e-300).cwiseInverse();
-  std::vector<std::uint32_t> key(x.size()), order(x.size());
+  // (key, row) pairs sorted themselves, not rows compared by keys looked up elsewhere.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> keyed(x.size());
   for (std::size_t k = 0; k < x.size(); ++k) {
     const Eigen::Vector3d q = (x[k] - lo).cwiseProduct(scale);
-    key[k] = spread(static_cast<std::uint32_t>(q[0])) |
-             spread(static_cast<std::uint32_t>(q[1])) << 1 |
-             spread(static_cast<std::uint32_t>(q[2])) << 2;
+    keyed[k] = {spread(static_cast<std::uint32_t>(q[0])) |
+                    spread(static_cast<std::uint32_t>(q[1])) << 1 |
+                    spread(static_cast<std::uint32_t>(q[2])) << 2,
+                static_cast<std::uint32_t>(k)};
   }
-  std::iota(order.begin(), order.end(), 0u);
-  std::sort(order.begin(), order.end(),
-            [&](std::uint32_t a, std::uint32_t b) { return key[a] < key[b]; });
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<std::uint32_t> order(x.size());
+  for (std::size_t k = 0; k < x.size(); ++k) order[k] = keyed[k].second;
   return order;
 }
 

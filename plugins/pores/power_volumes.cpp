@@ -13,16 +13,52 @@ namespace granpipe::pores {
 
 namespace {
 
-// For each face (opposite vertex i) of a positively oriented cell, its corners ordered so
-// that they and vertex i are positively oriented too; then every pair (a, b) of
-// consecutive corners (a, b, c) is positively oriented with i, which orders T and its
-// neighbour N around the edge ab.
-constexpr std::array<std::array<int, 3>, 4> kFaces{{{2, 1, 3}, {0, 2, 3}, {1, 0, 3}, {0, 1, 2}}};
+// A cell's corners relative to its centre, x_b x x_a of its edges (a < b) and the
+// fraction of each edge ab on a's side of the radical plane of a and b.
+struct CellFrame {
+  std::array<Eigen::Vector3d, 4> x;
+  std::array<std::array<Eigen::Vector3d, 4>, 4> cross;
+  std::array<std::array<double, 4>, 4> fraction;
 
-std::array<std::uint32_t, 3> face(const CellTopology& cell, int i) {
-  const auto& v = cell.vertices;
-  return {v[kFaces[i][0]], v[kFaces[i][1]], v[kFaces[i][2]]};
-}
+  template <int A, int B>
+  Eigen::Vector3d edge_cross() const {
+    if constexpr (A < B) {
+      return cross[A][B];
+    } else {
+      return -cross[B][A];
+    }
+  }
+  template <int A, int B>
+  double edge_fraction() const {
+    if constexpr (A < B) {
+      return fraction[A][B];
+    } else {
+      return 1.0 - fraction[B][A];
+    }
+  }
+
+  // Adds six times the corners' shares of the cell's part of the dual faces of the edges
+  // of face (p, q, r). The face's dual edge crosses its plane at the foot f of the centre,
+  // which splits the dual face of each edge ab between this cell and the neighbour across
+  // the face; this cell's part is the tetrahedron (x_a, x_b, f, c) (f before c around
+  // a -> b when (p, q, r) and the fourth corner are positively oriented), of six times
+  // the volume f . (x_b x x_a) with c at the origin, split by the radical plane of a and b.
+  template <int P, int Q, int R>
+  void add_face(std::array<double, 4>& six_volume) const {
+    const Eigen::Vector3d pq = edge_cross<P, Q>(), qr = edge_cross<Q, R>(), rp = edge_cross<R, P>();
+    const Eigen::Vector3d normal = -(pq + qr + rp);               // (x_q - x_p) x (x_r - x_p)
+    const double foot = x[P].dot(normal) / normal.squaredNorm();  // f = foot * normal
+    add_wedge<P, Q>(foot * normal.dot(pq), six_volume);
+    add_wedge<Q, R>(foot * normal.dot(qr), six_volume);
+    add_wedge<R, P>(foot * normal.dot(rp), six_volume);
+  }
+  template <int A, int B>
+  void add_wedge(double wedge, std::array<double, 4>& six_volume) const {
+    const double t_a = edge_fraction<A, B>();
+    six_volume[A] += t_a * wedge;
+    six_volume[B] += (1.0 - t_a) * wedge;
+  }
+};
 
 // What one thread adds up: the points in rows [first, end).
 struct Share {
@@ -51,46 +87,37 @@ struct Share {
     }
   }
 
-  // The wedge of the dual face of ab between c_n and c_t (c_n before c_t around a -> b),
-  // as the tetrahedron (x_a, x_b, c_n, c_t) split by the radical plane of a and b.
-  void add_wedge(std::uint32_t a, std::uint32_t b, const Eigen::Vector3d& c_n,
-                 const Eigen::Vector3d& c_t) {
-    if (!owns(a) && !owns(b)) return;
-    const std::vector<Eigen::Vector3d>& x = points.position;
-    const Eigen::Vector3d ab = x[b] - x[a];
-    const double six_volume = ab.dot((c_n - x[a]).cross(c_t - x[a]));
-    // The radical plane cuts ab at the fraction t_a from a: the middle without weights
-    // (0.5 + 0 / |ab|^2 too, to the bit, but for the division's time).
-    const double t_a = points.weights.empty()
-                           ? 0.5
-                           : 0.5 + (points.weight(a) - points.weight(b)) / (2.0 * ab.squaredNorm());
-    if (owns(a)) out.volume[a] += t_a * six_volume / 6.0;
-    if (owns(b)) out.volume[b] += (1.0 - t_a) * six_volume / 6.0;
-  }
-
-  // The wedges of cell t with its neighbours after it (those before added theirs with it).
+  // The cell's share of its corners' cells (CellFrame::add_face), from its own corners and
+  // centre only: the neighbour's centre (the tetrahedron (x_a, x_b, c_n, c) before) lies
+  // anywhere in memory, and waiting on it was half of the sums' time.
   template <class Cell>
-  void add_wedges(const Cell& cell, std::size_t t, const std::vector<Eigen::Vector3d>& centre) {
+  void add_cell(const Cell& cell) {
     if (!owns_any(cell)) return;
-    for (int i = 0; i < 4; ++i) {
-      const std::uint32_t n = cell.neighbours[i];
-      if (n == kHull || n < t) continue;
-      const std::array<std::uint32_t, 3> f = face(cell, i);
-      for (int e = 0; e < 3; ++e) add_wedge(f[e], f[(e + 1) % 3], centre[n], cell.centre);
+    const auto& v = cell.vertices;
+    CellFrame f;
+    for (int k = 0; k < 4; ++k) f.x[k] = points.position[v[k]] - cell.centre;
+    for (int a = 0; a < 4; ++a) {
+      for (int b = a + 1; b < 4; ++b) {
+        f.cross[a][b] = f.x[b].cross(f.x[a]);
+        // The middle without weights (0.5 + 0 / |ab|^2 too, to the bit, but for the
+        // division's time).
+        f.fraction[a][b] = points.weights.empty()
+                               ? 0.5
+                               : 0.5 + (points.weight(v[a]) - points.weight(v[b])) /
+                                           (2.0 * (f.x[b] - f.x[a]).squaredNorm());
+      }
     }
+    // The faces opposite corners 0 to 3, each ordered so that it and the corner opposite
+    // are positively oriented.
+    std::array<double, 4> six_volume{};
+    f.add_face<2, 1, 3>(six_volume);
+    f.add_face<0, 2, 3>(six_volume);
+    f.add_face<1, 0, 3>(six_volume);
+    f.add_face<0, 1, 2>(six_volume);
+    for (int k = 0; k < 4; ++k)
+      if (owns(v[k])) out.volume[v[k]] += six_volume[k] / 6.0;
   }
 };
-
-// The neighbours' centres of a cell some cells ahead, fetched into the cache while the
-// cells before it are summed: they lie anywhere in the array, and waiting on them was half
-// of the sums' time.
-constexpr std::size_t kPrefetchAhead = 8;
-
-template <class Cell>
-void prefetch_neighbours(const Cell& cell, const std::vector<Eigen::Vector3d>& centre) {
-  for (std::uint32_t n : cell.neighbours)
-    if (n != kHull) __builtin_prefetch(&centre[n]);
-}
 
 // Runs add(share) on each thread, each with its own share of the points.
 template <class Add>
@@ -130,15 +157,8 @@ PowerVolumes cell_extents(const WeightedPoints& points, const std::vector<Cell>&
 template <class Cell>
 void sum_volumes(PowerVolumes& v, const WeightedPoints& points, const std::vector<Cell>& cells,
                  int threads) {
-  // The neighbours' centres from an array a third the size of the cells', more of it in
-  // cache.
-  std::vector<Eigen::Vector3d> centre(cells.size());
-  for (std::size_t t = 0; t < cells.size(); ++t) centre[t] = cells[t].centre;
   by_shares(points, v, threads, [&](Share& share) {
-    for (std::size_t t = 0; t < cells.size(); ++t) {
-      if (t + kPrefetchAhead < cells.size()) prefetch_neighbours(cells[t + kPrefetchAhead], centre);
-      share.add_wedges(cells[t], t, centre);
-    }
+    for (const Cell& cell : cells) share.add_cell(cell);
   });
 }
 

@@ -1,11 +1,11 @@
 #pragma once
-// The volume of every point's power (Laguerre) cell, read off the dual triangulation: two
-// cells T and N sharing a face, and an edge ab of that face, make the tetrahedron
-// (x_a, x_b, c_T, c_N) of the centres of the two and of the orthogonal spheres of the
-// cells; the radical plane of a and b, which holds c_T and c_N, splits it into a piece of
-// a's cell and a piece of b's, in the ratio of the distances from x_a and x_b to that
-// plane. Signed volumes make the sum exact however the centres lie, inside their cells or
-// not (as power centres may).
+// The volume of every point's power (Laguerre) cell, read off the dual triangulation: a
+// cell T with orthogonal centre c_T, a face of it, the foot f of c_T on that face's plane
+// (where the face's dual edge crosses it) and an edge ab of that face make the tetrahedron
+// (x_a, x_b, f, c_T); the radical plane of a and b, which holds f and c_T, splits it into a
+// piece of a's cell and a piece of b's, in the ratio of the distances from x_a and x_b to
+// that plane. Signed volumes make the sum exact however the centres lie, inside their
+// cells or not (as power centres may).
 #include <Eigen/Core>
 #include <cstdint>
 #include <vector>
