@@ -6,6 +6,7 @@
 #include <sstream>
 #include <utility>
 
+#include "apollonius_vertices.hpp"
 #include "cell_bounds.hpp"
 #include "cell_volumes.hpp"
 #include "delaunay_cells.hpp"
@@ -78,6 +79,7 @@ Skin wider_skin(const Skin& skin, double shortfall, double period, const std::st
 struct TriangulatedPores {
   std::vector<Pore> pores;  // in the primary cell
   long cells = 0, flat_cells = 0, untangent_cells = 0, fifth_sphere_cells = 0;
+  long apollonius_vertices = 0;
   CellVolumes volumes;
 };
 
@@ -100,15 +102,20 @@ struct Measure {
                              const Centres& centres, const CellBounds& bounds) const {
     TriangulatedPores found;
     found.cells = static_cast<long>(cells.size());
+    std::vector<Pore> missing;
     if (!radii.equal) {
       const NonPoreCells left_out =
           tangent_cells(cells, centres, frame, radii.mean, length(), threads);
       found.untangent_cells = count_inside(primary, left_out.untangent);
       found.fifth_sphere_cells = count_inside(primary, left_out.fifth_sphere);
+      missing = missing_vertices(cells, left_out.fifth_sphere_cells, centres, frame, primary,
+                                 radii.mean, length(), threads);
     }
     MergedPores merged = merge_cells(cells, radii.mean, tolerance, threads);
     found.flat_cells = merged.flat_cells;
     found.pores = std::move(merged.pores);
+    for (const Pore& p : missing) found.apollonius_vertices += in_box(primary, p.centre);
+    found.pores.insert(found.pores.end(), missing.begin(), missing.end());
     std::erase_if(found.pores, [&](const Pore& p) { return !in_box(primary, p.centre); });
     found.volumes = radii.equal
                         ? voronoi_volumes(std::move(extents), cells, centres, bounds, threads)
@@ -196,6 +203,7 @@ PoreMeasurement measure_pores(const Frame& frame, const std::optional<PoreRegion
   m.flat_cells = found.flat_cells;
   m.untangent_cells = found.untangent_cells;
   m.fifth_sphere_cells = found.fifth_sphere_cells;
+  m.apollonius_vertices = found.apollonius_vertices;
   m.in_region.reserve(found.pores.size());
   for (const Pore& p : found.pores) {
     const bool counted = !region || region->contains(p.centre);

@@ -39,6 +39,9 @@ struct PoreMeasurement {
   // Of them, left out as their tangent sphere overlaps a fifth sphere (unequal radii), in
   // the box along periodic axes.
   long fifth_sphere_cells = 0;
+  // Pores no Delaunay cell gives (unequal radii), found around those cells
+  // (apollonius_vertices.hpp), in the box along periodic axes.
+  long apollonius_vertices = 0;
   // Every pore found (each once along periodic sides), and whether it is counted.
   std::vector<Pore> pores;
   std::vector<char> in_region;

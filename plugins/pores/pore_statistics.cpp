@@ -19,6 +19,7 @@ void PoreStatistics::add(const PoreMeasurement& m) {
   flat_cells_ += m.flat_cells;
   untangent_cells_ += m.untangent_cells;
   fifth_sphere_cells_ += m.fifth_sphere_cells;
+  apollonius_vertices_ += m.apollonius_vertices;
   for (double xi : m.xi) {
     const double volume = xi * xi * xi;
     xi3_sum_ += volume;
@@ -94,6 +95,11 @@ void PoreStatistics::report(Results& results) const {
                      "",
                      "Delaunay cells of unequal spheres left out: their tangent sphere overlaps a "
                      "sphere next to their four, all frames");
+  results.add_scalar("apollonius_vertices", static_cast<double>(apollonius_vertices_), std::nan(""),
+                     "",
+                     "pores of unequal spheres that no Delaunay cell gives, found around the "
+                     "cells whose tangent sphere overlaps a fifth sphere (in the region or "
+                     "not), all frames");
   results.add_table("xi_distribution", distribution_table());
   results.add_plot("xi3_P", {.table = "xi_distribution",
                              .x = "xi",

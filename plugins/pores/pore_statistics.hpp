@@ -32,7 +32,7 @@ class PoreStatistics {
   double bin_width_;
   std::vector<double> counts_;  // pores per bin
   long pores_ = 0, spheres_ = 0, outside_ = 0, flat_cells_ = 0, untangent_cells_ = 0,
-       fifth_sphere_cells_ = 0;
+       fifth_sphere_cells_ = 0, apollonius_vertices_ = 0;
   double xi3_sum_ = 0.0;
   std::vector<long> hole_counts_;
   std::vector<double> hole_volumes_;  // sums of xi^3

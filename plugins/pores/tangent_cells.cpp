@@ -63,7 +63,10 @@ NonPoreCells tangent_cells(std::vector<DelaunayCell>& cells, const Centres& cent
   NonPoreCells left_out;
   for (std::size_t i = 0; i < cells.size(); ++i) {
     if (kind[i] == kUntangent) left_out.untangent.push_back(circumcentre[i]);
-    if (kind[i] == kFifthSphere) left_out.fifth_sphere.push_back(circumcentre[i]);
+    if (kind[i] == kFifthSphere) {
+      left_out.fifth_sphere.push_back(circumcentre[i]);
+      left_out.fifth_sphere_cells.push_back(i);
+    }
   }
   return left_out;
 }

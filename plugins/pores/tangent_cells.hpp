@@ -14,8 +14,9 @@ namespace granpipe::pores {
 // The cells left out, by their circumcentres (where they are tells the primary cell's
 // from those at the hull of the images).
 struct NonPoreCells {
-  std::vector<Eigen::Vector3d> untangent;     // no sphere touches their four from outside
-  std::vector<Eigen::Vector3d> fifth_sphere;  // their tangent sphere overlaps a fifth sphere
+  std::vector<Eigen::Vector3d> untangent;       // no sphere touches their four from outside
+  std::vector<Eigen::Vector3d> fifth_sphere;    // their tangent sphere overlaps a fifth sphere
+  std::vector<std::size_t> fifth_sphere_cells;  // those cells, by index
 };
 
 // Each cell's centre becomes its tangent sphere's, its radius that sphere's radius plus

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <optional>
 #include <random>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "granpipe/frame.hpp"
 #include "granpipe/region.hpp"
 #include "measure_pores.hpp"
+#include "pore_region.hpp"
 #include "tangent_sphere.hpp"
 
 namespace {
@@ -195,21 +197,31 @@ TEST(PoresUnequal, ATangentSphereOverlappingAFifthIsNoPore) {
   }
 }
 
-// Spheres of radii 0.5 to 1 at random without overlap in a periodic box: shifting them all
-// (the images near the sides change, and which image of a pore is kept) changes no pore,
-// and every cell in the box has its tangent sphere (those without are hull cells of the
-// images, far outside).
-TEST(PoresUnequal, PeriodicPoresDoNotDependOnWhereTheBoxIs) {
-  const double side = 9.0;
-  std::mt19937_64 rng(17);
-  std::uniform_real_distribution<double> coordinate(0.0, side), radius(0.5, 1.0);
+// `n` spheres placed at random without overlap in a cube of side `side`, periodic or walled
+// (then clear of the walls), their radii drawn from `small` to `large`, or either of the two
+// at even odds.
+struct Loose {
+  int n = 60;
+  double side = 9.0;
+  unsigned seed = 17;
+  double small = 0.5, large = 1.0;
+  bool two_sizes = false, periodic = true;
+};
+
+Frame loose_packing(const Loose& p) {
+  std::mt19937_64 rng(p.seed);
+  std::uniform_real_distribution<double> coordinate(0.0, p.side), radius(p.small, p.large);
   Frame f;
-  f.resize(60, 3);
-  f.container = granpipe::Container::periodic_box(3, {0, 0, 0}, {side, side, side});
+  f.resize(p.n, 3);
+  const Eigen::Vector3d lo(0, 0, 0), hi(p.side, p.side, p.side);
+  if (p.periodic) f.container = granpipe::Container::periodic_box(3, lo, hi);
+  f.container.lo = lo;
+  f.container.hi = hi;
   for (Eigen::Index k = 0; k < f.size();) {
     const Eigen::Vector3d x(coordinate(rng), coordinate(rng), coordinate(rng));
-    const double r = radius(rng);
-    bool free = true;
+    double r = radius(rng);
+    if (p.two_sizes) r = r < (p.small + p.large) / 2.0 ? p.small : p.large;
+    bool free = p.periodic || (x.minCoeff() >= r && x.maxCoeff() <= p.side - r);
     for (Eigen::Index j = 0; j < k; ++j) {
       Eigen::Vector3d d = x - f.position().row(j).transpose().matrix();
       for (int a = 0; a < 3; ++a) d[a] = f.container.minimum_image(a, d[a]);
@@ -219,6 +231,15 @@ TEST(PoresUnequal, PeriodicPoresDoNotDependOnWhereTheBoxIs) {
     f.position().row(k) = x.transpose().array();
     f.radius()[k++] = r;
   }
+  return f;
+}
+
+// Spheres of radii 0.5 to 1 at random without overlap in a periodic box: shifting them all
+// (the images near the sides change, and which image of a pore is kept) changes no pore,
+// and every cell in the box has its tangent sphere (those without are hull cells of the
+// images, far outside).
+TEST(PoresUnequal, PeriodicPoresDoNotDependOnWhereTheBoxIs) {
+  const Frame f = loose_packing({});
   Frame shifted = f;
   shifted.position().rowwise() += Eigen::RowVector3d(1.3, 2.7, 0.4).array();
   PoreMeasurement a = measure_pores(f, std::nullopt, 1e-9, "test");
@@ -233,6 +254,106 @@ TEST(PoresUnequal, PeriodicPoresDoNotDependOnWhereTheBoxIs) {
   std::sort(b.xi.begin(), b.xi.end());
   for (std::size_t k = 0; k < a.xi.size(); ++k) EXPECT_NEAR(a.xi[k], b.xi[k], 1e-9);
   EXPECT_EQ(a.untangent_cells, 0);
+}
+
+// Every vertex of the additively weighted Voronoi diagram by brute force: each quadruple of
+// spheres (and images across periodic sides) within reach of each other, its tangent sphere
+// kept when it overlaps no sphere. Radii of the pores (tangent sphere radii) whose centre
+// (taken into the box along periodic axes) lies in `inside`, each vertex once.
+std::vector<double> weighted_voronoi_vertices(const Frame& f, double largest_pore,
+                                              const granpipe::Region& inside) {
+  std::vector<Eigen::Vector3d> x;
+  std::vector<double> r;
+  std::size_t primary = 0;  // the first row of shift (0, 0, 0)
+  const auto shifts = [&](int a) { return f.container.periodic(a) ? 1 : 0; };
+  for (int i = -shifts(0); i <= shifts(0); ++i)
+    for (int j = -shifts(1); j <= shifts(1); ++j)
+      for (int k = -shifts(2); k <= shifts(2); ++k) {
+        if (i == 0 && j == 0 && k == 0) primary = x.size();
+        for (Eigen::Index p = 0; p < f.size(); ++p) {
+          const Eigen::Vector3d shift =
+              (f.container.hi - f.container.lo).cwiseProduct(Eigen::Vector3d(i, j, k));
+          x.push_back(f.position().row(p).transpose().matrix() + shift);
+          r.push_back(f.radius()[p]);
+        }
+      }
+  const double reach = 2.0 * (f.radius().maxCoeff() + largest_pore);
+  const auto near = [&](std::size_t a, std::size_t b) { return (x[a] - x[b]).norm() < reach; };
+  std::vector<std::array<double, 4>> found;  // centre, radius
+  for (std::size_t a = primary; a < primary + static_cast<std::size_t>(f.size()); ++a) {
+    std::vector<std::size_t> around;  // nearest first: the overlaps are found early there
+    for (std::size_t b = 0; b < x.size(); ++b)
+      if (b != a && near(a, b)) around.push_back(b);
+    std::sort(around.begin(), around.end(), [&](std::size_t b, std::size_t c) {
+      return (x[b] - x[a]).squaredNorm() < (x[c] - x[a]).squaredNorm();
+    });
+    for (std::size_t u = 0; u < around.size(); ++u)
+      for (std::size_t v = u + 1; v < around.size(); ++v) {
+        if (!near(around[u], around[v])) continue;
+        for (std::size_t w = v + 1; w < around.size(); ++w) {
+          const std::array<std::size_t, 4> q{a, around[u], around[v], around[w]};
+          if (!near(q[1], q[3]) || !near(q[2], q[3])) continue;
+          const auto t = tangent_sphere({x[q[0]], x[q[1]], x[q[2]], x[q[3]]},
+                                        {r[q[0]], r[q[1]], r[q[2]], r[q[3]]});
+          if (!t || t->radius > largest_pore) continue;
+          const auto clear_of = [&](std::size_t p) {
+            return std::find(q.begin(), q.end(), p) != q.end() ||
+                   (x[p] - t->centre).norm() > r[p] + t->radius - 1e-9;
+          };
+          bool empty = std::all_of(around.begin(), around.end(), clear_of);
+          for (std::size_t p = 0; p < x.size() && empty; ++p) empty = clear_of(p);
+          Eigen::Vector3d c = t->centre;
+          for (int d = 0; d < 3; ++d)
+            c[d] = f.container.periodic(d) ? f.container.wrap(d, c[d]) : c[d];
+          const bool seen = std::any_of(found.begin(), found.end(), [&](const auto& g) {
+            return (Eigen::Vector3d(g[0], g[1], g[2]) - c).norm() < 1e-7;
+          });
+          if (empty && !seen && granpipe::pores::in_box(inside, c))
+            found.push_back({c[0], c[1], c[2], t->radius});
+        }
+      }
+  }
+  std::vector<double> radii;
+  for (const auto& g : found) radii.push_back(g[3]);
+  std::sort(radii.begin(), radii.end());
+  return radii;
+}
+
+// The Delaunay cells of the centres miss some vertices of the weighted diagram where radii
+// differ much and gaps are wide; the search around the cells whose tangent sphere overlaps
+// a fifth sphere finds them: the pores are then every vertex, as a brute force finds them.
+// Loose packings (packing fraction about 0.15): periodic, of radii 0.5 to 1 and of radii
+// 0.4 and 1.2; and walled, in a region 3 from the walls.
+TEST(PoresUnequal, PoresAreEveryVertexOfTheWeightedVoronoiDiagram) {
+  const Loose walled{.n = 150, .side = 12.0, .seed = 5, .periodic = false};
+  const std::vector<Loose> packings{
+      {.seed = 17},
+      {.seed = 18},
+      {.seed = 19},
+      walled,
+      {.n = 40, .seed = 3, .small = 0.4, .large = 1.2, .two_sizes = true},
+      {.n = 40, .seed = 4, .small = 0.4, .large = 1.2, .two_sizes = true}};
+  for (const Loose& p : packings) {
+    const Frame f = loose_packing(p);
+    granpipe::Region inside;
+    const double margin = p.periodic ? 0.0 : 3.0;
+    inside.lo.setConstant(margin);
+    inside.hi.setConstant(p.side - margin);
+    const PoreMeasurement m = p.periodic ? measure_pores(f, std::nullopt, 1e-9, "test")
+                                         : measure_pores(f, inside, 1e-9, "test");
+    const double mean = f.radius().mean();
+    std::vector<double> measured;
+    for (double xi : m.xi) measured.push_back(xi * mean);
+    std::sort(measured.begin(), measured.end());
+    const double largest = 3.0;  // the brute force's reach; every pore here is smaller
+    ASSERT_LT(measured.back(), largest) << "seed " << p.seed;
+    EXPECT_GT(m.apollonius_vertices, 0) << "the packing has vertices no cell gives";
+    const std::vector<double> brute = weighted_voronoi_vertices(f, largest, inside);
+    std::fprintf(stderr, "seed %u: %zu pores, %ld found by the search, brute force %zu\n", p.seed,
+                 measured.size(), m.apollonius_vertices, brute.size());
+    ASSERT_EQ(measured.size(), brute.size()) << "seed " << p.seed;
+    for (std::size_t k = 0; k < brute.size(); ++k) EXPECT_NEAR(measured[k], brute[k], 1e-9);
+  }
 }
 
 }  // namespace

@@ -1,0 +1,33 @@
+#pragma once
+// Spheres binned on a uniform grid, for the question a candidate pore asks: which spheres
+// does a sphere of any size overlap? (The core's cell list answers within one fixed cutoff;
+// a pore in a loose packing can be wider than any cutoff chosen beforehand.)
+#include <Eigen/Core>
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace granpipe::pores {
+
+class SphereGrid {
+ public:
+  // Cells of side `cell`; the centres may lie anywhere (periodic images beyond the box).
+  SphereGrid(const std::vector<Eigen::Vector3d>& centres, std::vector<double> radii, double cell);
+
+  // The spheres that the sphere (centre, radius) overlaps by more than `length`.
+  std::vector<std::uint32_t> overlapping(const Eigen::Vector3d& centre, double radius,
+                                         double length) const;
+
+ private:
+  std::array<int, 3> cell_of(const Eigen::Vector3d& x) const;
+  std::size_t index(const std::array<int, 3>& c) const;
+
+  const std::vector<Eigen::Vector3d>& centres_;
+  std::vector<double> radii_;
+  double cell_, largest_radius_ = 0.0;
+  Eigen::Vector3d lo_;
+  std::array<int, 3> n_{1, 1, 1};
+  std::vector<std::uint32_t> start_, order_;  // the spheres of cell k: order_[start_[k]..]
+};
+
+}  // namespace granpipe::pores
