@@ -49,11 +49,20 @@ void ThreadGovernor::resume(double now) {
 
 void ThreadGovernor::decide(double other_per_step, double now) {
   if (other_per_step < kMargin * chosen_per_step_) {
+    // Two windows in a row must say so: a busy machine's windows are noisy (a thread that
+    // lost its core for a time slice, or a competitor that paused), and a wrong switch
+    // costs the whole wait before the next probe.
+    if (!other_won_once_) {
+      other_won_once_ = true;
+      start(Phase::TimingChosen, chosen_, now);
+      return;
+    }
     chosen_ = current_;
     wait_ = kFirstWait;
   } else {
     wait_ = std::min(2.0 * wait_, kLongestWait);
   }
+  other_won_once_ = false;
   start(Phase::Running, chosen_, now);
 }
 

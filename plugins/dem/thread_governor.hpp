@@ -7,10 +7,10 @@
 // any step and only the speed depends on it.
 //
 // The governor runs on the count it chose, and now and then times a short window on it
-// and one on the other count (1 when it runs on all, all when it runs on 1); the faster by
-// a clear margin wins. A probe that confirms the choice doubles the wait before the next,
-// up to kLongestWait, so that a quiet machine pays for few probes and a load that comes
-// or goes is noticed within it.
+// and one on the other count (1 when it runs on all, all when it runs on 1); the other
+// count wins when it is faster by a clear margin in two probes in a row. A probe that confirms the
+// choice doubles the wait before the next, up to kLongestWait, so that a quiet machine pays for few
+// probes and a load that comes or goes is noticed within it.
 namespace granpipe::dem {
 
 class ThreadGovernor {
@@ -47,6 +47,7 @@ class ThreadGovernor {
   long phase_steps_ = 0;
   double wait_ = kFirstWait;
   double chosen_per_step_ = 0.0;
+  bool other_won_once_ = false;  // the last probe's other count was faster: probe again
 };
 
 }  // namespace granpipe::dem
