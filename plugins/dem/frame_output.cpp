@@ -18,10 +18,11 @@ bool touches(const Particles& p, int a, int b) {
   return !((p.x.col(a) - p.x.col(b)).squaredNorm() >= contact * contact);
 }
 
-// Whether particle a touches the wall of `slot`, and how deep.
-bool touches_wall(const Engine& e, int slot, int a, double& overlap, Vec3& n) {
+// Whether particle a touches the wall of `slot` (the walls moved by `offset`), and how deep.
+bool touches_wall(const Engine& e, const Eigen::Vector3d& offset, int slot, int a, double& overlap,
+                  Vec3& n) {
   const Particles& p = e.particles();
-  overlap = e.walls().overlap(slot, p.x.col(a), p.radius[a], e.wall_offset(), n);
+  overlap = e.walls().overlap(slot, p.x.col(a), p.radius[a], offset, n);
   return !(overlap <= 0.0);
 }
 
@@ -35,7 +36,7 @@ struct ContactKey {
   std::int32_t slot;  // -1 for a pair
 };
 
-std::vector<ContactKey> contact_keys(const Engine& e) {
+std::vector<ContactKey> contact_keys(const Engine& e, const Eigen::Vector3d& offset) {
   const Particles& p = e.particles();
   const NeighborList& list = e.neighbors();
   std::vector<ContactKey> keys;
@@ -58,7 +59,7 @@ std::vector<ContactKey> contact_keys(const Engine& e) {
       for (int a = 0; a < p.size(); ++a) {
         double overlap;
         Vec3 n;
-        if (touches_wall(e, slot, a, overlap, n)) add({p.tag[a], wall, a, slot});
+        if (touches_wall(e, offset, slot, a, overlap, n)) add({p.tag[a], wall, a, slot});
       }
     }
     if (pass == 0) keys.reserve(count);
@@ -95,11 +96,11 @@ ContactRow pair_row(const Engine& e, std::int32_t k) {
           point};
 }
 
-ContactRow wall_row(const Engine& e, std::int32_t a, int slot) {
+ContactRow wall_row(const Engine& e, const Eigen::Vector3d& offset, std::int32_t a, int slot) {
   const Particles& p = e.particles();
   double overlap;
   Vec3 n;
-  touches_wall(e, slot, a, overlap, n);
+  touches_wall(e, offset, slot, a, overlap, n);
   const Vec3 point = p.x.col(a) - (p.radius[a] - 0.5 * overlap) * n;
   return {p.tag[a],
           partner::wall(e.walls().wall_of_slot(slot)),
@@ -110,12 +111,13 @@ ContactRow wall_row(const Engine& e, std::int32_t a, int slot) {
 }
 
 void fill_contacts(const Engine& e, Frame& frame) {
-  const std::vector<ContactKey> keys = contact_keys(e);
+  const Eigen::Vector3d offset = e.wall_offset();  // the drive's, once for every wall test
+  const std::vector<ContactKey> keys = contact_keys(e, offset);
   ContactTableWriter table(frame, static_cast<Eigen::Index>(keys.size()), true);
   for (std::size_t r = 0; r < keys.size(); ++r) {
     const ContactKey& key = keys[r];
     table.set(static_cast<Eigen::Index>(r),
-              key.slot < 0 ? pair_row(e, key.from) : wall_row(e, key.from, key.slot));
+              key.slot < 0 ? pair_row(e, key.from) : wall_row(e, offset, key.from, key.slot));
   }
 }
 
