@@ -36,34 +36,35 @@ struct ContactKey {
   std::int32_t slot;  // -1 for a pair
 };
 
-std::vector<ContactKey> contact_keys(const Engine& e, const Eigen::Vector3d& offset) {
+// Calls visit(key) for every contact, pairs by owner, then walls by slot.
+template <class Visit>
+void for_each_contact(const Engine& e, const Eigen::Vector3d& offset, Visit visit) {
   const Particles& p = e.particles();
   const NeighborList& list = e.neighbors();
-  std::vector<ContactKey> keys;
-  for (int pass = 0; pass < 2; ++pass) {  // count, then gather into exactly that room
-    std::size_t count = 0;
-    const auto add = [&](const ContactKey& key) {
-      if (pass == 1) keys.push_back(key);
-      ++count;
-    };
-    for (int a = 0; a < p.size(); ++a) {
-      for (std::int32_t k = list.first[a]; k < list.first[a + 1]; ++k) {
-        const int b = list.partner[k];
-        if (touches(p, a, b)) {
-          add({std::min(p.tag[a], p.tag[b]), std::max(p.tag[a], p.tag[b]), k, -1});
-        }
-      }
+  for (int a = 0; a < p.size(); ++a) {
+    for (std::int32_t k = list.first[a]; k < list.first[a + 1]; ++k) {
+      const int b = list.partner[k];
+      if (touches(p, a, b))
+        visit({std::min(p.tag[a], p.tag[b]), std::max(p.tag[a], p.tag[b]), k, -1});
     }
-    for (int slot = 0; slot < e.walls().count(); ++slot) {
-      const std::int64_t wall = partner::wall(e.walls().wall_of_slot(slot));
-      for (int a = 0; a < p.size(); ++a) {
-        double overlap;
-        Vec3 n;
-        if (touches_wall(e, offset, slot, a, overlap, n)) add({p.tag[a], wall, a, slot});
-      }
-    }
-    if (pass == 0) keys.reserve(count);
   }
+  for (int slot = 0; slot < e.walls().count(); ++slot) {
+    const std::int64_t wall = partner::wall(e.walls().wall_of_slot(slot));
+    for (int a = 0; a < p.size(); ++a) {
+      double overlap;
+      Vec3 n;
+      if (touches_wall(e, offset, slot, a, overlap, n)) visit({p.tag[a], wall, a, slot});
+    }
+  }
+}
+
+// The contacts' keys by rows, counted first so that the keys take exactly their room.
+std::vector<ContactKey> contact_keys(const Engine& e, const Eigen::Vector3d& offset) {
+  std::size_t count = 0;
+  for_each_contact(e, offset, [&](const ContactKey&) { ++count; });
+  std::vector<ContactKey> keys;
+  keys.reserve(count);
+  for_each_contact(e, offset, [&](const ContactKey& key) { keys.push_back(key); });
   std::sort(keys.begin(), keys.end(), [](const ContactKey& x, const ContactKey& y) {
     return x.i != y.i ? x.i < y.i : x.j < y.j;
   });
