@@ -1,0 +1,106 @@
+#!/usr/bin/env python3
+"""The steady states of the 3D tapping paper's Figs. 3 and 4 at one epsilon per run, as one
+table: for each analysed run (stereology and compaction over a constant-epsilon run of
+tap3d_steady_states.json or tap3d_compaction.json, or its parts joined by the h5md source's
+continued_in), <Phi^c> at the last tap and over windows of taps, Phi_b's and <Z>'s steady state
+and sigma_<Z>, the spectrum slope of <Z>.
+
+    scripts/tap3d_steady_table.py OUT.csv RUN_DIR[=EPSILON] ...
+
+EPSILON is read from the run's pipeline (source.params.epsilon) when not given; a run
+analysed from saved frames (the h5md source) has none, so give it there. Windows of 1000 taps
+from tap 1000 on, as many as the last tap allows (the paper averages the last 1000 of 4000).
+"""
+import math
+import os
+import sys
+
+from input_error import read_pipeline, refuse
+from result_csv import read_table
+
+WINDOW = 1000  # taps
+
+
+def scalars(run, analyzer):
+    """{name: (value, uncertainty)} of <analyzer>.scalars.csv."""
+    path = os.path.join(run, f"{analyzer}.scalars.csv")
+    with_names = [line for line in open_lines(path) if not line.startswith("#")]
+    table = {}
+    for line in with_names[1:]:
+        name, value, uncertainty, _ = (line.rstrip("\n").split(",") + [""] * 4)[:4]
+        table[name] = (float(value), float(uncertainty))
+    return table
+
+
+def open_lines(path):
+    try:
+        with open(path) as f:
+            return f.readlines()
+    except OSError as e:
+        refuse(f"{path}: expected a granpipe scalars table, found none: {e.strerror}")
+
+
+def epsilon_of(run, given):
+    if given:
+        try:
+            return float(given)
+        except ValueError:
+            refuse(f"{run}={given}: expected a number after '=', found {given!r}")
+    eps = read_pipeline(run).get("source", {}).get("params", {}).get("epsilon")
+    if eps is None:
+        refuse(f"{run}/pipeline.json: expected source.params.epsilon, found none "
+               "(a run analysed from saved frames: give it as RUN_DIR=EPSILON)")
+    return float(eps)
+
+
+def window_means(run):
+    """<Phi^c> over [1000, 2000), [2000, 3000), ... up to the last tap, and the last tap's."""
+    path = os.path.join(run, "stereology.per_frame.csv")
+    _, header, rows = read_table(path)
+    for name in ("tap", "phi_c"):
+        if name not in header:
+            refuse(f"{path}: expected a column {name}, found {header[:4]}...")
+    tap, phi = header.index("tap"), header.index("phi_c")
+    last = max(r[tap] for r in rows)
+    means = []
+    for start in range(WINDOW, int(last), WINDOW):
+        inside = [r[phi] for r in rows if start <= r[tap] < start + WINDOW]
+        means.append(sum(inside) / len(inside) if inside else math.nan)
+    last_phi = next(r[phi] for r in rows if r[tap] == last)
+    return int(last), last_phi, means
+
+
+def row_of(argument):
+    run, _, given = argument.partition("=")
+    eps = epsilon_of(run, given)
+    last, phi_last, means = window_means(run)
+    c = scalars(run, "compaction")
+    for name in ("phi_b_ss", "z_mean_sigma", "spectrum_slope_z_mean"):
+        if name not in c:
+            refuse(f"{run}/compaction.scalars.csv: expected {name}, found none")
+    return {"epsilon": eps, "sqrt_epsilon": math.sqrt(eps), "last_tap": last,
+            "phi_c_last": phi_last,
+            **{f"phi_c_taps_{(k + 1) * WINDOW}_{(k + 2) * WINDOW}": m for k, m in enumerate(means)},
+            "phi_b_ss": c["phi_b_ss"][0], "phi_b_ss_err": c["phi_b_ss"][1],
+            "z_mean_sigma": c["z_mean_sigma"][0],
+            "spectrum_slope_z_mean": c["spectrum_slope_z_mean"][0],
+            "spectrum_slope_z_mean_err": c["spectrum_slope_z_mean"][1]}
+
+
+def main(out, runs):
+    rows = sorted((row_of(a) for a in runs), key=lambda r: r["epsilon"])
+    header = []
+    for r in rows:
+        header += [k for k in r if k not in header]
+    with open(out, "w") as f:
+        f.write("# written by scripts/tap3d_steady_table.py " + " ".join(runs) + "\n")
+        f.write(",".join(header) + "\n")
+        for r in rows:
+            f.write(",".join(f"{r.get(k, math.nan):.6g}" for k in header) + "\n")
+    print(f"{out}: {len(rows)} rows")
+
+
+if __name__ == "__main__":
+    if len(sys.argv) < 3:
+        refuse("usage: tap3d_steady_table.py OUT.csv RUN_DIR[=EPSILON] ...")
+    main(sys.argv[1], sys.argv[2:])

@@ -1,0 +1,79 @@
+"""scripts/tap3d_steady_table.py and plot_tap3d_steady.py on two made-up analysed runs: the
+windows' means of <Phi^c> are those of the rows made (exact), epsilon comes from the pipeline
+or from RUN=EPSILON, a run without either is refused in one line, and the three figures are
+drawn (one series per run in the spectra, gid series-<k>)."""
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import xml.etree.ElementTree as ET
+
+table_script, plot_script = sys.argv[1], sys.argv[2]
+failures = []
+
+
+def make_run(folder, epsilon, slope, sigma):
+    """Taps 0..3000 every 10 with phi_c = 0.6 + slope * tap; the scalars the table reads."""
+    os.makedirs(folder)
+    params = {"epsilon": epsilon} if epsilon is not None else {"file": "frames.h5"}
+    with open(os.path.join(folder, "pipeline.json"), "w") as f:
+        json.dump({"name": "made", "source": {"plugin": "x", "params": params}}, f)
+    with open(os.path.join(folder, "stereology.per_frame.csv"), "w") as f:
+        f.write("# granpipe test\nframe,tap,phi_c\n")
+        for k, tap in enumerate(range(0, 3001, 10)):
+            f.write(f"{k},{tap},{0.6 + slope * tap!r}\n")
+    with open(os.path.join(folder, "compaction.scalars.csv"), "w") as f:
+        f.write("name,value,uncertainty,unit\n")
+        f.write("phi_b_ss,0.59,0.001,\n")
+        f.write(f"z_mean_sigma,{sigma},nan,R\n")
+        f.write("spectrum_slope_z_mean,-1.2,0.1,\n")
+    with open(os.path.join(folder, "compaction.spectrum.csv"), "w") as f:
+        f.write("frequency,z_mean,phi_b,phi_c\n0.01,1.0,1,1\n0.02,0.25,1,1\n")
+
+
+def rows_of(path):
+    lines = [line.strip().split(",") for line in open(path) if not line.startswith("#")]
+    return [dict(zip(lines[0], map(float, r))) for r in lines[1:]]
+
+
+with tempfile.TemporaryDirectory() as work:
+    a, b, c = (os.path.join(work, n) for n in ("a", "b", "c"))
+    make_run(a, 0.04, 1e-6, 0.03)
+    make_run(b, None, 2e-6, 0.05)
+    make_run(c, None, 0.0, 0.05)
+    out = os.path.join(work, "table.csv")
+    r = subprocess.run([sys.executable, table_script, out, a, b + "=0.09"], capture_output=True, text=True)
+    if r.returncode != 0:
+        failures.append(f"table: {r.returncode} {r.stderr}")
+    else:
+        rows = rows_of(out)
+        # Taps 1000..1990 every 10: mean tap 1495; 2000..2990: 2495; the last tap 3000.
+        expected = [(0.04, 1e-6), (0.09, 2e-6)]
+        for row, (eps, slope) in zip(rows, expected):
+            want = {"epsilon": eps, "phi_c_taps_1000_2000": 0.6 + slope * 1495,
+                    "phi_c_taps_2000_3000": 0.6 + slope * 2495, "phi_c_last": 0.6 + slope * 3000,
+                    "last_tap": 3000, "z_mean_sigma": 0.03 if eps == 0.04 else 0.05}
+            for name, value in want.items():
+                if abs(row.get(name, float("nan")) - value) > 1e-6 * abs(value):
+                    failures.append(f"epsilon {eps}: {name} {row.get(name)} against {value}")
+        if len(rows) != 2 or "phi_c_taps_3000_4000" in rows[0]:
+            failures.append(f"rows {rows}")
+    r = subprocess.run([sys.executable, table_script, out, c], capture_output=True, text=True)
+    if r.returncode != 2 or not r.stderr.startswith(f"{c}/pipeline.json: expected source.params.epsilon"):
+        failures.append(f"no epsilon: {r.returncode} {r.stderr}")
+    prefix = os.path.join(work, "fig")
+    r = subprocess.run([sys.executable, plot_script, out, prefix, a + "=first", b + "=second"],
+                       capture_output=True, text=True)
+    if r.returncode != 0:
+        failures.append(f"plot: {r.returncode} {r.stderr}")
+    else:
+        for kind, series in (("phi_c", 2), ("sigma", 2), ("spectra", 2)):
+            root = ET.parse(f"{prefix}_{kind}.svg").getroot()
+            drawn = {g.get("id") for g in root.iter() if g.get("id", "").startswith("series-")}
+            if len(drawn) != series:
+                failures.append(f"{kind}: series {sorted(drawn)}")
+if failures:
+    print("FAIL", *failures, sep="\n")
+    sys.exit(1)
+print("tap3d_steady_table: windows exact, epsilon from the pipeline or the argument, refusal; three figures")
