@@ -86,7 +86,9 @@ Settings settings_of(const PluginContext& ctx) {
   s.air_damping = p.real("air_damping");
   s.threads = ctx.threads;
   s.adapt_threads = p.boolean("adapt_threads");
-  s.instruction_set = p.choice<InstructionSet>("instruction_set");
+  // Resolved here, so that a path this processor lacks is refused naming the parameter.
+  s.instruction_set =
+      resolve(p.choice<InstructionSet>("instruction_set"), ctx.param("instruction_set"));
   return s;
 }
 

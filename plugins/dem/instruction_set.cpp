@@ -102,8 +102,11 @@ const char* label_of(InstructionSet set) {
 bool runs_here(InstructionSet set) { return compiled(set) && processor_runs(set); }
 
 InstructionSet resolve(InstructionSet requested, const std::string& what) {
+  // Read (and a bad value refused) whatever the request: a mistyped variable left in the
+  // environment would otherwise pass unnoticed while the runs name their paths.
+  const InstructionSet environment = named_in_environment();
   if (requested == InstructionSet::Auto) {
-    requested = named_in_environment();
+    requested = environment;
     if (requested != InstructionSet::Auto)
       return resolve(requested, "GRANPIPE_DEM_INSTRUCTION_SET");
     InstructionSet widest = InstructionSet::Baseline;

@@ -21,7 +21,8 @@ bool runs_here(InstructionSet set);
 
 // The path a run takes: an explicit request as it is (InputError, naming `what`, when it
 // cannot run here); Auto the one GRANPIPE_DEM_INSTRUCTION_SET names, if set (how tests and
-// benchmarks force a path without editing pipelines), else the widest that runs here.
+// benchmarks force a path without editing pipelines), else the widest that runs here. A
+// value of GRANPIPE_DEM_INSTRUCTION_SET that names no path is refused whatever `requested`.
 InstructionSet resolve(InstructionSet requested, const std::string& what);
 
 }  // namespace granpipe::dem

@@ -5,9 +5,11 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <functional>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -227,6 +229,70 @@ TEST(DemSource, ASphereDroppedOntoTheBaseIsNoBlowUp) {
   // within 0.02 of the bounce.
   const double e = dem::linear_restitution(2e5, 42.398, 1.91 * std::numbers::pi / 6.0);
   EXPECT_NEAR(rebound, e * std::sqrt(20.0), 0.03);
+  fs::remove(file);
+}
+
+// GRANPIPE_DEM_INSTRUCTION_SET set to `value` (unset when null) while it lives, as before after.
+class InstructionSetVariable {
+ public:
+  explicit InstructionSetVariable(const char* value) {
+    if (const char* old = std::getenv(kName)) old_ = old;
+    if (value) {
+      ::setenv(kName, value, 1);
+    } else {
+      ::unsetenv(kName);
+    }
+  }
+  ~InstructionSetVariable() {
+    if (old_) {
+      ::setenv(kName, old_->c_str(), 1);
+    } else {
+      ::unsetenv(kName);
+    }
+  }
+  InstructionSetVariable(const InstructionSetVariable&) = delete;
+  InstructionSetVariable& operator=(const InstructionSetVariable&) = delete;
+
+ private:
+  static constexpr const char* kName = "GRANPIPE_DEM_INSTRUCTION_SET";
+  std::optional<std::string> old_;
+};
+
+TEST(DemSource, AnInstructionSetThisProcessorLacksIsRefusedNamingTheParameter) {
+  const fs::path file = start_file();
+  const InstructionSetVariable unset(nullptr);
+  for (const auto path : {dem::InstructionSet::Avx2, dem::InstructionSet::Avx512}) {
+    if (dem::runs_here(path)) continue;
+    EXPECT_EQ(refusal({{"initial_file", file.string()}, {"instruction_set", dem::name_of(path)}}),
+              std::string("params.instruction_set: expected an instruction set this processor "
+                          "runs, found \"") +
+                  dem::name_of(path) + "\" (" + dem::label_of(path) +
+                  " is missing here; \"auto\" takes the widest it has)");
+  }
+  fs::remove(file);
+}
+
+TEST(DemSource, AMistypedInstructionSetVariableIsRefusedEvenBesideAnExplicitParameter) {
+  const fs::path file = start_file();
+  for (const char* value : {"AVX2", "garbage", "3"}) {
+    const InstructionSetVariable set(value);
+    for (const char* param : {"auto", "baseline"}) {
+      EXPECT_EQ(refusal({{"initial_file", file.string()}, {"instruction_set", param}}),
+                std::string("GRANPIPE_DEM_INSTRUCTION_SET: expected one of auto, baseline, avx2, "
+                            "avx512, found \"") +
+                    value + "\"")
+          << param;
+    }
+  }
+  {
+    // Empty is unset; a valid value gives way to an explicit parameter.
+    const InstructionSetVariable empty("");
+    EXPECT_EQ(refusal({{"initial_file", file.string()}, {"instruction_set", "baseline"}}),
+              "no refusal");
+  }
+  const InstructionSetVariable widest("avx512");
+  EXPECT_EQ(refusal({{"initial_file", file.string()}, {"instruction_set", "baseline"}}),
+            "no refusal");
   fs::remove(file);
 }
 
