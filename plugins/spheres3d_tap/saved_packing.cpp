@@ -72,7 +72,14 @@ void check_overlaps(const std::string& where, const std::vector<Eigen::Vector3d>
 
 SavedPacking read_saved_packing(const std::string& where, const std::string& file, long frame,
                                 const TapBox& box, long n) {
-  const FrameReader reader(file, "", box.radius);
+  // The reader's refusals (not HDF5, not H5MD, corrupt) name the file; the parameter too.
+  const FrameReader reader = [&] {
+    try {
+      return FrameReader(file, "", box.radius);
+    } catch (const InputError& e) {
+      throw InputError(where + ": " + e.what());
+    }
+  }();
   const long frames = reader.frames();
   if (frame >= frames || frames == 0) {
     throw InputError(where + ": expected a frame index below " + std::to_string(frames) + " (" +
@@ -98,7 +105,7 @@ SavedPacking read_saved_packing(const std::string& where, const std::string& fil
   for (long k = 0; k < n; ++k) x[static_cast<std::size_t>(k)] = f.position().row(k).transpose();
   check_inside(at, x, box);
   check_overlaps(at, x, box);
-  return {x, f.step};
+  return {x, f.step, f.integer_observable("tap"), at};
 }
 
 }  // namespace granpipe::spheres3d_tap

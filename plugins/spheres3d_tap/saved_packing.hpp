@@ -3,6 +3,7 @@
 // this source, or another tool's spheres), checked against the box the pipeline asks for.
 #include <Eigen/Core>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,7 +13,9 @@ namespace granpipe::spheres3d_tap {
 
 struct SavedPacking {
   std::vector<Eigen::Vector3d> centres;
-  std::int64_t step = 0;  // the frame's step: its tap, in a file of this source
+  std::int64_t step = 0;            // the frame's step: its tap, in a file of this source
+  std::optional<std::int64_t> tap;  // its tap observable (a file of this source has one)
+  std::string at;                   // "<where>: <file>, frame <k>", for messages
 };
 
 // The centres of frame `frame` (-1: the last) of `file`. Throws InputError naming

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "granpipe/container.hpp"
+#include "granpipe/errors.hpp"
 #include "saved_packing.hpp"
 
 namespace granpipe::spheres3d_tap {
@@ -180,7 +181,20 @@ TapSource::TapSource(const PluginContext& ctx)
       per_tap_(ctx.stream_table(
           "per_tap", Table({"tap", "epsilon", "leg", "mean_height", "mc_trials", "mc_acceptance"},
                            "every tap: its epsilon and ramp leg, <Z> after "
-                           "redeposition, trial moves, accepted fraction"))) {}
+                           "redeposition, trial moves, accepted fraction"))) {
+  // Without a file they would change nothing: a start meant to continue a run would
+  // silently begin a new one.
+  if (initial_file_.empty() && initial_frame_ != -1) {
+    throw InputError(ctx.param("initial_frame") +
+                     ": expected it only with initial_file (a frame of that file), got " +
+                     std::to_string(initial_frame_) + " without one");
+  }
+  if (initial_file_.empty() && continue_count_) {
+    throw InputError(ctx.param("continue_count") +
+                     ": expected it only with initial_file (counting on from a saved frame's "
+                     "tap), got true without one");
+  }
+}
 
 FrameContent TapSource::content() const {
   return {.dim = 3,
@@ -194,6 +208,7 @@ void TapSource::start() {
                                             static_cast<long>(n_));
     centres_ = std::move(saved.centres);
     if (continue_count_) {
+      check_saved_tap(saved);
       tap_ = saved.step;
       progress_.skip(static_cast<double>(tap_));
       // A stream of its own for each start, so that a continuation does not replay the
@@ -205,6 +220,28 @@ void TapSource::start() {
   Deposition deposition(box_);
   deposition.drop_random(static_cast<int>(n_), deposition_rng_);
   centres_ = deposition.centres();
+}
+
+// The tap to count on from: a frame this source saved, whose tap is its step, before the
+// last tap (a later one would leave nothing to do, a negative one count through 0 again).
+void TapSource::check_saved_tap(const SavedPacking& saved) const {
+  if (!saved.tap) {
+    throw InputError(saved.at +
+                     ": expected a frame with a tap observable (a frames.h5 of spheres3d_tap) "
+                     "for continue_count to count on from, got none (step " +
+                     std::to_string(saved.step) + ")");
+  }
+  if (*saved.tap != saved.step) {
+    throw InputError(saved.at +
+                     ": expected the step equal to the tap for continue_count, got tap " +
+                     std::to_string(*saved.tap) + " at step " + std::to_string(saved.step));
+  }
+  const std::int64_t last = protocol_.taps();
+  if (saved.step < 0 || saved.step >= last) {
+    throw InputError(saved.at + ": expected a saved tap from 0 to " + std::to_string(last - 1) +
+                     " for continue_count (the run counts to tap " + std::to_string(last) +
+                     "), got tap " + std::to_string(saved.step));
+  }
 }
 
 void TapSource::to_frame(Frame& frame, const TapStats& stats, const EpsilonAt& e) const {

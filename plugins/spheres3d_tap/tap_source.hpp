@@ -16,6 +16,8 @@
 
 namespace granpipe::spheres3d_tap {
 
+struct SavedPacking;
+
 Schema schema();
 
 class TapSource : public Source {
@@ -29,6 +31,7 @@ class TapSource : public Source {
 
  private:
   void start();
+  void check_saved_tap(const SavedPacking& saved) const;
   void to_frame(Frame& frame, const TapStats& stats, const EpsilonAt& e) const;
   void record(const TapStats& stats, const EpsilonAt& e);
 
