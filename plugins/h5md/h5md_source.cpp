@@ -66,7 +66,8 @@ H5mdSource::H5mdSource(const PluginContext& ctx)
     : parts_(part_files(ctx), part_names(ctx), ctx.params.string("group"),
              ctx.params.real("radius")),
       max_overlap_(ctx.params.real("max_overlap")),
-      max_overlap_param_(ctx.param("max_overlap")) {
+      max_overlap_param_(ctx.param("max_overlap")),
+      continued_param_(ctx.param("continued_in")) {
   const FrameFileInfo& info = parts_.first_info();
   const long frames = parts_.frames();
   const std::string held = " (" + info.path + held_by_parts(parts_) +
@@ -113,9 +114,25 @@ bool H5mdSource::next(Frame& frame) {
   } else {
     frame = read_checked(next_);
   }
+  check_step_rises(frame, next_);
   next_ += selection_.stride;
   ++read_;
   return true;
+}
+
+// A part whose frames go back or repeat a step (a copy of an earlier part's frames, or a
+// session started from a frame other than its first) would count taps twice in every
+// analysis of the joined run.
+void H5mdSource::check_step_rises(const Frame& frame, long index) {
+  if (parts_.parts().size() < 2) return;
+  if (last_step_ && frame.step <= *last_step_) {
+    throw InputError(continued_param_ + ": " + parts_.where(index) + ": expected a step above " +
+                     std::to_string(*last_step_) + " (" + parts_.where(last_index_) +
+                     ", the frame read before it: the parts are one run, steps rising), got " +
+                     std::to_string(frame.step));
+  }
+  last_step_ = frame.step;
+  last_index_ = index;
 }
 
 void H5mdSource::check_overlaps(const Frame& frame, const std::string& where) const {

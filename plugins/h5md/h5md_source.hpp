@@ -3,7 +3,9 @@
 // simulating again. Reads granpipe's own frames.h5 bit for bit, and other tools' H5MD
 // files (positions and the box; radii from the `radius` parameter). A run split over
 // sessions is read from its parts as one.
+#include <cstdint>
 #include <optional>
+#include <string>
 
 #include "granpipe/frame_selection.hpp"
 #include "granpipe/frame_store.hpp"
@@ -28,12 +30,17 @@ class H5mdSource : public Source {
   // with the pair and the size of the overlap, unless max_overlap allows it.
   void check_overlaps(const Frame& frame, const std::string& where) const;
   Frame read_checked(long index) const;
+  void check_step_rises(const Frame& frame, long index);
   RunParts parts_;
   FrameSelection selection_;
   long next_ = 0, read_ = 0;
   double max_overlap_;
   std::string max_overlap_param_;  // its path in the pipeline, for the message
   std::optional<Frame> first_frame_;
+  // The parts of a continued run must read with steps rising: the last frame read.
+  std::string continued_param_;
+  std::optional<std::int64_t> last_step_;
+  long last_index_ = -1;
 };
 
 }  // namespace granpipe::h5md

@@ -1,6 +1,8 @@
 #include "run_parts.hpp"
 
+#include <filesystem>
 #include <optional>
+#include <system_error>
 
 #include "granpipe/errors.hpp"
 
@@ -30,12 +32,35 @@ void require_same_content(const FrameFileInfo& first, const FrameFileInfo& later
   }
 }
 
+// A part named twice would pass as its own continuation (its first frame is one it holds)
+// and read as one part: the slip of a copied path, refused.
+void require_other_file(const std::vector<std::string>& files,
+                        const std::vector<std::string>& names, std::size_t k) {
+  for (std::size_t j = 0; j < k; ++j) {
+    std::error_code error;
+    if (files[j] == files[k] || std::filesystem::equivalent(files[j], files[k], error)) {
+      throw InputError(names[k] + ": expected a later part of the run, got " + files[k] +
+                       ", the file " + names[j] + " names");
+    }
+  }
+}
+
 }  // namespace
 
 RunParts::RunParts(const std::vector<std::string>& files, const std::vector<std::string>& names,
                    const std::string& group, double default_radius) {
   for (std::size_t k = 0; k < files.size(); ++k) {
-    parts_.push_back(std::make_unique<FrameReader>(files[k], group, default_radius));
+    if (k == 0) {
+      parts_.push_back(std::make_unique<FrameReader>(files[k], group, default_radius));
+    } else {
+      require_other_file(files, names, k);
+      // The reader's refusals (not HDF5, not H5MD) name the file; the parameter too.
+      try {
+        parts_.push_back(std::make_unique<FrameReader>(files[k], group, default_radius));
+      } catch (const InputError& e) {
+        throw InputError(names[k] + ": " + e.what());
+      }
+    }
     if (k) require_same_content(first_info(), parts_[k]->info(), names[k]);
     append(k, names[k]);
   }

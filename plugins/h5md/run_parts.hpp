@@ -20,7 +20,9 @@ class RunParts {
  public:
   // `files[0]` is the first part; `names[k]` says where the pipeline names `files[k]`, for
   // messages. InputError when a part is not a continuation of the one before it: other
-  // particles or columns, no frame at the step it starts from, or another packing there.
+  // particles or columns, no frame at the step it starts from, or another packing there; or
+  // when it is a file named before it. (That steps rise within a part is checked as frames
+  // are read: H5mdSource.)
   RunParts(const std::vector<std::string>& files, const std::vector<std::string>& names,
            const std::string& group, double default_radius);
 

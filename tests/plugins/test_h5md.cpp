@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
 #include <limits>
 
 #include "granpipe/frame_store.hpp"
@@ -230,9 +231,17 @@ class RunPartsTest : public H5mdSourceTest {
   // `part` in every entry, so that a frame says which part it was read from.
   fs::path write_part(const std::string& name, long first, long last, double part,
                       Eigen::Index particles = 3) {
+    std::vector<long> ks;
+    for (long k = first; k <= last; ++k) ks.push_back(k);
+    return write_frames(name, ks, part, particles);
+  }
+
+  // Frames k of `ks` in that order, made as write_part makes them.
+  fs::path write_frames(const std::string& name, const std::vector<long>& ks, double part,
+                        Eigen::Index particles = 3) {
     const fs::path p = dir_ / name;
     FrameWriter w(p, "{}");
-    for (long k = first; k <= last; ++k) {
+    for (long k : ks) {
       Frame f;
       f.resize(particles, 2);
       for (Eigen::Index i = 0; i < particles; ++i) f.position()(i, 0) = static_cast<double>(k + i);
@@ -322,6 +331,42 @@ TEST_F(RunPartsTest, OtherParticlesAreRefused) {
   EXPECT_EQ(error_of([&] { return joined(a, {b}); }),
             "params.continued_in[0]: " + b.string() + ": expected frames of 3 particles in 2D as " +
                 a.string() + " holds, got 4 in 2D");
+}
+
+TEST_F(RunPartsTest, AFileNamedTwiceIsRefused) {
+  const fs::path a = write_part("a.h5", 0, 2, 1), b = write_part("b.h5", 2, 4, 2);
+  EXPECT_EQ(error_of([&] { return joined(a, {a}); }),
+            "params.continued_in[0]: expected a later part of the run, got " + a.string() +
+                ", the file params.file names");
+  const fs::path b_again = dir_ / "." / "b.h5";  // another spelling of the same file
+  EXPECT_EQ(error_of([&] {
+              return joined(a, {b, b_again});
+            }),
+            "params.continued_in[1]: expected a later part of the run, got " + b_again.string() +
+                ", the file params.continued_in[0] names");
+}
+
+TEST_F(RunPartsTest, APartThatIsNoFramesFileIsRefusedNamingIt) {
+  const fs::path a = write_part("a.h5", 0, 2, 1), text = dir_ / "part.txt";
+  std::ofstream(text) << "not frames\n";
+  EXPECT_EQ(error_of([&] { return joined(a, {text}); }),
+            "params.continued_in[0]: " + text.string() + ": not an HDF5 file (no HDF5 signature)");
+}
+
+TEST_F(RunPartsTest, StepsThatRepeatOrGoBackInALaterPartAreRefused) {
+  const fs::path a = write_part("a.h5", 0, 2, 1);
+  const fs::path repeated = write_frames("repeated.h5", {2, 2, 3}, 2);
+  EXPECT_EQ(
+      error_of([&] { return joined(a, {repeated}); }),
+      "params.continued_in: " + repeated.string() + ": frame 1: expected a step above 20 (" +
+          a.string() +
+          ": frame 2, the frame read before it: the parts are one run, steps rising), got 20");
+  const fs::path back = write_frames("back.h5", {2, 4, 3}, 2);
+  EXPECT_EQ(
+      error_of([&] { return joined(a, {back}); }),
+      "params.continued_in: " + back.string() + ": frame 2: expected a step above 40 (" +
+          back.string() +
+          ": frame 1, the frame read before it: the parts are one run, steps rising), got 30");
 }
 
 TEST_F(RunPartsTest, AMissingPartIsRefusedAtValidation) {
