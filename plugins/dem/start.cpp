@@ -15,7 +15,14 @@ namespace {
 
 // Frame `index` of the start file (-1: its last).
 Start start_from_file(const PluginContext& ctx, int species) {
-  FrameReader reader(ctx.params.string("initial_file"));
+  // The reader's refusals (not HDF5, not H5MD, corrupt) name the file; the parameter too.
+  const FrameReader reader = [&] {
+    try {
+      return FrameReader(ctx.params.string("initial_file"));
+    } catch (const InputError& e) {
+      throw InputError(ctx.param("initial_file") + ": " + e.what());
+    }
+  }();
   const std::int64_t index = ctx.params.integer("initial_frame");
   const long frames = reader.frames();
   if (frames == 0 || index >= frames) {
@@ -26,10 +33,21 @@ Start start_from_file(const PluginContext& ctx, int species) {
   Frame f = reader.read(chosen);
   check_memory(ctx.param("initial_file") + ": " + reader.info().path,
                static_cast<double>(f.size()));
-  f.check(reader.info().path + ": frame " + std::to_string(index));
-  if (f.dim != 3) throw InputError(ctx.param("initial_file") + ": expected a 3D frame, got 2D");
-  check_start_frame(f, ctx.param("initial_file") + ": " + reader.info().path + ": frame " +
-                           std::to_string(chosen));
+  const std::string where =
+      ctx.param("initial_file") + ": " + reader.info().path + ": frame " + std::to_string(chosen);
+  f.check(where);
+  if (f.dim != 3) throw InputError(where + ": expected a 3D frame, got 2D");
+  for (int axis = 0; axis < 3; ++axis) {
+    for (int side = 0; side < 2; ++side) {
+      if (f.container.boundary[static_cast<std::size_t>(axis)][static_cast<std::size_t>(side)] ==
+          Boundary::Periodic) {
+        throw InputError(where + ": container: " + to_string(static_cast<Wall>(2 * axis + side)) +
+                         ": expected a wall or an open side, got a periodic side (the DEM "
+                         "engine has no periodic boundaries)");
+      }
+    }
+  }
+  check_start_frame(f, where);
   InitialState s;
   s.position = f.position().matrix().transpose();
   s.radius = f.radius();
@@ -108,6 +126,11 @@ Start start_from_bed(const PluginContext& ctx, int species) {
 Start start_of(const PluginContext& ctx, int species) {
   const bool file = !ctx.params.string("initial_file").empty();
   const bool bed = ctx.params.object("bed").integer("small") > 0;
+  if (!file && ctx.params.integer("initial_frame") != -1) {
+    throw InputError(ctx.param("initial_frame") +
+                     ": expected it only with initial_file (a frame of that file), got " +
+                     std::to_string(ctx.params.integer("initial_frame")) + " without one");
+  }
   if (file == bed) {
     throw InputError(ctx.params_path + ": expected either initial_file or bed.small > 0, got " +
                      (file ? "both" : "neither"));

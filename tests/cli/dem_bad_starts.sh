@@ -40,3 +40,24 @@ make_start overlapping 5.14
 make_start empty none
 "$expect" 2 '^granpipe: .*/empty\.json: source\.params\.initial_file: .*/empty\.h5: frame 0: expected at least one particle, got none$' \
   -- "$exe" validate "$work/empty.json"
+
+# A start file that is no H5MD file, or whose box is periodic, is refused naming
+# initial_file; initial_frame without initial_file (a bed start) would change nothing.
+make_start periodic 5.5
+"$python" - "$work/periodic.h5" <<'PY'
+import sys
+import h5py
+with h5py.File(sys.argv[1], "r+") as f:
+    f["particles/all/box"].attrs["boundary"] = [b"periodic", b"none", b"none"]
+PY
+"$expect" 2 '^granpipe: .*/periodic\.json: source\.params\.initial_file: .*/periodic\.h5: frame 0: container: x_low: expected a wall or an open side, got a periodic side \(the DEM engine has no periodic boundaries\)$' \
+  -- "$exe" validate "$work/periodic.json"
+make_start text 5.5
+echo "x,y,z" >"$work/text.h5"
+"$expect" 2 '^granpipe: .*/text\.json: source\.params\.initial_file: .*/text\.h5: not an HDF5 file \(no HDF5 signature\)$' \
+  -- "$exe" validate "$work/text.json"
+cat >"$work/bed.json" <<JSON
+{"source": {"plugin": "dem", "params": {"bed": {"small": 20}, "initial_frame": 0, "duration": 0.01}}}
+JSON
+"$expect" 2 '^granpipe: .*/bed\.json: source\.params\.initial_frame: expected it only with initial_file \(a frame of that file\), got 0 without one$' \
+  -- "$exe" validate "$work/bed.json"
