@@ -194,6 +194,11 @@ TapSource::TapSource(const PluginContext& ctx)
                      ": expected it only with initial_file (counting on from a saved frame's "
                      "tap), got true without one");
   }
+  if (!initial_file_.empty()) {
+    saved_ = read_saved_packing(initial_param_, initial_file_, initial_frame_, box_,
+                                static_cast<long>(n_));
+    if (continue_count_) check_saved_tap(*saved_);
+  }
 }
 
 FrameContent TapSource::content() const {
@@ -203,13 +208,10 @@ FrameContent TapSource::content() const {
 }
 
 void TapSource::start() {
-  if (!initial_file_.empty()) {
-    SavedPacking saved = read_saved_packing(initial_param_, initial_file_, initial_frame_, box_,
-                                            static_cast<long>(n_));
-    centres_ = std::move(saved.centres);
+  if (saved_) {
+    centres_ = std::move(saved_->centres);
     if (continue_count_) {
-      check_saved_tap(saved);
-      tap_ = saved.step;
+      tap_ = saved_->step;
       progress_.skip(static_cast<double>(tap_));
       // A stream of its own for each start, so that a continuation does not replay the
       // random numbers its first part began with.

@@ -5,6 +5,7 @@
 // supports); each tap dilates the packing, z -> z (1 + epsilon), and redeposits it by
 // gravity-biased Monte Carlo until the mean height settles.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,11 +13,10 @@
 #include "epsilon_protocol.hpp"
 #include "granpipe/plugin.hpp"
 #include "redeposition.hpp"
+#include "saved_packing.hpp"
 #include "tap_schedule.hpp"
 
 namespace granpipe::spheres3d_tap {
-
-struct SavedPacking;
 
 Schema schema();
 
@@ -46,6 +46,9 @@ class TapSource : public Source {
   long initial_frame_ = -1;
   bool continue_count_ = false, started_ = false;
   Seeds seeds_;
+  // The packing of initial_file, read and checked when the source is made (so that
+  // `granpipe validate` refuses a bad one), taken as the start at the first frame.
+  std::optional<SavedPacking> saved_;
   std::int64_t n_ = 0, tap_ = 0, unconverged_ = 0;
   std::vector<Eigen::Vector3d> centres_;
   StreamedTable per_tap_;
