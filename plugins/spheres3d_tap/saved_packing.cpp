@@ -70,8 +70,9 @@ void check_overlaps(const std::string& where, const std::vector<Eigen::Vector3d>
 
 }  // namespace
 
-SavedPacking read_saved_packing(const std::string& where, const std::string& file, long frame,
-                                const TapBox& box, long n) {
+SavedPacking read_saved_packing(const std::string& where, const std::string& file,
+                                const std::string& frame_where, long frame, const TapBox& box,
+                                long n) {
   // The reader's refusals (not HDF5, not H5MD, corrupt) name the file; the parameter too.
   const FrameReader reader = [&] {
     try {
@@ -82,8 +83,8 @@ SavedPacking read_saved_packing(const std::string& where, const std::string& fil
   }();
   const long frames = reader.frames();
   if (frame >= frames || frames == 0) {
-    throw InputError(where + ": expected a frame index below " + std::to_string(frames) + " (" +
-                     file + " holds " + std::to_string(frames) + " frames), got " +
+    throw InputError(frame_where + ": expected a frame index below " + std::to_string(frames) +
+                     " (" + file + " holds " + std::to_string(frames) + " frames), got " +
                      std::to_string(frame));
   }
   const long index = frame < 0 ? frames - 1 : frame;

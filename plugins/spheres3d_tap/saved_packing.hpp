@@ -19,10 +19,12 @@ struct SavedPacking {
 };
 
 // The centres of frame `frame` (-1: the last) of `file`. Throws InputError naming
-// `where` (the parameter) and the file when the frame is not 3D, holds other than
+// `frame_where` (that parameter) when the file has no such frame, and `where` (the file's
+// parameter) and the file when the frame is not 3D, holds other than
 // `n` spheres, other radii than the box's, another box, or spheres that overlap (by more
 // than 1e-9 R) or reach through the bottom or a wall.
-SavedPacking read_saved_packing(const std::string& where, const std::string& file, long frame,
-                                const TapBox& box, long n);
+SavedPacking read_saved_packing(const std::string& where, const std::string& file,
+                                const std::string& frame_where, long frame, const TapBox& box,
+                                long n);
 
 }  // namespace granpipe::spheres3d_tap

@@ -195,8 +195,8 @@ TapSource::TapSource(const PluginContext& ctx)
                      "tap), got true without one");
   }
   if (!initial_file_.empty()) {
-    saved_ = read_saved_packing(initial_param_, initial_file_, initial_frame_, box_,
-                                static_cast<long>(n_));
+    saved_ = read_saved_packing(initial_param_, initial_file_, ctx.param("initial_frame"),
+                                initial_frame_, box_, static_cast<long>(n_));
     if (continue_count_) check_saved_tap(*saved_);
   }
 }

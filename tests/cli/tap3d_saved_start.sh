@@ -82,3 +82,7 @@ echo "not a packing" >"$work/packing.txt"
 "$expect" 2 "source\\.params\\.initial_file(=[^ ]*)?: .*first/frames\\.h5, frame 2: expected a saved tap from 0 to 1 for continue_count \\(the run counts to tap 2\\), got tap 2$" \
   -- "$exe" validate "$pipeline" --set source.params.initial_file="$work/first/frames.h5" \
   --set source.params.continue_count=true
+# A frame the file does not hold is refused naming initial_frame.
+"$expect" 2 "source\\.params\\.initial_frame(=[^ ]*)?: expected a frame index below 3 \\(.*first/frames\\.h5 holds 3 frames\\), got 3$" \
+  -- "$exe" validate "$pipeline" --set source.params.initial_file="$work/first/frames.h5" \
+  --set source.params.initial_frame=3
