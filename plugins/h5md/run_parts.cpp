@@ -78,10 +78,21 @@ void RunParts::append(std::size_t part, const std::string& name) {
   }
   if (reader.frames() == 0) return;
   const Frame start = reader.read(0);
-  std::optional<Frame> saved;  // the last frame kept so far, read once per step back
-  while (!order_.empty() && (saved = read(frames() - 1))->step > start.step) order_.pop_back();
+  std::optional<Frame> saved;       // the last frame kept so far, read once per step back
+  std::size_t dropped_from = part;  // the earliest later part a frame was dropped from
+  while (!order_.empty() && (saved = read(frames() - 1))->step > start.step) {
+    if (order_.back().part > 0) dropped_from = order_.back().part;
+    order_.pop_back();
+  }
   const std::string not_continued = name + ": " + reader.info().path + " starts at step " +
                                     std::to_string(start.step) + ", expected a frame that ";
+  // A restart from an earlier frame drops the frames after it; a whole part listed before
+  // it dropped is a list out of order (or a part that should not be listed).
+  if (dropped_from < part && (order_.empty() || order_.back().part < dropped_from)) {
+    throw InputError(not_continued + "follows the part before it, got a step before every frame " +
+                     "of " + parts_[dropped_from]->info().path +
+                     " (list the parts in the order of the run, leaving out any replaced)");
+  }
   if (order_.empty() || saved->step != start.step) {
     throw InputError(not_continued + "the parts before it hold (not a continuation of them)");
   }

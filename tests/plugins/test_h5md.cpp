@@ -333,6 +333,23 @@ TEST_F(RunPartsTest, OtherParticlesAreRefused) {
                 a.string() + " holds, got 4 in 2D");
 }
 
+TEST_F(RunPartsTest, APartThatDropsAWholeListedPartIsRefused) {
+  // c restarts from a's frame 1, before every frame b added: b would vanish unread.
+  const fs::path a = write_part("a.h5", 0, 2, 1), b = write_part("b.h5", 2, 4, 2),
+                 c = write_part("c.h5", 1, 3, 3);
+  EXPECT_EQ(error_of([&] {
+              return joined(a, {b, c});
+            }),
+            "params.continued_in[1]: " + c.string() +
+                " starts at step 10, expected a frame that follows the part before it, got a step "
+                "before every frame of " +
+                b.string() + " (list the parts in the order of the run, leaving out any replaced)");
+  // A restart within the part before it keeps that part's frames up to it.
+  const fs::path d = write_part("d.h5", 3, 5, 4);
+  EXPECT_EQ(steps_of(*joined(a, {b, d})), (Steps{0, 10, 20, 30, 40, 50}));
+  EXPECT_EQ(parts_of(*joined(a, {b, d})), (std::vector<double>{1, 1, 1, 2, 4, 4}));
+}
+
 TEST_F(RunPartsTest, AFileNamedTwiceIsRefused) {
   const fs::path a = write_part("a.h5", 0, 2, 1), b = write_part("b.h5", 2, 4, 2);
   EXPECT_EQ(error_of([&] { return joined(a, {a}); }),
