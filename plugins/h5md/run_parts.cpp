@@ -60,6 +60,11 @@ RunParts::RunParts(const std::vector<std::string>& files, const std::vector<std:
       } catch (const InputError& e) {
         throw InputError(names[k] + ": " + e.what());
       }
+      if (parts_[k]->frames() == 0) {
+        throw InputError(names[k] + ": " + parts_[k]->info().path +
+                         ": expected a part with frames (at least the one it started from), got "
+                         "none");
+      }
     }
     if (k) require_same_content(first_info(), parts_[k]->info(), names[k]);
     append(k, names[k]);
@@ -76,7 +81,6 @@ void RunParts::append(std::size_t part, const std::string& name) {
     for (long i = 0; i < reader.frames(); ++i) order_.push_back({0, i});
     return;
   }
-  if (reader.frames() == 0) return;
   const Frame start = reader.read(0);
   std::optional<Frame> saved;       // the last frame kept so far, read once per step back
   std::size_t dropped_from = part;  // the earliest later part a frame was dropped from

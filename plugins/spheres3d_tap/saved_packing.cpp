@@ -82,7 +82,9 @@ SavedPacking read_saved_packing(const std::string& where, const std::string& fil
     }
   }();
   const long frames = reader.frames();
-  if (frame >= frames || frames == 0) {
+  if (frames == 0)
+    throw InputError(where + ": " + file + ": expected a file with frames, got none");
+  if (frame >= frames) {
     throw InputError(frame_where + ": expected a frame index below " + std::to_string(frames) +
                      " (" + file + " holds " + std::to_string(frames) + " frames), got " +
                      std::to_string(frame));

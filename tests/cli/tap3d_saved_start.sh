@@ -86,3 +86,19 @@ echo "not a packing" >"$work/packing.txt"
 "$expect" 2 "source\\.params\\.initial_frame(=[^ ]*)?: expected a frame index below 3 \\(.*first/frames\\.h5 holds 3 frames\\), got 3$" \
   -- "$exe" validate "$pipeline" --set source.params.initial_file="$work/first/frames.h5" \
   --set source.params.initial_frame=3
+# A frames file without frames (its writer killed before the first) is refused naming
+# initial_file.
+cp "$work/first/frames.h5" "$work/no_frames.h5"
+"$python" - "$work/no_frames.h5" <<'PY'
+import sys, h5py
+with h5py.File(sys.argv[1], "r+") as f:
+    groups = [f["particles/all"][n] for n in f["particles/all"] if n != "box"]
+    groups += [f["observables"][n] for n in f["observables"]]
+    for g in groups:
+        for k in [k for k in g if k in ("value", "step", "time")]:
+            shape, dtype = g[k].shape[1:], g[k].dtype
+            del g[k]
+            g.create_dataset(k, shape=(0,) + shape, dtype=dtype, maxshape=(None,) + shape)
+PY
+"$expect" 2 "source\\.params\\.initial_file(=[^ ]*)?: .*no_frames\\.h5: expected a file with frames, got none$" \
+  -- "$exe" validate "$pipeline" --set source.params.initial_file="$work/no_frames.h5"

@@ -350,6 +350,13 @@ TEST_F(RunPartsTest, APartThatDropsAWholeListedPartIsRefused) {
   EXPECT_EQ(parts_of(*joined(a, {b, d})), (std::vector<double>{1, 1, 1, 2, 4, 4}));
 }
 
+TEST_F(RunPartsTest, APartWithoutFramesIsRefused) {
+  const fs::path a = write_part("a.h5", 0, 2, 1), empty = write_frames("empty.h5", {}, 2);
+  EXPECT_EQ(error_of([&] { return joined(a, {empty}); }),
+            "params.continued_in[0]: " + empty.string() +
+                ": expected a part with frames (at least the one it started from), got none");
+}
+
 TEST_F(RunPartsTest, AFileNamedTwiceIsRefused) {
   const fs::path a = write_part("a.h5", 0, 2, 1), b = write_part("b.h5", 2, 4, 2);
   EXPECT_EQ(error_of([&] { return joined(a, {a}); }),
