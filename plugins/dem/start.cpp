@@ -25,7 +25,11 @@ Start start_from_file(const PluginContext& ctx, int species) {
   }();
   const std::int64_t index = ctx.params.integer("initial_frame");
   const long frames = reader.frames();
-  if (frames == 0 || index >= frames) {
+  if (frames == 0) {
+    throw InputError(ctx.param("initial_file") + ": " + reader.info().path +
+                     ": expected a file with frames, got none");
+  }
+  if (index >= frames) {
     throw InputError(ctx.param("initial_frame") + ": expected a frame of " + reader.info().path +
                      " (it holds " + std::to_string(frames) + "), got " + std::to_string(index));
   }

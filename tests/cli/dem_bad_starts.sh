@@ -61,3 +61,19 @@ cat >"$work/bed.json" <<JSON
 JSON
 "$expect" 2 '^granpipe: .*/bed\.json: source\.params\.initial_frame: expected it only with initial_file \(a frame of that file\), got 0 without one$' \
   -- "$exe" validate "$work/bed.json"
+# A start file without frames (its writer killed before the first) is refused naming
+# initial_file, not initial_frame.
+make_start no_frames 5.5
+"$python" - "$work/no_frames.h5" <<'PY'
+import sys
+import h5py
+with h5py.File(sys.argv[1], "r+") as f:
+    for n in f["particles/all"]:
+        g = f["particles/all"][n]
+        for k in [k for k in g if k in ("value", "step", "time")]:
+            shape, dtype = g[k].shape[1:], g[k].dtype
+            del g[k]
+            g.create_dataset(k, shape=(0,) + shape, dtype=dtype, maxshape=(None,) + shape)
+PY
+"$expect" 2 '^granpipe: .*/no_frames\.json: source\.params\.initial_file: .*/no_frames\.h5: expected a file with frames, got none$' \
+  -- "$exe" validate "$work/no_frames.json"
