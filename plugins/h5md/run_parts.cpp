@@ -50,21 +50,17 @@ void require_other_file(const std::vector<std::string>& files,
 RunParts::RunParts(const std::vector<std::string>& files, const std::vector<std::string>& names,
                    const std::string& group, double default_radius) {
   for (std::size_t k = 0; k < files.size(); ++k) {
-    if (k == 0) {
+    if (k) require_other_file(files, names, k);
+    // The reader's refusals (not HDF5, not H5MD) name the file; the parameter too.
+    try {
       parts_.push_back(std::make_unique<FrameReader>(files[k], group, default_radius));
-    } else {
-      require_other_file(files, names, k);
-      // The reader's refusals (not HDF5, not H5MD) name the file; the parameter too.
-      try {
-        parts_.push_back(std::make_unique<FrameReader>(files[k], group, default_radius));
-      } catch (const InputError& e) {
-        throw InputError(names[k] + ": " + e.what());
-      }
-      if (parts_[k]->frames() == 0) {
-        throw InputError(names[k] + ": " + parts_[k]->info().path +
-                         ": expected a part with frames (at least the one it started from), got "
-                         "none");
-      }
+    } catch (const InputError& e) {
+      throw InputError(names[k] + ": " + e.what());
+    }
+    if (k && parts_[k]->frames() == 0) {
+      throw InputError(names[k] + ": " + parts_[k]->info().path +
+                       ": expected a part with frames (at least the one it started from), got "
+                       "none");
     }
     if (k) require_same_content(first_info(), parts_[k]->info(), names[k]);
     append(k, names[k]);

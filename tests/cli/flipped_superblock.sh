@@ -27,8 +27,8 @@ done
 cat >"$work/reprocess.json" <<JSON
 {"source": {"plugin": "h5md", "params": {"file": "$work/flipped_44.h5"}}, "output": {"dir": "$work/out"}}
 JSON
-"$expect" 2 "^granpipe: $work/reprocess\.json: $work/flipped_44\.h5: not a readable HDF5 file \(truncated or corrupt\)$" \
+"$expect" 2 "^granpipe: $work/reprocess\.json: source\.params\.file: $work/flipped_44\.h5: not a readable HDF5 file \(truncated or corrupt\)$" \
   -- timeout 60 "$exe" validate "$work/reprocess.json"
-"$expect" 2 "^granpipe: $work/reprocess\.json: $work/flipped_44\.h5: not a readable HDF5 file \(truncated or corrupt\)$" \
+"$expect" 2 "^granpipe: $work/reprocess\.json: source\.params\.file: $work/flipped_44\.h5: not a readable HDF5 file \(truncated or corrupt\)$" \
   -- timeout 60 "$exe" run "$work/reprocess.json"
 echo "flipped superblock bits refused"
