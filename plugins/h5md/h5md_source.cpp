@@ -67,6 +67,7 @@ H5mdSource::H5mdSource(const PluginContext& ctx)
              ctx.params.real("radius")),
       max_overlap_(ctx.params.real("max_overlap")),
       max_overlap_param_(ctx.param("max_overlap")),
+      file_param_(ctx.param("file")),
       continued_param_(ctx.param("continued_in")) {
   const FrameFileInfo& info = parts_.first_info();
   const long frames = parts_.frames();
@@ -120,16 +121,17 @@ bool H5mdSource::next(Frame& frame) {
   return true;
 }
 
-// A part whose frames go back or repeat a step (a copy of an earlier part's frames, or a
-// session started from a frame other than its first) would count taps twice in every
-// analysis of the joined run.
+// Frames whose steps go back or repeat (a part copying an earlier part's frames, a session
+// started from a frame other than its first, a file written out of order) would count
+// taps twice, or in the wrong order, in every analysis over the run.
 void H5mdSource::check_step_rises(const Frame& frame, long index) {
-  if (parts_.parts().size() < 2) return;
   if (last_step_ && frame.step <= *last_step_) {
-    throw InputError(continued_param_ + ": " + parts_.where(index) + ": expected a step above " +
-                     std::to_string(*last_step_) + " (" + parts_.where(last_index_) +
-                     ", the frame read before it: the parts are one run, steps rising), got " +
-                     std::to_string(frame.step));
+    const bool parts = parts_.parts().size() > 1;
+    throw InputError((parts ? continued_param_ : file_param_) + ": " + parts_.where(index) +
+                     ": expected a step above " + std::to_string(*last_step_) + " (" +
+                     parts_.where(last_index_) + ", the frame read before it: " +
+                     (parts ? "the parts are one run, steps rising" : "a run's steps rise") +
+                     "), got " + std::to_string(frame.step));
   }
   last_step_ = frame.step;
   last_index_ = index;

@@ -37,8 +37,8 @@ class H5mdSource : public Source {
   double max_overlap_;
   std::string max_overlap_param_;  // its path in the pipeline, for the message
   std::optional<Frame> first_frame_;
-  // The parts of a continued run must read with steps rising: the last frame read.
-  std::string continued_param_;
+  // Steps rise from frame to frame (one file, or the parts of a run): the last frame read.
+  std::string file_param_, continued_param_;
   std::optional<std::int64_t> last_step_;
   long last_index_ = -1;
 };

@@ -393,6 +393,20 @@ TEST_F(RunPartsTest, StepsThatRepeatOrGoBackInALaterPartAreRefused) {
           ": frame 1, the frame read before it: the parts are one run, steps rising), got 30");
 }
 
+TEST_F(RunPartsTest, StepsThatRepeatOrGoBackInOneFileAreRefused) {
+  const fs::path back = write_frames("one_back.h5", {0, 2, 1}, 1);
+  EXPECT_EQ(error_of([&] { return joined(back, {}); }),
+            "params.file: " + back.string() + ": frame 2: expected a step above 20 (" +
+                back.string() + ": frame 1, the frame read before it: a run's steps rise), got 10");
+  const fs::path repeated = write_frames("one_repeated.h5", {0, 1, 1}, 1);
+  EXPECT_EQ(error_of([&] { return joined(repeated, {}); }),
+            "params.file: " + repeated.string() + ": frame 2: expected a step above 10 (" +
+                repeated.string() +
+                ": frame 1, the frame read before it: a run's steps rise), got 10");
+  const fs::path rising = write_frames("one_rising.h5", {0, 1, 3}, 1);
+  EXPECT_EQ(error_of([&] { return joined(rising, {}); }), "(no InputError)");
+}
+
 TEST_F(RunPartsTest, AMissingPartIsRefusedAtValidation) {
   const fs::path a = write_part("a.h5", 0, 2, 1);
   EXPECT_EQ(error_of([&] { return joined(a, {"nowhere_part.h5"}); }),
