@@ -94,7 +94,9 @@ void RunParts::append(std::size_t part, const std::string& name) {
                      " (list the parts in the order of the run, leaving out any replaced)");
   }
   if (order_.empty() || saved->step != start.step) {
-    throw InputError(not_continued + "the parts before it hold (not a continuation of them)");
+    throw InputError(not_continued +
+                     "the parts before it hold (not a continuation of them; a part holds first "
+                     "the frame it started from, which a run saved without its start lacks)");
   }
   if ((saved->position().array() != start.position().array()).any() ||
       (saved->radius() != start.radius()).any()) {

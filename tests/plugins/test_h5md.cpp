@@ -302,7 +302,8 @@ TEST_F(RunPartsTest, APartThatContinuesNoneIsRefused) {
   EXPECT_EQ(error_of([&] { return joined(a, {later}); }),
             "params.continued_in[0]: " + later.string() +
                 " starts at step 30, expected a frame that the parts before it hold (not a "
-                "continuation of them)");
+                "continuation of them; a part holds first the frame it started from, which a run "
+                "saved without its start lacks)");
 }
 
 TEST_F(RunPartsTest, AnotherPackingAtTheJoinIsRefused) {
