@@ -44,7 +44,7 @@ def main(path, prefix, taps):
     curves_xi, curves_v, rows = {}, {}, []
     for s in chosen:
         m = xi["step"] == s
-        x, p, x3p = xi["xi"][m], xi["P"][m], xi["xi3_P"][m]
+        x, x3p = xi["xi"][m], xi["xi3_P"][m]
         width = x[1] - x[0]
         small = float(np.sum(x3p[x < XI_O]) * width)
         nu = float(np.sum(x3p) * width)

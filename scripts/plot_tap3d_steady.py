@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Figs. 3 and 4 of the 3D tapping paper from the table of scripts/tap3d_steady_table.py:
 <Phi^c> after T taps against sqrt(epsilon) (Fig. 4's black squares, with the mean over the
-last 1000 taps), sigma_<Z> against sqrt(epsilon) with its least-squares line (Fig. 3, down),
-and, for the runs named, the power spectra of <Z> (Fig. 3, up).
+last 1000 taps), sigma_<Z> against sqrt(epsilon) about the steady mean and about the drift,
+with a least-squares line (Fig. 3, down), and, for the runs named, the power spectra of <Z>
+(Fig. 3, up).
 
     scripts/plot_tap3d_steady.py TABLE.csv OUT_PREFIX [RUN_DIR[=LABEL] ...]
 
@@ -33,7 +34,7 @@ def last_window(header):
 
 def phi_c_chart(path, header, rows, out):
     root, last = columns(path, header, rows, "sqrt_epsilon", "phi_c_last")
-    series = {"<Φ^c> at the last tap": [(x, y, math.nan) for x, y in zip(root, last)]}
+    series = {"⟨Φ^c⟩ at the last tap": [(x, y, math.nan) for x, y in zip(root, last)]}
     window = last_window(header)
     if window:
         (means,) = columns(path, header, rows, window)
@@ -43,13 +44,16 @@ def phi_c_chart(path, header, rows, out):
 
 
 def sigma_chart(path, header, rows, out):
-    root, sigma = columns(path, header, rows, "sqrt_epsilon", "z_mean_sigma")
-    series = {"σ_⟨Z⟩ (R)": [(x, y, math.nan) for x, y in zip(root, sigma)]}
+    """sigma_<Z> about the steady mean (the paper's) and about the drift, with the least-squares
+    line through the second (a run still compacting inflates the first)."""
+    root, sigma, about_drift = columns(path, header, rows, "sqrt_epsilon", "z_mean_sigma",
+                                       "z_mean_sigma_about_drift")
+    series = {"σ_⟨Z⟩ about the mean (R)": [(x, y, math.nan) for x, y in zip(root, sigma)],
+              "σ_⟨Z⟩ about the drift (R)": [(x, y, math.nan) for x, y in zip(root, about_drift)]}
     if len(root) >= 2:
-        slope, intercept = np.polyfit(root, sigma, 1)
-        ends = (0.0, max(root))
-        series[f"least squares: {intercept:.3f} + {slope:.3f} √ε"] = [
-            (x, intercept + slope * x, math.nan) for x in ends]
+        slope, intercept = np.polyfit(root, about_drift, 1)
+        series[f"least squares: {intercept:.4f} + {slope:.4f} √ε"] = [
+            (x, intercept + slope * x, math.nan) for x in (0.0, max(root))]
     line_chart(series, [], "√ε", "σ_⟨Z⟩ (R)", out)
 
 

@@ -3,7 +3,9 @@
 table: for each analysed run (stereology and compaction over a constant-epsilon run of
 tap3d_steady_states.json or tap3d_compaction.json, or its parts joined by the h5md source's
 continued_in), <Phi^c> at the last tap and over windows of taps, Phi_b's and <Z>'s steady state
-and sigma_<Z>, the spectrum slope of <Z>.
+and sigma_<Z>, the spectrum slope of <Z>. A run still compacting has a drift in its "steady"
+taps, which sigma_<Z> (about the mean, the paper's) counts as fluctuation: the table also
+has <Z>'s drift, a straight line fitted over the steady taps, and the fluctuation about it.
 
     scripts/tap3d_steady_table.py OUT.csv RUN_DIR[=EPSILON] ...
 
@@ -14,6 +16,8 @@ from tap 1000 on, as many as the last tap allows (the paper averages the last 10
 import math
 import os
 import sys
+
+import numpy as np
 
 from input_error import read_pipeline, refuse
 from result_csv import read_table
@@ -70,12 +74,29 @@ def window_means(run):
     return int(last), last_phi, means
 
 
+def drift_of(run, steady_from):
+    """<Z>'s least-squares slope over the taps from steady_from on, per 1000 taps, and the
+    root mean square of <Z> about that line."""
+    path = os.path.join(run, "compaction.per_frame.csv")
+    _, header, rows = read_table(path)
+    for name in ("tap", "z_mean"):
+        if name not in header:
+            refuse(f"{path}: expected a column {name}, found {header[:4]}...")
+    steady = np.array([(r[header.index("tap")], r[header.index("z_mean")]) for r in rows
+                       if r[header.index("tap")] >= steady_from])
+    if len(steady) < 3:
+        return math.nan, math.nan
+    slope, intercept = np.polyfit(steady[:, 0], steady[:, 1], 1)
+    residual = steady[:, 1] - (intercept + slope * steady[:, 0])
+    return slope * WINDOW, float(np.sqrt(np.mean(residual ** 2)))
+
+
 def row_of(argument):
     run, _, given = argument.partition("=")
     eps = epsilon_of(run, given)
     last, phi_last, means = window_means(run)
     c = scalars(run, "compaction")
-    for name in ("phi_b_ss", "z_mean_sigma", "spectrum_slope_z_mean"):
+    for name in ("phi_b_ss", "z_mean_sigma", "spectrum_slope_z_mean", "steady_from"):
         if name not in c:
             refuse(f"{run}/compaction.scalars.csv: expected {name}, found none")
     return {"epsilon": eps, "sqrt_epsilon": math.sqrt(eps), "last_tap": last,
@@ -83,6 +104,8 @@ def row_of(argument):
             **{f"phi_c_taps_{(k + 1) * WINDOW}_{(k + 2) * WINDOW}": m for k, m in enumerate(means)},
             "phi_b_ss": c["phi_b_ss"][0], "phi_b_ss_err": c["phi_b_ss"][1],
             "z_mean_sigma": c["z_mean_sigma"][0],
+            **dict(zip(("z_mean_drift_per_1000_taps", "z_mean_sigma_about_drift"),
+                       drift_of(run, c["steady_from"][0]))),
             "spectrum_slope_z_mean": c["spectrum_slope_z_mean"][0],
             "spectrum_slope_z_mean_err": c["spectrum_slope_z_mean"][1]}
 

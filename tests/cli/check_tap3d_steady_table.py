@@ -13,8 +13,9 @@ table_script, plot_script = sys.argv[1], sys.argv[2]
 failures = []
 
 
-def make_run(folder, epsilon, slope, sigma):
-    """Taps 0..3000 every 10 with phi_c = 0.6 + slope * tap; the scalars the table reads."""
+def make_run(folder, epsilon, slope, sigma, drift=1e-4):
+    """Taps 0..3000 every 10 with phi_c = 0.6 + slope * tap and <Z> falling by `drift` a tap
+    on a step down before the steady taps (1500 on); the scalars the table reads."""
     os.makedirs(folder)
     params = {"epsilon": epsilon} if epsilon is not None else {"file": "frames.h5"}
     with open(os.path.join(folder, "pipeline.json"), "w") as f:
@@ -23,11 +24,16 @@ def make_run(folder, epsilon, slope, sigma):
         f.write("# granpipe test\nframe,tap,phi_c\n")
         for k, tap in enumerate(range(0, 3001, 10)):
             f.write(f"{k},{tap},{0.6 + slope * tap!r}\n")
+    with open(os.path.join(folder, "compaction.per_frame.csv"), "w") as f:
+        f.write("frame,tap,z_mean\n")
+        for k, tap in enumerate(range(0, 3001, 10)):
+            f.write(f"{k},{tap},{(20.0 if tap < 1500 else 15.0) - drift * tap!r}\n")
     with open(os.path.join(folder, "compaction.scalars.csv"), "w") as f:
         f.write("name,value,uncertainty,unit\n")
         f.write("phi_b_ss,0.59,0.001,\n")
         f.write(f"z_mean_sigma,{sigma},nan,R\n")
         f.write("spectrum_slope_z_mean,-1.2,0.1,\n")
+        f.write("steady_from,1500,nan,taps\n")
     with open(os.path.join(folder, "compaction.spectrum.csv"), "w") as f:
         f.write("frequency,z_mean,phi_b,phi_c\n0.01,1.0,1,1\n0.02,0.25,1,1\n")
 
@@ -53,10 +59,14 @@ with tempfile.TemporaryDirectory() as work:
         for row, (eps, slope) in zip(rows, expected):
             want = {"epsilon": eps, "phi_c_taps_1000_2000": 0.6 + slope * 1495,
                     "phi_c_taps_2000_3000": 0.6 + slope * 2495, "phi_c_last": 0.6 + slope * 3000,
-                    "last_tap": 3000, "z_mean_sigma": 0.03 if eps == 0.04 else 0.05}
+                    "last_tap": 3000, "z_mean_sigma": 0.03 if eps == 0.04 else 0.05,
+                    "z_mean_drift_per_1000_taps": -0.1}
             for name, value in want.items():
                 if abs(row.get(name, float("nan")) - value) > 1e-6 * abs(value):
                     failures.append(f"epsilon {eps}: {name} {row.get(name)} against {value}")
+        # A straight line over the steady taps: nothing about it (the step before them left out).
+        if any(abs(row.get("z_mean_sigma_about_drift", 1.0)) > 1e-9 for row in rows):
+            failures.append(f"fluctuation about the drift: {[r.get('z_mean_sigma_about_drift') for r in rows]}")
         if len(rows) != 2 or "phi_c_taps_3000_4000" in rows[0]:
             failures.append(f"rows {rows}")
     r = subprocess.run([sys.executable, table_script, out, c], capture_output=True, text=True)
@@ -68,7 +78,7 @@ with tempfile.TemporaryDirectory() as work:
     if r.returncode != 0:
         failures.append(f"plot: {r.returncode} {r.stderr}")
     else:
-        for kind, series in (("phi_c", 2), ("sigma", 2), ("spectra", 2)):
+        for kind, series in (("phi_c", 2), ("sigma", 3), ("spectra", 2)):
             root = ET.parse(f"{prefix}_{kind}.svg").getroot()
             drawn = {g.get("id") for g in root.iter() if g.get("id", "").startswith("series-")}
             if len(drawn) != series:
