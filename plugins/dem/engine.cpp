@@ -252,7 +252,6 @@ ForceContext Engine::force_context(double dt_history, double velocity_time) {
   c.history = list_.history.data();
   c.rolling_history = list_.rolling_history.data();
   c.incoming = list_.incoming.data();
-  c.reaction = recording_ ? list_.reaction.data() : nullptr;
   c.background_damping = settings_.background_damping;
   c.air_damping = settings_.air_damping;
   c.dt_history = dt_history;
@@ -263,8 +262,9 @@ ForceContext Engine::force_context(double dt_history, double velocity_time) {
   return c;
 }
 
-KickContext Engine::kick_context(double dt) {
+KickContext Engine::kick_context(double dt, bool keep_reactions) {
   KickContext c;
+  c.keep_reactions = keep_reactions;
   c.n = p_.size();
   c.x = p_.x.data();
   c.v = p_.v.data();
@@ -285,6 +285,11 @@ KickContext Engine::kick_context(double dt) {
 }
 
 void Engine::evaluate_forces(double dt_history, double kick_dt, double velocity_time, bool finish) {
+  // The force pass writes only the touching pairs' slots: a frame's kept reactions go first.
+  if (reactions_kept_) {
+    std::fill(list_.incoming.begin(), list_.incoming.end(), 0.0);
+    reactions_kept_ = false;
+  }
   if (recording_) {
     for (int s = 0; s < walls_.count(); ++s) {
       wall_normal_[s].resize(3, p_.size());
@@ -295,7 +300,14 @@ void Engine::evaluate_forces(double dt_history, double kick_dt, double velocity_
   }
   beyond_limit_ = kernels_.forces(force_context(dt_history, velocity_time));
   if (recording_) recorded_step_ = step_;
-  if (finish) kernels_.finish_step(kick_context(kick_dt));
+  if (finish) finish_step(kick_dt);
+}
+
+// The end of a step; the step a frame shows keeps its contacts' forces in the reaction
+// slots for the frame.
+void Engine::finish_step(double dt) {
+  kernels_.finish_step(kick_context(dt, recording_));
+  reactions_kept_ = recording_;
 }
 
 namespace {
@@ -340,7 +352,7 @@ void Engine::run(std::int64_t steps) {
     governor_.step_done(timer.seconds());
     // A contact past the limit ends the run with this step completed.
     if (s + 1 == steps || beyond_limit_ > 0.0) {
-      kernels_.finish_step(kick_context(dt));
+      finish_step(dt);
       pin(time(), time());
       profile_.integrate += timer.lap();
       stop_if_too_deep();
@@ -354,7 +366,6 @@ void Engine::run(std::int64_t steps) {
 
 void Engine::record_contacts(bool on) {
   recording_ = on;
-  list_.record_reactions(on);
   if (!on) {
     // The records are as large as the particle arrays, and kept only for a frame.
     for (Vectors& record : wall_normal_) record.resize(3, 0);

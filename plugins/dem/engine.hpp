@@ -138,11 +138,13 @@ class Engine {
   // their velocity at velocity_time), then, if `finish`, the reactions gathered and the
   // half kick of length kick_dt (else the caller does both, fused with the next step).
   void evaluate_forces(double dt_history, double kick_dt, double velocity_time, bool finish);
+  // The reactions gathered and the half kick of length dt, ending a step.
+  void finish_step(double dt);
   // Throws BlowUp naming the deepest contact when the last force evaluation found one past
   // the overlap limit.
   void stop_if_too_deep() const;
   ForceContext force_context(double dt_history, double velocity_time);
-  KickContext kick_context(double dt);
+  KickContext kick_context(double dt, bool keep_reactions = false);
 
   Model model_;
   WallSet walls_;
@@ -167,6 +169,9 @@ class Engine {
   std::vector<Pinned> pinned_;
   std::vector<std::int32_t> pinned_slot_;  // per tag: its place in pinned_, or -1
   bool recording_ = false;
+  // The last step recorded contacts, whose forces its reaction slots still hold (read by
+  // the frame); cleared before the next force pass.
+  bool reactions_kept_ = false;
   double beyond_limit_ = 0.0;  // of the last force evaluation (see Kernels::forces)
   StepProfile profile_;
   std::int64_t step_ = 0, recorded_step_ = -1;

@@ -72,7 +72,7 @@ std::vector<ContactKey> contact_keys(const Engine& e, const Eigen::Vector3d& off
 }
 
 // The row of listed pair k, whose owner is particle a (the force loop stored the force on
-// the partner, b).
+// the partner, b, in the pair's reaction slot, which the step a frame shows keeps).
 ContactRow pair_row(const Engine& e, std::int32_t k) {
   const Particles& p = e.particles();
   const NeighborList& list = e.neighbors();
@@ -82,7 +82,8 @@ ContactRow pair_row(const Engine& e, std::int32_t k) {
   const double contact = p.radius[a] + p.radius[b];
   const double r = d.norm();
   const Vec3 n = d / r;
-  const double* reaction = &list.reaction[3 * static_cast<std::size_t>(k)];
+  const double* reaction = &list.incoming[static_cast<std::size_t>(list.reaction_stride) *
+                                          static_cast<std::size_t>(list.reaction_slot[k])];
   const Vec3 on_a = -Vec3(reaction[0], reaction[1], reaction[2]);
   const Vec3 normal = on_a.dot(n) * n;
   const double overlap = contact - r;

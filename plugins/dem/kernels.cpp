@@ -347,8 +347,8 @@ template <class C>
   }
 }
 
-// The touching pairs' results written out in list order: reaction slot (and the pair's
-// reaction when recording), history, and the owner's sums.
+// The touching pairs' results written out in list order: reaction slot, history, and the
+// owner's sums.
 template <class C>
 [[gnu::always_inline]] inline void write_touching(const ForceContext& c, const TouchingPairs& t) {
   constexpr int stride = kStride<C::kSpin>;
@@ -372,7 +372,6 @@ template <class C>
       ci[1] += t.cy[e];
       ci[2] += t.cz[e];
     }
-    if (c.reaction) std::copy(rk, rk + 3, c.reaction + 3 * k);
     if constexpr (C::kFriction) {
       double* u = c.history + 3 * k;
       u[0] = t.ux[e];
@@ -459,7 +458,8 @@ template <bool kRotation>
     f += load3(rk);
     if constexpr (kRotation) spin += load3(rk + 3);
     // Cleared slot by slot: a call to memset per particle costs more.
-    for (int a = 0; a < stride; ++a) rk[a] = 0.0;
+    if (!c.keep_reactions)
+      for (int a = 0; a < stride; ++a) rk[a] = 0.0;
   }
   return f;
 }

@@ -58,7 +58,6 @@ struct ForceContext {
   double* history;            // 3 per pair: the tangential displacement
   double* rolling_history;    // 3 per pair: the rolling angle (rolling only)
   double* incoming;           // 3 or 6 per slot, by partner (see NeighborList)
-  double* reaction;           // 3 per pair: the force on the partner; null when not recording
   double background_damping;
   double air_damping;  // on the slip velocity against wall_velocity
   double dt_history;
@@ -76,7 +75,10 @@ struct KickContext {
   double *x, *v, *omega, *force, *torque;
   const double *radius, *inv_mass, *inv_inertia, *spin_sum;
   const double* x_build;
-  double* incoming;  // read and cleared
+  double* incoming;  // read, and cleared unless keep_reactions
+  // The step a frame shows: its contacts' forces are read from the slots after the step
+  // (the engine clears them before the next force pass).
+  bool keep_reactions = false;
   const std::int32_t* reverse_first;
   Vec3 gravity;
   double dt;
@@ -89,7 +91,7 @@ struct Kernels {
   // maximum per lane and thread, it costs a few operations per batch of pairs and changes
   // no force.
   double (*forces)(const ForceContext&);
-  // The end of a step: reactions added to force/torque (their slots cleared), then
+  // The end of a step: reactions added to force/torque (their slots cleared unless kept), then
   // v += dt/2 a (w likewise).
   void (*finish_step)(const KickContext&);
   // The start of a step: v += dt/2 a, x += dt v (w likewise); returns the largest squared

@@ -202,20 +202,10 @@ void NeighborList::rebuild(Particles& p, int threads) {
   list_pairs(p, threads);
   if (keep_history_) restore_history(saved_, history, p, threads);
   if (keep_rolling_history_) restore_history(saved_rolling_, rolling_history, p, threads);
-  record_reactions(recording_reactions_);
   incoming.assign(static_cast<std::size_t>(reaction_stride) * partner.size(), 0.0);
   index_reverse(n);
   x_build_ = p.x;
   ++builds_;
-}
-
-void NeighborList::record_reactions(bool on) {
-  recording_reactions_ = on;
-  if (on) {
-    reaction.resize(3 * partner.size());
-  } else {
-    std::vector<double>().swap(reaction);
-  }
 }
 
 }  // namespace granpipe::dem

@@ -36,8 +36,6 @@ class NeighborList {
 
   // Sorts `p` spatially, rebuilds the list and carries the pair histories over.
   void rebuild(Particles& p, int threads);
-  // Holds `reaction` for the list's pairs from now on (also through rebuilds), or frees it.
-  void record_reactions(bool on);
   // The largest squared displacement since the last rebuild that is still safe.
   double trigger_squared() const { return 0.25 * skin_ * skin_; }
   const Vectors& positions_at_build() const { return x_build_; }
@@ -58,13 +56,10 @@ class NeighborList {
   // The reactions particle p gathers are the slots reverse_first[p] .. reverse_first[p+1]-1
   // of `incoming` (reaction_stride doubles each), one per pair naming p as partner, in
   // increasing pair order; pair k writes slot reaction_slot[k]. The force loop writes the
-  // slots of touching pairs only, and the gather reads its slots and clears them.
+  // slots of touching pairs only, and the gather reads its slots and clears them (but on
+  // the step a frame shows, whose contacts' forces are then read from the slots).
   std::vector<std::int32_t> reverse_first, reaction_slot;
   std::vector<double> incoming;
-  // The force on the partner by pair (3 per pair), for the contacts a frame shows: written
-  // for the touching pairs of the steps that record contacts, and held only then
-  // (record_reactions), since it is as large as the list.
-  std::vector<double> reaction;
   int reaction_stride = 3;
 
  private:
@@ -92,7 +87,6 @@ class NeighborList {
   Grid grid_;
   std::vector<std::int32_t> cell_of_, cell_start_, order_, count_;
   std::vector<unsigned char> big_;
-  bool recording_reactions_ = false;
   Vectors x_build_;
   PairHistory saved_, saved_rolling_;
 };
