@@ -551,6 +551,24 @@ TEST(DemThreads, RunsCutIntoPiecesGiveTheSameRun) {
   expect_same_state(a, b, 0.0);
 }
 
+TEST(DemThreads, StepsThatRecordAFrameChangeNoStep) {
+  // A frame's step keeps its reactions in their slots for the frame (they are cleared before
+  // the next force pass): recording contacts now and then must leave the run as it was.
+  dem::Settings s = settings(1e-4, -Vector3d::UnitZ());
+  s.skin = 0.002;
+  dem::Engine a = dropped_bed(100, 2.5, s, {}, 1.0), b = dropped_bed(100, 2.5, s, {}, 1.0);
+  a.run(600);
+  while (b.step() < 600) {
+    b.record_contacts(false);
+    b.run(49);
+    b.record_contacts(true);
+    b.run(1);
+    ASSERT_TRUE(b.contacts_recorded());
+  }
+  EXPECT_GT(a.neighbors().builds(), 5);
+  expect_same_state(a, b, 0.0);
+}
+
 TEST(DemPaths, EveryInstructionSetGivesTheBaselinesRunWithinRounding) {
   // The loops compiled for each instruction set this processor runs against the baseline
   // (2 lanes, no FMA), every combination of the contact's parts, on the stirred bed of the
