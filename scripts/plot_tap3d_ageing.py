@@ -1,12 +1,13 @@
 #!/usr/bin/env python3
 """Fig. 5 of the 3D tapping paper from the tables of scripts/pool_ageing.py: A(t, t_w) against
 t for each waiting time (up), and the collapse the fits of Eq. (6) give (down): A / A_inf
-against x = B ln(1 + t / tau) falls on x / (1 + x) for every t_w whose fit is defined.
+against x = B ln(1 + t / tau) falls on x / (1 + x) for every t_w whose fit is defined (status
+0). Also A against t / t_w, where curves of a simple ageing fall on one another.
 
     scripts/plot_tap3d_ageing.py RUN_DIR[/pooled.compaction.ageing.csv] OUT_PREFIX [--group NAME]
 
-reads pooled.<analyzer>.ageing.csv and the fits beside it; writes OUT_PREFIX_curves.svg and
-OUT_PREFIX_collapse.svg (the collapse only when a fit is defined).
+reads pooled.<analyzer>.ageing.csv and the fits beside it; writes OUT_PREFIX_curves.svg,
+OUT_PREFIX_scaled.svg and OUT_PREFIX_collapse.svg (the collapse only when a fit is defined).
 """
 import argparse
 import csv
@@ -51,7 +52,8 @@ def collapse(curves, fits, group):
     for r in fits:
         law = [float(r[k]) for k in ("A_inf", "B", "tau")]
         t_w = float(r["t_w"])
-        if r["group"] != group or not all(math.isfinite(v) for v in law) or t_w not in curves:
+        fitted = r.get("status", "0") == "0" and all(math.isfinite(v) for v in law)
+        if r["group"] != group or not fitted or t_w not in curves:
             continue
         a_inf, b, tau = law
         series[f"t_w = {t_w:g}"] = [(b * math.log1p(t / tau), a / a_inf) for t, a in curves[t_w]]
@@ -74,6 +76,8 @@ def main():
         refuse(f"{args.source}: expected rows of group {args.group!r}, found none")
     curves_chart({f"t_w = {t_w:g}": points for t_w, points in curves.items()}, "taps t since t_w",
                  "A(t, t_w) (R²)", args.prefix + "_curves.svg", log_x=True)
+    curves_chart({f"t_w = {t_w:g}": [(t / t_w, a) for t, a in points] for t_w, points in curves.items()},
+                 "t / t_w", "A(t, t_w) (R²)", args.prefix + "_scaled.svg", log_x=True)
     collapsed = collapse(curves, fits, args.group)
     if collapsed:
         curves_chart(collapsed, "x = B ln(1 + t/τ)", "A / A∞", args.prefix + "_collapse.svg")

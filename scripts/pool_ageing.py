@@ -11,11 +11,13 @@ Each realization is a sweep point that differs from the others only in the --ove
 swept values form a group. Rows of <analyzer>.ageing with the same (t_w, t) are pooled: A is
 the mean over the group's realizations, A_err the standard error across them (NaN for one).
 Eq. (6) is fitted per group and t_w by scipy's curve_fit, weighted by A_err when every point
-has one, from tau = 1 tap, B = 1 and the A_inf that puts the curve through the last point.
-Writes, beside the input:
+has one, from the best point of a grid of B and tau. Writes, beside the input:
 
   pooled.<analyzer>.ageing.csv       group, t_w, t, realizations, A, A_err
-  pooled.<analyzer>.ageing_fits.csv  group, t_w, points, A_inf, B, tau with errors (NaN: no fit)
+  pooled.<analyzer>.ageing_fits.csv  group, t_w, points, status, A_inf, B, tau with errors
+
+status: 0 fitted, 1 too few points, 2 no convergence, 3 not determined (an error larger than
+its parameter); the values are NaN unless fitted.
 
     scripts/pool_ageing.py out/tap3d_ageing
 """
@@ -55,26 +57,47 @@ def pool(tables):
     return out
 
 
+# What a fit's status says, as the compaction analyzer's fits: 0 fitted, 1 too few points,
+# 2 no convergence, 3 not determined (a parameter's error larger than its value: over taps
+# where A has not begun to level off, A_inf and tau_A / B_A run off together).
+FITTED, TOO_FEW, NO_CONVERGENCE, NOT_DETERMINED = 0, 1, 2, 3
+
+
+def grid_start(t, a, weight):
+    """Start values: over a grid of B and tau, the A_inf that fits best (linear least squares)
+    and the pair whose residual is smallest. From tau = 1 tap, B = 1, curve_fit ran out of
+    evaluations on runs where tau_A is hundreds of taps."""
+    best = (math.inf, None)
+    for b in np.logspace(-2, 3, 26):
+        for tau in np.logspace(-1, 5, 31):
+            shape = 1.0 - 1.0 / (1.0 + b * np.log1p(t / tau))
+            a_inf = np.sum(weight * shape * a) / np.sum(weight * shape * shape)
+            residual = np.sum(weight * (a - a_inf * shape) ** 2)
+            if residual < best[0]:
+                best = (residual, [a_inf, b, tau])
+    return best[1]
+
+
 def fit(rows):
-    """Eq. (6) to rows (t_w, t, n, A, A_err) of one t_w: values and errors, NaN when it fails."""
+    """Eq. (6) to rows (t_w, t, n, A, A_err) of one t_w: status, values and errors (NaN unless
+    fitted)."""
     t = np.array([r[1] for r in rows])
     a = np.array([r[3] for r in rows])
     err = np.array([r[4] for r in rows])
-    undefined = [math.nan] * 6
     if len(t) <= 3:
-        return undefined
-    log_time = math.log1p(max(t[-1], 1.0))
-    start = [a[-1] * (1.0 + log_time) / log_time, 1.0, 1.0]
+        return [TOO_FEW] + [math.nan] * 6
     weighted = bool(np.all(np.isfinite(err)) and np.all(err > 0))
+    sigma = err if weighted else None
     try:
-        p, cov = curve_fit(eq6, t, a, p0=start, sigma=err if weighted else None,
-                           absolute_sigma=weighted, bounds=([-np.inf, 0.0, 1e-9], np.inf))
+        p, cov = curve_fit(eq6, t, a, p0=grid_start(t, a, 1.0 / err**2 if weighted else np.ones_like(t)),
+                           sigma=sigma, absolute_sigma=weighted,
+                           bounds=([-np.inf, 0.0, 1e-9], np.inf), maxfev=10000)
     except (RuntimeError, ValueError):
-        return undefined
+        return [NO_CONVERGENCE] + [math.nan] * 6
     e = np.sqrt(np.diag(cov))
-    if not (np.all(np.isfinite(p)) and np.all(np.isfinite(e))):
-        return undefined
-    return [p[0], e[0], p[1], e[1], p[2], e[2]]
+    if not (np.all(np.isfinite(p)) and np.all(np.isfinite(e))) or np.any(e > np.abs(p)):
+        return [NOT_DETERMINED] + [math.nan] * 6
+    return [FITTED, p[0], e[0], p[1], e[1], p[2], e[2]]
 
 
 def write(path, provenance, header, rows):
@@ -109,7 +132,8 @@ def main():
     base = os.path.join(args.out, f"pooled.{args.analyzer}")
     write(base + ".ageing.csv", provenance, ["group", "t_w", "t", "realizations", "A", "A_err"], pooled_rows)
     write(base + ".ageing_fits.csv", provenance,
-          ["group", "t_w", "points", "A_inf", "A_inf_err", "B", "B_err", "tau", "tau_err"], fit_rows)
+          ["group", "t_w", "points", "status", "A_inf", "A_inf_err", "B", "B_err", "tau", "tau_err"],
+          fit_rows)
 
 
 if __name__ == "__main__":

@@ -25,14 +25,16 @@ with tempfile.TemporaryDirectory() as run:
                 a = a_inf * (1 - 1 / (1 + b * math.log1p(t / tau))) if math.isfinite(a_inf) else 0.01
                 f.write(f"all,{t_w},{t},10,{a!r},0.001\n")
     with open(os.path.join(run, "pooled.compaction.ageing_fits.csv"), "w") as f:
-        f.write("# made up\ngroup,t_w,points,A_inf,A_inf_err,B,B_err,tau,tau_err\n")
+        f.write("# made up\ngroup,t_w,points,status,A_inf,A_inf_err,B,B_err,tau,tau_err\n")
         for t_w, (a_inf, b, tau) in laws.items():
-            f.write(f"all,{t_w},40,{a_inf},0.001,{b},0.01,{tau},0.1\n")
+            f.write(f"all,{t_w},40,{0 if math.isfinite(a_inf) else 3},{a_inf},0.001,{b},0.01,{tau},0.1\n")
     prefix = os.path.join(run, "fig5")
     r = subprocess.run([sys.executable, script, run, prefix], capture_output=True, text=True)
     if r.returncode != 0:
         failures.append(f"plot: {r.returncode} {r.stderr}")
     else:
+        if len(series_ids(prefix + "_scaled.svg")) != 3:
+            failures.append(f"scaled: {sorted(series_ids(prefix + '_scaled.svg'))}")
         if len(series_ids(prefix + "_curves.svg")) != 3:
             failures.append(f"curves: {sorted(series_ids(prefix + '_curves.svg'))}")
         if len(series_ids(prefix + "_collapse.svg")) != 3:  # two fits and the master curve

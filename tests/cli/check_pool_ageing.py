@@ -1,7 +1,8 @@
 """scripts/pool_ageing.py on hand-made realizations: A is the mean of the realizations'
 squared differences and A_err the standard error across them; Eq. (6) fitted to pooled rows
-that follow it recovers A_inf, B and tau within three errors; a missing table is refused in
-one line with exit code 2."""
+that follow it recovers A_inf, B and tau within three errors, and rows growing in proportion
+to t are reported not determined (status 3, NaN); a missing table is refused in one line with
+exit code 2."""
 import csv
 import json
 import math
@@ -39,6 +40,8 @@ with tempfile.TemporaryDirectory() as out:
     for point, sign in ((0, 1.0), (1, -1.0)):
         lines = ["t_w,t,squared_difference", "3,1,0.5"]
         lines += [f"10,{t},{eq6(t) + sign * (1e-4 if t % 2 else -1e-4)!r}" for t in taps]
+        # Growing in proportion to t, no sign of levelling off: Eq. (6) is not determined.
+        lines += [f"20,{t},{1e-4 * t + sign * (1e-5 if t % 2 else -1e-5)!r}" for t in taps]
         write(out, f"point_00{point}.compaction.ageing.csv", lines)
     r = subprocess.run([sys.executable, script, out], capture_output=True, text=True)
     if r.returncode != 0:
@@ -52,8 +55,12 @@ with tempfile.TemporaryDirectory() as out:
         if abs(float(second["A"]) - eq6(1.0)) > 1e-12 or abs(float(second["A_err"]) - 1e-4) > 1e-12:
             failures.append(f"pooled row {second}: expected A {eq6(1.0)}, A_err 1e-4")
         fits = {float(f["t_w"]): f for f in rows(os.path.join(out, "pooled.compaction.ageing_fits.csv"))}
-        if not math.isnan(float(fits[3.0]["A_inf"])):
+        if not math.isnan(float(fits[3.0]["A_inf"])) or fits[3.0]["status"] != "1":
             failures.append(f"a fit of one point: {fits[3.0]}")
+        if fits[20.0]["status"] != "3" or not math.isnan(float(fits[20.0]["A_inf"])):
+            failures.append(f"a straight line fitted by Eq. (6): {fits[20.0]}")
+        if fits[10.0]["status"] != "0":
+            failures.append(f"the law's own points not fitted: {fits[10.0]}")
         fit = fits[10.0]
         for name, value in zip(("A_inf", "B", "tau"), truth):
             got, err = float(fit[name]), float(fit[name + "_err"])
