@@ -20,6 +20,7 @@ status: 0 fitted, 1 too few points, 2 no convergence, 3 not determined (an error
 its parameter); the values are NaN unless fitted.
 
     scripts/pool_ageing.py out/tap3d_ageing
+    scripts/pool_ageing.py out/ageing_part1 out/ageing_part2   (realizations run in parts)
 """
 import argparse
 import csv
@@ -107,29 +108,50 @@ def write(path, provenance, header, rows):
     print(f"{path}: {len(rows)} rows")
 
 
+def realization_tables(outs, analyzer, over):
+    """The other swept columns and {their values: [(path, header, rows)]} of the ageing tables
+    of every realization in the runs `outs` (one pipeline's realizations run in several
+    parts); a realization met twice is refused: pooled twice, it would weigh double."""
+    others, groups, seen = None, {}, {}
+    for out in outs:
+        _, header, points, run_others, by_key = sweep_groups(out, over)
+        if others is None:
+            others = run_others
+        elif run_others != others:
+            refuse(f"{out}: expected the swept parameters {others} of {outs[0]}, found {run_others}")
+        value_of = {int(p[header.index("point")]): p[header.index(over)] for p in points}
+        for key, members in by_key.items():
+            for point in members:
+                if (key, value_of[point]) in seen:
+                    refuse(f"{out}: point {point} ({over} = {value_of[point]:g}): expected each "
+                           f"realization once, found it in {seen[(key, value_of[point])]} too")
+                seen[(key, value_of[point])] = out
+                path = os.path.join(out, f"point_{point:03d}.{analyzer}.ageing.csv")
+                if not os.path.exists(path):
+                    refuse(f"{path}: expected the ageing table of point {point}, found no file")
+                groups.setdefault(key, []).append((path, *read_table(path)))
+    return others, groups
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("out", help="output directory of a sweep run over realizations")
+    ap.add_argument("out", nargs="+",
+                    help="output directory of a sweep run over realizations (several: its parts, "
+                         "pooled into the first)")
     ap.add_argument("--analyzer", default="compaction", help="name of the compaction analyzer in the pipeline")
     ap.add_argument("--over", default="source.params.replica", help="the swept parameter that numbers the realizations")
     args = ap.parse_args()
-    _, _, _, others, groups = sweep_groups(args.out, args.over)
+    others, groups = realization_tables(args.out, args.analyzer, args.over)
     provenance, pooled_rows, fit_rows = "", [], []
-    for gkey, members in sorted(groups.items()):
+    for gkey, found in sorted(groups.items()):
         group = ", ".join(f"{s.split('.')[-1]}={v:g}" for s, v in zip(others, gkey)) or "all"
-        tables = []
-        for point in members:
-            path = os.path.join(args.out, f"point_{point:03d}.{args.analyzer}.ageing.csv")
-            if not os.path.exists(path):
-                refuse(f"{path}: expected the ageing table of point {point}, found no file")
-            provenance, h, rows = read_table(path)
-            tables.append((path, h, rows))
-        rows = pool(tables)
+        provenance = found[-1][1]
+        rows = pool([(path, header, table) for path, _, header, table in found])
         pooled_rows += [[group, *r] for r in rows]
         for t_w in sorted({r[0] for r in rows}):
             one = [r for r in rows if r[0] == t_w]
             fit_rows.append([group, t_w, len(one), *fit(one)])
-    base = os.path.join(args.out, f"pooled.{args.analyzer}")
+    base = os.path.join(args.out[0], f"pooled.{args.analyzer}")
     write(base + ".ageing.csv", provenance, ["group", "t_w", "t", "realizations", "A", "A_err"], pooled_rows)
     write(base + ".ageing_fits.csv", provenance,
           ["group", "t_w", "points", "status", "A_inf", "A_inf_err", "B", "B_err", "tau", "tau_err"],
