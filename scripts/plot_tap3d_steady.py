@@ -17,14 +17,7 @@ import numpy as np
 
 from charts import curves_chart, line_chart
 from input_error import labelled_run, refuse
-from result_csv import read_table
-
-
-def columns(path, header, rows, *names):
-    for name in names:
-        if name not in header:
-            refuse(f"{path}: expected a column {name}, found {header[:4]}...")
-    return [[r[header.index(name)] for r in rows] for name in names]
+from result_csv import columns, read_table
 
 
 def last_window(header):

@@ -29,6 +29,14 @@ def read_table(path):
     return provenance, rows[0], numbers
 
 
+def columns(path, header, rows, *names):
+    """The named columns of a table read by read_table, each a list; a missing one refused."""
+    for name in names:
+        if name not in header:
+            refuse(f"{path}: expected a column {name}, found {header[:4]}...")
+    return [[r[header.index(name)] for r in rows] for name in names]
+
+
 def sweep_groups(out, over):
     """The sweep points of the run in `out` grouped by every swept parameter but `over` (the
     replicas or realizations pooled): (provenance, header, points, the other swept columns,

@@ -20,7 +20,7 @@ import sys
 import numpy as np
 
 from input_error import read_pipeline, refuse
-from result_csv import read_table
+from result_csv import columns, read_table
 
 WINDOW = 1000  # taps
 
@@ -60,17 +60,13 @@ def epsilon_of(run, given):
 def window_means(run):
     """<Phi^c> over [1000, 2000), [2000, 3000), ... up to the last tap, and the last tap's."""
     path = os.path.join(run, "stereology.per_frame.csv")
-    _, header, rows = read_table(path)
-    for name in ("tap", "phi_c"):
-        if name not in header:
-            refuse(f"{path}: expected a column {name}, found {header[:4]}...")
-    tap, phi = header.index("tap"), header.index("phi_c")
-    last = max(r[tap] for r in rows)
+    taps, phi = columns(path, *read_table(path)[1:], "tap", "phi_c")
+    last = max(taps)
     means = []
     for start in range(WINDOW, int(last), WINDOW):
-        inside = [r[phi] for r in rows if start <= r[tap] < start + WINDOW]
+        inside = [p for t, p in zip(taps, phi) if start <= t < start + WINDOW]
         means.append(sum(inside) / len(inside) if inside else math.nan)
-    last_phi = next(r[phi] for r in rows if r[tap] == last)
+    last_phi = phi[taps.index(last)]
     return int(last), last_phi, means
 
 
@@ -78,12 +74,8 @@ def drift_of(run, steady_from):
     """<Z>'s least-squares slope over the taps from steady_from on, per 1000 taps, and the
     root mean square of <Z> about that line."""
     path = os.path.join(run, "compaction.per_frame.csv")
-    _, header, rows = read_table(path)
-    for name in ("tap", "z_mean"):
-        if name not in header:
-            refuse(f"{path}: expected a column {name}, found {header[:4]}...")
-    steady = np.array([(r[header.index("tap")], r[header.index("z_mean")]) for r in rows
-                       if r[header.index("tap")] >= steady_from])
+    taps, z_mean = columns(path, *read_table(path)[1:], "tap", "z_mean")
+    steady = np.array([(t, z) for t, z in zip(taps, z_mean) if t >= steady_from])
     if len(steady) < 3:
         return math.nan, math.nan
     slope, intercept = np.polyfit(steady[:, 0], steady[:, 1], 1)
