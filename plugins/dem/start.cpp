@@ -1,10 +1,12 @@
 #include "start.hpp"
 
+#include <optional>
 #include <string>
+#include <utility>
 
 #include "granpipe/errors.hpp"
 #include "granpipe/format_number.hpp"
-#include "granpipe/frame_store.hpp"
+#include "granpipe/start_frame.hpp"
 #include "loose_lattice.hpp"
 #include "memory_check.hpp"
 #include "start_checks.hpp"
@@ -13,42 +15,18 @@ namespace granpipe::dem {
 
 namespace {
 
-// Frame `index` of the start file (-1: its last).
-Start start_from_file(const PluginContext& ctx, int species) {
-  // The reader's refusals (not HDF5, not H5MD, corrupt) name the file; the parameter too.
-  const FrameReader reader = [&] {
-    try {
-      return FrameReader(ctx.params.string("initial_file"));
-    } catch (const InputError& e) {
-      throw InputError(ctx.param("initial_file") + ": " + e.what());
-    }
-  }();
-  const std::int64_t index = ctx.params.integer("initial_frame");
-  const long frames = reader.frames();
-  if (frames == 0) {
-    throw InputError(ctx.param("initial_file") + ": " + reader.info().path +
-                     ": expected a file with frames, got none");
-  }
-  if (index >= frames) {
-    throw InputError(ctx.param("initial_frame") + ": expected a frame of " + reader.info().path +
-                     " (it holds " + std::to_string(frames) + "), got " + std::to_string(index));
-  }
-  const long chosen = index < 0 ? frames - 1 : static_cast<long>(index);
-  Frame f = reader.read(chosen);
-  check_memory(ctx.param("initial_file") + ": " + reader.info().path,
-               static_cast<double>(f.size()));
-  const std::string where =
-      ctx.param("initial_file") + ": " + reader.info().path + ": frame " + std::to_string(chosen);
+// The start file's frame, checked as a DEM start.
+Start start_from_file(const PluginContext& ctx, StartFrame start, int species) {
+  Frame& f = start.frame;
+  const std::string& where = start.where;
+  check_memory(where, static_cast<double>(f.size()));
   f.check(where);
   if (f.dim != 3) throw InputError(where + ": expected a 3D frame, got 2D");
   for (int axis = 0; axis < 3; ++axis) {
-    for (int side = 0; side < 2; ++side) {
-      if (f.container.boundary[static_cast<std::size_t>(axis)][static_cast<std::size_t>(side)] ==
-          Boundary::Periodic) {
-        throw InputError(where + ": container: " + to_string(static_cast<Wall>(2 * axis + side)) +
-                         ": expected a wall or an open side, got a periodic side (the DEM "
-                         "engine has no periodic boundaries)");
-      }
+    if (f.container.periodic(axis)) {
+      throw InputError(where + ": container: " + to_string(static_cast<Wall>(2 * axis)) +
+                       ": expected a wall or an open side, got a periodic side (the DEM "
+                       "engine has no periodic boundaries)");
     }
   }
   check_start_frame(f, where);
@@ -128,18 +106,13 @@ Start start_from_bed(const PluginContext& ctx, int species) {
 }  // namespace
 
 Start start_of(const PluginContext& ctx, int species) {
-  const bool file = !ctx.params.string("initial_file").empty();
+  std::optional<StartFrame> saved = read_start_frame(ctx);
   const bool bed = ctx.params.object("bed").integer("small") > 0;
-  if (!file && ctx.params.integer("initial_frame") != -1) {
-    throw InputError(ctx.param("initial_frame") +
-                     ": expected it only with initial_file (a frame of that file), got " +
-                     std::to_string(ctx.params.integer("initial_frame")) + " without one");
-  }
-  if (file == bed) {
+  if (saved.has_value() == bed) {
     throw InputError(ctx.params_path + ": expected either initial_file or bed.small > 0, got " +
-                     (file ? "both" : "neither"));
+                     (bed ? "both" : "neither"));
   }
-  return file ? start_from_file(ctx, species) : start_from_bed(ctx, species);
+  return saved ? start_from_file(ctx, std::move(*saved), species) : start_from_bed(ctx, species);
 }
 
 }  // namespace granpipe::dem

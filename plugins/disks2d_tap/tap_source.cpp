@@ -4,9 +4,11 @@
 #include <chrono>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <sstream>
 
-#include "granpipe/frame_store.hpp"
+#include "granpipe/errors.hpp"
+#include "granpipe/start_frame.hpp"
 #include "placement.hpp"
 
 namespace granpipe::disks2d_tap {
@@ -196,22 +198,10 @@ DiskPacking random_placement(const PluginContext& ctx, const Seeds& seeds) {
 }
 
 // A saved bed to continue from, e.g. one cooled slowly through the transition.
-DiskPacking saved_bed(const PluginContext& ctx) {
+DiskPacking saved_bed(const PluginContext& ctx, const StartFrame& start) {
   const Params& p = ctx.params;
   const std::string file = p.string("initial_file");
-  const FrameReader reader(file, "", p.real("radius"));
-  const long frames = reader.frames(), wanted = p.integer("initial_frame");
-  if (frames == 0) {
-    throw InputError(ctx.param("initial_file") + ": expected a file with frames, got none");
-  }
-  if (wanted >= frames) {
-    throw InputError(ctx.param("initial_frame") + ": expected -1 or a frame index below " +
-                     std::to_string(frames) + " (" + file + " holds " + std::to_string(frames) +
-                     " frames), got " + std::to_string(wanted));
-  }
-  const long index = wanted < 0 ? frames - 1 : wanted;
-  DiskPacking bed =
-      DiskPacking::from_frame(reader.read(index), file + ", frame " + std::to_string(index));
+  DiskPacking bed = DiskPacking::from_frame(start.frame, start.where);
   if (static_cast<std::int64_t>(bed.size()) != p.integer("N")) {
     throw InputError(ctx.param("N") + ": expected the " + std::to_string(bed.size()) +
                      " disks of " + file + ", got " + std::to_string(p.integer("N")));
@@ -236,8 +226,8 @@ TapSource::TapSource(const PluginContext& ctx)
       shaker_(static_cast<int>(ctx.params.integer("mc_loops")),
               ctx.params.choice<Dilation>("dilation"), ctx.params.choice<McOrder>("mc_order")) {
   const Params& p = ctx.params;
-  packing_ =
-      p.string("initial_file").empty() ? random_placement(ctx, replica_seeds(ctx)) : saved_bed(ctx);
+  const std::optional<StartFrame> start = read_start_frame(ctx, p.real("radius"));
+  packing_ = start ? saved_bed(ctx, *start) : random_placement(ctx, replica_seeds(ctx));
   if (p.real("delta") > packing_.min_radius()) {
     std::ostringstream s;
     s << ctx.param("delta") << ": expected at most the smallest radius " << packing_.min_radius()

@@ -4,7 +4,6 @@
 #include <sstream>
 
 #include "granpipe/errors.hpp"
-#include "granpipe/frame_store.hpp"
 #include "sphere_grid.hpp"
 
 namespace granpipe::spheres3d_tap {
@@ -70,28 +69,9 @@ void check_overlaps(const std::string& where, const std::vector<Eigen::Vector3d>
 
 }  // namespace
 
-SavedPacking read_saved_packing(const std::string& where, const std::string& file,
-                                const std::string& frame_where, long frame, const TapBox& box,
-                                long n) {
-  // The reader's refusals (not HDF5, not H5MD, corrupt) name the file; the parameter too.
-  const FrameReader reader = [&] {
-    try {
-      return FrameReader(file, "", box.radius);
-    } catch (const InputError& e) {
-      throw InputError(where + ": " + e.what());
-    }
-  }();
-  const long frames = reader.frames();
-  if (frames == 0)
-    throw InputError(where + ": " + file + ": expected a file with frames, got none");
-  if (frame >= frames) {
-    throw InputError(frame_where + ": expected a frame index below " + std::to_string(frames) +
-                     " (" + file + " holds " + std::to_string(frames) + " frames), got " +
-                     std::to_string(frame));
-  }
-  const long index = frame < 0 ? frames - 1 : frame;
-  const std::string at = where + ": " + file + ", frame " + std::to_string(index);
-  const Frame f = reader.read(index);
+SavedPacking read_saved_packing(const StartFrame& start, const TapBox& box, long n) {
+  const Frame& f = start.frame;
+  const std::string& at = start.where;
   if (f.dim != 3)
     throw InputError(at + ": expected a 3D frame, got " + std::to_string(f.dim) + "D");
   if (f.size() != n) {

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "granpipe/start_frame.hpp"
 #include "tap_box.hpp"
 
 namespace granpipe::spheres3d_tap {
@@ -15,16 +16,12 @@ struct SavedPacking {
   std::vector<Eigen::Vector3d> centres;
   std::int64_t step = 0;            // the frame's step: its tap, in a file of this source
   std::optional<std::int64_t> tap;  // its tap observable (a file of this source has one)
-  std::string at;                   // "<where>: <file>, frame <k>", for messages
+  std::string at;                   // "<where>: <file>: frame <k>", for messages
 };
 
-// The centres of frame `frame` (-1: the last) of `file`. Throws InputError naming
-// `frame_where` (that parameter) when the file has no such frame, and `where` (the file's
-// parameter) and the file when the frame is not 3D, holds other than
-// `n` spheres, other radii than the box's, another box, or spheres that overlap (by more
-// than 1e-9 R) or reach through the bottom or a wall.
-SavedPacking read_saved_packing(const std::string& where, const std::string& file,
-                                const std::string& frame_where, long frame, const TapBox& box,
-                                long n);
+// The centres of a start frame. Throws InputError beginning with `start.where` when the
+// frame is not 3D, holds other than `n` spheres, other radii than the box's, another box,
+// or spheres that overlap (by more than 1e-9 R) or reach through the bottom or a wall.
+SavedPacking read_saved_packing(const StartFrame& start, const TapBox& box, long n);
 
 }  // namespace granpipe::spheres3d_tap

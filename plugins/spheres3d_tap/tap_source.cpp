@@ -9,6 +9,7 @@
 
 #include "granpipe/container.hpp"
 #include "granpipe/errors.hpp"
+#include "granpipe/start_frame.hpp"
 #include "saved_packing.hpp"
 
 namespace granpipe::spheres3d_tap {
@@ -172,9 +173,6 @@ TapSource::TapSource(const PluginContext& ctx)
       schedule_{ctx.params.integer("save_every"), ctx.params.boolean("log_frames"),
                 ctx.params.boolean("save_start")},
       protocol_(epsilon_protocol(ctx)),
-      initial_file_(ctx.params.string("initial_file")),
-      initial_param_(ctx.param("initial_file")),
-      initial_frame_(ctx.params.integer("initial_frame")),
       continue_count_(ctx.params.boolean("continue_count")),
       seeds_(replica_seeds(ctx)),
       n_(ctx.params.integer("N")),
@@ -182,21 +180,16 @@ TapSource::TapSource(const PluginContext& ctx)
           "per_tap", Table({"tap", "epsilon", "leg", "mean_height", "mc_trials", "mc_acceptance"},
                            "every tap: its epsilon and ramp leg, <Z> after "
                            "redeposition, trial moves, accepted fraction"))) {
-  // Without a file they would change nothing: a start meant to continue a run would
+  const std::optional<StartFrame> start = read_start_frame(ctx, box_.radius);
+  // Without a file it would change nothing: a start meant to continue a run would
   // silently begin a new one.
-  if (initial_file_.empty() && initial_frame_ != -1) {
-    throw InputError(ctx.param("initial_frame") +
-                     ": expected it only with initial_file (a frame of that file), got " +
-                     std::to_string(initial_frame_) + " without one");
-  }
-  if (initial_file_.empty() && continue_count_) {
+  if (!start && continue_count_) {
     throw InputError(ctx.param("continue_count") +
                      ": expected it only with initial_file (counting on from a saved frame's "
                      "tap), got true without one");
   }
-  if (!initial_file_.empty()) {
-    saved_ = read_saved_packing(initial_param_, initial_file_, ctx.param("initial_frame"),
-                                initial_frame_, box_, static_cast<long>(n_));
+  if (start) {
+    saved_ = read_saved_packing(*start, box_, static_cast<long>(n_));
     if (continue_count_) check_saved_tap(*saved_);
   }
 }

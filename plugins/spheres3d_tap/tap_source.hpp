@@ -42,8 +42,6 @@ class TapSource : public Source {
   Redeposition redeposition_;
   SaveSchedule schedule_;
   EpsilonProtocol protocol_;
-  std::string initial_file_, initial_param_;
-  long initial_frame_ = -1;
   bool continue_count_ = false, started_ = false;
   Seeds seeds_;
   // The packing of initial_file, read and checked when the source is made (so that

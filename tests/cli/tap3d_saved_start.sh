@@ -46,7 +46,7 @@ with h5py.File(sys.argv[1], "r+") as f:
     last[7] = last[3] + [0.5, 0.0, 0.0]
     x[-1] = last
 PY
-"$expect" 2 "source\\.params\\.initial_file(=[^ ]*)?: .*overlap\\.h5, frame [0-9]+: spheres [0-9]+ and [0-9]+ overlap \\(centres [0-9.e-]+ apart, expected at least 2R = 2\\)" \
+"$expect" 2 "source\\.params\\.initial_file(=[^ ]*)?: .*overlap\\.h5: frame [0-9]+: spheres [0-9]+ and [0-9]+ overlap \\(centres [0-9.e-]+ apart, expected at least 2R = 2\\)" \
   -- "$exe" "$pipeline" "${small[@]}" --set source.params.initial_file="$work/overlap.h5" --out "$work/third"
 # initial_frame or continue_count without initial_file would change nothing: refused.
 "$expect" 2 "source\\.params\\.initial_frame=1: expected it only with initial_file \\(a frame of that file\\), got 1 without one$" \
@@ -54,7 +54,7 @@ PY
 "$expect" 2 "source\\.params\\.continue_count=true: expected it only with initial_file \\(counting on from a saved frame's tap\\), got true without one$" \
   -- "$exe" "$pipeline" "${small[@]}" --set source.params.continue_count=true --out "$work/fifth"
 # continue_count from the last tap or beyond it would run no tap (exit 0 before).
-"$expect" 2 "source\\.params\\.initial_file(=[^ ]*)?: .*first/frames\\.h5, frame 2: expected a saved tap from 0 to 1 for continue_count \\(the run counts to tap 2\\), got tap 2$" \
+"$expect" 2 "source\\.params\\.initial_file(=[^ ]*)?: .*first/frames\\.h5: frame 2: expected a saved tap from 0 to 1 for continue_count \\(the run counts to tap 2\\), got tap 2$" \
   -- "$exe" "$pipeline" "${small[@]}" --set source.params.initial_file="$work/first/frames.h5" \
   --set source.params.continue_count=true --out "$work/sixth"
 # A frame without a tap (another tool's), or whose step is not its tap, gives no tap to count on
@@ -69,21 +69,21 @@ with h5py.File(sys.argv[2], "r+") as f:
     step = f["particles/all/position/step"]
     step[...] = step[()] - 10
 PY
-"$expect" 2 "source\\.params\\.initial_file(=[^ ]*)?: .*no_tap\\.h5, frame 2: expected a frame with a tap observable \\(a frames\\.h5 of spheres3d_tap\\) for continue_count to count on from, got none \\(step 2\\)$" \
+"$expect" 2 "source\\.params\\.initial_file(=[^ ]*)?: .*no_tap\\.h5: frame 2: expected a frame with a tap observable \\(a frames\\.h5 of spheres3d_tap\\) for continue_count to count on from, got none \\(step 2\\)$" \
   -- "$exe" "$pipeline" "${small[@]}" --set source.params.initial_file="$work/no_tap.h5" \
   --set source.params.continue_count=true --set source.params.taps=6 --out "$work/seventh"
-"$expect" 2 "source\\.params\\.initial_file(=[^ ]*)?: .*shifted\\.h5, frame 2: expected the step equal to the tap for continue_count, got tap 2 at step -8$" \
+"$expect" 2 "source\\.params\\.initial_file(=[^ ]*)?: .*shifted\\.h5: frame 2: expected the step equal to the tap for continue_count, got tap 2 at step -8$" \
   -- "$exe" "$pipeline" "${small[@]}" --set source.params.initial_file="$work/shifted.h5" \
   --set source.params.continue_count=true --set source.params.taps=6 --out "$work/eighth"
 echo "not a packing" >"$work/packing.txt"
 "$expect" 2 "source\\.params\\.initial_file(=[^ ]*)?: .*packing\\.txt: not an HDF5 file \\(no HDF5 signature\\)$" \
   -- "$exe" "$pipeline" "${small[@]}" --set source.params.initial_file="$work/packing.txt" --out "$work/ninth"
 # The saved packing is read when the source is made: `validate` refuses it too.
-"$expect" 2 "source\\.params\\.initial_file(=[^ ]*)?: .*first/frames\\.h5, frame 2: expected a saved tap from 0 to 1 for continue_count \\(the run counts to tap 2\\), got tap 2$" \
+"$expect" 2 "source\\.params\\.initial_file(=[^ ]*)?: .*first/frames\\.h5: frame 2: expected a saved tap from 0 to 1 for continue_count \\(the run counts to tap 2\\), got tap 2$" \
   -- "$exe" validate "$pipeline" --set source.params.initial_file="$work/first/frames.h5" \
   --set source.params.continue_count=true
 # A frame the file does not hold is refused naming initial_frame.
-"$expect" 2 "source\\.params\\.initial_frame(=[^ ]*)?: expected a frame index below 3 \\(.*first/frames\\.h5 holds 3 frames\\), got 3$" \
+"$expect" 2 "source\\.params\\.initial_frame(=[^ ]*)?: expected -1 or a frame index below 3 \\(.*first/frames\\.h5 holds 3 frames\\), got 3$" \
   -- "$exe" validate "$pipeline" --set source.params.initial_file="$work/first/frames.h5" \
   --set source.params.initial_frame=3
 # A frames file without frames (its writer killed before the first) is refused naming

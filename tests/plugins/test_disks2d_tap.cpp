@@ -802,6 +802,19 @@ TEST(Disks2dTapSource, PlacesAtTheLargestAllowedInitialFraction) {
   }
 }
 
+// Without initial_file, initial_frame would change nothing: a start meant to continue a
+// run would silently begin a new one.
+TEST(Disks2dTapSource, AStartFrameWithoutAFileIsRefused) {
+  try {
+    run_source(nlohmann::json({{"N", 80}, {"initial_frame", 0}}), 3);
+    FAIL() << "a start frame without a file was accepted";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(),
+                 "params.initial_frame: expected it only with initial_file (a frame of that "
+                 "file), got 0 without one");
+  }
+}
+
 TEST(Disks2dTapSource, StartsFromAFrameOfASavedFile) {
   const fs::path dir =
       fs::temp_directory_path() / ("granpipe_disks2d_tap_" + std::to_string(getpid()));
