@@ -32,7 +32,7 @@ import sys
 
 from charts import loglog_chart
 from input_error import refuse
-from result_csv import read_table
+from result_csv import read_scalars, read_table
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 COLLISION_FRACTIONS = [0.01, 0.02, 0.04, 0.06, 0.08]
@@ -80,13 +80,6 @@ def read_cpu_log(out):
         return {name: float(seconds) for name, seconds in csv.reader(f)}
 
 
-def scalars(path):
-    """name -> value of a <group>.scalars.csv."""
-    with open(path) as f:
-        return {row["name"]: float(row["value"])
-                for row in csv.DictReader(line for line in f if not line.startswith("#"))}
-
-
 def collision_geometry(pipeline):
     """t_c of Eq. (10) for the collision pipeline's pair (the analyzer's k_n, gamma_n and
     densities, the radii and species of the start frame) and the time until the spheres touch."""
@@ -121,11 +114,12 @@ def collision(args, cpu_log):
             dt *= 1.0 + phase / PHASES / (approach / dt)
             name = f"dt_tc_{fraction:g}_phase{phase}"
             seconds = run_point(args, pipeline, name, {"source.params.dt": dt}, cpu_log)
-            s = scalars(os.path.join(args.out, name, "collision.scalars.csv"))
+            s = read_scalars(os.path.join(args.out, name, "collision.scalars.csv"))
             rows.append({"dt_over_tc": dt / t_c, "phase": phase, "dt": dt, "cpu_seconds": seconds,
-                         "steps_per_contact": t_c / dt, "contact_time": s["contact_time"],
-                         "contact_time_rel_error": s["contact_time_rel_error"], "restitution": s["restitution"],
-                         "restitution_rel_error": s["restitution_rel_error"]})
+                         "steps_per_contact": t_c / dt, "contact_time": s["contact_time"][0],
+                         "contact_time_rel_error": s["contact_time_rel_error"][0],
+                         "restitution": s["restitution"][0],
+                         "restitution_rel_error": s["restitution_rel_error"][0]})
     series = {}
     for q, label in (("contact_time_rel_error", "contact time"), ("restitution_rel_error", "restitution")):
         for fraction in COLLISION_FRACTIONS:

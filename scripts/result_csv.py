@@ -7,26 +7,47 @@ import os
 from input_error import read_pipeline, refuse
 
 
-def read_table(path):
-    """Returns (provenance line or "", header, rows of floats)."""
+def read_rows(path, what="table"):
+    """Returns (provenance line or "", header, rows of strings)."""
     try:
         with open(path) as f:
             lines = f.readlines()
     except OSError as e:
         # A run of a single point writes no sweep.points.csv: say so where that is the file.
         hint = " (a run of one point writes none)" if path.endswith("sweep.points.csv") else ""
-        refuse(f"{path}: expected a granpipe table, found none: {e.strerror}{hint}")
+        refuse(f"{path}: expected a granpipe {what}, found none: {e.strerror}{hint}")
     provenance = lines[0].strip() if lines and lines[0].startswith("#") else ""
     rows = list(csv.reader(line for line in lines if not line.startswith("#")))
     if not rows:
         refuse(f"{path}: expected a header row, found an empty table")
+    return provenance, rows[0], rows[1:]
+
+
+def read_table(path):
+    """Returns (provenance line or "", header, rows of floats)."""
+    provenance, header, rows = read_rows(path)
     numbers = []
-    for k, row in enumerate(rows[1:], start=1):
+    for k, row in enumerate(rows, start=1):
         try:
             numbers.append([float(v) for v in row])
         except ValueError:
             refuse(f"{path}: data row {k}: expected numbers, found {row}")
-    return provenance, rows[0], numbers
+    return provenance, header, numbers
+
+
+def read_scalars(path):
+    """{name: (value, uncertainty)} of a <group>.scalars.csv (uncertainty nan where none)."""
+    _, header, rows = read_rows(path, "scalars table")
+    if header[:3] != ["name", "value", "uncertainty"]:
+        refuse(f"{path}: expected the columns name,value,uncertainty, found {','.join(header)}")
+    table = {}
+    for k, row in enumerate(rows, start=1):
+        try:
+            table[row[0]] = (float(row[1]), float(row[2]))
+        except (ValueError, IndexError):
+            refuse(f"{path}: data row {k}: expected a name, a value and an uncertainty, "
+                   f"found {row}")
+    return table
 
 
 def columns(path, header, rows, *names):

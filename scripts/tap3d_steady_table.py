@@ -20,28 +20,9 @@ import sys
 import numpy as np
 
 from input_error import read_pipeline, refuse
-from result_csv import columns, read_table
+from result_csv import columns, read_scalars, read_table
 
 WINDOW = 1000  # taps
-
-
-def scalars(run, analyzer):
-    """{name: (value, uncertainty)} of <analyzer>.scalars.csv."""
-    path = os.path.join(run, f"{analyzer}.scalars.csv")
-    with_names = [line for line in open_lines(path) if not line.startswith("#")]
-    table = {}
-    for line in with_names[1:]:
-        name, value, uncertainty, _ = (line.rstrip("\n").split(",") + [""] * 4)[:4]
-        table[name] = (float(value), float(uncertainty))
-    return table
-
-
-def open_lines(path):
-    try:
-        with open(path) as f:
-            return f.readlines()
-    except OSError as e:
-        refuse(f"{path}: expected a granpipe scalars table, found none: {e.strerror}")
 
 
 def epsilon_of(run, given):
@@ -87,7 +68,7 @@ def row_of(argument):
     run, _, given = argument.partition("=")
     eps = epsilon_of(run, given)
     last, phi_last, means = window_means(run)
-    c = scalars(run, "compaction")
+    c = read_scalars(os.path.join(run, "compaction.scalars.csv"))
     for name in ("phi_b_ss", "z_mean_sigma", "spectrum_slope_z_mean", "steady_from"):
         if name not in c:
             refuse(f"{run}/compaction.scalars.csv: expected {name}, found none")

@@ -4,6 +4,7 @@ or from RUN=EPSILON, a run without either is refused in one line, and the three 
 drawn (one series per run in the spectra, gid series-<k>)."""
 import json
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -72,6 +73,12 @@ with tempfile.TemporaryDirectory() as work:
     r = subprocess.run([sys.executable, table_script, out, c], capture_output=True, text=True)
     if r.returncode != 2 or not r.stderr.startswith(f"{c}/pipeline.json: expected source.params.epsilon"):
         failures.append(f"no epsilon: {r.returncode} {r.stderr}")
+    # A per-frame table where the scalars should be: refused, naming the file and its columns.
+    shutil.copy(os.path.join(c, "compaction.per_frame.csv"), os.path.join(c, "compaction.scalars.csv"))
+    r = subprocess.run([sys.executable, table_script, out, c + "=0.01"], capture_output=True, text=True)
+    if r.returncode != 2 or r.stderr.strip() != (
+            f"{c}/compaction.scalars.csv: expected the columns name,value,uncertainty, found frame,tap,z_mean"):
+        failures.append(f"not a scalars table: {r.returncode} {r.stderr}")
     prefix = os.path.join(work, "fig")
     r = subprocess.run([sys.executable, plot_script, out, prefix, a + "=first", b + "=second"],
                        capture_output=True, text=True)
@@ -86,4 +93,4 @@ with tempfile.TemporaryDirectory() as work:
 if failures:
     print("FAIL", *failures, sep="\n")
     sys.exit(1)
-print("tap3d_steady_table: windows exact, epsilon from the pipeline or the argument, refusal; three figures")
+print("tap3d_steady_table: windows exact, epsilon from the pipeline or the argument, refusals; three figures")
