@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "granpipe/bin_count.hpp"
 #include "granpipe/errors.hpp"
 
 namespace granpipe::arches {
@@ -12,6 +13,9 @@ void SpanHistogram::add(double span) {
   if (!(span >= 0.0) || !std::isfinite(span)) {
     throw InternalError("span histogram: expected a finite span >= 0, got " + std::to_string(span));
   }
+  // The histogram grows to the widest span: refused before a bin width far too small for it
+  // asks for more memory than there is.
+  check_bin_count(span, width_, "arches.span_bin", "bins of the span distributions");
   const auto bin = static_cast<std::size_t>(std::floor(span / width_));
   if (counts_.size() <= bin) counts_.resize(bin + 1, 0);
   ++counts_[bin];

@@ -5,6 +5,7 @@
 #include <numeric>
 #include <sstream>
 
+#include "granpipe/bin_count.hpp"
 #include "granpipe/contacts_by_distance.hpp"
 #include "granpipe/cut_profile.hpp"
 #include "lowest_surface.hpp"
@@ -145,6 +146,8 @@ PackingMeasurement measure_packing(const Frame& frame, FrameCache& cache,
     // The profile covers the whole bed, also when the region stops at the lowest surface.
     const Heights h =
         vertical_range(frame, s.top == Top::LowestSurface ? Top::Surface : s.top, region);
+    check_bin_count((h.top - h.base) / m.diameter, s.profile_step, "packing.profile_step",
+                    "cuts of the profile");
     const int count = static_cast<int>(std::ceil((h.top - h.base) / step - 1e-9));
     m.profile = cut_fractions(frame, region, frame.dim - 1, h.base, step, count);
   }
@@ -154,6 +157,7 @@ PackingMeasurement measure_packing(const Frame& frame, FrameCache& cache,
     // quantity phi measures.
     const int v = frame.dim - 1;
     const double height = region.hi[v] - region.lo[v];
+    check_bin_count(height / m.diameter, s.cuts_step, "packing.cuts_step", "cuts of phi_cuts");
     const int cuts =
         std::max(1, static_cast<int>(std::ceil(height / (s.cuts_step * m.diameter) - 1e-9)));
     const std::vector<double> f =

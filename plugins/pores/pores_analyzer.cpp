@@ -2,8 +2,10 @@
 
 #include <cmath>
 #include <cstdint>
+#include <string>
 #include <vector>
 
+#include "granpipe/bin_count.hpp"
 #include "granpipe/random.hpp"
 #include "granpipe/region.hpp"
 #include "pore_region.hpp"
@@ -44,7 +46,7 @@ Schema schema() {
   s.integer("probes", 0,
             "random probes of P0(sigma) per frame, uniform in the region cut to the box "
             "container; 0: P0 not measured")
-      .min(0.0);
+      .range(0.0, 1e8);
   s.real("sigma_step", 0.05, "step of the grid of P0(sigma)").range(1e-4, 1.0);
   s.real("sigma_max", 1.0, "largest probe radius of P0(sigma)")
       .range(0.0, 10.0)
@@ -82,12 +84,22 @@ PoreSettings settings_from(const Params& p, int threads) {
   return s;
 }
 
+// The bin width parameter `width`, refused when its histogram up to `top` would have more
+// bins than memory holds (checked before the histogram is made).
+double checked_bin_width(const PluginContext& ctx, const std::string& width,
+                         const std::string& top) {
+  const double w = ctx.params.real(width);
+  check_bin_count(ctx.params.real(top), w, ctx.param(width), "bins up to " + top);
+  return w;
+}
+
 }  // namespace
 
 PoresAnalyzer::PoresAnalyzer(const PluginContext& ctx)
     : settings_(settings_from(ctx.params, ctx.threads)),
-      statistics_(ctx.params.real("bin_width"), ctx.params.real("xi_max")),
-      volumes_(ctx.params.real("v_bin_width"), ctx.params.real("v_max"), ctx.params.real("v_tail")),
+      statistics_(checked_bin_width(ctx, "bin_width", "xi_max"), ctx.params.real("xi_max")),
+      volumes_(checked_bin_width(ctx, "v_bin_width", "v_max"), ctx.params.real("v_max"),
+               ctx.params.real("v_tail")),
       seeds_(ctx.seeds),
       probes_(static_cast<long>(ctx.params.integer("probes"))),
       void_probability_(ctx.params.real("sigma_step"), ctx.params.real("sigma_max")),

@@ -669,3 +669,21 @@ TEST(ArchesAnalyzer, PublishesTheArchOfEachDisk) {
   EXPECT_GE(arch[3], 0);
   EXPECT_GE(arch[5], 0);
 }
+
+// A span bin far too small for the spans asked for 10^12 bins and more: std::bad_alloc,
+// exit 1. Refused at the first span that would need them.
+TEST(ArchesAnalyzer, ASpanBinTooSmallForTheSpansIsRefused) {
+  const auto ctx = context(0, 1e-12);
+  ga::ArchesAnalyzer analyzer(*ctx);
+  granpipe::FrameCache cache;
+  try {
+    analyzer.consume(lattice_with_arches(), cache);
+    FAIL() << "expected an InputError";
+  } catch (const granpipe::InputError& e) {
+    EXPECT_EQ(
+        std::string(e.what()).rfind(
+            "arches.span_bin: expected at most 10000000 bins of the span distributions, got ", 0),
+        0u)
+        << e.what();
+  }
+}

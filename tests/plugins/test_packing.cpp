@@ -426,3 +426,34 @@ TEST(Packing, PublishesTheCoordinationOfEachParticle) {
     EXPECT_TRUE((c == z).all()) << name << ": " << c.minCoeff() << " to " << c.maxCoeff();
   }
 }
+
+// A step far too small for the bed (a typo, or another unit) asked for more cuts than an
+// int counts: the count wrapped around to an empty profile, or one cut for phi_cuts
+// (0.71 where phi is 0.64), exit 0. It is refused before anything is cut.
+TEST(Packing, StepsTooSmallForTheBedAreRefused) {
+  const Frame f = one("sc", "walls");
+  PackingSettings profile;
+  profile.profile_step = 1e-12;
+  try {
+    measure(f, profile);
+    FAIL() << "expected an InputError";
+  } catch (const granpipe::InputError& e) {
+    EXPECT_STREQ(e.what(),
+                 "packing.profile_step: expected at most 10000000 cuts of the profile, got 4e+12 "
+                 "(4 in steps of 1e-12)");
+  }
+  PackingSettings cuts;
+  cuts.cuts_step = 1e-12;
+  try {
+    measure(f, cuts);
+    FAIL() << "expected an InputError";
+  } catch (const granpipe::InputError& e) {
+    EXPECT_STREQ(e.what(),
+                 "packing.cuts_step: expected at most 10000000 cuts of phi_cuts, got 4e+12 (4 in "
+                 "steps of 1e-12)");
+  }
+  // The largest counts allowed still measure.
+  PackingSettings fine;
+  fine.profile_step = fine.cuts_step = 1e-3;
+  EXPECT_NEAR(measure(f, fine).phi_cuts, measure(f).phi, 1e-3);
+}

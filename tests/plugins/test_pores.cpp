@@ -460,3 +460,27 @@ TEST(PoresVolume, TailFitRecoversAnExponentialAndRhoIntegratesToNu) {
   EXPECT_NEAR(fit.value[1], lambda, 3.0 * fit.error[1]);
   EXPECT_LT(fit.error[1], 0.05 * lambda);
 }
+
+// A bin width far too small for its range asked for 10^9 bins and more: the run stopped
+// with std::bad_alloc, exit 1 (or took the machine's memory). Refused when made, as are
+// more probes per frame than memory holds.
+TEST(Pores, HistogramsOfMoreBinsThanMemoryHoldsAreRefused) {
+  const auto message = [](const nlohmann::json& params) -> std::string {
+    try {
+      const auto ctx = granpipe::test::make_context("pores", params);
+      granpipe::test::installed_plugins().find("pores")->make_analyzer(*ctx);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "accepted";
+  };
+  EXPECT_EQ(message({{"bin_width", 1e-6}, {"xi_max", 1000}}),
+            "params.bin_width: expected at most 10000000 bins up to xi_max, got "
+            "1e+09 (1000 in steps of 1e-06)");
+  EXPECT_EQ(message({{"v_bin_width", 1e-6}, {"v_max", 100}}),
+            "params.v_bin_width: expected at most 10000000 bins up to v_max, got "
+            "1e+08 (100 in steps of 1e-06)");
+  EXPECT_EQ(message({{"probes", std::int64_t{1000000000000}}}),
+            "test: params.probes: expected an integer in [0, 100000000], got 1000000000000");
+  EXPECT_EQ(message({{"bin_width", 1e-4}, {"xi_max", 1000}}), "accepted");
+}

@@ -125,3 +125,18 @@ TEST(StereologyAnalyzer, ACylinderIsRefused) {
   f.container.shape = ContainerShape::Cylinder;
   EXPECT_THROW(a.consume(f, cache), InputError);
 }
+
+// A step far too small for the bed asked for more bins than an int counts: the count
+// wrapped around to a one-bin profile, exit 0. It is refused before anything is cut.
+TEST(ProfileMeasure, AStepTooSmallForTheBedIsRefused) {
+  ProfileSettings s;
+  s.step = 1e-12;
+  try {
+    measure_profiles(cubic_layers(8, 10), s);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(),
+                 "stereology.step: expected at most 10000000 bins of the vertical profile, got "
+                 "2e+13 (20 in steps of 1e-12)");
+  }
+}

@@ -1,0 +1,19 @@
+#pragma once
+// The size of a histogram, profile or grid whose step is a parameter. A step given in the
+// wrong unit, or mistyped, asks for more bins than memory holds or than an int counts (a
+// count cast to int wrapped around to none or one bin: an empty profile or a one-cut
+// "average", exit 0). Such a count is refused before anything is allocated.
+#include <string>
+
+namespace granpipe {
+
+// The most bins (cuts, grid points) one histogram or profile may have.
+inline constexpr double kMaxBins = 1e7;
+
+// Throws InputError when `extent / step` is above kMaxBins or not a number:
+// "<what>: expected at most 10000000 <noun>, got <extent / step> (<extent> in steps of
+// <step>)". `extent` and `step` in the parameter's unit, `what` names the parameter.
+void check_bin_count(double extent, double step, const std::string& what,
+                     const std::string& noun = "bins");
+
+}  // namespace granpipe
