@@ -6,6 +6,7 @@
 
 #include "granpipe/cut_profile.hpp"
 #include "granpipe/errors.hpp"
+#include "granpipe/format_number.hpp"
 #include "granpipe/region.hpp"
 
 namespace granpipe {
@@ -67,7 +68,9 @@ GlobalFractions global_fractions(const Frame& frame, const StereologySettings& s
   g.radius = frame.radius().mean();
   const Region cross = container_region(frame);
   const double r = g.radius;
-  g.phi_b = fraction_between(frame, cross, 0.0, s.bulk_top * r);
+  const int v = frame.dim - 1;
+  g.top = (frame.position().col(v) + frame.radius()).maxCoeff() - frame.container.lo[v];
+  if (s.bulk_top * r <= g.top) g.phi_b = fraction_between(frame, cross, 0.0, s.bulk_top * r);
   g.height_c = quantile_height(frame, s.fraction);
   const double layer = s.perturbed_top * r, h = g.height_c;
   if (h > layer) {
@@ -76,6 +79,21 @@ GlobalFractions global_fractions(const Frame& frame, const StereologySettings& s
               h;
   }
   return g;
+}
+
+std::string undefined_fractions(const GlobalFractions& g, const StereologySettings& s) {
+  const auto radii = [&](double length) { return format_number(length / g.radius) + " R"; };
+  std::string why;
+  if (std::isnan(g.phi_b)) {
+    why = "phi_b is undefined (NaN): bulk_top, " + format_number(s.bulk_top) +
+          " R, reaches above the highest particle top, " + radii(g.top);
+  }
+  if (std::isnan(g.phi_c)) {
+    why += std::string(why.empty() ? "" : "; ") +
+           "phi_c is undefined (NaN): its zone's top height_c, " + radii(g.height_c) +
+           ", is not above perturbed_top, " + format_number(s.perturbed_top) + " R";
+  }
+  return why;
 }
 
 }  // namespace granpipe

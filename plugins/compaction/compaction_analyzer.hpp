@@ -23,6 +23,7 @@ class CompactionAnalyzer : public Analyzer {
   ReportSettings report_;
   Log& log_;
   long frames_ = 0;
+  bool warned_undefined_ = false;
   Series series_;
   StreamedTable per_frame_;
 };

@@ -28,6 +28,7 @@ FramePoint measure_frame(const Frame& frame, const StereologySettings& settings,
   p.phi_b = g.phi_b;
   p.phi_c = g.phi_c;
   p.height_c = g.radius > 0.0 ? g.height_c / g.radius : std::nan("");
+  if (frame.size() > 0) p.undefined = undefined_fractions(g, settings);
   return p;
 }
 

@@ -15,6 +15,7 @@ struct FramePoint {
   double phi_b = 0.0;   // NaN: undefined for this frame (stereology.hpp)
   double phi_c = 0.0;
   double height_c = 0.0;  // top of phi_c's zone above the bottom, in mean radii
+  std::string undefined;  // why phi_b or phi_c is NaN, for a warning ("" when both are defined)
 };
 
 // <Z> in mean radii R above the container's bottom (its base, where a driven base

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "granpipe/format_number.hpp"
 #include "granpipe/stereology.hpp"
 
 namespace granpipe::stereology {
@@ -74,8 +75,9 @@ void StereologyAnalyzer::consume(const Frame& frame, FrameCache& /*cache*/) {
     log_.warn("stereology: Eq. (7) not fitted to the first frame's profile (" +
               describe(m.fit.status) + "); its columns are NaN where that happens");
   }
+  warn_undefined(frame, m);
   transversal_step_ = m.transversal_step;
-  phi_b_.add(m.global.phi_b);
+  if (std::isfinite(m.global.phi_b)) phi_b_.add(m.global.phi_b);
   if (std::isfinite(m.global.phi_c)) phi_c_.add(m.global.phi_c);
   lateral_.add(m.lateral);
   if (std::isfinite(m.central)) central_.add(m.central);
@@ -103,6 +105,20 @@ void StereologyAnalyzer::consume(const Frame& frame, FrameCache& /*cache*/) {
   }
   per_frame_.add_row(row);
   ++frames_;
+}
+
+// NaN is never a silent answer: the first frame where a fraction is undefined says why.
+void StereologyAnalyzer::warn_undefined(const Frame& frame, const ProfileMeasurement& m) {
+  std::string why = undefined_fractions(m.global, settings_.global);
+  if (std::isnan(m.central)) {
+    why += std::string(why.empty() ? "" : "; ") +
+           "phi_central is undefined (NaN): the box is no wider than two bands of lateral_band, " +
+           format_number(settings_.lateral_band) + " R";
+  }
+  if (why.empty() || warned_undefined_) return;
+  warned_undefined_ = true;
+  log_.warn("stereology: frame " + std::to_string(frames_) + " (step " +
+            std::to_string(frame.step) + "): " + why + "; said for the first such frame only");
 }
 
 void StereologyAnalyzer::add_profiles(Results& results) const {

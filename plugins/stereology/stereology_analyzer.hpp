@@ -22,12 +22,14 @@ class StereologyAnalyzer : public Analyzer {
   void finish(Results& results) override;
 
  private:
+  void warn_undefined(const Frame& frame, const ProfileMeasurement& m);
   void add_profiles(Results& results) const;
   void add_mean_fit(Results& results) const;
 
   ProfileSettings settings_;
   Log& log_;
   long frames_ = 0;
+  bool warned_undefined_ = false;
   double transversal_step_ = 0.0;
   std::optional<ProfileMeasurement> first_;
   GlobalFractions last_;

@@ -173,8 +173,18 @@ TEST(GlobalFractions, AreUndefinedWithoutParticlesOrAZoneAboveTheLayer) {
   EXPECT_TRUE(std::isnan(none.phi_c));
   const Frame one_layer = cubic_layers(2, 1);  // centres at height 1 = the layer's top
   const GlobalFractions g = global_fractions(one_layer, {});
-  EXPECT_NEAR(g.phi_b, kPi / 6.0 / 2.0, 1e-13);
   EXPECT_TRUE(std::isnan(g.phi_c));
+  // bulk_top, 4 R, above the bed's top, 2 R: the slab is half empty space, no bulk (its
+  // fraction was pi/12, exit 0).
+  EXPECT_TRUE(std::isnan(g.phi_b));
+  EXPECT_EQ(undefined_fractions(g, {}),
+            "phi_b is undefined (NaN): bulk_top, 4 R, reaches above the highest particle top, "
+            "2 R; phi_c is undefined (NaN): its zone's top height_c, 1 R, is not above "
+            "perturbed_top, 1 R");
+  StereologySettings bed;
+  bed.bulk_top = 2.0;  // up to the top exactly: a bulk
+  EXPECT_NEAR(global_fractions(one_layer, bed).phi_b, kPi / 6.0, 1e-13);
+  EXPECT_EQ(undefined_fractions(global_fractions(cubic_layers(4, 10), {}), {}), "");
 }
 
 TEST(GlobalFractions, RefuseACylinder) {

@@ -140,3 +140,30 @@ TEST(ProfileMeasure, AStepTooSmallForTheBedIsRefused) {
                  "2e+13 (20 in steps of 1e-12)");
   }
 }
+
+// A bed lower than bulk_top and a box no wider than two lateral bands: phi_b was the
+// fraction of a slab partly empty and phi_central NaN, both with exit 0 and no word. phi_b
+// is NaN now, left out of the mean as phi_c is, and the first such frame says why.
+TEST(StereologyAnalyzer, UndefinedFractionsAreNaNAndSaidOnce) {
+  const auto ctx = granpipe::test::make_context(schema(), {{"bulk_top", 40.0}});
+  ctx->keep_log();
+  StereologyAnalyzer a(*ctx);
+  FrameCache cache;
+  for (std::int64_t tap : {0, 10}) a.consume(cubic_layers(4, 10, tap), cache);
+  Results r;
+  a.finish(r);
+  EXPECT_TRUE(std::isnan(r.scalar("phi_b").value));
+  EXPECT_TRUE(std::isnan(r.scalar("phi_b_last").value));
+  EXPECT_TRUE(std::isnan(r.scalar("phi_central").value));
+  EXPECT_NEAR(r.scalar("phi_c").value, kPi / 6.0 * (16.0 / 11.0 + 16.0) / 17.0, 1e-13);
+  const std::vector<std::string> lines = ctx->logged_lines();
+  ASSERT_GE(lines.size(), 1u);
+  EXPECT_EQ(lines[0],
+            "warning: stereology: frame 0 (step 0): phi_b is undefined (NaN): bulk_top, 40 R, "
+            "reaches above the highest particle top, 20 R; phi_central is undefined (NaN): the "
+            "box is no wider than two bands of lateral_band, 7 R; said for the first such frame "
+            "only");
+  for (std::size_t k = 1; k < lines.size(); ++k) {
+    EXPECT_EQ(lines[k].find("undefined (NaN)"), std::string::npos) << lines[k];
+  }
+}

@@ -7,6 +7,8 @@
 //    perturbed_factor (the perturbed-zone model: 16/11 for spheres on a plane), i.e.
 //    phi_c = [factor * Phi(0, R1) R1 + Phi(R1, H) (H - R1)] / H.
 // Heights are above the container's bottom, in mean particle radii R.
+#include <string>
+
 #include "granpipe/frame.hpp"
 #include "granpipe/params.hpp"
 
@@ -20,10 +22,13 @@ struct StereologySettings {
 };
 
 struct GlobalFractions {
-  double radius = 0.0;    // the mean radius R, the unit of the settings
-  double phi_b = 0.0;     // NaN when the frame has no particles
+  double radius = 0.0;  // the mean radius R, the unit of the settings
+  // NaN when the frame has no particles, or when bulk_top reaches above the highest
+  // particle top (the slab would be partly empty space above the bed: no bulk)
+  double phi_b = 0.0;
   double phi_c = 0.0;     // NaN when the zone is not above the perturbed layer
   double height_c = 0.0;  // H, the top of phi_c's zone above the bottom (length)
+  double top = 0.0;       // the highest particle top above the bottom (length)
 };
 
 // The four settings as parameters of an analyzer's schema (bulk_top, perturbed_top,
@@ -34,5 +39,11 @@ StereologySettings stereology_settings(const Params& params);
 // Throws InputError for a container that is not a box (the cuts need a rectangular
 // cross-section).
 GlobalFractions global_fractions(const Frame& frame, const StereologySettings& settings);
+
+// Why phi_b or phi_c of a frame with particles is NaN, in words for a warning ("" when
+// both are defined): "phi_b is undefined (NaN): bulk_top, 1000 R, reaches above the
+// highest particle top, 11.9 R".
+std::string undefined_fractions(const GlobalFractions& fractions,
+                                const StereologySettings& settings);
 
 }  // namespace granpipe
