@@ -18,6 +18,8 @@ void inspect(const std::string& path, long max_rows);
 struct ReportOutcome {
   bool written = false;
   std::string why_not;  // one line when not written
+  // The script refused the run directory (exit 2) and printed the one line that says why.
+  bool refused = false;
 };
 ReportOutcome write_report(const std::filesystem::path& run_dir);
 

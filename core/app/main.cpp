@@ -3,9 +3,12 @@
 #include <charconv>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <iostream>
+#include <system_error>
 
 #include "commands.hpp"
+#include "granpipe/errors.hpp"
 #include "granpipe/log.hpp"
 #include "granpipe/pipeline.hpp"
 #include "granpipe/plugin_loader.hpp"
@@ -50,6 +53,17 @@ std::string one_line(const std::string& message) {
     }
   }
   return out;
+}
+
+// granpipe report DIR: a DIR that is no directory was blamed on DIR/pipeline.json, and a
+// second line blamed the report script.
+void check_run_directory(const std::string& dir) {
+  std::error_code error;
+  const std::filesystem::file_status status = std::filesystem::status(dir, error);
+  if (std::filesystem::is_directory(status)) return;
+  throw granpipe::InputError(
+      dir + ": expected a run's output directory, got " +
+      (status.type() == std::filesystem::file_type::not_found ? "no such directory" : "a file"));
 }
 
 // --out "": an empty path meant the pipeline's own output directory, which --overwrite
@@ -130,10 +144,12 @@ int main(int argc, char** argv) {
       return kOk;
     }
     if (*report) {
+      check_run_directory(run_dir);
       const app::ReportOutcome made = app::write_report(run_dir);
       if (made.written) return kOk;
+      if (made.refused) return kBadInput;  // the script's one line said why
       std::cerr << "granpipe: " << made.why_not << "\n";
-      return kBadInput;
+      return kInternal;
     }
     Registry registry;
     load_plugins(registry, plugin_search_path());

@@ -43,9 +43,11 @@ ReportOutcome write_report(const fs::path& run_dir) {
     if (errno != EINTR) return {false, "report.html not written: lost the report's process"};
   }
   if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return {true, ""};
-  return {false, "report.html not written: " + script.string() + " failed (exit " +
-                     std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) +
-                     "; its message is above)"};
+  const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return {false,
+          "report.html not written: " + script.string() + " failed (exit " + std::to_string(code) +
+              "; its message is above)",
+          code == 2};
 }
 
 }  // namespace granpipe::app
