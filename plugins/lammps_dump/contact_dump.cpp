@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <map>
+#include <utility>
 
 #include "dump_text.hpp"
 #include "granpipe/errors.hpp"
@@ -120,6 +123,24 @@ ContactRow wall_row(const Entry& e, const ContactColumns& c, const Frame& f,
   return r;
 }
 
+// The line of each pair of atoms of one snapshot: a pair listed twice (as LAMMPS lists a
+// pair straddling two processors with newton_pair off) would count its contact twice in
+// the coordination, the force networks and the force PDF.
+class PairLines {
+ public:
+  void add(const Entry& e, const Frame& f, const ContactRow& r) {
+    const auto key = std::minmax(f.id()[r.i], f.id()[r.j]);
+    const auto [first, added] = lines_.emplace(key, e.line);
+    if (added) return;
+    throw InputError(e.at() + "expected each pair of atoms once, got ids " +
+                     std::to_string(key.first) + " and " + std::to_string(key.second) +
+                     " again (first on line " + std::to_string(first->second) + ")");
+  }
+
+ private:
+  std::map<std::pair<std::int64_t, std::int64_t>, long> lines_;
+};
+
 }  // namespace
 
 ContactDump::ContactDump(std::string path, ContactColumns columns, bool wall,
@@ -165,6 +186,7 @@ void ContactDump::read(const Frame& frame, const std::string& frame_place,
   try {
     next_line_of(SnapshotPlace{path(), start.line_before + 1}, lines_, line);
     const SnapshotHeader h = read_header(path(), lines_, line, kLocalDump);
+    PairLines pairs;
     for (std::int64_t k = 0; k < h.atoms; ++k) {
       next_line_of(h.place, lines_, line);
       split_words(line, words);
@@ -176,6 +198,7 @@ void ContactDump::read(const Frame& frame, const std::string& frame_place,
       }
       rows.push_back(wall_ ? wall_row(e, columns_, frame, frame_place)
                            : pair_row(e, columns_, frame, frame_place));
+      if (!wall_) pairs.add(e, frame, rows.back());
     }
   } catch (const SnapshotCut& cut) {
     throw InputError(path() + ": expected " + cut.place.name() +

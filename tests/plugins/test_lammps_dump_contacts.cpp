@@ -190,6 +190,19 @@ TEST_F(LammpsDumpContacts, BadPairFilesAreRefusedWithTheirLine) {
             "\"ITEM: NUMBER OF ATOMS\": a dump of atoms, not a dump local");
 }
 
+// A pair listed twice, in either order (LAMMPS lists a pair across two processors twice
+// with newton_pair off), was read as two contacts: coordination, networks and the force
+// PDF counted it twice, exit 0.
+TEST_F(LammpsDumpContacts, APairListedTwiceIsRefused) {
+  const std::string second = pair_snapshot(100, "", 0);
+  EXPECT_EQ(refusal(with_pairs(pair_snapshot(0, kPairs0 + "2 1 0 1.5 0 0 0.001\n", 3) + second)),
+            "pairs.dump: timestep 0, line 12: expected each pair of atoms once, got ids 1 and 2 "
+            "again (first on line 10)");
+  EXPECT_EQ(refusal(with_pairs(pair_snapshot(0, kPairs0 + "10 3 0 2.5 0 0 0.002\n", 3) + second)),
+            "pairs.dump: timestep 0, line 12: expected each pair of atoms once, got ids 3 and 10 "
+            "again (first on line 11)");
+}
+
 TEST_F(LammpsDumpContacts, PositionsPrintedWithPercentGAreWarnedAbout) {
   const std::string header =
       "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n2\nITEM: BOX BOUNDS pp pp ff\n0 10\n0 10\n0 "
