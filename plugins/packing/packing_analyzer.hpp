@@ -80,7 +80,7 @@ class PackingAnalyzer : public Analyzer {
   PackingSettings settings_;
   Log& log_;
   int dim_ = 3;
-  long frames_ = 0, skipped_ = 0;
+  long frames_ = 0, skipped_ = 0, centreless_ = 0;
   RunningMean phi_, density_, z_, z_walls_, phi_cuts_;
   RampMeans by_ramp_{{"phi", "z_mean"}};
   StreamedTable per_frame_;

@@ -97,6 +97,7 @@ double checked_bin_width(const PluginContext& ctx, const std::string& width,
 
 PoresAnalyzer::PoresAnalyzer(const PluginContext& ctx)
     : settings_(settings_from(ctx.params, ctx.threads)),
+      log_(ctx.log),
       statistics_(checked_bin_width(ctx, "bin_width", "xi_max"), ctx.params.real("xi_max")),
       volumes_(checked_bin_width(ctx, "v_bin_width", "v_max"), ctx.params.real("v_max"),
                ctx.params.real("v_tail")),
@@ -203,6 +204,12 @@ void PoresAnalyzer::consume(const Frame& frame, FrameCache&) {
 
 void PoresAnalyzer::finish(Results& results) {
   results.add_scalar("frames", static_cast<double>(frames_), std::nan(""), "", "frames measured");
+  if (frames_ > 0 && statistics_.pores() == 0) {
+    // Every distribution is NaN then: said, never left for a reader to take as zeros.
+    log_.warn(
+        "pores: no pore in the region of any frame: P(xi), nu, rho_v and the shares of "
+        "Bernal's holes are undefined (NaN); a larger region (margin, height) holds some");
+  }
   statistics_.report(results);
   volumes_.report(results, statistics_.nu());
   if (probes_ > 0) void_probability_.report(results);

@@ -26,6 +26,7 @@ class PoresAnalyzer : public Analyzer {
 
  private:
   PoreSettings settings_;
+  Log& log_;
   void probe_voids(const Frame& frame, double mean_radius, const std::string& where);
   void add_frame_distributions(const Frame& frame, const PoreMeasurement& m);
   void add_pore_rows(const Frame& frame, const PoreMeasurement& m);

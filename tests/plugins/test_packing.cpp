@@ -457,3 +457,26 @@ TEST(Packing, StepsTooSmallForTheBedAreRefused) {
   fine.profile_step = fine.cuts_step = 1e-3;
   EXPECT_NEAR(measure(f, fine).phi_cuts, measure(f).phi, 1e-3);
 }
+
+// A region between particle centres (the gap at the middle of four touching columns of a
+// simple cubic crystal): z_mean is NaN, which was left without a word.
+TEST(Packing, ARegionWithoutCentresSaysZMeanIsUndefined) {
+  const auto ctx = granpipe::test::make_context(granpipe::packing::schema(),
+                                                {{"exclude_sides", 1.95}, {"profile_step", 0}});
+  ctx->keep_log();
+  granpipe::packing::PackingAnalyzer analyzer(*ctx);
+  for (int k = 0; k < 2; ++k) {
+    FrameCache cache;
+    analyzer.consume(one("sc", "walls"), cache);
+  }
+  granpipe::Results r;
+  analyzer.finish(r);
+  EXPECT_TRUE(std::isnan(r.scalar("z_mean").value));
+  EXPECT_TRUE(std::isnan(r.tables().at("per_frame").column("z_mean")[1]));
+  const std::vector<std::string> lines = ctx->logged_lines();
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_EQ(lines[0],
+            "warning: packing: frame at step 0: no particle centred in the region: its z_mean is "
+            "undefined (NaN in per_frame, left out of the mean); said for the first such frame "
+            "only");
+}

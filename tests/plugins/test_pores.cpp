@@ -484,3 +484,23 @@ TEST(Pores, HistogramsOfMoreBinsThanMemoryHoldsAreRefused) {
             "test: params.probes: expected an integer in [0, 100000000], got 1000000000000");
   EXPECT_EQ(message({{"bin_width", 1e-4}, {"xi_max", 1000}}), "accepted");
 }
+
+// A region that holds no pore (a thin slab between layers of pores) left every
+// distribution NaN without a word, as if the packing had none.
+TEST(Pores, ARegionWithoutPoresIsSaid) {
+  const auto ctx = granpipe::test::make_context(
+      "pores", {{"region", "inner"}, {"margin", 2.5}, {"height", 0.05}});
+  ctx->keep_log();
+  auto analyzer = granpipe::test::installed_plugins().find("pores")->make_analyzer(*ctx);
+  granpipe::FrameCache cache;
+  analyzer->consume(crystal_frame(fcc(), 5), cache);
+  granpipe::Results results;
+  analyzer->finish(results);
+  ASSERT_EQ(results.scalar("pores").value, 0);
+  EXPECT_TRUE(std::isnan(results.scalar("nu").value));
+  const std::vector<std::string> lines = ctx->logged_lines();
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_EQ(lines[0],
+            "warning: pores: no pore in the region of any frame: P(xi), nu, rho_v and the shares "
+            "of Bernal's holes are undefined (NaN); a larger region (margin, height) holds some");
+}
