@@ -5,11 +5,12 @@
 
 namespace granpipe {
 
-void check_bin_count(double extent, double step, const std::string& what, const std::string& noun) {
+void check_bin_count(double extent, double step, const std::string& what, const std::string& noun,
+                     double most) {
   const double bins = extent / step;
-  if (bins <= kMaxBins) return;
-  throw InputError(what + ": expected at most " + format_number(kMaxBins, 15) + " " + noun +
-                   ", got " + format_number(bins) + " (" + format_number(extent) + " in steps of " +
+  if (bins <= most) return;
+  throw InputError(what + ": expected at most " + format_number(most, 15) + " " + noun + ", got " +
+                   format_number(bins) + " (" + format_number(extent) + " in steps of " +
                    format_number(step) + ")");
 }
 

@@ -24,7 +24,8 @@ inline constexpr double kMaxPdfBins = 100000;
 
 // Bins of width `width` from 0 to f_max; f_max <= 0: to the smallest multiple of `width`
 // holding the largest of `f` (so that the histogram holds every sample; one bin when `f`
-// is empty or all zero), but at most kMaxPdfBins bins.
+// is empty or all zero), but at most kMaxPdfBins bins (the analyzer refuses a frame that
+// would need more: analyse_frame).
 std::vector<double> pdf_edges(const std::vector<double>& f, double f_max, double width);
 
 ForcePdf force_pdf(const std::vector<double>& f, const std::vector<double>& edges);

@@ -1,6 +1,9 @@
 #include "frame_analysis.hpp"
 
+#include <algorithm>
 #include <cmath>
+
+#include "granpipe/bin_count.hpp"
 
 namespace granpipe::force_network {
 
@@ -11,6 +14,13 @@ FrameAnalysis analyse_frame(const Frame& frame, const Settings& settings,
   a.networks = find_networks(frame, a.forces.edges);
   a.strong = strong_network(frame, a.forces, a.networks);
   a.scaled = scaled_forces(a.forces, a.forces.samples, a.forces.mean);
+  if (settings.f_max <= 0.0 && !a.scaled.empty()) {
+    // The PDF reaches the frame's largest f: with more bins than a PDF has, it stopped short
+    // of it and left the larger forces out of the PDF and its fit without a word.
+    check_bin_count(*std::max_element(a.scaled.begin(), a.scaled.end()), settings.bin_width,
+                    where + ": bin_width (f_max 0: the PDF reaches the frame's largest f)", "bins",
+                    kMaxPdfBins);
+  }
   a.pdf = force_pdf(a.scaled, pdf_edges(a.scaled, settings.f_max, settings.bin_width));
   a.fit = fit_pdf(a.pdf, eq11_request(settings.min_fit_samples));
   return a;

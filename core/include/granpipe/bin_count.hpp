@@ -10,10 +10,10 @@ namespace granpipe {
 // The most bins (cuts, grid points) one histogram or profile may have.
 inline constexpr double kMaxBins = 1e7;
 
-// Throws InputError when `extent / step` is above kMaxBins or not a number:
+// Throws InputError when `extent / step` is above `most` or not a number:
 // "<what>: expected at most 10000000 <noun>, got <extent / step> (<extent> in steps of
 // <step>)". `extent` and `step` in the parameter's unit, `what` names the parameter.
 void check_bin_count(double extent, double step, const std::string& what,
-                     const std::string& noun = "bins");
+                     const std::string& noun = "bins", double most = kMaxBins);
 
 }  // namespace granpipe
