@@ -197,6 +197,11 @@ void ArchesAnalyzer::finish(Results& results) {
 
   const std::string xlabel = "horizontal span x (mean disk diameters)";
   for (const auto& [size, histogram] : span_by_size_) {
+    if (histogram.total() == 0 && measured_frames_ > 0) {
+      log_.warn("arches: no arch of size " + std::to_string(size) +
+                " in any frame: its span distribution span_s" + std::to_string(size) +
+                " is undefined (NaN)");
+    }
     results.add_histogram(
         "span_s" + std::to_string(size),
         histogram.density(xlabel, "span distribution n_s(x) of arches of " + std::to_string(size) +

@@ -28,7 +28,8 @@ Histogram SpanHistogram::density(const std::string& xlabel, const std::string& d
   h.xlabel = xlabel;
   h.doc = doc;
   const std::size_t bins = counts_.empty() ? 1 : counts_.size();
-  const double norm = total_ > 0 ? 1.0 / (static_cast<double>(total_) * width_) : 0.0;
+  // No spans: a density of nothing is undefined (NaN), never 0.
+  const double norm = total_ > 0 ? 1.0 / (static_cast<double>(total_) * width_) : std::nan("");
   for (std::size_t b = 0; b <= bins; ++b) h.edges.push_back(static_cast<double>(b) * width_);
   for (std::size_t b = 0; b < bins; ++b) {
     const double c = b < counts_.size() ? static_cast<double>(counts_[b]) : 0.0;

@@ -14,7 +14,7 @@ class SpanHistogram {
   void add(double span);
   long total() const { return total_; }
   // Probability density n(x): counts / (total * bin width), with the Poisson error of
-  // each count. With no spans at all: one empty bin [0, width) of density 0.
+  // each count. With no spans at all: one bin [0, width) of density NaN (undefined).
   Histogram density(const std::string& xlabel, const std::string& doc) const;
 
  private:
