@@ -75,6 +75,14 @@ AtomsSection find_atoms_section(Lines& lines, const std::string& where) {
                      ": line 1: expected a LAMMPS data file (a title, then \"N atoms\"), got " +
                      quoted(line) + ": this is a LAMMPS dump, use the lammps_dump source");
   }
+  // A binary file was read as text and blamed for a missing "N atoms": name what it is.
+  const char* binary = line.starts_with("\x89HDF")    ? "an HDF5 file: use the h5md source"
+                       : line.starts_with("\x1f\x8b") ? "a gzip file: decompress it first"
+                                                      : nullptr;
+  if (binary) {
+    throw InputError(
+        where + ": line 1: expected a LAMMPS data file (a title, then \"N atoms\"), got " + binary);
+  }
   bool header = true;
   while (lines.next(line)) {
     const std::vector<std::string> w = words(before_comment(line));

@@ -113,6 +113,17 @@ TEST(LammpsData, ADumpIsNamedWithTheSourceThatReadsIt) {
             "\"ITEM: TIMESTEP\": this is a LAMMPS dump, use the lammps_dump source");
 }
 
+// A binary file read as text was refused for a missing "N atoms", as if a header were
+// wrong: its kind is named instead.
+TEST(LammpsData, AnHdf5OrGzipFileIsNamedAsSuch) {
+  EXPECT_EQ(refusal(std::string("\x89HDF\r\n\x1a\n\0\0", 10)),
+            "x.data: line 1: expected a LAMMPS data file (a title, then \"N atoms\"), got an "
+            "HDF5 file: use the h5md source");
+  EXPECT_EQ(refusal(std::string("\x1f\x8b\x08\0\0\0", 6)),
+            "x.data: line 1: expected a LAMMPS data file (a title, then \"N atoms\"), got a "
+            "gzip file: decompress it first");
+}
+
 class LammpsDataSource : public ::testing::Test {
  protected:
   void SetUp() override {
