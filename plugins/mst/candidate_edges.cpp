@@ -6,6 +6,7 @@
 
 #include "granpipe/cell_list.hpp"
 #include "granpipe/errors.hpp"
+#include "granpipe/format_number.hpp"
 
 namespace granpipe::mst {
 
@@ -16,6 +17,22 @@ void check_particle_count(const Frame& frame, const std::string& where) {
     throw InputError(where + ": expected fewer than 2^32 particles for the MST, got " +
                      std::to_string(frame.size()));
   }
+}
+
+// More candidate pairs per particle than any useful cutoff gives (a cutoff of 3, where the
+// automatic one stops, gives some 70 in a dense packing): a cutoff far too large made the
+// candidate graph nearly complete, and the run ran out of memory (std::bad_alloc, exit 1).
+constexpr double kMaxCandidatesPerParticle = 500;
+
+void check_candidate_count(std::size_t edges, const Frame& frame, double factor,
+                           const std::string& where) {
+  const double most = kMaxCandidatesPerParticle * static_cast<double>(frame.size());
+  if (static_cast<double>(edges) <= most) return;
+  throw InputError(where + ": cutoff: expected at most " +
+                   format_number(kMaxCandidatesPerParticle) + " candidate pairs per particle (" +
+                   format_number(most) + " for " + std::to_string(frame.size()) +
+                   " particles), got more with cutoff " + format_number(factor) +
+                   " (the automatic cutoff, 0, stops at 3)");
 }
 
 }  // namespace
@@ -29,6 +46,7 @@ std::vector<Edge> cutoff_edges(const Frame& frame, double factor, const std::str
   cells.for_each_pair([&](int i, int j, const double*, double r2) {
     const double reach = factor * (r[i] + r[j]);
     if (r2 < reach * reach) {
+      check_candidate_count(edges.size() + 1, frame, factor, where);
       edges.push_back(
           {std::sqrt(r2), static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
     }

@@ -380,6 +380,22 @@ TEST(Mst, CutoffCandidatesCrossPeriodicSides) {
   EXPECT_NEAR(e[0].weight, 0.5, 1e-12);
 }
 
+// A cutoff far too large made every pair of a large frame a candidate: std::bad_alloc,
+// exit 1, for a frame of some 10^4 particles. Refused past 500 candidates per particle.
+TEST(Mst, ACutoffThatMakesTheCandidateGraphNearlyCompleteIsRefused) {
+  const Frame f = cubic_lattice(11);  // 1331 particles: 885115 pairs
+  try {
+    cutoff_edges(f, 1e6, "frame 0");
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(),
+                 "frame 0: cutoff: expected at most 500 candidate pairs per particle (665500 for "
+                 "1331 particles), got more with cutoff 1e+06 (the automatic cutoff, 0, stops at "
+                 "3)");
+  }
+  EXPECT_FALSE(cutoff_edges(f, 3.0, "frame 0").empty());  // the largest automatic one
+}
+
 TEST(Mst, TheAnalyzerPublishesPassesAndTreesAndKeepsTheMostLoadedFrame) {
   const auto ctx = test::make_context("mst", {{"cutoff", 2.0}, {"passes", 2}});
   MstAnalyzer analyzer(*ctx);
