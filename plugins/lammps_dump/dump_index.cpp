@@ -62,6 +62,23 @@ void check_is_dump(TextLines& lines, bool found, const std::string& line) {
                    what_the_file_is(lines, line));
 }
 
+// Snapshots in the order of their timesteps, each once. A dump appended to by a restarted
+// run, or one across a reset_timestep, repeats timesteps: read as it was, its frames went
+// back in time and a contact dump joined by timestep gave a repeated snapshot the contacts
+// of the first one.
+void check_timestep_follows(const DumpIndex& index, const SnapshotHeader& h,
+                            const SnapshotStart& start) {
+  if (index.snapshots.empty()) return;
+  const SnapshotStart& before = index.snapshots.back();
+  if (start.timestep > before.timestep) return;
+  throw InputError(h.place.at(h.place.first_line + 1) + "expected a timestep after " +
+                   std::to_string(before.timestep) + " (the snapshot before, from line " +
+                   std::to_string(before.line_before + 1) + "), got " +
+                   std::to_string(start.timestep) +
+                   ": timesteps that repeat or go back (a run appended to its dump after a "
+                   "restart, or a reset_timestep?)");
+}
+
 }  // namespace
 
 DumpIndex index_snapshots(TextLines& lines, const DumpKind& kind) {
@@ -91,6 +108,7 @@ DumpIndex index_snapshots(TextLines& lines, const DumpKind& kind) {
       break;
     }
     start.timestep = *last->place.timestep;
+    check_timestep_follows(index, *last, start);
     index.snapshots.push_back(start);
   }
   index.ended_early = lines.ended_early();

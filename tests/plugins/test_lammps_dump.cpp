@@ -6,6 +6,7 @@
 #include <unistd.h>
 #include <zlib.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -388,6 +389,23 @@ TEST_F(LammpsDump, AnAtomIdGivenTwiceIsRefusedWithBothLines) {
   EXPECT_EQ(refusal(snapshot(0, list, kPlain)),
             "atoms.dump: timestep 0, line 13: expected each atom id once, got id 3 again (first "
             "on line 10)");
+}
+
+// A dump appended to by a restarted run repeats timesteps: its frames went back in time,
+// exit 0, and a contact dump joined by timestep gave the repeat the first one's contacts.
+TEST_F(LammpsDump, TimestepsThatRepeatOrGoBackAreRefused) {
+  const std::string first = snapshot(0, atoms(), kPlain), second = snapshot(100, atoms(), kPlain);
+  const long lines = static_cast<long>(std::count(first.begin(), first.end(), '\n'));
+  const std::string at = "atoms.dump: timestep 100, line " + std::to_string(2 * lines + 2) +
+                         ": expected a timestep after 100 (the snapshot before, from line " +
+                         std::to_string(lines + 1) + "), got 100";
+  EXPECT_EQ(refusal(first + second + second),
+            at + ": timesteps that repeat or go back (a run appended to its dump after a "
+                 "restart, or a reset_timestep?)");
+  EXPECT_EQ(refusal(first + second + first).substr(0, 60),
+            ("atoms.dump: timestep 0, line " + std::to_string(2 * lines + 2) +
+             ": expected a timestep after 100")
+                .substr(0, 60));
 }
 
 TEST_F(LammpsDump, AtomLinesOtherThanNumberOfAtomsAreRefused) {
