@@ -86,6 +86,24 @@ TEST(Intruder, ABedWithoutAnIntruderIsRefused) {
   EXPECT_THROW(intruder::measure_bed(f, "frame 0"), InputError);
 }
 
+// A bed periodic along z (a dump of a box "pp pp pp") has no base: its heights were taken
+// from the box's lower side and its stage was expansion forever, exit 0.
+TEST(Intruder, AContainerWithoutABaseIsRefused) {
+  Frame f = bed();
+  f.container.boundary[2][0] = f.container.boundary[2][1] = Boundary::Periodic;
+  try {
+    analyze({f});
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(),
+                 "frame 0: expected a base (a wall at the bottom along z) to measure heights and "
+                 "the stage from, got a container periodic along z (state the base where the "
+                 "source allows it)");
+  }
+  f.container.boundary[2][0] = Boundary::Open;
+  EXPECT_THROW(intruder::measure_bed(f, "frame 0"), InputError);
+}
+
 // The intruder is the largest particle wherever it sits in the frame.
 TEST(Intruder, TheIntruderIsTheOneLargestParticle) {
   Frame f = bed();
