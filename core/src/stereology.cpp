@@ -62,13 +62,21 @@ GlobalFractions global_fractions(const Frame& frame, const StereologySettings& s
         "stereology: expected a box container (cuts need a rectangular "
         "cross-section), got a cylinder");
   }
+  const int v = frame.dim - 1;
+  if (frame.container.periodic(v)) {
+    // Heights are above the bottom and phi_c corrects the layer its wall perturbs: a
+    // container periodic along the vertical has neither (phi_c of a crystal came out above
+    // the crystal's fraction by the correction, exit 0).
+    throw InputError(std::string("stereology: expected a container with a bottom wall along ") +
+                     "xyz"[v] + " (heights are above it; phi_c corrects the layer it perturbs), " +
+                     "got one periodic along " + "xyz"[v]);
+  }
   GlobalFractions g;
   g.phi_b = g.phi_c = std::nan("");
   if (frame.size() == 0) return g;
   g.radius = frame.radius().mean();
   const Region cross = container_region(frame);
   const double r = g.radius;
-  const int v = frame.dim - 1;
   g.top = (frame.position().col(v) + frame.radius()).maxCoeff() - frame.container.lo[v];
   if (s.bulk_top * r <= g.top) g.phi_b = fraction_between(frame, cross, 0.0, s.bulk_top * r);
   g.height_c = quantile_height(frame, s.fraction);

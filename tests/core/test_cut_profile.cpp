@@ -187,6 +187,21 @@ TEST(GlobalFractions, AreUndefinedWithoutParticlesOrAZoneAboveTheLayer) {
   EXPECT_EQ(undefined_fractions(global_fractions(cubic_layers(4, 10), {}), {}), "");
 }
 
+// A crystal periodic along z: phi_c corrected a "bottom layer" no wall perturbs and came
+// out at 0.54 for simple cubic's 0.52, exit 0.
+TEST(GlobalFractions, RefuseAContainerPeriodicAlongTheVertical) {
+  Frame f = cubic_layers(2, 4);
+  f.container.boundary[2] = {Boundary::Periodic, Boundary::Periodic};
+  try {
+    global_fractions(f, {});
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(),
+                 "stereology: expected a container with a bottom wall along z (heights are above "
+                 "it; phi_c corrects the layer it perturbs), got one periodic along z");
+  }
+}
+
 TEST(GlobalFractions, RefuseACylinder) {
   Frame f = cubic_layers(2, 2);
   f.container.shape = ContainerShape::Cylinder;

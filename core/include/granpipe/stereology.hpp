@@ -37,7 +37,7 @@ void declare_stereology_settings(Schema& schema);
 StereologySettings stereology_settings(const Params& params);
 
 // Throws InputError for a container that is not a box (the cuts need a rectangular
-// cross-section).
+// cross-section) or is periodic along the vertical (no bottom to measure heights from).
 GlobalFractions global_fractions(const Frame& frame, const StereologySettings& settings);
 
 // Why phi_b or phi_c of a frame with particles is NaN, in words for a warning ("" when
