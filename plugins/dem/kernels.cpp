@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 
 #include "contact_evaluator.hpp"
@@ -229,26 +230,30 @@ template <class C>
   }
 }
 
-// The pair materials as the pair loop reads them. With AVX-512 and at most 8 species
-// pairs, each field is a register of the table's column, read by a lane permutation (one
-// instruction where a gather takes eight loads).
+// The pair materials as the pair loop reads them. With AVX-512 (AVX2) and at most 8 (4)
+// species pairs, each field is a register of the table's column, read by a lane
+// permutation (one instruction where a gather takes a load per lane).
 struct PairMaterials {
   static constexpr int kFields = kMaterialFields;
+  // Species pairs whose fields fit one register, read by a lane permutation.
+  static constexpr int kColumnRows = lanes::kWidth;
   const double* table;  // species x species LoopMaterials, kFields doubles each
   int species;
 #if defined(__AVX512F__)
   __m512d column[kFields];
+#elif defined(__AVX2__)
+  __m256d column[kFields];
 #endif
 
   explicit PairMaterials(const ForceContext& c)
       : table(reinterpret_cast<const double*>(c.pair_material)), species(c.species_count) {
     static_assert(sizeof(LoopMaterial) == kFields * sizeof(double));
-#if defined(__AVX512F__)
-    if (species * species > 8) return;
+#if defined(__AVX512F__) || defined(__AVX2__)
+    if (species * species > kColumnRows) return;
     for (int f = 0; f < kFields; ++f) {
-      alignas(64) double v[8] = {};
+      alignas(64) double v[kColumnRows] = {};
       for (int r = 0; r < species * species; ++r) v[r] = table[kFields * r + f];
-      column[f] = _mm512_load_pd(v);
+      std::memcpy(&column[f], v, sizeof column[f]);
     }
 #endif
   }
@@ -278,12 +283,24 @@ struct PairMaterials {
     if (species == 1) return fields<kRead>([&](int f) { return lanes::splat(table[f]); });
     const lanes::Indices row = lanes::gather(c.species, i) * species + lanes::gather(c.species, j);
 #if defined(__AVX512F__)
-    if (species * species <= 8) {
+    if (species * species <= kColumnRows) {
       // (The masked forms: the plain ones start from an undefined register, which GCC
       // warns about.)
       const __m512i r = _mm512_maskz_cvtepi32_epi64(0xff, reinterpret_cast<__m256i>(row));
       return fields<kRead>(
           [&](int f) { return lanes::Reals(_mm512_maskz_permutexvar_pd(0xff, r, column[f])); });
+    }
+#elif defined(__AVX2__)
+    if (species * species <= kColumnRows) {
+      // Row r's double is the column's 32-bit halves 2r (low) and 2r + 1 (high).
+      const __m256i r = _mm256_cvtepi32_epi64(reinterpret_cast<__m128i>(row));
+      const __m256i halves =
+          _mm256_add_epi64(_mm256_add_epi64(_mm256_slli_epi64(r, 1), _mm256_slli_epi64(r, 33)),
+                           _mm256_set1_epi64x(std::int64_t{1} << 32));
+      return fields<kRead>([&](int f) {
+        return lanes::Reals(
+            _mm256_castps_pd(_mm256_permutevar8x32_ps(_mm256_castpd_ps(column[f]), halves)));
+      });
     }
 #endif
     const lanes::Indices at = row * kFields;
