@@ -24,7 +24,8 @@ std::optional<StartFrame> read_start_frame(const PluginContext& ctx, double defa
   }();
   const long frames = reader.frames();
   if (frames == 0)
-    throw InputError(ctx.param("initial_file") + ": " + file + ": expected a file with frames, got none");
+    throw InputError(ctx.param("initial_file") + ": " + file +
+                     ": expected a file with frames, got none");
   if (wanted >= frames) {
     throw InputError(ctx.param("initial_frame") + ": expected -1 or a frame index below " +
                      std::to_string(frames) + " (" + file + " holds " + std::to_string(frames) +
