@@ -30,6 +30,19 @@ double quantile_height(const Frame& frame, double fraction) {
   return z[k] - frame.container.lo[v];
 }
 
+// The perturbed-zone model's factor for spheres near a plane (the paper's ref. [20]).
+constexpr double kSpheresOnAPlane = 16.0 / 11.0;
+
+// The bottom layer's correction for this frame: the one given, or for 0 the paper's.
+double perturbed_factor(const Frame& frame, const StereologySettings& s) {
+  if (s.perturbed_factor > 0.0) return s.perturbed_factor;
+  if (frame.dim == 3) return kSpheresOnAPlane;
+  throw InputError(
+      "stereology: perturbed_factor: expected a factor for disks (the paper's 16/11 is for "
+      "spheres on a plane; 1: no correction), got 0 (the paper's value, which has none for "
+      "disks)");
+}
+
 }  // namespace
 
 void declare_stereology_settings(Schema& s) {
@@ -42,9 +55,10 @@ void declare_stereology_settings(Schema& s) {
       .min(0.0)
       .unit("mean radii");
   s.real("perturbed_factor", d.perturbed_factor,
-         "phi_c multiplies the bottom layer's fraction by this (the perturbed-zone model's "
-         "16/11 for spheres on a plane; 1: no correction)")
-      .min(0.0, true);
+         "phi_c multiplies the bottom layer's fraction by this; 0: the perturbed-zone "
+         "model's 16/11 for spheres on a plane (the paper gives none for disks: 2D frames "
+         "need a factor given); 1: no correction")
+      .min(0.0);
   s.real("fraction", d.fraction,
          "phi_c's zone reaches the height below which this fraction of the centres lie")
       .min(0.0, true)
@@ -71,6 +85,7 @@ GlobalFractions global_fractions(const Frame& frame, const StereologySettings& s
                      "xyz"[v] + " (heights are above it; phi_c corrects the layer it perturbs), " +
                      "got one periodic along " + "xyz"[v]);
   }
+  const double factor = perturbed_factor(frame, s);
   GlobalFractions g;
   g.phi_b = g.phi_c = std::nan("");
   if (frame.size() == 0) return g;
@@ -82,7 +97,7 @@ GlobalFractions global_fractions(const Frame& frame, const StereologySettings& s
   g.height_c = quantile_height(frame, s.fraction);
   const double layer = s.perturbed_top * r, h = g.height_c;
   if (h > layer) {
-    g.phi_c = (s.perturbed_factor * fraction_between(frame, cross, 0.0, layer) * layer +
+    g.phi_c = (factor * fraction_between(frame, cross, 0.0, layer) * layer +
                fraction_between(frame, cross, layer, h) * (h - layer)) /
               h;
   }

@@ -39,7 +39,7 @@ Series within(const Series& s, double from, double to) {
   Series out;
   for (std::size_t k = 0; k < s.tap.size(); ++k) {
     if (s.tap[k] >= from && s.tap[k] <= to)
-      out.add({s.tap[k], s.z_mean[k], s.phi_b[k], s.phi_c[k], 0.0});
+      out.add({s.tap[k], s.z_mean[k], s.phi_b[k], s.phi_c[k], 0.0, {}});
   }
   return out;
 }

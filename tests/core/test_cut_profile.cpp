@@ -165,6 +165,32 @@ TEST(GlobalFractions, OfALayeredCrystalAreItsFractionWithThePerturbedZoneFactor)
   EXPECT_NEAR(global_fractions(f, plain).phi_c, kPi / 6.0, 1e-13);
 }
 
+// The paper gives the perturbed-zone factor for spheres on a plane only: disks must be
+// given one (its 16/11 applied to disks was a silent, unfounded correction).
+TEST(GlobalFractions, OfDisksNeedAPerturbedZoneFactorGiven) {
+  Frame f;
+  f.dim = 2;
+  f.container.hi = Eigen::Vector3d(6.0, 20.0, 0.0);
+  f.resize(30, 2);
+  for (Eigen::Index k = 0; k < 30; ++k) {
+    f.position().row(k) << 1.0 + 2.0 * static_cast<double>(k % 3),
+        1.0 + 2.0 * static_cast<double>(k / 3);
+    f.radius()[k] = 1.0;
+  }
+  try {
+    global_fractions(f, {});
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(),
+                 "stereology: perturbed_factor: expected a factor for disks (the paper's 16/11 "
+                 "is for spheres on a plane; 1: no correction), got 0 (the paper's value, which "
+                 "has none for disks)");
+  }
+  StereologySettings plain;
+  plain.perturbed_factor = 1.0;
+  EXPECT_NEAR(global_fractions(f, plain).phi_c, kPi / 4.0, 1e-13);
+}
+
 TEST(GlobalFractions, AreUndefinedWithoutParticlesOrAZoneAboveTheLayer) {
   Frame empty;
   empty.dim = 3;

@@ -6,6 +6,8 @@
 //    centres lie, its layer between the bottom and perturbed_top radii multiplied by
 //    perturbed_factor (the perturbed-zone model: 16/11 for spheres on a plane), i.e.
 //    phi_c = [factor * Phi(0, R1) R1 + Phi(R1, H) (H - R1)] / H.
+//    The paper gives the factor for spheres only: a factor of 0 (the default) stands for
+//    16/11 in 3D and is refused for disks, which need one given.
 // Heights are above the container's bottom, in mean particle radii R.
 #include <string>
 
@@ -15,10 +17,10 @@
 namespace granpipe {
 
 struct StereologySettings {
-  double bulk_top = 4.0;                  // R
-  double perturbed_top = 1.0;             // R
-  double perturbed_factor = 16.0 / 11.0;  // the bottom layer's correction
-  double fraction = 0.9;                  // of the centres, below the top of phi_c's zone
+  double bulk_top = 4.0;          // R
+  double perturbed_top = 1.0;     // R
+  double perturbed_factor = 0.0;  // the bottom layer's correction; 0: 16/11 for spheres
+  double fraction = 0.9;          // of the centres, below the top of phi_c's zone
 };
 
 struct GlobalFractions {
@@ -37,7 +39,8 @@ void declare_stereology_settings(Schema& schema);
 StereologySettings stereology_settings(const Params& params);
 
 // Throws InputError for a container that is not a box (the cuts need a rectangular
-// cross-section) or is periodic along the vertical (no bottom to measure heights from).
+// cross-section) or is periodic along the vertical (no bottom to measure heights from),
+// and for disks with perturbed_factor 0 (no published factor to stand for).
 GlobalFractions global_fractions(const Frame& frame, const StereologySettings& settings);
 
 // Why phi_b or phi_c of a frame with particles is NaN, in words for a warning ("" when
