@@ -24,6 +24,12 @@ void Log::info(const std::string& message) { write(message); }
 
 void Log::warn(const std::string& message) { write("warning: " + message); }
 
+void FirstFrameWarning::warn(Log& log, const std::string& message) {
+  if (said_) return;
+  said_ = true;
+  log.warn(message + "; said for the first such frame only");
+}
+
 void Log::write(const std::string& line) {
   std::lock_guard lock(mutex_);
   if (!quiet_) std::cerr << line << '\n';

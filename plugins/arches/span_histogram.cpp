@@ -14,11 +14,13 @@ void SpanHistogram::add(double span) {
     throw InternalError("span histogram: expected a finite span >= 0, got " + std::to_string(span));
   }
   // The histogram grows to the widest span: refused before a bin width far too small for it
-  // asks for more memory than there is.
-  check_bin_count(span, width_, "arches.span_bin", "bins of the span distributions");
-  const auto bin = static_cast<std::size_t>(std::floor(span / width_));
-  if (counts_.size() <= bin) counts_.resize(bin + 1, 0);
-  ++counts_[bin];
+  // asks for more memory than there is (checked only when it grows: most spans fall in it).
+  const double bin = std::floor(span / width_);
+  if (bin >= static_cast<double>(counts_.size())) {
+    check_bin_count(span, width_, "arches.span_bin", "bins of the span distributions");
+    counts_.resize(static_cast<std::size_t>(bin) + 1, 0);
+  }
+  ++counts_[static_cast<std::size_t>(bin)];
   ++total_;
 }
 

@@ -65,10 +65,7 @@ void CompactionAnalyzer::consume(const Frame& frame, FrameCache&) {
   const std::string where = frame_name(frames_, frame);
   const FramePoint p = measure_frame(frame, stereology_, where);
   check_tap_follows(where, p.tap, series_);
-  if (!warned_undefined_ && !p.undefined.empty()) {
-    warned_undefined_ = true;  // NaN is never a silent answer
-    log_.warn(where + ": " + p.undefined + "; said for the first such frame only");
-  }
+  if (!p.undefined.empty()) undefined_.warn(log_, where + ": " + p.undefined);
   series_.add(p);
   per_frame_.add_row({static_cast<double>(frames_), p.tap, p.z_mean, p.phi_b, p.phi_c, p.height_c});
   ++frames_;

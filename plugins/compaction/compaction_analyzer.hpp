@@ -5,6 +5,7 @@
 // ageing squared differences of Eq. (5). It keeps four numbers per frame (the fits need
 // the whole series), never a frame.
 #include "compaction_report.hpp"
+#include "granpipe/log.hpp"
 #include "granpipe/plugin.hpp"
 #include "granpipe/stereology.hpp"
 
@@ -23,7 +24,7 @@ class CompactionAnalyzer : public Analyzer {
   ReportSettings report_;
   Log& log_;
   long frames_ = 0;
-  bool warned_undefined_ = false;
+  FirstFrameWarning undefined_;  // NaN is never a silent answer
   Series series_;
   StreamedTable per_frame_;
 };

@@ -109,12 +109,11 @@ void ForceNetworkAnalyzer::consume(const Frame& frame, FrameCache&) {
 }
 
 void ForceNetworkAnalyzer::warn_undefined(const FrameAnalysis& a, const std::string& where) {
-  if (!a.forces.samples.empty() || warned_undefined_) return;
-  warned_undefined_ = true;
-  log_.warn("force_network: " + where +
-            ": no contact with |F_n| > min_force: its mean_force, "
-            "z_largest and force PDF are undefined (nan in the results, not 0; "
-            "docs/force_network.md); said for the first such frame only");
+  if (!a.forces.samples.empty()) return;
+  undefined_.warn(log_, "force_network: " + where +
+                            ": no contact with |F_n| > min_force: its mean_force, "
+                            "z_largest and force PDF are undefined (nan in the results, not 0; "
+                            "docs/force_network.md)");
 }
 
 std::vector<Property> ForceNetworkAnalyzer::publishes() const {

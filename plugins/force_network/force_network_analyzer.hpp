@@ -35,7 +35,7 @@ class ForceNetworkAnalyzer : public Analyzer {
   Log& log_;
   Settings settings_;
   long frames_ = 0;
-  bool warned_undefined_ = false;
+  FirstFrameWarning undefined_;
   StreamedTable per_frame_;
   MostLoadedFrame chosen_;
   PaperFrame paper_;    // of the chosen frame

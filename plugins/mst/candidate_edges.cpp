@@ -24,10 +24,8 @@ void check_particle_count(const Frame& frame, const std::string& where) {
 // candidate graph nearly complete, and the run ran out of memory (std::bad_alloc, exit 1).
 constexpr double kMaxCandidatesPerParticle = 500;
 
-void check_candidate_count(std::size_t edges, const Frame& frame, double factor,
-                           const std::string& where) {
-  const double most = kMaxCandidatesPerParticle * static_cast<double>(frame.size());
-  if (static_cast<double>(edges) <= most) return;
+[[noreturn]] void refuse_candidate_count(const Frame& frame, double most, double factor,
+                                         const std::string& where) {
   throw InputError(where + ": cutoff: expected at most " +
                    format_number(kMaxCandidatesPerParticle) + " candidate pairs per particle (" +
                    format_number(most) + " for " + std::to_string(frame.size()) +
@@ -43,10 +41,12 @@ std::vector<Edge> cutoff_edges(const Frame& frame, double factor, const std::str
   const Eigen::ArrayXd& r = frame.radius();
   const CellList cells(frame.position(), frame.container, frame.dim, 2.0 * factor * r.maxCoeff(),
                        where);
+  const double most = kMaxCandidatesPerParticle * static_cast<double>(frame.size());
   cells.for_each_pair([&](int i, int j, const double*, double r2) {
     const double reach = factor * (r[i] + r[j]);
     if (r2 < reach * reach) {
-      check_candidate_count(edges.size() + 1, frame, factor, where);
+      if (static_cast<double>(edges.size()) >= most)
+        refuse_candidate_count(frame, most, factor, where);
       edges.push_back(
           {std::sqrt(r2), static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
     }

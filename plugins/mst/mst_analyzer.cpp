@@ -118,11 +118,10 @@ void MstAnalyzer::consume(const Frame& frame, FrameCache& cache) {
               ", below which the candidate graph holds every pair: their selection may differ "
               "from the MST of all pairs (docs/mst.md; column unproven_contacts)");
   }
-  if (r.contacts == 0 && !warned_no_contacts_) {
-    warned_no_contacts_ = true;
-    log_.warn("mst: " + where +
-              ": no contacts: its recovered_fraction is undefined (nan in "
-              "per_frame, not 0; docs/mst.md); said for the first such frame only");
+  if (r.contacts == 0) {
+    no_contacts_.warn(log_, "mst: " + where +
+                                ": no contacts: its recovered_fraction is undefined (nan in "
+                                "per_frame, not 0; docs/mst.md)");
   }
   for (const PassRow& p : r.passes) {
     std::vector<double> row = {static_cast<double>(frames_), frame.time};

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "granpipe/loaded_pair_contacts.hpp"
+#include "granpipe/log.hpp"
 #include "granpipe/plugin.hpp"
 #include "tcp_report.hpp"
 
@@ -27,7 +28,8 @@ class MstAnalyzer : public Analyzer {
   Log& log_;
   MstOptions options_;
   long frames_ = 0;
-  bool warned_inexact_ = false, warned_no_contacts_ = false;
+  bool warned_inexact_ = false;
+  FirstFrameWarning no_contacts_;
   StreamedTable per_frame_;
   // Table II of the frame with the most loaded pair contacts (the first of equals).
   MostLoadedFrame chosen_;

@@ -197,10 +197,10 @@ void PackingAnalyzer::consume(const Frame& frame, FrameCache& cache) {
   if (m.centres > 0) {
     z_.add(m.z_mean);
     z_walls_.add(m.z_mean_with_walls);
-  } else if (centreless_++ == 0) {
-    log_.warn("packing: " + frame_name(frame) +
-              ": no particle centred in the region: its z_mean is undefined (NaN in per_frame, "
-              "left out of the mean); said for the first such frame only");
+  } else {
+    centreless_.warn(log_, "packing: " + frame_name(frame) +
+                               ": no particle centred in the region: its z_mean is undefined "
+                               "(NaN in per_frame, left out of the mean)");
   }
   by_ramp_.add(frame, {m.phi, m.z_mean});
   per_frame_.add_row({static_cast<double>(frames_), static_cast<double>(frame.step), frame.time,

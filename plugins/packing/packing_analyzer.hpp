@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "granpipe/contacts_by_distance.hpp"
+#include "granpipe/log.hpp"
 #include "granpipe/mean_profile.hpp"
 #include "granpipe/plugin.hpp"
 #include "granpipe/ramp_means.hpp"
@@ -80,7 +81,8 @@ class PackingAnalyzer : public Analyzer {
   PackingSettings settings_;
   Log& log_;
   int dim_ = 3;
-  long frames_ = 0, skipped_ = 0, centreless_ = 0;
+  long frames_ = 0, skipped_ = 0;
+  FirstFrameWarning centreless_;
   RunningMean phi_, density_, z_, z_walls_, phi_cuts_;
   RampMeans by_ramp_{{"phi", "z_mean"}};
   StreamedTable per_frame_;

@@ -109,16 +109,16 @@ void StereologyAnalyzer::consume(const Frame& frame, FrameCache& /*cache*/) {
 
 // NaN is never a silent answer: the first frame where a fraction is undefined says why.
 void StereologyAnalyzer::warn_undefined(const Frame& frame, const ProfileMeasurement& m) {
+  if (!undefined_.pending()) return;
   std::string why = undefined_fractions(m.global, settings_.global);
   if (std::isnan(m.central)) {
     why += std::string(why.empty() ? "" : "; ") +
            "phi_central is undefined (NaN): the box is no wider than two bands of lateral_band, " +
            format_number(settings_.lateral_band) + " R";
   }
-  if (why.empty() || warned_undefined_) return;
-  warned_undefined_ = true;
-  log_.warn("stereology: frame " + std::to_string(frames_) + " (step " +
-            std::to_string(frame.step) + "): " + why + "; said for the first such frame only");
+  if (why.empty()) return;
+  undefined_.warn(log_, "stereology: frame " + std::to_string(frames_) + " (step " +
+                            std::to_string(frame.step) + "): " + why);
 }
 
 void StereologyAnalyzer::add_profiles(Results& results) const {

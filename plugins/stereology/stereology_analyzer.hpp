@@ -6,6 +6,7 @@
 #include <optional>
 #include <vector>
 
+#include "granpipe/log.hpp"
 #include "granpipe/mean_profile.hpp"
 #include "granpipe/plugin.hpp"
 #include "granpipe/ramp_means.hpp"
@@ -29,7 +30,7 @@ class StereologyAnalyzer : public Analyzer {
   ProfileSettings settings_;
   Log& log_;
   long frames_ = 0;
-  bool warned_undefined_ = false;
+  FirstFrameWarning undefined_;
   double transversal_step_ = 0.0;
   std::optional<ProfileMeasurement> first_;
   GlobalFractions last_;

@@ -11,6 +11,7 @@
 #include "granpipe/cut_profile.hpp"
 #include "granpipe/errors.hpp"
 #include "granpipe/stereology.hpp"
+#include "plugin_harness.hpp"
 
 using namespace granpipe;
 
@@ -134,16 +135,27 @@ TEST(BinFractions, OfWholeLatticePeriodsAreTheLatticeFraction) {
   for (double phi : x) EXPECT_NEAR(phi, kPi / 6.0 * 12.0 / 17.0, 1e-13);
 }
 
-TEST(BinFractions, DisksOfASquareLatticeInTwoDimensions) {
+namespace {
+
+// Disks of radius 1 touching in a square lattice, three to a row, `rows` rows from the
+// bottom of a box of width 6 and the given height.
+Frame square_disks(Eigen::Index rows, double height) {
   Frame f;
   f.dim = 2;
-  f.container.hi = Eigen::Vector3d(6.0, 8.0, 0.0);
-  f.resize(12, 2);
-  for (Eigen::Index k = 0; k < 12; ++k) {
+  f.container.hi = Eigen::Vector3d(6.0, height, 0.0);
+  f.resize(3 * rows, 2);
+  for (Eigen::Index k = 0; k < 3 * rows; ++k) {
     f.position().row(k) << 1.0 + 2.0 * static_cast<double>(k % 3),
         1.0 + 2.0 * static_cast<double>(k / 3);
     f.radius()[k] = 1.0;
   }
+  return f;
+}
+
+}  // namespace
+
+TEST(BinFractions, DisksOfASquareLatticeInTwoDimensions) {
+  const Frame f = square_disks(4, 8.0);
   for (int axis = 0; axis < 2; ++axis) {
     for (double phi : bin_fractions(f, container_region(f), axis, 0.0, 2.0, 3)) {
       EXPECT_NEAR(phi, kPi / 4.0, 1e-13) << "axis " << axis;
@@ -168,24 +180,11 @@ TEST(GlobalFractions, OfALayeredCrystalAreItsFractionWithThePerturbedZoneFactor)
 // The paper gives the perturbed-zone factor for spheres on a plane only: disks must be
 // given one (its 16/11 applied to disks was a silent, unfounded correction).
 TEST(GlobalFractions, OfDisksNeedAPerturbedZoneFactorGiven) {
-  Frame f;
-  f.dim = 2;
-  f.container.hi = Eigen::Vector3d(6.0, 20.0, 0.0);
-  f.resize(30, 2);
-  for (Eigen::Index k = 0; k < 30; ++k) {
-    f.position().row(k) << 1.0 + 2.0 * static_cast<double>(k % 3),
-        1.0 + 2.0 * static_cast<double>(k / 3);
-    f.radius()[k] = 1.0;
-  }
-  try {
-    global_fractions(f, {});
-    FAIL() << "expected an InputError";
-  } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(),
-                 "stereology: perturbed_factor: expected a factor for disks (the paper's 16/11 "
-                 "is for spheres on a plane; 1: no correction), got 0 (the paper's value, which "
-                 "has none for disks)");
-  }
+  const Frame f = square_disks(10, 20.0);
+  EXPECT_EQ(granpipe::test::input_error_of([&] { global_fractions(f, {}); }),
+            "stereology: perturbed_factor: expected a factor for disks (the paper's 16/11 "
+            "is for spheres on a plane; 1: no correction), got 0 (the paper's value, which "
+            "has none for disks)");
   StereologySettings plain;
   plain.perturbed_factor = 1.0;
   EXPECT_NEAR(global_fractions(f, plain).phi_c, kPi / 4.0, 1e-13);
@@ -218,14 +217,9 @@ TEST(GlobalFractions, AreUndefinedWithoutParticlesOrAZoneAboveTheLayer) {
 TEST(GlobalFractions, RefuseAContainerPeriodicAlongTheVertical) {
   Frame f = cubic_layers(2, 4);
   f.container.boundary[2] = {Boundary::Periodic, Boundary::Periodic};
-  try {
-    global_fractions(f, {});
-    FAIL() << "expected an InputError";
-  } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(),
-                 "stereology: expected a container with a bottom wall along z (heights are above "
-                 "it; phi_c corrects the layer it perturbs), got one periodic along z");
-  }
+  EXPECT_EQ(granpipe::test::input_error_of([&] { global_fractions(f, {}); }),
+            "stereology: expected a container with a bottom wall along z (heights are above "
+            "it; phi_c corrects the layer it perturbs), got one periodic along z");
 }
 
 TEST(GlobalFractions, RefuseACylinder) {

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "granpipe/errors.hpp"
 #include "granpipe/plugin.hpp"
 
 namespace granpipe::test {
@@ -52,6 +53,18 @@ std::unique_ptr<PluginHarness> make_context(const Schema& schema, nlohmann::json
 std::unique_ptr<PluginHarness> make_context(const std::string& plugin, nlohmann::json params = {},
                                             std::uint64_t seed = 1,
                                             std::filesystem::path output_dir = {});
+// The message of the InputError `refused` throws, to compare whole; "no refusal" when it
+// throws none (the comparison then fails showing that the input was accepted).
+template <class F>
+std::string input_error_of(F&& refused) {
+  try {
+    refused();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no refusal";
+}
+
 // The installed plugins, loaded once.
 const Registry& installed_plugins();
 

@@ -805,14 +805,11 @@ TEST(Disks2dTapSource, PlacesAtTheLargestAllowedInitialFraction) {
 // Without initial_file, initial_frame would change nothing: a start meant to continue a
 // run would silently begin a new one.
 TEST(Disks2dTapSource, AStartFrameWithoutAFileIsRefused) {
-  try {
-    run_source(nlohmann::json({{"N", 80}, {"initial_frame", 0}}), 3);
-    FAIL() << "a start frame without a file was accepted";
-  } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(),
-                 "params.initial_frame: expected it only with initial_file (a frame of that "
-                 "file), got 0 without one");
-  }
+  EXPECT_EQ(granpipe::test::input_error_of([&] {
+              run_source(nlohmann::json({{"N", 80}, {"initial_frame", 0}}), 3);
+            }),
+            "params.initial_frame: expected it only with initial_file (a frame of that "
+            "file), got 0 without one");
 }
 
 TEST(Disks2dTapSource, StartsFromAFrameOfASavedFile) {

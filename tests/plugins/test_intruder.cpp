@@ -73,14 +73,9 @@ TEST(Intruder, AFrameWithoutABedIsRefused) {
 TEST(Intruder, ABedWithoutAnIntruderIsRefused) {
   Frame f = bed();
   f.radius().setConstant(0.5);
-  try {
-    analyze({f});
-    FAIL() << "expected an InputError";
-  } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(),
-                 "frame 0: expected an intruder (one particle larger than every other), "
-                 "got 3 particles of the largest radius 0.5 (a bed without an intruder?)");
-  }
+  EXPECT_EQ(granpipe::test::input_error_of([&] { analyze({f}); }),
+            "frame 0: expected an intruder (one particle larger than every other), "
+            "got 3 particles of the largest radius 0.5 (a bed without an intruder?)");
   // Two large spheres: neither is the intruder. Radii equal to float precision are equal.
   f.radius() << 1.5, 1.5 * (1.0 + 1e-8), 0.5;
   EXPECT_THROW(intruder::measure_bed(f, "frame 0"), InputError);
@@ -91,15 +86,10 @@ TEST(Intruder, ABedWithoutAnIntruderIsRefused) {
 TEST(Intruder, AContainerWithoutABaseIsRefused) {
   Frame f = bed();
   f.container.boundary[2][0] = f.container.boundary[2][1] = Boundary::Periodic;
-  try {
-    analyze({f});
-    FAIL() << "expected an InputError";
-  } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(),
-                 "frame 0: expected a base (a wall at the bottom along z) to measure heights and "
-                 "the stage from, got a container periodic along z (state the base where the "
-                 "source allows it)");
-  }
+  EXPECT_EQ(granpipe::test::input_error_of([&] { analyze({f}); }),
+            "frame 0: expected a base (a wall at the bottom along z) to measure heights and "
+            "the stage from, got a container periodic along z (state the base where the "
+            "source allows it)");
   f.container.boundary[2][0] = Boundary::Open;
   EXPECT_THROW(intruder::measure_bed(f, "frame 0"), InputError);
 }

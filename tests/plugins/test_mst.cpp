@@ -331,22 +331,13 @@ TEST(Mst, ANaNForceOrARowJoiningAParticleToItselfIsRefused) {
   nan_force.contacts->get<ValueTable<double>>("normal_force")(1, 0) = std::nan("");
   MstOptions o = options(Candidates::Cutoff, 2);
   o.contacts.zero_force_contacts = true;  // refused whether the forces count or not
-  try {
-    tcp_report(nan_force, cache, o, "frame 3");
-    FAIL() << "expected an InputError";
-  } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(),
-                 "frame 3: contact 1: expected a finite normal_force, got nan in component x");
-  }
+  EXPECT_EQ(granpipe::test::input_error_of([&] { tcp_report(nan_force, cache, o, "frame 3"); }),
+            "frame 3: contact 1: expected a finite normal_force, got nan in component x");
   Frame self = figure_13();
   self.contact_j()[0] = 0;
-  try {
-    tcp_report(self, cache, options(Candidates::Cutoff, 2), "frame 3");
-    FAIL() << "expected an InputError";
-  } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(),
-                 "frame 3: contact 0: expected two different particles, got particle 0 twice");
-  }
+  EXPECT_EQ(granpipe::test::input_error_of(
+                [&] { tcp_report(self, cache, options(Candidates::Cutoff, 2), "frame 3"); }),
+            "frame 3: contact 0: expected two different particles, got particle 0 twice");
 }
 
 TEST(Mst, DelaunayKeepsParticlesAtOnePosition) {
@@ -360,14 +351,9 @@ TEST(Mst, DelaunayKeepsParticlesAtOnePosition) {
 TEST(Mst, DelaunayRefusesPeriodicSides) {
   Frame f = random_frame(10, 4.0, 1);
   f.container = Container::periodic_box(3, Eigen::Vector3d::Zero(), Eigen::Vector3d::Constant(4.0));
-  try {
-    delaunay_edges(f, "frame 2");
-    FAIL() << "expected an InputError";
-  } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(),
-                 "frame 2: candidates \"delaunay\" expected a container without periodic sides, "
-                 "got a periodic axis 0 (use candidates \"cutoff\")");
-  }
+  EXPECT_EQ(granpipe::test::input_error_of([&] { delaunay_edges(f, "frame 2"); }),
+            "frame 2: candidates \"delaunay\" expected a container without periodic sides, "
+            "got a periodic axis 0 (use candidates \"cutoff\")");
 }
 
 TEST(Mst, CutoffCandidatesCrossPeriodicSides) {
@@ -384,15 +370,10 @@ TEST(Mst, CutoffCandidatesCrossPeriodicSides) {
 // exit 1, for a frame of some 10^4 particles. Refused past 500 candidates per particle.
 TEST(Mst, ACutoffThatMakesTheCandidateGraphNearlyCompleteIsRefused) {
   const Frame f = cubic_lattice(11);  // 1331 particles: 885115 pairs
-  try {
-    cutoff_edges(f, 1e6, "frame 0");
-    FAIL() << "expected an InputError";
-  } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(),
-                 "frame 0: cutoff: expected at most 500 candidate pairs per particle (665500 for "
-                 "1331 particles), got more with cutoff 1e+06 (the automatic cutoff, 0, stops at "
-                 "3)");
-  }
+  EXPECT_EQ(granpipe::test::input_error_of([&] { cutoff_edges(f, 1e6, "frame 0"); }),
+            "frame 0: cutoff: expected at most 500 candidate pairs per particle (665500 for "
+            "1331 particles), got more with cutoff 1e+06 (the automatic cutoff, 0, stops at "
+            "3)");
   EXPECT_FALSE(cutoff_edges(f, 3.0, "frame 0").empty());  // the largest automatic one
 }
 

@@ -434,24 +434,14 @@ TEST(Packing, StepsTooSmallForTheBedAreRefused) {
   const Frame f = one("sc", "walls");
   PackingSettings profile;
   profile.profile_step = 1e-12;
-  try {
-    measure(f, profile);
-    FAIL() << "expected an InputError";
-  } catch (const granpipe::InputError& e) {
-    EXPECT_STREQ(e.what(),
-                 "packing.profile_step: expected at most 10000000 cuts of the profile, got 4e+12 "
-                 "(4 in steps of 1e-12)");
-  }
+  EXPECT_EQ(granpipe::test::input_error_of([&] { measure(f, profile); }),
+            "packing.profile_step: expected at most 10000000 cuts of the profile, got 4e+12 "
+            "(4 in steps of 1e-12)");
   PackingSettings cuts;
   cuts.cuts_step = 1e-12;
-  try {
-    measure(f, cuts);
-    FAIL() << "expected an InputError";
-  } catch (const granpipe::InputError& e) {
-    EXPECT_STREQ(e.what(),
-                 "packing.cuts_step: expected at most 10000000 cuts of phi_cuts, got 4e+12 (4 in "
-                 "steps of 1e-12)");
-  }
+  EXPECT_EQ(granpipe::test::input_error_of([&] { measure(f, cuts); }),
+            "packing.cuts_step: expected at most 10000000 cuts of phi_cuts, got 4e+12 (4 in "
+            "steps of 1e-12)");
   // The largest counts allowed still measure.
   PackingSettings fine;
   fine.profile_step = fine.cuts_step = 1e-3;

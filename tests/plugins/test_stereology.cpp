@@ -131,14 +131,9 @@ TEST(StereologyAnalyzer, ACylinderIsRefused) {
 TEST(ProfileMeasure, AStepTooSmallForTheBedIsRefused) {
   ProfileSettings s;
   s.step = 1e-12;
-  try {
-    measure_profiles(cubic_layers(8, 10), s);
-    FAIL() << "expected an InputError";
-  } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(),
-                 "stereology.step: expected at most 10000000 bins of the vertical profile, got "
-                 "2e+13 (20 in steps of 1e-12)");
-  }
+  EXPECT_EQ(granpipe::test::input_error_of([&] { measure_profiles(cubic_layers(8, 10), s); }),
+            "stereology.step: expected at most 10000000 bins of the vertical profile, got "
+            "2e+13 (20 in steps of 1e-12)");
 }
 
 // A bed lower than bulk_top and a box no wider than two lateral bands: phi_b was the

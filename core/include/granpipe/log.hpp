@@ -27,4 +27,17 @@ class Log {
   bool quiet_ = false;
 };
 
+// A warning an analyzer would otherwise repeat for every frame of a long run (a value
+// undefined in each): said for the first frame it concerns only, and says so.
+class FirstFrameWarning {
+ public:
+  // Whether it is still to be said: build the message only then.
+  bool pending() const { return !said_; }
+  // Warns "<message>; said for the first such frame only", the first time.
+  void warn(Log& log, const std::string& message);
+
+ private:
+  bool said_ = false;
+};
+
 }  // namespace granpipe
