@@ -8,6 +8,7 @@
 #include <fstream>
 #include <limits>
 #include <optional>
+#include <unordered_map>
 
 #include "granpipe/errors.hpp"
 #include "granpipe/frame.hpp"
@@ -126,6 +127,22 @@ void read_element(const h5::Element& e, long k, Column& c) {
     h5::read_column(e.dataset(), e.path(), e.row(k), 1, c);
   } else {
     h5::read_column(e.dataset(), e.path(), 0, static_cast<hsize_t>(c.rows()), c);
+  }
+}
+
+// Each particle once: two rows of one id would read as one particle in every analysis that
+// follows particles by their ids, and as two in every count.
+void check_unique_ids(const Frame& f, const std::string& dataset, long k) {
+  const IndexArray& id = f.id();
+  std::unordered_map<std::int64_t, Eigen::Index> first_row;
+  first_row.reserve(static_cast<std::size_t>(id.size()));
+  for (Eigen::Index i = 0; i < id.size(); ++i) {
+    const auto [seen, fresh] = first_row.emplace(id[i], i);
+    if (fresh) continue;
+    throw h5::Error(dataset + ": frame " + std::to_string(k) +
+                    ": expected each particle id once, got id " + std::to_string(id[i]) +
+                    " again (particles " + std::to_string(seen->second) + " and " +
+                    std::to_string(i) + ")");
   }
 }
 
@@ -588,7 +605,10 @@ Frame FrameReader::Impl::read(long k) const {
   f.resize(info.particles, info.dim);
   read_element(*position, k, f.particles.column(0));
   if (!ours) f.radius().setConstant(default_radius);
-  for (const ElementColumn& c : columns) read_element(c.element, k, f.particles.add(c.property));
+  for (const ElementColumn& c : columns) {
+    read_element(c.element, k, f.particles.add(c.property));
+    if (c.property.name == "id") check_unique_ids(f, c.element.path(), k);
+  }
   for (const ElementColumn& o : observables)
     read_element(o.element, k, f.observables.add(o.property));
   f.step = steps[k];

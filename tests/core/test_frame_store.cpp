@@ -767,6 +767,24 @@ TEST_F(FrameStore, ContactPartnersOutOfRangeAreRefusedNamingTheRow) {
   }
 }
 
+// Two particles of one id would read as one in every analysis that follows a particle by
+// its id (and as two in every count): a file holding them is refused, naming the first id
+// met again.
+TEST_F(FrameStore, ParticleIdsGivenTwiceInAFrameAreRefused) {
+  const fs::path p = file("twice.h5");
+  {
+    FrameWriter w(p, "{}");
+    Frame f = make_frame(0, 3, 4);
+    f.id() << 5, 7, 7, 5;
+    w.append(f);
+    w.close();
+  }
+  EXPECT_EQ(message_of([&] { FrameReader(p).read(0); }),
+            p.string() +
+                ": /particles/all/id/value: frame 0: expected each particle id once, got id 7 "
+                "again (particles 1 and 2)");
+}
+
 // ---- Crash safety ----
 
 // A child appends frames for ever, telling the parent after each one; the parent kills
