@@ -11,6 +11,7 @@
 #include <unordered_map>
 
 #include "granpipe/errors.hpp"
+#include "granpipe/format_number.hpp"
 #include "granpipe/frame.hpp"
 #include "granpipe/frame_store.hpp"
 #include "h5_column.hpp"
@@ -182,6 +183,8 @@ struct FrameReader::Impl {
   void settle_frames();
   void map_foreign_elements();
   Frame read(long k) const;
+  std::vector<double> edge_lengths(long k) const;
+  void check_edges_agree(long k, const Container& c) const;
   Container box_container(long k, const Frame& f) const;
   Container container_at(long k) const;
   void read_contacts(long k, Frame& f) const;
@@ -496,6 +499,42 @@ void place_walls(Container& c, int a, const Frame& f, const std::string& file,
 }
 }  // namespace
 
+std::vector<double> FrameReader::Impl::edge_lengths(long k) const {
+  const int d = info.dim;
+  std::vector<double> e(edges->item().size() == 2 ? d * d : d);
+  edges->read(k, e.data());
+  if (e.size() == static_cast<std::size_t>(d)) return e;
+  std::vector<double> length(d);
+  for (int a = 0; a < d; ++a) {
+    for (int b = 0; b < d; ++b) {
+      if (a != b && e[a * d + b] != 0.0) {
+        throw h5::Error(edges->path() + ": triclinic boxes are not supported (frame " +
+                        std::to_string(k) + ")");
+      }
+    }
+    length[a] = e[a * d + a];
+  }
+  return length;
+}
+
+// granpipe reads its own container, other tools the H5MD box: a file where the two differ
+// (one of them edited) would give the same frame two packing fractions. The writer stores
+// hi - lo as the edges; a relative 1e-9 allows for a tool that rewrote them rounded.
+void FrameReader::Impl::check_edges_agree(long k, const Container& c) const {
+  const std::vector<double> length = edge_lengths(k);
+  for (int a = 0; a < info.dim; ++a) {
+    const double expected = c.hi[a] - c.lo[a], got = length[a];
+    const bool same =
+        expected == got || (std::isnan(expected) && std::isnan(got)) ||
+        std::abs(expected - got) <= 1e-9 * std::max(std::abs(expected), std::abs(got));
+    if (same) continue;
+    throw h5::Error(edges->path() + ": frame " + std::to_string(k) +
+                    ": expected the container's edge along " + "xyz"[a] + " (" + L::kContainer +
+                    " hi - lo), " + format_number(expected, 12) + ", got " +
+                    format_number(got, 12));
+  }
+}
+
 Container FrameReader::Impl::box_container(long k, const Frame& f) const {
   Container c;
   const int d = info.dim;
@@ -510,21 +549,10 @@ Container FrameReader::Impl::box_container(long k, const Frame& f) const {
     }
     return c;
   }
-  std::vector<double> e(edges->item().size() == 2 ? d * d : d);
-  edges->read(k, e.data());
+  const std::vector<double> length = edge_lengths(k);
   c.lo.setZero();
   for (int a = 0; a < d; ++a) {
-    if (e.size() == static_cast<std::size_t>(d * d)) {
-      for (int b = 0; b < d; ++b) {
-        if (a != b && e[a * d + b] != 0.0) {
-          throw h5::Error(edges->path() + ": triclinic boxes are not supported (frame " +
-                          std::to_string(k) + ")");
-        }
-      }
-      c.hi[a] = e[a * d + a];
-    } else {
-      c.hi[a] = e[a];
-    }
+    c.hi[a] = length[a];
     const Boundary b = periodic[a] ? Boundary::Periodic : Boundary::Wall;
     c.boundary[a] = {b, b};
     if (!periodic[a] && f.size() > 0) place_walls(c, a, f, name, edges->path(), k);
@@ -618,6 +646,7 @@ Frame FrameReader::Impl::read(long k) const {
     return f;
   }
   f.container = container_at(k);
+  if (edges) check_edges_agree(k, f.container);
   if (info.has_contacts) read_contacts(k, f);
   return f;
 }

@@ -785,6 +785,41 @@ TEST_F(FrameStore, ParticleIdsGivenTwiceInAFrameAreRefused) {
                 "again (particles 1 and 2)");
 }
 
+// Overwrites entry [row][column] of a 2-D real dataset.
+void put_real(hid_t file, const std::string& path, hsize_t row, hsize_t column, double value) {
+  Id ds(H5Dopen2(file, path.c_str(), H5P_DEFAULT));
+  Id space(H5Dget_space(ds));
+  const hsize_t start[2] = {row, column}, one[2] = {1, 1};
+  H5Sselect_hyperslab(space, H5S_SELECT_SET, start, nullptr, one, nullptr);
+  Id memory(H5Screate_simple(2, one, nullptr));
+  ASSERT_GE(H5Dwrite(ds, H5T_NATIVE_DOUBLE, memory, space, H5P_DEFAULT, &value), 0) << path;
+}
+
+// Other tools read the box from box/edges, granpipe from its container: a file where the
+// two disagree (edited by one of them) would give two tools two packing fractions.
+TEST_F(FrameStore, BoxEdgesThatDisagreeWithTheContainerAreRefused) {
+  const fs::path good = write("box.h5", 2, 3, 5);  // frame 1: y from -2.02 to 5
+  const std::string edges = "/particles/all/box/edges/value";
+  const fs::path p = file("edited_box.h5");
+  for (const double edge : {7.02 * (1.0 + 1e-12), 7.5}) {
+    fs::copy_file(good, p, fs::copy_options::overwrite_existing);
+    {
+      Id f(H5Fopen(p.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
+      put_real(f, edges, 1, 1, edge);
+    }
+    const FrameReader r(p);
+    if (edge < 7.1) {
+      EXPECT_NO_THROW(r.read(1));  // within rounding: agrees
+      continue;
+    }
+    EXPECT_NO_THROW(r.read(0));
+    EXPECT_EQ(message_of([&] { r.read(1); }),
+              p.string() + ": " + edges +
+                  ": frame 1: expected the container's edge along y (/granpipe/container hi - "
+                  "lo), 7.02, got 7.5");
+  }
+}
+
 // ---- Crash safety ----
 
 // A child appends frames for ever, telling the parent after each one; the parent kills
