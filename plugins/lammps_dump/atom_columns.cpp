@@ -80,6 +80,11 @@ void find_positions(ColumnFinder& find, AtomColumns& c, const std::string& at) {
       c.coordinate[a] = kind;
       if (c.position[a] >= 0) break;
     }
+    // x and y without z: a 2D run's dump, not one missing a column.
+    if (c.position[a] < 0 && a == 2) {
+      throw InputError(at + kReads3d + "positions along x and y only (\"" + joined(c.names) +
+                       "\"): a 2D run's dump");
+    }
     if (c.position[a] < 0) {
       const std::string axis = kPositions[0].second[a];
       throw InputError(at + "expected a position column along " + axis + " (" + axis + ", " + axis +

@@ -17,6 +17,11 @@
 
 namespace granpipe::lammps_dump {
 
+// The start of a refusal of a 2D run's dump (a missing z column here, LAMMPS's flat box in
+// the source): granpipe's frames from LAMMPS are 3D.
+inline constexpr const char* kReads3d =
+    "expected a 3D dump (granpipe's LAMMPS readers read 3D dumps), got ";
+
 // How a position column relates to the box.
 enum class Coordinate { Plain, Unwrapped, Scaled, ScaledUnwrapped };
 

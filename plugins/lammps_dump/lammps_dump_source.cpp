@@ -20,6 +20,19 @@ std::vector<std::string> keywords(const std::string& text) {
   return out;
 }
 
+// LAMMPS writes a 2D run's atoms at z = 0 in a box periodic along z. No 3D packing has a
+// period along z of at most an atom's diameter (the atom would touch its own image), so such
+// a flat layer is a 2D dump, whose disks 3D analyzers would measure as spheres.
+void refuse_a_2d_run(const Frame& f, const Container& box, const std::string& at) {
+  const Eigen::ArrayXd z = f.position().col(2);
+  const double diameter = 2.0 * f.radius().maxCoeff();
+  if (!box.periodic(2) || box.length(2) > diameter || (z != z[0]).any()) return;
+  throw InputError(at + kReads3d + "every atom at z = " + format_number(z[0]) +
+                   " in a box periodic along z and " + format_number(box.length(2)) +
+                   " thick, no more than an atom's diameter (" + format_number(diameter) +
+                   "): a 2D run's dump");
+}
+
 }  // namespace
 
 Schema schema() {
@@ -184,6 +197,7 @@ Frame LammpsDumpSource::frame_of(const SnapshotHeader& h) {
   SnapshotAtoms atoms = read_atoms(h, columns_, radius_, lines_);
   Frame& f = atoms.frame;
   if (f.size() == 0) throw InputError(h.place.at(h.atoms_line) + "expected atoms, got none");
+  refuse_a_2d_run(f, h.box.container, h.place.at(h.box.line));
   f.step = *h.place.timestep;
   f.time = h.time ? *h.time : dt_ > 0 ? dt_ * static_cast<double>(f.step) : std::nan("");
   f.container = stated_.place(h.box.container, h.place.where(h.box.line));

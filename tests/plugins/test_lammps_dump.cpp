@@ -458,12 +458,32 @@ TEST_F(LammpsDump, ColumnsThatChangeBetweenSnapshotsAreRefused) {
 }
 
 TEST_F(LammpsDump, MissingOrPartialColumnsAreRefused) {
-  EXPECT_EQ(refusal(snapshot(0, atoms(), {"id", "type", "x", "y", "radius"})),
-            "atoms.dump: timestep 0, line 9: expected a position column along z (z, zu, zs or "
-            "zsu), got \"id type x y radius\"");
+  EXPECT_EQ(refusal(snapshot(0, atoms(), {"id", "type", "x", "y", "z", "radius", "vx", "vz"})),
+            "atoms.dump: timestep 0, line 9: expected vx, vy and vz together, got 2 of them in "
+            "\"id type x y z radius vx vz\"");
+  EXPECT_EQ(refusal(snapshot(0, atoms(), {"id", "type", "xs", "z", "radius"})),
+            "atoms.dump: timestep 0, line 9: expected a position column along y (y, yu, ys or "
+            "ysu), got \"id type xs z radius\"");
   EXPECT_EQ(refusal(snapshot(0, atoms(), {"id", "x", "y", "z", "radius", "vx", "vy"})),
             "atoms.dump: timestep 0, line 9: expected vx, vy and vz together, got 2 of them in "
             "\"id x y z radius vx vy\"");
+}
+
+// A 2D run's dump was refused in other words: a dump of x and y only as missing a z column,
+// and LAMMPS's own 2D dump (every atom at z = 0, the box periodic along z and about an atom
+// thick) only when the neighbour search found the box too thin, after validation.
+TEST_F(LammpsDump, TwoDimensionalDumpsAreRefusedAsSuch) {
+  const std::string reads_3d = "expected a 3D dump (granpipe's LAMMPS readers read 3D dumps), got ";
+  EXPECT_EQ(refusal(snapshot(0, atoms(), {"id", "type", "x", "yu", "radius"})),
+            "atoms.dump: timestep 0, line 9: " + reads_3d +
+                "positions along x and y only (\"id type x yu radius\"): a 2D run's dump");
+  std::vector<Atom> list = atoms();
+  for (Atom& t : list) t.x[2] = 0.0;
+  std::string text = snapshot(0, list, kPlain, 0, "pp pp pp");
+  text.replace(text.find("\n0 10\n"), 6, "\n-0.5 0.5\n");
+  EXPECT_EQ(refusal(text), "atoms.dump: timestep 0, line 5: " + reads_3d +
+                               "every atom at z = 0 in a box periodic along z and 1 thick, no "
+                               "more than an atom's diameter (1): a 2D run's dump");
 }
 
 TEST_F(LammpsDump, FilesThatAreNotDumpsAreNamed) {
