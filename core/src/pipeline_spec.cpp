@@ -105,6 +105,16 @@ bool read_publish(json& entry, const JsonLocation& at) {
   return entry["publish"].get<bool>();
 }
 
+// A plugin's "params" is an object, or left out. Checked before a sweep assigns into it, so
+// that the --set or file line that put something else there is named, not the sweep.
+void require_params_object(const json& entry, const JsonLocation& at) {
+  if (!entry.contains("params") || entry["params"].is_null() || entry["params"].is_object()) {
+    return;
+  }
+  throw InputError(at.child("params").str() + ": expected an object of parameters, got " +
+                   json_brief(entry["params"]));
+}
+
 // The analyzers or writers of a pipeline ("analyzers": [{"plugin": ..., "name": ...,
 // "publish": ..., "params": {...}}, ...]), each name unique among both (the files they
 // write start with it); only analyzers publish.
@@ -132,6 +142,7 @@ std::vector<PluginSpec> parse_plugin_list(json& root, const std::string& key, Pl
     }
     PluginSpec spec;
     spec.info = &require_plugin(registry, a["plugin"], kind, at.child("plugin").str());
+    require_params_object(a, at);
     if (a.contains("name")) check_analyzer_name(a["name"], at.child("name"));
     spec.name = a.value("name", spec.info->name);
     spec.where = at.str();
@@ -187,6 +198,7 @@ Pipeline Pipeline::parse(const std::string& text, const std::string& origin,
   }
   impl->source = &require_plugin(registry, root["source"]["plugin"], PluginKind::Source,
                                  src_at.child("plugin").str());
+  require_params_object(root["source"], src_at);
 
   const JsonLocation an_at = top.child("analyzers"), wr_at = top.child("writers");
   std::set<std::string> names;

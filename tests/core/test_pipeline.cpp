@@ -287,6 +287,18 @@ TEST(PipelineErrors, SetOverridesAreValidatedToo) {
       "source.params.n = 5000)");
 }
 
+// A --set that put a non-object where a sweep assigns into it was blamed on the sweep
+// ("sweep.parameters[...]: expected an object at ..."), though the sweep was the file's.
+TEST(PipelineErrors, SetOfParamsThatAreNoObjectIsNamedBeforeTheSweep) {
+  const std::string swept =
+      R"({"source": {"plugin": "random"}, "analyzers": [{"plugin": "meanx"}],
+          "sweep": {"parameters": {"source.params.n": [5, 6], "analyzers[0].params.scale": [1, 2]}}})";
+  EXPECT_EQ(error_of(swept, {"source.params=5"}),
+            "--set source.params=5: expected an object of parameters, got 5");
+  EXPECT_EQ(error_of(swept, {"analyzers[0].params=[1]"}),
+            "--set analyzers[0].params=[1]: expected an object of parameters, got [1]");
+}
+
 TEST(PipelineErrors, SetListIndexBeyond64BitsIsNoEntry) {
   EXPECT_EQ(
       error_of(kGood, {"analyzers[99999999999999999999999].params.scale=1"}),
