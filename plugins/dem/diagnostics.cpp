@@ -10,7 +10,7 @@ namespace granpipe::dem {
 namespace {
 
 // Contact k's 3-vector of a per-contact history, zero when the part keeps none (empty).
-Vec3 history_of(const std::vector<double>& history, std::int32_t k) {
+Vec3 history_of(const HugePageVector<double>& history, std::int32_t k) {
   if (history.empty()) return Vec3::Zero();
   return Vec3::Map(&history[3 * static_cast<std::size_t>(k)]);
 }

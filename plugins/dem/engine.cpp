@@ -10,6 +10,7 @@
 #include "blow_up.hpp"
 #include "deep_overlap.hpp"
 #include "granpipe/errors.hpp"
+#include "granpipe/huge_pages.hpp"
 #include "overlap_limit.hpp"
 
 namespace granpipe::dem {
@@ -148,6 +149,8 @@ void Engine::load_particles(const InitialState& in) {
   hold_fixed_species();
   if (settings_.friction) p_.wall_history.assign(walls_.count(), Vectors::Zero(3, n));
   if (model_.rolls()) p_.wall_rolling_history.assign(walls_.count(), Vectors::Zero(3, n));
+  p_.prefer_huge_pages();
+  huge_pages::advise(spin_sum_.data(), static_cast<std::size_t>(spin_sum_.size()) * sizeof(double));
 }
 
 void Engine::prepare_materials() {

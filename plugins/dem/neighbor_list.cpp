@@ -159,7 +159,7 @@ void NeighborList::list_pairs(const Particles& p, int threads) {
   for (int i = 0; i < n; ++i) work_before[i + 1] += work_before[i];
 }
 
-void NeighborList::restore_history(const PairHistory& saved, std::vector<double>& to,
+void NeighborList::restore_history(const PairHistory& saved, HugePageVector<double>& to,
                                    const Particles& p, int threads) {
   const int n = p.size();
   to.resize(3 * partner.size());
@@ -204,6 +204,10 @@ void NeighborList::rebuild(Particles& p, int threads) {
   if (keep_rolling_history_) restore_history(saved_rolling_, rolling_history, p, threads);
   incoming.assign(static_cast<std::size_t>(reaction_stride) * partner.size(), 0.0);
   index_reverse(n);
+  if (x_build_.cols() != p.x.cols()) {
+    x_build_.resize(3, p.x.cols());
+    huge_pages::advise(x_build_.data(), static_cast<std::size_t>(x_build_.size()) * sizeof(double));
+  }
   x_build_ = p.x;
   ++builds_;
 }

@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "granpipe/huge_pages.hpp"
 #include "pair_history.hpp"
 #include "particles.hpp"
 
@@ -46,20 +47,20 @@ class NeighborList {
 
   // Pairs of owner i are first[i] .. first[i+1]-1; owner[k] is the particle that lists
   // pair k (the force loop runs over pairs, not owners).
-  std::vector<std::int32_t> first, partner, owner;
-  std::vector<double> history;          // 3 per pair
-  std::vector<double> rolling_history;  // 3 per pair (empty without rolling resistance)
+  HugePageVector<std::int32_t> first, partner, owner;
+  HugePageVector<double> history;          // 3 per pair
+  HugePageVector<double> rolling_history;  // 3 per pair (empty without rolling resistance)
   // The force loop's estimated work for the particles before i (n+1 entries), counting
   // their own forces, their listed pairs and their pairs in contact at the build: the
   // loop gives each thread an equal share of it.
-  std::vector<double> work_before;
+  HugePageVector<double> work_before;
   // The reactions particle p gathers are the slots reverse_first[p] .. reverse_first[p+1]-1
   // of `incoming` (reaction_stride doubles each), one per pair naming p as partner, in
   // increasing pair order; pair k writes slot reaction_slot[k]. The force loop writes the
   // slots of touching pairs only, and the gather reads its slots and clears them (but on
   // the step a frame shows, whose contacts' forces are then read from the slots).
-  std::vector<std::int32_t> reverse_first, reaction_slot;
-  std::vector<double> incoming;
+  HugePageVector<std::int32_t> reverse_first, reaction_slot;
+  HugePageVector<double> incoming;
   int reaction_stride = 3;
 
  private:
@@ -76,7 +77,7 @@ class NeighborList {
   void for_each_candidate(const Particles& p, int i, F&& f) const;
   void list_pairs(const Particles& p, int threads);
   // A saved history (tangential or rolling) put back on the new list's pairs.
-  void restore_history(const PairHistory& saved, std::vector<double>& to, const Particles& p,
+  void restore_history(const PairHistory& saved, HugePageVector<double>& to, const Particles& p,
                        int threads);
   void index_reverse(int n);
 

@@ -10,9 +10,8 @@ bool is_zero(const double* u) { return u[0] == 0.0 && u[1] == 0.0 && u[2] == 0.0
 
 }  // namespace
 
-void PairHistory::save(const std::vector<std::int32_t>& first,
-                       const std::vector<std::int32_t>& partner, const std::vector<double>& history,
-                       const std::vector<std::int32_t>& tag) {
+void PairHistory::save(std::span<const std::int32_t> first, std::span<const std::int32_t> partner,
+                       std::span<const double> history, const std::vector<std::int32_t>& tag) {
   const std::size_t n = tag.size();
   start_.assign(n + 1, 0);
   if (first.size() != n + 1) return;  // no list yet

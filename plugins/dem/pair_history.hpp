@@ -11,6 +11,7 @@
 // arrays here grow to the largest size seen and are then reused, so a rebuild allocates
 // nothing in a steady run.
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace granpipe::dem {
@@ -19,8 +20,8 @@ class PairHistory {
  public:
   // Files the non-zero histories of the half list (first, partner) over particles with
   // these tags; history holds 3 doubles per pair, u of the pair's first particle.
-  void save(const std::vector<std::int32_t>& first, const std::vector<std::int32_t>& partner,
-            const std::vector<double>& history, const std::vector<std::int32_t>& tag);
+  void save(std::span<const std::int32_t> first, std::span<const std::int32_t> partner,
+            std::span<const double> history, const std::vector<std::int32_t>& tag);
   // Writes into u (3 doubles) the saved displacement of particle tag_i against tag_j (as
   // seen from tag_i), or zeros when the pair had none.
   void find(std::int32_t tag_i, std::int32_t tag_j, double* u) const;

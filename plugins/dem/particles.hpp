@@ -38,8 +38,12 @@ struct Particles {
   std::vector<Vectors> wall_rolling_history;
 
   int size() const { return static_cast<int>(radius.size()); }
+  // Asks for huge pages under every array (granpipe/huge_pages.hpp): each step streams
+  // through all of them. Called once they hold the particles.
+  void prefer_huge_pages();
   // Applies the permutation new index k <- old index order[k] to every per-particle array,
-  // through `scratch` buffers so that a rebuild allocates nothing once they have grown.
+  // through `scratch` buffers so that a rebuild allocates nothing once they have grown (the
+  // buffers take turns with the arrays, so they are on huge pages too).
   void permute(const std::vector<std::int32_t>& order);
 
  private:

@@ -530,7 +530,7 @@ TEST(DemThreads, ThreeThreadsSharingTheForceLoopByWorkGiveTheOneThreadRun) {
   dem::Engine a = dropped_bed(300, 3.0, one, {}, 1.0), b = dropped_bed(300, 3.0, three, {}, 1.0);
   a.run(400);
   b.run(400);
-  const std::vector<double>& work = b.neighbors().work_before;
+  const auto& work = b.neighbors().work_before;
   ASSERT_EQ(work.size(), static_cast<std::size_t>(b.particles().size()) + 1);
   EXPECT_EQ(work.front(), 0.0);
   EXPECT_TRUE(std::is_sorted(work.begin(), work.end()));
