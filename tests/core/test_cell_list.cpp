@@ -6,8 +6,8 @@
 #include <utility>
 
 #include "granpipe/cell_list.hpp"
-#include "granpipe/errors.hpp"
 #include "granpipe/random.hpp"
+#include "plugin_harness.hpp"
 
 using namespace granpipe;
 using Pairs = std::set<std::pair<int, int>>;
@@ -138,12 +138,7 @@ TEST(CellList, EmptyAndSingleParticle) {
 
 namespace {
 std::string error_of(const Coordinates& x, const Container& c, int dim, double cutoff) {
-  try {
-    CellList(x, c, dim, cutoff, "frame 3");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
+  return test::input_error_of([&] { CellList(x, c, dim, cutoff, "frame 3"); });
 }
 }  // namespace
 

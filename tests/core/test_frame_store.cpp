@@ -16,6 +16,7 @@
 #include "granpipe/errors.hpp"
 #include "granpipe/frame_store.hpp"
 #include "granpipe/version.hpp"
+#include "plugin_harness.hpp"
 
 namespace fs = std::filesystem;
 using namespace granpipe;
@@ -190,15 +191,6 @@ class FrameStore : public ::testing::Test {
   fs::path dir_;
 };
 
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no InputError)";
-}
-
 TEST_F(FrameStore, RoundTripIsBitIdenticalWithEveryOptionalArray) {
   for (int dim : {2, 3}) {
     const fs::path p = write("full" + std::to_string(dim) + ".h5", 5, dim, 17);
@@ -278,7 +270,7 @@ TEST_F(FrameStore, FileClosedBeforeAnyFrameHasNoFrames) {
 
 TEST_F(FrameStore, WriterRefusesAnExistingFile) {
   const fs::path p = write("exists.h5", 1, 3, 2);
-  const std::string msg = message_of([&] { FrameWriter w(p, "{}"); });
+  const std::string msg = test::input_error_of([&] { FrameWriter w(p, "{}"); });
   EXPECT_NE(msg.find(p.string()), std::string::npos) << msg;
   EXPECT_NE(msg.find("already exists"), std::string::npos) << msg;
   EXPECT_EQ(FrameReader(p).frames(), 1);  // untouched
@@ -460,7 +452,7 @@ TEST_F(FrameStore, NanPositionInAWalledBoxIsNamedByTheFrameCheck) {
       const std::int64_t step = 0;
       put_dataset(position, "step", H5T_NATIVE_INT64, {1}, &step);
     }
-    EXPECT_EQ(message_of([&] { FrameReader(p).read(0); }),
+    EXPECT_EQ(test::input_error_of([&] { FrameReader(p).read(0); }),
               p.string() + ": frame 0: particle " + std::to_string(particle) + " (id " +
                   std::to_string(particle) +
                   "): expected a finite position, got nan in coordinate " + "xyz"[axis]);
@@ -470,14 +462,14 @@ TEST_F(FrameStore, NanPositionInAWalledBoxIsNamedByTheFrameCheck) {
 TEST_F(FrameStore, GroupChoosesAmongSeveralParticlesGroups) {
   const fs::path p = file("two_groups.h5");
   write_foreign(p, true);
-  const std::string ambiguous = message_of([&] { FrameReader r(p); });
+  const std::string ambiguous = test::input_error_of([&] { FrameReader r(p); });
   EXPECT_NE(ambiguous.find("several particles groups (atoms, walls)"), std::string::npos)
       << ambiguous;
   EXPECT_EQ(FrameReader(p, "atoms").frames(), 3);
-  const std::string missing = message_of([&] { FrameReader r(p, "grains"); });
+  const std::string missing = test::input_error_of([&] { FrameReader r(p, "grains"); });
   EXPECT_NE(missing.find("/particles/grains: no such particles group"), std::string::npos)
       << missing;
-  const std::string no_position = message_of([&] { FrameReader r(p, "walls"); });
+  const std::string no_position = test::input_error_of([&] { FrameReader r(p, "walls"); });
   EXPECT_NE(no_position.find("/particles/walls/position: missing"), std::string::npos)
       << no_position;
 }
@@ -530,7 +522,7 @@ TEST_F(FrameStore, WrongPositionShapeIsAnInputErrorNamingTheDataset) {
     const std::int64_t steps[2] = {0, 1};
     put_dataset(position, "step", H5T_NATIVE_INT64, {2}, steps);
   }
-  const std::string msg = message_of([&] { FrameReader r(p); });
+  const std::string msg = test::input_error_of([&] { FrameReader r(p); });
   EXPECT_NE(msg.find(p.string() + ": /particles/all/position/value: expected positions of shape"),
             std::string::npos)
       << msg;
@@ -540,7 +532,7 @@ TEST_F(FrameStore, WrongPositionShapeIsAnInputErrorNamingTheDataset) {
 TEST_F(FrameStore, FileWithoutParticlesIsAnInputError) {
   const fs::path p = file("empty.h5");
   { Id created(H5Fcreate(p.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT)); }
-  const std::string msg = message_of([&] { FrameReader r(p); });
+  const std::string msg = test::input_error_of([&] { FrameReader r(p); });
   EXPECT_EQ(msg, p.string() + ": /particles: missing (not an H5MD file with particles)");
 }
 
@@ -600,13 +592,13 @@ TEST_F(FrameStore, RowsWhoseStepWasNeverWrittenAreNotFrames) {
 
 TEST_F(FrameStore, MissingFileIsAnInputError) {
   const fs::path p = file("nowhere.h5");
-  EXPECT_EQ(message_of([&] { FrameReader r(p); }), p.string() + ": no such file");
+  EXPECT_EQ(test::input_error_of([&] { FrameReader r(p); }), p.string() + ": no such file");
 }
 
 TEST_F(FrameStore, NonHdf5FileIsAnInputError) {
   const fs::path p = file("notes.h5");
   std::ofstream(p) << "position: 1 2 3\n";
-  const std::string msg = message_of([&] { FrameReader r(p); });
+  const std::string msg = test::input_error_of([&] { FrameReader r(p); });
   EXPECT_EQ(msg, p.string() + ": not an HDF5 file (no HDF5 signature)");
 }
 
@@ -615,7 +607,7 @@ TEST_F(FrameStore, TruncatedFileIsAnInputError) {
   const fs::path cut = file("cut.h5");
   fs::copy_file(good, cut);
   fs::resize_file(cut, fs::file_size(good) / 2);
-  const std::string msg = message_of([&] { FrameReader r(cut); });
+  const std::string msg = test::input_error_of([&] { FrameReader r(cut); });
   EXPECT_EQ(msg, cut.string() + ": not a readable HDF5 file (truncated or corrupt)");
 }
 
@@ -631,7 +623,7 @@ TEST_F(FrameStore, FileLeftOpenByAKilledWriterSaysHowToClearIt) {
   int status = 0;
   waitpid(child, &status, 0);
   ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
-  EXPECT_EQ(message_of([&] { FrameReader r(p); }),
+  EXPECT_EQ(test::input_error_of([&] { FrameReader r(p); }),
             p.string() +
                 ": expected an HDF5 file its writer closed, found one still marked open for "
                 "writing (a run killed before it closed the file, or one writing it now); if "
@@ -674,7 +666,7 @@ TEST_F(FrameStore, DeclaredDataTheFileDoesNotStoreIsRefusedBeforeReading) {
   const fs::path p = file("unstored.h5");
   write_positions(p, [](hid_t g) { put_chunked(g, "value", {1, 50000000, 3}, {1, 100000, 3}, 0); });
   ASSERT_LT(fs::file_size(p), 10000u);
-  EXPECT_EQ(message_of([&] { FrameReader r(p); }),
+  EXPECT_EQ(test::input_error_of([&] { FrameReader r(p); }),
             p.string() +
                 ": /particles/all/position/value: expected at most 1.68e+07 bytes of data for "
                 "the 0 bytes stored in the file, got shape [1, 50000000, 3] (1.2e+09 bytes; "
@@ -687,7 +679,7 @@ TEST_F(FrameStore, DeclaredRowsTheFileDoesNotStoreAreRefused) {
   write_positions(p, [](hid_t g) {
     put_chunked(g, "value", {1000000000000, 0, 3}, {1000, 1, 3}, 0);
   });
-  EXPECT_EQ(message_of([&] { FrameReader r(p); }),
+  EXPECT_EQ(test::input_error_of([&] { FrameReader r(p); }),
             p.string() +
                 ": /particles/all/position/value: expected at most 1.68e+07 rows for the 0 bytes "
                 "stored in the file, got shape [1000000000000, 0, 3] (damaged or crafted file)");
@@ -728,7 +720,7 @@ TEST_F(FrameStore, ContactsOutsideTheContactArraysAreRefused) {
       put_row(f, "/granpipe/contacts/offset", 1, offset);
       put_row(f, "/granpipe/contacts/count", 1, count);
     }
-    EXPECT_EQ(message_of([&] { FrameReader r(p); }),
+    EXPECT_EQ(test::input_error_of([&] { FrameReader r(p); }),
               p.string() +
                   ": /granpipe/contacts: frame 1: expected rows within the 7 contact rows, "
                   "got offset " +
@@ -762,7 +754,7 @@ TEST_F(FrameStore, ContactPartnersOutOfRangeAreRefusedNamingTheRow) {
             ? where + ", got " + std::to_string(value)
             : where + " other than i (2) or a wall code -2 (x_low) to -8 (cylinder), got " +
                   std::to_string(value);
-    EXPECT_EQ(message_of([&] { r.read(1); }),
+    EXPECT_EQ(test::input_error_of([&] { r.read(1); }),
               p.string() + ": /granpipe/contacts/" + column + expected);
   }
 }
@@ -779,7 +771,7 @@ TEST_F(FrameStore, ParticleIdsGivenTwiceInAFrameAreRefused) {
     w.append(f);
     w.close();
   }
-  EXPECT_EQ(message_of([&] { FrameReader(p).read(0); }),
+  EXPECT_EQ(test::input_error_of([&] { FrameReader(p).read(0); }),
             p.string() +
                 ": /particles/all/id/value: frame 0: expected each particle id once, got id 7 "
                 "again (particles 1 and 2)");
@@ -813,7 +805,7 @@ TEST_F(FrameStore, BoxEdgesThatDisagreeWithTheContainerAreRefused) {
       continue;
     }
     EXPECT_NO_THROW(r.read(0));
-    EXPECT_EQ(message_of([&] { r.read(1); }),
+    EXPECT_EQ(test::input_error_of([&] { r.read(1); }),
               p.string() + ": " + edges +
                   ": frame 1: expected the container's edge along y (/granpipe/container hi - "
                   "lo), 7.02, got 7.5");
@@ -891,7 +883,7 @@ TEST_F(FrameStore, AFileOfAnotherLayoutVersionIsRefusedNamingIt) {
     H5Adelete(ext, "version");
     put_int_attribute(ext, "version", {1, 0}, false);
   }
-  EXPECT_EQ(message_of([&] { FrameReader r(p); }),
+  EXPECT_EQ(test::input_error_of([&] { FrameReader r(p); }),
             p.string() +
                 ": /granpipe@version: expected frames layout 2.x, got 1.x (written by "
                 "another granpipe version; docs/file-format.md lists the layouts)");

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <vector>
 
-#include "granpipe/errors.hpp"
 #include "granpipe/loaded_pair_contacts.hpp"
+#include "plugin_harness.hpp"
 
 using namespace granpipe;
 
@@ -29,12 +29,7 @@ Frame frame_with_forces() {
 }
 
 std::string error_of(const Frame& f) {
-  try {
-    loaded_pair_contacts(f, "frame 7");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
+  return test::input_error_of([&] { loaded_pair_contacts(f, "frame 7"); });
 }
 
 }  // namespace

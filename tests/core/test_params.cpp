@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "granpipe/pipeline.hpp"
+#include "plugin_harness.hpp"
 
 using namespace granpipe;
 
@@ -79,12 +80,7 @@ Params made(const std::string& params, const std::vector<std::string>& sets = {}
 
 std::string error_of(const std::string& params, const std::vector<std::string>& sets = {}) {
   const Registry r = material_registry();
-  try {
-    Pipeline::parse(pipeline(params), "p.json", sets, r);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
+  return test::input_error_of([&] { Pipeline::parse(pipeline(params), "p.json", sets, r); });
 }
 
 const char* kAllPairs = R"({"*": {"k_n": 2e5}})";

@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "granpipe/pipeline.hpp"
+#include "plugin_harness.hpp"
 
 using namespace granpipe;
 namespace fs = std::filesystem;
@@ -67,12 +68,7 @@ std::string run_error(const std::string& analyzer) {
   RunOptions o;
   o.progress = false;
   o.out = fs::temp_directory_path() / ("granpipe_test_plugin_errors_" + std::to_string(::getpid()));
-  try {
-    p.run(o, log);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
+  return test::input_error_of([&] { p.run(o, log); });
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include "granpipe/frame_store.hpp"
 #include "granpipe/pipeline.hpp"
 #include "granpipe/plugin_loader.hpp"
+#include "plugin_harness.hpp"
 
 using namespace granpipe;
 namespace fs = std::filesystem;
@@ -305,12 +306,9 @@ TEST(PublishedColumns, PipelineOrderDecidesWhoSeesAColumn) {
 std::string run_error_of(const std::string& analyzers, const std::string& name) {
   const Registry r = registry_with_h5md();
   const fs::path out = fresh_dir(name);
-  std::string message = "no error";
-  try {
+  const std::string message = test::input_error_of([&] {
     run_label_sum(R"({"source": {"plugin": "line"}, "analyzers": )" + analyzers + "}", r, out);
-  } catch (const InputError& e) {
-    message = e.what();
-  }
+  });
   fs::remove_all(out);
   return message;
 }

@@ -7,7 +7,6 @@
 #include <fstream>
 #include <string>
 
-#include "granpipe/errors.hpp"
 #include "granpipe/frame_store.hpp"
 #include "granpipe/start_frame.hpp"
 #include "plugin_harness.hpp"
@@ -48,12 +47,7 @@ std::optional<StartFrame> start(const nlohmann::json& params) {
 }
 
 std::string refusal(const nlohmann::json& params) {
-  try {
-    start(params);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no refusal";
+  return test::input_error_of([&] { start(params); });
 }
 
 }  // namespace

@@ -24,6 +24,7 @@
 #include "granpipe/frame.hpp"
 #include "granpipe/random.hpp"
 #include "loose_lattice.hpp"
+#include "plugin_harness.hpp"
 #include "time_step.hpp"
 
 namespace dem = granpipe::dem;
@@ -34,6 +35,7 @@ using granpipe::ContainerShape;
 using granpipe::Frame;
 using granpipe::InputError;
 using granpipe::Wall;
+using granpipe::test::input_error_of;
 namespace partner = granpipe::partner;
 
 // Every heap allocation of this test program (operator new and Eigen both end in malloc)
@@ -809,27 +811,12 @@ TEST(DemTimeStep, WallsAndStiffSpeciesCountToo) {
   EXPECT_LT(hertz.t_c, dem::hertz_contact_time(2e5, 3.16, 0.5 * 221, 5.0));
 }
 
-namespace {
-
-// The message of the InputError that f throws ("" when it throws none).
-template <class F>
-std::string input_error(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
-
-}  // namespace
-
 TEST(DemPaths, AnInstructionSetThisProcessorLacksIsRefusedByName) {
   for (const auto path : {dem::InstructionSet::Avx2, dem::InstructionSet::Avx512}) {
     if (dem::runs_here(path)) continue;
     dem::Settings s = settings(1e-4);
     s.instruction_set = path;
-    EXPECT_EQ(input_error([&] { dropped_bed(10, 2.0, s); }),
+    EXPECT_EQ(input_error_of([&] { dropped_bed(10, 2.0, s); }),
               std::string("dem: instruction_set: expected an instruction set this processor runs, "
                           "found \"") +
                   dem::name_of(path) + "\" (" + dem::label_of(path) +
@@ -841,7 +828,7 @@ TEST(DemInput, BadParticlesSettingsAndWallsAreRefusedByName) {
   const dem::Model model = one_species(material(kKn, 10.0, 0.5));
   const dem::WallSet walls(base_only(), {});
   const auto make = [&](const dem::InitialState& s, const dem::Settings& st = settings(1e-4)) {
-    return input_error([&] { dem::Engine(model, walls, st, s); });
+    return input_error_of([&] { dem::Engine(model, walls, st, s); });
   };
   dem::InitialState s = spheres({{0, 0, 1}, {2, 0, 1}}, {});
   s.radius[1] = -1;
@@ -865,21 +852,21 @@ TEST(DemInput, BadParticlesSettingsAndWallsAreRefusedByName) {
 
   dem::Model bad = model;
   bad.pair[0].mu = -0.5;
-  EXPECT_EQ(input_error([&] { bad.check(); }),
+  EXPECT_EQ(input_error_of([&] { bad.check(); }),
             "dem: species 0 with 0: mu: expected a finite value >= 0, got -0.5");
   bad = model;
   bad.density[0] = 0;
-  EXPECT_EQ(input_error([&] { bad.check(); }),
+  EXPECT_EQ(input_error_of([&] { bad.check(); }),
             "dem: species 0: density: expected a finite value > 0, got 0");
 
   Container periodic = base_only();
   periodic.boundary[0] = {Boundary::Periodic, Boundary::Periodic};
-  EXPECT_EQ(input_error([&] { dem::WallSet(periodic, {}); }),
+  EXPECT_EQ(input_error_of([&] { dem::WallSet(periodic, {}); }),
             "dem: container: x_low: expected a wall or an open side, got a periodic side (the "
             "DEM engine has no periodic boundaries)");
   dem::Drive tilted;
   tilted.direction = Vector3d(1, 1, 0);
-  EXPECT_EQ(input_error([&] { dem::WallSet(base_only(), tilted); }),
+  EXPECT_EQ(input_error_of([&] { dem::WallSet(base_only(), tilted); }),
             "dem: drive direction: expected a unit vector, got (1 1 0)");
 }
 
@@ -889,7 +876,7 @@ TEST(DemHealth, ParticleThroughTheBaseOrNotFiniteStopsTheRun) {
   dem::Engine through(model, dem::WallSet(base_only(), {}), settings(1e-3),
                       spheres({{0, 0, 0.6}, {5, 0, 3}}, {{0, 0, -2000}, {0, 0, 0}}));
   EXPECT_NO_THROW(dem::check_health(through, 1e9));
-  EXPECT_EQ(input_error([&] { through.run(1); }),
+  EXPECT_EQ(input_error_of([&] { through.run(1); }),
             "dem: step 1 (t = 0.001): particle 0 overlaps wall z_low by 380 % of its radius (a "
             "sound run stays within 30 %): the contacts are too soft for the speed of impact, or "
             "dt too long; raise k_n, lower the speeds or reduce dt (now 0.001)");
@@ -903,7 +890,7 @@ TEST(DemHealth, ParticleThroughTheBaseOrNotFiniteStopsTheRun) {
   dem::Engine fast(model, dem::WallSet(no_walls(), {}), settings(1e-3),
                    spheres({{0, 0, 0}}, {{3, 0, 0}}));
   EXPECT_NO_THROW(dem::check_health(fast, 4.5));
-  EXPECT_EQ(input_error([&] { dem::check_health(fast, 4.0); }),
+  EXPECT_EQ(input_error_of([&] { dem::check_health(fast, 4.0); }),
             "dem: step 0 (t = 0): kinetic energy 4.5 exceeds 4: the run blew up; reduce dt (now "
             "0.001) against the shortest contact time, or the initial overlaps");
 }
@@ -920,7 +907,7 @@ std::string pass_through(dem::ContactLaw law, bool friction, bool rotation, int 
   s.threads = threads;
   dem::Engine e(one_species(material(kKn, 40.0, 0.5)), dem::WallSet(no_walls(), {}), s,
                 spheres({{-2, 0, 0}, {2, 0, 0}}, {{500, 0, 0}, {-500, 0, 0}}));
-  const std::string m = input_error([&] { e.run(100); });
+  const std::string m = input_error_of([&] { e.run(100); });
   // The spheres are stopped before they pass through each other.
   EXPECT_LT(position(e, 0).x(), position(e, 1).x());
   return m;

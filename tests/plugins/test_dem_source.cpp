@@ -56,13 +56,10 @@ fs::path start_file(const std::vector<Eigen::Vector3d>& centres = {{0.0, 0.0, 0.
 
 // The message of the InputError that making the source with these parameters throws.
 std::string refusal(const nlohmann::json& params) {
-  try {
+  return test::input_error_of([&] {
     const auto ctx = test::make_context(dem::schema(), params);
     dem::DemSource source(*ctx);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no refusal";
+  });
 }
 
 // The message of the blow-up that running the source to its end throws, after the frames

@@ -103,12 +103,7 @@ TEST_F(H5mdSourceTest, ContentComesFromTheFile) {
 TEST_F(H5mdSourceTest, SelectionOutsideTheFileIsAnInputError) {
   const fs::path p = write(4);
   auto message = [&](std::int64_t first, std::int64_t last) {
-    try {
-      source(p, first, last, 1);
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string("(no InputError)");
+    return granpipe::test::input_error_of([&] { source(p, first, last, 1); });
   };
   EXPECT_EQ(message(4, -1), "params.first: expected a frame index below 4, got 4 (" + p.string() +
                                 " holds 4 frames)");

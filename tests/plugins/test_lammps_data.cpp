@@ -20,12 +20,7 @@ namespace {
 // The message read_atoms throws for this file content.
 std::string refusal(const std::string& content) {
   std::istringstream in(content);
-  try {
-    lammps_data::read_atoms(in, "x.data");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "accepted";
+  return test::input_error_of([&] { lammps_data::read_atoms(in, "x.data"); });
 }
 
 // A data file of two spheres of radius 0.5 (atom ids 1 and 7) at these positions.
