@@ -67,8 +67,14 @@ std::string run_error(const std::string& analyzer) {
   log.set_quiet(true);
   RunOptions o;
   o.progress = false;
-  o.out = fs::temp_directory_path() / ("granpipe_test_plugin_errors_" + std::to_string(::getpid()));
-  return test::input_error_of([&] { p.run(o, log); });
+  // A folder per analyzer, removed after: a failed run marks its folder, which a second
+  // run into it would find (both tests share one process when the binary runs alone).
+  const fs::path out = fs::temp_directory_path() / ("granpipe_test_plugin_errors_" +
+                                                    std::to_string(::getpid()) + "_" + analyzer);
+  o.out = out;
+  const std::string message = test::input_error_of([&] { p.run(o, log); });
+  fs::remove_all(out);
+  return message;
 }
 
 }  // namespace
