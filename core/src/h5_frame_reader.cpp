@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <unordered_map>
@@ -135,6 +136,8 @@ void read_element(const h5::Element& e, long k, Column& c) {
 // follows particles by their ids, and as two in every count.
 void check_unique_ids(const Frame& f, const std::string& dataset, long k) {
   const IndexArray& id = f.id();
+  // Most files number their particles in order: unique without a table of them.
+  if (std::adjacent_find(id.begin(), id.end(), std::greater_equal<>()) == id.end()) return;
   std::unordered_map<std::int64_t, Eigen::Index> first_row;
   first_row.reserve(static_cast<std::size_t>(id.size()));
   for (Eigen::Index i = 0; i < id.size(); ++i) {

@@ -24,7 +24,7 @@ std::vector<std::string> keywords(const std::string& text) {
 // period along z of at most an atom's diameter (the atom would touch its own image), so such
 // a flat layer is a 2D dump, whose disks 3D analyzers would measure as spheres.
 void refuse_a_2d_run(const Frame& f, const Container& box, const std::string& at) {
-  const Eigen::ArrayXd z = f.position().col(2);
+  const auto z = f.position().col(2);
   const double diameter = 2.0 * f.radius().maxCoeff();
   if (!box.periodic(2) || box.length(2) > diameter || (z != z[0]).any()) return;
   throw InputError(at + kReads3d + "every atom at z = " + format_number(z[0]) +

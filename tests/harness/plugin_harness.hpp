@@ -3,6 +3,8 @@
 // plugin's schema exactly as a pipeline validates them (defaults filled in, a bad value
 // refused with the pipeline's message), its seeds, one thread, a quiet log and no progress
 // bar. Tests then make the plugin from the context, or have the harness make it.
+#include <gtest/gtest.h>
+
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -63,6 +65,17 @@ std::string input_error_of(F&& refused) {
     return e.what();
   }
   return "no refusal";
+}
+
+// A warning said for the first such frame only: the log `lines` start with `first`, and no
+// later line says `marker` again.
+inline void expect_said_once(const std::vector<std::string>& lines, const std::string& first,
+                             const std::string& marker) {
+  ASSERT_GE(lines.size(), 1u);
+  EXPECT_EQ(lines[0], first);
+  for (std::size_t k = 1; k < lines.size(); ++k) {
+    EXPECT_EQ(lines[k].find(marker), std::string::npos) << lines[k];
+  }
 }
 
 // The installed plugins, loaded once.
