@@ -7,6 +7,7 @@
 #include <sstream>
 #include <vector>
 
+#include "granpipe/binary_signature.hpp"
 #include "granpipe/errors.hpp"
 
 namespace granpipe::lammps_data {
@@ -64,7 +65,9 @@ struct AtomsSection {
   long section_line = 0;  // the "Atoms" line
 };
 
-// The header's "N atoms", then on to the Atoms section, whose atom style must be sphere.
+// The header's "N atoms", then on to the Atoms section, whose atom style must be sphere and
+// must be said: atom_style full has sphere's seven columns (id mol type q x y z), and read as
+// sphere its types would be diameters, so a section that names no style is not guessed at.
 AtomsSection find_atoms_section(Lines& lines, const std::string& where) {
   AtomsSection a;
   std::string line;
@@ -76,9 +79,10 @@ AtomsSection find_atoms_section(Lines& lines, const std::string& where) {
                      quoted(line) + ": this is a LAMMPS dump, use the lammps_dump source");
   }
   // A binary file was read as text and blamed for a missing "N atoms": name what it is.
-  const char* binary = line.starts_with("\x89HDF")    ? "an HDF5 file: use the h5md source"
-                       : line.starts_with("\x1f\x8b") ? "a gzip file: decompress it first"
-                                                      : nullptr;
+  const BinarySignature signature = binary_signature(line);
+  const char* binary = signature == BinarySignature::Hdf5   ? "an HDF5 file: use the h5md source"
+                       : signature == BinarySignature::Gzip ? "a gzip file: decompress it first"
+                                                            : nullptr;
   if (binary) {
     throw InputError(
         where + ": line 1: expected a LAMMPS data file (a title, then \"N atoms\"), got " + binary);
@@ -97,12 +101,18 @@ AtomsSection find_atoms_section(Lines& lines, const std::string& where) {
     }
     if (w.empty() || w[0] != "Atoms") continue;
     a.section_line = lines.number();
+    const std::size_t hash = line.find('#');
     const std::vector<std::string> style =
-        words(line.substr(std::min(line.find('#'), line.size())));
-    if (style.size() >= 2 && style[1] != "sphere") {
-      throw InputError(where + ": line " + std::to_string(lines.number()) +
-                       ": expected the Atoms section of atom_style sphere, got atom_style \"" +
-                       style[1] + "\"");
+        hash == std::string::npos ? std::vector<std::string>{} : words(line.substr(hash + 1));
+    const std::string at = where + ": line " + std::to_string(lines.number());
+    if (style.empty()) {
+      throw InputError(at + ": expected the Atoms section to name its atom style (\"Atoms # " +
+                       "sphere\", as write_data writes it), got " + quoted(line) +
+                       ": atom_style full has sphere's 7 columns and would be misread");
+    }
+    if (style[0] != "sphere") {
+      throw InputError(at + ": expected the Atoms section of atom_style sphere, got atom_style \"" +
+                       style[0] + "\"");
     }
     break;
   }

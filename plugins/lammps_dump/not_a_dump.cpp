@@ -1,6 +1,7 @@
 #include "not_a_dump.hpp"
 
 #include "dump_text.hpp"
+#include "granpipe/binary_signature.hpp"
 
 namespace granpipe::lammps_dump {
 
@@ -17,8 +18,7 @@ bool is_atoms_line(std::string_view line) {
 }  // namespace
 
 std::string what_the_file_is(TextLines& lines, const std::string& first_line) {
-  // HDF5's signature, "\x89HDF\r\n\x1a\n", read as text up to its end of line.
-  if (first_line.starts_with("\x89HDF")) {
+  if (binary_signature(first_line) == BinarySignature::Hdf5) {
     return "an HDF5 file: use the h5md source for H5MD frames";
   }
   std::string line = first_line;

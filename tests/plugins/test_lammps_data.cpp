@@ -63,7 +63,7 @@ Velocities
 }
 
 TEST(LammpsData, AMalformedLineIsNamed) {
-  EXPECT_EQ(refusal("title\n1 atoms\n\nAtoms\n\n1 1 one 1.91 0 0 0\n"),
+  EXPECT_EQ(refusal("title\n1 atoms\n\nAtoms # sphere\n\n1 1 one 1.91 0 0 0\n"),
             "x.data: line 6: expected \"id type diameter density x y z\" (atom_style sphere), "
             "got \"1 1 one 1.91 0 0 0\"");
 }
@@ -76,11 +76,18 @@ TEST(LammpsData, AnotherAtomStyleIsRefusedByName) {
       "x.data: line 4: expected the Atoms section of atom_style sphere, got atom_style \"full\"");
 }
 
-// Without the style comment the columns decide: atom_style charge has 6.
-TEST(LammpsData, WithoutAStyleTheColumnsMustBeSpheres) {
-  EXPECT_EQ(refusal("title\n1 atoms\n\nAtoms\n\n1 1 -0.5 0 0 0\n"),
-            "x.data: line 6: expected \"id type diameter density x y z\" (atom_style sphere), "
-            "got \"1 1 -0.5 0 0 0\"");
+// Without the style comment the columns decided, and atom_style full has sphere's 7: its
+// molecule ids were read as types and its types as diameters (1, a plausible size), exit 0.
+TEST(LammpsData, AnAtomsSectionThatNamesNoStyleIsRefused) {
+  EXPECT_EQ(refusal("title\n1 atoms\n\nAtoms\n\n1 1 1 -0.5 0 0 0\n"),
+            "x.data: line 4: expected the Atoms section to name its atom style (\"Atoms # "
+            "sphere\", as write_data writes it), got \"Atoms\": atom_style full has sphere's 7 "
+            "columns and would be misread");
+  EXPECT_EQ(refusal("title\n1 atoms\n\nAtoms # \n\n1 1 1 -0.5 0 0 0\n"),
+            "x.data: line 4: expected the Atoms section to name its atom style (\"Atoms # "
+            "sphere\", as write_data writes it), got \"Atoms # \": atom_style full has sphere's "
+            "7 columns and would be misread");
+  EXPECT_EQ(refusal("title\n1 atoms\nAtoms #sphere\n1 1 1 1 0 0 0\n"), "no refusal");
 }
 
 TEST(LammpsData, TooFewAtomsNameTheSectionAndTheHeader) {
