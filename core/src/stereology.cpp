@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "granpipe/bottom_wall.hpp"
 #include "granpipe/cut_profile.hpp"
 #include "granpipe/errors.hpp"
 #include "granpipe/format_number.hpp"
@@ -77,14 +78,12 @@ GlobalFractions global_fractions(const Frame& frame, const StereologySettings& s
         "cross-section), got a cylinder");
   }
   const int v = frame.dim - 1;
-  if (frame.container.periodic(v)) {
-    // Heights are above the bottom and phi_c corrects the layer its wall perturbs: a
-    // container periodic along the vertical has neither (phi_c of a crystal came out above
-    // the crystal's fraction by the correction, exit 0).
-    throw InputError(std::string("stereology: expected a container with a bottom wall along ") +
-                     "xyz"[v] + " (heights are above it; phi_c corrects the layer it perturbs), " +
-                     "got one periodic along " + "xyz"[v]);
-  }
+  // (Periodic along the vertical, phi_c of a crystal came out above the crystal's fraction
+  // by the correction of a layer no wall perturbs, exit 0.)
+  require_bottom_wall(frame.container, v,
+                      std::string("stereology: expected a container with a bottom wall along ") +
+                          "xyz"[v] +
+                          " (heights are above it; phi_c corrects the layer it perturbs)");
   const double factor = perturbed_factor(frame, s);
   GlobalFractions g;
   g.phi_b = g.phi_c = std::nan("");

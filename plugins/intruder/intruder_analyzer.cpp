@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "granpipe/bottom_wall.hpp"
+#include "granpipe/errors.hpp"
 #include "granpipe/format_number.hpp"
 
 namespace granpipe::intruder {
@@ -13,19 +15,6 @@ namespace {
 // species in the scenes this serves, so r³ weights them.
 double bed_mean(const Eigen::ArrayXd& weight, const Eigen::ArrayXd& value, Eigen::Index skip) {
   return ((weight * value).sum() - weight[skip] * value[skip]) / (weight.sum() - weight[skip]);
-}
-
-// Heights are above the base and the stage follows the base contacts: a container periodic
-// or open at the bottom along z has no base, and its heights from the box's lower side and
-// a stage forever "expansion" were reported as measured (exit 0).
-void check_base(const Container& c, const std::string& where) {
-  const Boundary bottom = c.boundary[2][0];
-  if (bottom == Boundary::Wall) return;
-  throw InputError(where +
-                   ": expected a base (a wall at the bottom along z) to measure heights and "
-                   "the stage from, got a container " +
-                   (bottom == Boundary::Periodic ? "periodic along z" : "open at the bottom") +
-                   " (state the base where the source allows it)");
 }
 
 }  // namespace
@@ -50,7 +39,10 @@ BedState measure_bed(const Frame& f, const std::string& where) {
     throw InputError(where + ": expected an intruder and a bed (2 particles or more), got " +
                      std::to_string(n));
   }
-  check_base(f.container, where);
+  // (Without a base the stage, which follows the base contacts, was "expansion" forever.)
+  require_bottom_wall(f.container, 2,
+                      where + ": expected a base (a wall at the bottom along z) to measure " +
+                          "heights and the stage from");
   const Eigen::Index big = find_intruder(f, where);
   const double base = f.container.lo[2] + f.container.wall_offset[2];
   const Eigen::ArrayXd weight = f.radius().cube();

@@ -213,13 +213,20 @@ TEST(GlobalFractions, AreUndefinedWithoutParticlesOrAZoneAboveTheLayer) {
 }
 
 // A crystal periodic along z: phi_c corrected a "bottom layer" no wall perturbs and came
-// out at 0.54 for simple cubic's 0.52, exit 0.
-TEST(GlobalFractions, RefuseAContainerPeriodicAlongTheVertical) {
+// out at 0.54 for simple cubic's 0.52, exit 0. Open at the bottom, heights were taken from
+// the box's lower side, where nothing is.
+TEST(GlobalFractions, RefuseAContainerWithoutABottomWall) {
   Frame f = cubic_layers(2, 4);
   f.container.boundary[2] = {Boundary::Periodic, Boundary::Periodic};
   EXPECT_EQ(granpipe::test::input_error_of([&] { global_fractions(f, {}); }),
             "stereology: expected a container with a bottom wall along z (heights are above "
-            "it; phi_c corrects the layer it perturbs), got one periodic along z");
+            "it; phi_c corrects the layer it perturbs), got a container periodic along z "
+            "(state the wall where the source allows it)");
+  f.container.boundary[2] = {Boundary::Open, Boundary::Open};
+  EXPECT_EQ(granpipe::test::input_error_of([&] { global_fractions(f, {}); }),
+            "stereology: expected a container with a bottom wall along z (heights are above "
+            "it; phi_c corrects the layer it perturbs), got a container open at the bottom "
+            "along z (state the wall where the source allows it)");
 }
 
 TEST(GlobalFractions, RefuseACylinder) {

@@ -88,10 +88,13 @@ TEST(Intruder, AContainerWithoutABaseIsRefused) {
   f.container.boundary[2][0] = f.container.boundary[2][1] = Boundary::Periodic;
   EXPECT_EQ(granpipe::test::input_error_of([&] { analyze({f}); }),
             "frame 0: expected a base (a wall at the bottom along z) to measure heights and "
-            "the stage from, got a container periodic along z (state the base where the "
+            "the stage from, got a container periodic along z (state the wall where the "
             "source allows it)");
   f.container.boundary[2][0] = Boundary::Open;
-  EXPECT_THROW(intruder::measure_bed(f, "frame 0"), InputError);
+  EXPECT_EQ(granpipe::test::input_error_of([&] { intruder::measure_bed(f, "frame 0"); }),
+            "frame 0: expected a base (a wall at the bottom along z) to measure heights and "
+            "the stage from, got a container open at the bottom along z (state the wall where "
+            "the source allows it)");
 }
 
 // The intruder is the largest particle wherever it sits in the frame.
