@@ -60,7 +60,7 @@ ArchesAnalyzer::ArchesAnalyzer(const PluginContext& ctx)
       tolerance_(ctx.params.real(kContactToleranceName)),
       span_bin_(ctx.params.real("span_bin")),
       svg_frames_(static_cast<long>(ctx.params.integer("svg_frames"))),
-      span_all_(span_bin_),
+      span_all_(span_bin_, ctx.param("span_bin")),
       per_frame_(ctx.stream_table(
           "per_frame", Table(kPerFrameColumns, "per-frame values of the arch analysis"))) {
   std::set<std::int64_t> seen;
@@ -69,7 +69,8 @@ ArchesAnalyzer::ArchesAnalyzer(const PluginContext& ctx)
       throw InputError(ctx.param("span_sizes") + ": expected distinct arch sizes, got " +
                        std::to_string(s) + " twice");
     }
-    span_by_size_.emplace_back(static_cast<long>(s), SpanHistogram(span_bin_));
+    span_by_size_.emplace_back(static_cast<long>(s),
+                               SpanHistogram(span_bin_, ctx.param("span_bin")));
   }
 }
 

@@ -17,7 +17,7 @@ void SpanHistogram::add(double span) {
   // asks for more memory than there is (checked only when it grows: most spans fall in it).
   const double bin = std::floor(span / width_);
   if (bin >= static_cast<double>(counts_.size())) {
-    check_bin_count(span, width_, "arches.span_bin", "bins of the span distributions");
+    check_bin_count(span, width_, width_name_, "bins of the span distributions");
     counts_.resize(static_cast<std::size_t>(bin) + 1, 0);
   }
   ++counts_[static_cast<std::size_t>(bin)];

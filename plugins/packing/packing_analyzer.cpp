@@ -57,17 +57,18 @@ struct Heights {
   double top = 0.0;   // the top of the region before exclude_top
 };
 
-// `columns`: the horizontal extent of the region, for the lowest surface.
-Heights vertical_range(const Frame& f, Top top, const Region& columns) {
+// `columns`: the horizontal extent of the region, for the lowest surface; `top_name`: where
+// `top` sits in the pipeline.
+Heights vertical_range(const Frame& f, Top top, const Region& columns,
+                       const std::string& top_name) {
   const Container& c = f.container;
   const int v = f.dim - 1;
   const double offset = c.periodic(v) ? 0.0 : c.wall_offset[v];
   if (top == Top::Auto) top = c.boundary[v][1] == Boundary::Open ? Top::Surface : Top::Container;
   if (top != Top::Container && c.periodic(v)) {
-    throw InputError(
-        std::string("packing.top: expected \"container\" or \"auto\" for a container ") +
-        "periodic along " + axis_name(v) + " (" + frame_name(f) + "), got \"" + choice_name(top) +
-        "\"");
+    throw InputError(top_name + ": expected \"container\" or \"auto\" for a container " +
+                     "periodic along " + axis_name(v) + " (" + frame_name(f) + "), got \"" +
+                     choice_name(top) + "\"");
   }
   Heights h{c.lo[v] + offset, c.hi[v] + offset};
   if (top == Top::Surface) {
@@ -103,7 +104,7 @@ Region packing_region(const Frame& frame, const PackingSettings& s) {
     r.lo[a] = c.lo[a] + offset + s.exclude_sides * d;
     r.hi[a] = c.hi[a] + offset - s.exclude_sides * d;
   }
-  const Heights h = vertical_range(frame, s.top, r);
+  const Heights h = vertical_range(frame, s.top, r, s.params + ".top");
   r.lo[v] = h.base + s.exclude_bottom * d;
   r.hi[v] = h.top - s.exclude_top * d;
   for (int a = 0; a < dim; ++a) {
@@ -144,9 +145,9 @@ PackingMeasurement measure_packing(const Frame& frame, FrameCache& cache,
   if (s.profile_step > 0.0) {
     const double step = s.profile_step * m.diameter;
     // The profile covers the whole bed, also when the region stops at the lowest surface.
-    const Heights h =
-        vertical_range(frame, s.top == Top::LowestSurface ? Top::Surface : s.top, region);
-    check_bin_count((h.top - h.base) / m.diameter, s.profile_step, "packing.profile_step",
+    const Heights h = vertical_range(frame, s.top == Top::LowestSurface ? Top::Surface : s.top,
+                                     region, s.params + ".top");
+    check_bin_count((h.top - h.base) / m.diameter, s.profile_step, s.params + ".profile_step",
                     "cuts of the profile");
     const int count = static_cast<int>(std::ceil((h.top - h.base) / step - 1e-9));
     m.profile = cut_fractions(frame, region, frame.dim - 1, h.base, step, count);
@@ -157,7 +158,7 @@ PackingMeasurement measure_packing(const Frame& frame, FrameCache& cache,
     // quantity phi measures.
     const int v = frame.dim - 1;
     const double height = region.hi[v] - region.lo[v];
-    check_bin_count(height / m.diameter, s.cuts_step, "packing.cuts_step", "cuts of phi_cuts");
+    check_bin_count(height / m.diameter, s.cuts_step, s.params + ".cuts_step", "cuts of phi_cuts");
     const int cuts =
         std::max(1, static_cast<int>(std::ceil(height / (s.cuts_step * m.diameter) - 1e-9)));
     const std::vector<double> f =
@@ -180,6 +181,7 @@ PackingAnalyzer::PackingAnalyzer(const PluginContext& ctx)
   settings_.profile_step = p.real("profile_step");
   settings_.cuts_step = p.real("cuts_step");
   settings_.top = p.choice<Top>("top");
+  if (!ctx.params_path.empty()) settings_.params = ctx.params_path;
 }
 
 void PackingAnalyzer::consume(const Frame& frame, FrameCache& cache) {

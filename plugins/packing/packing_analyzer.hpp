@@ -3,6 +3,7 @@
 // density, coordination numbers from contacts by distance, and the vertical profile of
 // the area fraction of horizontal cuts (stereology), per frame and averaged over frames.
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "granpipe/contacts_by_distance.hpp"
@@ -32,6 +33,8 @@ struct PackingSettings {
   Top top = Top::Auto;
   double profile_step = 0.05;  // mean diameters; 0: no profile
   double cuts_step = 0.01;     // mean diameters; 0: no phi_cuts
+  // Where these sit in the pipeline ("analyzers[1].params"), so that messages name them.
+  std::string params = "packing";
 };
 
 // What one frame measures.

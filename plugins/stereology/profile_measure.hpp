@@ -9,6 +9,7 @@
 //  - the lateral fraction (within lateral_band radii of either x side) and the central
 //    one (the rest), over the same heights;
 //  - the fit of Eq. (7) to the vertical profile from fit_from radii up.
+#include <string>
 #include <vector>
 
 #include "fermi_profile.hpp"
@@ -19,9 +20,10 @@ namespace granpipe::stereology {
 
 struct ProfileSettings {
   StereologySettings global;
-  double step = 0.1;          // R
-  double lateral_band = 7.0;  // R
-  double fit_from = 5.0;      // R
+  double step = 0.1;                          // R
+  std::string step_name = "stereology.step";  // where it sits in the pipeline, for messages
+  double lateral_band = 7.0;                  // R
+  double fit_from = 5.0;                      // R
 };
 
 struct ProfileMeasurement {

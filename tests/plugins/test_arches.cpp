@@ -681,7 +681,9 @@ TEST(ArchesAnalyzer, PublishesTheArchOfEachDisk) {
 }
 
 // A span bin far too small for the spans asked for 10^12 bins and more: std::bad_alloc,
-// exit 1. Refused at the first span that would need them.
+// exit 1. Refused at the first span that would need them, naming the parameter where the
+// pipeline has it (the harness's "params"; it said "arches.span_bin" whatever the analyzer's
+// name and place).
 TEST(ArchesAnalyzer, ASpanBinTooSmallForTheSpansIsRefused) {
   const auto ctx = context(0, 1e-12);
   ga::ArchesAnalyzer analyzer(*ctx);
@@ -692,7 +694,7 @@ TEST(ArchesAnalyzer, ASpanBinTooSmallForTheSpansIsRefused) {
   } catch (const granpipe::InputError& e) {
     EXPECT_EQ(
         std::string(e.what()).rfind(
-            "arches.span_bin: expected at most 10000000 bins of the span distributions, got ", 0),
+            "params.span_bin: expected at most 10000000 bins of the span distributions, got ", 0),
         0u)
         << e.what();
   }

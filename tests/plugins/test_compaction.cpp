@@ -218,14 +218,11 @@ TEST(Compaction, MeanHeightOfALatticeIsInMeanRadiiAboveTheBottom) {
 }
 
 TEST(Compaction, AFrameWithoutATapIsRefused) {
-  try {
-    measure_frame(cubic_stack(-1), StereologySettings{}, "compaction: frame 3 (step 0)");
-    FAIL() << "expected an InputError";
-  } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(),
-                 "compaction: frame 3 (step 0): expected the observable \"tap\" (frames of a "
-                 "tapping source such as spheres3d_tap), got a frame without it");
-  }
+  EXPECT_EQ(granpipe::test::input_error_of([] {
+              measure_frame(cubic_stack(-1), StereologySettings{}, "compaction: frame 3 (step 0)");
+            }),
+            "compaction: frame 3 (step 0): expected the observable \"tap\" (frames of a "
+            "tapping source such as spheres3d_tap), got a frame without it");
 }
 
 Results analyze(const std::vector<Frame>& frames, nlohmann::json params = {}) {

@@ -136,6 +136,17 @@ TEST(ProfileMeasure, AStepTooSmallForTheBedIsRefused) {
             "2e+13 (20 in steps of 1e-12)");
 }
 
+// The analyzer names the step where the pipeline has it ("analyzers[2].params.step"; the
+// harness's "params.step"), not "stereology.step" whatever its name and place.
+TEST(StereologyAnalyzer, AStepTooSmallIsNamedWhereThePipelineHasIt) {
+  const auto ctx = granpipe::test::make_context(schema(), {{"step", 1e-12}});
+  StereologyAnalyzer a(*ctx);
+  FrameCache cache;
+  EXPECT_EQ(granpipe::test::input_error_of([&] { a.consume(cubic_layers(8, 10), cache); }),
+            "params.step: expected at most 10000000 bins of the vertical profile, got "
+            "2e+13 (20 in steps of 1e-12)");
+}
+
 // A bed lower than bulk_top and a box no wider than two lateral bands: phi_b was the
 // fraction of a slab partly empty and phi_central NaN, both with exit 0 and no word. phi_b
 // is NaN now, left out of the mean as phi_c is, and the first such frame says why.
