@@ -37,6 +37,15 @@ void check_utf8(const std::string& assignment) {
                    "...: expected UTF-8 text, got the byte " + byte + " next");
 }
 
+// A sweep's parameter names are themselves paths ("source.params.epsilon"), so what follows
+// sweep.parameters in a --set is one key: --set sweep.parameters.source.params.epsilon=[0.1]
+// cuts the file's sweep to one value rather than nesting objects the sweep cannot read.
+std::vector<std::string> sweep_key_as_one_part(std::vector<std::string> parts) {
+  if (parts.size() <= 3 || parts[0] != "sweep" || parts[1] != "parameters") return parts;
+  const std::string key = join_path({parts.begin() + 2, parts.end()});
+  return {"sweep", "parameters", key};
+}
+
 // Applies `--set path=value` and says where the value came from.
 Override apply_set(json& root, const std::string& assignment) {
   check_utf8(assignment);
@@ -44,7 +53,7 @@ Override apply_set(json& root, const std::string& assignment) {
   const std::string where = set_origin(assignment);
   if (eq == std::string::npos) throw InputError(where + ": expected path=value, got no '='");
   const std::string path = assignment.substr(0, eq), text = assignment.substr(eq + 1);
-  const std::vector<std::string> parts = split_path(path, where);
+  const std::vector<std::string> parts = sweep_key_as_one_part(split_path(path, where));
   // A bare word is a string: --set source.params.lattice=fcc
   const json value = parse_strict_json_if_json(text, where, parts.size()).value_or(json(text));
   locate(root, parts, where) = value;

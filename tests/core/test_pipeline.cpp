@@ -528,6 +528,23 @@ TEST(Pipeline, SweepGridAndZip) {
   EXPECT_EQ(Pipeline::parse(zip, "p.json", {}, r).points(), 2u);
 }
 
+// A sweep's parameter names are paths: --set sweep.parameters.<path>=[...] replaces that
+// parameter's values (it nested objects the sweep refused: "sweep.parameters[\"source\"]:
+// expected a non-empty list of values").
+TEST(Pipeline, SetIntoASweepReplacesTheValuesOfTheParameterItNames) {
+  const Registry r = test_registry();
+  const char* grid = R"({"source": {"plugin": "random"}, "analyzers": [{"plugin": "meanx"}],
+    "sweep": {"parameters": {"source.params.n": [1, 2, 3], "analyzers[0].params.scale": [1, 2]}}})";
+  EXPECT_EQ(Pipeline::parse(grid, "p.json", {"sweep.parameters.source.params.n=[4]"}, r).points(),
+            2u);
+  EXPECT_EQ(Pipeline::parse(grid, "p.json", {"sweep.parameters.analyzers[0].params.scale=[3]"}, r)
+                .points(),
+            3u);
+  EXPECT_EQ(error_of(grid, {"sweep.parameters.source.params.n=[5000]"}),
+            "p.json: source.params.n: expected an integer in [1, 1000], got 5000 (sweep point 0: "
+            "analyzers[0].params.scale = 1, source.params.n = 5000)");
+}
+
 TEST(Pipeline, SameSeedSameResultsAndSweepPointsIndependentOfThreads) {
   const Registry r = test_registry();
   const char* text =
