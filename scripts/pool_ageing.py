@@ -21,6 +21,7 @@ its parameter); the values are NaN unless fitted.
 
     scripts/pool_ageing.py out/tap3d_ageing
     scripts/pool_ageing.py out/ageing_part1 out/ageing_part2   (realizations run in parts)
+    scripts/pool_ageing.py out/ageing_r0 out/ageing_r1 ...       (a run per realization)
 """
 import argparse
 import csv
@@ -30,7 +31,7 @@ import os
 import numpy as np
 from scipy.optimize import curve_fit
 
-from input_error import refuse
+from input_error import read_pipeline, refuse
 from result_csv import read_table, sweep_groups
 
 
@@ -108,27 +109,51 @@ def write(path, provenance, header, rows):
     print(f"{path}: {len(rows)} rows")
 
 
+def value_at(pipeline, path):
+    """The value at a dotted path (source.params.replica) of a resolved pipeline, or None."""
+    value = pipeline
+    for part in path.split("."):
+        value = value.get(part) if isinstance(value, dict) else None
+    return value
+
+
+def run_realizations(out, analyzer, over):
+    """The other swept parameters of the run in `out` and {their values: [(realization, its
+    ageing table's path)]}. A run of one point writes no sweep.points.csv and its tables
+    without a point_NNN. prefix: it is one realization, numbered in its resolved pipeline."""
+    if not os.path.exists(os.path.join(out, "sweep.points.csv")):
+        value = value_at(read_pipeline(out), over)
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            refuse(f"{os.path.join(out, 'pipeline.json')}: expected a number at {over} "
+                   f"(a run of one realization), found {value!r}")
+        return [], {(): [(float(value), os.path.join(out, f"{analyzer}.ageing.csv"))]}
+    _, header, points, others, by_key = sweep_groups(out, over)
+    value_of = {int(p[header.index("point")]): p[header.index(over)] for p in points}
+    return others, {key: [(value_of[point], os.path.join(out, f"point_{point:03d}.{analyzer}.ageing.csv"))
+                          for point in members]
+                    for key, members in by_key.items()}
+
+
 def realization_tables(outs, analyzer, over):
     """The other swept columns and {their values: [(path, header, rows)]} of the ageing tables
     of every realization in the runs `outs` (one pipeline's realizations run in several
-    parts); a realization met twice is refused: pooled twice, it would weigh double."""
+    parts, as sweeps or as runs of one realization each); a realization met twice is refused:
+    pooled twice, it would weigh double."""
     others, groups, seen = None, {}, {}
     for out in outs:
-        _, header, points, run_others, by_key = sweep_groups(out, over)
+        run_others, by_key = run_realizations(out, analyzer, over)
         if others is None:
             others = run_others
         elif run_others != others:
             refuse(f"{out}: expected the swept parameters {others} of {outs[0]}, found {run_others}")
-        value_of = {int(p[header.index("point")]): p[header.index(over)] for p in points}
         for key, members in by_key.items():
-            for point in members:
-                if (key, value_of[point]) in seen:
-                    refuse(f"{out}: point {point} ({over} = {value_of[point]:g}): expected each "
-                           f"realization once, found it in {seen[(key, value_of[point])]} too")
-                seen[(key, value_of[point])] = out
-                path = os.path.join(out, f"point_{point:03d}.{analyzer}.ageing.csv")
+            for value, path in members:
+                if (key, value) in seen:
+                    refuse(f"{out}: {over} = {value:g}: expected each realization once, found it "
+                           f"in {seen[(key, value)]} too")
+                seen[(key, value)] = out
                 if not os.path.exists(path):
-                    refuse(f"{path}: expected the ageing table of point {point}, found no file")
+                    refuse(f"{path}: expected the ageing table of {over} = {value:g}, found no file")
                 groups.setdefault(key, []).append((path, *read_table(path)))
     return others, groups
 

@@ -1,8 +1,8 @@
 """scripts/pool_ageing.py on hand-made realizations: A is the mean of the realizations'
 squared differences and A_err the standard error across them; Eq. (6) fitted to pooled rows
 that follow it recovers A_inf, B and tau within three errors, and rows growing in proportion
-to t are reported not determined (status 3, NaN); realizations run in two parts pool as one
-run, one met twice is refused; a missing table is refused in one line with exit code 2."""
+to t are reported not determined (status 3, NaN); realizations run one per run pool as one
+sweep, one met twice is refused; a missing table is refused in one line with exit code 2."""
 import csv
 import json
 import math
@@ -66,26 +66,28 @@ with tempfile.TemporaryDirectory() as out:
             got, err = float(fit[name]), float(fit[name + "_err"])
             if not abs(got - value) <= 3 * err or not err < 0.5 * value:
                 failures.append(f"{name}: {got} +- {err}, expected {value}")
-    # The same realizations run in two parts (each part's one point numbered 0): the same pool.
+    # The same realizations run one per run, as granpipe writes a run of one point: no
+    # sweep.points.csv, the tables without a point prefix, the realization's number in the
+    # resolved pipeline (the script read a sweep.points.csv such runs never have).
     parts = [os.path.join(out, name) for name in ("part_a", "part_b", "part_c")]
     for part, replica, source in zip(parts, (0, 1, 1), ("point_000", "point_001", "point_001")):
         os.makedirs(part)
         with open(os.path.join(part, "pipeline.json"), "w") as f:
-            json.dump({"sweep": {"parameters": {"source.params.replica": [replica]}}}, f)
-        write(part, "sweep.points.csv", ["point,source.params.replica", f"0,{replica}"])
+            json.dump({"source": {"params": {"replica": replica}},
+                       "sweep": {"parameters": {"source.params.replica": [replica]}}}, f)
         with open(os.path.join(out, f"{source}.compaction.ageing.csv")) as f:
-            write(part, "point_000.compaction.ageing.csv", f.read().splitlines()[1:])
+            write(part, "compaction.ageing.csv", f.read().splitlines()[1:])
     r = subprocess.run([sys.executable, script, parts[0], parts[1]], capture_output=True, text=True)
     whole = rows(os.path.join(out, "pooled.compaction.ageing.csv"))
     if r.returncode != 0 or rows(os.path.join(parts[0], "pooled.compaction.ageing.csv")) != whole:
         failures.append(f"two parts: exit {r.returncode}, {r.stderr!r}")
     r = subprocess.run([sys.executable, script, parts[0], parts[1], parts[2]], capture_output=True, text=True)
-    if r.returncode != 2 or not r.stderr.startswith(f"{parts[2]}: point 0 (source.params.replica = 1): "
-                                                     f"expected each realization once, found it in {parts[1]} too"):
+    if r.returncode != 2 or r.stderr != (f"{parts[2]}: source.params.replica = 1: expected each "
+                                         f"realization once, found it in {parts[1]} too\n"):
         failures.append(f"a realization twice: exit {r.returncode}, {r.stderr!r}")
     os.remove(os.path.join(out, "point_001.compaction.ageing.csv"))
     r = subprocess.run([sys.executable, script, out], capture_output=True, text=True)
-    if r.returncode != 2 or "expected the ageing table of point 1, found no file" not in r.stderr:
+    if r.returncode != 2 or "expected the ageing table of source.params.replica = 1, found no file" not in r.stderr:
         failures.append(f"missing table: exit {r.returncode}, {r.stderr!r}")
 
 if failures:
