@@ -8,6 +8,10 @@ taps, which sigma_<Z> (about the mean, the paper's) counts as fluctuation: the t
 has <Z>'s drift, a straight line fitted over the steady taps, and the fluctuation about it.
 
     scripts/tap3d_steady_table.py OUT.csv RUN_DIR[=EPSILON] ...
+    scripts/tap3d_steady_table.py OUT.csv --add RUN_DIR[=EPSILON] ...
+
+--add keeps the rows OUT.csv holds (runs analysed before, whose folders may be gone) and adds
+or replaces those of the runs given (a row of the same epsilon is replaced).
 
 EPSILON is read from the run's pipeline (source.params.epsilon) when not given; a run
 analysed from saved frames (the h5md source) has none, so give it there. Windows of 1000 taps
@@ -83,13 +87,25 @@ def row_of(argument):
             "spectrum_slope_z_mean_err": c["spectrum_slope_z_mean"][1]}
 
 
-def main(out, runs):
-    rows = sorted((row_of(a) for a in runs), key=lambda r: r["epsilon"])
+def kept_rows(out):
+    """With --add: the rows of the table `out` already holds (runs analysed before, whose
+    folders may be gone) and its provenance, to be written again beside the new runs'."""
+    provenance, header, rows = read_table(out)
+    columns(out, header, rows, "epsilon")  # refuses a table of other columns
+    return provenance, [dict(zip(header, r)) for r in rows]
+
+
+def main(out, runs, add):
+    provenance, rows = kept_rows(out) if add else ("", [])
+    new = [row_of(a) for a in runs]
+    given = {r["epsilon"] for r in new}
+    rows = sorted([r for r in rows if r["epsilon"] not in given] + new, key=lambda r: r["epsilon"])
     header = []
     for r in rows:
         header += [k for k in r if k not in header]
+    written = provenance + " then --add " if provenance else "# written by scripts/tap3d_steady_table.py "
     with open(out, "w") as f:
-        f.write("# written by scripts/tap3d_steady_table.py " + " ".join(runs) + "\n")
+        f.write(written + " ".join(runs) + "\n")
         f.write(",".join(header) + "\n")
         for r in rows:
             f.write(",".join(f"{r.get(k, math.nan):.6g}" for k in header) + "\n")
@@ -97,6 +113,7 @@ def main(out, runs):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) < 3:
-        refuse("usage: tap3d_steady_table.py OUT.csv RUN_DIR[=EPSILON] ...")
-    main(sys.argv[1], sys.argv[2:])
+    add = len(sys.argv) > 2 and sys.argv[2] == "--add"
+    if len(sys.argv) < 3 + add:
+        refuse("usage: tap3d_steady_table.py OUT.csv [--add] RUN_DIR[=EPSILON] ...")
+    main(sys.argv[1], sys.argv[2 + add:], add)

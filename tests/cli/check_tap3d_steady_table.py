@@ -1,6 +1,7 @@
 """scripts/tap3d_steady_table.py and plot_tap3d_steady.py on two made-up analysed runs: the
 windows' means of <Phi^c> are those of the rows made (exact), epsilon comes from the pipeline
-or from RUN=EPSILON, a run without either is refused in one line, and the three figures are
+or from RUN=EPSILON, a run without either is refused in one line, --add keeps the rows a table
+holds and replaces those of the same epsilon, and the three figures are
 drawn (one series per run in the spectra, gid series-<k>)."""
 import json
 import os
@@ -70,6 +71,19 @@ with tempfile.TemporaryDirectory() as work:
             failures.append(f"fluctuation about the drift: {[r.get('z_mean_sigma_about_drift') for r in rows]}")
         if len(rows) != 2 or "phi_c_taps_3000_4000" in rows[0]:
             failures.append(f"rows {rows}")
+    # --add keeps the rows of runs whose folders are gone and replaces a row of the same
+    # epsilon: b again as 0.09 with c's numbers, and c as 0.16.
+    shutil.copy(out, out + ".before")
+    r = subprocess.run([sys.executable, table_script, out, "--add", c + "=0.09", c + "=0.16"],
+                       capture_output=True, text=True)
+    before, after = rows_of(out + ".before"), rows_of(out) if r.returncode == 0 else []
+    if (r.returncode != 0 or [row["epsilon"] for row in after] != [0.04, 0.09, 0.16]
+            or after[0] != before[0] or after[1]["phi_c_last"] != 0.6):
+        failures.append(f"--add: {r.returncode} {r.stderr} {after}")
+    with open(out) as f:
+        if not f.readline().endswith(f" then --add {c}=0.09 {c}=0.16\n"):
+            failures.append("--add: the provenance line does not name the runs added")
+    shutil.copy(out + ".before", out)
     r = subprocess.run([sys.executable, table_script, out, c], capture_output=True, text=True)
     if r.returncode != 2 or not r.stderr.startswith(f"{c}/pipeline.json: expected source.params.epsilon"):
         failures.append(f"no epsilon: {r.returncode} {r.stderr}")
