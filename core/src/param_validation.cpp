@@ -22,6 +22,10 @@ JsonLocation JsonLocation::index(std::size_t i) const {
   return {file, path + "[" + std::to_string(i) + "]", overrides};
 }
 
+JsonLocation JsonLocation::quoted_key(const std::string& key) const {
+  return {file, path + "[" + json_brief(key) + "]", overrides};
+}
+
 namespace {
 // "a.b" covers "a.b", "a.b.c" and "a.b[0]", not "a.bc".
 bool covers(const std::string& outer, const std::string& path) {

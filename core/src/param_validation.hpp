@@ -25,6 +25,8 @@ struct JsonLocation {
   const std::vector<Override>* overrides = nullptr;  // later ones win
   JsonLocation child(const std::string& key) const;
   JsonLocation index(std::size_t i) const;
+  // An entry whose key is no name (a sweep's "source.params.n"): path["source.params.n"].
+  JsonLocation quoted_key(const std::string& key) const;
   std::string str() const;
   // str() for a key that may not be in the file: an override that set a value inside it
   // (--set source.params.walls.bse.k_n=1) made it.

@@ -57,7 +57,11 @@ Override apply_set(json& root, const std::string& assignment) {
   // A bare word is a string: --set source.params.lattice=fcc
   const json value = parse_strict_json_if_json(text, where, parts.size()).value_or(json(text));
   locate(root, parts, where) = value;
-  return {join_path(parts), where};
+  // Named as the sweep names its entries, so that its messages name this --set.
+  const bool sweep_key = parts.size() == 3 && parts[0] == "sweep" && parts[1] == "parameters";
+  return {
+      sweep_key ? JsonLocation{"", "sweep.parameters"}.quoted_key(parts[2]).path : join_path(parts),
+      where};
 }
 
 std::uint64_t read_seed(const json& root, const JsonLocation& at) {

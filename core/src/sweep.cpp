@@ -30,7 +30,7 @@ std::vector<const json*> read_lists(const json& sweep, const JsonLocation& pat,
   }
   std::vector<const json*> lists;
   for (const auto& [path, values] : sweep["parameters"].items()) {
-    const std::string at = pat.str() + "[" + json_brief(path) + "]";
+    const std::string at = pat.quoted_key(path).str();
     if (!values.is_array() || values.empty()) {
       throw InputError(at + ": expected a non-empty list of values, got " + json_brief(values));
     }
@@ -66,7 +66,7 @@ std::vector<json> zip_points(const std::vector<const json*>& lists,
                              const std::vector<std::string>& paths, const JsonLocation& pat) {
   for (std::size_t k = 1; k < lists.size(); ++k) {
     if (lists[k]->size() != lists[0]->size()) {
-      throw InputError(pat.str() + "[" + json_brief(paths[k]) + "]: expected " +
+      throw InputError(pat.quoted_key(paths[k]).str() + ": expected " +
                        std::to_string(lists[0]->size()) + " values (zip mode), got " +
                        std::to_string(lists[k]->size()));
     }

@@ -540,6 +540,12 @@ TEST(Pipeline, SetIntoASweepReplacesTheValuesOfTheParameterItNames) {
   EXPECT_EQ(Pipeline::parse(grid, "p.json", {"sweep.parameters.analyzers[0].params.scale=[3]"}, r)
                 .points(),
             3u);
+  EXPECT_EQ(error_of(grid, {"sweep.parameters.source.params.n=5"}),
+            "--set sweep.parameters.source.params.n=5: expected a non-empty list of values, got 5");
+  EXPECT_EQ(
+      error_of(grid, {"sweep.parameters.x=[1]"}),
+      "--set sweep.parameters.x=[1]: expected a plugin parameter path like source.params.name "
+      "or analyzers[0].params.name, got \"x\"");
   EXPECT_EQ(error_of(grid, {"sweep.parameters.source.params.n=[5000]"}),
             "p.json: source.params.n: expected an integer in [1, 1000], got 5000 (sweep point 0: "
             "analyzers[0].params.scale = 1, source.params.n = 5000)");
