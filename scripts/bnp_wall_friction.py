@@ -17,7 +17,7 @@ import os
 import h5py
 
 from charts import line_chart
-from input_error import read_pipeline, refuse
+from input_error import read_pipeline, refuse, require_outputs
 
 SWEPT = "source.params.walls.mu"
 COMPRESSION_PHASE = 0.28
@@ -56,6 +56,7 @@ def main():
     parser.add_argument("--csv")
     parser.add_argument("--figure")
     args = parser.parse_args()
+    require_outputs([o for o in (args.csv, args.figure) if o], runs=[args.out_dir])
     final = os.path.join(args.out_dir, "results.h5")
     path = final if os.path.exists(final) else os.path.join(args.out_dir, "results.partial.h5")
     if not os.path.exists(path):

@@ -31,7 +31,7 @@ import subprocess
 import sys
 
 from charts import loglog_chart
-from input_error import refuse
+from input_error import refuse, require_outputs
 from result_csv import read_scalars, read_table
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -178,6 +178,8 @@ def main():
     args.out = args.out or os.path.join("out", "dem_speed_vs_error" + ("_bnp" if args.scene == "bnp" else ""))
     args.csv = args.csv or os.path.join(ROOT, "docs", "data", f"dem_speed_vs_error_{args.scene}.csv")
     args.plot = args.plot or os.path.join(ROOT, "docs", "img", f"dem_speed_vs_error_{args.scene}.svg")
+    # The runs' folder holds the CPU log read back: the table and figure never replace it.
+    require_outputs([args.csv, args.plot], runs=[args.out])
     os.makedirs(args.out, exist_ok=True)
     cpu_log = read_cpu_log(args.out)
     rows, summary, series, xlabel, ylabel = (collision if args.scene == "collision" else bnp)(args, cpu_log)

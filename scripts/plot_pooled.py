@@ -13,7 +13,7 @@ import csv
 import math
 
 from charts import line_chart
-from input_error import refuse
+from input_error import refuse, require_outputs
 from pool_replicas import BRANCHES
 from result_csv import read_table
 
@@ -47,6 +47,7 @@ def main():
     ap.add_argument("--column", help="column of the reference for y (default: the quantity)")
     ap.add_argument("--out", required=True, help="figure to write (.svg or .png)")
     args = ap.parse_args()
+    require_outputs([args.out], read=[args.table] + ([args.reference] if args.reference else []))
 
     rows = read_pooled(args.table)
     x = args.x or ("amplitude" if "amplitude" in rows[0] else "time")

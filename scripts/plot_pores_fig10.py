@@ -7,13 +7,14 @@ part of nu below the octahedral size xi_O = sqrt(2) - 1 and above it, <Phi^c>.
 usage: plot_pores_fig10.py RESULTS.h5 OUT_PREFIX [TAP...]   (taps: 0 1 4 10 30 100 300 1000 4000)
 writes OUT_PREFIX_xi3P.svg, OUT_PREFIX_rho_v.svg and OUT_PREFIX.csv"""
 import math
+import os
 import sys
 
 import h5py
 import numpy as np
 
 from charts import curves_chart
-from input_error import refuse
+from input_error import output_prefix, refuse
 
 XI_O = math.sqrt(2.0) - 1.0
 
@@ -39,6 +40,8 @@ def nearest_steps(steps, taps):
 
 
 def main(path, prefix, taps):
+    output_prefix(prefix, ["_xi3P.svg", "_rho_v.svg", ".csv"], read=[path],
+                  runs=[os.path.dirname(path) or "."])
     xi, v, phi = read(path)
     chosen = nearest_steps(xi["step"], taps)
     curves_xi, curves_v, rows = {}, {}, []
@@ -60,8 +63,16 @@ def main(path, prefix, taps):
             f.write(",".join(f"{x:.6g}" for x in r) + "\n")
 
 
+def tap_of(argument):
+    try:
+        return int(argument)
+    except ValueError:
+        refuse(f"TAP {argument!r}: expected a whole number of taps (usage: plot_pores_fig10.py "
+               "RESULTS.h5 OUT_PREFIX [TAP...])")
+
+
 if __name__ == "__main__":
     if len(sys.argv) < 3:
         refuse("usage: plot_pores_fig10.py RESULTS.h5 OUT_PREFIX [TAP...]")
-    taps = [int(t) for t in sys.argv[3:]] or [0, 1, 4, 10, 30, 100, 300, 1000, 4000]
+    taps = [tap_of(t) for t in sys.argv[3:]] or [0, 1, 4, 10, 30, 100, 300, 1000, 4000]
     main(sys.argv[1], sys.argv[2], taps)

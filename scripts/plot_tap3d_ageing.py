@@ -15,7 +15,7 @@ import math
 import os
 
 from charts import curves_chart
-from input_error import refuse
+from input_error import output_prefix, refuse
 
 COLUMNS = {"ageing": ("group", "t_w", "t", "A"), "ageing_fits": ("group", "t_w", "A_inf", "B", "tau")}
 
@@ -70,6 +70,9 @@ def main():
     parser.add_argument("prefix", help="the figures' path without _curves.svg / _collapse.svg")
     parser.add_argument("--group", default="all", help="the group of realizations (default: all)")
     args = parser.parse_args()
+    is_run = not args.source.endswith(".csv")
+    output_prefix(args.prefix, ["_curves.svg", "_scaled.svg", "_collapse.svg"],
+                  read=[] if is_run else [args.source], runs=[args.source] if is_run else [])
     ageing, fits = tables(args.source)
     curves = by_waiting_time(ageing, args.group)
     if not curves:

@@ -15,7 +15,7 @@ import os
 import sys
 
 from charts import compaction_chart
-from input_error import labelled_run, refuse
+from input_error import labelled_run, output_prefix, refuse
 from result_csv import read_table
 
 # The laws of the paper: Eq. (3) for a packing fraction, Eq. (4) for <Z>.
@@ -66,6 +66,8 @@ def named_rows(path):
 
 
 def main(runs, prefix):
+    output_prefix(prefix, [f"_{s[-1]}.svg" for s in SERIES] + [".csv"],
+                  runs=[a.partition("=")[0] for a in runs])
     lines = [c for run in runs for c in curves(run)]
     summary = []
     for label, table, law, ylabel, suffix in SERIES:

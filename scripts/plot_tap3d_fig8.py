@@ -12,7 +12,7 @@ import os
 import sys
 
 from charts import curves_chart
-from input_error import labelled_run, refuse
+from input_error import labelled_run, output_prefix, refuse
 from result_csv import read_table
 
 TABLE_TAPS = (1, 10, 100, 1000, 4000)  # the CSV's rows: taps a decade apart, and the paper's last
@@ -44,6 +44,7 @@ def table_rows(label, points):
 
 
 def main(runs, prefix):
+    output_prefix(prefix, ["_lateral.svg", "_central.svg", ".csv"], runs=[a.partition("=")[0] for a in runs])
     lines = [line(run) for run in runs]
     for k, suffix, ylabel in ((1, "lateral", "δΦ_lateral"), (2, "central", "δΦ_central")):
         series = {label: [(p[0], p[k]) for p in points] for label, points in lines}

@@ -11,7 +11,7 @@ import math
 import sys
 
 from charts import line_chart
-from input_error import refuse
+from input_error import refuse, require_outputs
 from pool_replicas import BRANCHES
 from result_csv import read_table
 
@@ -23,6 +23,7 @@ def column(path, header, name):
 
 
 def main(by_leg, points, out):
+    require_outputs([out], read=[by_leg, points])
     _, header, rows = read_table(by_leg)
     leg, eps = column(by_leg, header, "branch"), column(by_leg, header, "epsilon")
     phi, err = column(by_leg, header, "phi_c"), column(by_leg, header, "phi_c_err")

@@ -16,7 +16,7 @@ import sys
 import numpy as np
 
 from charts import curves_chart, line_chart
-from input_error import labelled_run, refuse
+from input_error import labelled_run, output_prefix, refuse
 from result_csv import columns, read_table
 
 
@@ -62,6 +62,8 @@ def spectra_chart(runs, out):
 
 
 def main(table, prefix, runs):
+    output_prefix(prefix, ["_phi_c.svg", "_sigma.svg"] + (["_spectra.svg"] if runs else []),
+                  read=[table], runs=[a.partition("=")[0] for a in runs])
     _, header, rows = read_table(table)
     if not rows:
         refuse(f"{table}: expected at least one run, found none")

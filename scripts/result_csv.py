@@ -1,7 +1,7 @@
 """Reads the CSV tables granpipe writes: an optional '# granpipe ...' provenance line, a header,
 then rows of numbers (string sweep values appear as their index in the sweep list)."""
 import csv
-
+import math
 import os
 
 from input_error import read_pipeline, refuse
@@ -56,6 +56,18 @@ def columns(path, header, rows, *names):
         if name not in header:
             refuse(f"{path}: expected a column {name}, found {header[:4]}...")
     return [[r[header.index(name)] for r in rows] for name in names]
+
+
+def finite_column(path, header, rows, name):
+    """A column of a table read by read_table whose every value is a finite number (taps,
+    counts: a nan among them would be a wrong index), and that has at least one row."""
+    if not rows:
+        refuse(f"{path}: expected rows of {name}, found only a header")
+    (values,) = columns(path, header, rows, name)
+    for k, v in enumerate(values, start=1):
+        if not math.isfinite(v):
+            refuse(f"{path}: data row {k}, column {name}: expected a finite number, found {v}")
+    return values
 
 
 def sweep_groups(out, over):

@@ -17,35 +17,50 @@ EPSILON is read from the run's pipeline (source.params.epsilon) when not given; 
 analysed from saved frames (the h5md source) has none, so give it there. Windows of 1000 taps
 from tap 1000 on, as many as the last tap allows (the paper averages the last 1000 of 4000).
 """
+import json
 import math
 import os
 import sys
 
 import numpy as np
 
-from input_error import read_pipeline, refuse
-from result_csv import columns, read_scalars, read_table
+from input_error import read_pipeline, refuse, require_outputs
+from result_csv import columns, finite_column, read_scalars, read_table
 
 WINDOW = 1000  # taps
 
 
+def positive_number(text):
+    """`text` as a finite number > 0 (epsilon: its root is taken), or None."""
+    try:
+        value = float(text)
+    except (TypeError, ValueError):
+        return None
+    return value if math.isfinite(value) and value > 0 else None
+
+
 def epsilon_of(run, given):
     if given:
-        try:
-            return float(given)
-        except ValueError:
-            refuse(f"{run}={given}: expected a number after '=', found {given!r}")
+        eps = positive_number(given)
+        if eps is None:
+            refuse(f"{run}={given}: expected a finite number > 0 after '=', found {given!r}")
+        return eps
     eps = read_pipeline(run).get("source", {}).get("params", {}).get("epsilon")
     if eps is None:
         refuse(f"{run}/pipeline.json: expected source.params.epsilon, found none "
                "(a run analysed from saved frames: give it as RUN_DIR=EPSILON)")
+    if isinstance(eps, bool) or positive_number(eps) is None:
+        refuse(f"{run}/pipeline.json: source.params.epsilon: expected a finite number > 0, "
+               f"found {json.dumps(eps)}")
     return float(eps)
 
 
 def window_means(run):
     """<Phi^c> over [1000, 2000), [2000, 3000), ... up to the last tap, and the last tap's."""
     path = os.path.join(run, "stereology.per_frame.csv")
-    taps, phi = columns(path, *read_table(path)[1:], "tap", "phi_c")
+    _, header, rows = read_table(path)
+    taps = finite_column(path, header, rows, "tap")
+    (phi,) = columns(path, header, rows, "phi_c")
     last = max(taps)
     means = []
     for start in range(WINDOW, int(last), WINDOW):
@@ -59,7 +74,9 @@ def drift_of(run, steady_from):
     """<Z>'s least-squares slope over the taps from steady_from on, per 1000 taps, and the
     root mean square of <Z> about that line."""
     path = os.path.join(run, "compaction.per_frame.csv")
-    taps, z_mean = columns(path, *read_table(path)[1:], "tap", "z_mean")
+    _, header, rows = read_table(path)
+    taps = finite_column(path, header, rows, "tap")
+    (z_mean,) = columns(path, header, rows, "z_mean")
     steady = np.array([(t, z) for t, z in zip(taps, z_mean) if t >= steady_from])
     if len(steady) < 3:
         return math.nan, math.nan
@@ -96,6 +113,7 @@ def kept_rows(out):
 
 
 def main(out, runs, add):
+    require_outputs([out], runs=[a.partition("=")[0] for a in runs])
     provenance, rows = kept_rows(out) if add else ("", [])
     new = [row_of(a) for a in runs]
     given = {r["epsilon"] for r in new}

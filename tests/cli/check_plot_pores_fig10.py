@@ -1,6 +1,7 @@
 """scripts/plot_pores_fig10.py on a toy run of pores_compaction.json: one line per tap asked
 (the nearest saved frame's) in both figures, a table row per tap whose parts of nu add up; a
-results file without the pores tables is refused in one line."""
+results file without the pores tables is refused in one line, and so are a TAP that is no
+number, an OUT_PREFIX in no existing folder and one that would replace the results read."""
 import os
 import subprocess
 import sys
@@ -29,6 +30,23 @@ with tempfile.TemporaryDirectory() as work:
             rows = [[float(x) for x in line.split(",")] for line in f.read().splitlines()[1:]]
         if [r[0] for r in rows] != [0, 1, 4] or any(abs(r[1] - r[2] - r[3]) > 1e-5 for r in rows):
             failures.append(f"table {rows}")
+    results = os.path.join(run, "results.h5")
+    refusals = {
+        "a TAP of letters": ([results, prefix, "abc"], "TAP 'abc': expected a whole number of taps "
+                             "(usage: plot_pores_fig10.py RESULTS.h5 OUT_PREFIX [TAP...])"),
+        "no output folder": ([results, os.path.join(work, "nodir", "fig")],
+                             f"{work}/nodir/fig_xi3P.svg: expected an output in an existing folder, "
+                             f"got no folder {work}/nodir"),
+        "the results replaced": ([results, os.path.join(run, "results")],
+                                 f"{run}/results.csv: expected an output outside the run folders "
+                                 f"read ({run}), got a file in {run}"),
+    }
+    with open(os.path.join(run, "results.csv"), "w") as f:  # a file of the run folder read
+        f.write("kept\n")
+    for what, (args, message) in refusals.items():
+        r = subprocess.run([sys.executable, script, *args], capture_output=True, text=True)
+        if r.returncode != 2 or r.stderr != message + "\n":
+            failures.append(f"{what}: {r.returncode} {r.stderr}")
     other = os.path.join(work, "lattice")
     subprocess.run([exe, lattice, "--quiet", "--out", other], check=True)
     results = os.path.join(other, "results.h5")

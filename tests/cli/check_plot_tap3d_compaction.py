@@ -1,7 +1,8 @@
 """scripts/plot_tap3d_compaction.py on a toy run of tap3d_compaction.json: three SVGs with one
 line per epsilon (gid series-<k>), the fit table with every epsilon's parameters; the laws it
 draws equal their values at t = 0 (Eq. 3: X_inf - dX_inf; Eq. 4: <Z>_0); a folder that is no
-run is refused in one line."""
+run is refused in one line, and so are an OUT_PREFIX that would replace a run's own table and
+a run folder given where OUT_PREFIX was forgotten."""
 import json
 import os
 import subprocess
@@ -61,6 +62,23 @@ with tempfile.TemporaryDirectory() as work:
         names = {line.split(",")[0] for line in f.read().splitlines()[1:]}
     if r.returncode != 0 or "joined parts" not in names or "ε = 0.15" not in names:
         failures.append(f"labelled run: {r.returncode} {r.stderr} {sorted(names)}")
+    # The prefix of a run's per_frame table: its tables are the input, never replaced.
+    per_frame = os.path.join(single, "compaction.per_frame.csv")
+    with open(per_frame, "rb") as f:
+        kept = f.read()
+    r = subprocess.run([sys.executable, script, single, per_frame[:-len(".csv")]],
+                       capture_output=True, text=True)
+    with open(per_frame, "rb") as f:
+        unchanged = f.read() == kept
+    if r.returncode != 2 or not unchanged or r.stderr != (
+            f"{per_frame}: expected an output outside the run folders read ({single}), "
+            f"got a file in {single}\n"):
+        failures.append(f"a run's table as the output: {r.returncode} {r.stderr} unchanged {unchanged}")
+    # OUT_PREFIX forgotten: the last run folder is no prefix.
+    r = subprocess.run([sys.executable, script, run, single], capture_output=True, text=True)
+    if r.returncode != 2 or r.stderr != (f"{single}: expected OUT_PREFIX (the last argument), the "
+                                         "start of the outputs' path, got a folder\n"):
+        failures.append(f"OUT_PREFIX forgotten: {r.returncode} {r.stderr}")
     empty = os.path.join(work, "empty")
     os.makedirs(empty)
     r = subprocess.run([sys.executable, script, empty, prefix], capture_output=True, text=True)

@@ -2,7 +2,9 @@
 windows' means of <Phi^c> are those of the rows made (exact), epsilon comes from the pipeline
 or from RUN=EPSILON, a run without either is refused in one line, --add keeps the rows a table
 holds and replaces those of the same epsilon, and the three figures are
-drawn (one series per run in the spectra, gid series-<k>)."""
+drawn (one series per run in the spectra, gid series-<k>). Refused in one line, exit 2, the
+run's files unchanged: an output that is a table of a run read, an epsilon that is not a
+finite number > 0, a tap of nan, a per-frame table of a header only."""
 import json
 import os
 import shutil
@@ -93,6 +95,37 @@ with tempfile.TemporaryDirectory() as work:
     if r.returncode != 2 or r.stderr.strip() != (
             f"{c}/compaction.scalars.csv: expected the columns name,value,uncertainty, found frame,tap,z_mean"):
         failures.append(f"not a scalars table: {r.returncode} {r.stderr}")
+    refusals = {
+        "an output in a run": ([os.path.join(a, "compaction.scalars.csv"), a],
+                               f"{a}/compaction.scalars.csv: expected an output outside the run "
+                               f"folders read ({a}), got a file in {a}"),
+        "no output folder": ([os.path.join(work, "no", "t.csv"), a],
+                             f"{work}/no/t.csv: expected an output in an existing folder, got no "
+                             f"folder {work}/no"),
+        "epsilon < 0": ([out, a + "=-0.05"], f"{a}=-0.05: expected a finite number > 0 after '=', "
+                                            "found '-0.05'"),
+        "epsilon nan": ([out, a + "=nan"], f"{a}=nan: expected a finite number > 0 after '=', "
+                                          "found 'nan'"),
+    }
+    for what, (args, message) in refusals.items():
+        shutil.copytree(a, a + ".kept")
+        r = subprocess.run([sys.executable, table_script, *args], capture_output=True, text=True)
+        changed = subprocess.run(["diff", "-r", a, a + ".kept"], capture_output=True).returncode
+        shutil.rmtree(a + ".kept")
+        if r.returncode != 2 or r.stderr != message + "\n" or changed:
+            failures.append(f"{what}: {r.returncode} {r.stderr} run changed: {bool(changed)}")
+    stereology = os.path.join(c, "stereology.per_frame.csv")
+    with open(stereology) as f:
+        lines = f.readlines()
+    broken = {"a tap of nan": (lines[:3] + ["2,nan,0.6\n"] + lines[4:],
+                               f"{stereology}: data row 2, column tap: expected a finite number, found nan"),
+              "a header only": (lines[:2], f"{stereology}: expected rows of tap, found only a header")}
+    for what, (text, message) in broken.items():
+        with open(stereology, "w") as f:
+            f.writelines(text)
+        r = subprocess.run([sys.executable, table_script, out, c + "=0.01"], capture_output=True, text=True)
+        if r.returncode != 2 or r.stderr != message + "\n":
+            failures.append(f"{what}: {r.returncode} {r.stderr}")
     prefix = os.path.join(work, "fig")
     r = subprocess.run([sys.executable, plot_script, out, prefix, a + "=first", b + "=second"],
                        capture_output=True, text=True)
