@@ -24,7 +24,6 @@ its parameter); the values are NaN unless fitted.
     scripts/pool_ageing.py out/ageing_r0 out/ageing_r1 ...       (a run per realization)
 """
 import argparse
-import csv
 import math
 import os
 
@@ -32,7 +31,7 @@ import numpy as np
 from scipy.optimize import curve_fit
 
 from input_error import read_pipeline, refuse
-from result_csv import read_table, sweep_groups
+from result_csv import read_table, sweep_groups, write_csv
 
 
 def eq6(t, a_inf, b, tau):
@@ -103,9 +102,7 @@ def fit(rows):
 
 
 def write(path, provenance, header, rows):
-    with open(path, "w", newline="") as f:
-        f.write(f"{provenance} pooled by scripts/pool_ageing.py\n")
-        csv.writer(f).writerows([header] + rows)
+    write_csv(path, f"{provenance} pooled by scripts/pool_ageing.py", [header] + rows)
     print(f"{path}: {len(rows)} rows")
 
 

@@ -23,13 +23,12 @@ with several replicas per amplitude. Writes, beside the input:
     scripts/pool_replicas.py out/tap2d_arches --table points
 """
 import argparse
-import csv
 import math
 import os
 
 from charts import line_chart
 from input_error import refuse
-from result_csv import read_table, sweep_groups
+from result_csv import read_table, sweep_groups, write_csv
 
 BRANCHES = {0: "first increase", 1: "decreasing", 2: "increasing"}
 
@@ -116,9 +115,8 @@ def main():
                         name = " ".join(x for x in (branch, tag) if x) or "pooled"
                         series.setdefault(name, []).append((r[hdr.index(keys[-1])], *y))
         path = os.path.join(args.out, f"pooled.{table}.csv")
-        with open(path, "w", newline="") as f:
-            f.write(f"{provenance} pooled over {args.over} by scripts/pool_replicas.py\n")
-            csv.writer(f).writerows([out_header] + out_rows)
+        write_csv(path, f"{provenance} pooled over {args.over} by scripts/pool_replicas.py",
+                  [out_header] + out_rows)
         print(f"{path}: {len(out_rows)} rows from {sum(len(m) for m in groups.values())} points")
         if args.plot and series:
             reference = []

@@ -28,11 +28,24 @@ def read_table(path):
     provenance, header, rows = read_rows(path)
     numbers = []
     for k, row in enumerate(rows, start=1):
+        if len(row) != len(header):
+            refuse(f"{path}: data row {k}: expected {len(header)} cells (the header's), "
+                   f"found {len(row)}")
         try:
             numbers.append([float(v) for v in row])
         except ValueError:
             refuse(f"{path}: data row {k}: expected numbers, found {row}")
     return provenance, header, numbers
+
+
+def write_csv(path, first_line, rows):
+    """Writes a '#' line and rows to `path` through a partial file renamed over it, so a
+    refusal or a crash midway leaves no half-written table."""
+    partial = path + ".partial"
+    with open(partial, "w", newline="") as f:
+        f.write(first_line + "\n")
+        csv.writer(f).writerows(rows)
+    os.replace(partial, path)
 
 
 def read_scalars(path):
@@ -76,8 +89,19 @@ def sweep_groups(out, over):
     {their values: [point numbers]})."""
     points_path = os.path.join(out, "sweep.points.csv")
     provenance, header, points = read_table(points_path)
-    if over not in header:
-        refuse(f"{points_path}: expected a swept column {over}, found {header[1:4]}...")
+    for column in ("point", over):
+        if column not in header:
+            refuse(f"{points_path}: expected a column {column}, found {header[:4]}...")
+    if not points:
+        refuse(f"{points_path}: expected rows of sweep points, found only a header")
+    row_of_point = {}
+    for k, p in enumerate(points, start=1):
+        # A point given twice would be pooled twice, or stand for the other's row.
+        number = p[header.index("point")]
+        if number in row_of_point:
+            refuse(f"{points_path}: data rows {row_of_point[number]} and {k}: expected each "
+                   f"point once, found point {number:g} in both")
+        row_of_point[number] = k
     swept = list(read_pipeline(out).get("sweep", {}).get("parameters", {}).keys())
     others = [s for s in swept if s != over and s in header]
     groups = {}

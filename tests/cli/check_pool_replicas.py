@@ -2,8 +2,9 @@
 means and its error the standard error across replicas; a row only one replica has keeps that
 run's own error; frames add up; points of other swept values stay in their own group; replicas
 with different columns are refused; the table `points` pools the scalars of sweep.points.csv and
-keeps the swept values as columns; missing or corrupt tables and a missing pipeline.json are
-refused in one line with exit code 2."""
+keeps the swept values as columns; missing or corrupt tables, a missing pipeline.json, and a
+sweep.points.csv with a point twice, rows of too few or too many cells, no point column or no
+rows are refused in one line with exit code 2, leaving no pooled table."""
 import csv
 import json
 import os
@@ -97,6 +98,29 @@ with tempfile.TemporaryDirectory() as out:
     if r.returncode != 2 or r.stderr != (f"{out}/sweep.points.csv: data row 1: expected numbers, "
                                          "found ['0', '100', 'nan?']\n"):
         failures.append(f"corrupt sweep.points.csv: {r.returncode} {r.stderr}")
+    # Tables of points that are not one row a point: refused before a pooled table is written.
+    header = "point,source.params.N,source.params.replica,packing.phi,packing.phi_err"
+    broken = {
+        "a point twice": ([header, "0,100,0,0.80,0.01", "1,100,1,0.84,0.01", "0,200,0,0.7,0.01"],
+                          "data rows 1 and 3: expected each point once, found point 0 in both"),
+        "a row too short": ([header, "0,100,0,0.80,0.01", "1,100,1,0.84"],
+                            "data row 2: expected 5 cells (the header's), found 4"),
+        "a row too long": ([header, "0,100,0,0.80,0.01,7", "1,100,1,0.84,0.01"],
+                           "data row 1: expected 5 cells (the header's), found 6"),
+        "no point column": ([header.replace("point,", "index,"), "0,100,0,0.80,0.01"],
+                            "expected a column point, found ['index', 'source.params.N', "
+                            "'source.params.replica', 'packing.phi']..."),
+        "a header only": ([header], "expected rows of sweep points, found only a header"),
+    }
+    for what, (lines, message) in broken.items():
+        for name in os.listdir(out):
+            if name.startswith("pooled.points"):
+                os.remove(os.path.join(out, name))
+        write(out, "sweep.points.csv", lines)
+        r = run(out, "points", "packing.phi")
+        left = [n for n in os.listdir(out) if n.startswith("pooled.points")]
+        if r.returncode != 2 or r.stderr != f"{out}/sweep.points.csv: {message}\n" or left:
+            failures.append(f"{what}: {r.returncode} {r.stderr} left {left}")
 if failures:
     print("FAIL", *failures, sep="\n")
     sys.exit(1)
