@@ -1,9 +1,13 @@
 #include "data_file.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
+#include <charconv>
+#include <cmath>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <vector>
 
@@ -63,7 +67,52 @@ struct AtomsSection {
   long count = -1;        // from the header
   long count_line = 0;    // the header line giving it
   long section_line = 0;  // the "Atoms" line
+  Eigen::Vector3d lo = Eigen::Vector3d::Zero(), hi = Eigen::Vector3d::Zero();  // the box
+  std::array<long, 3> box_line{0, 0, 0};  // of "lo hi xlo xhi" and so on; 0: none yet
 };
+
+constexpr std::array<std::array<const char*, 2>, 3> kBoxWords{
+    {{"xlo", "xhi"}, {"ylo", "yhi"}, {"zlo", "zhi"}}};
+
+std::optional<double> real_number(const std::string& word) {
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
+  if (error != std::errc() || end != word.data() + word.size()) return std::nullopt;
+  return value;
+}
+
+// A header line "lo hi xlo xhi" (or y, z) sets the box along its axis; a triclinic box's
+// "xy xz yz" line is refused (granpipe's containers have right angles, as lammps_dump says).
+void read_box_line(const std::vector<std::string>& w, const std::string& line, long number,
+                   const std::string& where, AtomsSection& a) {
+  const std::string at = where + ": line " + std::to_string(number);
+  if (w.size() == 6 && w[3] == "xy") {
+    throw InputError(at + ": expected an orthogonal box, got a triclinic one's tilt " +
+                     quoted(line) + ": granpipe's containers have right angles");
+  }
+  for (int k = 0; k < 3 && w.size() == 4; ++k) {
+    if (w[2] != kBoxWords[k][0] || w[3] != kBoxWords[k][1]) continue;
+    const auto lo = real_number(w[0]), hi = real_number(w[1]);
+    if (!lo || !hi || !std::isfinite(*lo) || !std::isfinite(*hi) || !(*lo < *hi)) {
+      throw InputError(at + ": expected \"lo hi " + kBoxWords[k][0] + " " + kBoxWords[k][1] +
+                       "\" with finite lo < hi, got " + quoted(line));
+    }
+    a.lo[k] = *lo;
+    a.hi[k] = *hi;
+    a.box_line[k] = number;
+  }
+}
+
+// The box lines are optional to the parser but not to the frame: its x and y sides, where
+// no wall is stated, are the box's (an invented box gave a packing fraction of another
+// volume, exit 0).
+void check_box(const AtomsSection& a, const std::string& where) {
+  for (int k = 0; k < 3; ++k) {
+    if (a.box_line[k] != 0) continue;
+    throw InputError(where + ": expected the header line \"lo hi " + kBoxWords[k][0] + " " +
+                     kBoxWords[k][1] + "\" of the box (as write_data writes it), got none");
+  }
+}
 
 // The header's "N atoms", then on to the Atoms section, whose atom style must be sphere and
 // must be said: atom_style full has sphere's seven columns (id mol type q x y z), and read as
@@ -91,6 +140,7 @@ AtomsSection find_atoms_section(Lines& lines, const std::string& where) {
   while (lines.next(line)) {
     const std::vector<std::string> w = words(before_comment(line));
     header = header && !is_section(line);
+    if (header) read_box_line(w, line, lines.number(), where, a);
     if (header && w.size() == 2 && w[1] == "atoms") {
       std::istringstream n(w[0]);
       if (!(n >> a.count) || !n.eof() || a.count < 0) {
@@ -156,24 +206,24 @@ std::vector<Atom> read_section(Lines& lines, const std::string& where) {
   return out;
 }
 
-std::vector<Atom> atoms(std::istream& in, const std::string& where) {
-  Lines lines(in);
-  const AtomsSection section = find_atoms_section(lines, where);
-  std::vector<Atom> out = read_section(lines, where);
-  if (static_cast<long>(out.size()) != section.count) {
-    throw InputError(where + ": line " + std::to_string(section.section_line) +
-                     ": expected the Atoms section to hold " + std::to_string(section.count) +
-                     " atoms (the header's, line " + std::to_string(section.count_line) +
-                     "), got " + std::to_string(out.size()));
-  }
-  std::sort(out.begin(), out.end(), [](const Atom& a, const Atom& b) { return a.id < b.id; });
-  return out;
+void check_count(const std::vector<Atom>& atoms, const AtomsSection& section,
+                 const std::string& where) {
+  if (static_cast<long>(atoms.size()) == section.count) return;
+  throw InputError(where + ": line " + std::to_string(section.section_line) +
+                   ": expected the Atoms section to hold " + std::to_string(section.count) +
+                   " atoms (the header's, line " + std::to_string(section.count_line) + "), got " +
+                   std::to_string(atoms.size()));
 }
 
 }  // namespace
 
 Frame read_atoms(std::istream& in, const std::string& where) {
-  const std::vector<Atom> list = atoms(in, where);
+  Lines lines(in);
+  const AtomsSection section = find_atoms_section(lines, where);
+  std::vector<Atom> list = read_section(lines, where);
+  check_count(list, section, where);
+  check_box(section, where);
+  std::sort(list.begin(), list.end(), [](const Atom& a, const Atom& b) { return a.id < b.id; });
   Frame f;
   f.resize(static_cast<Eigen::Index>(list.size()), 3);
   for (std::size_t k = 0; k < list.size(); ++k) {
@@ -183,6 +233,10 @@ Frame read_atoms(std::istream& in, const std::string& where) {
     f.id()[i] = list[k].id;
     f.species()[i] = list[k].type - 1;
   }
+  // A data file says nothing of walls or periodic sides (the input script does): open sides.
+  f.container.lo = section.lo;
+  f.container.hi = section.hi;
+  for (auto& sides : f.container.boundary) sides = {Boundary::Open, Boundary::Open};
   return f;
 }
 

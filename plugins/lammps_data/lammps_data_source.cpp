@@ -22,12 +22,9 @@ LammpsDataSource::LammpsDataSource(const PluginContext& ctx) {
   frame_ = read_atoms(in, file);
   if (frame_.size() == 0) throw InputError(file + ": expected atoms, got none");
   frame_.check(file);
-  // Without a cylinder or side walls, the x and y sides hold every particle.
-  const double half = frame_.position().leftCols(2).abs().maxCoeff() + frame_.radius().maxCoeff();
-  frame_.container = stated.place(
-      Container::open_top_box(3, Eigen::Vector3d(-half, -half, 0), Eigen::Vector3d(half, half, 1)),
-      file);
-  if (const auto out = stated.first_outside(frame_, "sides holding every atom")) {
+  // Without a cylinder or side walls, the x and y sides are the file's box, open.
+  frame_.container = stated.place(frame_.container, file);
+  if (const auto out = stated.first_outside(frame_, "the data file's box")) {
     throw InputError(file + ": " + out->message);
   }
 }

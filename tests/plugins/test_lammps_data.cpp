@@ -25,7 +25,8 @@ std::string refusal(const std::string& content) {
 
 // A data file of two spheres of radius 0.5 (atom ids 1 and 7) at these positions.
 std::string two_spheres(const std::string& at1, const std::string& at7) {
-  return "LAMMPS data file via write_data\n\n2 atoms\n1 atom types\n\nAtoms # sphere\n\n"
+  return "LAMMPS data file via write_data\n\n2 atoms\n1 atom types\n\n-2 2 xlo xhi\n-2 2 ylo "
+         "yhi\n0 10 zlo zhi\n\nAtoms # sphere\n\n"
          "1 1 1 1.91 " +
          at1 + " 0 0 0\n7 1 1 1.91 " + at7 + " 0 0 0\n";
 }
@@ -39,6 +40,8 @@ TEST(LammpsData, AtomsAreReadInIdOrderWithRadiusAndSpecies) {
 2 atom types
 
 -6.3 6.3 xlo xhi
+-6.3 6.3 ylo yhi
+0 10 zlo zhi
 
 Atoms # sphere
 
@@ -60,6 +63,28 @@ Velocities
   EXPECT_EQ(f.species()[1], 0);
   EXPECT_DOUBLE_EQ(f.radius()[1], 0.5);
   EXPECT_DOUBLE_EQ(f.position()(1, 0), -2.5);
+  EXPECT_EQ(f.container.lo, Eigen::Vector3d(-6.3, -6.3, 0));
+  EXPECT_EQ(f.container.hi, Eigen::Vector3d(6.3, 6.3, 10));
+  EXPECT_EQ(f.container.boundary[0][0], Boundary::Open);
+}
+
+// The box was not read: the source invented x and y sides about the atoms (walls at +-4 for
+// a simple cubic block in 0..4, packing fraction 0.13 for 0.52, exit 0). A box line missing,
+// malformed or tilted is refused.
+TEST(LammpsData, TheBoxIsReadAndRequired) {
+  const std::string head = "title\n1 atoms\n";
+  const std::string atoms = "\nAtoms # sphere\n\n1 1 1 1 0.5 0.5 0.5\n";
+  EXPECT_EQ(refusal(head + "0 4 xlo xhi\n0 4 ylo yhi\n" + atoms),
+            "x.data: expected the header line \"lo hi zlo zhi\" of the box (as write_data "
+            "writes it), got none");
+  EXPECT_EQ(refusal(head + "0 4 xlo xhi\n4 0 ylo yhi\n0 4 zlo zhi\n" + atoms),
+            "x.data: line 4: expected \"lo hi ylo yhi\" with finite lo < hi, got \"4 0 ylo yhi\"");
+  EXPECT_EQ(refusal(head + "0 nan xlo xhi\n" + atoms),
+            "x.data: line 3: expected \"lo hi xlo xhi\" with finite lo < hi, got \"0 nan xlo "
+            "xhi\"");
+  EXPECT_EQ(refusal(head + "0 4 xlo xhi\n0 4 ylo yhi\n0 4 zlo zhi\n1 0 0 xy xz yz\n" + atoms),
+            "x.data: line 6: expected an orthogonal box, got a triclinic one's tilt \"1 0 0 xy xz "
+            "yz\": granpipe's containers have right angles");
 }
 
 TEST(LammpsData, AMalformedLineIsNamed) {
@@ -87,7 +112,9 @@ TEST(LammpsData, AnAtomsSectionThatNamesNoStyleIsRefused) {
             "x.data: line 4: expected the Atoms section to name its atom style (\"Atoms # "
             "sphere\", as write_data writes it), got \"Atoms # \": atom_style full has sphere's "
             "7 columns and would be misread");
-  EXPECT_EQ(refusal("title\n1 atoms\nAtoms #sphere\n1 1 1 1 0 0 0\n"), "no refusal");
+  EXPECT_EQ(refusal("title\n1 atoms\n-1 1 xlo xhi\n-1 1 ylo yhi\n-1 1 zlo zhi\nAtoms "
+                    "#sphere\n1 1 1 1 0 0 0\n"),
+            "no refusal");
 }
 
 TEST(LammpsData, TooFewAtomsNameTheSectionAndTheHeader) {
@@ -186,6 +213,26 @@ TEST_F(LammpsDataSource, TheCylinderAxisAndSideWallsPlaceTheWalls) {
   EXPECT_EQ(f.container.shape, ContainerShape::Box);
   EXPECT_EQ(f.container.hi[0], 2.4);
   EXPECT_EQ(f.container.boundary[0][1], Boundary::Wall);
+}
+
+// Without stated side walls or a cylinder the x and y sides are the box's, open: a block
+// of spheres fills it, and a centre beyond it is refused.
+TEST_F(LammpsDataSource, WithoutStatedSidesTheBoxHoldsTheAtoms) {
+  const fs::path file = dir_ / "spheres.data";
+  std::ofstream(file) << two_spheres("0 0 0.5", "1.5 -1.5 0.5");
+  harness_ = test::make_context("lammps_data", {{"file", file.string()}});
+  Frame f;
+  ASSERT_TRUE(lammps_data::LammpsDataSource(*harness_).next(f));
+  EXPECT_EQ(f.container.lo, Eigen::Vector3d(-2, -2, 0));
+  EXPECT_EQ(f.container.hi[0], 2.0);
+  EXPECT_EQ(f.container.boundary[0][1], Boundary::Open);
+  EXPECT_EQ(f.container.boundary[2][0], Boundary::Wall);  // the stated base
+  std::ofstream(file) << two_spheres("0 0 0.5", "2.5 0 0.5");
+  harness_ = test::make_context("lammps_data", {{"file", file.string()}});
+  EXPECT_EQ(test::input_error_of([&] { lammps_data::LammpsDataSource source(*harness_); }),
+            file.string() +
+                ": atom 7 at (2.5, 0, 0.5), radius 0.5: expected its centre inside the "
+                "open side x_high (x = 2), got it 0.5 beyond (the data file's box)");
 }
 
 TEST_F(LammpsDataSource, ASphereBelowTheBaseOrAboveTheTopIsRefused) {
