@@ -14,7 +14,7 @@ import json
 import os
 import sys
 
-from paper_values import PaperValues
+from paper_values import PaperValues, paper_problem
 from report_configuration import configuration_section
 from report_parts import TABLE_ROWS_SHOWN, html_table, number, table_section, text, texts, with_error
 from report_plots import plots_section
@@ -129,10 +129,38 @@ def pyplot():
         return None
 
 
-def report_body(run, results, partial, note, plt):
-    with open(os.path.join(run, "pipeline.json")) as f:
-        pipeline_text = f.read()
-    pipeline = json.loads(pipeline_text)
+def read_run_pipeline(run):
+    """(text, object) of the run's pipeline.json; refused in one line where the page could not
+    be drawn from it: not UTF-8, no JSON, no object, a sweep, its parameters or the report
+    section that is no object, paper values that are no lists of one length."""
+    path = os.path.join(run, "pipeline.json")
+    try:
+        with open(path, "rb") as f:
+            text = f.read().decode("utf-8")
+        pipeline = json.loads(text)
+    except OSError as e:
+        refuse(f"{path}: expected the pipeline of a granpipe run, found none: {e.strerror}")
+    except UnicodeDecodeError as e:
+        refuse(f"{path}: expected the pipeline of a granpipe run (UTF-8 JSON), found byte "
+               f"0x{e.object[e.start]:02x} at offset {e.start}, which is not UTF-8")
+    except ValueError as e:
+        refuse(f"{path}: expected the pipeline of a granpipe run, found malformed JSON: {e}")
+    if not isinstance(pipeline, dict):
+        refuse(f"{path}: expected the pipeline of a granpipe run (a JSON object), found a JSON "
+               f"{type(pipeline).__name__}")
+    sections = [("sweep", pipeline.get("sweep", {})), ("report", pipeline.get("report", {}))]
+    if isinstance(sections[0][1], dict):
+        sections.append(("sweep.parameters", sections[0][1].get("parameters", {})))
+    for where, value in sections:
+        if not isinstance(value, dict):
+            refuse(f"{path}: {where}: expected an object, found {json.dumps(value)}")
+    problem = paper_problem(pipeline.get("report", {}).get("paper", []))
+    if problem:
+        refuse(f"{path}: {problem}")
+    return text, pipeline
+
+
+def report_body(run, pipeline_text, pipeline, results, partial, note, plt):
     paper = PaperValues(pipeline)
     parts = [f"<p class=note>{html.escape(note)}</p>" if note else ""]
     if results is not None:
@@ -165,9 +193,11 @@ def is_our_page(path):
 def main(run):
     if not os.path.isfile(os.path.join(run, "pipeline.json")):
         refuse(f"{run}/pipeline.json: expected the pipeline of a granpipe run, found none")
+    pipeline_text, pipeline = read_run_pipeline(run)
     results, partial, note = read_results(run)
     name = text(results.attrs["pipeline_name"]) if results is not None else os.path.basename(run)
-    html_text = page(f"granpipe run {name}", report_body(run, results, partial, note, pyplot()))
+    body = report_body(run, pipeline_text, pipeline, results, partial, note, pyplot())
+    html_text = page(f"granpipe run {name}", body)
     target = os.path.join(run, "report.html")
     if os.path.lexists(target) and not is_our_page(target):
         refuse(f"{target}: expected a report granpipe wrote, found another file; it is left as "

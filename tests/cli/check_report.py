@@ -3,7 +3,9 @@ plot drawn (an SVG with the declared axis labels, points in it), the scalars and
 last saved frame drawn; a sweep's plots with one line per point; the pipeline's "report"
 section (a result against the swept parameter, the paper's values over a plot, speed against
 error); `granpipe report` on demand; --no-report; without matplotlib the tables still shown
-and the page says why; a folder that is no run refused in one line with exit 2."""
+and the page says why; a folder that is no run refused in one line with exit 2, and so is a
+damaged pipeline.json (truncated, a list, not UTF-8, a sweep that is no object, paper values
+whose x and y differ in length), by granpipe report and by the script."""
 import json
 import os
 import subprocess
@@ -153,6 +155,30 @@ with tempfile.TemporaryDirectory() as work:
     check(r.returncode == 2 and r.stderr.count("\n") == 1 and
           "pipeline.json: expected the pipeline of a granpipe run, found none" in r.stderr,
           f"not a run: {r.returncode} {r.stderr!r}")
+
+    # A damaged pipeline.json: one line naming it and what was expected, exit 2, no traceback.
+    damaged = os.path.join(work, "damaged")
+    os.makedirs(damaged)
+    path = os.path.join(damaged, "pipeline.json")
+    paper = {"report": {"paper": [{"plot": "p/q", "label": "L", "x": [1, 2, 3], "y": [1, 2]}]}}
+    cases = {
+        b'{"name": "x", "sweep": {': "expected the pipeline of a granpipe run, found malformed "
+                                     "JSON: Expecting property name enclosed in double quotes: "
+                                     "line 1 column 25 (char 24)",
+        b"[1, 2]": "expected the pipeline of a granpipe run (a JSON object), found a JSON list",
+        b"\xff\xfe\x00": "expected the pipeline of a granpipe run (UTF-8 JSON), found byte 0xff "
+                         "at offset 0, which is not UTF-8",
+        b'{"sweep": "grid"}': 'sweep: expected an object, found "grid"',
+        json.dumps(paper).encode(): "report.paper[0]: expected x, y of one length, found lengths 3, 2",
+    }
+    script = os.path.join(os.path.dirname(os.path.dirname(exe)), "share", "granpipe", "report.py")
+    for content, message in cases.items():
+        with open(path, "wb") as f:
+            f.write(content)
+        for command in ([exe, "report", damaged], [python, script, damaged]):
+            r = subprocess.run(command, capture_output=True, text=True)
+            check(r.returncode == 2 and r.stderr == f"{path}: {message}\n",
+                  f"{content!r} by {command[1]}: {r.returncode} {r.stderr!r}")
 if failures:
     print("FAIL", *failures, sep="\n")
     sys.exit(1)
