@@ -36,7 +36,7 @@ def count_file(path, gap, skip_bottom, skip_top):
     try:
         with h5py.File(path, "r") as f:
             positions = f["particles/all/position/value"][:]
-            radii = f["granpipe/radius"][:]
+            radii = f["particles/all/radius/value"][:]  # file format 2.0 (docs/file-format.md)
             width = f["particles/all/box/edges/value"][0][0]
     except (OSError, KeyError) as e:
         refuse(f"{path}: expected a 2D granpipe frames.h5, could not read it ({e})")

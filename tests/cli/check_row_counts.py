@@ -29,13 +29,14 @@ def stack(rows, missing=()):
 
 
 def write(path, frames, dims=2):
-    """A frames.h5 with what the script reads; frames of one file hold as many disks."""
+    """A frames.h5 with what the script reads, in the layout granpipe writes (file format 2.0:
+    the radius an H5MD element of /particles/all); frames of one file hold as many disks."""
     pos = np.array(frames)
     if dims == 3:
         pos = np.concatenate([pos, np.zeros(pos.shape[:2] + (1,))], axis=2)
     with h5py.File(path, "w") as f:
         f["particles/all/position/value"] = pos
-        f["granpipe/radius"] = np.full(pos.shape[:2], r)
+        f["particles/all/radius/value"] = np.full(pos.shape[:2], r)
         f["particles/all/box/edges/value"] = np.tile([width, 100.0, 1.0][:dims], (len(frames), 1))
 
 
