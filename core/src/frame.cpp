@@ -2,7 +2,10 @@
 
 #include <cmath>
 #include <sstream>
+#include <type_traits>
+#include <variant>
 
+#include "granpipe/container_check.hpp"
 #include "granpipe/errors.hpp"
 
 namespace granpipe {
@@ -61,6 +64,38 @@ void check_contacts(const Frame& f, const std::string& where) {
                        " (or a wall code -2 to -8 as second partner), got " + std::to_string(i[k]) +
                        " and " + std::to_string(j[k]));
     }
+    // A contact with a wall the container does not have was counted as a wall contact.
+    if (partner::is_wall(j[k]) && !has_wall(f.container, partner::wall_of(j[k]))) {
+      throw InputError(where + ": contact " + std::to_string(k) + ": expected a wall of the " +
+                       to_string(f.container.shape) + " container as second partner, got " +
+                       to_string(partner::wall_of(j[k])) + " (code " + std::to_string(j[k]) +
+                       "), which it does not have");
+    }
+  }
+}
+
+// The motion a simulator starts from and writers pass on: a NaN there is a broken file,
+// never a value (positions and radii are checked apart, with their own words).
+void check_motion(const Frame& f, const std::string& where) {
+  for (const char* name : {"velocity", "angular_velocity", "force", "torque"}) {
+    const Column* c = f.particles.find(name);
+    if (!c) continue;
+    std::visit(
+        [&](const auto& values) {
+          using Scalar = typename std::decay_t<decltype(values)>::Scalar;
+          if constexpr (std::is_same_v<Scalar, double>) {
+            for (Eigen::Index k = 0; k < values.rows(); ++k) {
+              for (Eigen::Index a = 0; a < values.cols(); ++a) {
+                if (std::isfinite(values(k, a))) continue;
+                std::ostringstream s;
+                s << where << ": " << describe_particle(f, k) << ": expected a finite " << name
+                  << ", got " << values(k, a) << " in component " << a;
+                throw InputError(s.str());
+              }
+            }
+          }
+        },
+        c->storage());
   }
 }
 
@@ -148,8 +183,10 @@ void Frame::check_layout(const std::string& where) const {
 
 void Frame::check(const std::string& where) const {
   check_layout(where);
+  check_container_values(container, dim, where);
   if (contacts) check_contacts(*this, where);
   check_particles(*this, where);
+  check_motion(*this, where);
 }
 
 }  // namespace granpipe

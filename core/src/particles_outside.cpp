@@ -8,11 +8,13 @@ namespace granpipe {
 
 namespace {
 
-// The plane sides that bound particles: every Wall or Open side of the frame's axes, but
-// the x and y sides of a cylinder container, whose cylinder holds the particles instead.
-bool bounds(const Container& c, int dim, int axis, int side) {
+// The plane sides that bound particles: every Wall (and Open, when they bound) side of the
+// frame's axes, but the x and y sides of a cylinder container, whose cylinder holds the
+// particles instead.
+bool bounds(const Container& c, int dim, int axis, int side, bool open_sides_bound) {
   if (c.shape == ContainerShape::Cylinder && axis < 2) return false;
-  return axis < dim && c.boundary[axis][side] != Boundary::Periodic;
+  const Boundary b = c.boundary[axis][side];
+  return axis < dim && (b == Boundary::Wall || (b == Boundary::Open && open_sides_bound));
 }
 
 double side_position(const Container& c, int axis, int side) {
@@ -60,12 +62,13 @@ std::string where_is(const Frame& f, Wall wall) {
 
 }  // namespace
 
-std::optional<ParticleOutside> first_particle_outside(const Frame& frame, double tolerance) {
+std::optional<ParticleOutside> first_particle_outside(const Frame& frame, double tolerance,
+                                                      bool open_sides_bound) {
   const bool cylinder = frame.container.shape == ContainerShape::Cylinder && frame.dim == 3;
   for (Eigen::Index k = 0; k < frame.size(); ++k) {
     for (int axis = 0; axis < 3; ++axis) {
       for (int side = 0; side < 2; ++side) {
-        if (!bounds(frame.container, frame.dim, axis, side)) continue;
+        if (!bounds(frame.container, frame.dim, axis, side, open_sides_bound)) continue;
         if (auto out = beyond_side(frame, k, axis, side, tolerance)) return out;
       }
     }

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "granpipe/contacts_by_distance.hpp"
+#include "granpipe/particles_outside.hpp"
 
 namespace granpipe::h5md {
 
@@ -20,8 +21,9 @@ Schema schema() {
       .range(1e-50, 1e50)
       .unit("length");
   s.real("max_overlap", 1e-6,
-         "largest overlap accepted between two particles, as a fraction of the smaller radius: "
-         "about 0 for hard particles, a few percent for soft-sphere (DEM) data")
+         "largest overlap accepted between two particles, as a fraction of the smaller radius, "
+         "and between a particle and a wall, as a fraction of its radius: about 0 for hard "
+         "particles, a few percent for soft-sphere (DEM) data")
       .min(0.0);
   return s;
 }
@@ -91,6 +93,7 @@ Frame H5mdSource::read_checked(long index) const {
   // Every measure of an empty frame is 0/0.
   if (frame.size() == 0) throw InputError(where + ": expected particles, got none");
   check_overlaps(frame, where);
+  check_inside(frame, where);
   return frame;
 }
 
@@ -154,6 +157,20 @@ void H5mdSource::check_overlaps(const Frame& frame, const std::string& where) co
       throw InputError(msg.str());
     }
   }
+}
+
+// A particle through a wall is in no container the analyses can measure (a packing
+// fraction of 0.02 for a block behind a wall, exit 0). Walls are judged with the particles'
+// tolerance: soft-sphere data press into them too. An open side is no wall: a particle
+// thrown above an open top is in the container.
+void H5mdSource::check_inside(const Frame& frame, const std::string& where) const {
+  const auto out = first_particle_outside(frame, max_overlap_, false);
+  if (!out) return;
+  std::ostringstream msg;
+  msg << where << ": particle " << out->particle << " (id " << frame.id()[out->particle] << ") "
+      << describe(frame, *out, max_overlap_) << " (" << max_overlap_param_
+      << " sets the overlap accepted with a wall)";
+  throw InputError(msg.str());
 }
 
 void H5mdSource::finish(Results& results) {

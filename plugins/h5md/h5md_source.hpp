@@ -29,6 +29,7 @@ class H5mdSource : public Source {
   // Hard-particle analyses are meaningless on overlapping particles: such input is refused
   // with the pair and the size of the overlap, unless max_overlap allows it.
   void check_overlaps(const Frame& frame, const std::string& where) const;
+  void check_inside(const Frame& frame, const std::string& where) const;
   Frame read_checked(long index) const;
   void check_step_rises(const Frame& frame, long index);
   RunParts parts_;

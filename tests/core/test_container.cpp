@@ -1,7 +1,15 @@
-// Periodic geometry of a container: minimum image and wrapping, on periodic and walled axes.
+// Periodic geometry of a container: minimum image and wrapping, on periodic and walled axes;
+// the checks of its values and walls a frame makes.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
+
 #include "granpipe/container.hpp"
+#include "granpipe/container_check.hpp"
+#include "granpipe/errors.hpp"
+#include "granpipe/frame.hpp"
+#include "plugin_harness.hpp"
 
 using namespace granpipe;
 
@@ -29,4 +37,66 @@ TEST(Container, WrapIntoTheHalfOpenBox) {
   const Container walls =
       Container::open_top_box(2, Eigen::Vector3d::Zero(), Eigen::Vector3d(1, 1, 0));
   EXPECT_EQ(walls.wrap(0, 5.0), 5.0);
+}
+
+// Numbers that are no numbers (an edge of inf, a wall offset of NaN from another tool or an
+// edited file) made every fraction 0 or NaN, exit 0. Frame::check refuses them.
+TEST(ContainerCheck, ValuesMustBeFiniteAndInOrder) {
+  Container c = Container::open_top_box(3, Eigen::Vector3d::Zero(), Eigen::Vector3d(4, 4, 8));
+  EXPECT_NO_THROW(check_container_values(c, 3, "f"));
+  c.hi[1] = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(test::input_error_of([&] { check_container_values(c, 3, "f"); }),
+            "f: expected a finite upper side along y of the container, got inf");
+  c.hi[1] = 4.0;
+  c.wall_offset[2] = std::nan("");
+  EXPECT_EQ(test::input_error_of([&] { check_container_values(c, 3, "f"); }),
+            "f: expected a finite wall offset along z of the container, got nan");
+  c.wall_offset[2] = 0.0;
+  c.lo[0] = 4.0;
+  EXPECT_EQ(test::input_error_of([&] { check_container_values(c, 3, "f"); }),
+            "f: expected the container's sides along x in order (lo < hi), got 4 to 4");
+  c.lo[0] = 0.0;
+  c.shape = ContainerShape::Cylinder;
+  c.cylinder_radius = -1.0;
+  EXPECT_EQ(test::input_error_of([&] { check_container_values(c, 3, "f"); }),
+            "f: expected a finite cylinder radius > 0, got -1");
+  // A 2D frame's z entries mean nothing and are not checked.
+  Container flat = Container::periodic_box(2, Eigen::Vector3d::Zero(), Eigen::Vector3d(4, 4, 0));
+  EXPECT_NO_THROW(check_container_values(flat, 2, "f"));
+}
+
+TEST(ContainerCheck, WallsAreTheSolidSidesAndTheCylinder) {
+  Container c = Container::open_top_box(3, Eigen::Vector3d::Zero(), Eigen::Vector3d(4, 4, 8));
+  c.boundary[0] = {Boundary::Periodic, Boundary::Periodic};
+  EXPECT_FALSE(has_wall(c, Wall::XLow));
+  EXPECT_TRUE(has_wall(c, Wall::YHigh));
+  EXPECT_TRUE(has_wall(c, Wall::ZLow));
+  EXPECT_FALSE(has_wall(c, Wall::ZHigh));  // the open top
+  EXPECT_FALSE(has_wall(c, Wall::CylinderSide));
+  c.shape = ContainerShape::Cylinder;
+  c.cylinder_radius = 2.0;
+  EXPECT_TRUE(has_wall(c, Wall::CylinderSide));
+  EXPECT_FALSE(has_wall(c, Wall::YHigh));  // the cylinder's box only bounds its cell grid
+}
+
+// A contact naming a wall the container does not have was counted as a wall contact, and
+// NaN velocities were read and written on (exit 0).
+TEST(ContainerCheck, FramesRefuseContactsWithMissingWallsAndMotionThatIsNoNumber) {
+  Frame f;
+  f.resize(1, 3);
+  f.position() << 0.5, 0.5, 0.5;
+  f.radius().setConstant(0.5);
+  f.container = Container::open_top_box(3, Eigen::Vector3d::Zero(), Eigen::Vector3d(4, 4, 8));
+  PropertyTable& contacts = f.add_contacts(1);
+  contacts.column(0).as<IndexArray>()[0] = 0;
+  contacts.column(1).as<IndexArray>()[0] = partner::wall(Wall::ZLow);
+  EXPECT_NO_THROW(f.check("f"));
+  contacts.column(1).as<IndexArray>()[0] = partner::wall(Wall::CylinderSide);
+  EXPECT_EQ(test::input_error_of([&] { f.check("f"); }),
+            "f: contact 0: expected a wall of the box container as second partner, got cylinder "
+            "(code -8), which it does not have");
+  contacts.column(1).as<IndexArray>()[0] = partner::wall(Wall::ZLow);
+  f.add("velocity").as<Coordinates>()(0, 1) = std::nan("");
+  EXPECT_EQ(test::input_error_of([&] { f.check("f"); }),
+            "f: particle 0 (id 0): expected a finite velocity, got nan in component 1");
 }

@@ -35,6 +35,8 @@ class H5mdSourceTest : public ::testing::Test {
       f.resize(3, 2);
       for (Eigen::Index i = 0; i < 3; ++i) f.position()(i, 0) = static_cast<double>(k + i);
       f.radius().setConstant(0.5);
+      f.container =
+          Container::periodic_box(2, Eigen::Vector3d(-1, -5, 0), Eigen::Vector3d(99, 5, 0));
       f.add("velocity");
       f.step = 10 * k;
       w.append(f);
@@ -144,6 +146,7 @@ fs::path write_pair(const fs::path& dir, double distance) {
   f.resize(2, 2);
   f.position()(1, 0) = distance;
   f.radius().setConstant(0.5);
+  f.container = Container::periodic_box(2, Eigen::Vector3d(-1, -5, 0), Eigen::Vector3d(9, 5, 0));
   w.append(f);
   w.close();
   return p;
@@ -188,6 +191,34 @@ TEST_F(H5mdSourceTest, FramesWithoutParticlesAreRefused) {
   w.close();
   EXPECT_EQ(error_of([&] { return source(p, 0, -1, 1); }),
             p.string() + ": frame 0: expected particles, got none");
+}
+
+// A particle through a wall was read, and measured in a container it is not in (a packing
+// fraction of 0.02 for a block behind a wall, exit 0); one thrown above an open top is in
+// its container, and read.
+TEST_F(H5mdSourceTest, AParticleThroughAWallIsRefusedAndOneAboveAnOpenTopRead) {
+  const fs::path p = dir_ / "walls.h5";
+  Frame f;
+  f.resize(2, 2);
+  f.position() << 1.0, 0.5, 3.0, 7.0;  // the second far above the open top at y = 5
+  f.radius().setConstant(0.5);
+  f.container = Container::open_top_box(2, Eigen::Vector3d::Zero(), Eigen::Vector3d(10, 5, 0));
+  {
+    FrameWriter w(p, "{}");
+    w.append(f);
+    w.close();
+  }
+  EXPECT_EQ(error_of([&] { return source(p, 0, -1, 1); }), "(no InputError)");
+  fs::remove(p);
+  f.position()(1, 0) = 10.2;
+  FrameWriter w(p, "{}");
+  w.append(f);
+  w.close();
+  EXPECT_EQ(error_of([&] { return source(p, 0, -1, 1); }),
+            p.string() +
+                ": frame 0: particle 1 (id 1) at (10.2, 7), radius 0.5: expected an overlap with "
+                "the wall x_high (x = 10) of at most 5e-07 (1e-06 of its radius), got 0.7 "
+                "(params.max_overlap sets the overlap accepted with a wall)");
 }
 
 // An infinite periodic box gave phi = 0 with exit 0.
@@ -241,6 +272,8 @@ class RunPartsTest : public H5mdSourceTest {
       f.resize(particles, 2);
       for (Eigen::Index i = 0; i < particles; ++i) f.position()(i, 0) = static_cast<double>(k + i);
       f.radius().setConstant(0.5);
+      f.container =
+          Container::periodic_box(2, Eigen::Vector3d(-1, -5, 0), Eigen::Vector3d(99, 5, 0));
       f.add("velocity");
       f.table<double>("velocity").setConstant(part);
       f.step = 10 * k;

@@ -24,8 +24,11 @@ struct ParticleOutside {
 // press into their walls by a few percent of a radius, so touching is judged with this
 // tolerance. The walls are where the frame shows them (rest geometry plus wall_offset); a
 // cylinder container's walls are the cylinder and its z sides (its box's x and y sides are
-// only the cell grid's bounds); periodic sides bound nothing.
-std::optional<ParticleOutside> first_particle_outside(const Frame& frame, double tolerance);
+// only the cell grid's bounds); periodic sides bound nothing. With `open_sides_bound` false,
+// open sides bound nothing either: a saved frame's open top is no wall, and a particle
+// thrown above it is still in the container.
+std::optional<ParticleOutside> first_particle_outside(const Frame& frame, double tolerance,
+                                                      bool open_sides_bound = true);
 
 // "at (7, 0, 2), radius 0.5: expected an overlap with the wall cylinder (radius 6.125 about
 // (0, 0)) of at most 0.025 (0.05 of its radius), got 1.375": to follow the particle's name

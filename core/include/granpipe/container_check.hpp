@@ -1,0 +1,23 @@
+#pragma once
+// What a frame's container must be for anything to be measured in it, checked with every
+// frame a source gives (Frame::check): numbers that are numbers, and walls that exist for
+// the contacts naming them. Files from other tools and edited files broke both: an edge of
+// inf made every packing fraction 0, a wall offset of NaN every height NaN, and a contact
+// with "x_low" in a box open there was counted as a wall contact, all with exit 0.
+#include <string>
+
+#include "granpipe/container.hpp"
+
+namespace granpipe {
+
+// InputError starting with `where` unless lo, hi, the wall offset and velocity are finite
+// along the first `dim` axes with lo < hi, and a cylinder's centre is finite and its radius
+// finite and > 0.
+void check_container_values(const Container& container, int dim, const std::string& where);
+
+// Whether `w` is a wall of the container: a solid side of a box, the z sides of a cylinder
+// container where solid, or its cylinder (the x and y sides of a cylinder container only
+// bound its cell grid).
+bool has_wall(const Container& container, Wall w);
+
+}  // namespace granpipe

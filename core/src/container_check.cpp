@@ -1,0 +1,50 @@
+#include "granpipe/container_check.hpp"
+
+#include <cmath>
+
+#include "granpipe/errors.hpp"
+#include "granpipe/format_number.hpp"
+
+namespace granpipe {
+
+namespace {
+
+void require_finite(double value, const std::string& what, const std::string& where) {
+  if (std::isfinite(value)) return;
+  throw InputError(where + ": expected a finite " + what + " of the container, got " +
+                   format_number(value));
+}
+
+}  // namespace
+
+void check_container_values(const Container& c, int dim, const std::string& where) {
+  for (int a = 0; a < dim; ++a) {
+    const std::string axis(1, "xyz"[a]);
+    require_finite(c.lo[a], "lower side along " + axis, where);
+    require_finite(c.hi[a], "upper side along " + axis, where);
+    require_finite(c.wall_offset[a], "wall offset along " + axis, where);
+    require_finite(c.wall_velocity[a], "wall velocity along " + axis, where);
+    if (!(c.lo[a] < c.hi[a])) {
+      throw InputError(where + ": expected the container's sides along " + axis +
+                       " in order (lo < hi), got " + format_number(c.lo[a]) + " to " +
+                       format_number(c.hi[a]));
+    }
+  }
+  if (c.shape != ContainerShape::Cylinder) return;
+  require_finite(c.cylinder_center[0], "cylinder axis x", where);
+  require_finite(c.cylinder_center[1], "cylinder axis y", where);
+  if (!(c.cylinder_radius > 0.0) || !std::isfinite(c.cylinder_radius)) {
+    throw InputError(where + ": expected a finite cylinder radius > 0, got " +
+                     format_number(c.cylinder_radius));
+  }
+}
+
+bool has_wall(const Container& c, Wall w) {
+  const bool cylinder = c.shape == ContainerShape::Cylinder;
+  if (w == Wall::CylinderSide) return cylinder;
+  const int axis = static_cast<int>(w) / 2, side = static_cast<int>(w) % 2;
+  if (cylinder && axis < 2) return false;
+  return c.boundary[axis][side] == Boundary::Wall;
+}
+
+}  // namespace granpipe
