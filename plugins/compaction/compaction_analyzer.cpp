@@ -19,7 +19,8 @@ Schema schema() {
       .unit("taps");
   s.integers("waiting_times", std::vector<std::int64_t>{10, 100, 1000},
              "t_w of the ageing squared differences (<Z>(t_w) - <Z>(t_w + t))^2; a t_w that is "
-             "no frame's tap is left out with a warning");
+             "no frame's tap is left out with a warning")
+      .min(0);
   return s;
 }
 

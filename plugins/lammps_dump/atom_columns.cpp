@@ -146,8 +146,14 @@ AtomColumns parse_atom_columns(const std::vector<std::string>& names, const std:
   c.type = find.take("type");
   find_positions(find, c, at);
   c.size = find.take("radius");
+  const int diameter = find.take("diameter");
+  // Both, and one would be read while the other said something else.
+  if (c.size >= 0 && diameter >= 0) {
+    throw InputError(at + "expected a radius or a diameter column, got both (\"" + joined(names) +
+                     "\")");
+  }
   if (c.size < 0) {
-    c.size = find.take("diameter");
+    c.size = diameter;
     c.diameter = c.size >= 0;
   }
   find_vectors(find, c, at);

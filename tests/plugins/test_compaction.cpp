@@ -217,6 +217,15 @@ TEST(Compaction, MeanHeightOfALatticeIsInMeanRadiiAboveTheBottom) {
   EXPECT_NEAR(p.phi_b, M_PI / 6.0, 1e-9);
 }
 
+// A t_w below 0 was accepted and left out with a warning as if it were a tap not saved.
+TEST(Compaction, ANegativeWaitingTimeIsRefused) {
+  EXPECT_EQ(
+      granpipe::test::input_error_of([] {
+        granpipe::test::make_context(granpipe::compaction::schema(), {{"waiting_times", {10, -1}}});
+      }),
+      "test: params.waiting_times: expected a list of integers >= 0, got [10,-1]");
+}
+
 TEST(Compaction, AFrameWithoutATapIsRefused) {
   EXPECT_EQ(granpipe::test::input_error_of([] {
               measure_frame(cubic_stack(-1), StereologySettings{}, "compaction: frame 3 (step 0)");

@@ -223,6 +223,13 @@ TEST_F(LammpsDump, ADiameterColumnGivesHalfOfIt) {
   expect_the_atoms(frame(snapshot(0, atoms(), {"id", "type", "x", "y", "z", "diameter"})));
 }
 
+// Both columns: the radius was read and the diameter, saying something else, ignored.
+TEST_F(LammpsDump, ARadiusAndADiameterColumnTogetherAreRefused) {
+  EXPECT_EQ(refusal(snapshot(0, atoms(), {"id", "type", "x", "y", "z", "radius", "diameter"})),
+            "atoms.dump: timestep 0, line 9: expected a radius or a diameter column, got both "
+            "(\"id type x y z radius diameter\")");
+}
+
 TEST_F(LammpsDump, WithoutARadiusColumnTheRadiusParameterIsEveryAtoms) {
   const auto columns = std::vector<std::string>{"id", "type", "xs", "ys", "zs"};  // dump atom
   const Frame f = frame(snapshot(0, atoms(), columns), {{"radius", 0.25}});
