@@ -68,6 +68,12 @@ h5::Object open_file(const std::string& name, bool& swmr) {
   if (std::filesystem::is_directory(name, ec)) {
     throw InputError(name + ": expected an HDF5 file, got a directory");
   }
+  // Opening a FIFO without a writer waits for one: `granpipe inspect` hung.
+  if (!std::filesystem::is_regular_file(name, ec)) {
+    throw InputError(name +
+                     ": expected an HDF5 file, got no regular file (a pipe, socket or "
+                     "device)");
+  }
   if (!std::ifstream(name).good()) throw InputError(name + ": cannot be read (permissions?)");
   if (H5Fis_hdf5(name.c_str()) <= 0) {
     throw InputError(name + ": not an HDF5 file (no HDF5 signature)");

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <hdf5.h>
 #include <signal.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -593,6 +594,14 @@ TEST_F(FrameStore, RowsWhoseStepWasNeverWrittenAreNotFrames) {
 TEST_F(FrameStore, MissingFileIsAnInputError) {
   const fs::path p = file("nowhere.h5");
   EXPECT_EQ(test::input_error_of([&] { FrameReader r(p); }), p.string() + ": no such file");
+}
+
+// A FIFO without a writer: opening it waited for one forever (granpipe inspect hung).
+TEST_F(FrameStore, APipeIsRefusedWithoutWaitingOnIt) {
+  const fs::path p = file("pipe.h5");
+  ASSERT_EQ(mkfifo(p.c_str(), 0600), 0);
+  EXPECT_EQ(test::input_error_of([&] { FrameReader r(p); }),
+            p.string() + ": expected an HDF5 file, got no regular file (a pipe, socket or device)");
 }
 
 TEST_F(FrameStore, NonHdf5FileIsAnInputError) {
