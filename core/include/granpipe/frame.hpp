@@ -96,8 +96,10 @@ struct Frame {
   std::optional<std::int64_t> integer_observable(std::string_view name) const;
 
   // Throws InputError naming `where` on NaN/inf positions or radii, non-positive radii,
-  // missing required columns, columns of the wrong type or size, or contacts naming a
-  // particle that does not exist.
+  // NaN/inf velocities, angular velocities, forces or torques, missing required columns,
+  // columns of the wrong type or size, a container whose numbers are not finite or whose
+  // sides are out of order (granpipe/container_check.hpp), or contacts naming a particle
+  // that does not exist or a wall the container does not have.
   void check(const std::string& where) const;
   // The structural part of check(): dimension, required columns, every column's rows and
   // components. Values are not looked at (a frame store keeps NaNs as given).
