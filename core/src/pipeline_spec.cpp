@@ -37,13 +37,21 @@ void check_utf8(const std::string& assignment) {
                    "...: expected UTF-8 text, got the byte " + byte + " next");
 }
 
-// A sweep's parameter names are themselves paths ("source.params.epsilon"), so what follows
-// sweep.parameters in a --set is one key: --set sweep.parameters.source.params.epsilon=[0.1]
-// cuts the file's sweep to one value rather than nesting objects the sweep cannot read.
-std::vector<std::string> sweep_key_as_one_part(std::vector<std::string> parts) {
-  if (parts.size() <= 3 || parts[0] != "sweep" || parts[1] != "parameters") return parts;
+// Where a --set writes, and the path its override is known by in messages. A sweep's
+// parameter names are themselves paths ("source.params.epsilon"), so what follows
+// sweep.parameters is one key (--set sweep.parameters.source.params.epsilon=[0.1] cuts the
+// file's sweep to one value rather than nesting objects the sweep cannot read), named as the
+// sweep names its entries so that its messages name the --set.
+struct SetTarget {
+  std::vector<std::string> parts;
+  std::string path;
+};
+
+SetTarget set_target(const std::vector<std::string>& parts) {
+  if (parts.size() < 3 || parts[0] != "sweep" || parts[1] != "parameters")
+    return {parts, join_path(parts)};
   const std::string key = join_path({parts.begin() + 2, parts.end()});
-  return {"sweep", "parameters", key};
+  return {{"sweep", "parameters", key}, JsonLocation{"", "sweep.parameters"}.quoted_key(key).path};
 }
 
 // Applies `--set path=value` and says where the value came from.
@@ -53,15 +61,12 @@ Override apply_set(json& root, const std::string& assignment) {
   const std::string where = set_origin(assignment);
   if (eq == std::string::npos) throw InputError(where + ": expected path=value, got no '='");
   const std::string path = assignment.substr(0, eq), text = assignment.substr(eq + 1);
-  const std::vector<std::string> parts = sweep_key_as_one_part(split_path(path, where));
+  const SetTarget target = set_target(split_path(path, where));
   // A bare word is a string: --set source.params.lattice=fcc
-  const json value = parse_strict_json_if_json(text, where, parts.size()).value_or(json(text));
-  locate(root, parts, where) = value;
-  // Named as the sweep names its entries, so that its messages name this --set.
-  const bool sweep_key = parts.size() == 3 && parts[0] == "sweep" && parts[1] == "parameters";
-  return {
-      sweep_key ? JsonLocation{"", "sweep.parameters"}.quoted_key(parts[2]).path : join_path(parts),
-      where};
+  const json value =
+      parse_strict_json_if_json(text, where, target.parts.size()).value_or(json(text));
+  locate(root, target.parts, where) = value;
+  return {target.path, where};
 }
 
 std::uint64_t read_seed(const json& root, const JsonLocation& at) {

@@ -41,7 +41,7 @@ ProfileMeasurement measure_profiles(const Frame& frame, const ProfileSettings& s
   const Region box = container_region(frame);
 
   const double step = s.step * r;
-  check_bin_count((highest_top(frame) - base) / r, s.step, s.step_name,
+  check_bin_count((highest_top(frame) - base) / r, s.step, s.params + ".step",
                   "bins of the vertical profile");
   const int count = std::max(1, static_cast<int>(std::ceil((highest_top(frame) - base) / step)));
   m.vertical = bin_fractions(frame, box, v, base, step, count);
@@ -49,7 +49,7 @@ ProfileMeasurement measure_profiles(const Frame& frame, const ProfileSettings& s
   Region zone = box;
   zone.hi[v] = base + m.global.height_c;
   const double width = box.hi[0] - box.lo[0];
-  check_bin_count(width / r, s.step, s.step_name, "bins of the transversal profile");
+  check_bin_count(width / r, s.step, s.params + ".step", "bins of the transversal profile");
   const int across = std::max(1, static_cast<int>(std::lround(width / step)));
   m.transversal_step = width / across / r;
   m.transversal = bin_fractions(frame, zone, 0, box.lo[0], width / across, across);

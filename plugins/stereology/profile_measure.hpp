@@ -20,10 +20,11 @@ namespace granpipe::stereology {
 
 struct ProfileSettings {
   StereologySettings global;
-  double step = 0.1;                          // R
-  std::string step_name = "stereology.step";  // where it sits in the pipeline, for messages
-  double lateral_band = 7.0;                  // R
-  double fit_from = 5.0;                      // R
+  double step = 0.1;  // R
+  // Where these sit in the pipeline ("analyzers[1].params"), so that messages name them.
+  std::string params = "stereology";
+  double lateral_band = 7.0;  // R
+  double fit_from = 5.0;      // R
 };
 
 struct ProfileMeasurement {

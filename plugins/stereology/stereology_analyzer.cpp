@@ -63,7 +63,7 @@ StereologyAnalyzer::StereologyAnalyzer(const PluginContext& ctx)
                 "central fractions and their increases over the first frame, Eq. (7) fit"))) {
   const Params& p = ctx.params;
   settings_.step = p.real("step");
-  settings_.step_name = ctx.param("step");
+  if (!ctx.params_path.empty()) settings_.params = ctx.params_path;
   settings_.global = stereology_settings(p);
   settings_.lateral_band = p.real("lateral_band");
   settings_.fit_from = p.real("fit_from");

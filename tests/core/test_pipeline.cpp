@@ -518,11 +518,14 @@ TEST(Pipeline, DefaultsAreFilledIn) {
   EXPECT_EQ(p.seed(), 1u);
 }
 
+// A grid of 3 x 2 points over a source and an analyzer parameter.
+constexpr const char* kGrid =
+    R"({"source": {"plugin": "random"}, "analyzers": [{"plugin": "meanx"}],
+    "sweep": {"parameters": {"source.params.n": [1, 2, 3], "analyzers[0].params.scale": [1, 2]}}})";
+
 TEST(Pipeline, SweepGridAndZip) {
   const Registry r = test_registry();
-  const char* grid = R"({"source": {"plugin": "random"}, "analyzers": [{"plugin": "meanx"}],
-    "sweep": {"parameters": {"source.params.n": [1, 2, 3], "analyzers[0].params.scale": [1, 2]}}})";
-  EXPECT_EQ(Pipeline::parse(grid, "p.json", {}, r).points(), 6u);
+  EXPECT_EQ(Pipeline::parse(kGrid, "p.json", {}, r).points(), 6u);
   const char* zip = R"({"source": {"plugin": "random"}, "analyzers": [{"plugin": "meanx"}],
     "sweep": {"mode": "zip", "parameters": {"source.params.n": [1, 2], "analyzers[0].params.scale": [1, 2]}}})";
   EXPECT_EQ(Pipeline::parse(zip, "p.json", {}, r).points(), 2u);
@@ -533,20 +536,18 @@ TEST(Pipeline, SweepGridAndZip) {
 // expected a non-empty list of values").
 TEST(Pipeline, SetIntoASweepReplacesTheValuesOfTheParameterItNames) {
   const Registry r = test_registry();
-  const char* grid = R"({"source": {"plugin": "random"}, "analyzers": [{"plugin": "meanx"}],
-    "sweep": {"parameters": {"source.params.n": [1, 2, 3], "analyzers[0].params.scale": [1, 2]}}})";
-  EXPECT_EQ(Pipeline::parse(grid, "p.json", {"sweep.parameters.source.params.n=[4]"}, r).points(),
+  EXPECT_EQ(Pipeline::parse(kGrid, "p.json", {"sweep.parameters.source.params.n=[4]"}, r).points(),
             2u);
-  EXPECT_EQ(Pipeline::parse(grid, "p.json", {"sweep.parameters.analyzers[0].params.scale=[3]"}, r)
+  EXPECT_EQ(Pipeline::parse(kGrid, "p.json", {"sweep.parameters.analyzers[0].params.scale=[3]"}, r)
                 .points(),
             3u);
-  EXPECT_EQ(error_of(grid, {"sweep.parameters.source.params.n=5"}),
+  EXPECT_EQ(error_of(kGrid, {"sweep.parameters.source.params.n=5"}),
             "--set sweep.parameters.source.params.n=5: expected a non-empty list of values, got 5");
   EXPECT_EQ(
-      error_of(grid, {"sweep.parameters.x=[1]"}),
+      error_of(kGrid, {"sweep.parameters.x=[1]"}),
       "--set sweep.parameters.x=[1]: expected a plugin parameter path like source.params.name "
       "or analyzers[0].params.name, got \"x\"");
-  EXPECT_EQ(error_of(grid, {"sweep.parameters.source.params.n=[5000]"}),
+  EXPECT_EQ(error_of(kGrid, {"sweep.parameters.source.params.n=[5000]"}),
             "p.json: source.params.n: expected an integer in [1, 1000], got 5000 (sweep point 0: "
             "analyzers[0].params.scale = 1, source.params.n = 5000)");
 }
