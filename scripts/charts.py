@@ -10,6 +10,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402  (the backend must be chosen first)
 
+from run_manifest import note_written  # noqa: E402
+
 plt.rcParams.update({"svg.fonttype": "none", "svg.hashsalt": "granpipe", "font.size": 10})
 SIZE = (8.0, 4.6)  # inches
 
@@ -17,6 +19,7 @@ SIZE = (8.0, 4.6)  # inches
 def _save(fig, path):
     fig.savefig(path, metadata={"Date": None} if path.endswith(".svg") else None, bbox_inches="tight")
     plt.close(fig)
+    note_written(path)
 
 
 def line_chart(series, reference, xlabel, ylabel, path, reference_label="steady state (constant A)"):

@@ -19,6 +19,7 @@ from report_configuration import configuration_section
 from report_parts import TABLE_ROWS_SHOWN, html_table, number, table_section, text, texts, with_error
 from report_plots import plots_section
 from report_sweep import sweep_section
+from run_manifest import note_written
 
 
 def refuse(message):
@@ -207,6 +208,7 @@ def main(run):
         with open(partial, "w") as f:
             f.write(html_text)
         os.replace(partial, target)
+        note_written(target)
     except OSError as e:  # a full disk, a folder not ours to write: the run's files stay
         if os.path.exists(partial):
             os.remove(partial)

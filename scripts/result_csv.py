@@ -5,6 +5,7 @@ import math
 import os
 
 from input_error import read_pipeline, refuse
+from run_manifest import note_written
 
 
 def read_rows(path, what="table"):
@@ -40,12 +41,14 @@ def read_table(path):
 
 def write_csv(path, first_line, rows):
     """Writes a '#' line and rows to `path` through a partial file renamed over it, so a
-    refusal or a crash midway leaves no half-written table."""
+    refusal or a crash midway leaves no half-written table; a table written into a run's
+    folder joins what --overwrite replaces with the run."""
     partial = path + ".partial"
     with open(partial, "w", newline="") as f:
         f.write(first_line + "\n")
         csv.writer(f).writerows(rows)
     os.replace(partial, path)
+    note_written(path)
 
 
 def read_scalars(path):

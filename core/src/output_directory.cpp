@@ -11,6 +11,7 @@
 #include "granpipe/errors.hpp"
 #include "granpipe/log.hpp"
 #include "output_path_checks.hpp"
+#include "run_manifest.hpp"
 
 namespace granpipe {
 namespace fs = std::filesystem;
@@ -59,7 +60,15 @@ OutputDirectory::OutputDirectory(const fs::path& dir, bool overwrite,
   if (fs::exists(final_, ec) && !is_empty_directory(final_)) check_earlier_run(overwrite);
 }
 
-OutputDirectory::~OutputDirectory() = default;
+// A run that failed or was interrupted lists what it wrote too, once its files are closed.
+OutputDirectory::~OutputDirectory() {
+  if (!claimed_ || manifest_written_) return;
+  try {
+    write_run_manifest(work_);
+  } catch (const InputError&) {
+    // A full disk: without a manifest, --overwrite removes only what every run writes.
+  }
+}
 
 // Every writer of a marker holds the directory's lock, so the marker is read under it.
 void OutputDirectory::check_earlier_run(bool overwrite) {
@@ -89,6 +98,13 @@ void OutputDirectory::check_earlier_run(bool overwrite) {
     throw InputError(shown + ": expected a new or empty output directory, got one holding " +
                      describe_earlier(*earlier) +
                      "; pass --overwrite to replace it, or choose another --out");
+  }
+  const std::vector<std::string> foreign = foreign_entries(final_);
+  if (!foreign.empty()) {
+    throw InputError(shown +
+                     ": --overwrite removes only what granpipe wrote, and this run's folder " +
+                     "also holds " + list_entries(foreign) +
+                     "; move them out or remove the folder yourself; nothing was changed");
   }
   check_removable(final_);
   earlier_run_id_ = earlier->run_id;
@@ -162,6 +178,8 @@ void OutputDirectory::claim_beside() {
 void OutputDirectory::complete(Log& log) {
   interruption_.reset();
   throw_if_stop_requested();  // a signal that came before the handlers were given back
+  write_run_manifest(work_);
+  manifest_written_ = true;
   marker_.status = RunStatus::Complete;
   write_run_marker(work_, marker_);
   if (replacing_) remove_earlier(swap_in(), log);
@@ -204,11 +222,10 @@ void OutputDirectory::remove_earlier(const fs::path& dir, Log& log) {
              "left in place");
     return;
   }
-  std::error_code ec;
-  fs::remove_all(dir, ec);
-  if (ec) {
-    log.warn(dir.string() + ": could not remove the earlier run (" + ec.message() +
-             "); remove it yourself");
+  const std::vector<std::string> left = remove_run_entries(dir);
+  if (!left.empty()) {
+    log.warn(dir.string() + ": the earlier run's folder, left in place: it holds " +
+             list_entries(left) + ", which the run did not write or could not be removed");
   }
 }
 

@@ -27,7 +27,8 @@ class OutputDirectory {
   // Checks `dir` without changing anything. Throws InputError for what granpipe must not
   // write into or replace: a symlink or a file; the root, working or home directory or
   // one holding them; one holding an input file; a directory granpipe did not make; one
-  // another run is writing into; an earlier run's output without `overwrite`.
+  // another run is writing into; an earlier run's output without `overwrite`, or one
+  // holding entries its run did not write.
   OutputDirectory(const std::filesystem::path& dir, bool overwrite,
                   const std::vector<InputFile>& inputs);
   ~OutputDirectory();
@@ -42,8 +43,9 @@ class OutputDirectory {
   // Makes work_path() this run's: of two runs claiming one directory, one wins and the
   // other gets an InputError. Marks it running; SIGINT and SIGTERM now mark it interrupted.
   void claim();
-  // Marks the run complete and, when it replaces an earlier run, swaps it into
-  // final_path() and removes the earlier one. Throws InputError when the swap fails.
+  // Lists what the run wrote (run_manifest.hpp), marks it complete and, when it replaces
+  // an earlier run, swaps it into final_path() and removes what the earlier one wrote.
+  // Throws InputError when the swap fails.
   void complete(Log& log);
   // Marks the run failed, with `error` in its run.log.
   void fail(const std::string& error) noexcept;
@@ -56,7 +58,7 @@ class OutputDirectory {
   void remove_earlier(const std::filesystem::path& dir, Log& log);
 
   std::filesystem::path final_, work_;
-  bool replacing_ = false, claimed_ = false;
+  bool replacing_ = false, claimed_ = false, manifest_written_ = false;
   RunMarker marker_;
   std::string earlier_run_id_;
   std::optional<DirectoryLock> earlier_lock_, own_lock_;

@@ -68,8 +68,21 @@ cp "$work/reprocess.json" "$work/earlier/reprocess.json"
 rm "$work/earlier/reprocess.json"
 unchanged "$work/earlier" "$work/earlier.sum" "a run reading from its output directory"
 
+# What a user adds to a run's folder stops --overwrite; what granpipe's report and scripts
+# add is replaced with the run (they list it in the run's .granpipe-manifest).
+grep -qx "report.html" "$work/earlier/.granpipe-manifest" || { echo "FAIL: report.html is not in the manifest"; exit 1; }
+echo "notes" >"$work/earlier/point_001/notes.txt"
+mkdir "$work/earlier/plots"
+"$expect" 2 "earlier: --overwrite removes only what granpipe wrote, and this run's folder also holds plots/, point_001/notes\.txt; move them out or remove the folder yourself; nothing was changed$" \
+  -- "$exe" "$pipeline" --quiet --out "$work/earlier" --overwrite
+rm -r "$work/earlier/point_001/notes.txt" "$work/earlier/plots"
+unchanged "$work/earlier" "$work/earlier.sum" "a refused --overwrite of a folder with a user's files"
+PYTHONPATH=$(dirname "$0")/../../scripts python3 -c "import sys, result_csv; result_csv.write_csv(sys.argv[1], '# pooled', [['a'], [1]])" \
+  "$work/earlier/pooled.table.csv"
+
 # --overwrite replaces granpipe's own output, all of it, and leaves nothing beside it.
 "$exe" "$pipeline" --quiet --set seed=99 --out "$work/earlier/" --overwrite
 grep -q '"seed": 99' "$work/earlier/pipeline.json" || { echo "FAIL: --overwrite did not replace the run"; exit 1; }
 [ -z "$(ls -d "$work"/earlier.granpipe-* 2>/dev/null)" ] || { echo "FAIL: a replaced run left a directory beside it"; exit 1; }
+[ ! -e "$work/earlier/pooled.table.csv" ] || { echo "FAIL: a script's table survived --overwrite"; exit 1; }
 echo "every unsafe --out refused, nothing of the user's changed"

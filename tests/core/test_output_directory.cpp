@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -39,11 +40,25 @@ class PickyAnalyzer : public Analyzer {
   int frames_ = 0;
 };
 
+// Where ScribblingAnalyzer writes a user's note while a run goes on.
+fs::path scribble_into;
+
+// A user writing notes.txt into a folder while a run goes on.
+class ScribblingAnalyzer : public Analyzer {
+ public:
+  explicit ScribblingAnalyzer(const PluginContext&) {}
+  void consume(const Frame&, FrameCache&) override {
+    std::ofstream(scribble_into / "notes.txt") << "mine";
+  }
+  void finish(Results&) override {}
+};
+
 Registry registry() {
   Registry r;
   load_plugins(r, plugin_search_path());
   r.add_source<DivergingSource>("diverging", "fails at once", Schema{});
   r.add_analyzer<PickyAnalyzer>("picky", "fails on frame 1", Schema{});
+  r.add_analyzer<ScribblingAnalyzer>("scribbling", "writes a note", Schema{});
   return r;
 }
 
@@ -230,5 +245,114 @@ TEST(OutputDirectory, RefusesToReplaceADirectoryHoldingAnInputFile) {
                 out.string() + ", got \"" + frames +
                 "\" inside it; granpipe never writes where it reads (choose another --out)");
   EXPECT_EQ(snapshot(out), before);
+  fs::remove_all(out);
+}
+
+// The folder of an earlier run with a user's note and a folder of the user's plots in it.
+fs::path run_with_users_files(const std::string& name) {
+  const fs::path out = fresh_dir(name);
+  EXPECT_EQ(run(kLattice, out), "");
+  std::ofstream(out / "notes.txt") << "mine";
+  fs::create_directories(out / "plots");
+  std::ofstream(out / "plots" / "a.svg") << "mine";
+  return out;
+}
+
+TEST(OutputDirectory, OverwriteRefusesARunFolderHoldingWhatTheRunDidNotWrite) {
+  const fs::path out = run_with_users_files("users_notes");
+  const auto before = snapshot(out);
+  EXPECT_EQ(run(kLattice, out, true),
+            out.string() +
+                ": --overwrite removes only what granpipe wrote, and this run's folder also holds "
+                "notes.txt, plots/; move them out or remove the folder yourself; nothing was "
+                "changed");
+  EXPECT_EQ(snapshot(out), before);
+  fs::remove(out / "notes.txt");
+  fs::remove_all(out / "plots");
+  EXPECT_EQ(run(kLattice, out, true), "");
+  fs::remove_all(out);
+}
+
+TEST(OutputDirectory, AManifestListsWhatTheRunWroteAndNothingElse) {
+  const fs::path out = fresh_dir("manifest");
+  ASSERT_EQ(run(kLattice, out), "");
+  std::istringstream listed(read(out / ".granpipe-manifest"));
+  std::string line;
+  std::getline(listed, line);
+  EXPECT_EQ(line, "# granpipe run manifest: what the run wrote here");
+  std::set<std::string> names;
+  while (std::getline(listed, line)) names.insert(line);
+  std::set<std::string> present;
+  for (const auto& e : fs::directory_iterator(out)) present.insert(e.path().filename().string());
+  EXPECT_EQ(names, present);
+  EXPECT_TRUE(names.count("frames.h5") && names.count("results.h5") && names.count("run.log"));
+  fs::remove_all(out);
+}
+
+TEST(OutputDirectory, AFailedRunListsWhatItWroteSoOverwriteReplacesIt) {
+  const fs::path out = fresh_dir("failed_manifest");
+  EXPECT_THROW(run(kDiverging, out), std::runtime_error);
+  EXPECT_NE(read(out / ".granpipe-manifest").find("\nrun.log\n"), std::string::npos);
+  std::ofstream(out / "notes.txt") << "mine";
+  EXPECT_NE(run(kLattice, out, true).find("also holds notes.txt;"), std::string::npos);
+  fs::remove(out / "notes.txt");
+  EXPECT_EQ(run(kLattice, out, true), "");
+  fs::remove_all(out);
+}
+
+// A run killed outright wrote no manifest: only the files every run writes before its
+// end may go.
+TEST(OutputDirectory, AKilledRunWithoutManifestLosesOnlyWhatEveryRunWritesFirst) {
+  const fs::path out = fresh_dir("killed");
+  ASSERT_EQ(run(kLattice, out), "");
+  fs::remove(out / ".granpipe-manifest");
+  const std::string refusal = run(kLattice, out, true);
+  EXPECT_NE(refusal.find("also holds "), std::string::npos) << refusal;
+  EXPECT_NE(refusal.find("results.h5"), std::string::npos) << refusal;
+  EXPECT_EQ(refusal.find("pipeline.json"), std::string::npos) << refusal;
+  EXPECT_EQ(refusal.find("run.log"), std::string::npos) << refusal;
+  for (const auto& e : fs::directory_iterator(out)) {
+    const std::string name = e.path().filename().string();
+    if (name != ".granpipe-run" && name != "pipeline.json" && name != "run.log")
+      fs::remove(e.path());
+  }
+  std::ofstream(out / "frames.partial.h5") << "frames so far";
+  std::ofstream(out / "report.html") << "<p>my own report</p>";
+  EXPECT_NE(run(kLattice, out, true).find("also holds report.html;"), std::string::npos);
+  std::ofstream(out / "report.html") << "<meta name=generator content=\"granpipe report\">";
+  EXPECT_EQ(run(kLattice, out, true), "");
+  fs::remove_all(out);
+}
+
+TEST(OutputDirectory, OverwriteNeverFollowsASymlinkInTheEarlierRun) {
+  const fs::path out = fresh_dir("inner_link");
+  const fs::path elsewhere = fresh_dir("inner_link_target");
+  fs::create_directories(elsewhere);
+  std::ofstream(elsewhere / "results.h5") << "mine";
+  ASSERT_EQ(run(kLattice, out), "");
+  fs::create_directory_symlink(elsewhere, out / "point_000");
+  EXPECT_NE(run(kLattice, out, true).find("also holds point_000;"), std::string::npos);
+  EXPECT_EQ(read(elsewhere / "results.h5"), "mine");
+  fs::remove(out / "point_000");
+  fs::remove_all(out);
+  fs::remove_all(elsewhere);
+}
+
+// A user who writes into the earlier run's folder while the new run goes on keeps the
+// note: the new run removes the earlier one's files and leaves the folder with the note.
+TEST(ReplacingRun, WhatAUserAddsDuringTheRunIsLeftInTheEarlierFolder) {
+  const fs::path out = fresh_dir("scribbled");
+  ASSERT_EQ(run(kLattice, out), "");
+  scribble_into = out;
+  const std::string scribbling = R"({"source": {"plugin": "lattice",
+    "params": {"lattice": "sc", "cells": [2, 2, 2], "frames": 2}},
+    "analyzers": [{"plugin": "scribbling"}]})";
+  ASSERT_EQ(run(scribbling, out, true), "");
+  EXPECT_TRUE(marked(out, "complete"));
+  EXPECT_FALSE(fs::exists(out / "notes.txt"));
+  const fs::path earlier = only_sibling(out);
+  ASSERT_NE(earlier, fs::path());
+  EXPECT_EQ(snapshot(earlier), (std::map<std::string, std::string>{{"notes.txt", "mine"}}));
+  fs::remove_all(earlier);
   fs::remove_all(out);
 }

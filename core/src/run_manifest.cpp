@@ -1,0 +1,134 @@
+#include "run_manifest.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <optional>
+#include <regex>
+#include <set>
+
+#include "granpipe/atomic_file.hpp"
+#include "granpipe/errors.hpp"
+#include "run_marker.hpp"
+
+namespace granpipe {
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kHeader = "# granpipe run manifest: what the run wrote here";
+// scripts/report.py puts it into every report it writes.
+constexpr const char* kReportMark = "<meta name=generator content=\"granpipe report\">";
+
+struct Entry {
+  std::string name;  // relative to the run's folder; a directory's ends in '/'
+  fs::path path;
+  bool directory = false;
+};
+
+// Every entry below `dir` by name, so each directory comes right before what it holds;
+// symlinks not followed.
+std::vector<Entry> entries_below(const fs::path& dir) {
+  std::vector<Entry> entries;
+  std::error_code ec;
+  for (fs::recursive_directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    std::error_code kind;
+    const bool folder = it->symlink_status(kind).type() == fs::file_type::directory;
+    const std::string name = it->path().lexically_relative(dir).generic_string();
+    entries.push_back({folder ? name + "/" : name, it->path(), folder});
+  }
+  if (ec) throw InputError(dir.string() + ": cannot read the run's folder: " + ec.message());
+  std::sort(entries.begin(), entries.end(),
+            [](const Entry& a, const Entry& b) { return a.name < b.name; });
+  return entries;
+}
+
+std::optional<std::set<std::string>> read_manifest(const fs::path& dir) {
+  const fs::path file = dir / kRunManifestName;
+  std::error_code ec;
+  if (!fs::is_regular_file(fs::symlink_status(file, ec))) return std::nullopt;
+  std::ifstream in(file);
+  std::string line;
+  if (!std::getline(in, line) || line != kHeader)
+    throw InputError(file.string() + ": expected granpipe's list of what the run wrote, got " +
+                     "another file; nothing was changed");
+  std::set<std::string> names;
+  while (std::getline(in, line)) names.insert(line);
+  return names;
+}
+
+bool is_report(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::string head(4096, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  return head.find(kReportMark) != std::string::npos;
+}
+
+// For a run without a manifest: what any run writes before it ends.
+bool written_before_the_end(const Entry& e) {
+  static const std::regex point("point_[0-9]+");
+  static const std::set<std::string> files{kRunMarkerName, "pipeline.json", "run.log",
+                                           "frames.partial.h5", "results.partial.h5"};
+  const fs::path name(e.directory ? e.name.substr(0, e.name.size() - 1) : e.name);
+  const std::string parent = name.parent_path().string();
+  if (e.directory) return parent.empty() && std::regex_match(name.string(), point);
+  if (!parent.empty() && !std::regex_match(parent, point)) return false;
+  if (files.count(name.filename().string())) return true;
+  return name == "report.html" && is_report(e.path);
+}
+
+class RunEntries {
+ public:
+  explicit RunEntries(const fs::path& dir) : manifest_(read_manifest(dir)) {}
+  bool written_by_the_run(const Entry& e) const {
+    return manifest_ ? manifest_->count(e.name) > 0 : written_before_the_end(e);
+  }
+
+ private:
+  std::optional<std::set<std::string>> manifest_;
+};
+
+}  // namespace
+
+void write_run_manifest(const fs::path& dir) {
+  std::string text = std::string(kHeader) + "\n" + kRunManifestName + "\n";
+  for (const Entry& e : entries_below(dir))
+    if (e.name.find('\n') == std::string::npos && e.name != kRunManifestName) text += e.name + "\n";
+  write_file_atomically(dir / kRunManifestName, text);
+}
+
+std::vector<std::string> foreign_entries(const fs::path& dir) {
+  const RunEntries run(dir);
+  std::vector<std::string> foreign;
+  for (const Entry& e : entries_below(dir)) {
+    // What a foreign folder holds is foreign with it, and not listed again.
+    const bool inside_listed =
+        !foreign.empty() && foreign.back().back() == '/' && e.name.rfind(foreign.back(), 0) == 0;
+    if (!inside_listed && !run.written_by_the_run(e)) foreign.push_back(e.name);
+  }
+  return foreign;
+}
+
+std::vector<std::string> remove_run_entries(const fs::path& dir) {
+  const RunEntries run(dir);
+  const std::vector<Entry> entries = entries_below(dir);
+  std::vector<std::string> left;
+  for (auto e = entries.rbegin(); e != entries.rend(); ++e) {
+    std::error_code ec;
+    if (!run.written_by_the_run(*e) || !fs::remove(e->path, ec)) left.push_back(e->name);
+  }
+  std::error_code ec;
+  if (left.empty()) fs::remove(dir, ec);
+  std::sort(left.begin(), left.end());
+  return left;
+}
+
+std::string list_entries(const std::vector<std::string>& entries, std::size_t shown) {
+  std::string text;
+  for (std::size_t k = 0; k < entries.size() && k < shown; ++k)
+    text += (k ? ", " : "") + entries[k];
+  if (entries.size() > shown) text += " and " + std::to_string(entries.size() - shown) + " more";
+  return text;
+}
+
+}  // namespace granpipe
