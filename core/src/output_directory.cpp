@@ -101,9 +101,15 @@ void OutputDirectory::check_earlier_run(bool overwrite) {
   }
   const std::vector<std::string> foreign = foreign_entries(final_);
   if (!foreign.empty()) {
+    std::error_code ec;
+    const std::string unlisted =
+        fs::exists(final_ / kRunManifestName, ec)
+            ? ""
+            : " (its run left no list of what it wrote: it was killed, or an older granpipe "
+              "made it)";
     throw InputError(shown +
                      ": --overwrite removes only what granpipe wrote, and this run's folder " +
-                     "also holds " + list_entries(foreign) +
+                     "also holds " + list_entries(foreign) + unlisted +
                      "; move them out or remove the folder yourself; nothing was changed");
   }
   check_removable(final_);

@@ -77,8 +77,22 @@ Eigen::Vector3d tangential_of(const Entry& e, const ContactColumns& c, const Eig
   return Eigen::Vector3d::Constant(kNaN);
 }
 
+// A contact is a pair that touches. Without `cutoff radius` LAMMPS' pair/local lists every
+// pair within the pair style's cutoff, touching or not, and a dump of another run lists
+// pairs anywhere: either would count pairs apart as contacts.
+void check_touching(const Entry& e, const std::string& what, double distance, double reach,
+                    double rounding) {
+  const double slack = rounding + 1e-9 * reach;
+  if (distance <= reach + slack) return;
+  throw InputError(e.at() + "expected " + what + " that touch, got a gap of " +
+                   format_number(distance - reach) + " between them (centres " +
+                   format_number(distance) + " apart, radii summing to " + format_number(reach) +
+                   ", positions known to " + format_number(rounding) +
+                   "): give only contacts (LAMMPS: compute pair/local ... cutoff radius)");
+}
+
 ContactRow pair_row(const Entry& e, const ContactColumns& c, const Frame& f,
-                    const std::string& frame_place) {
+                    const std::string& frame_place, double rounding) {
   ContactRow r;
   r.i = row_of(e, c.id1, f, frame_place);
   r.j = row_of(e, c.id2, f, frame_place);
@@ -88,6 +102,8 @@ ContactRow pair_row(const Entry& e, const ContactColumns& c, const Frame& f,
   }
   const Eigen::Vector3d d = separation(f, r.i, r.j);
   const double ri = f.radius()[r.i], rj = f.radius()[r.j];
+  check_touching(e, "atoms " + std::to_string(f.id()[r.i]) + " and " + std::to_string(f.id()[r.j]),
+                 d.norm(), ri + rj, rounding);
   r.overlap = c.overlap >= 0    ? e.value(c.overlap)
               : c.distance >= 0 ? ri + rj - e.value(c.distance)
                                 : ri + rj - d.norm();
@@ -172,7 +188,7 @@ void ContactDump::check_timesteps(const DumpIndex& atoms, const std::string& ato
   }
 }
 
-void ContactDump::read(const Frame& frame, const std::string& frame_place,
+void ContactDump::read(const Frame& frame, const std::string& frame_place, double rounding,
                        std::vector<ContactRow>& rows) {
   const auto found = by_timestep_.find(frame.step);
   if (found == by_timestep_.end()) {
@@ -197,7 +213,7 @@ void ContactDump::read(const Frame& frame, const std::string& frame_place,
                          quoted(trimmed(line)));
       }
       rows.push_back(wall_ ? wall_row(e, columns_, frame, frame_place)
-                           : pair_row(e, columns_, frame, frame_place));
+                           : pair_row(e, columns_, frame, frame_place, rounding));
       if (!wall_) pairs.add(e, frame, rows.back());
     }
   } catch (const SnapshotCut& cut) {

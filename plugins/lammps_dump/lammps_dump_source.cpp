@@ -86,21 +86,27 @@ LammpsDumpSource::LammpsDumpSource(const PluginContext& ctx)
   if (!pairs_) warn_if_coarse(ctx, *first_frame_);
 }
 
-void LammpsDumpSource::warn_if_coarse(const PluginContext& ctx, const Frame& first) const {
+// Two centres each off by up to the rounding of a position: their distance by up to twice
+// that.
+double LammpsDumpSource::distance_rounding(const PositionPrecision& precision,
+                                           const Frame& f) const {
   std::array<double, 3> scale{1.0, 1.0, 1.0};
   for (int a = 0; a < 3; ++a) {
     const bool scaled = columns_.coordinate[a] == Coordinate::Scaled ||
                         columns_.coordinate[a] == Coordinate::ScaledUnwrapped;
-    if (scaled) scale[a] = first.container.length(a);
+    if (scaled) scale[a] = f.container.length(a);
   }
-  const std::array<double, 3> r = precision_.rounding(scale);
-  const double centre = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
+  const std::array<double, 3> r = precision.rounding(scale);
+  return 2.0 * std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
+}
+
+void LammpsDumpSource::warn_if_coarse(const PluginContext& ctx, const Frame& first) const {
+  const double rounding = distance_rounding(precision_, first);
   const double contact = 2.0 * first.radius().minCoeff();
-  // Two centres each off by up to `centre`: their distance by up to twice that.
-  const double relative = 2.0 * centre / contact;
+  const double relative = rounding / contact;
   if (relative <= kDefaultContactTolerance) return;
   ctx.log.warn(file_ + ": positions printed to " + std::to_string(precision_.significant()) +
-               " significant digits: a centre distance is known to " + format_number(2.0 * centre) +
+               " significant digits: a centre distance is known to " + format_number(rounding) +
                ", " + format_number(relative) + " of the smallest contact distance (" +
                format_number(contact) + "), coarser than the contact_tolerance " +
                format_number(kDefaultContactTolerance) +
@@ -108,12 +114,13 @@ void LammpsDumpSource::warn_if_coarse(const PluginContext& ctx, const Frame& fir
                "(pair_file) or write positions with dump_modify format float %.17g");
 }
 
-void LammpsDumpSource::add_contacts(Frame& f) {
+void LammpsDumpSource::add_contacts(Frame& f, const PositionPrecision& precision) {
   if (!pairs_ && !walls_) return;
   const std::string place = "timestep " + std::to_string(f.step) + " of " + file_;
+  const double rounding = distance_rounding(precision, f);
   std::vector<ContactRow> rows;
-  if (pairs_) pairs_->read(f, place, rows);
-  if (walls_) walls_->read(f, place, rows);
+  if (pairs_) pairs_->read(f, place, rounding, rows);
+  if (walls_) walls_->read(f, place, rounding, rows);
   fill_contact_table(rows, tangential(), f);
 }
 
@@ -206,7 +213,7 @@ Frame LammpsDumpSource::frame_of(const SnapshotHeader& h) {
     throw InputError(h.place.at(atoms.lines[static_cast<std::size_t>(out->particle)]) +
                      out->message);
   }
-  add_contacts(f);
+  add_contacts(f, atoms.precision);
   precision_ = atoms.precision;
   f.check(h.place.where(h.place.first_line));
   return std::move(f);

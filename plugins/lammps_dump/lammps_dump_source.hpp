@@ -42,8 +42,11 @@ class LammpsDumpSource : public Source {
   // Without a pair dump, warns when the first frame's positions are printed too coarsely
   // for contacts found from them.
   void warn_if_coarse(const PluginContext& ctx, const Frame& first) const;
-  // The contacts of the frame's timestep from the pair and wall dumps, when given.
-  void add_contacts(Frame& f);
+  // The contacts of the frame's timestep from the pair and wall dumps, when given;
+  // `precision` is that of the frame's positions.
+  void add_contacts(Frame& f, const PositionPrecision& precision);
+  // How far off a centre distance of `f` may be, its positions being printed so.
+  double distance_rounding(const PositionPrecision& precision, const Frame& f) const;
   // Whether the contact dumps give the tangential force (every one of them must).
   bool tangential() const;
   Frame read_snapshot(long index);

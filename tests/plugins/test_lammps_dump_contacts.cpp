@@ -203,6 +203,32 @@ TEST_F(LammpsDumpContacts, APairListedTwiceIsRefused) {
             "again (first on line 11)");
 }
 
+// A pair that does not touch was read as a contact (z 4.53 for 4.5 from a pair 8 radii
+// apart, exit 0): LAMMPS lists every pair within its cutoff without `cutoff radius`, and a
+// dump of another run lists pairs anywhere.
+TEST_F(LammpsDumpContacts, APairThatDoesNotTouchIsRefused) {
+  EXPECT_EQ(refusal(with_pairs(pair_snapshot(0, "1 3 0 -1.5 0 0 0.001\n", 1) +
+                               pair_snapshot(100, "", 0))),
+            "pairs.dump: timestep 0, line 10: expected atoms 1 and 3 that touch, got a gap of "
+            "3.272 between them (centres 4.272 apart, radii summing to 1, positions known to "
+            "1.73205): give only contacts (LAMMPS: compute pair/local ... cutoff radius)");
+  // Printed to 17 digits, a gap of 1e-6 radii is seen; touching to rounding is a contact.
+  auto two_atoms = [&](const std::string& x2) {
+    const std::string atoms =
+        "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n2\nITEM: BOX BOUNDS pp pp ff\n0 10\n0 10\n0 "
+        "10\nITEM: ATOMS id type x y z radius\n1 1 1.0000000000000000 5 2 0.5\n2 1 " +
+        x2 + " 5 2 0.5\n";
+    return nlohmann::json{
+        {"file", write(atoms, "atoms.dump")},
+        {"pair_file", write(pair_snapshot(0, "1 2 0 -1.5 0 0 0\n", 1), "pairs.dump")},
+        {"pair_columns", "id force_normal delta"}};
+  };
+  EXPECT_EQ(
+      refusal(two_atoms("2.0000005000000000")).substr(0, 87),
+      "pairs.dump: timestep 0, line 10: expected atoms 1 and 2 that touch, got a gap of 5e-07 ");
+  EXPECT_EQ(frames(two_atoms("2.0000000000000004"))[0].contacts->rows(), 1);
+}
+
 TEST_F(LammpsDumpContacts, PositionsPrintedWithPercentGAreWarnedAbout) {
   const std::string header =
       "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n2\nITEM: BOX BOUNDS pp pp ff\n0 10\n0 10\n0 "
