@@ -12,7 +12,8 @@ Schema schema() {
   Schema s;
   declare_stereology_settings(s);
   s.real("fit_from", 0.0, "first tap of the fits of Eqs. (3) and (4)").min(0.0).unit("taps");
-  s.real("fit_to", -1.0, "last tap of the fits; negative: the last frame's").unit("taps");
+  s.real("fit_to", -1.0, "last tap of the fits; negative or past it: the last frame's")
+      .unit("taps");
   s.real("steady_from", -1.0,
          "the steady state (mean, sigma, power spectrum) starts at this tap; negative: half "
          "the last frame's")

@@ -8,6 +8,8 @@
 
 #include "ageing.hpp"
 #include "compaction_laws.hpp"
+#include "granpipe/format_number.hpp"
+#include "granpipe/log.hpp"
 #include "law_fit.hpp"
 #include "power_spectrum.hpp"
 #include "steady_state.hpp"
@@ -203,11 +205,26 @@ void Series::add(const FramePoint& p) {
   phi_c.push_back(p.phi_c);
 }
 
+// A range asked past the run's last tap ends there: the tap reported as its end is one
+// the fits saw. (The last tap is known only at the end, when refusing would lose the run.)
+double range_end(double asked, double last, const char* name, Log& log) {
+  if (asked < 0.0) return last;
+  if (asked <= last) return asked;
+  log.warn(std::string("compaction: ") + name + ": " + format_number(asked) +
+           " taps is past the last frame's tap, " + format_number(last) + "; it ends there");
+  return last;
+}
+
 void report_compaction(const Series& series, const ReportSettings& settings, Results& results,
                        Log& log) {
   const double last = series.tap.back();
-  report_fits(series, settings.fit_from, settings.fit_to < 0.0 ? last : settings.fit_to, results);
+  report_fits(series, settings.fit_from, range_end(settings.fit_to, last, "fit_to", log), results);
   const double steady_from = settings.steady_from < 0.0 ? 0.5 * last : settings.steady_from;
+  if (steady_from > last) {
+    log.warn("compaction: steady_from: " + format_number(steady_from) +
+             " taps is past the last frame's tap, " + format_number(last) +
+             "; the steady state and its spectrum are undefined (NaN)");
+  }
   results.add_scalar("steady_from", steady_from, std::nan(""), "taps",
                      "first tap of the steady state");
   const Series ss = within(series, steady_from, last);

@@ -273,6 +273,29 @@ TEST(Compaction, AShortRunReportsUndefinedFitsNotZeros) {
   EXPECT_DOUBLE_EQ(r.scalar("z_mean_sigma").value, 0.0);
 }
 
+// fit_to past the last tap was reported as the fits' end (1000 for a run of 20 taps, exit 0).
+TEST(Compaction, ARangePastTheLastTapEndsThereAndSaysSo) {
+  const auto ctx = test::make_context(
+      "compaction", {{"fit_from", 1.0}, {"fit_to", 1000.0}, {"steady_from", 50.0}});
+  ctx->keep_log();
+  CompactionAnalyzer analyzer(*ctx);
+  FrameCache cache;
+  for (int tap : {0, 1, 2, 3}) analyzer.consume(cubic_stack(tap), cache);
+  Results r;
+  analyzer.finish(r);
+  EXPECT_EQ(r.scalar("fit_to").value, 3.0);
+  EXPECT_EQ(r.tables().at("fitted_laws").rows(), 3u);
+  EXPECT_TRUE(std::isnan(r.scalar("z_mean_ss").value));
+  const auto log = ctx->logged_lines();
+  ASSERT_GE(log.size(), 2u);
+  EXPECT_EQ(
+      log[0],
+      "warning: compaction: fit_to: 1000 taps is past the last frame's tap, 3; it ends there");
+  EXPECT_EQ(log[1],
+            "warning: compaction: steady_from: 50 taps is past the last frame's tap, 3; the steady "
+            "state and its spectrum are undefined (NaN)");
+}
+
 // A few taps of the 3D source: <Z> is its own mean_height observable in radii.
 TEST(Compaction, OnTheTappingSourceMeanHeightIsTheSourcesObservable) {
   const auto ctx = test::make_context("spheres3d_tap", {{"N", 64},
