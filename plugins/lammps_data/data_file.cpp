@@ -3,16 +3,17 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <map>
 #include <optional>
 #include <sstream>
+#include <string_view>
 #include <vector>
 
 #include "granpipe/binary_signature.hpp"
 #include "granpipe/errors.hpp"
+#include "granpipe/text_words.hpp"
 
 namespace granpipe::lammps_data {
 
@@ -31,6 +32,7 @@ class Lines {
   explicit Lines(std::istream& in) : in_(in) {}
   bool next(std::string& line) {
     if (!std::getline(in_, line)) return false;
+    if (!line.empty() && line.back() == '\r') line.pop_back();  // written on Windows
     ++number_;
     return true;
   }
@@ -41,26 +43,13 @@ class Lines {
   long number_ = 0;
 };
 
-std::string before_comment(const std::string& line) { return line.substr(0, line.find('#')); }
-
-std::vector<std::string> words(const std::string& text) {
-  std::istringstream s(text);
-  std::vector<std::string> out;
-  for (std::string w; s >> w;) out.push_back(w);
-  return out;
-}
+std::string_view before_comment(std::string_view line) { return line.substr(0, line.find('#')); }
 
 // A section starts with its name ("Atoms", "Velocities", "Masses"): a word, where header
 // and data lines start with numbers.
 bool is_section(const std::string& line) {
   const auto first = line.find_first_not_of(" \t\r");
   return first != std::string::npos && std::isalpha(static_cast<unsigned char>(line[first]));
-}
-
-std::string quoted(const std::string& line) {
-  std::string s = line.substr(0, 60);
-  if (!s.empty() && s.back() == '\r') s.pop_back();
-  return "\"" + s + "\"";
 }
 
 struct AtomsSection {
@@ -74,16 +63,9 @@ struct AtomsSection {
 constexpr std::array<std::array<const char*, 2>, 3> kBoxWords{
     {{"xlo", "xhi"}, {"ylo", "yhi"}, {"zlo", "zhi"}}};
 
-std::optional<double> real_number(const std::string& word) {
-  double value = 0.0;
-  const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
-  if (error != std::errc() || end != word.data() + word.size()) return std::nullopt;
-  return value;
-}
-
 // A header line "lo hi xlo xhi" (or y, z) sets the box along its axis; a triclinic box's
 // "xy xz yz" line is refused (granpipe's containers have right angles, as lammps_dump says).
-void read_box_line(const std::vector<std::string>& w, const std::string& line, long number,
+void read_box_line(const std::vector<std::string_view>& w, const std::string& line, long number,
                    const std::string& where, AtomsSection& a) {
   const std::string at = where + ": line " + std::to_string(number);
   if (w.size() == 6 && w[3] == "xy") {
@@ -138,12 +120,13 @@ AtomsSection find_atoms_section(Lines& lines, const std::string& where) {
   }
   bool header = true;
   while (lines.next(line)) {
-    const std::vector<std::string> w = words(before_comment(line));
+    const std::vector<std::string_view> w = words(before_comment(line));
     header = header && !is_section(line);
     if (header) read_box_line(w, line, lines.number(), where, a);
     if (header && w.size() == 2 && w[1] == "atoms") {
-      std::istringstream n(w[0]);
-      if (!(n >> a.count) || !n.eof() || a.count < 0) {
+      const auto count = whole_number(w[0]);
+      a.count = count ? *count : -1;
+      if (a.count < 0) {
         throw InputError(where + ": line " + std::to_string(lines.number()) +
                          ": expected \"N atoms\" with N a whole number >= 0, got " + quoted(line));
       }
@@ -152,8 +135,9 @@ AtomsSection find_atoms_section(Lines& lines, const std::string& where) {
     if (w.empty() || w[0] != "Atoms") continue;
     a.section_line = lines.number();
     const std::size_t hash = line.find('#');
-    const std::vector<std::string> style =
-        hash == std::string::npos ? std::vector<std::string>{} : words(line.substr(hash + 1));
+    const std::vector<std::string_view> style =
+        hash == std::string::npos ? std::vector<std::string_view>{}
+                                  : words(std::string_view(line).substr(hash + 1));
     const std::string at = where + ": line " + std::to_string(lines.number());
     if (style.empty()) {
       throw InputError(at + ": expected the Atoms section to name its atom style (\"Atoms # " +
@@ -162,7 +146,7 @@ AtomsSection find_atoms_section(Lines& lines, const std::string& where) {
     }
     if (style[0] != "sphere") {
       throw InputError(at + ": expected the Atoms section of atom_style sphere, got atom_style \"" +
-                       style[0] + "\"");
+                       std::string(style[0]) + "\"");
     }
     break;
   }
@@ -174,8 +158,8 @@ AtomsSection find_atoms_section(Lines& lines, const std::string& where) {
 }
 
 Atom parse_atom(const std::string& line, long number, const std::string& where) {
-  const std::vector<std::string> w = words(before_comment(line));
-  std::istringstream s(before_comment(line));
+  const std::vector<std::string_view> w = words(before_comment(line));
+  std::istringstream s{std::string(before_comment(line))};
   Atom a;
   double density = 0.0;
   const bool columns = w.size() == 7 || w.size() == 10;  // image flags or none

@@ -7,9 +7,9 @@
 #include <map>
 #include <utility>
 
-#include "dump_text.hpp"
 #include "granpipe/errors.hpp"
 #include "granpipe/format_number.hpp"
+#include "granpipe/text_words.hpp"
 #include "snapshot_header.hpp"
 #include "wall_partner.hpp"
 

@@ -1,7 +1,7 @@
 #include "dump_index.hpp"
 
-#include "dump_text.hpp"
 #include "granpipe/errors.hpp"
+#include "granpipe/text_words.hpp"
 #include "not_a_dump.hpp"
 #include "snapshot_header.hpp"
 

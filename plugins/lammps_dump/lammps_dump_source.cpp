@@ -5,9 +5,9 @@
 #include <memory>
 #include <vector>
 
-#include "dump_text.hpp"
 #include "granpipe/contacts_by_distance.hpp"
 #include "granpipe/format_number.hpp"
+#include "granpipe/text_words.hpp"
 #include "snapshot_atoms.hpp"
 
 namespace granpipe::lammps_dump {

@@ -1,7 +1,7 @@
 #include "not_a_dump.hpp"
 
-#include "dump_text.hpp"
 #include "granpipe/binary_signature.hpp"
+#include "granpipe/text_words.hpp"
 
 namespace granpipe::lammps_dump {
 

@@ -6,8 +6,8 @@
 #include <limits>
 #include <numeric>
 
-#include "dump_text.hpp"
 #include "granpipe/errors.hpp"
+#include "granpipe/text_words.hpp"
 
 namespace granpipe::lammps_dump {
 

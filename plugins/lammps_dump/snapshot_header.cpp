@@ -3,8 +3,8 @@
 #include <cmath>
 #include <string_view>
 
-#include "dump_text.hpp"
 #include "granpipe/errors.hpp"
+#include "granpipe/text_words.hpp"
 
 namespace granpipe::lammps_dump {
 

@@ -68,6 +68,19 @@ Velocities
   EXPECT_EQ(f.container.boundary[0][0], Boundary::Open);
 }
 
+// A file saved on Windows ends its lines with "\r\n": read as the same file, not refused for
+// "atoms\r" or "sphere\r".
+TEST(LammpsData, WindowsLineEndsReadAsTheSameFile) {
+  std::string text = two_spheres("0 0 1", "0 0 3"), crlf;
+  for (char c : text) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+  std::istringstream unix_in(text), windows_in(crlf);
+  const Frame unix_frame = lammps_data::read_atoms(unix_in, "x.data");
+  const Frame windows_frame = lammps_data::read_atoms(windows_in, "x.data");
+  EXPECT_EQ(windows_frame.size(), 2);
+  EXPECT_TRUE((windows_frame.position() == unix_frame.position()).all());
+  EXPECT_EQ(windows_frame.container.hi, unix_frame.container.hi);
+}
+
 // The box was not read: the source invented x and y sides about the atoms (walls at +-4 for
 // a simple cubic block in 0..4, packing fraction 0.13 for 0.52, exit 0). A box line missing,
 // malformed or tilted is refused.

@@ -1,9 +1,9 @@
-#include "dump_text.hpp"
+#include "granpipe/text_words.hpp"
 
 #include <cctype>
 #include <charconv>
 
-namespace granpipe::lammps_dump {
+namespace granpipe {
 
 namespace {
 
@@ -65,4 +65,4 @@ std::string quoted(std::string_view line) {
   return "\"" + shown + (line.size() > kQuotedLength ? "...\"" : "\"");
 }
 
-}  // namespace granpipe::lammps_dump
+}  // namespace granpipe

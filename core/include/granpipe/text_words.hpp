@@ -1,13 +1,13 @@
 #pragma once
-// The pieces of a dump's text: words, numbers as LAMMPS writes them, lines quoted in
-// messages.
+// The pieces of a line of text as LAMMPS writes its dumps and data files: words, numbers,
+// the line quoted in a message.
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
-namespace granpipe::lammps_dump {
+namespace granpipe {
 
 // The words of a line, split at spaces and tabs (trailing ones included).
 std::vector<std::string_view> words(std::string_view line);
@@ -24,4 +24,4 @@ std::optional<double> real_number(std::string_view word);
 // printable characters as '?').
 std::string quoted(std::string_view line);
 
-}  // namespace granpipe::lammps_dump
+}  // namespace granpipe
