@@ -96,9 +96,15 @@ GlobalFractions global_fractions(const Frame& frame, const StereologySettings& s
   g.height_c = quantile_height(frame, s.fraction);
   const double layer = s.perturbed_top * r, h = g.height_c;
   if (h > layer) {
-    g.phi_c = (factor * fraction_between(frame, cross, 0.0, layer) * layer +
-               fraction_between(frame, cross, layer, h) * (h - layer)) /
-              h;
+    const double corrected = factor * fraction_between(frame, cross, 0.0, layer);
+    // A layer more than full is no packing (a factor of 1e300 gave phi_c 1.9e298, exit 0).
+    if (corrected > 1.0) {
+      throw InputError(
+          "stereology: perturbed_factor: expected a correction that leaves the "
+          "bottom layer's fraction at most 1, got " +
+          format_number(factor) + ", which makes it " + format_number(corrected));
+    }
+    g.phi_c = (corrected * layer + fraction_between(frame, cross, layer, h) * (h - layer)) / h;
   }
   return g;
 }

@@ -72,8 +72,7 @@ TapStats Redeposition::tap(std::vector<Eigen::Vector3d>& centres, double epsilon
   for (auto& c : centres) c.z() *= 1.0 + epsilon;
   rebuild(centres);
   next_ = pick(centres, rng);
-  const std::int64_t per_check =
-      options_.check_moves > 0 ? options_.check_moves : static_cast<std::int64_t>(centres.size());
+  const std::int64_t per_check = trials_per_check(centres.size());
   double height_sum = 0.0;
   for (const auto& c : centres) height_sum += c.z();
   TapStats stats;
@@ -81,10 +80,23 @@ TapStats Redeposition::tap(std::vector<Eigen::Vector3d>& centres, double epsilon
     const double before = height_sum;
     for (std::int64_t k = 0; k < per_check; ++k, ++stats.trials)
       stats.accepted += trial(centres, rng, height_sum);
-    if (std::abs(height_sum - before) < options_.eta * std::abs(before)) return stats;
+    if (std::abs(height_sum - before) < options_.eta * std::abs(before)) {
+      // A dilated packing in which no sphere moved stayed lifted: it did not settle.
+      stats.converged = stats.accepted > 0 || epsilon == 0.0;
+      return stats;
+    }
   }
   stats.converged = false;
   return stats;
+}
+
+std::int64_t Redeposition::trials_per_check(std::size_t spheres) const {
+  return options_.check_moves > 0 ? options_.check_moves : static_cast<std::int64_t>(spheres);
+}
+
+double Redeposition::largest_height_change(std::size_t spheres) const {
+  return static_cast<double>(trials_per_check(spheres)) * options_.move.d_max() /
+         static_cast<double>(spheres);
 }
 
 }  // namespace granpipe::spheres3d_tap

@@ -3,7 +3,8 @@
 // redeposition by Monte Carlo: a random sphere tries a move drawn by TrialMove, rejected
 // when it would overlap a sphere, the bottom or a wall. Every `check_moves` trials the
 // mean centre height <Z> is compared with the previous check; the redeposition stops
-// when its relative change falls below eta (or at max_checks, which is reported).
+// when its relative change falls below eta (or at max_checks, which is reported, as is a
+// dilated packing in which no sphere moved).
 #include <Eigen/Core>
 #include <cstdint>
 #include <vector>
@@ -25,7 +26,7 @@ struct RedepositionOptions {
 
 struct TapStats {
   std::int64_t trials = 0, accepted = 0;
-  bool converged = true;  // false when max_checks ended it
+  bool converged = true;  // false when max_checks ended it or no lifted sphere moved
 };
 
 class Redeposition {
@@ -36,6 +37,10 @@ class Redeposition {
   TapStats tap(std::vector<Eigen::Vector3d>& centres, double epsilon, FastRandomStream& rng);
   // Trials only, no dilation and no stopping rule: n trial moves.
   TapStats shake(std::vector<Eigen::Vector3d>& centres, std::int64_t n, FastRandomStream& rng);
+  // The most <Z> of `spheres` spheres can change between two checks: each trial moves one
+  // sphere by d_max at most. When it is below eta <Z>, every tap stops at its first check
+  // whether the packing settled or not.
+  double largest_height_change(std::size_t spheres) const;
   // Neighbour lists renewed one sphere at a time since the object was made.
   std::size_t list_renewals() const { return lists_.renewals(); }
 
@@ -47,6 +52,7 @@ class Redeposition {
   bool trial(std::vector<Eigen::Vector3d>& centres, FastRandomStream& rng, double& height_sum);
   // The bottom and the walls (centre planes) leave room for a sphere at x.
   bool inside(const Eigen::Vector3d& x) const;
+  std::int64_t trials_per_check(std::size_t spheres) const;
 
   TapBox box_;
   RedepositionOptions options_;

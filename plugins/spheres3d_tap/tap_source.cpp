@@ -9,6 +9,7 @@
 
 #include "granpipe/container.hpp"
 #include "granpipe/errors.hpp"
+#include "granpipe/format_number.hpp"
 #include "granpipe/start_frame.hpp"
 #include "saved_packing.hpp"
 
@@ -55,9 +56,12 @@ RedepositionOptions redeposition_options(const Params& p) {
 TapBox tap_box(const PluginContext& ctx) {
   const Params& p = ctx.params;
   const TapBox box{p.real("side") * p.real("radius"), p.real("radius"), p.choice<Sides>("sides")};
-  if (box.side < 2.0 * box.radius) {
+  // Narrower, the box holds a column: a sphere may touch two images of one sphere, or be
+  // wedged between a sphere and the far wall, which the deposition's roll geometry does not
+  // model (it left overlapping spheres, or one through a wall, exit 0).
+  if (box.side < 4.0 * box.radius) {
     std::ostringstream s;
-    s << ctx.param("side") << ": expected a box at least one diameter (2 R) wide, got "
+    s << ctx.param("side") << ": expected a box at least two diameters (4 R) wide, got "
       << p.real("side") << " R";
     throw InputError(s.str());
   }
@@ -176,6 +180,8 @@ TapSource::TapSource(const PluginContext& ctx)
       continue_count_(ctx.params.boolean("continue_count")),
       seeds_(replica_seeds(ctx)),
       n_(ctx.params.integer("N")),
+      eta_(ctx.params.real("eta")),
+      eta_param_(ctx.param("eta")),
       per_tap_(ctx.stream_table(
           "per_tap", Table({"tap", "epsilon", "leg", "mean_height", "mc_trials", "mc_acceptance"},
                            "every tap: its epsilon and ramp leg, <Z> after "
@@ -215,6 +221,20 @@ void TapSource::start() {
   Deposition deposition(box_);
   deposition.drop_random(static_cast<int>(n_), deposition_rng_);
   centres_ = deposition.centres();
+}
+
+// A tap that stops before its packing could move would lift the packing by 1 + epsilon
+// and leave it there, counted as settled (d_max 1e-6 or eta 1 did, exit 0). Heights only
+// grow on dilation, so what holds for the start holds for every tap.
+void TapSource::check_stopping_rule() const {
+  const double change = redeposition_.largest_height_change(centres_.size());
+  const double threshold = eta_ * mean_height(centres_);
+  if (change > threshold) return;
+  throw InputError(eta_param_ + ": expected a stopping rule a settling packing can pass, got " +
+                   "one every tap meets at its first check: between two checks <Z> moves by " +
+                   format_number(change / box_.radius) + " R at most (check_moves trials of " +
+                   "d_max), not above eta <Z> = " + format_number(threshold / box_.radius) +
+                   " R; lower eta, or raise d_max or check_moves");
 }
 
 // The tap to count on from: a frame this source saved, whose tap is its step, before the
@@ -280,6 +300,7 @@ bool TapSource::next(Frame& frame) {
     if (starting) {
       tap_ = 0;
       start();
+      check_stopping_rule();
       started_ = true;
     } else {
       ++tap_;
@@ -300,7 +321,8 @@ bool TapSource::next(Frame& frame) {
 void TapSource::finish(Results& results) {
   results.add_table("per_tap", per_tap_.table());
   results.add_scalar("unconverged_taps", static_cast<double>(unconverged_), std::nan(""), "",
-                     "taps whose redeposition reached max_checks before <Z> settled to eta");
+                     "taps whose redeposition reached max_checks before <Z> settled to eta, or "
+                     "moved no sphere of the dilated packing");
   results.add_scalar("seconds", seconds_, std::nan(""), "s", "wall time of deposition and taps");
   results.add_scalar("mc_trials", trials_, std::nan(""), "", "Monte Carlo trial moves of all taps");
   results.add_scalar("final_mean_height", mean_height(centres_), std::nan(""), "length",

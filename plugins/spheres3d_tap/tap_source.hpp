@@ -32,6 +32,7 @@ class TapSource : public Source {
  private:
   void start();
   void check_saved_tap(const SavedPacking& saved) const;
+  void check_stopping_rule() const;
   void to_frame(Frame& frame, const TapStats& stats, const EpsilonAt& e) const;
   void record(const TapStats& stats, const EpsilonAt& e);
 
@@ -48,6 +49,8 @@ class TapSource : public Source {
   // `granpipe validate` refuses a bad one), taken as the start at the first frame.
   std::optional<SavedPacking> saved_;
   std::int64_t n_ = 0, tap_ = 0, unconverged_ = 0;
+  double eta_ = 0.0;
+  std::string eta_param_;  // "source.params.eta", for messages
   std::vector<Eigen::Vector3d> centres_;
   StreamedTable per_tap_;
   double seconds_ = 0.0, trials_ = 0.0;

@@ -383,6 +383,20 @@ TEST(Redeposition, TapsLeaveNoOverlapAndNoSphereOutsideTheBox) {
   }
 }
 
+// A tap in which no sphere could move met the stopping rule (no change of <Z>) and was
+// counted settled, lifted by 1 + epsilon: a sphere held between walls one diameter apart
+// can only move straight down, which no drawn move is.
+TEST(Redeposition, ATapInWhichNoSphereMovedIsNotSettled) {
+  const TapBox b = box(2.0 * kR, Sides::Walls);
+  std::vector<Eigen::Vector3d> c{{kR, kR, 3.0 * kR}};
+  Redeposition redeposition(b, RedepositionOptions{TrialMove{}, 1e-6, 0, 10});
+  FastRandomStream rng(45);
+  const TapStats stats = redeposition.tap(c, 0.1, rng);
+  EXPECT_EQ(stats.accepted, 0);
+  EXPECT_FALSE(stats.converged);
+  EXPECT_DOUBLE_EQ(c[0].z(), 3.3 * kR);
+}
+
 TEST(Redeposition, TrialMovesNeverRaiseTheMeanHeight) {
   // Eq. (1) is truncated at theta = pi/2: no trial move goes up, so without a dilation
   // <Z> can only fall, and a dilated packing ends below its dilated height.

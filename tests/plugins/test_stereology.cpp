@@ -117,6 +117,18 @@ TEST(StereologyAnalyzer, IdenticalFramesChangeNothingAndTheTapIsRecorded) {
   EXPECT_EQ(v.column("phi_first")[3], v.column("phi_last")[3]);
 }
 
+// perturbed_factor had no bound: 1e300 gave phi_c 1.9e298, exit 0. The bottom layer of the
+// cubic crystal fills pi/6 of its slab: a factor of 1.9 leaves it below 1, 2 does not.
+TEST(StereologyAnalyzer, ACorrectionThatOverfillsTheBottomLayerIsRefused) {
+  StereologySettings s;
+  s.perturbed_factor = 1.9;
+  EXPECT_LT(global_fractions(cubic_layers(8, 10), s).phi_c, 1.0);
+  s.perturbed_factor = 2.0;
+  EXPECT_EQ(granpipe::test::input_error_of([&] { global_fractions(cubic_layers(8, 10), s); }),
+            "stereology: perturbed_factor: expected a correction that leaves the bottom layer's "
+            "fraction at most 1, got 2, which makes it 1.0472");
+}
+
 TEST(StereologyAnalyzer, ACylinderIsRefused) {
   const auto ctx = granpipe::test::make_context(schema());
   StereologyAnalyzer a(*ctx);
