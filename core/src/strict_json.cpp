@@ -97,7 +97,26 @@ class StrictReader {
   std::vector<Level> levels_;
 };
 
+// "origin:line:column" of the byte at `offset` (0-based) of `text`.
+std::string place_of(const std::string& text, std::size_t offset, const std::string& origin) {
+  std::size_t line = 1, col = 1;
+  for (std::size_t k = 0; k < offset && k < text.size(); ++k) {
+    if (text[k] == '\n') {
+      ++line;
+      col = 1;
+    } else {
+      ++col;
+    }
+  }
+  return origin + ":" + std::to_string(line) + ":" + std::to_string(col);
+}
+
 json parse_or_throw(const std::string& text, const std::string& origin, std::size_t outer_depth) {
+  // The parser takes a NUL byte for the end of the input: what follows one was ignored.
+  if (const std::size_t nul = text.find('\0'); nul != std::string::npos) {
+    throw InputError(place_of(text, nul, origin) +
+                     ": malformed JSON: expected text, got a NUL byte (is it a binary file?)");
+  }
   StrictReader reader(origin, outer_depth);
   try {
     return json::parse(
@@ -157,19 +176,11 @@ json parse_strict_json(const std::string& text, const std::string& origin,
   try {
     return parse_or_throw(text, origin, outer_depth);
   } catch (const json::parse_error& e) {
-    std::size_t line = 1, col = 1;
-    for (std::size_t k = 0; k + 1 < e.byte && k < text.size(); ++k) {
-      if (text[k] == '\n') {
-        ++line;
-        col = 1;
-      } else {
-        ++col;
-      }
-    }
     std::string reason = e.what();
     const auto colon = reason.find(": ", reason.find("parse error"));
     if (colon != std::string::npos) reason = reason.substr(colon + 2);
-    throw InputError(origin + ":" + std::to_string(line) + ":" + std::to_string(col) +
+    // e.byte counts from 1.
+    throw InputError(place_of(text, e.byte > 0 ? e.byte - 1 : 0, origin) +
                      ": malformed JSON: " + reason);
   }
 }

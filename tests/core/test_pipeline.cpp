@@ -123,6 +123,14 @@ TEST(PipelineErrors, MalformedJsonNamesLineAndColumn) {
   EXPECT_EQ(e.rfind("p.json:3:11: malformed JSON:", 0), 0u) << e;
 }
 
+// The parser took a NUL byte for the end of the file: a pipeline with one after its first
+// object ran without what followed (another seed, more analyzers), exit 0.
+TEST(PipelineErrors, ANulByteIsRefusedWhereItIs) {
+  using namespace std::string_literals;
+  EXPECT_EQ(error_of("{\"seed\": 3}\0, \"seed\": 99}"s),
+            "p.json:1:12: malformed JSON: expected text, got a NUL byte (is it a binary file?)");
+}
+
 // 64 levels are read; the 65th is refused by a parser that never recurses, so that a
 // file nested a hundred thousand levels deep cannot overflow the stack.
 TEST(PipelineErrors, NestingDeeperThan64LevelsIsRefused) {
