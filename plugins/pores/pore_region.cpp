@@ -64,6 +64,13 @@ void shrink_to_cylinder(const Container& c, double margin, PoreRegion& region,
 std::optional<PoreRegion> pore_region(const Frame& frame, const RegionSettings& s, double radius,
                                       const std::string& where) {
   if (s.kind == RegionKind::All) return std::nullopt;
+  // Periodic on every side, "inner" is "all" whatever its margin (a margin of 100 radii
+  // changed nothing, exit 0), as a height is along a periodic z.
+  if (frame.container.periodic(0) && frame.container.periodic(1) && frame.container.periodic(2)) {
+    throw InputError(where +
+                     ": expected region \"all\" for a container periodic on every side (an "
+                     "inner region keeps its margin from walls, and it has none), got \"inner\"");
+  }
   PoreRegion inner;
   if (frame.container.shape == ContainerShape::Cylinder)
     shrink_to_cylinder(frame.container, s.margin * radius, inner, where);

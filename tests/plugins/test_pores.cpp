@@ -263,6 +263,19 @@ TEST(Pores, InnerRegionKeepsItsMarginFromTheWalls) {
   EXPECT_FALSE(granpipe::pores::pore_region(f, s, 1.0, "test"));
 }
 
+// Periodic on every side, a margin of 100 radii changed nothing (exit 0): no wall to keep
+// it from.
+TEST(Pores, AnInnerRegionNeedsAWall) {
+  Frame f = crystal_frame(sc(), 5);
+  for (auto& sides : f.container.boundary)
+    sides = {granpipe::Boundary::Periodic, granpipe::Boundary::Periodic};
+  granpipe::pores::RegionSettings s{granpipe::pores::RegionKind::Inner, 100.0, 0.0};
+  EXPECT_EQ(
+      granpipe::test::input_error_of([&] { granpipe::pores::pore_region(f, s, 1.0, "test"); }),
+      "test: expected region \"all\" for a container periodic on every side (an inner "
+      "region keeps its margin from walls, and it has none), got \"inner\"");
+}
+
 // In a vertical cylinder the inner region also keeps its margin from the curved wall
 // (wherever the moving walls have carried the axis): the Brazil-nut frames' pores at the
 // cylinder, open to the wall, gave a mean pore volume of 5e18 with region "all".
