@@ -13,11 +13,13 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <utility>
 
 #include "cgal_cells.hpp"
 #include "granpipe/errors.hpp"
+#include "granpipe/format_number.hpp"
 
 namespace granpipe::pores {
 
@@ -64,10 +66,11 @@ DelaunayCell cell_of(const CellTopology& topology, const std::array<Point, 4>& c
       (2.0 * six_volume);
   cell.centre = p[0] + offset;
   cell.radius = offset.norm();
-  const double longest =
-      std::max({a.squaredNorm(), b.squaredNorm(), c.squaredNorm(), (b - a).squaredNorm(),
-                (c - a).squaredNorm(), (c - b).squaredNorm()});
+  const auto [shortest, longest] =
+      std::minmax({a.squaredNorm(), b.squaredNorm(), c.squaredNorm(), (b - a).squaredNorm(),
+                   (c - a).squaredNorm(), (c - b).squaredNorm()});
   cell.flat = std::abs(six_volume) < 1.001 * length * longest && height_of(p) < length;
+  cell.close_corners = shortest < length * length;
   return cell;
 }
 
@@ -120,6 +123,29 @@ void insert_points(Delaunay& t, Points points) {
 }
 
 }  // namespace
+
+void refuse_close_centres(const std::vector<DelaunayCell>& cells, const Centres& centres,
+                          const Frame& frame, double length, const std::string& where) {
+  const auto close = std::find_if(cells.begin(), cells.end(),
+                                  [](const DelaunayCell& c) { return c.close_corners; });
+  if (close == cells.end()) return;
+  std::array<std::uint32_t, 2> pair{};
+  double nearest = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) {
+      const double d =
+          (centres.points[close->vertices[i]] - centres.points[close->vertices[j]]).norm();
+      if (d < nearest) {
+        nearest = d;
+        pair = {centres.particle[close->vertices[i]], centres.particle[close->vertices[j]]};
+      }
+    }
+  const auto [first, second] = std::minmax(pair[0], pair[1]);
+  throw InputError(where + ": expected distinct particle centres, got particles " +
+                   id_of(frame, first) + " and " + id_of(frame, second) + " " +
+                   format_number(nearest) + " apart, closer than tolerance times the mean " +
+                   "radius (" + format_number(length) + "), by which pores are told apart");
+}
 
 struct DelaunayTriangulation::Impl {
   Delaunay t;

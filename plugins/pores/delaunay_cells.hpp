@@ -21,7 +21,16 @@ struct DelaunayCell : DualCell {
   bool flat = false;
   // False for a cell of unequal spheres left out of the pores (tangent_cells).
   bool pore = true;
+  // Two of its corners are closer than the length given.
+  bool close_corners = false;
 };
+
+// Throws InputError after `where` naming the two particles of the first cell whose
+// corners are closer than `length` (tolerance R): a particle given twice with rounding,
+// whose cells no tolerance tells apart. Nearest centres share an edge of some finite cell,
+// so the cells' flags find every such pair.
+void refuse_close_centres(const std::vector<DelaunayCell>& cells, const Centres& centres,
+                          const Frame& frame, double length, const std::string& where);
 
 class DelaunayTriangulation {
  public:

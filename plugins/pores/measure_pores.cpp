@@ -170,6 +170,7 @@ struct Measure {
     while (true) {
       const CellBounds bounds(frame, length(), skin);
       std::vector<DelaunayCell> cells = t.cells(length(), threads);
+      refuse_close_centres(cells, centres, frame, length(), where);
       PowerVolumes extents = voronoi_extents(cells, t.hull(), centres, bounds, threads);
       double shortfall = periodic ? rough_shortfall(cells, extents, centres, bounds) : 0.0;
       if (shortfall <= 0.0) {

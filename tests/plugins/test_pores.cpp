@@ -421,6 +421,15 @@ TEST(Pores, BadInputIsRefusedWithOneLine) {
   EXPECT_NE(refusal(duplicate).find("particles 2 and 5 at one position"), std::string::npos)
       << refusal(duplicate);
 
+  // 10^-12 R apart: a particle given twice with rounding, counted as two spheres (exit 0).
+  Frame near = f;
+  near.position().row(5) = near.position().row(2);
+  near.position()(5, 0) += 1e-12;
+  EXPECT_NE(refusal(near).find("particles 2 and 5 1e-12 apart, closer than tolerance times the "
+                               "mean radius (1e-09), by which pores are told apart"),
+            std::string::npos)
+      << refusal(near);
+
   EXPECT_NE(refusal(square_layer()).find("in one plane"), std::string::npos);
   Frame line = square_layer();
   line.position().col(1).setZero();
