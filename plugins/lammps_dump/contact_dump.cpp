@@ -80,11 +80,12 @@ Eigen::Vector3d tangential_of(const Entry& e, const ContactColumns& c, const Eig
 // A contact is a pair that touches. Without `cutoff radius` LAMMPS' pair/local lists every
 // pair within the pair style's cutoff, touching or not, and a dump of another run lists
 // pairs anywhere: either would count pairs apart as contacts.
-void check_touching(const Entry& e, const std::string& what, double distance, double reach,
+void check_touching(const Entry& e, const Frame& f, std::int64_t i, std::int64_t j, double distance,
                     double rounding) {
-  const double slack = rounding + 1e-9 * reach;
-  if (distance <= reach + slack) return;
-  throw InputError(e.at() + "expected " + what + " that touch, got a gap of " +
+  const double reach = f.radius()[i] + f.radius()[j];
+  if (distance <= reach + rounding + 1e-9 * reach) return;
+  throw InputError(e.at() + "expected atoms " + std::to_string(f.id()[i]) + " and " +
+                   std::to_string(f.id()[j]) + " that touch, got a gap of " +
                    format_number(distance - reach) + " between them (centres " +
                    format_number(distance) + " apart, radii summing to " + format_number(reach) +
                    ", positions known to " + format_number(rounding) +
@@ -101,16 +102,15 @@ ContactRow pair_row(const Entry& e, const ContactColumns& c, const Frame& f,
                      std::to_string(f.id()[r.i]) + " twice");
   }
   const Eigen::Vector3d d = separation(f, r.i, r.j);
-  const double ri = f.radius()[r.i], rj = f.radius()[r.j];
-  check_touching(e, "atoms " + std::to_string(f.id()[r.i]) + " and " + std::to_string(f.id()[r.j]),
-                 d.norm(), ri + rj, rounding);
+  const double ri = f.radius()[r.i], rj = f.radius()[r.j], distance = d.norm();
+  check_touching(e, f, r.i, r.j, distance, rounding);
   r.overlap = c.overlap >= 0    ? e.value(c.overlap)
               : c.distance >= 0 ? ri + rj - e.value(c.distance)
-                                : ri + rj - d.norm();
+                                : ri + rj - distance;
   r.normal = e.vector(c.normal);
   r.tangential = tangential_of(e, c, r.normal);
   // The middle of the overlap, on the line of the centres, as the dem source places it.
-  r.point = wrapped(f.container, centre(f, r.i) + (ri - 0.5 * r.overlap) / d.norm() * d);
+  r.point = wrapped(f.container, centre(f, r.i) + (ri - 0.5 * r.overlap) / distance * d);
   return r;
 }
 

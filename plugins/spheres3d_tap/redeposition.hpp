@@ -41,6 +41,7 @@ class Redeposition {
   // sphere by d_max at most. When it is below eta <Z>, every tap stops at its first check
   // whether the packing settled or not.
   double largest_height_change(std::size_t spheres) const;
+  double eta() const { return options_.eta; }
   // Neighbour lists renewed one sphere at a time since the object was made.
   std::size_t list_renewals() const { return lists_.renewals(); }
 

@@ -180,7 +180,6 @@ TapSource::TapSource(const PluginContext& ctx)
       continue_count_(ctx.params.boolean("continue_count")),
       seeds_(replica_seeds(ctx)),
       n_(ctx.params.integer("N")),
-      eta_(ctx.params.real("eta")),
       eta_param_(ctx.param("eta")),
       per_tap_(ctx.stream_table(
           "per_tap", Table({"tap", "epsilon", "leg", "mean_height", "mc_trials", "mc_acceptance"},
@@ -228,7 +227,7 @@ void TapSource::start() {
 // grow on dilation, so what holds for the start holds for every tap.
 void TapSource::check_stopping_rule() const {
   const double change = redeposition_.largest_height_change(centres_.size());
-  const double threshold = eta_ * mean_height(centres_);
+  const double threshold = redeposition_.eta() * mean_height(centres_);
   if (change > threshold) return;
   throw InputError(eta_param_ + ": expected a stopping rule a settling packing can pass, got " +
                    "one every tap meets at its first check: between two checks <Z> moves by " +

@@ -49,7 +49,6 @@ class TapSource : public Source {
   // `granpipe validate` refuses a bad one), taken as the start at the first frame.
   std::optional<SavedPacking> saved_;
   std::int64_t n_ = 0, tap_ = 0, unconverged_ = 0;
-  double eta_ = 0.0;
   std::string eta_param_;  // "source.params.eta", for messages
   std::vector<Eigen::Vector3d> centres_;
   StreamedTable per_tap_;
