@@ -1,10 +1,9 @@
 #include "start_checks.hpp"
 
-#include <algorithm>
 #include <limits>
 #include <sstream>
 
-#include "granpipe/contacts_by_distance.hpp"
+#include "granpipe/deepest_overlap.hpp"
 #include "granpipe/errors.hpp"
 #include "granpipe/format_number.hpp"
 #include "granpipe/particles_outside.hpp"
@@ -47,24 +46,13 @@ void refuse_outside(const Frame& f, const std::string& where) {
 }
 
 void refuse_deep_pairs(const Frame& f, const std::string& where) {
-  const DistanceContacts touching = find_contacts_by_distance(f, 0.0, where);
-  Eigen::Index worst = -1;
-  double deepest = kMaxOverlapFraction;
-  for (Eigen::Index k = 0; k < touching.pairs; ++k) {
-    const auto i = touching.i[k], j = touching.j[k];
-    const double fraction = -touching.gap[k] / std::min(f.radius()[i], f.radius()[j]);
-    if (fraction > deepest) {
-      deepest = fraction;
-      worst = k;
-    }
-  }
-  if (worst < 0) return;
-  const auto i = touching.i[worst], j = touching.j[worst];
+  const auto deepest = deepest_pair_overlap(f, where);
+  if (!deepest || deepest->fraction <= kMaxOverlapFraction) return;
+  const auto i = deepest->i, j = deepest->j;
   throw InputError(where + ": particles " + std::to_string(i) + " and " + std::to_string(j) +
                    " (ids " + std::to_string(f.id()[i]) + " and " + std::to_string(f.id()[j]) +
-                   ") overlap by " + percent(deepest) +
-                   " of the smaller radius: expected "
-                   "overlaps of at most " +
+                   ") overlap by " + percent(deepest->fraction) +
+                   " of the smaller radius: expected overlaps of at most " +
                    percent(kMaxOverlapFraction));
 }
 

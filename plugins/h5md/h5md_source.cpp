@@ -3,7 +3,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "granpipe/contacts_by_distance.hpp"
+#include "granpipe/deepest_overlap.hpp"
 #include "granpipe/particles_outside.hpp"
 
 namespace granpipe::h5md {
@@ -141,22 +141,15 @@ void H5mdSource::check_step_rises(const Frame& frame, long index) {
 }
 
 void H5mdSource::check_overlaps(const Frame& frame, const std::string& where) const {
-  if (frame.size() < 2) return;
-  // Pairs at zero tolerance are exactly the touching and overlapping ones.
-  const DistanceContacts touching = find_contacts_by_distance(frame, 0.0, where);
-  for (Eigen::Index k = 0; k < touching.pairs; ++k) {
-    const auto i = touching.i[k], j = touching.j[k];
-    const double smaller = std::min(frame.radius()[i], frame.radius()[j]);
-    const double overlap = -touching.gap[k] / smaller;
-    if (overlap > max_overlap_) {
-      std::ostringstream msg;
-      msg << where << ": particles " << i << " and " << j << " (ids " << frame.id()[i] << ", "
-          << frame.id()[j] << ") overlap by " << overlap
-          << " of the smaller radius, expected at most " << max_overlap_ << " (raise "
-          << max_overlap_param_ << " for soft-particle data)";
-      throw InputError(msg.str());
-    }
-  }
+  const auto deepest = deepest_pair_overlap(frame, where);
+  if (!deepest || deepest->fraction <= max_overlap_) return;
+  const auto i = deepest->i, j = deepest->j;
+  std::ostringstream msg;
+  msg << where << ": particles " << i << " and " << j << " (ids " << frame.id()[i] << ", "
+      << frame.id()[j] << ") overlap by " << deepest->fraction
+      << " of the smaller radius, expected at most " << max_overlap_ << " (raise "
+      << max_overlap_param_ << " for soft-particle data)";
+  throw InputError(msg.str());
 }
 
 // A particle through a wall is in no container the analyses can measure (a packing

@@ -24,6 +24,10 @@ constexpr double kEqualRadii = 1e-6;
 struct PoreSettings {
   double tolerance = 1e-9;  // same sphere, flat cell: relative to the particle radius
   RegionSettings region;
+  // Deepest overlap of two spheres accepted, over the smaller radius, and the parameter
+  // that sets it (named when a frame is refused).
+  double max_overlap = 0.05;
+  std::string max_overlap_param = "max_overlap";
   int threads = 1;  // the results do not depend on it, to the bit
 };
 

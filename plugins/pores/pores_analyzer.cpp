@@ -6,6 +6,8 @@
 #include <vector>
 
 #include "granpipe/bin_count.hpp"
+#include "granpipe/errors.hpp"
+#include "granpipe/format_number.hpp"
 #include "granpipe/random.hpp"
 #include "granpipe/region.hpp"
 #include "pore_region.hpp"
@@ -20,6 +22,10 @@ Schema schema() {
          "are one pore; a cell thinner than tolerance * R is flat and no pore")
       .range(1e-14, 1e-3)
       .unit("particle radii");
+  s.real("max_overlap", 0.05,
+         "deepest overlap of two spheres accepted, as a fraction of the smaller radius (soft-"
+         "sphere data press a few percent); a frame with a deeper one is refused")
+      .range(0.0, 1.0);
   s.choice<RegionKind>("region", RegionKind::All,
                        "pores counted: all, or those whose centre lies in the box container "
                        "shrunk by margin (inner)");
@@ -74,10 +80,13 @@ const Property kLocalFraction{"local_packing_fraction",
                               "",
                               "particle volume over its voronoi_volume; NaN where undefined"};
 
-PoreSettings settings_from(const Params& p, int threads) {
+PoreSettings settings_from(const PluginContext& ctx) {
+  const Params& p = ctx.params;
   PoreSettings s;
-  s.threads = threads;
+  s.threads = ctx.threads;
   s.tolerance = p.real("tolerance");
+  s.max_overlap = p.real("max_overlap");
+  s.max_overlap_param = ctx.param("max_overlap");
   s.region.kind = p.choice<RegionKind>("region");
   s.region.margin = p.real("margin");
   s.region.height = p.real("height");
@@ -93,10 +102,27 @@ double checked_bin_width(const PluginContext& ctx, const std::string& width,
   return w;
 }
 
+// The probes look sigma_max R beyond each point for the nearest surface: along a periodic
+// side shorter than twice that (with the largest radius) one sphere would be met through two
+// images. Refused naming the parameter, not in the neighbour search's terms.
+void check_probe_reach(const Frame& frame, double reach, const std::string& param,
+                       const std::string& where) {
+  const double range = reach + frame.radius().maxCoeff();
+  for (int a = 0; a < 3; ++a) {
+    if (!frame.container.periodic(a) || frame.container.length(a) >= 2.0 * range) continue;
+    throw InputError(where + ": P0 probes look up to " + format_number(range) +
+                     " from each point (" + param +
+                     " times the mean radius, and the largest radius): expected periodic sides "
+                     "of at least twice that, got " +
+                     format_number(frame.container.length(a)) + " along " + "xyz"[a] + "; lower " +
+                     param + " or set probes 0");
+  }
+}
+
 }  // namespace
 
 PoresAnalyzer::PoresAnalyzer(const PluginContext& ctx)
-    : settings_(settings_from(ctx.params, ctx.threads)),
+    : settings_(settings_from(ctx)),
       log_(ctx.log),
       statistics_(checked_bin_width(ctx, "bin_width", "xi_max"), ctx.params.real("xi_max")),
       volumes_(checked_bin_width(ctx, "v_bin_width", "v_max"), ctx.params.real("v_max"),
@@ -104,6 +130,7 @@ PoresAnalyzer::PoresAnalyzer(const PluginContext& ctx)
       seeds_(ctx.seeds),
       probes_(static_cast<long>(ctx.params.integer("probes"))),
       void_probability_(ctx.params.real("sigma_step"), ctx.params.real("sigma_max")),
+      sigma_max_param_(ctx.param("sigma_max")),
       per_frame_(ctx.stream_table(
           "per_frame", Table({"frame", "step", "time", "pores", "spheres", "pores_per_sphere", "nu",
                               "flat_cells"},
@@ -175,9 +202,10 @@ void PoresAnalyzer::publish(PropertyTable& columns) {
 void PoresAnalyzer::probe_voids(const Frame& frame, double mean_radius, const std::string& where) {
   const Region box =
       probe_region(frame, pore_region(frame, settings_.region, mean_radius, where), where);
+  const double reach = void_probability_.sigma_max() * mean_radius;
+  check_probe_reach(frame, reach, sigma_max_param_, where);
   RandomStream stream = seeds_.stream("probes", static_cast<std::uint64_t>(frames_));
-  std::vector<double> gaps =
-      probe_gaps(frame, box, probes_, void_probability_.sigma_max() * mean_radius, stream, where);
+  std::vector<double> gaps = probe_gaps(frame, box, probes_, reach, stream, where);
   for (double& gap : gaps) gap /= mean_radius;
   void_probability_.add(gaps, particle_measure_in(frame, box), box.volume());
 }
@@ -199,6 +227,7 @@ void PoresAnalyzer::consume(const Frame& frame, FrameCache&) {
                       pores, static_cast<double>(m.spheres),
                       m.spheres > 0 ? pores / static_cast<double>(m.spheres) : nan,
                       m.xi.empty() ? nan : xi3 / pores, static_cast<double>(m.flat_cells)});
+  frames_without_spheres_ += m.spheres == 0 ? 1 : 0;
   ++frames_;
 }
 
@@ -209,6 +238,13 @@ void PoresAnalyzer::finish(Results& results) {
     log_.warn(
         "pores: no pore in the region of any frame: P(xi), nu, rho_v and the shares of "
         "Bernal's holes are undefined (NaN); a larger region (margin, height) holds some");
+  }
+  if (frames_without_spheres_ > 0) {
+    log_.warn("pores: " + std::to_string(frames_without_spheres_) + " of " +
+              std::to_string(frames_) +
+              " frame(s) have no particle centre in the region: their pores_per_sphere is "
+              "undefined (NaN)" +
+              (frames_without_spheres_ == frames_ ? ", and so is the pooled one" : ""));
   }
   statistics_.report(results);
   volumes_.report(results, statistics_.nu());

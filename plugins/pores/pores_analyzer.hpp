@@ -37,6 +37,7 @@ class PoresAnalyzer : public Analyzer {
   Seeds seeds_;
   long probes_;  // per frame; 0: P0 not measured
   VoidProbability void_probability_;
+  std::string sigma_max_param_;
   StreamedTable per_frame_;
   // With frame_distributions: P(xi) and rho_v(v) of every frame (the paper's Fig. 10).
   std::optional<StreamedTable> frame_xi_, frame_v_;
@@ -47,6 +48,7 @@ class PoresAnalyzer : public Analyzer {
   long undefined_volumes_ = 0, hidden_spheres_ = 0;
   double bin_width_, xi_max_, v_bin_width_, v_max_;
   long frames_ = 0;
+  long frames_without_spheres_ = 0;  // in the region: pores_per_sphere undefined
 };
 
 }  // namespace granpipe::pores

@@ -453,6 +453,38 @@ TEST(Pores, BadInputIsRefusedWithOneLine) {
   }
 }
 
+// The pores analyzer took 80 random spheres overlapping by up to their radii for a packing:
+// pores inside spheres, local packing fractions up to 338, exit 0. Soft-sphere overlaps of a
+// few percent are pores' to measure; deeper ones are refused, naming the pair.
+TEST(Pores, SpheresOverlappingBeyondMaxOverlapAreRefused) {
+  const auto refused = [](const Frame& f, const nlohmann::json& params) -> std::string {
+    const auto ctx = granpipe::test::make_context("pores", params);
+    auto analyzer = granpipe::test::installed_plugins().find("pores")->make_analyzer(*ctx);
+    granpipe::FrameCache cache;
+    try {
+      analyzer->consume(f, cache);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "accepted";
+  };
+  const Frame f = crystal_frame(sc(), 3);  // particle 1 touches particle 0 from above
+  ASSERT_EQ(f.position()(1, 2), 2.0);
+  Frame soft = f;
+  soft.position()(1, 2) -= 0.04;  // 4 % of the radius
+  EXPECT_EQ(refused(soft, nlohmann::json::object()), "accepted");
+  EXPECT_EQ(refused(soft, {{"max_overlap", 0.01}}),
+            "pores: frame at step 0: particles 0 and 1 overlap by 0.04 of the smaller radius, "
+            "expected at most 0.01 (params.max_overlap): pores are the void between spheres "
+            "that overlap little");
+  Frame deep = f;
+  deep.position()(1, 2) -= 0.4;
+  EXPECT_EQ(refused(deep, nlohmann::json::object()),
+            "pores: frame at step 0: particles 0 and 1 overlap by 0.4 of the smaller radius, "
+            "expected at most 0.05 (params.max_overlap): pores are the void between spheres "
+            "that overlap little");
+}
+
 }  // namespace
 
 // Pores whose volumes v have the number density ~ exp(-v / lambda) / v (rejection from an
@@ -520,9 +552,14 @@ TEST(Pores, ARegionWithoutPoresIsSaid) {
   analyzer->finish(results);
   ASSERT_EQ(results.scalar("pores").value, 0);
   EXPECT_TRUE(std::isnan(results.scalar("nu").value));
+  EXPECT_TRUE(std::isnan(results.scalar("pores_per_sphere").value));
   const std::vector<std::string> lines = ctx->logged_lines();
-  ASSERT_EQ(lines.size(), 1u);
+  ASSERT_EQ(lines.size(), 2u);
   EXPECT_EQ(lines[0],
             "warning: pores: no pore in the region of any frame: P(xi), nu, rho_v and the shares "
             "of Bernal's holes are undefined (NaN); a larger region (margin, height) holds some");
+  // No sphere either: pores_per_sphere NaN went without a word.
+  EXPECT_EQ(lines[1],
+            "warning: pores: 1 of 1 frame(s) have no particle centre in the region: their "
+            "pores_per_sphere is undefined (NaN), and so is the pooled one");
 }

@@ -8,6 +8,7 @@
 #include <optional>
 #include <vector>
 
+#include "granpipe/errors.hpp"
 #include "granpipe/frame.hpp"
 #include "granpipe/random.hpp"
 #include "granpipe/region.hpp"
@@ -111,12 +112,8 @@ TEST(PoresP0, PercusYevickContinuesTheExactSmallProbeForm) {
               (exact(0) - 2 * exact(-h) + exact(-2 * h)) / (h * h), 0.5);
 }
 
-// The analyzer on a periodic fcc crystal: P0(0) = 1 - pi / (3 sqrt 2), and a probe wider
-// than the octahedral hole (sigma > sqrt 2 - 1) fits nowhere.
-TEST(PoresP0, AnalyzerMeasuresACrystal) {
-  const auto ctx = granpipe::test::make_context(
-      "pores", {{"probes", 20000}, {"sigma_step", 0.25}, {"sigma_max", 0.5}});
-  auto analyzer = granpipe::test::installed_plugins().find("pores")->make_analyzer(*ctx);
+// 3 x 3 x 3 cells of touching spheres of radius 1 in a periodic box of side 3 x 2 sqrt 2.
+Frame periodic_fcc() {
   const double a = 2.0 * std::sqrt(2.0);
   Frame f = box_frame(4 * 27, 3 * a);
   f.container = granpipe::Container::periodic_box(3, {0, 0, 0}, {3 * a, 3 * a, 3 * a});
@@ -127,8 +124,17 @@ TEST(PoresP0, AnalyzerMeasuresACrystal) {
       for (int l = 0; l < 3; ++l)
         for (const auto& b : basis)
           f.position().row(k++) << a * (i + b[0]), a * (j + b[1]), a * (l + b[2]);
+  return f;
+}
+
+// The analyzer on a periodic fcc crystal: P0(0) = 1 - pi / (3 sqrt 2), and a probe wider
+// than the octahedral hole (sigma > sqrt 2 - 1) fits nowhere.
+TEST(PoresP0, AnalyzerMeasuresACrystal) {
+  const auto ctx = granpipe::test::make_context(
+      "pores", {{"probes", 20000}, {"sigma_step", 0.25}, {"sigma_max", 0.5}});
+  auto analyzer = granpipe::test::installed_plugins().find("pores")->make_analyzer(*ctx);
   granpipe::FrameCache cache;
-  analyzer->consume(f, cache);
+  analyzer->consume(periodic_fcc(), cache);
   granpipe::Results results;
   analyzer->finish(results);
   const double phi = M_PI / (3.0 * std::sqrt(2.0));
@@ -137,6 +143,24 @@ TEST(PoresP0, AnalyzerMeasuresACrystal) {
   EXPECT_NEAR(p0.column("P0")[0], 1.0 - phi, 4.0 * p0.column("P0_err")[0]);
   EXPECT_EQ(p0.column("P0")[2], 0.0);  // sigma = 0.5
   EXPECT_GT(p0.column("P0")[1], 0.0);  // sigma = 0.25 < sqrt 2 - 1
+}
+
+// Probes reaching farther than half the box were refused by the neighbour search in its own
+// terms ("twice the contact range"), naming neither sigma_max nor probes.
+TEST(PoresP0, ProbesReachingAcrossThePeriodAreRefusedNamingSigmaMax) {
+  const auto ctx = granpipe::test::make_context("pores", {{"probes", 10}, {"sigma_max", 4.0}});
+  auto analyzer = granpipe::test::installed_plugins().find("pores")->make_analyzer(*ctx);
+  granpipe::FrameCache cache;
+  try {
+    analyzer->consume(periodic_fcc(), cache);
+    FAIL() << "accepted";
+  } catch (const granpipe::InputError& e) {
+    EXPECT_STREQ(e.what(),
+                 "pores: frame at step 0: P0 probes look up to 5 from each point "
+                 "(params.sigma_max times the mean radius, and the largest radius): expected "
+                 "periodic sides of at least twice that, got 8.48528 along x; lower "
+                 "params.sigma_max or set probes 0");
+  }
 }
 
 }  // namespace
