@@ -3,12 +3,11 @@
 #include <charconv>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
 #include <iostream>
-#include <system_error>
 
 #include "commands.hpp"
 #include "granpipe/errors.hpp"
+#include "granpipe/file_kind.hpp"
 #include "granpipe/log.hpp"
 #include "granpipe/pipeline.hpp"
 #include "granpipe/plugin_loader.hpp"
@@ -58,12 +57,10 @@ std::string one_line(const std::string& message) {
 // granpipe report DIR: a DIR that is no directory was blamed on DIR/pipeline.json, and a
 // second line blamed the report script.
 void check_run_directory(const std::string& dir) {
-  std::error_code error;
-  const std::filesystem::file_status status = std::filesystem::status(dir, error);
-  if (std::filesystem::is_directory(status)) return;
-  throw granpipe::InputError(
-      dir + ": expected a run's output directory, got " +
-      (status.type() == std::filesystem::file_type::not_found ? "no such directory" : "a file"));
+  const std::string found = granpipe::what_is_at(dir);
+  if (found == "a directory") return;
+  throw granpipe::InputError(dir + ": expected a run's output directory, got " +
+                             (found == "no such file" ? "no such directory" : found));
 }
 
 // --out "": an empty path meant the pipeline's own output directory, which --overwrite

@@ -12,6 +12,7 @@
 #include <unordered_map>
 
 #include "granpipe/errors.hpp"
+#include "granpipe/file_kind.hpp"
 #include "granpipe/format_number.hpp"
 #include "granpipe/frame.hpp"
 #include "granpipe/frame_store.hpp"
@@ -63,16 +64,11 @@ h5::Object swmr_read_access() {
 // Opens normally, else as a SWMR reader: a file whose writer was killed (or is still
 // running) refuses a normal open but reads back every frame it flushed.
 h5::Object open_file(const std::string& name, bool& swmr) {
-  std::error_code ec;
-  if (!std::filesystem::exists(name, ec)) throw InputError(name + ": no such file");
-  if (std::filesystem::is_directory(name, ec)) {
-    throw InputError(name + ": expected an HDF5 file, got a directory");
-  }
   // Opening a FIFO without a writer waits for one: `granpipe inspect` hung.
-  if (!std::filesystem::is_regular_file(name, ec)) {
-    throw InputError(name +
-                     ": expected an HDF5 file, got no regular file (a pipe, socket or "
-                     "device)");
+  if (!regular_file_at(name)) {
+    const std::string found = what_is_at(name);
+    throw InputError(name + (found == "no such file" ? ": no such file"
+                                                     : ": expected an HDF5 file, got " + found));
   }
   if (!std::ifstream(name).good()) throw InputError(name + ": cannot be read (permissions?)");
   if (H5Fis_hdf5(name.c_str()) <= 0) {

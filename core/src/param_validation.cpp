@@ -10,6 +10,7 @@
 
 #include "did_you_mean.hpp"
 #include "granpipe/errors.hpp"
+#include "granpipe/file_kind.hpp"
 #include "param_tables.hpp"
 
 namespace granpipe {
@@ -24,6 +25,24 @@ JsonLocation JsonLocation::index(std::size_t i) const {
 
 JsonLocation JsonLocation::quoted_key(const std::string& key) const {
   return {file, path + "[" + json_brief(key) + "]", overrides};
+}
+
+bool as_integer(const nlohmann::json& v, std::int64_t& out) {
+  // Above 2^63 - 1 a JSON integer is stored unsigned, and would wrap to a negative.
+  if (v.is_number_unsigned() && v.get<std::uint64_t>() > std::numeric_limits<std::int64_t>::max())
+    return false;
+  if (v.is_number_integer()) {
+    out = v.get<std::int64_t>();
+    return true;
+  }
+  if (v.is_number_float()) {
+    const double d = v.get<double>();
+    if (std::isfinite(d) && std::floor(d) == d && std::fabs(d) < 9.0e15) {
+      out = static_cast<std::int64_t>(d);
+      return true;
+    }
+  }
+  return false;
 }
 
 namespace {
@@ -107,37 +126,14 @@ bool in_range(const ParamSpec& s, double x) {
   return true;
 }
 
-// JSON numbers that are whole (5 or 5.0) are integers; 5.5 and 1e30 are not.
-bool as_integer(const nlohmann::json& v, std::int64_t& out) {
-  // Above 2^63 - 1 a JSON integer is stored unsigned, and would wrap to a negative.
-  if (v.is_number_unsigned() && v.get<std::uint64_t>() > std::numeric_limits<std::int64_t>::max())
-    return false;
-  if (v.is_number_integer()) {
-    out = v.get<std::int64_t>();
-    return true;
-  }
-  if (v.is_number_float()) {
-    const double d = v.get<double>();
-    if (std::isfinite(d) && std::floor(d) == d && std::fabs(d) < 9.0e15) {
-      out = static_cast<std::int64_t>(d);
-      return true;
-    }
-  }
-  return false;
-}
-
 // A path as the user gave it, resolved against the working directory, then `base_dir`.
 std::string existing_file(const nlohmann::json& v, const JsonLocation& at,
                           const std::filesystem::path& base_dir) {
   std::filesystem::path p = v.get<std::string>();
-  if (p.is_relative() && !std::filesystem::exists(p) && std::filesystem::exists(base_dir / p))
-    p = base_dir / p;
-  if (!std::filesystem::is_regular_file(p)) {
-    const char* found = std::filesystem::is_directory(p) ? "a directory"
-                        : std::filesystem::exists(p)     ? "not a regular file"
-                                                         : "no such file";
-    throw InputError(at.str() + ": expected an existing file, got " + json_brief(v) + " (" + found +
-                     ")");
+  if (p.is_relative() && !anything_at(p) && anything_at(base_dir / p)) p = base_dir / p;
+  if (!regular_file_at(p)) {
+    throw InputError(at.str() + ": expected an existing file, got " + json_brief(v) + " (" +
+                     what_is_at(p) + ")");
   }
   return p.string();
 }

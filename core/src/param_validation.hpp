@@ -36,6 +36,10 @@ struct JsonLocation {
 // `message` ("source.params.cells: expected ...", from a plugin) with its origin in front.
 std::string located_message(const JsonLocation& top, const std::string& message);
 
+// JSON numbers that are whole (5 or 5.0, 1e3) are integers; 5.5 and 1e30 (beyond the
+// doubles that hold every integer) are not.
+bool as_integer(const nlohmann::json& v, std::int64_t& out);
+
 // Short rendering of a JSON value for "got ..." (strings quoted, long values cut).
 std::string json_brief(const nlohmann::json& v);
 

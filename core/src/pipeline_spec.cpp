@@ -4,6 +4,7 @@
 #include <fstream>
 #include <set>
 
+#include "granpipe/file_kind.hpp"
 #include "granpipe/plugin_loader.hpp"
 #include "json_path.hpp"
 #include "names.hpp"
@@ -72,10 +73,13 @@ Override apply_set(json& root, const std::string& assignment) {
 std::uint64_t read_seed(const json& root, const JsonLocation& at) {
   if (!root.contains("seed")) return 1;
   const json& s = root["seed"];
-  if (!s.is_number_unsigned() && !(s.is_number_integer() && s.get<std::int64_t>() >= 0)) {
+  if (s.is_number_unsigned()) return s.get<std::uint64_t>();
+  // Whole numbers as plugins' integer parameters take them (1e3, 64.0).
+  std::int64_t whole = 0;
+  if (!as_integer(s, whole) || whole < 0) {
     throw InputError(at.child("seed").str() + ": expected an integer >= 0, got " + json_brief(s));
   }
-  return s.get<std::uint64_t>();
+  return static_cast<std::uint64_t>(whole);
 }
 
 }  // namespace
@@ -88,12 +92,9 @@ Pipeline& Pipeline::operator=(Pipeline&&) noexcept = default;
 Pipeline Pipeline::load(const fs::path& file, const std::vector<std::string>& sets,
                         const Registry& registry) {
   const std::string expected = file.string() + ": expected a pipeline JSON file";
-  std::error_code ec;
-  if (fs::is_directory(file, ec)) throw InputError(expected + ", got a directory");
+  if (!regular_file_at(file)) throw InputError(expected + ", got " + what_is_at(file));
   std::ifstream in(file, std::ios::binary);
-  if (!in)
-    throw InputError(expected + ", got " +
-                     (fs::exists(file, ec) ? "a file that cannot be read" : "no such file"));
+  if (!in) throw InputError(expected + ", got a file that cannot be read");
   // Read in chunks up to one byte past the limit: a longer file (or /dev/zero) is
   // known without reading it all.
   std::string text;

@@ -526,6 +526,24 @@ TEST(Pipeline, DefaultsAreFilledIn) {
   EXPECT_EQ(p.seed(), 1u);
 }
 
+// A seed of 1e3 was refused while a plugin's integer parameter took 1e3: whole numbers are
+// integers everywhere; the largest seeds, beyond what a double holds exactly, as integers.
+TEST(Pipeline, SeedsAreWholeNumbersAsIntegerParametersAre) {
+  const Registry r = test_registry();
+  const auto seed = [&](const std::string& value) {
+    return Pipeline::parse(R"({"seed": )" + value + R"(, "source": {"plugin": "random"}})",
+                           "p.json", {}, r)
+        .seed();
+  };
+  EXPECT_EQ(seed("1e3"), 1000u);
+  EXPECT_EQ(seed("64.0"), 64u);
+  EXPECT_EQ(seed("18446744073709551615"), 18446744073709551615u);
+  EXPECT_EQ(error_of(R"({"seed": 1.5, "source": {"plugin": "random"}})"),
+            "p.json: seed: expected an integer >= 0, got 1.5");
+  EXPECT_EQ(error_of(R"({"seed": 1e19, "source": {"plugin": "random"}})"),
+            "p.json: seed: expected an integer >= 0, got 1e+19");
+}
+
 // A grid of 3 x 2 points over a source and an analyzer parameter.
 constexpr const char* kGrid =
     R"({"source": {"plugin": "random"}, "analyzers": [{"plugin": "meanx"}],
