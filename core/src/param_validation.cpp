@@ -64,6 +64,14 @@ std::string JsonLocation::str() const {
   return file + ": " + path;
 }
 
+std::string JsonLocation::origin() const {
+  if (overrides) {
+    for (auto o = overrides->rbegin(); o != overrides->rend(); ++o)
+      if (covers(o->path, path)) return o->origin;
+  }
+  return "";
+}
+
 std::string JsonLocation::key_str() const {
   if (overrides) {
     for (auto o = overrides->rbegin(); o != overrides->rend(); ++o) {
@@ -116,8 +124,24 @@ nlohmann::json to_json(const ParamValue& v) {
 
 namespace {
 
+// Why a whole number is no integer parameter: "expected an integer >= 1, got 1e+19" left the
+// reader to guess.
+std::string why_not_integer(const nlohmann::json& v) {
+  if (v.is_number_unsigned() &&
+      v.get<std::uint64_t>() > std::uint64_t{std::numeric_limits<std::int64_t>::max()})
+    return " (beyond 2^63 - 1, the largest integer)";
+  if (!v.is_number_float()) return "";
+  const double d = v.get<double>();
+  return std::isfinite(d) && std::floor(d) == d && std::fabs(d) >= 9.0e15
+             ? " (with a point or an exponent a number is an exact integer only below 9e15; "
+               "write larger ones in digits)"
+             : "";
+}
+
 [[noreturn]] void fail(const JsonLocation& at, const ParamSpec& spec, const nlohmann::json& got) {
-  throw InputError(at.str() + ": expected " + describe_expected(spec) + ", got " + json_brief(got));
+  const bool integer = spec.type == ParamType::Int || spec.type == ParamType::IntList;
+  throw InputError(at.str() + ": expected " + describe_expected(spec) + ", got " + json_brief(got) +
+                   (integer ? why_not_integer(got) : ""));
 }
 
 bool in_range(const ParamSpec& s, double x) {

@@ -28,6 +28,8 @@ struct JsonLocation {
   // An entry whose key is no name (a sweep's "source.params.n"): path["source.params.n"].
   JsonLocation quoted_key(const std::string& key) const;
   std::string str() const;
+  // The --set that put the value here, or "" for the file.
+  std::string origin() const;
   // str() for a key that may not be in the file: an override that set a value inside it
   // (--set source.params.walls.bse.k_n=1) made it.
   std::string key_str() const;

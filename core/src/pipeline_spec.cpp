@@ -254,8 +254,13 @@ Pipeline Pipeline::parse(const std::string& text, const std::string& origin,
   std::set<std::string> producers{"source"};
   for (const PluginSpec& a : impl->analyzers) producers.insert(a.name);
   check_report_spec(root, top, producers, impl->sweep_paths);
-  // A swept value comes from the file's sweep, even where a --set put one before.
-  for (const auto& path : impl->sweep_paths) impl->overrides.push_back({path, ""});
+  // A swept value comes from the sweep, even where a --set put one before: from the file,
+  // or from the --set that wrote the sweep.
+  const JsonLocation swept_at = top.child("sweep").child("parameters");
+  std::vector<Override> swept;
+  for (const auto& path : impl->sweep_paths)
+    swept.push_back({path, swept_at.quoted_key(path).origin()});
+  impl->overrides.insert(impl->overrides.end(), swept.begin(), swept.end());
   // Each point starts from the pipeline without its sweep, whose length would make
   // copying it per point quadratic.
   const json sweep = root.contains("sweep") ? root["sweep"] : json();

@@ -207,6 +207,17 @@ TEST(PipelineErrors, OutOfRangeAndNonInteger) {
             "p.json: source.params.n: expected an integer in [1, 1000], got 0");
   EXPECT_EQ(error_of(R"({"source": {"plugin": "random", "params": {"frames": 2.5}}})"),
             "p.json: source.params.frames: expected an integer >= 1, got 2.5");
+  EXPECT_EQ(error_of(R"({"source": {"plugin": "random", "params": {"n": 2e3}}})"),
+            "p.json: source.params.n: expected an integer in [1, 1000], got 2000.0");
+  // Whole, but no integer parameter: said why (the bare message left the reader to guess).
+  EXPECT_EQ(error_of(R"({"source": {"plugin": "random", "params": {"frames": 1e19}}})"),
+            "p.json: source.params.frames: expected an integer >= 1, got 1e+19 (with a point or "
+            "an exponent a number is an exact integer only below 9e15; write larger ones in "
+            "digits)");
+  EXPECT_EQ(
+      error_of(R"({"source": {"plugin": "random", "params": {"frames": 10000000000000000000}}})"),
+      "p.json: source.params.frames: expected an integer >= 1, got 10000000000000000000 (beyond "
+      "2^63 - 1, the largest integer)");
 }
 
 TEST(PipelineErrors, UnknownPluginAndWrongKind) {
@@ -353,6 +364,15 @@ TEST(PipelineErrors, SweepValueOutOfRangeNamesThePoint) {
   EXPECT_EQ(e,
             "p.json: source.params.n: expected an integer in [1, 1000], got 5000 (sweep point 1: "
             "source.params.n = 5000)");
+  // A sweep written by --set was blamed on the file, which has none.
+  EXPECT_EQ(error_of(R"({"source": {"plugin": "random"}})",
+                     {R"(sweep={"parameters": {"source.params.n": [5, 5000]}})"}),
+            R"(--set sweep={"parameters": {"source.params.n": [5, 5000]}}: )"
+            "expected an integer in [1, 1000], got 5000 (sweep point 1: source.params.n = 5000)");
+  EXPECT_EQ(error_of(R"({"source": {"plugin": "random"}, "sweep": {"parameters": {}}})",
+                     {R"(sweep.parameters={"source.params.n": [5000]})"}),
+            R"(--set sweep.parameters={"source.params.n": [5000]}: )"
+            "expected an integer in [1, 1000], got 5000 (sweep point 0: source.params.n = 5000)");
 }
 
 // A sweep's size is known from its lists' lengths: too many points are refused before
@@ -573,9 +593,10 @@ TEST(Pipeline, SetIntoASweepReplacesTheValuesOfTheParameterItNames) {
       error_of(kGrid, {"sweep.parameters.x=[1]"}),
       "--set sweep.parameters.x=[1]: expected a plugin parameter path like source.params.name "
       "or analyzers[0].params.name, got \"x\"");
+  // The --set's value, not the file's (which was blamed).
   EXPECT_EQ(error_of(kGrid, {"sweep.parameters.source.params.n=[5000]"}),
-            "p.json: source.params.n: expected an integer in [1, 1000], got 5000 (sweep point 0: "
-            "analyzers[0].params.scale = 1, source.params.n = 5000)");
+            "--set sweep.parameters.source.params.n=[5000]: expected an integer in [1, 1000], got "
+            "5000 (sweep point 0: analyzers[0].params.scale = 1, source.params.n = 5000)");
 }
 
 TEST(Pipeline, SameSeedSameResultsAndSweepPointsIndependentOfThreads) {
