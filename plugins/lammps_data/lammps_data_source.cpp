@@ -3,6 +3,7 @@
 #include <fstream>
 
 #include "data_file.hpp"
+#include "granpipe/deepest_overlap.hpp"
 #include "granpipe/stated_container.hpp"
 
 namespace granpipe::lammps_data {
@@ -11,6 +12,9 @@ Schema schema() {
   Schema s;
   s.path("file", std::nullopt, "LAMMPS data file (atom_style sphere)");
   declare_stated_container(s);
+  declare_max_overlap(s, 0.3,
+                      "a sound soft-sphere run stays within 0.3; a file with a deeper one (atoms "
+                      "stacked at one place) is refused");
   return s;
 }
 
@@ -27,6 +31,7 @@ LammpsDataSource::LammpsDataSource(const PluginContext& ctx) {
   if (const auto out = stated.first_outside(frame_, "the data file's box")) {
     throw InputError(file + ": " + out->message);
   }
+  refuse_deep_overlap(frame_, ctx.params.real("max_overlap"), ctx.param("max_overlap"), "", file);
 }
 
 bool LammpsDataSource::next(Frame& frame) {

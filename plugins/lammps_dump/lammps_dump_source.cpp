@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "granpipe/contacts_by_distance.hpp"
+#include "granpipe/deepest_overlap.hpp"
 #include "granpipe/format_number.hpp"
 #include "granpipe/text_words.hpp"
 #include "snapshot_atoms.hpp"
@@ -50,6 +51,10 @@ Schema schema() {
       .min(0.0)
       .unit("time");
   declare_stated_container(s);
+  declare_max_overlap(
+      s, 0.3,
+      "a sound soft-sphere run stays within 0.3; a snapshot with a deeper one (atoms "
+      "stacked at one place) is refused");
   s.path("pair_file", std::string(""),
          "dump local of the pair contacts at the atom dump's timesteps (LIGGGHTS compute "
          "pair/gran/local, or LAMMPS compute property/local patom1 patom2 and pair/local); "
@@ -72,6 +77,8 @@ LammpsDumpSource::LammpsDumpSource(const PluginContext& ctx)
       stated_(ctx),
       radius_(ctx.params.real("radius")),
       dt_(ctx.params.real("dt")),
+      max_overlap_(ctx.params.real("max_overlap")),
+      max_overlap_param_(ctx.param("max_overlap")),
       lines_(file_),
       index_(complete_snapshots(lines_)),
       columns_(parse_atom_columns(index_.columns, index_.columns_at)) {
@@ -213,6 +220,7 @@ Frame LammpsDumpSource::frame_of(const SnapshotHeader& h) {
     throw InputError(h.place.at(atoms.lines[static_cast<std::size_t>(out->particle)]) +
                      out->message);
   }
+  refuse_deep_overlap(f, max_overlap_, max_overlap_param_, "", h.place.where(h.place.first_line));
   add_contacts(f, atoms.precision);
   precision_ = atoms.precision;
   f.check(h.place.where(h.place.first_line));

@@ -12,7 +12,6 @@
 #include "delaunay_cells.hpp"
 #include "granpipe/deepest_overlap.hpp"
 #include "granpipe/errors.hpp"
-#include "granpipe/format_number.hpp"
 #include "periodic_images.hpp"
 #include "skin.hpp"
 #include "tangent_cells.hpp"
@@ -30,20 +29,6 @@ void check_frame(const Frame& frame, const std::string& where) {
     throw InputError(where + ": expected at least 4 particles (a pore touches four), got " +
                      std::to_string(frame.size()));
   }
-}
-
-// Pores are the void between spheres that overlap little (soft contacts): deeper, a pore
-// sphere "touching" four spheres is inside some of them, and a Voronoi cell smaller than its
-// sphere gives a local packing fraction above 1 (up to 338 in a random gas of spheres).
-void refuse_deep_overlap(const Frame& frame, const PoreSettings& settings,
-                         const std::string& where) {
-  const auto deepest = deepest_pair_overlap(frame, where);
-  if (!deepest || deepest->fraction <= settings.max_overlap) return;
-  throw InputError(where + ": particles " + std::to_string(frame.id()[deepest->i]) + " and " +
-                   std::to_string(frame.id()[deepest->j]) + " overlap by " +
-                   format_number(deepest->fraction) + " of the smaller radius, expected at most " +
-                   format_number(settings.max_overlap) + " (" + settings.max_overlap_param +
-                   "): pores are the void between spheres that overlap little");
 }
 
 struct Radii {
@@ -242,7 +227,10 @@ PoreMeasurement measure_pores(const Frame& frame, const std::optional<PoreRegion
 PoreMeasurement measure_pores(const Frame& frame, const PoreSettings& settings,
                               const std::string& where) {
   check_frame(frame, where);
-  refuse_deep_overlap(frame, settings, where);
+  // Deeper, a pore sphere "touching" four spheres is inside some of them, and a Voronoi cell
+  // smaller than its sphere gives a local packing fraction above 1 (up to 338 in a random gas).
+  refuse_deep_overlap(frame, settings.max_overlap, settings.max_overlap_param,
+                      ": pores are the void between spheres that overlap little", where);
   return measure_pores(frame, pore_region(frame, settings.region, radii_of(frame).mean, where),
                        settings.tolerance, where, settings.threads);
 }

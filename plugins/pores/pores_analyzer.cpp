@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "granpipe/bin_count.hpp"
+#include "granpipe/deepest_overlap.hpp"
 #include "granpipe/errors.hpp"
 #include "granpipe/format_number.hpp"
 #include "granpipe/random.hpp"
@@ -22,10 +23,8 @@ Schema schema() {
          "are one pore; a cell thinner than tolerance * R is flat and no pore")
       .range(1e-14, 1e-3)
       .unit("particle radii");
-  s.real("max_overlap", 0.05,
-         "deepest overlap of two spheres accepted, as a fraction of the smaller radius (soft-"
-         "sphere data press a few percent); a frame with a deeper one is refused")
-      .range(0.0, 1.0);
+  declare_max_overlap(s, 0.05,
+                      "soft-sphere data press a few percent; a frame with a deeper one is refused");
   s.choice<RegionKind>("region", RegionKind::All,
                        "pores counted: all, or those whose centre lies in the box container "
                        "shrunk by margin (inner)");

@@ -257,3 +257,12 @@ TEST_F(LammpsDataSource, ASphereBelowTheBaseOrAboveTheTopIsRefused) {
             "spheres.data: atom 7 at (1, 0, 3), radius 0.5: expected its centre inside the open "
             "side z_high (z = 2), got it 1 beyond (the container of params.top)");
 }
+
+// Atom 3 on atom 1 was read as two spheres (the packing fraction counting their volume
+// twice), exit 0.
+TEST_F(LammpsDataSource, AtomsOverlappingBeyondMaxOverlapAreRefused) {
+  EXPECT_EQ(refusal(two_spheres("0 0 1", "0 0 1.8")),
+            "spheres.data: particles 1 and 7 overlap by 0.4 of the smaller radius, expected at "
+            "most 0.3 (params.max_overlap)");
+  EXPECT_EQ(refusal(two_spheres("0 0 1", "0 0 1.9")), "accepted");  // 0.2: a soft contact
+}

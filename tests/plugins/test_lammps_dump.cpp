@@ -357,17 +357,30 @@ TEST_F(LammpsDump, ATriclinicBoxIsRefused) {
             "containers have right angles");
 }
 
+// 200 atoms stacked at one point gave a packing fraction of 1.64, exit 0.
+TEST_F(LammpsDump, AtomsOverlappingBeyondMaxOverlapAreRefused) {
+  std::vector<Atom> list = atoms();
+  for (Atom& t : list) t.x.head<2>() *= 0.1;  // atoms 1 and 3 overlap by 0.45 of a radius
+  const std::string text = snapshot(0, list, kPlain, 0, "ff ff ff");
+  EXPECT_EQ(refusal(text),
+            "atoms.dump: timestep 0, line 1: particles 1 and 3 overlap by 0.45049 of the smaller "
+            "radius, expected at most 0.3 (params.max_overlap)");
+  EXPECT_EQ(refusal(text, {{"max_overlap", 0.5}}), "accepted");
+}
+
 TEST_F(LammpsDump, AnAtomOutsideTheStatedContainerIsRefusedWithItsLine) {
   std::vector<Atom> list = atoms();
   for (Atom& t : list) t.x.head<2>() *= 0.1;  // near the axis of a cylinder of radius 2
   list[2].x = {1.9, 0, 6};                    // id 10, radius 0.3, on line 12
   const std::string text = snapshot(0, list, kPlain, 0, "ff ff ff");
-  EXPECT_EQ(refusal(text, {{"cylinder_radius", 2.0}}),
+  EXPECT_EQ(refusal(text, {{"max_overlap", 0.5}, {"cylinder_radius", 2.0}}),
             "atoms.dump: timestep 0, line 12: atom 10 at (1.9, 0, 6), radius 0.3: expected an "
             "overlap with the wall cylinder (radius 2 about (0, 0)) of at most 0.015 (0.05 of "
             "its radius), got 0.2 (the container of params.cylinder_radius)");
-  EXPECT_EQ(refusal(text, {{"cylinder_radius", 2.0}, {"cylinder_axis", {0.2, 0}}}), "accepted");
-  EXPECT_EQ(refusal(text, {{"cylinder_radius", 2.0}, {"top", 5.0}}),
+  EXPECT_EQ(
+      refusal(text, {{"max_overlap", 0.5}, {"cylinder_radius", 2.0}, {"cylinder_axis", {0.2, 0}}}),
+      "accepted");
+  EXPECT_EQ(refusal(text, {{"max_overlap", 0.5}, {"cylinder_radius", 2.0}, {"top", 5.0}}),
             "atoms.dump: timestep 0, line 12: atom 10 at (1.9, 0, 6), radius 0.3: expected its "
             "centre inside the open side z_high (z = 5), got it 1 beyond (the container of "
             "params.top)");
@@ -376,7 +389,7 @@ TEST_F(LammpsDump, AnAtomOutsideTheStatedContainerIsRefusedWithItsLine) {
             "overlap with the wall x_high (x = 1.5) of at most 0.015 (0.05 of its radius), got "
             "0.7 (the container of params.side_walls)");
   // Walls across periodic sides contradict the dump.
-  EXPECT_EQ(refusal(snapshot(0, atoms(), kPlain), {{"cylinder_radius", 2.0}}),
+  EXPECT_EQ(refusal(snapshot(0, atoms(), kPlain), {{"max_overlap", 0.5}, {"cylinder_radius", 2.0}}),
             "atoms.dump: timestep 0, line 5: params.cylinder_radius: expected no walls across "
             "the periodic x sides of the box, got a cylinder");
 }

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "granpipe/frame.hpp"
+#include "granpipe/params.hpp"
 
 namespace granpipe {
 
@@ -20,5 +21,14 @@ struct PairOverlap {
 // after `where` as find_contacts_by_distance does (a periodic side too short, a box absurdly
 // large for the particles).
 std::optional<PairOverlap> deepest_pair_overlap(const Frame& frame, const std::string& where);
+
+// Declares max_overlap (real in [0, 1], default `default_value`): the deepest overlap of two
+// particles accepted, over the smaller radius; one name and text in every plugin that has it.
+void declare_max_overlap(Schema& schema, double default_value, const std::string& what);
+
+// Throws InputError "<where>: particles <id> and <id> overlap by 0.4 of the smaller radius,
+// expected at most 0.05 (<param>)<why>" when two particles overlap deeper than max_overlap.
+void refuse_deep_overlap(const Frame& frame, double max_overlap, const std::string& param,
+                         const std::string& why, const std::string& where);
 
 }  // namespace granpipe
