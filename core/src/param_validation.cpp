@@ -45,13 +45,10 @@ bool as_integer(const nlohmann::json& v, std::int64_t& out) {
   return false;
 }
 
-namespace {
-// "a.b" covers "a.b", "a.b.c" and "a.b[0]", not "a.bc".
 bool covers(const std::string& outer, const std::string& path) {
   return path.compare(0, outer.size(), outer) == 0 &&
          (path.size() == outer.size() || path[outer.size()] == '.' || path[outer.size()] == '[');
 }
-}  // namespace
 
 std::string JsonLocation::str() const {
   if (overrides) {

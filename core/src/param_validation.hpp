@@ -10,6 +10,9 @@
 
 namespace granpipe {
 
+// Whether JSON path `outer` holds `path`: "a.b" covers "a.b", "a.b.c" and "a.b[0]", not "a.bc".
+bool covers(const std::string& outer, const std::string& path);
+
 // A value put into the pipeline after reading its file, by `--set path=value` or by a
 // sweep: a message about it (or about what it holds) names its origin, not the file.
 struct Override {

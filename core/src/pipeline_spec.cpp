@@ -70,6 +70,20 @@ Override apply_set(json& root, const std::string& assignment) {
   return {target.path, where};
 }
 
+// A --set of a parameter the sweep sets at every point was dropped without a word (the run
+// went on with the sweep's values, the pipeline.json recording none of the --set's).
+void refuse_sets_the_sweep_replaces(const std::vector<Override>& sets,
+                                    const std::vector<std::string>& sweep_paths) {
+  for (const Override& set : sets) {
+    for (const std::string& swept : sweep_paths) {
+      if (set.origin.empty() || !covers(swept, set.path)) continue;
+      throw InputError(set.origin + ": expected a value the sweep leaves alone, got " + swept +
+                       ", which the sweep sets at every point; give the sweep the values " +
+                       "instead: --set 'sweep.parameters." + swept + "=[...]'");
+    }
+  }
+}
+
 std::uint64_t read_seed(const json& root, const JsonLocation& at) {
   if (!root.contains("seed")) return 1;
   const json& s = root["seed"];
@@ -254,8 +268,8 @@ Pipeline Pipeline::parse(const std::string& text, const std::string& origin,
   std::set<std::string> producers{"source"};
   for (const PluginSpec& a : impl->analyzers) producers.insert(a.name);
   check_report_spec(root, top, producers, impl->sweep_paths);
-  // A swept value comes from the sweep, even where a --set put one before: from the file,
-  // or from the --set that wrote the sweep.
+  refuse_sets_the_sweep_replaces(impl->overrides, impl->sweep_paths);
+  // A swept value comes from the sweep: from the file, or from the --set that wrote it.
   const JsonLocation swept_at = top.child("sweep").child("parameters");
   std::vector<Override> swept;
   for (const auto& path : impl->sweep_paths)

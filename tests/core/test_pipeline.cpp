@@ -297,13 +297,14 @@ TEST(PipelineErrors, SetOverridesAreValidatedToo) {
   EXPECT_EQ(error_of(R"({"source": {"plugin": "random", "params": {"n": 0}}})",
                      {"source.params.frames=2"}),
             "p.json: source.params.n: expected an integer in [1, 1000], got 0");
-  // The sweep's value replaces the --set's.
+  // A --set of a swept parameter was dropped without a word, the sweep's values run.
   EXPECT_EQ(
       error_of(
           R"({"source": {"plugin": "random"}, "sweep": {"parameters": {"source.params.n": [5000]}}})",
           {"source.params.n=5"}),
-      "p.json: source.params.n: expected an integer in [1, 1000], got 5000 (sweep point 0: "
-      "source.params.n = 5000)");
+      "--set source.params.n=5: expected a value the sweep leaves alone, got source.params.n, "
+      "which the sweep sets at every point; give the sweep the values instead: --set "
+      "'sweep.parameters.source.params.n=[...]'");
 }
 
 // A --set that put a non-object where a sweep assigns into it was blamed on the sweep
