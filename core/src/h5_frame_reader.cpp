@@ -433,7 +433,16 @@ void FrameReader::Impl::map_foreign_elements() {
   // Other tools may sample elements on their own clocks; an optional element counts
   // only when it has a sample at every frame's step.
   const std::vector<std::int64_t> frame_steps(steps.begin(), steps.begin() + info.frames);
-  std::erase_if(columns, [&](ElementColumn& c) { return !c.element.map_by_step(frame_steps); });
+  std::erase_if(columns, [&](ElementColumn& c) {
+    if (c.element.map_by_step(frame_steps)) return false;
+    // Sizes are no option: left out, the default radius stood for the file's, exit 0.
+    if (c.property.name == "radius") {
+      throw h5::Error(c.element.path() +
+                      ": expected a radius at every step of the positions, got one on a clock of "
+                      "its own that misses some");
+    }
+    return true;
+  });
   if (edges && !edges->map_by_step(frame_steps)) {
     throw h5::Error(edges->path() + ": the box is not stored at every step of the positions");
   }

@@ -409,6 +409,26 @@ TEST_F(FrameStore, ReadsAnotherToolsFile) {
   }
 }
 
+// A radius sampled on a clock of its own (steps 10 and 30 of 10, 20, 30) was left out as an
+// optional element is, and the default radius read for every particle, exit 0.
+TEST_F(FrameStore, ARadiusMissingAtSomeStepsIsRefused) {
+  const fs::path p = file("foreign_radius.h5");
+  write_foreign(p, false);
+  {
+    Id f(H5Fopen(p.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
+    Id radius(make_group(f, "particles/atoms/radius"));
+    const double r[2][4] = {{0.3, 0.3, 0.3, 0.3}, {0.3, 0.3, 0.3, 0.3}};
+    const std::int64_t steps[2] = {10, 30};
+    put_dataset(radius, "value", H5T_NATIVE_DOUBLE, {2, 4}, r);
+    put_dataset(radius, "step", H5T_NATIVE_INT64, {2}, steps);
+  }
+  EXPECT_EQ(test::input_error_of([&] { FrameReader r(p, "", 0.5); }),
+            p.string() +
+                ": /particles/atoms/radius/value: expected a radius at every step of the "
+                "positions, "
+                "got one on a clock of its own that misses some");
+}
+
 // H5MD boxes have no origin: walls go where the particles are, at [0, L] or [-L/2, L/2].
 TEST_F(FrameStore, WallsOfAnotherToolsCentredBoxHoldItsParticles) {
   const fs::path centred = file("centred.h5");
