@@ -39,7 +39,10 @@ def configuration_svg(plt, frame):
     from matplotlib.patches import Circle
     x, r, columns, contacts, step = frame
     if x.shape[1] == 3:
-        middle = 0.5 * (x[:, 1].min() + x[:, 1].max())
+        # The slab through the centre nearest the middle: between two layers of a crystal
+        # the middle itself held no centre, and the view was empty.
+        halfway = 0.5 * (x[:, 1].min() + x[:, 1].max())
+        middle = x[np.argmin(np.abs(x[:, 1] - halfway)), 1]
         depth = x[:, 1] - middle
         shown = np.abs(depth) < r.mean()
         section = np.sqrt(np.maximum(r**2 - depth**2, 0.0))
