@@ -76,6 +76,12 @@ std::optional<Element> Element::open(hid_t file, const std::string& path) {
   return e;
 }
 
+std::optional<Element::ShortClock> Element::short_clock() const {
+  if (!timed_ || samples_ >= shape_[0]) return std::nullopt;
+  const std::string group = data_path_.substr(0, data_path_.size() - std::string("/value").size());
+  return ShortClock{group + (steps_.size() == samples_ ? "/step" : "/time"), samples_};
+}
+
 Shape Element::item() const { return timed_ ? Shape(shape_.begin() + 1, shape_.end()) : shape_; }
 
 void Element::map_identity() { rows_.clear(); }

@@ -24,6 +24,14 @@ class Element {
   Shape item() const;
   const std::vector<std::int64_t>& steps() const { return steps_; }
   const std::vector<double>& times() const { return times_; }  // empty: no time stored
+  // H5MD gives every sample a step (and a time, when stored): only a writer stopped
+  // mid-sample leaves a clock shorter than value. The short clock's dataset and its rows.
+  struct ShortClock {
+    std::string path;
+    hsize_t rows;
+  };
+  std::optional<ShortClock> short_clock() const;
+  hsize_t value_rows() const { return timed_ ? shape_[0] : 1; }
 
   // Frame k is sample k (elements sampled with the frames, e.g. hard-linked clocks).
   void map_identity();

@@ -186,6 +186,9 @@ struct FrameReader::Impl {
   void open_container(hsize_t& frames);
   hsize_t open_contacts(hsize_t& frames);
   void settle_frames();
+  void check_clocks() const;
+  void check_steps_written() const;
+  void keep_frames_held(hsize_t& frames, hsize_t rows, const std::string& path) const;
   void map_foreign_elements();
   Frame read(long k) const;
   std::vector<double> edge_lengths(long k) const;
@@ -346,7 +349,7 @@ hsize_t FrameReader::Impl::rows(const std::string& path, const h5::Shape& item, 
 void FrameReader::Impl::open_container(hsize_t& frames) {
   ContainerSeries x;
   auto series = [&](const std::string& path, const h5::Shape& item, h5::Object& out) {
-    frames = std::min(frames, rows(path, item, out));
+    keep_frames_held(frames, rows(path, item, out), path);
   };
   series(L::kShape, {}, x.shape);
   series(L::kLo, {3}, x.lo);
@@ -363,8 +366,8 @@ void FrameReader::Impl::open_container(hsize_t& frames) {
 // every column holds.
 hsize_t FrameReader::Impl::open_contacts(hsize_t& frames) {
   h5::Object offset, count;
-  frames = std::min(frames, rows(L::kContactOffset, {}, offset));
-  frames = std::min(frames, rows(L::kContactCount, {}, count));
+  keep_frames_held(frames, rows(L::kContactOffset, {}, offset), L::kContactOffset);
+  keep_frames_held(frames, rows(L::kContactCount, {}, count), L::kContactCount);
   contact_offset = h5::read_integer_rows(offset.id(), L::kContactOffset, 0, frames);
   contact_count = h5::read_integer_rows(count.id(), L::kContactCount, 0, frames);
   h5::Object group = h5::open_group(file.id(), L::kContacts);
@@ -392,18 +395,61 @@ hsize_t FrameReader::Impl::open_contacts(hsize_t& frames) {
 
 // A granpipe file: frame k is row k of everything, but a killed writer may leave some
 // datasets a frame ahead of others, and rows it extended but never committed.
+// A file no writer holds open has a step and a time for every sample: a short clock would
+// read as fewer frames, without a word.
+void FrameReader::Impl::check_clocks() const {
+  auto check = [](const h5::Element& e) {
+    const auto clock = e.short_clock();
+    if (!clock) return;
+    throw h5::Error(clock->path + ": expected a row for each of the " +
+                    std::to_string(e.value_rows()) + " samples of " + e.path() + ", got " +
+                    std::to_string(clock->rows) + " (damaged file)");
+  };
+  check(*position);
+  if (edges) check(*edges);
+  for (const ElementColumn& c : columns) check(c.element);
+  for (const ElementColumn& o : observables) check(o.element);
+}
+
+// granpipe writes every element of a frame before it marks the file complete: there, a
+// frame whose step was never written or an element short of the positions is damage that
+// would read as fewer frames, without a word. A killed writer's file keeps the frames
+// every element holds.
+void FrameReader::Impl::check_steps_written() const {
+  for (std::size_t k = 0; k < static_cast<std::size_t>(info.frames); ++k) {
+    if (steps[k] != L::kUnwrittenStep) continue;
+    throw h5::Error(position->path() + ": frame " + std::to_string(k) +
+                    ": expected the step of a written frame in a complete file, got none "
+                    "(damaged file)");
+  }
+}
+
+void FrameReader::Impl::keep_frames_held(hsize_t& frames, hsize_t rows,
+                                         const std::string& path) const {
+  if (info.complete && rows < static_cast<hsize_t>(info.frames)) {
+    throw h5::Error(path + ": expected the " + std::to_string(info.frames) +
+                    " frames of the positions in a complete file, got " + std::to_string(rows) +
+                    " (damaged file)");
+  }
+  frames = std::min(frames, rows);
+}
+
 void FrameReader::Impl::settle_frames() {
+  if (info.complete) {
+    check_clocks();
+    check_steps_written();
+  }
   auto frames = static_cast<hsize_t>(info.frames);
   for (ElementColumn& c : columns) {
-    frames = std::min<hsize_t>(frames, c.element.samples());
+    keep_frames_held(frames, c.element.samples(), c.element.path());
     c.element.map_identity();
   }
   for (ElementColumn& o : observables) {
-    frames = std::min<hsize_t>(frames, o.element.samples());
+    keep_frames_held(frames, o.element.samples(), o.element.path());
     o.element.map_identity();
   }
   if (edges) {
-    frames = std::min<hsize_t>(frames, edges->samples());
+    keep_frames_held(frames, edges->samples(), edges->path());
     edges->map_identity();
   }
   open_container(frames);
@@ -481,6 +527,7 @@ void FrameReader::Impl::open(const std::string& group) {
     restore_order(file.id(), L::kParticleColumnsAttr, columns);
     restore_order(file.id(), L::kObservablesAttr, observables);
   } else {
+    if (info.complete) check_clocks();
     map_foreign_elements();
   }
   for (const ElementColumn& c : columns) info.columns.push_back(c.property);

@@ -332,6 +332,18 @@ void put_string_attribute(hid_t loc, const char* name, const std::vector<std::st
   H5Awrite(a, type, buffer.data());
 }
 
+// The reader's refusal of `p`, without the file name it starts with.
+std::string reader_error(const fs::path& p) {
+  try {
+    FrameReader r(p);
+    for (long k = 0; k < r.frames(); ++k) r.read(k);
+  } catch (const InputError& e) {
+    const std::string m = e.what(), prefix = p.string() + ": ";
+    return m.starts_with(prefix) ? m.substr(prefix.size()) : m;
+  }
+  return "no error";
+}
+
 // An H5MD file as another MD code writes it: float positions, explicit clocks, a fixed
 // box, species fixed in time, velocities sampled every other frame, no id, no radius.
 // `z_shift` moves every particle along the walled axis z (edge 6).
@@ -427,6 +439,30 @@ TEST_F(FrameStore, ARadiusMissingAtSomeStepsIsRefused) {
                 ": /particles/atoms/radius/value: expected a radius at every step of the "
                 "positions, "
                 "got one on a clock of its own that misses some");
+}
+
+// A clock shorter than its values read as fewer frames (3 positions, 2 times: 2 frames),
+// exit 0. H5MD gives every sample its step and time.
+TEST_F(FrameStore, AnotherToolsClockShorterThanItsValuesIsRefused) {
+  for (const char* clock : {"step", "time"}) {
+    const fs::path p = file(std::string("short_") + clock + ".h5");
+    write_foreign(p, false);
+    {
+      Id f(H5Fopen(p.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
+      Id position(H5Gopen2(f, "particles/atoms/position", H5P_DEFAULT));
+      ASSERT_GE(H5Ldelete(position, clock, H5P_DEFAULT), 0);
+      const std::int64_t steps[2] = {10, 20};
+      const double times[2] = {0.5, 1.0};
+      if (std::string(clock) == "step") {
+        put_dataset(position, "step", H5T_NATIVE_INT64, {2}, steps);
+      } else {
+        put_dataset(position, "time", H5T_NATIVE_DOUBLE, {2}, times);
+      }
+    }
+    EXPECT_EQ(reader_error(p), "/particles/atoms/position/" + std::string(clock) +
+                                   ": expected a row for each of the 3 samples of "
+                                   "/particles/atoms/position/value, got 2 (damaged file)");
+  }
 }
 
 // H5MD boxes have no origin: walls go where the particles are, at [0, L] or [-L/2, L/2].
@@ -568,12 +604,20 @@ void set_rows(hid_t file, const std::string& path, hsize_t rows) {
   ASSERT_GE(H5Dset_extent(ds, dims), 0) << path;
 }
 
-TEST_F(FrameStore, CountsOnlyFramesPresentInEveryDataset) {
+// The mark close() sets on a file its writer finished.
+void mark_complete(hid_t file, int complete) {
+  Id group(H5Gopen2(file, "/granpipe", H5P_DEFAULT));
+  Id attr(H5Aopen(group, "complete", H5P_DEFAULT));
+  ASSERT_GE(H5Awrite(attr, H5T_NATIVE_INT, &complete), 0);
+}
+
+TEST_F(FrameStore, CountsOnlyFramesPresentInEveryDatasetOfAnUnfinishedFile) {
   // What a writer killed inside a frame can leave: some datasets a row ahead.
   const Optional none{false, false, false, false};
   const fs::path p = write("uneven.h5", 3, 2, 4, none);
   {
     Id f(H5Fopen(p.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
+    mark_complete(f, 0);
     set_rows(f, "/particles/all/position/value", 4);
     set_rows(f, "/granpipe/container/lo", 4);
   }
@@ -587,12 +631,39 @@ TEST_F(FrameStore, CountsOnlyFramesPresentInEveryDataset) {
   expect_same_frame(make_frame(1, 2, 4, none), r.read(1));
 }
 
+// In a finished file every element holds every frame: one short of the positions read as
+// fewer frames, exit 0.
+TEST_F(FrameStore, AnElementShortOfTheFramesOfAFinishedFileIsRefused) {
+  const Optional none{false, false, false, false};
+  for (const char* path : {"/particles/all/radius/value", "/granpipe/container/lo",
+                           "/particles/all/box/edges/value"}) {
+    const fs::path p = write("short.h5", 3, 2, 4, none);
+    {
+      Id f(H5Fopen(p.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
+      set_rows(f, path, 2);
+    }
+    EXPECT_EQ(reader_error(p), std::string(path) +
+                                   ": expected the 3 frames of the positions in a complete "
+                                   "file, got 2 (damaged file)");
+    fs::remove(p);
+  }
+  const fs::path p = write("short_step.h5", 3, 2, 4, none);
+  {
+    Id f(H5Fopen(p.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
+    set_rows(f, "/particles/all/position/step", 2);
+  }
+  EXPECT_EQ(reader_error(p),
+            "/particles/all/position/step: expected a row for each of the 3 samples of "
+            "/particles/all/position/value, got 2 (damaged file)");
+}
+
 TEST_F(FrameStore, RowsWhoseStepWasNeverWrittenAreNotFrames) {
   // Every dataset holds a fourth row, but the step that commits it was never written.
   const Optional none{false, false, false, false};
   const fs::path p = write("uncommitted.h5", 3, 3, 4, none);
   {
     Id f(H5Fopen(p.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
+    mark_complete(f, 0);
     for (const char* path :
          {"/particles/all/position/value", "/particles/all/position/step",
           "/particles/all/position/time", "/particles/all/species/value", "/particles/all/id/value",
@@ -604,9 +675,20 @@ TEST_F(FrameStore, RowsWhoseStepWasNeverWrittenAreNotFrames) {
       set_rows(f, path, 4);
     }
   }
-  FrameReader r(p);
-  EXPECT_EQ(r.frames(), 3);
-  expect_same_frame(make_frame(2, 3, 4, none), r.read(2));
+  {
+    FrameReader r(p);
+    EXPECT_EQ(r.frames(), 3);
+    expect_same_frame(make_frame(2, 3, 4, none), r.read(2));
+  }
+  // Finished, the file has no unwritten frame: a step of INT64_MIN (the writer's mark) in
+  // it is damage, not the end of the frames.
+  {
+    Id f(H5Fopen(p.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
+    mark_complete(f, 1);
+  }
+  EXPECT_EQ(reader_error(p),
+            "/particles/all/position/value: frame 3: expected the step of a written frame in a "
+            "complete file, got none (damaged file)");
 }
 
 // ---- Damaged and missing files ----
