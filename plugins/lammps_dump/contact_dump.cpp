@@ -10,6 +10,7 @@
 #include "granpipe/errors.hpp"
 #include "granpipe/format_number.hpp"
 #include "granpipe/text_words.hpp"
+#include "position_precision.hpp"
 #include "snapshot_header.hpp"
 #include "wall_partner.hpp"
 
@@ -92,6 +93,29 @@ void check_touching(const Entry& e, const Frame& f, std::int64_t i, std::int64_t
                    "): give only contacts (LAMMPS: compute pair/local ... cutoff radius)");
 }
 
+// The overlap a pair's own column states (LIGGGHTS' delta, LAMMPS' dist) must be the one
+// its atoms' positions give: a column of another snapshot or of another quantity would
+// store a contact the configuration does not hold. They agree to the rounding of the
+// positions and of the word written.
+double pair_overlap(const Entry& e, const ContactColumns& c, const Frame& f, std::int64_t i,
+                    std::int64_t j, double distance, double rounding) {
+  const double reach = f.radius()[i] + f.radius()[j];
+  const int column = c.overlap >= 0 ? c.overlap : c.distance;
+  if (column < 0) return reach - distance;
+  const bool is_overlap = c.overlap >= 0;
+  const double stated = e.value(column), expected = is_overlap ? reach - distance : distance;
+  const double allowed =
+      rounding + printed_rounding(e.words[static_cast<std::size_t>(column)]) + 1e-9 * reach;
+  if (std::abs(stated - expected) > allowed) {
+    throw InputError(e.at() + "expected " + (is_overlap ? "an overlap" : "a distance") + " of " +
+                     format_number(expected) + " in column " + std::to_string(column + 1) +
+                     " (atoms " + std::to_string(f.id()[i]) + " and " + std::to_string(f.id()[j]) +
+                     " as the snapshot places them, to within " + format_number(allowed) +
+                     "), got " + format_number(stated));
+  }
+  return is_overlap ? stated : reach - stated;
+}
+
 ContactRow pair_row(const Entry& e, const ContactColumns& c, const Frame& f,
                     const std::string& frame_place, double rounding) {
   ContactRow r;
@@ -102,11 +126,9 @@ ContactRow pair_row(const Entry& e, const ContactColumns& c, const Frame& f,
                      std::to_string(f.id()[r.i]) + " twice");
   }
   const Eigen::Vector3d d = separation(f, r.i, r.j);
-  const double ri = f.radius()[r.i], rj = f.radius()[r.j], distance = d.norm();
+  const double ri = f.radius()[r.i], distance = d.norm();
   check_touching(e, f, r.i, r.j, distance, rounding);
-  r.overlap = c.overlap >= 0    ? e.value(c.overlap)
-              : c.distance >= 0 ? ri + rj - e.value(c.distance)
-                                : ri + rj - distance;
+  r.overlap = pair_overlap(e, c, f, r.i, r.j, distance, rounding);
   r.normal = e.vector(c.normal);
   r.tangential = tangential_of(e, c, r.normal);
   // The middle of the overlap, on the line of the centres, as the dem source places it.

@@ -28,6 +28,11 @@ PrintedDigits printed_digits(std::string_view word) {
   return {significant, place + power};
 }
 
+double printed_rounding(std::string_view word) {
+  const PrintedDigits d = printed_digits(word);
+  return d.significant == 0 ? 0.0 : 0.5 * std::pow(10.0, d.exponent - d.significant + 1);
+}
+
 void PositionPrecision::add(int axis, std::string_view word) {
   const PrintedDigits d = printed_digits(word);
   if (d.significant == 0) return;

@@ -17,6 +17,8 @@ struct PrintedDigits {
   int exponent = 0;  // power of ten of the first significant digit
 };
 PrintedDigits printed_digits(std::string_view word);
+// Half a unit of the last digit written: how far the value the writer held may be from it.
+double printed_rounding(std::string_view word);
 
 // The most digits seen over a snapshot's positions and the largest magnitude per axis.
 class PositionPrecision {

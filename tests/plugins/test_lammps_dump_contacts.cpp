@@ -229,6 +229,41 @@ TEST_F(LammpsDumpContacts, APairThatDoesNotTouchIsRefused) {
   EXPECT_EQ(frames(two_atoms("2.0000000000000004"))[0].contacts->rows(), 1);
 }
 
+// A pair's own distance or overlap column was never held against the positions: LAMMPS'
+// dist -5 for atoms 1 apart stored an overlap of 6, exit 0. It agrees to the rounding of
+// the positions and of the word written, or the line is refused.
+TEST_F(LammpsDumpContacts, APairsDistanceOrOverlapMustBeWhereItsAtomsAre) {
+  const std::string atoms =
+      "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n2\nITEM: BOX BOUNDS pp pp ff\n0 10\n0 10\n0 "
+      "10\nITEM: ATOMS id type x y z radius\n1 1 1.000000 5 2 0.5\n2 1 1.999000 5 2 0.5\n";
+  auto one_pair = [&](const std::string& columns, const std::string& entry) {
+    const bool lammps = columns.find("patom1") != std::string::npos;
+    return nlohmann::json{
+        {"pair_format", lammps ? "lammps" : "liggghts"},
+        {"file", write(atoms, "atoms.dump")},
+        {"pair_file",
+         write("ITEM: TIMESTEP\n0\nITEM: NUMBER OF ENTRIES\n1\nITEM: BOX BOUNDS pp pp ff\n0 "
+               "10\n0 10\n0 10\nITEM: ENTRIES c_1[1] c_1[2] c_1[3] c_1[4] c_1[5] c_1[6] "
+               "c_1[7]\n" +
+                   entry + "\n",
+               "pairs.dump")},
+        {"pair_columns", columns}};
+  };
+  auto overlap = [&](const nlohmann::json& params) {
+    return frames(params)[0].contacts->get<Eigen::ArrayXd>("overlap")[0];
+  };
+  const std::string lammps = "patom1 patom2 dist fx fy fz eng";
+  const std::string liggghts = "id force_normal delta";
+  EXPECT_EQ(refusal(one_pair(lammps, "1 2 -5 -1.5 0 0 0")),
+            "pairs.dump: timestep 0, line 10: expected a distance of 0.999 in column 3 (atoms 1 "
+            "and 2 as the snapshot places them, to within 0.500002), got -5");
+  EXPECT_EQ(refusal(one_pair(liggghts, "1 2 0 -1.5 0 0 0.7")),
+            "pairs.dump: timestep 0, line 10: expected an overlap of 0.001 in column 7 (atoms 1 "
+            "and 2 as the snapshot places them, to within 0.0500017), got 0.7");
+  EXPECT_NEAR(overlap(one_pair(lammps, "1 2 0.999 -1.5 0 0 0")), 0.001, 1e-12);
+  EXPECT_NEAR(overlap(one_pair(liggghts, "1 2 0 -1.5 0 0 0.001")), 0.001, 1e-12);
+}
+
 TEST_F(LammpsDumpContacts, PositionsPrintedWithPercentGAreWarnedAbout) {
   const std::string header =
       "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n2\nITEM: BOX BOUNDS pp pp ff\n0 10\n0 10\n0 "
