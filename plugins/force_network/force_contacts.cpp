@@ -1,9 +1,28 @@
 #include "force_contacts.hpp"
 
+#include <cmath>
+
 #include "granpipe/errors.hpp"
+#include "granpipe/format_number.hpp"
 #include "granpipe/loaded_pair_contacts.hpp"
 
 namespace granpipe::force_network {
+
+namespace {
+
+// A force PDF is of |F_n|/<F_n>: a magnitude or a mean beyond the largest double has none.
+[[noreturn]] void refuse_unbounded_force(const Eigen::ArrayXd& magnitude,
+                                         const std::string& where) {
+  Eigen::Index row = 0;
+  const bool all_finite = magnitude.allFinite();
+  if (all_finite) magnitude.maxCoeff(&row);
+  while (!all_finite && std::isfinite(magnitude[row])) ++row;
+  throw InputError(where + ": contact " + std::to_string(row) +
+                   ": expected normal forces whose mean is a finite number, got |F_n| = " +
+                   format_number(magnitude[row]));
+}
+
+}  // namespace
 
 ForceContacts force_contacts(const Frame& frame, const ForceSettings& settings,
                              const std::string& where) {
@@ -17,7 +36,11 @@ ForceContacts force_contacts(const Frame& frame, const ForceSettings& settings,
   }
   ForceContacts out;
   out.loaded = static_cast<long>(loaded_pair_contacts(frame, where).size());
-  out.magnitude = frame.contacts->get<Coordinates>("normal_force").rowwise().norm();
+  // stableNorm: the plain norm squares the components, and a force of 1e160 became
+  // infinite, then every f = |F_n|/<F_n> NaN.
+  out.magnitude =
+      frame.contacts->get<Coordinates>("normal_force").matrix().rowwise().stableNorm().array();
+  if (!out.magnitude.allFinite()) refuse_unbounded_force(out.magnitude, where);
   const IndexArray& j = frame.contact_j();
   double sum = 0.0;
   for (Eigen::Index row = 0; row < j.size(); ++row) {
@@ -30,6 +53,7 @@ ForceContacts force_contacts(const Frame& frame, const ForceSettings& settings,
     }
   }
   if (!out.samples.empty()) out.mean = sum / static_cast<double>(out.samples.size());
+  if (!std::isfinite(sum)) refuse_unbounded_force(out.magnitude, where);
   return out;
 }
 

@@ -158,6 +158,31 @@ TEST(ForceNetwork, PdfIsANormalisedDensity) {
   EXPECT_NEAR(pdf.column("f_hi").back(), 2.4, 1e-12);  // largest f = 6 / 2.5, whole bins of 0.2
 }
 
+// f = |F_n|/<F_n> does not depend on the unit of force. Forces of 1e160 along x and y
+// squared past the largest double: every f NaN and a message of a NaN bin_width.
+TEST(ForceNetwork, ThePdfDoesNotDependOnTheUnitOfForce) {
+  Frame unit = frame_of(kTable), huge = frame_of(kTable);
+  auto& force = huge.contacts->get<Coordinates>("normal_force");
+  unit.contacts->get<Coordinates>("normal_force").col(1) =
+      unit.contacts->get<Coordinates>("normal_force").col(0);
+  force.col(0) *= 1e160;
+  force.col(1) = force.col(0);
+  const Outcome small = run(unit);
+  const Table& a = small.results.tables().at("pdf");
+  const Outcome big = run(huge);
+  const Table& b = big.results.tables().at("pdf");
+  ASSERT_EQ(a.rows(), b.rows());
+  for (std::size_t k = 0; k < a.rows(); ++k) {
+    EXPECT_EQ(a.column("count")[k], b.column("count")[k]);
+    EXPECT_NEAR(a.column("density")[k], b.column("density")[k], 1e-12);
+  }
+  EXPECT_NEAR(per_frame(big, "mean_force") / 1e160, 2.5 * std::sqrt(2.0), 1e-12);
+  force.row(5).setConstant(1.7e308);  // the wall row: its magnitude is past the largest double
+  EXPECT_EQ(refusal(huge),
+            "frame 0: contact 5: expected normal forces whose mean is a finite number, got "
+            "|F_n| = inf");
+}
+
 // Too few samples: the fit is undefined (NaN, not 0), every measured statistic finite.
 TEST(ForceNetwork, TooFewSamplesAreNotFittedAndOnlyTheFitIsNaN) {
   const Outcome r = run(frame_of(kTable));
