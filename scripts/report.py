@@ -16,9 +16,11 @@ import sys
 
 from paper_values import PaperValues, paper_problem
 from report_configuration import configuration_section
-from report_parts import TABLE_ROWS_SHOWN, html_table, number, table_section, text, texts, with_error
+from report_h5 import (Damaged, attr_number, attr_numbers, attr_text, attr_texts, column, member,
+                       scalar)
+from report_parts import TABLE_ROWS_SHOWN, html_table, number, table_section, with_error
 from report_plots import plots_section
-from report_sweep import sweep_section
+from report_sweep import report_problem, sweep_section
 from run_manifest import note_written
 
 
@@ -30,53 +32,63 @@ def refuse(message):
 def scalars_section(group):
     rows = []
     for name, item in group.items():
-        if text(item.attrs.get("kind", "")) != "scalar":
+        if attr_text(item, "kind", "") != "scalar":
             continue
-        value = float(item[()])
-        rows.append([name, with_error(value, float(item.attrs["uncertainty"])),
-                     text(item.attrs["unit"]), text(item.attrs["doc"])])
+        value = scalar(group, name)
+        rows.append([name, with_error(value, float(attr_number(item, "uncertainty"))),
+                     attr_text(item, "unit"), attr_text(item, "doc")])
     return html_table(["scalar", "value", "unit", "what"], rows) if rows else ""
 
 
 def fit_section(name, group):
-    values, errors = group["values"][()], group["errors"][()]
-    rows = [[p, with_error(float(v), float(e))]
-            for p, v, e in zip(texts(group.attrs["names"]), values, errors)]
-    chi2, dof = float(group.attrs["chi2"]), int(group.attrs["dof"])
-    return (f"<h4>fit {html.escape(name)}</h4><p><code>{html.escape(text(group.attrs['model']))}"
+    names = attr_texts(group, "names")
+    values = column(group, "values", len(names), "one per name in attribute names")
+    errors = column(group, "errors", len(names), "one per name in attribute names")
+    rows = [[p, with_error(v, e)] for p, v, e in zip(names, values, errors)]
+    chi2, dof = float(attr_number(group, "chi2")), attr_number(group, "dof", integer=True)
+    return (f"<h4>fit {html.escape(name)}</h4><p><code>{html.escape(attr_text(group, 'model'))}"
             f"</code> (χ² = {number(chi2)}, {dof} degrees of freedom)</p>"
             + html_table(["parameter", "value"], rows))
 
 
 def histogram_section(name, group):
-    edges, values, errors = group["edges"][()], group["values"][()], group["errors"][()]
-    rows = [[f"{number(float(edges[k]))} – {number(float(edges[k + 1]))}",
-             with_error(float(values[k]), float(errors[k]))] for k in range(len(values))]
-    return (f"<h4>histogram {html.escape(name)}</h4><p>{html.escape(text(group.attrs['doc']))}</p>"
-            + html_table([text(group.attrs["xlabel"]), "value"], rows[:TABLE_ROWS_SHOWN]))
+    values = column(group, "values")
+    edges = column(group, "edges", len(values) + 1, "one more than values")
+    # Errors are optional: a histogram of counts without them is shown without ±.
+    errors = (column(group, "errors", len(values), "one per value") if "errors" in group
+              else [float("nan")] * len(values))
+    rows = [[f"{number(edges[k])} – {number(edges[k + 1])}", with_error(values[k], errors[k])]
+            for k in range(len(values))]
+    return (f"<h4>histogram {html.escape(name)}</h4><p>{html.escape(attr_text(group, 'doc'))}</p>"
+            + html_table([attr_text(group, "xlabel"), "value"], rows[:TABLE_ROWS_SHOWN]))
+
+
+SECTIONS = {"fit": fit_section, "histogram": histogram_section}
 
 
 def producer_section(plt, path, group, paper):
     parts = [f"<h3 id=\"{html.escape(path)}\">{html.escape(path)}</h3>",
              plots_section(plt, [("", group)], path, paper), scalars_section(group)]
     for name, item in group.items():
-        kind = text(item.attrs.get("kind", ""))
-        if kind == "fit":
-            parts.append(fit_section(name, item))
-        elif kind == "table":
+        kind = attr_text(item, "kind", "")
+        if kind == "table":
             parts.append(table_section(path, name, item))
-        elif kind == "histogram":
-            parts.append(histogram_section(name, item))
+        elif kind in SECTIONS:
+            parts.append(SECTIONS[kind](name, member(group, name, "group")))
     return "".join(parts)
 
 
-def provenance_section(attrs, partial):
-    keys = ["pipeline_name", "granpipe_version", "git_commit", "seed", "threads", "started",
-            "wall_seconds"]
-    rows = [[k, text(attrs[k])] for k in keys if k in attrs]
-    if "stage_names" in attrs:  # where the time went (summed over a sweep's points)
-        rows += [[f"seconds in {name}", number(float(seconds))]
-                 for name, seconds in zip(texts(attrs["stage_names"]), attrs["stage_seconds"])]
+PROVENANCE = [("pipeline_name", attr_text), ("granpipe_version", attr_text),
+              ("git_commit", attr_text), ("seed", attr_number), ("threads", attr_number),
+              ("started", attr_text), ("wall_seconds", attr_number)]
+
+
+def provenance_section(results, partial):
+    rows = [[k, str(read(results, k))] for k, read in PROVENANCE if k in results.attrs]
+    if "stage_names" in results.attrs:  # where the time went (summed over a sweep's points)
+        names = attr_texts(results, "stage_names")
+        seconds = attr_numbers(results, "stage_seconds", len(names), "one per stage")
+        rows += [[f"seconds in {name}", number(s)] for name, s in zip(names, seconds)]
     state = ("<p class=note>this run has not finished (or was stopped): the results so far, "
              "from results.partial.h5</p>" if partial else "")
     return "<h2>Provenance</h2>" + state + html_table(None, rows)
@@ -132,8 +144,7 @@ def pyplot():
 
 def read_run_pipeline(run):
     """(text, object) of the run's pipeline.json; refused in one line where the page could not
-    be drawn from it: not UTF-8, no JSON, no object, a sweep, its parameters or the report
-    section that is no object, paper values that are no lists of one length."""
+    be drawn from it: not UTF-8, no JSON, no object, and the problems of pipeline_problem."""
     path = os.path.join(run, "pipeline.json")
     try:
         with open(path, "rb") as f:
@@ -149,30 +160,41 @@ def read_run_pipeline(run):
     if not isinstance(pipeline, dict):
         refuse(f"{path}: expected the pipeline of a granpipe run (a JSON object), found a JSON "
                f"{type(pipeline).__name__}")
+    problem = pipeline_problem(pipeline)
+    if problem:
+        refuse(f"{path}: {problem}")
+    return text, pipeline
+
+
+def pipeline_problem(pipeline):
+    """What is wrong with the sections of the pipeline the page is drawn from, as "where:
+    expected ..., found ...", or ""."""
     sections = [("sweep", pipeline.get("sweep", {})), ("report", pipeline.get("report", {}))]
     if isinstance(sections[0][1], dict):
         sections.append(("sweep.parameters", sections[0][1].get("parameters", {})))
     for where, value in sections:
         if not isinstance(value, dict):
-            refuse(f"{path}: {where}: expected an object, found {json.dumps(value)}")
-    problem = paper_problem(pipeline.get("report", {}).get("paper", []))
-    if problem:
-        refuse(f"{path}: {problem}")
-    return text, pipeline
+            return f"{where}: expected an object, found {json.dumps(value)}"
+    for name, values in sections[2][1].items():
+        if not (isinstance(values, list) and values):  # a string parameter is named by values[0]
+            return f"sweep.parameters.{name}: expected a list of values, found {json.dumps(values)}"
+    report = sections[1][1]
+    return paper_problem(report.get("paper", [])) or report_problem(report)
 
 
 def report_body(run, pipeline_text, pipeline, results, partial, note, plt):
     paper = PaperValues(pipeline)
     parts = [f"<p class=note>{html.escape(note)}</p>" if note else ""]
     if results is not None:
-        parts.append(provenance_section(results.attrs, partial))
+        parts.append(provenance_section(results, partial))
         parts.append("<h2>Results</h2>")
         if plt is None:
             parts.append("<p class=note>plots not drawn: matplotlib is not installed</p>")
         if "sweep" in results:
             parts.append(sweep_section(plt, results, pipeline, paper))
         else:
-            parts += [producer_section(plt, name, g, paper) for name, g in results.items()]
+            parts += [producer_section(plt, name, member(results, name, "group"), paper)
+                      for name in results]
         if plt is not None:
             parts.append(paper.notes())
         parts.append(configuration_section(plt, run))
@@ -196,8 +218,11 @@ def main(run):
         refuse(f"{run}/pipeline.json: expected the pipeline of a granpipe run, found none")
     pipeline_text, pipeline = read_run_pipeline(run)
     results, partial, note = read_results(run)
-    name = text(results.attrs["pipeline_name"]) if results is not None else os.path.basename(run)
-    body = report_body(run, pipeline_text, pipeline, results, partial, note, pyplot())
+    try:
+        name = attr_text(results, "pipeline_name") if results is not None else os.path.basename(run)
+        body = report_body(run, pipeline_text, pipeline, results, partial, note, pyplot())
+    except Damaged as e:  # results.h5 or frames.h5 not as granpipe writes them
+        refuse(str(e))
     html_text = page(f"granpipe run {name}", body)
     target = os.path.join(run, "report.html")
     if os.path.lexists(target) and not is_our_page(target):

@@ -4,29 +4,74 @@ import html
 import io
 import os
 
+from report_h5 import Damaged, damaged, member, numbers_dataset
+
 MAX_DRAWN_PARTICLES = 20000  # a configuration picture of more would be pages of SVG
 
 
-def last_frame(path):
-    """(positions, radii, particle columns {name: values}, contacts (i, j, |F_n|) or None,
-    step) of the last frame of a granpipe frames file."""
+def open_frames(path):
+    """The frames file, open to read (a run still writing it may go on: SWMR)."""
     import h5py
-    import numpy as np
-    with h5py.File(path, "r", swmr=True) as f:
-        particles = f["particles/all"]
-        t = len(particles["position/step"]) - 1
+    try:
+        return h5py.File(path, "r", swmr=True)
+    except OSError as e:  # not HDF5, or cut short: said as report.py says it of results.h5
+        raise Damaged(f"{path}: expected a granpipe frames file, found one HDF5 cannot open: "
+                      f"{e}") from None
+
+
+def frame_rows(particles, name, t, n=None):
+    """Frame t of particles/all/<name>/value: a row per particle (n of them when given)."""
+    ds = numbers_dataset(particles, f"{name}/value", 3 if name == "position" else 2)
+    if ds.shape[0] <= t:
+        raise damaged(ds, f"{t + 1} frames (as many as position/step)", ds.shape[0])
+    if n is not None and ds.shape[1] != n:
+        raise damaged(ds, f"{n} particles (as many as position)", ds.shape[1])
+    if name == "position" and ds.shape[2] not in (2, 3):
+        raise damaged(ds, "2 or 3 coordinates", ds.shape[2])
+    return ds[t]
+
+
+def last_frame(path):
+    """(positions, radii, particle columns {"arch": values} where saved, contacts (i, j, |F_n|)
+    or None, step) of the last frame of a granpipe frames file."""
+    with open_frames(path) as f:
+        particles = member(f, "particles/all", "group")
+        steps = numbers_dataset(particles, "position/step", 1)
+        t = len(steps) - 1
         if t < 0:
             return None
-        columns = {name: particles[name]["value"][t] for name in particles
-                   if name not in ("position", "radius", "box") and "value" in particles[name]}
-        contacts = None
-        if "granpipe/contacts" in f and "normal_force" in f["granpipe/contacts"]:
-            c = f["granpipe/contacts"]
-            rows = slice(int(c["offset"][t]), int(c["offset"][t] + c["count"][t]))
-            force = np.linalg.norm(np.atleast_2d(c["normal_force"][rows]), axis=-1)
-            contacts = (c["i"][rows], c["j"][rows], force)
-        return (particles["position/value"][t], particles["radius/value"][t], columns, contacts,
-                int(particles["position/step"][t]))
+        x = frame_rows(particles, "position", t)
+        columns = {"arch": frame_rows(particles, "arch", t, len(x))} if "arch" in particles else {}
+        return (x, frame_rows(particles, "radius", t, len(x)), columns,
+                last_contacts(f, t, len(x)), int(steps[t]))
+
+
+def last_contacts(f, t, n):
+    """(i, j, |F_n|) of the contacts of frame t among n particles (j < 0: a wall), or None
+    when the file has no contact forces."""
+    import numpy as np
+    if "granpipe/contacts" not in f:
+        return None
+    c = member(f, "granpipe/contacts", "group")
+    if "normal_force" not in c:
+        return None
+    offset, count = (numbers_dataset(c, k, 1, integer=True) for k in ("offset", "count"))
+    for ds in (offset, count):
+        if len(ds) <= t:
+            raise damaged(ds, f"{t + 1} frames (as many as position/step)", len(ds))
+    rows = slice(int(offset[t]), int(offset[t] + count[t]))
+    i, j = (numbers_dataset(c, k, 1, integer=True) for k in ("i", "j"))
+    force = numbers_dataset(c, "normal_force", 2)
+    for ds in (i, j, force):
+        if not 0 <= rows.start <= rows.stop <= len(ds):
+            raise damaged(ds, f"rows {rows.start} to {rows.stop} (offset and count of frame {t})",
+                          f"{len(ds)} rows")
+    first, second = i[rows], j[rows]
+    for ds, values, bad in ((i, first, (first < 0) | (first >= n)),
+                            (j, second, second >= n)):  # j < 0: a wall
+        if bad.any():
+            raise damaged(ds, f"particle indices below {n}", values[np.argmax(bad)])
+    return first, second, np.linalg.norm(force[rows], axis=-1)
 
 
 def configuration_svg(plt, frame):

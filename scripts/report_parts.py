@@ -1,23 +1,14 @@
-"""The pieces of report.html: HDF5 attributes as text, numbers ("undefined" for NaN, never a
-plausible zero), HTML tables, and matplotlib figures inlined as SVG."""
+"""The pieces of report.html: numbers ("undefined" for NaN, never a plausible zero), HTML
+tables (results.h5's read by report_h5), and matplotlib figures inlined as SVG."""
 import html
 import io
 import math
 
+from report_h5 import attr_text, read_table
+
 TABLE_ROWS_SHOWN = 12  # a long table is cut on the page; its CSV file has every row
 MARKED_POINTS = 60  # a line of more points is drawn without a marker at each (page size)
 MAX_LEGEND_LINES = 12  # more lines than this make a legend that hides the plot
-
-
-def text(value):
-    """An HDF5 attribute as a str (h5py gives bytes or numpy strings)."""
-    if isinstance(value, bytes):
-        return value.decode()
-    return str(value)
-
-
-def texts(value):
-    return [text(v) for v in value]
 
 
 def number(x):
@@ -44,15 +35,14 @@ def html_table(header, rows):
 
 
 def table_section(producer, name, group, rows_shown=TABLE_ROWS_SHOWN):
-    columns, units = texts(group.attrs["columns"]), texts(group.attrs["units"])
-    data = [group[c][()] for c in columns]
-    n = len(data[0]) if data else 0
+    columns, units, data = read_table(group)
+    n = len(data[columns[0]]) if columns else 0
     header = [f"{c} ({u})" if u else c for c, u in zip(columns, units)]
-    rows = [[number(float(col[r])) for col in data] for r in range(min(n, rows_shown))]
+    rows = [[number(data[c][r]) for c in columns] for r in range(min(n, rows_shown))]
     more = (f" — the first {rows_shown} of {n} rows; every row in "
             f"<a href=\"{csv_name(producer, name)}\">{csv_name(producer, name)}</a>"
             if n > rows_shown else f" — {n} rows")
-    return (f"<h4>table {html.escape(name)}</h4><p>{html.escape(text(group.attrs['doc']))}{more}"
+    return (f"<h4>table {html.escape(name)}</h4><p>{html.escape(attr_text(group, 'doc'))}{more}"
             f"</p>" + html_table(header, rows))
 
 
@@ -78,7 +68,8 @@ def inline_svg(plt, fig, ax, logx, logy):
         ax.set_xscale("log")
     if logy:
         ax.set_yscale("log")
-    if len(ax.get_lines()) <= MAX_LEGEND_LINES:
+    labelled = ax.get_legend_handles_labels()[0]  # none in a plot of no point
+    if labelled and len(ax.get_lines()) <= MAX_LEGEND_LINES:
         ax.legend(fontsize="small")
     fig.tight_layout()
     out = io.StringIO()

@@ -3,22 +3,34 @@ y column (per sweep point in a sweep), axis units from the table, error bars or 
 <y>_err columns, and the paper's values over them where the pipeline declares some."""
 import html
 
-from report_parts import MARKED_POINTS, axis_label, drawable, inline_svg, text, texts
+from report_h5 import attr_number, attr_text, attr_texts, damaged, member, read_table
+from report_parts import MARKED_POINTS, axis_label, drawable, inline_svg
+
+
+def declared_columns(declared, group):
+    """{column: values} and {column: unit} of the plot's table `group`, which has the columns
+    the plot `declared` names (both come from one plugin: a column missing is damage)."""
+    columns, units, data = read_table(group)
+    for attr, names in (("x", [attr_text(declared, "x")]), ("y", attr_texts(declared, "y"))):
+        for name in names:
+            if name not in data:
+                raise damaged(declared, f"a column of {group.name}", f'"{name}"', attr)
+    return data, dict(zip(columns, units))
 
 
 def plot_svg(plt, declared, tables, plot, paper):
     """The declared plot as an inline SVG element, or None when no point can be drawn: one
     line per y column of each (label, table) of `tables` (one table in a single run, one per
     sweep point in a sweep), and the paper's values for `plot` ("producer/name") over them."""
-    x_name = text(declared.attrs["x"])
-    logx, logy = bool(int(declared.attrs["logx"])), bool(int(declared.attrs["logy"]))
+    x_name = attr_text(declared, "x")
+    logx = bool(attr_number(declared, "logx", integer=True))
+    logy = bool(attr_number(declared, "logy", integer=True))
     fig, ax = plt.subplots(figsize=(6.4, 4.0))
     drawn = 0
-    for label, table in tables:
-        for y_name in texts(declared.attrs["y"]):
-            error = f"{y_name}_err"
-            x, y, e = drawable(table[x_name][()], table[y_name][()],
-                               table[error][()] if error in table else None, logx, logy)
+    for label, group in tables:
+        data, unit_of = declared_columns(declared, group)
+        for y_name in attr_texts(declared, "y"):
+            x, y, e = drawable(data[x_name], data[y_name], data.get(f"{y_name}_err"), logx, logy)
             drawn += len(x)
             line_label = " ".join(part for part in (label, y_name) if part)
             marker = "." if len(x) <= MARKED_POINTS else None
@@ -32,11 +44,9 @@ def plot_svg(plt, declared, tables, plot, paper):
         plt.close(fig)
         return None
     paper.draw(ax, plot, lambda x, y, e: drawable(x, y, e, logx, logy))
-    first = tables[0][1]
-    unit_of = dict(zip(texts(first.attrs["columns"]), texts(first.attrs["units"])))
-    ax.set_xlabel(axis_label(text(declared.attrs["xlabel"]), unit_of.get(x_name, "")))
-    ax.set_ylabel(text(declared.attrs["ylabel"]))
-    ax.set_title(text(declared.attrs["title"]))
+    ax.set_xlabel(axis_label(attr_text(declared, "xlabel"), unit_of[x_name]))
+    ax.set_ylabel(attr_text(declared, "ylabel"))
+    ax.set_title(attr_text(declared, "title"))
     return inline_svg(plt, fig, ax, logx, logy)
 
 
@@ -49,12 +59,14 @@ def plots_section(plt, groups, producer, paper):
     if plt is None:
         return "<p class=note>plots not drawn: matplotlib is not installed</p>"
     parts = []
-    for name, declared in declared_in["_plots"].items():
-        table = text(declared.attrs["table"])
-        tables = [(label, g[table]) for label, g in groups if table in g]
+    plots = member(declared_in, "_plots", "group")
+    for name in plots:
+        declared = member(plots, name, "group")
+        table_name = attr_text(declared, "table")
+        tables = [(label, g[table_name]) for label, g in groups if table_name in g]
         if not tables:
-            parts.append(f"<p class=note>plot {html.escape(name)}: its table {table} is "
-                         "not in the results</p>")
+            parts.append(f"<p class=note>plot {html.escape(name)}: its table "
+                         f"{html.escape(table_name)} is not in the results</p>")
             continue
         svg = plot_svg(plt, declared, tables, f"{producer}/{name}", paper)
         if svg is None:

@@ -2,8 +2,10 @@
 drawn together, the plots of a result against the swept parameter the pipeline declares
 ("report": {"sweep_plots": [...]}), and run time against error ("speed_vs_error")."""
 import html
+import json
 
-from report_parts import drawable, html_table, inline_svg, number, table_section, texts
+from report_h5 import damaged, indices, member, read_table
+from report_parts import drawable, html_table, inline_svg, number, table_section
 from report_plots import plots_section
 from speed_error import deviation_table, other_swept, pooled, value_namer
 
@@ -11,26 +13,72 @@ SWEEP_ROWS_SHOWN = 100  # the sweep's summary: a row per point
 MAX_SWEEP_LINES = 24  # a sweep's plots draw at most this many points (the page's size)
 
 
-def point_labels(results):
-    """{point group name: "point k: swept values"} from the sweep's summary table."""
-    points = results["sweep/points"]
-    columns = texts(points.attrs["columns"])
+# The keys of a sweep plot and of speed_vs_error: (type, what is expected, required); granpipe
+# checks them when it runs the pipeline (core/src/report_spec.cpp), but pipeline.json may have
+# been edited since, and the page is drawn from it.
+TEXT = (str, "a string", False)
+FLAG = (bool, "true or false", False)
+SWEPT = (str, "a swept parameter", True)
+COLUMNS = (list, 'a list of result columns ("packing.phi")', True)
+SWEEP_PLOT_KEYS = {"name": (str, "a name for the plot", True), "x": SWEPT, "y": COLUMNS,
+                   "xlabel": TEXT, "ylabel": TEXT, "title": TEXT, "logx": FLAG, "logy": FLAG}
+SPEED_VS_ERROR_KEYS = {"knob": SWEPT, "time": (str, 'a result column ("source.seconds")', True),
+                       "quantities": COLUMNS, "pool": (str, "a swept parameter", False)}
+
+
+def spec_problem(where, spec, keys):
+    """What is wrong with the object `spec` at `where` ("where: expected ..., found ..."), or
+    "": each of `keys` of its type (a list: of strings), the required ones there."""
+    if not isinstance(spec, dict):
+        return f"{where}: expected an object, found {json.dumps(spec)}"
+    for key, (kind, expected, required) in keys.items():
+        if key not in spec:
+            if required:
+                return f"{where}.{key}: expected {expected}, found none"
+            continue
+        value = spec[key]
+        if not isinstance(value, kind) or (kind is list and not all(isinstance(v, str)
+                                                                     for v in value)):
+            return f"{where}.{key}: expected {expected}, found {json.dumps(value)}"
+    return ""
+
+
+def report_problem(report):
+    """What is wrong with the pipeline's "report" sweep plots and speed_vs_error, or ""."""
+    plots = report.get("sweep_plots", [])
+    if not isinstance(plots, list):
+        return f"report.sweep_plots: expected a list of sweep plots, found {json.dumps(plots)}"
+    problems = [spec_problem(f"report.sweep_plots[{k}]", spec, SWEEP_PLOT_KEYS)
+                for k, spec in enumerate(plots)]
+    if "speed_vs_error" in report:
+        problems.append(spec_problem("report.speed_vs_error", report["speed_vs_error"],
+                                     SPEED_VS_ERROR_KEYS))
+    return next((p for p in problems if p), "")
+
+
+def point_labels(results, points):
+    """{point group name: "point k: swept values"} from the sweep's summary table, whose
+    points each have their group."""
+    columns, _, data = read_table(points)
+    if "point" not in data:
+        raise damaged(points, 'a column "point"', "none", "columns")
+    indices(points, "point", data["point"])
     swept = [c for c in columns[1:] if ".params." in c]  # the swept paths, then scalars
     labels = {}
-    for row in range(len(points["point"][()])):
-        k = int(points["point"][row])
-        values = ", ".join(f"{c.split('.')[-1]} = {number(float(points[c][row]))}" for c in swept)
+    for row, k in enumerate(data["point"].astype(int)):
+        member(results, f"point_{k:03d}", "group")
+        values = ", ".join(f"{c.split('.')[-1]} = {number(data[c][row])}" for c in swept)
         labels[f"point_{k:03d}"] = f"{k}: {values}" if values else str(k)
     return labels
 
 
 def sweep_section(plt, results, pipeline, paper):
     """A sweep: its summary table, and each producer's declared plots with every point drawn."""
-    points = results["sweep/points"]
+    points = member(results, "sweep/points", "group")
     parts = ["<h3 id=sweep>sweep</h3>",
              table_section("sweep", "points", points, SWEEP_ROWS_SHOWN),
              declared_sweep_section(plt, results, pipeline, paper)]
-    labels = point_labels(results)
+    labels = point_labels(results, points)
     drawn = sorted(labels)
     if len(drawn) > MAX_SWEEP_LINES:  # evenly spaced points, the first and the last among them
         step = (len(drawn) - 1) / (MAX_SWEEP_LINES - 1)
@@ -38,7 +86,8 @@ def sweep_section(plt, results, pipeline, paper):
     which = "every point" if len(drawn) == len(labels) else f"{len(drawn)} of {len(labels)} points"
     names = sorted({sub for p in labels for sub in results[p].keys()})
     for name in names:
-        groups = [(labels[p], results[p][name]) for p in drawn if name in results[p]]
+        groups = [(labels[p], member(results[p], name, "group")) for p in drawn
+                  if name in results[p]]
         if not groups:
             continue
         parts.append(f"<h3 id=\"{html.escape(name)}\">{html.escape(name)}, {which}</h3>"
@@ -47,11 +96,15 @@ def sweep_section(plt, results, pipeline, paper):
     return "".join(parts)
 
 
-def summary_rows(points):
-    """(the sweep's summary table as one {column: value} per point, its columns)."""
-    columns = texts(points.attrs["columns"])
-    data = {c: points[c][()] for c in columns}
-    return [{c: float(data[c][r]) for c in columns} for r in range(len(data[columns[0]]))], columns
+def summary_rows(points, pipeline):
+    """(the sweep's summary table as one {column: value} per point, its columns); a
+    string-valued swept parameter is recorded as an index into its list, checked here."""
+    columns, _, data = read_table(points)
+    for path, values in pipeline.get("sweep", {}).get("parameters", {}).items():
+        if path in data and isinstance(values[0], str):
+            indices(points, path, data[path], len(values))
+    n = len(data[columns[0]]) if columns else 0
+    return [{c: float(data[c][r]) for c in columns} for r in range(n)], columns
 
 
 def missing_columns(what, wanted, columns):
@@ -95,8 +148,9 @@ def speed_error_section(plt, spec, rows, columns, name_of):
     """Run time against the deviation from the finest point (scripts/speed_vs_error.py's
     table), as a table and a log-log chart."""
     knob, quantities = spec["knob"], spec["quantities"]
-    note = missing_columns("speed against error", [knob, spec["time"]] + quantities, columns)
-    if note:
+    wanted = [knob, spec["time"]] + quantities + ([spec["pool"]] if "pool" in spec else [])
+    note = missing_columns("speed against error", wanted, columns)
+    if note or not rows:  # no rows: a sweep stopped before its first point was done
         return note
     table, series = deviation_table(rows, other_swept(columns, knob), knob, spec["time"],
                                     quantities, name_of)
@@ -110,21 +164,36 @@ def speed_error_section(plt, spec, rows, columns, name_of):
              f"its deviation from the point of smallest {html.escape(knob)} in its group.</p>",
              html_table(shown, body)]
     if plt is not None and series:
-        fig, ax = plt.subplots(figsize=(6.4, 4.0))
-        for label, points in sorted(series.items()):
-            x, y, _ = zip(*sorted(points))
-            ax.plot(x, y, marker="o", label=label)
-        ax.set_xlabel("run time of the point (s)")
-        ax.set_ylabel("|deviation from the finest point|")
-        parts.append(f"<figure id=speed-vs-error>{inline_svg(plt, fig, ax, True, True)}"
-                     "<figcaption>speed against error</figcaption></figure>")
+        parts.append(speed_error_chart(plt, series))
     return "".join(parts)
+
+
+def speed_error_chart(plt, series):
+    """The log-log chart of `series` {label: [(seconds, |deviation|, knob label)]}; a point
+    undefined (NaN) or not positive is not drawn, and a chart of none is a note."""
+    import numpy as np
+    lines = {}
+    for label, points in sorted(series.items()):
+        seconds, deviation, _ = zip(*sorted(points))
+        x, y, _ = drawable(np.array(seconds, float), np.array(deviation, float), None, True, True)
+        if len(x):
+            lines[label] = (x, y)
+    if not lines:
+        return ("<p class=note>speed against error: no point to draw (no deviation finite and "
+                "positive)</p>")
+    fig, ax = plt.subplots(figsize=(6.4, 4.0))
+    for label, (x, y) in lines.items():
+        ax.plot(x, y, marker="o", label=label)
+    ax.set_xlabel("run time of the point (s)")
+    ax.set_ylabel("|deviation from the finest point|")
+    return (f"<figure id=speed-vs-error>{inline_svg(plt, fig, ax, True, True)}"
+            "<figcaption>speed against error</figcaption></figure>")
 
 
 def declared_sweep_section(plt, results, pipeline, paper):
     """The sweep plots and the speed-against-error study the pipeline's "report" declares."""
     report = pipeline.get("report", {})
-    rows, columns = summary_rows(results["sweep/points"])
+    rows, columns = summary_rows(member(results, "sweep/points", "group"), pipeline)
     name_of = value_namer(pipeline)
     parts = [sweep_plot(plt, spec, rows, columns, name_of, paper)
              for spec in report.get("sweep_plots", [])]

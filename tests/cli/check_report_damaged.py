@@ -1,0 +1,229 @@
+"""granpipe report of a run whose results.h5 (or frames.h5, or pipeline.json) is damaged: one
+line naming the file, the dataset or attribute, what was expected and what was found, exit 2,
+never a traceback; the run's files left as they were. Legitimate data (NaN and inf values, an
+empty table, a histogram without errors) still report with exit 0, NaN shown as "undefined".
+
+usage: check_report_damaged.py GRANPIPE PIPELINES_DIR"""
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+
+import h5py
+import numpy as np
+
+exe, pipelines = sys.argv[1], sys.argv[2]
+failures = []
+ARCHES = ["source.params.N=60", "source.params.width=6", "source.params.equilibration_taps=2",
+          "source.params.production_taps=2", "source.params.save_every=1",
+          'sweep.parameters={"source.params.A": [1.1]}']
+COMPACTION = ["source.params.N=64", "source.params.side=6", "source.params.taps=3",
+              'sweep.parameters={"source.params.epsilon": [0.05]}']
+LATTICE = ['report={"sweep_plots": [{"name": "phi", "x": "source.params.lattice", '
+           '"y": ["packing.phi"]}]}']
+
+
+def run(pipeline, settings, out):
+    args = [a for s in settings for a in ("--set", s)]
+    subprocess.run([exe, os.path.join(pipelines, pipeline), *args, "--quiet", "--out", out],
+                   check=True)
+
+
+def in_h5(name, change):
+    """A damage: change(file) of the run's HDF5 file `name`."""
+    def damage(run_dir):
+        with h5py.File(os.path.join(run_dir, name), "a") as f:
+            change(f)
+    return damage
+
+
+def rewrite(path, data, file="results.h5"):
+    """The dataset at `path` written anew with data(its values), its attributes kept."""
+    def change(f):
+        old = f[path]
+        values, attrs = data(old[()]), dict(old.attrs)
+        del f[path]
+        f.create_dataset(path, data=values).attrs.update(attrs)
+    return in_h5(file, change)
+
+
+def set_attr(path, name, value):
+    """The attribute set to `value`, or to value(its value) when that is a function."""
+    def change(f):
+        attrs = f[path].attrs
+        attrs[name] = value(attrs[name]) if callable(value) else value
+    return in_h5("results.h5", change)
+
+
+def delete(path, attr=None):
+    """The object at `path` deleted, or only its attribute `attr`."""
+    def change(f):
+        if attr:
+            del f[path].attrs[attr]
+        else:
+            del f[path]
+    return in_h5("results.h5", change)
+
+
+def add_dataset(path, data):
+    return in_h5("results.h5", lambda f: f.create_dataset(path, data=data))
+
+
+def group_for_dataset(path):
+    def change(f):
+        del f[path]
+        f.create_group(path)
+    return in_h5("results.h5", change)
+
+
+def each(*damages):
+    def damage(run_dir):
+        for d in damages:
+            d(run_dir)
+    return damage
+
+
+def edit_pipeline(change):
+    def damage(run_dir):
+        path = os.path.join(run_dir, "pipeline.json")
+        with open(path) as f:
+            pipeline = json.load(f)
+        change(pipeline)
+        with open(path, "w") as f:
+            json.dump(pipeline, f)
+    return damage
+
+
+def garbage(name):
+    def damage(run_dir):
+        with open(os.path.join(run_dir, name), "wb") as f:
+            f.write(b"no HDF5 " * 64)
+    return damage
+
+
+# (name, base run, damage, the message after "<run>/<file>: " as a regex[, the file])
+DAMAGES = [
+    ("short column", "arches", rewrite("arches/per_frame/tap", lambda v: v[:-1]),
+     r"/arches/per_frame/tap: expected 2 values \(as many as frame\), found 1"),
+    ("scalar stored as text", "arches", rewrite("arches/arches_per_particle", lambda v: "0.5"),
+     r'/arches/arches_per_particle: expected numbers, found text "0\.5"'),
+    ("table without columns", "arches", delete("arches/per_frame", "columns"),
+     r"/arches/per_frame attribute columns: expected a list of text, found none"),
+    ("units not one per column", "arches", set_attr("arches/per_frame", "units", [b""]),
+     r"/arches/per_frame attribute units: expected 11 items \(a unit per column\), found 1"),
+    ("histogram edges short", "arches", rewrite("arches/span_all/edges", lambda v: v[:-2]),
+     r"/arches/span_all/edges: expected \d+ values \(one more than values\), found \d+"),
+    ("histogram values a group", "arches", group_for_dataset("arches/span_all/values"),
+     r"/arches/span_all/values: expected a dataset, found a group"),
+    ("plot of no column", "arches", set_attr("packing/_plots/profile", "x", "nope"),
+     r'/packing/_plots/profile attribute x: expected a column of /packing/profile, found "nope"'),
+    ("plot flag text", "arches", set_attr("packing/_plots/profile", "logy", "yes"),
+     r'/packing/_plots/profile attribute logy: expected an integer, found "yes"'),
+    ("column of text", "arches", rewrite("arches/per_frame/tap", lambda v: v.astype("S8")),
+     r"/arches/per_frame/tap: expected numbers, found text"),
+    ("2-D column", "arches", rewrite("arches/per_frame/tap", lambda v: np.stack([v, v], 1)),
+     r"/arches/per_frame/tap: expected 1-D data, found shape \(2, 2\)"),
+    ("doc not UTF-8", "arches", set_attr("arches/per_frame", "doc", np.bytes_(b"bad \xff")),
+     r"/arches/per_frame attribute doc: expected UTF-8 text, found byte 0xff at offset 4, "
+     r"which is not UTF-8"),
+    ("producer a dataset", "arches", add_dataset("bogus", 1.0),
+     r"/bogus: expected a group, found a dataset"),
+    ("stage times short", "arches", set_attr("/", "stage_seconds", lambda v: v[:-1]),
+     r"/ attribute stage_seconds: expected \d+ numbers \(one per stage\), found \d+"),
+    ("fit names short", "compaction", set_attr("compaction/eq3_phi_b", "names", [b"X"]),
+     r"/compaction/eq3_phi_b/values: expected 1 value \(one per name in attribute names\), "
+     r"found 4"),
+    ("fit dof NaN", "compaction", set_attr("compaction/eq3_phi_b", "dof", np.nan),
+     r"/compaction/eq3_phi_b attribute dof: expected an integer, found nan"),
+    ("sweep point missing", "lattice", delete("point_003"),
+     r"/point_003: expected a group, found none"),
+    ("sweep point NaN", "lattice", rewrite("sweep/points/point", lambda v: v * np.nan),
+     r"/sweep/points/point: expected whole numbers >= 0, found nan"),
+    ("string parameter index out of range", "lattice",
+     rewrite("sweep/points/source.params.lattice", lambda v: v + 10),
+     r"/sweep/points/source\.params\.lattice: expected indices 0 to 5, found 10\.0"),
+    ("sweep plot y not a list", "lattice",
+     edit_pipeline(lambda p: p["report"]["sweep_plots"][0].update(y="packing.phi")),
+     r'report\.sweep_plots\[0\]\.y: expected a list of result columns \("packing\.phi"\), '
+     r'found "packing\.phi"', "pipeline.json"),
+    ("frames not HDF5", "arches", garbage("frames.h5"),
+     r"expected a granpipe frames file, found one HDF5 cannot open: .*", "frames.h5"),
+    ("frames radius short", "arches",
+     rewrite("particles/all/radius/value", lambda v: v[:, :-1], "frames.h5"),
+     r"/particles/all/radius/value: expected 60 particles \(as many as position\), found 59",
+     "frames.h5"),
+]
+
+# Data a run may hold: reported with exit 0 (NaN as "undefined"), the page holding each text.
+PROFILE_COLUMNS = ("height", "phi", "phi_err")
+LEGITIMATE = [
+    ("NaN and inf in a column", "arches",
+     rewrite("packing/profile/phi", lambda v: np.resize([np.nan, np.inf], len(v))),
+     ["<td>undefined</td>", "<td>inf</td>"]),
+    ("empty table", "arches",
+     each(*(rewrite(f"packing/profile/{c}", lambda v: v[:0]) for c in PROFILE_COLUMNS)),
+     [" — 0 rows", "plot profile: no point to draw"]),
+    ("histogram without errors", "arches", delete("arches/span_all/errors"),
+     ["<h4>histogram span_all</h4>"]),
+]
+
+
+def damaged_copy(work, base, name, damage):
+    run_dir = os.path.join(work, re.sub(r"\W+", "_", name))
+    shutil.copytree(os.path.join(work, base), run_dir)
+    damage(run_dir)
+    return run_dir
+
+
+def report(run_dir):
+    return subprocess.run([exe, "report", run_dir], capture_output=True, text=True)
+
+
+def files(run_dir):
+    """{path: bytes} of every file of the run."""
+    out = {}
+    for top, _, names in os.walk(run_dir):
+        for n in names:
+            with open(os.path.join(top, n), "rb") as f:
+                out[os.path.relpath(os.path.join(top, n), run_dir)] = f.read()
+    return out
+
+
+with tempfile.TemporaryDirectory() as work:
+    run("tap2d_arches.json", ARCHES, os.path.join(work, "arches"))
+    run("tap3d_compaction.json", COMPACTION, os.path.join(work, "compaction"))
+    run("lattice_packing.json", LATTICE, os.path.join(work, "lattice"))
+    for base in ("arches", "compaction", "lattice"):
+        r = report(os.path.join(work, base))
+        if r.returncode != 0 or r.stderr:
+            failures.append(f"the good {base} run: exit {r.returncode}, {r.stderr!r}")
+
+    for name, base, damage, message, *file in DAMAGES:
+        run_dir = damaged_copy(work, base, name, damage)
+        before = files(run_dir)
+        r = report(run_dir)
+        path = re.escape(os.path.join(run_dir, file[0] if file else "results.h5"))
+        if r.returncode != 2 or not re.fullmatch(f"{path}: {message}\n", r.stderr):
+            failures.append(f"{name}: exit {r.returncode}, {r.stderr!r}")
+        if files(run_dir) != before:  # the refusal writes nothing, its report.html stays
+            failures.append(f"{name}: the run's files changed")
+
+    for name, base, damage, expected in LEGITIMATE:
+        run_dir = damaged_copy(work, base, name, damage)
+        os.remove(os.path.join(run_dir, "report.html"))  # the page read is the one written now
+        r = report(run_dir)
+        page_path = os.path.join(run_dir, "report.html")
+        page = open(page_path).read() if os.path.exists(page_path) else ""
+        missing = [e for e in expected if e not in page]
+        if r.returncode != 0 or r.stderr or missing:
+            failures.append(f"{name}: exit {r.returncode}, {r.stderr!r}, "
+                            f"not on the page: {missing}")
+
+if failures:
+    print("FAIL", *failures, sep="\n")
+    sys.exit(1)
+print(f"granpipe report: {len(DAMAGES)} damaged runs refused in one line with exit 2, "
+      f"{len(LEGITIMATE)} runs of legitimate data reported")
