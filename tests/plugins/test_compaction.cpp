@@ -234,6 +234,25 @@ TEST(Compaction, AFrameWithoutATapIsRefused) {
             "tapping source such as spheres3d_tap), got a frame without it");
 }
 
+// A tap below 0 went into the fits' time axis, and a tap stored as a real number was
+// called a frame without it.
+TEST(Compaction, ATapBelowZeroOrNotAnIntegerIsRefused) {
+  Frame negative = cubic_stack(-1);
+  negative.set_observable({"tap", Scope::Frame, ValueType::Integer, 1, "", "tap"},
+                          std::int64_t{-4});
+  EXPECT_EQ(granpipe::test::input_error_of(
+                [&] { measure_frame(negative, StereologySettings{}, "compaction: frame 3"); }),
+            "compaction: frame 3: expected the observable \"tap\" (frames of a tapping source "
+            "such as spheres3d_tap), got tap -4 (below 0)");
+  Frame real = cubic_stack(-1);
+  real.set_observable({"tap", Scope::Frame, ValueType::Real, 1, "", "tap"}, 4.0);
+  EXPECT_EQ(granpipe::test::input_error_of(
+                [&] { measure_frame(real, StereologySettings{}, "compaction: frame 3"); }),
+            "compaction: frame 3: expected the observable \"tap\" (frames of a tapping source "
+            "such as spheres3d_tap), got one of type real with 1 component(s) (a tap is one "
+            "integer)");
+}
+
 Results analyze(const std::vector<Frame>& frames, nlohmann::json params = {}) {
   const auto ctx = test::make_context("compaction", std::move(params));
   CompactionAnalyzer analyzer(*ctx);
