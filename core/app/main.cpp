@@ -8,6 +8,7 @@
 #include "commands.hpp"
 #include "granpipe/errors.hpp"
 #include "granpipe/file_kind.hpp"
+#include "granpipe/huge_pages.hpp"
 #include "granpipe/log.hpp"
 #include "granpipe/pipeline.hpp"
 #include "granpipe/plugin_loader.hpp"
@@ -78,6 +79,7 @@ bool is_subcommand(const char* arg) {
 
 int main(int argc, char** argv) {
   using namespace granpipe;
+  huge_pages::restart_with_malloc_huge_pages(argv);
   // `granpipe PIPELINE.json ...` is short for `granpipe run PIPELINE.json ...`.
   std::vector<char*> args(argv, argv + argc);
   static char run_word[] = "run";

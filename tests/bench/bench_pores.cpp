@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "granpipe/frame_store.hpp"
+#include "granpipe/huge_pages.hpp"
 #include "measure_pores.hpp"
 #include "pore_statistics.hpp"
 #include "volume_distribution.hpp"
@@ -91,6 +92,9 @@ void whole_analysis(const granpipe::Frame& f, int threads) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // As granpipe does; the bare triangulation keeps the environment it is given.
+  if (argc > 1 && std::string(argv[1]) == "analysis")
+    granpipe::huge_pages::restart_with_malloc_huge_pages(argv);
   const std::string mode = argc > 2 ? argv[1] : "";
   if (!((mode == "points" && argc == 4) || (mode == "bare" && argc == 3) ||
         (mode == "analysis" && argc == 4))) {

@@ -14,8 +14,8 @@ A deposition can stall (the source gives up on a sphere that does not come to re
 100000 stages, e.g. 2*10^4 spheres with walls and seed 21); the next seed is then tried,
 and the table names the seed of each packing.
 
-Each measurement is a process of its own, run in turn (bare, analysis on one thread, on
-two, Qhull) and repeated; the table holds the medians of the timed part alone (reading
+Each measurement is a process of its own, run in turn (bare, bare on huge pages, analysis
+on one thread, on two, Qhull) and repeated; the table holds the medians of the timed part alone (reading
 the frame excluded): wall-clock seconds, processor seconds of all threads, and the memory
 it added to the process's peak resident size, per sphere (wait4's ru_maxrss less the peak
 before the timed part). The analysis is bench_pores' (measure_pores with region
@@ -32,6 +32,9 @@ import subprocess
 import sys
 
 PACKING_FRACTION = 0.58
+# granpipe (and bench_pores analysis) run themselves again with glibc's malloc on
+# transparent huge pages; "CGAL bare, THP" is the bare triangulation given the same heap.
+HUGE_PAGES = dict(os.environ, GLIBC_TUNABLES="glibc.malloc.hugetlb=1")
 
 QHULL = """
 import resource, sys, time
@@ -47,9 +50,9 @@ print("cells", cells)
 """
 
 
-def run(command):
+def run(command, env=None):
     """The child's printed "key value" lines, and its peak resident size in kB."""
-    child = subprocess.Popen(command, stdout=subprocess.PIPE, text=True)
+    child = subprocess.Popen(command, stdout=subprocess.PIPE, text=True, env=env)
     out = child.stdout.read()
     _, status, usage = os.wait4(child.pid, 0)
     if status != 0:
@@ -106,15 +109,16 @@ def measurements(build, frames, points, repeats, with_qhull):
     """Per program, the runs' values; the programs take turns, so that a change of the
     machine's load falls on all of them."""
     bench = f"{build}/bin/bench_pores"
-    programs = {"CGAL bare": [bench, "bare", frames],
-                "granpipe 1 thread": [bench, "analysis", frames, "1"],
-                "granpipe 2 threads": [bench, "analysis", frames, "2"]}
+    programs = {"CGAL bare": ([bench, "bare", frames], None),
+                "CGAL bare, THP": ([bench, "bare", frames], HUGE_PAGES),
+                "granpipe 1 thread": ([bench, "analysis", frames, "1"], None),
+                "granpipe 2 threads": ([bench, "analysis", frames, "2"], None)}
     if with_qhull:
-        programs["Qhull"] = ["/usr/bin/python3", "-c", QHULL, points]
+        programs["Qhull"] = (["/usr/bin/python3", "-c", QHULL, points], None)
     runs = {name: [] for name in programs}
     for _ in range(repeats):
-        for name, command in programs.items():
-            runs[name].append(run(command))
+        for name, (command, env) in programs.items():
+            runs[name].append(run(command, env))
             print(f"  {name}: {float(runs[name][-1]['seconds']):.3f} s", flush=True)
     return runs
 
@@ -155,16 +159,17 @@ def main():
             run([f"{args.build}/bin/bench_pores", "points", frames, points])
             runs = measurements(args.build, frames, points, args.repeats, not args.without_qhull)
             bare = summary(runs["CGAL bare"])[0]
+            bare_thp = summary(runs["CGAL bare, THP"])[0]
             qhull = summary(runs["Qhull"])[0] if "Qhull" in runs else math.nan
             for name, values in runs.items():
                 seconds, cpu, added = summary(values)
                 rows.append((n, sides, seed, name, seconds, cpu, seconds / bare,
-                             qhull / seconds, added * 1024.0 / n))
+                             seconds / bare_thp, qhull / seconds, added * 1024.0 / n))
     print(f"\n{'N':>8} {'sides':>8} {'seed':>4} {'program':>18} {'s':>8} {'CPU s':>8} "
-          f"{'/ bare':>7} {'Qhull /':>8} {'bytes/sphere':>12}")
-    for n, sides, seed, name, seconds, cpu, to_bare, qhull_ratio, per_sphere in rows:
+          f"{'/ bare':>7} {'/ THP':>7} {'Qhull /':>8} {'bytes/sphere':>12}")
+    for n, sides, seed, name, seconds, cpu, to_bare, to_thp, qhull_ratio, per_sphere in rows:
         print(f"{n:>8} {sides:>8} {seed:>4} {name:>18} {seconds:>8.3f} {cpu:>8.2f} "
-              f"{to_bare:>7.2f} {qhull_ratio:>8.2f} {per_sphere:>12.0f}")
+              f"{to_bare:>7.2f} {to_thp:>7.2f} {qhull_ratio:>8.2f} {per_sphere:>12.0f}")
     print("\ntargets (issue 20): analysis / bare <= 1.5; Qhull / analysis >= 5")
 
 

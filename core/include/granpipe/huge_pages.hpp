@@ -21,6 +21,13 @@ void deallocate(void* p, std::size_t bytes) noexcept;
 // pages inside [data, data + bytes), and has the kernel move what is already there onto
 // them now (Linux >= 6.1; elsewhere the advice alone, or nothing).
 void advise(void* data, std::size_t bytes) noexcept;
+// Has glibc's malloc ask for huge pages under the heap too (what no allocator of ours can
+// reach: CGAL's cells, Eigen's and the standard library's arrays), by executing the program
+// again with GLIBC_TUNABLES=glibc.malloc.hugetlb=1, a setting glibc reads at start only.
+// Call first thing in main: returns without it where the environment names the tunable
+// already (the user's choice), after the restart (GRANPIPE_MALLOC_RESTARTED), or where the
+// program cannot be run again.
+void restart_with_malloc_huge_pages(char** argv) noexcept;
 }  // namespace huge_pages
 
 template <class T>
