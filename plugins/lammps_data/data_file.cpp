@@ -5,9 +5,9 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <optional>
-#include <sstream>
 #include <string_view>
 #include <vector>
 
@@ -157,27 +157,47 @@ AtomsSection find_atoms_section(Lines& lines, const std::string& where) {
   return a;
 }
 
+// LAMMPS numbers atoms and types from 1; ids and types are whole numbers, not "1.5" read
+// as 1 and a type ".5".
 Atom parse_atom(const std::string& line, long number, const std::string& where) {
   const std::vector<std::string_view> w = words(before_comment(line));
-  std::istringstream s{std::string(before_comment(line))};
-  Atom a;
-  double density = 0.0;
-  const bool columns = w.size() == 7 || w.size() == 10;  // image flags or none
-  if (!columns || !(s >> a.id >> a.type >> a.diameter >> density >> a.x[0] >> a.x[1] >> a.x[2]) ||
-      a.type < 1) {
-    throw InputError(where + ": line " + std::to_string(number) +
+  const std::string at = where + ": line " + std::to_string(number);
+  if (w.size() != 7 && w.size() != 10) {  // image flags or none
+    throw InputError(at +
                      ": expected \"id type diameter density x y z\" (atom_style sphere), got " +
                      quoted(line));
   }
+  const auto id = whole_number(w[0]), type = whole_number(w[1]);
+  if (!id || *id < 1 || !type || *type < 1 || *type > std::numeric_limits<int>::max()) {
+    throw InputError(at + ": expected an atom id and a type, whole numbers >= 1 (up to " +
+                     std::to_string(std::numeric_limits<int>::max()) + " types), got " +
+                     quoted(line));
+  }
+  Atom a{*id, static_cast<int>(*type), 0.0, Eigen::Vector3d::Zero()};
+  const auto diameter = real_number(w[2]);
+  std::array<std::optional<double>, 3> x{real_number(w[4]), real_number(w[5]), real_number(w[6])};
+  if (!diameter || !real_number(w[3]) || !x[0] || !x[1] || !x[2]) {
+    throw InputError(at +
+                     ": expected \"id type diameter density x y z\" (atom_style sphere), got " +
+                     quoted(line));
+  }
+  a.diameter = *diameter;
+  a.x = {*x[0], *x[1], *x[2]};
   return a;
 }
 
 // The Atoms section's lines, up to the next section or the end of the file; each id once.
-std::vector<Atom> read_section(Lines& lines, const std::string& where) {
+// `next_section` gets the line that ended it ("" at the end of the file).
+std::vector<Atom> read_section(Lines& lines, const std::string& where, std::string& next_section) {
   std::vector<Atom> out;
   std::map<std::int64_t, long> line_of_id;
   std::string line;
-  while (lines.next(line) && !is_section(line)) {
+  next_section.clear();
+  while (lines.next(line)) {
+    if (is_section(line)) {
+      next_section = line;
+      break;
+    }
     if (words(before_comment(line)).empty()) continue;
     out.push_back(parse_atom(line, lines.number(), where));
     const auto [seen, fresh] = line_of_id.emplace(out.back().id, lines.number());
@@ -188,6 +208,19 @@ std::vector<Atom> read_section(Lines& lines, const std::string& where) {
     }
   }
   return out;
+}
+
+// LAMMPS reads one Atoms section: the atoms of a second one (two files joined) were left
+// out without a word.
+void refuse_second_atoms_section(Lines& lines, std::string line, const AtomsSection& first,
+                                 const std::string& where) {
+  do {
+    const std::vector<std::string_view> w = words(before_comment(line));
+    if (w.empty() || w[0] != "Atoms") continue;
+    throw InputError(where + ": line " + std::to_string(lines.number()) +
+                     ": expected one Atoms section, got a second (the first on line " +
+                     std::to_string(first.section_line) + ")");
+  } while (lines.next(line));
 }
 
 void check_count(const std::vector<Atom>& atoms, const AtomsSection& section,
@@ -204,7 +237,9 @@ void check_count(const std::vector<Atom>& atoms, const AtomsSection& section,
 Frame read_atoms(std::istream& in, const std::string& where) {
   Lines lines(in);
   const AtomsSection section = find_atoms_section(lines, where);
-  std::vector<Atom> list = read_section(lines, where);
+  std::string next_section;
+  std::vector<Atom> list = read_section(lines, where, next_section);
+  if (!next_section.empty()) refuse_second_atoms_section(lines, next_section, section, where);
   check_count(list, section, where);
   check_box(section, where);
   std::sort(list.begin(), list.end(), [](const Atom& a, const Atom& b) { return a.id < b.id; });

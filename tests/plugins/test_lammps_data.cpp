@@ -148,6 +148,27 @@ TEST(LammpsData, AnAtomIdGivenTwiceIsRefusedWithBothLines) {
             "x.data: line 5: expected each atom id once, got id 4 again (first on line 4)");
 }
 
+// LAMMPS numbers atoms and types from 1: id 0 or -3 was read as an atom, "1.5" as id 1.
+TEST(LammpsData, IdsAndTypesAreWholeNumbersFromOne) {
+  const std::string head = "title\n1 atoms\nAtoms # sphere\n";
+  for (const std::string atom : {"0 1 1 1 0 0 0", "-3 1 1 1 0 0 0", "1.5 1 1 1 0 0 0",
+                                 "1 0 1 1 0 0 0", "1 4294967296 1 1 0 0 0"}) {
+    EXPECT_EQ(refusal(head + atom + "\n"),
+              "x.data: line 4: expected an atom id and a type, whole numbers >= 1 (up to "
+              "2147483647 types), got \"" +
+                  atom + "\"");
+  }
+}
+
+// Two data files joined: the atoms of the second Atoms section were left out, exit 0.
+TEST(LammpsData, ASecondAtomsSectionIsRefused) {
+  EXPECT_EQ(refusal("title\n1 atoms\nAtoms # sphere\n1 1 1 1 0 0 0\n\nVelocities\n\n1 0 0 0 0 0 "
+                    "0\n\nAtoms # sphere\n\n2 1 1 1 2 0 0\n"),
+            "x.data: line 10: expected one Atoms section, got a second (the first on line 3)");
+  EXPECT_EQ(refusal("title\n1 atoms\nAtoms # sphere\n1 1 1 1 0 0 0\nAtoms # sphere\n"),
+            "x.data: line 5: expected one Atoms section, got a second (the first on line 3)");
+}
+
 // A dump's first line would pass for a title: the dump is named as such.
 TEST(LammpsData, ADumpIsNamedWithTheSourceThatReadsIt) {
   EXPECT_EQ(refusal("ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n2\n"),
