@@ -61,9 +61,10 @@ void parse_line(const std::string& line, const SnapshotPlace& place, long number
                      "), got " + std::to_string(w.size()) + ": " + quoted(line));
   }
   auto word = [&](int k) { return w[static_cast<std::size_t>(k)]; };
+  // LAMMPS numbers atoms from 1.
   const auto id = whole_number(word(c.id));
-  if (!id) {
-    throw InputError(at() + "expected a whole number in " + column_name(c, c.id) + ", got \"" +
+  if (!id || *id < 1) {
+    throw InputError(at() + "expected a whole number >= 1 in " + column_name(c, c.id) + ", got \"" +
                      std::string(word(c.id)) + "\"");
   }
   std::optional<std::int64_t> type = 1;

@@ -468,6 +468,12 @@ TEST_F(LammpsDump, AValueThatIsNotANumberIsRefused) {
   step.replace(step.find("TIMESTEP\n0"), 10, "TIMESTEP\nzero");
   EXPECT_EQ(refusal(step),
             "atoms.dump: line 2: expected the timestep, a whole number >= 0, got \"zero\"");
+  // LAMMPS numbers atoms from 1: id 0 was read as an atom.
+  std::string id_zero = text;
+  id_zero.replace(id_zero.find("\n1 2 3.75"), 9, "\n0 2 3.75");
+  EXPECT_EQ(refusal(id_zero),
+            "atoms.dump: timestep 0, line 11: expected a whole number >= 1 in column 1 (id), got "
+            "\"0\"");
 }
 
 TEST_F(LammpsDump, ColumnsThatChangeBetweenSnapshotsAreRefused) {
