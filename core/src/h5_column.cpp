@@ -1,6 +1,13 @@
 #include "h5_column.hpp"
 
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
 #include <type_traits>
+#include <vector>
+
+#include "granpipe/format_number.hpp"
 
 namespace granpipe::h5 {
 
@@ -24,6 +31,51 @@ hid_t memory_type() {
 
 template <class T>
 using RowMajor = Eigen::Array<T, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+// The whole numbers of a dataset of reals; HDF5 would truncate 1.5 to 1 without a word.
+std::vector<std::int64_t> whole_numbers(hid_t dataset, const std::string& path, hsize_t first,
+                                        hsize_t count, std::size_t values) {
+  std::vector<double> reals(values);
+  read_rows(dataset, path, H5T_NATIVE_DOUBLE, first, count, reals.data());
+  std::vector<std::int64_t> out(values);
+  for (std::size_t k = 0; k < values; ++k) {
+    if (reals[k] != std::floor(reals[k]) || !(std::abs(reals[k]) < 0x1p63)) {
+      throw Error(path + ": expected whole numbers, got " + format_number(reals[k]));
+    }
+    out[k] = static_cast<std::int64_t>(reals[k]);
+  }
+  return out;
+}
+
+// Integers into an integer column: HDF5 converts reals by truncation and integers beyond
+// the column's type to its nearest bound (a species 2^40 read as 2147483647), both without a
+// word. Read wide, then checked.
+template <class T>
+void read_integers(hid_t dataset, const std::string& path, hsize_t first, hsize_t count, T* out,
+                   std::size_t values) {
+  Object type = owned(H5Dget_type(dataset), path + ": cannot read the data type");
+  const std::vector<std::int64_t> wide = H5Tget_class(type.id()) == H5T_FLOAT
+                                             ? whole_numbers(dataset, path, first, count, values)
+                                             : read_integer_rows(dataset, path, first, count);
+  constexpr auto lo = std::numeric_limits<T>::min(), hi = std::numeric_limits<T>::max();
+  for (std::size_t k = 0; k < values; ++k) {
+    if (wide[k] < lo || wide[k] > hi) {
+      throw Error(path + ": expected integers from " + std::to_string(lo) + " to " +
+                  std::to_string(hi) + ", got " + std::to_string(wide[k]));
+    }
+    out[k] = static_cast<T>(wide[k]);
+  }
+}
+
+template <class T>
+void read_values(hid_t dataset, const std::string& path, hsize_t first, hsize_t count, T* out,
+                 std::size_t values) {
+  if constexpr (std::is_integral_v<T>) {
+    read_integers(dataset, path, first, count, out, values);
+  } else {
+    read_rows(dataset, path, memory_type<T>(), first, count, out);
+  }
+}
 
 }  // namespace
 
@@ -78,11 +130,12 @@ void read_column(hid_t dataset, const std::string& path, hsize_t first, hsize_t 
       [&](auto& a) {
         using A = std::decay_t<decltype(a)>;
         using T = typename A::Scalar;
+        const auto values = static_cast<std::size_t>(a.size());
         if constexpr (A::ColsAtCompileTime == 1) {
-          read_rows(dataset, path, memory_type<T>(), first, count, a.data());
+          read_values(dataset, path, first, count, a.data(), values);
         } else {
           RowMajor<T> rows_first(a.rows(), a.cols());
-          read_rows(dataset, path, memory_type<T>(), first, count, rows_first.data());
+          read_values(dataset, path, first, count, rows_first.data(), values);
           a = rows_first;
         }
       },

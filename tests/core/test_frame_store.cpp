@@ -441,6 +441,30 @@ TEST_F(FrameStore, ARadiusMissingAtSomeStepsIsRefused) {
                 "got one on a clock of its own that misses some");
 }
 
+// HDF5 converts without a word: a species of 2^40 was read as 2147483647 and an id of
+// 1.5 as 1. Reals that are whole numbers are integers still.
+TEST_F(FrameStore, IntegersBeyondTheirColumnOrNotWholeAreRefused) {
+  auto with_species = [&](const std::string& name, hid_t type, const void* values) {
+    const fs::path p = file(name);
+    write_foreign(p, false);
+    Id f(H5Fopen(p.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
+    Id atoms(H5Gopen2(f, "particles/atoms", H5P_DEFAULT));
+    EXPECT_GE(H5Ldelete(atoms, "species", H5P_DEFAULT), 0);
+    put_dataset(atoms, "species", type, {4}, values);
+    return p;
+  };
+  const std::int64_t wide[4] = {2, std::int64_t{1} << 40, 1, 2};
+  EXPECT_EQ(reader_error(with_species("wide.h5", H5T_NATIVE_INT64, wide)),
+            "/particles/atoms/species: expected integers from -2147483648 to 2147483647, got "
+            "1099511627776");
+  const double half[4] = {2, 0.5, 1, 2};
+  EXPECT_EQ(reader_error(with_species("half.h5", H5T_NATIVE_DOUBLE, half)),
+            "/particles/atoms/species: expected whole numbers, got 0.5");
+  const double whole[4] = {2, 0, 1, 2};
+  const fs::path p = with_species("whole.h5", H5T_NATIVE_DOUBLE, whole);
+  EXPECT_EQ(FrameReader(p).read(0).species()[2], 1);
+}
+
 // A clock shorter than its values read as fewer frames (3 positions, 2 times: 2 frames),
 // exit 0. H5MD gives every sample its step and time.
 TEST_F(FrameStore, AnotherToolsClockShorterThanItsValuesIsRefused) {
