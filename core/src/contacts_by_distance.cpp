@@ -51,7 +51,9 @@ void declare_contact_tolerance(Schema& schema) {
             "relative contact tolerance: two particles touch when their centre distance is "
             "at most (R_i + R_j)(1 + tol), a particle and a wall when the centre-wall "
             "distance is at most R_i (1 + tol)")
-      .min(0.0);
+      // Beyond 1 a particle a whole diameter away would touch: no contact network has that
+      // (1e300 was refused by the neighbour search, in its own terms).
+      .range(0.0, 1.0);
 }
 
 IntArray DistanceContacts::coordination(Eigen::Index n, bool with_walls) const {

@@ -17,7 +17,8 @@ TEST(ContactTolerance, HasOneDefaultRangeAndText) {
   EXPECT_EQ(std::get<double>(*p.default_value), 1e-9);
   EXPECT_EQ(p.min, 0.0);
   EXPECT_FALSE(p.min_exclusive);
-  EXPECT_FALSE(p.max);
+  // 1e300 was refused by the neighbour search in its own terms, not as this parameter.
+  EXPECT_EQ(p.max, 1.0);
   EXPECT_EQ(p.doc,
             "relative contact tolerance: two particles touch when their centre distance "
             "is at most (R_i + R_j)(1 + tol), a particle and a wall when the centre-wall "
@@ -36,5 +37,6 @@ TEST(ContactTolerance, EveryPluginFindingContactsByDistanceDeclaresItAlike) {
     EXPECT_EQ(p->doc, expected.find(name)->doc) << plugin;
     EXPECT_EQ(std::get<double>(*p->default_value), kDefaultContactTolerance) << plugin;
     EXPECT_EQ(p->min, 0.0) << plugin;
+    EXPECT_EQ(p->max, 1.0) << plugin;
   }
 }
