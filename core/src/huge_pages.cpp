@@ -3,10 +3,11 @@
 #include <sys/mman.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdlib>
-#include <cstring>
 #include <string>
+#include <string_view>
 
 namespace granpipe::huge_pages {
 
@@ -49,20 +50,59 @@ void advise(void* data, std::size_t bytes) noexcept {
   madvise(pages, last - first, kCollapse);
 }
 
+namespace {
+
+// The tunable named among GLIBC_TUNABLES' "name=value:name=value".
+bool names_tunable(std::string_view tunables, std::string_view name) {
+  while (!tunables.empty()) {
+    const std::size_t end = std::min(tunables.find(':'), tunables.size());
+    const std::string_view item = tunables.substr(0, end);
+    if (item.substr(0, item.find('=')) == name) return true;
+    tunables.remove_prefix(std::min(end + 1, tunables.size()));
+  }
+  return false;
+}
+
+// The program's own path, so that the process keeps its name (ps, pgrep, top show the
+// file name executed: "exe" for /proc/self/exe).
+std::string own_path() {
+  std::string path(4096, '\0');
+  const ssize_t n = readlink("/proc/self/exe", path.data(), path.size());
+  if (n <= 0 || static_cast<std::size_t>(n) >= path.size()) return {};
+  path.resize(static_cast<std::size_t>(n));
+  return path;
+}
+
+void restore(const char* name, const char* value) {
+  if (value) {
+    setenv(name, value, 1);
+  } else {
+    unsetenv(name);
+  }
+}
+
+}  // namespace
+
 // A pores analysis of 10^5 spheres takes about 40 000 page faults with 4 kB pages, a third
 // of its time on this machine kind, and 5 000 with huge pages (docs/benchmarks.md).
 void restart_with_malloc_huge_pages(char** argv) noexcept {
   // Once only, whatever glibc makes of the tunables it is given.
   if (std::getenv("GRANPIPE_MALLOC_RESTARTED")) return;
   const char* tunables = std::getenv("GLIBC_TUNABLES");
-  if (tunables && std::strstr(tunables, "glibc.malloc.hugetlb=")) return;
+  if (tunables && names_tunable(tunables, "glibc.malloc.hugetlb")) return;
+  const std::string path = own_path();
+  if (path.empty()) return;
+  const std::string before = tunables ? tunables : "";
   const std::string ask = "glibc.malloc.hugetlb=1";
-  const std::string value = tunables && *tunables ? std::string(tunables) + ":" + ask : ask;
-  if (setenv("GLIBC_TUNABLES", value.c_str(), 1) != 0) return;
-  if (setenv("GRANPIPE_MALLOC_RESTARTED", "1", 1) != 0) return;
-  execv("/proc/self/exe", argv);
-  // Not run again (no /proc): the default heap serves, only slower, and the setting stays
-  // for the programs this one starts.
+  const std::string value = before.empty() ? ask : before + ":" + ask;
+  if (setenv("GLIBC_TUNABLES", value.c_str(), 1) == 0 &&
+      setenv("GRANPIPE_MALLOC_RESTARTED", "1", 1) == 0) {
+    execv(path.c_str(), argv);
+  }
+  // Not run again (the program gone, an environment too large to pass on): the default heap
+  // serves, only slower, and the programs this one starts get the environment it was given.
+  restore("GLIBC_TUNABLES", tunables ? before.c_str() : nullptr);
+  unsetenv("GRANPIPE_MALLOC_RESTARTED");
 }
 
 }  // namespace granpipe::huge_pages

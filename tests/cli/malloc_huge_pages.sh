@@ -20,6 +20,9 @@ tunables_of_a_run() {
     sleep 0.1
   done
   tr '\0' '\n' <"/proc/$pid/environ" | sed -n 's/^GLIBC_TUNABLES=//p'
+  # The process keeps its name (ps, pgrep, top): "exe" after running /proc/self/exe.
+  comm=$(cat "/proc/$pid/comm")
+  [ "$comm" = "$(basename "$exe")" ] || echo "FAIL: the process is named '$comm'"
   kill -9 "$pid"
   wait "$pid" 2>/dev/null || true
 }
@@ -28,6 +31,7 @@ tunables_of_a_run() {
 expect() {
   local found
   found=$(tunables_of_a_run "${@:2}")
+  case "$found" in *FAIL:*) echo "$found"; exit 1 ;; esac
   # shellcheck disable=SC2053
   [[ "$found" == $1 ]] || { echo "FAIL: ${*:2}: expected GLIBC_TUNABLES '$1', found '$found'"; exit 1; }
   echo "${*:2}: GLIBC_TUNABLES=$found"
