@@ -45,6 +45,13 @@ std::vector<T> read_clock(hid_t file, const std::string& path, hsize_t samples) 
   return out;
 }
 
+// The rows of an explicit clock, or `samples` for a fixed one (it has as many as asked).
+hsize_t clock_rows(hid_t file, const std::string& path, hsize_t samples) {
+  Object ds = open_stored_dataset(file, path);
+  const Shape shape = shape_of(ds.id(), path);
+  return shape.size() == 1 ? shape[0] : samples;
+}
+
 }  // namespace
 
 std::optional<Element> Element::open(hid_t file, const std::string& path) {
@@ -68,18 +75,23 @@ std::optional<Element> Element::open(hid_t file, const std::string& path) {
     throw Error(path + "/step: missing (a time-dependent H5MD element holds step and value)");
   }
   e.steps_ = read_clock<std::int64_t>(file, path + "/step", e.shape_[0]);
+  e.step_rows_ = clock_rows(file, path + "/step", e.shape_[0]);
   e.samples_ = e.steps_.size();
+  e.time_rows_ = e.shape_[0];
   if (is_dataset(file, path + "/time")) {
     e.times_ = read_clock<double>(file, path + "/time", e.samples_);
+    e.time_rows_ = clock_rows(file, path + "/time", e.shape_[0]);
     e.samples_ = std::min<hsize_t>(e.samples_, e.times_.size());
   }
   return e;
 }
 
-std::optional<Element::ShortClock> Element::short_clock() const {
-  if (!timed_ || samples_ >= shape_[0]) return std::nullopt;
+std::optional<Element::MismatchedClock> Element::mismatched_clock() const {
+  if (!timed_) return std::nullopt;
   const std::string group = data_path_.substr(0, data_path_.size() - std::string("/value").size());
-  return ShortClock{group + (steps_.size() == samples_ ? "/step" : "/time"), samples_};
+  if (step_rows_ != shape_[0]) return MismatchedClock{group + "/step", step_rows_};
+  if (time_rows_ != shape_[0]) return MismatchedClock{group + "/time", time_rows_};
+  return std::nullopt;
 }
 
 Shape Element::item() const { return timed_ ? Shape(shape_.begin() + 1, shape_.end()) : shape_; }

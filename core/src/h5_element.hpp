@@ -24,13 +24,13 @@ class Element {
   Shape item() const;
   const std::vector<std::int64_t>& steps() const { return steps_; }
   const std::vector<double>& times() const { return times_; }  // empty: no time stored
-  // H5MD gives every sample a step (and a time, when stored): only a writer stopped
-  // mid-sample leaves a clock shorter than value. The short clock's dataset and its rows.
-  struct ShortClock {
+  // H5MD gives every sample one step (and one time, when stored): only a writer stopped
+  // mid-sample leaves a clock of another length than value. That clock's dataset and rows.
+  struct MismatchedClock {
     std::string path;
     hsize_t rows;
   };
-  std::optional<ShortClock> short_clock() const;
+  std::optional<MismatchedClock> mismatched_clock() const;
   hsize_t value_rows() const { return timed_ ? shape_[0] : 1; }
 
   // Frame k is sample k (elements sampled with the frames, e.g. hard-linked clocks).
@@ -55,7 +55,8 @@ class Element {
   hsize_t samples_ = 0;
   std::vector<std::int64_t> steps_;
   std::vector<double> times_;
-  std::vector<hsize_t> rows_;  // sample of each frame; empty: frame k is sample k
+  hsize_t step_rows_ = 0, time_rows_ = 0;  // rows of explicit clocks; fixed ones: value's
+  std::vector<hsize_t> rows_;              // sample of each frame; empty: frame k is sample k
 };
 
 }  // namespace granpipe::h5

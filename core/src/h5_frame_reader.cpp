@@ -189,6 +189,7 @@ struct FrameReader::Impl {
   void check_clocks() const;
   void check_steps_written() const;
   void keep_frames_held(hsize_t& frames, hsize_t rows, const std::string& path) const;
+  void check_contacts_in_order(hsize_t frames, hsize_t contact_rows) const;
   void map_foreign_elements();
   Frame read(long k) const;
   std::vector<double> edge_lengths(long k) const;
@@ -395,17 +396,19 @@ hsize_t FrameReader::Impl::open_contacts(hsize_t& frames) {
 
 // A granpipe file: frame k is row k of everything, but a killed writer may leave some
 // datasets a frame ahead of others, and rows it extended but never committed.
-// A file no writer holds open has a step and a time for every sample: a short clock would
-// read as fewer frames, without a word.
+// A file no writer holds open has one step and one time for every sample: a clock of
+// another length would read as fewer frames, without a word. granpipe's own elements share
+// the positions' clock (hard links): theirs is the positions'.
 void FrameReader::Impl::check_clocks() const {
   auto check = [](const h5::Element& e) {
-    const auto clock = e.short_clock();
+    const auto clock = e.mismatched_clock();
     if (!clock) return;
     throw h5::Error(clock->path + ": expected a row for each of the " +
                     std::to_string(e.value_rows()) + " samples of " + e.path() + ", got " +
                     std::to_string(clock->rows) + " (damaged file)");
   };
   check(*position);
+  if (ours) return;
   if (edges) check(*edges);
   for (const ElementColumn& c : columns) check(c.element);
   for (const ElementColumn& o : observables) check(o.element);
@@ -426,7 +429,7 @@ void FrameReader::Impl::check_steps_written() const {
 
 void FrameReader::Impl::keep_frames_held(hsize_t& frames, hsize_t rows,
                                          const std::string& path) const {
-  if (info.complete && rows < static_cast<hsize_t>(info.frames)) {
+  if (info.complete && rows != static_cast<hsize_t>(info.frames)) {
     throw h5::Error(path + ": expected the " + std::to_string(info.frames) +
                     " frames of the positions in a complete file, got " + std::to_string(rows) +
                     " (damaged file)");
@@ -471,8 +474,28 @@ void FrameReader::Impl::settle_frames() {
                     std::to_string(contact_offset[k]) + " and count " +
                     std::to_string(contact_count[k]) + " (damaged file)");
   }
+  if (contacts && info.complete) check_contacts_in_order(frames, contact_rows);
   info.frames = static_cast<long>(frames);
   info.has_contacts = contacts;
+}
+
+// granpipe appends each frame's contacts after the frame before's: in a complete file an
+// offset pointing at other rows would read another frame's contacts as this one's, and a
+// count cut short would drop some, both without a word.
+void FrameReader::Impl::check_contacts_in_order(hsize_t frames, hsize_t contact_rows) const {
+  std::int64_t next = 0;
+  for (hsize_t k = 0; k < frames; ++k) {
+    if (contact_offset[k] != next) {
+      throw h5::Error(L::kContactOffset + ": frame " + std::to_string(k) + ": expected offset " +
+                      std::to_string(next) + " (after the rows of the frames before), got " +
+                      std::to_string(contact_offset[k]) + " (damaged file)");
+    }
+    next += contact_count[k];
+  }
+  if (static_cast<hsize_t>(next) == contact_rows) return;
+  throw h5::Error(L::kContactCount + ": expected counts summing to the " +
+                  std::to_string(contact_rows) + " contact rows of a complete file, got " +
+                  std::to_string(next) + " (damaged file)");
 }
 
 void FrameReader::Impl::map_foreign_elements() {

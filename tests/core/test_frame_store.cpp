@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <tuple>
 
 #include "granpipe/errors.hpp"
 #include "granpipe/frame_store.hpp"
@@ -671,14 +672,20 @@ TEST_F(FrameStore, AnElementShortOfTheFramesOfAFinishedFileIsRefused) {
                                    "file, got 2 (damaged file)");
     fs::remove(p);
   }
-  const fs::path p = write("short_step.h5", 3, 2, 4, none);
-  {
-    Id f(H5Fopen(p.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
-    set_rows(f, "/particles/all/position/step", 2);
+  // Positions shorter than their clock (and the rest), or a clock shorter than them.
+  for (const auto& [path, values, steps] : {std::tuple{"/particles/all/position/value", 2, 3},
+                                            {"/particles/all/position/step", 3, 2}}) {
+    const fs::path p = write("short_clock.h5", 3, 2, 4, none);
+    {
+      Id f(H5Fopen(p.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
+      set_rows(f, path, 2);
+    }
+    EXPECT_EQ(reader_error(p), "/particles/all/position/step: expected a row for each of the " +
+                                   std::to_string(values) +
+                                   " samples of /particles/all/position/value, got " +
+                                   std::to_string(steps) + " (damaged file)");
+    fs::remove(p);
   }
-  EXPECT_EQ(reader_error(p),
-            "/particles/all/position/step: expected a row for each of the 3 samples of "
-            "/particles/all/position/value, got 2 (damaged file)");
 }
 
 TEST_F(FrameStore, RowsWhoseStepWasNeverWrittenAreNotFrames) {
@@ -862,6 +869,26 @@ TEST_F(FrameStore, ContactsOutsideTheContactArraysAreRefused) {
                   std::to_string(offset) + " and count " + std::to_string(count) +
                   " (damaged file)");
   }
+}
+
+// Frame 1's offset pointed back at frame 0's row (read as its own contacts), or a count cut
+// short dropped contacts, exit 0.
+TEST_F(FrameStore, ContactsOutOfTheirFramesOrderInAFinishedFileAreRefused) {
+  const fs::path good = write("contacts.h5", 3, 3, 5);  // 1, 6 and 0 contacts: 7 rows
+  auto damaged = [&](std::int64_t offset, std::int64_t count) {
+    const fs::path p = file("out_of_order.h5");
+    fs::copy_file(good, p, fs::copy_options::overwrite_existing);
+    Id f(H5Fopen(p.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
+    put_row(f, "/granpipe/contacts/offset", 1, offset);
+    put_row(f, "/granpipe/contacts/count", 1, count);
+    return p;
+  };
+  EXPECT_EQ(reader_error(damaged(0, 1)),
+            "/granpipe/contacts/offset: frame 1: expected offset 1 (after the rows of the frames "
+            "before), got 0 (damaged file)");
+  EXPECT_EQ(reader_error(damaged(1, 5)),
+            "/granpipe/contacts/offset: frame 2: expected offset 6 (after the rows of the frames "
+            "before), got 7 (damaged file)");
 }
 
 // A partner out of range would read as a wall (j <= -2) or a particle that is not there:
