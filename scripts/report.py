@@ -16,8 +16,8 @@ import sys
 
 from paper_values import PaperValues, paper_problem
 from report_configuration import configuration_section
-from report_h5 import (Damaged, attr_number, attr_numbers, attr_text, attr_texts, column, member,
-                       scalar)
+from report_h5 import (HDF5_ERRORS, Damaged, attr_number, attr_numbers, attr_text, attr_texts,
+                       column, member, members, not_a_file, scalar, unreadable)
 from report_parts import TABLE_ROWS_SHOWN, html_table, number, table_section, with_error
 from report_plots import plots_section
 from report_sweep import report_problem, sweep_section
@@ -31,7 +31,7 @@ def refuse(message):
 
 def scalars_section(group):
     rows = []
-    for name, item in group.items():
+    for name, item in members(group):
         if attr_text(item, "kind", "") != "scalar":
             continue
         value = scalar(group, name)
@@ -69,7 +69,7 @@ SECTIONS = {"fit": fit_section, "histogram": histogram_section}
 def producer_section(plt, path, group, paper):
     parts = [f"<h3 id=\"{html.escape(path)}\">{html.escape(path)}</h3>",
              plots_section(plt, [("", group)], path, paper), scalars_section(group)]
-    for name, item in group.items():
+    for name, item in members(group):
         kind = attr_text(item, "kind", "")
         if kind == "table":
             parts.append(table_section(path, name, item))
@@ -119,6 +119,9 @@ def read_results(run):
     for name, partial in (("results.h5", False), ("results.partial.h5", True)):
         path = os.path.join(run, name)
         if os.path.exists(path):
+            what = not_a_file(path)  # h5py would wait on a FIFO for ever
+            if what:
+                refuse(f"{path}: expected a granpipe results file, found {what}")
             try:
                 results = h5py.File(path, "r", swmr=partial)
             except OSError as e:
@@ -206,6 +209,8 @@ def report_body(run, pipeline_text, pipeline, results, partial, note, plt):
 
 
 def is_our_page(path):
+    if not os.path.isfile(path):  # a FIFO would block the read; a directory is not ours
+        return False
     try:
         with open(path, errors="replace") as f:
             return GENERATOR in f.read(4096)
@@ -223,6 +228,8 @@ def main(run):
         body = report_body(run, pipeline_text, pipeline, results, partial, note, pyplot())
     except Damaged as e:  # results.h5 or frames.h5 not as granpipe writes them
         refuse(str(e))
+    except HDF5_ERRORS as e:  # an object of results.h5 HDF5 cannot read (frames.h5: Damaged)
+        refuse(str(unreadable(results.filename, e)))
     html_text = page(f"granpipe run {name}", body)
     target = os.path.join(run, "report.html")
     if os.path.lexists(target) and not is_our_page(target):

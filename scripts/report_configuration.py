@@ -4,7 +4,8 @@ import html
 import io
 import os
 
-from report_h5 import Damaged, damaged, member, numbers_dataset
+from report_h5 import (HDF5_ERRORS, Damaged, damaged, member, not_a_file, numbers_dataset,
+                       unreadable)
 
 MAX_DRAWN_PARTICLES = 20000  # a configuration picture of more would be pages of SVG
 
@@ -12,6 +13,9 @@ MAX_DRAWN_PARTICLES = 20000  # a configuration picture of more would be pages of
 def open_frames(path):
     """The frames file, open to read (a run still writing it may go on: SWMR)."""
     import h5py
+    what = not_a_file(path)  # h5py would wait on a FIFO for ever
+    if what:
+        raise Damaged(f"{path}: expected a granpipe frames file, found {what}")
     try:
         return h5py.File(path, "r", swmr=True)
     except OSError as e:  # not HDF5, or cut short: said as report.py says it of results.h5
@@ -20,7 +24,9 @@ def open_frames(path):
 
 
 def frame_rows(particles, name, t, n=None):
-    """Frame t of particles/all/<name>/value: a row per particle (n of them when given)."""
+    """Frame t of particles/all/<name>/value: a row per particle (n of them when given);
+    a position or radius not finite (or a radius below 0) is damage: granpipe saves none."""
+    import numpy as np
     ds = numbers_dataset(particles, f"{name}/value", 3 if name == "position" else 2)
     if ds.shape[0] <= t:
         raise damaged(ds, f"{t + 1} frames (as many as position/step)", ds.shape[0])
@@ -28,7 +34,14 @@ def frame_rows(particles, name, t, n=None):
         raise damaged(ds, f"{n} particles (as many as position)", ds.shape[1])
     if name == "position" and ds.shape[2] not in (2, 3):
         raise damaged(ds, "2 or 3 coordinates", ds.shape[2])
-    return ds[t]
+    rows = ds[t]
+    if name in ("position", "radius"):
+        bad = ~np.isfinite(rows) | ((rows < 0) if name == "radius" else False)
+        if bad.any():
+            expected = "finite numbers >= 0" if name == "radius" else "finite numbers"
+            raise damaged(ds, f"{expected} in frame {t}", rows[np.unravel_index(
+                np.argmax(bad), bad.shape)])
+    return rows
 
 
 def last_frame(path):
@@ -137,7 +150,13 @@ def configuration_section(plt, run):
         return ""
     if plt is None:
         return ""
-    frame = last_frame(path)
+    try:
+        frame = last_frame(path)
+    except HDF5_ERRORS as e:  # an object HDF5 cannot read (a flipped byte)
+        raise unreadable(path, e, "frames") from None
+    if frame is not None and len(frame[0]) == 0:
+        return (f"<p class=note>{html.escape(name)}: no picture (its last frame has no "
+                "particle)</p>")
     svg = configuration_svg(plt, frame) if frame is not None else None
     if svg is None:
         return (f"<p class=note>{html.escape(name)}: no picture (no frame, or more than "

@@ -6,6 +6,8 @@ NaN and inf in a dataset of numbers are data (a value the run left undefined), n
 Neither h5py nor numpy is imported here: report.py lists the CSV files without them."""
 import json
 import numbers
+import os
+import stat
 
 REQUIRED = object()  # attr_text's default: the attribute must be there
 NUMBER_KINDS = "iuf"  # numpy dtype kinds of the numbers granpipe writes (ints, floats)
@@ -13,6 +15,25 @@ NUMBER_KINDS = "iuf"  # numpy dtype kinds of the numbers granpipe writes (ints, 
 
 class Damaged(Exception):
     """A results or frames file that is not as granpipe writes it; str() is the message."""
+
+
+# What h5py raises for an object HDF5 cannot read (a flipped byte, a heap cut short): caught
+# where a file is read, and turned into Damaged by unreadable when h5py raised it.
+HDF5_ERRORS = (KeyError, OSError, RuntimeError)
+
+
+def unreadable(path, error, what="results"):
+    """A Damaged for the granpipe `what` file `path`, part of which HDF5 could not read
+    (`error`, one of HDF5_ERRORS); `error` itself when h5py did not raise it (a bug of ours
+    stays a traceback)."""
+    tb, innermost = error.__traceback__, ""
+    while tb is not None:
+        innermost, tb = tb.tb_frame.f_code.co_filename, tb.tb_next
+    if "h5py" not in innermost.replace("\\", "/").split("/"):
+        raise error
+    reason = " ".join(str(error.args[0] if error.args else error).split())
+    return Damaged(f"{path}: expected a granpipe {what} file, found one HDF5 cannot read: "
+                   f"{reason}")
 
 
 def damaged(obj, expected, found, attr=None, path=None):
@@ -97,6 +118,42 @@ def attr_numbers(obj, name, length, why):
     return value.astype(float)
 
 
+def not_a_file(path):
+    """What stands at `path` when it is no regular file (a FIFO, a device, a directory: one
+    h5py would block on or fail to read), else None; a symbolic link is followed."""
+    mode = os.stat(path).st_mode
+    if stat.S_ISREG(mode):
+        return None
+    for test, what in ((stat.S_ISDIR, "a directory"), (stat.S_ISFIFO, "a FIFO (named pipe)"),
+                       (stat.S_ISCHR, "a character device"), (stat.S_ISBLK, "a block device"),
+                       (stat.S_ISSOCK, "a socket")):
+        if test(mode):
+            return what
+    return "no regular file"
+
+
+def linked(parent, name):
+    """parent[name] where the link `name` is a hard link, as granpipe writes every object: a
+    soft or external link (dangling, looping, or into another file) is damage."""
+    import h5py
+    if name in ("", ".") or "/" in name:  # a path, not one link (HDF5 has no link "." or "")
+        return parent[name]
+    link = parent.get(name, getlink=True)
+    path = f"{parent.name.rstrip('/')}/{name}"
+    if isinstance(link, h5py.SoftLink):
+        raise damaged(parent, "a group or a dataset", f"a soft link to {shown(link.path)}",
+                      path=path)
+    if isinstance(link, h5py.ExternalLink):
+        raise damaged(parent, "a group or a dataset", "an external link to "
+                      f"{shown(link.path)} in {shown(link.filename)}", path=path)
+    return parent[name]
+
+
+def members(group):
+    """(name, object) of each member of `group`, its links checked (linked)."""
+    return [(name, linked(group, name)) for name in group]
+
+
 def of_kind(item, kind):
     """`item`, checked to be a "group" or a "dataset"."""
     import h5py
@@ -110,9 +167,9 @@ def member(parent, name, kind):
     *groups, name = name.split("/")
     for part in groups:
         parent = member(parent, part, "group")
-    if name not in parent:
+    if name not in parent and (name in ("", ".") or parent.get(name, getlink=True) is None):
         raise damaged(parent, f"a {kind}", "none", path=f"{parent.name.rstrip('/')}/{name}")
-    return of_kind(parent[name], kind)
+    return of_kind(linked(parent, name), kind)
 
 
 def numbers_dataset(parent, name, ndim, integer=False):

@@ -4,7 +4,7 @@ import html
 import io
 import math
 
-from report_h5 import attr_text, read_table
+from report_h5 import attr_text, damaged, read_table
 
 TABLE_ROWS_SHOWN = 12  # a long table is cut on the page; its CSV file has every row
 MARKED_POINTS = 60  # a line of more points is drawn without a marker at each (page size)
@@ -39,8 +39,8 @@ def table_section(producer, name, group, rows_shown=TABLE_ROWS_SHOWN):
     n = len(data[columns[0]]) if columns else 0
     header = [f"{c} ({u})" if u else c for c, u in zip(columns, units)]
     rows = [[number(data[c][r]) for c in columns] for r in range(min(n, rows_shown))]
-    more = (f" — the first {rows_shown} of {n} rows; every row in "
-            f"<a href=\"{csv_name(producer, name)}\">{csv_name(producer, name)}</a>"
+    csv = html.escape(csv_name(producer, name))  # names from the file: no markup of theirs
+    more = (f" — the first {rows_shown} of {n} rows; every row in <a href=\"{csv}\">{csv}</a>"
             if n > rows_shown else f" — {n} rows")
     return (f"<h4>table {html.escape(name)}</h4><p>{html.escape(attr_text(group, 'doc'))}{more}"
             f"</p>" + html_table(header, rows))
@@ -49,6 +49,30 @@ def table_section(producer, name, group, rows_shown=TABLE_ROWS_SHOWN):
 def axis_label(label, unit):
     """The plugin's label, with the column's unit when the label does not give one."""
     return f"{label} ({unit})" if unit and unit not in label else label
+
+
+def plain(text):
+    """A label from a file for matplotlib: its mathtext ("$\\phi$") where that is valid, else
+    the text as it is, its "$" escaped (mathtext matplotlib cannot parse raises when drawn)."""
+    from matplotlib import cbook
+    from matplotlib.mathtext import MathTextParser
+    if not cbook.is_math_text(text):
+        return text
+    try:
+        MathTextParser("path").parse(text)
+        return text
+    except ValueError:
+        return text.replace("$", r"\$")
+
+
+def uncertainties(e, group, name):
+    """`e`, the uncertainties of the column `name` of `group` (None: none); a negative one is
+    damage (NaN: undefined, drawn without a bar)."""
+    import numpy as np
+    if e is not None and (e < 0).any():
+        raise damaged(group, "uncertainties >= 0 (or NaN)", e[np.argmax(e < 0)],
+                      path=f"{group.name.rstrip('/')}/{name}")
+    return e
 
 
 def drawable(x, y, e, logx, logy):

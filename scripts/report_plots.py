@@ -3,8 +3,9 @@ y column (per sweep point in a sweep), axis units from the table, error bars or 
 <y>_err columns, and the paper's values over them where the pipeline declares some."""
 import html
 
-from report_h5 import attr_number, attr_text, attr_texts, damaged, member, read_table
-from report_parts import MARKED_POINTS, axis_label, drawable, inline_svg
+from report_h5 import attr_number, attr_text, attr_texts, damaged, linked, member, read_table
+from report_parts import (MARKED_POINTS, axis_label, drawable, inline_svg, plain,
+                          uncertainties)
 
 
 def declared_columns(declared, group):
@@ -30,9 +31,10 @@ def plot_svg(plt, declared, tables, plot, paper):
     for label, group in tables:
         data, unit_of = declared_columns(declared, group)
         for y_name in attr_texts(declared, "y"):
-            x, y, e = drawable(data[x_name], data[y_name], data.get(f"{y_name}_err"), logx, logy)
+            e = uncertainties(data.get(f"{y_name}_err"), group, f"{y_name}_err")
+            x, y, e = drawable(data[x_name], data[y_name], e, logx, logy)
             drawn += len(x)
-            line_label = " ".join(part for part in (label, y_name) if part)
+            line_label = plain(" ".join(part for part in (label, y_name) if part))
             marker = "." if len(x) <= MARKED_POINTS else None
             if e is not None and marker:
                 ax.errorbar(x, y, yerr=e, label=line_label, marker=marker, capsize=2)
@@ -44,9 +46,9 @@ def plot_svg(plt, declared, tables, plot, paper):
         plt.close(fig)
         return None
     paper.draw(ax, plot, lambda x, y, e: drawable(x, y, e, logx, logy))
-    ax.set_xlabel(axis_label(attr_text(declared, "xlabel"), unit_of[x_name]))
-    ax.set_ylabel(attr_text(declared, "ylabel"))
-    ax.set_title(attr_text(declared, "title"))
+    ax.set_xlabel(plain(axis_label(attr_text(declared, "xlabel"), unit_of[x_name])))
+    ax.set_ylabel(plain(attr_text(declared, "ylabel")))
+    ax.set_title(plain(attr_text(declared, "title")))
     return inline_svg(plt, fig, ax, logx, logy)
 
 
@@ -63,7 +65,7 @@ def plots_section(plt, groups, producer, paper):
     for name in plots:
         declared = member(plots, name, "group")
         table_name = attr_text(declared, "table")
-        tables = [(label, g[table_name]) for label, g in groups if table_name in g]
+        tables = [(label, linked(g, table_name)) for label, g in groups if table_name in g]
         if not tables:
             parts.append(f"<p class=note>plot {html.escape(name)}: its table "
                          f"{html.escape(table_name)} is not in the results</p>")

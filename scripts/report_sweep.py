@@ -5,7 +5,8 @@ import html
 import json
 
 from report_h5 import damaged, indices, member, read_table
-from report_parts import drawable, html_table, inline_svg, number, table_section
+from report_parts import (drawable, html_table, inline_svg, number, plain, table_section,
+                          uncertainties)
 from report_plots import plots_section
 from speed_error import deviation_table, other_swept, pooled, value_namer
 
@@ -114,7 +115,7 @@ def missing_columns(what, wanted, columns):
             f"{html.escape(', '.join(missing))}</p>" if missing else "")
 
 
-def sweep_plot(plt, spec, rows, columns, name_of, paper):
+def sweep_plot(plt, spec, rows, columns, name_of, paper, points):
     """A declared result against a swept parameter: a line per y column and per value of the
     other swept parameters (replicas, a second knob), the paper's values over them."""
     import numpy as np  # here: a page without h5py (and so numpy) still lists the files
@@ -133,13 +134,14 @@ def sweep_plot(plt, spec, rows, columns, name_of, paper):
         tag = ", ".join(f"{c.split('.')[-1]} = {name_of(c, v)}" for c, v in zip(others, key))
         for y in spec["y"]:
             x, v, e = (np.array([r.get(c, np.nan) for r in members]) for c in (spec["x"], y, y + "_err"))
-            x, v, e = drawable(x, v, None if np.isnan(e).all() else e, logx, logy)
+            e = uncertainties(None if np.isnan(e).all() else e, points, y + "_err")
+            x, v, e = drawable(x, v, e, logx, logy)
             ax.errorbar(x, v, yerr=e, marker="o", markersize=3, capsize=2,
-                        label=" ".join(p for p in (y, tag) if p))
+                        label=plain(" ".join(p for p in (y, tag) if p)))
     paper.draw(ax, f"sweep/{name}", lambda x, y, e: drawable(x, y, e, logx, logy))
-    ax.set_xlabel(spec.get("xlabel", spec["x"]))
-    ax.set_ylabel(spec.get("ylabel", ", ".join(spec["y"])))
-    ax.set_title(spec.get("title", name))
+    ax.set_xlabel(plain(spec.get("xlabel", spec["x"])))
+    ax.set_ylabel(plain(spec.get("ylabel", ", ".join(spec["y"]))))
+    ax.set_title(plain(spec.get("title", name)))
     return (f"<figure id=\"sweep-{html.escape(name)}\">{inline_svg(plt, fig, ax, logx, logy)}"
             f"<figcaption>{html.escape(name)}</figcaption></figure>")
 
@@ -193,9 +195,10 @@ def speed_error_chart(plt, series):
 def declared_sweep_section(plt, results, pipeline, paper):
     """The sweep plots and the speed-against-error study the pipeline's "report" declares."""
     report = pipeline.get("report", {})
-    rows, columns = summary_rows(member(results, "sweep/points", "group"), pipeline)
+    points = member(results, "sweep/points", "group")
+    rows, columns = summary_rows(points, pipeline)
     name_of = value_namer(pipeline)
-    parts = [sweep_plot(plt, spec, rows, columns, name_of, paper)
+    parts = [sweep_plot(plt, spec, rows, columns, name_of, paper, points)
              for spec in report.get("sweep_plots", [])]
     if "speed_vs_error" in report:
         parts.append(speed_error_section(plt, report["speed_vs_error"], rows, columns, name_of))

@@ -97,6 +97,52 @@ def edit_pipeline(change):
     return damage
 
 
+def fifo(name):
+    """The file replaced by a FIFO, which h5py would wait on for ever."""
+    def damage(run_dir):
+        os.remove(os.path.join(run_dir, name))
+        os.mkfifo(os.path.join(run_dir, name))
+    return damage
+
+
+def link(path, make):
+    """A link at `path` (granpipe writes none): make() an h5py.SoftLink or ExternalLink."""
+    def change(f):
+        f[path] = make()
+    return in_h5("results.h5", change)
+
+
+def flip_header(path):
+    """Bytes flipped at the start of the object header of `path` in results.h5."""
+    def damage(run_dir):
+        name = os.path.join(run_dir, "results.h5")
+        with h5py.File(name, "r") as f:
+            addr = h5py.h5o.get_info(f[path].id).addr
+        with open(name, "r+b") as out:
+            out.seek(addr)
+            head = out.read(8)
+            out.seek(addr)
+            out.write(bytes(b ^ 0xFF for b in head))
+    return damage
+
+
+def last_frame(path, value):
+    """particles/all/<path> of frames.h5's last frame set to `value`."""
+    def change(f):
+        f[f"particles/all/{path}"][-1] = value
+    return in_h5("frames.h5", change)
+
+
+def no_particles(f):
+    """Every per-particle dataset of frames.h5 emptied to 0 particles, its frames kept."""
+    for name, g in f["particles/all"].items():
+        if name != "box" and "value" in g:
+            old, attrs = g["value"], dict(g["value"].attrs)
+            shape, dtype = (old.shape[0], 0) + old.shape[2:], old.dtype
+            del g["value"]
+            g.create_dataset("value", shape=shape, dtype=dtype).attrs.update(attrs)
+
+
 def garbage(name):
     def damage(run_dir):
         with open(os.path.join(run_dir, name), "wb") as f:
@@ -155,10 +201,49 @@ DAMAGES = [
      rewrite("particles/all/radius/value", lambda v: v[:, :-1], "frames.h5"),
      r"/particles/all/radius/value: expected 60 particles \(as many as position\), found 59",
      "frames.h5"),
+    ("results a FIFO", "arches", fifo("results.h5"),
+     r"expected a granpipe results file, found a FIFO \(named pipe\)"),
+    ("frames a FIFO", "arches", fifo("frames.h5"),
+     r"expected a granpipe frames file, found a FIFO \(named pipe\)", "frames.h5"),
+    ("negative uncertainty", "arches",
+     rewrite("packing/profile/phi_err", lambda v: -np.abs(v) - 0.01),
+     r"/packing/profile/phi_err: expected uncertainties >= 0 \(or NaN\), found -[\d.e+-]+"),
+    ("dangling external link", "arches",
+     link("arches/ext", lambda: h5py.ExternalLink("/nonexistent/results.h5", "/x")),
+     r'/arches/ext: expected a group or a dataset, found an external link to "/x" in '
+     r'"/nonexistent/results\.h5"'),
+    ("soft link to itself", "arches", link("arches/loop", lambda: h5py.SoftLink("/arches/loop")),
+     r'/arches/loop: expected a group or a dataset, found a soft link to "/arches/loop"'),
+    ("object header flipped", "arches", flip_header("packing/profile/phi"),
+     r"expected a granpipe results file, found one HDF5 cannot read: [^\n]+"),
+    ("frames radius NaN", "arches", last_frame("radius/value", np.nan),
+     r"/particles/all/radius/value: expected finite numbers >= 0 in frame \d+, found nan",
+     "frames.h5"),
+    ("frames position inf", "arches", last_frame("position/value", np.inf),
+     r"/particles/all/position/value: expected finite numbers in frame \d+, found inf",
+     "frames.h5"),
 ]
 
-# Data a run may hold: reported with exit 0 (NaN as "undefined"), the page holding each text.
+# Data a run may hold: reported with exit 0 (NaN as "undefined"), the page holding each text
+# (and none of the texts of a fifth item).
 PROFILE_COLUMNS = ("height", "phi", "phi_err")
+MARKUP = 'x"><img src=x onerror=alert(1)>'  # no "/": one HDF5 name
+
+
+def table_named(name):
+    """The table arches/per_frame renamed `name`, of 20 rows (the page links a table longer
+    than it shows to its CSV file, by name)."""
+    def change(f):
+        table = f["arches/per_frame"]
+        for c in table.attrs["columns"]:
+            old = table[c]
+            values, attrs = np.resize(old[()], 20), dict(old.attrs)
+            del table[c]
+            table.create_dataset(c, data=values).attrs.update(attrs)
+        f.move("arches/per_frame", f"arches/{name}")
+    return in_h5("results.h5", change)
+
+
 LEGITIMATE = [
     ("NaN and inf in a column", "arches",
      rewrite("packing/profile/phi", lambda v: np.resize([np.nan, np.inf], len(v))),
@@ -168,6 +253,14 @@ LEGITIMATE = [
      [" — 0 rows", "plot profile: no point to draw"]),
     ("histogram without errors", "arches", delete("arches/span_all/errors"),
      ["<h4>histogram span_all</h4>"]),
+    ("title of invalid mathtext", "arches",
+     each(set_attr("packing/_plots/profile", "title", "cost $\\foo$"),
+          set_attr("packing/_plots/profile", "ylabel", "$x^$")),
+     ["cost $\\foo$", "$x^$"]),
+    ("table name of markup", "arches", table_named(MARKUP),
+     ['href="arches.x&quot;&gt;&lt;img src=x onerror=alert(1)&gt;.csv"'], ["<img"]),
+    ("frames of no particle", "arches", in_h5("frames.h5", no_particles),
+     ["frames.h5: no picture (its last frame has no particle)"]),
 ]
 
 
@@ -179,16 +272,25 @@ def damaged_copy(work, base, name, damage):
 
 
 def report(run_dir):
-    return subprocess.run([exe, "report", run_dir], capture_output=True, text=True)
+    """granpipe report of the run; one that hangs (a FIFO read) is stopped, exit None."""
+    try:
+        return subprocess.run([exe, "report", run_dir], capture_output=True, text=True,
+                              timeout=120)
+    except subprocess.TimeoutExpired as e:
+        return subprocess.CompletedProcess(e.cmd, None, "", "timed out")
 
 
 def files(run_dir):
-    """{path: bytes} of every file of the run."""
+    """{path: bytes} of every file of the run (a FIFO: its mode, never read)."""
     out = {}
     for top, _, names in os.walk(run_dir):
         for n in names:
-            with open(os.path.join(top, n), "rb") as f:
-                out[os.path.relpath(os.path.join(top, n), run_dir)] = f.read()
+            path = os.path.join(top, n)
+            if not os.path.isfile(path):
+                out[os.path.relpath(path, run_dir)] = os.lstat(path).st_mode
+                continue
+            with open(path, "rb") as f:
+                out[os.path.relpath(path, run_dir)] = f.read()
     return out
 
 
@@ -211,16 +313,17 @@ with tempfile.TemporaryDirectory() as work:
         if files(run_dir) != before:  # the refusal writes nothing, its report.html stays
             failures.append(f"{name}: the run's files changed")
 
-    for name, base, damage, expected in LEGITIMATE:
+    for name, base, damage, expected, *absent in LEGITIMATE:
         run_dir = damaged_copy(work, base, name, damage)
         os.remove(os.path.join(run_dir, "report.html"))  # the page read is the one written now
         r = report(run_dir)
         page_path = os.path.join(run_dir, "report.html")
         page = open(page_path).read() if os.path.exists(page_path) else ""
         missing = [e for e in expected if e not in page]
-        if r.returncode != 0 or r.stderr or missing:
+        present = [a for a in (absent[0] if absent else []) if a in page]
+        if r.returncode != 0 or r.stderr or missing or present:
             failures.append(f"{name}: exit {r.returncode}, {r.stderr!r}, "
-                            f"not on the page: {missing}")
+                            f"not on the page: {missing}, on the page: {present}")
 
 if failures:
     print("FAIL", *failures, sep="\n")
