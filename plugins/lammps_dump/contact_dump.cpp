@@ -41,8 +41,15 @@ struct Entry {
   }
 };
 
-// The frame row of the atom an entry names (ids written as %g numbers: "51", "1e+06").
+// The frame row of the atom an entry names (ids written as %g numbers: "51", "1e+06"). An id
+// printed to fewer digits than it has ("1.23457e+06" for 1234567) names no atom for sure.
 std::int64_t row_of(const Entry& e, int column, const Frame& f, const std::string& frame_place) {
+  const std::string_view word = e.words[static_cast<std::size_t>(column)];
+  if (printed_rounding(word) > 0.5) {
+    throw InputError(e.at() + "expected an atom id written to its last digit in column " +
+                     std::to_string(column + 1) + ", got \"" + std::string(word) +
+                     "\" (write the ids with %d: dump_modify format)");
+  }
   const double id = e.value(column);
   const auto& ids = f.id();
   const auto* end = ids.data() + ids.size();

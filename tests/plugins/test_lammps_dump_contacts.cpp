@@ -261,6 +261,10 @@ TEST_F(LammpsDumpContacts, APairsDistanceOrOverlapMustBeWhereItsAtomsAre) {
             "pairs.dump: timestep 0, line 10: expected an overlap of 0.001 in column 7 (atoms 1 "
             "and 2 as the snapshot places them, to within 0.0500017), got 0.7");
   EXPECT_NEAR(overlap(one_pair(lammps, "1 2 0.999 -1.5 0 0 0")), 0.001, 1e-12);
+  // %g prints atom 1234567 as 1.23457e+06, which named atom 1234570 when there was one.
+  EXPECT_EQ(refusal(one_pair(lammps, "1.23457e+06 2 0.999 -1.5 0 0 0")),
+            "pairs.dump: timestep 0, line 10: expected an atom id written to its last digit in "
+            "column 1, got \"1.23457e+06\" (write the ids with %d: dump_modify format)");
   EXPECT_NEAR(overlap(one_pair(liggghts, "1 2 0 -1.5 0 0 0.001")), 0.001, 1e-12);
 }
 
