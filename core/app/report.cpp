@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -36,13 +37,18 @@ ReportOutcome write_report(const fs::path& run_dir) {
   std::string script_arg = script.string(), dir_arg = run_dir.string();
   std::vector<char*> argv{python.data(), script_arg.data(), dir_arg.data(), nullptr};
   pid_t pid = 0;
-  if (posix_spawnp(&pid, python.c_str(), nullptr, nullptr, argv.data(), environ) != 0)
-    return {false, "report.html not written: " + python + " was not found"};
+  if (const int error = posix_spawnp(&pid, python.c_str(), nullptr, nullptr, argv.data(), environ))
+    return {false, "report.html not written: cannot start " + python + ": " + std::strerror(error)};
   int status = 0;
   while (waitpid(pid, &status, 0) < 0) {
     if (errno != EINTR) return {false, "report.html not written: lost the report's process"};
   }
   if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return {true, ""};
+  // A crash inside a library (HDF5 on a corrupt file) prints nothing of its own.
+  if (WIFSIGNALED(status)) {
+    return {false, "report.html not written: " + script.string() + " was stopped by signal " +
+                       std::to_string(WTERMSIG(status)) + " (" + strsignal(WTERMSIG(status)) + ")"};
+  }
   const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return {false,
           "report.html not written: " + script.string() + " failed (exit " + std::to_string(code) +
