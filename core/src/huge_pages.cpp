@@ -19,39 +19,6 @@ constexpr int kCollapse = 25;
 
 std::size_t rounded_up(std::size_t bytes) { return (bytes + kPage - 1) / kPage * kPage; }
 
-}  // namespace
-
-// Maps one page more than needed and gives back what lies before the first 2 MB boundary
-// and after the last page (mmap aligns to 4 kB only).
-void* allocate(std::size_t bytes) {
-  const std::size_t size = rounded_up(bytes);
-  void* mapped =
-      mmap(nullptr, size + kPage, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-  if (mapped == MAP_FAILED) throw std::bad_alloc();
-  const auto start = reinterpret_cast<std::uintptr_t>(mapped);
-  const std::uintptr_t aligned = (start + kPage - 1) / kPage * kPage;
-  if (aligned > start) munmap(mapped, aligned - start);
-  const std::uintptr_t end = start + size + kPage;
-  if (end > aligned + size) munmap(reinterpret_cast<void*>(aligned + size), end - aligned - size);
-  // Advice only: a kernel without transparent huge pages leaves 4 kB pages.
-  madvise(reinterpret_cast<void*>(aligned), size, MADV_HUGEPAGE);
-  return reinterpret_cast<void*>(aligned);
-}
-
-void deallocate(void* p, std::size_t bytes) noexcept { munmap(p, rounded_up(bytes)); }
-
-void advise(void* data, std::size_t bytes) noexcept {
-  const auto start = reinterpret_cast<std::uintptr_t>(data);
-  const std::uintptr_t first = (start + kPage - 1) / kPage * kPage;
-  const std::uintptr_t last = (start + bytes) / kPage * kPage;
-  if (last <= first) return;
-  void* pages = reinterpret_cast<void*>(first);
-  madvise(pages, last - first, MADV_HUGEPAGE);
-  madvise(pages, last - first, kCollapse);
-}
-
-namespace {
-
 // The tunable named among GLIBC_TUNABLES' "name=value:name=value".
 bool names_tunable(std::string_view tunables, std::string_view name) {
   while (!tunables.empty()) {
@@ -83,8 +50,37 @@ void restore(const char* name, const char* value) {
 
 }  // namespace
 
-// A pores analysis of 10^5 spheres takes about 40 000 page faults with 4 kB pages, a third
-// of its time on this machine kind, and 5 000 with huge pages (docs/benchmarks.md).
+// Maps one page more than needed and gives back what lies before the first 2 MB boundary
+// and after the last page (mmap aligns to 4 kB only).
+void* allocate(std::size_t bytes) {
+  const std::size_t size = rounded_up(bytes);
+  void* mapped =
+      mmap(nullptr, size + kPage, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  if (mapped == MAP_FAILED) throw std::bad_alloc();
+  const auto start = reinterpret_cast<std::uintptr_t>(mapped);
+  const std::uintptr_t aligned = (start + kPage - 1) / kPage * kPage;
+  if (aligned > start) munmap(mapped, aligned - start);
+  const std::uintptr_t end = start + size + kPage;
+  if (end > aligned + size) munmap(reinterpret_cast<void*>(aligned + size), end - aligned - size);
+  // Advice only: a kernel without transparent huge pages leaves 4 kB pages.
+  madvise(reinterpret_cast<void*>(aligned), size, MADV_HUGEPAGE);
+  return reinterpret_cast<void*>(aligned);
+}
+
+void deallocate(void* p, std::size_t bytes) noexcept { munmap(p, rounded_up(bytes)); }
+
+void advise(void* data, std::size_t bytes) noexcept {
+  const auto start = reinterpret_cast<std::uintptr_t>(data);
+  const std::uintptr_t first = (start + kPage - 1) / kPage * kPage;
+  const std::uintptr_t last = (start + bytes) / kPage * kPage;
+  if (last <= first) return;
+  void* pages = reinterpret_cast<void*>(first);
+  madvise(pages, last - first, MADV_HUGEPAGE);
+  madvise(pages, last - first, kCollapse);
+}
+
+// A pores analysis of 10^5 spheres takes about 39 000 page faults with 4 kB pages and 6 000
+// with huge pages, 30 % less time on this machine kind (docs/benchmarks.md).
 void restart_with_malloc_huge_pages(char** argv) noexcept {
   // Once only, whatever glibc makes of the tunables it is given.
   if (std::getenv("GRANPIPE_MALLOC_RESTARTED")) return;

@@ -13,10 +13,10 @@ namespace {
 // A force PDF is of |F_n|/<F_n>: a magnitude or a mean beyond the largest double has none.
 [[noreturn]] void refuse_unbounded_force(const Eigen::ArrayXd& magnitude,
                                          const std::string& where) {
+  // The first magnitude past the largest double, else the largest (a sum past it).
   Eigen::Index row = 0;
-  const bool all_finite = magnitude.allFinite();
-  if (all_finite) magnitude.maxCoeff(&row);
-  while (!all_finite && std::isfinite(magnitude[row])) ++row;
+  while (row < magnitude.size() && std::isfinite(magnitude[row])) ++row;
+  if (row == magnitude.size()) magnitude.maxCoeff(&row);
   throw InputError(where + ": contact " + std::to_string(row) +
                    ": expected normal forces whose mean is a finite number, got |F_n| = " +
                    format_number(magnitude[row]));
