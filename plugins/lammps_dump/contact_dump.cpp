@@ -103,7 +103,7 @@ void check_touching(const Entry& e, const Frame& f, std::int64_t i, std::int64_t
 // The overlap a pair's own column states (LIGGGHTS' delta, LAMMPS' dist) must be the one
 // its atoms' positions give: a column of another snapshot or of another quantity would
 // store a contact the configuration does not hold. They agree to the rounding of the
-// positions and of the word written.
+// positions and of the word written; the more precise of the two is kept.
 double pair_overlap(const Entry& e, const ContactColumns& c, const Frame& f, std::int64_t i,
                     std::int64_t j, double distance, double rounding) {
   const double reach = f.radius()[i] + f.radius()[j];
@@ -111,8 +111,8 @@ double pair_overlap(const Entry& e, const ContactColumns& c, const Frame& f, std
   if (column < 0) return reach - distance;
   const bool is_overlap = c.overlap >= 0;
   const double stated = e.value(column), expected = is_overlap ? reach - distance : distance;
-  const double allowed =
-      rounding + printed_rounding(e.words[static_cast<std::size_t>(column)]) + 1e-9 * reach;
+  const double printed = printed_rounding(e.words[static_cast<std::size_t>(column)]);
+  const double allowed = rounding + printed + 1e-9 * reach;
   if (std::abs(stated - expected) > allowed) {
     throw InputError(e.at() + "expected " + (is_overlap ? "an overlap" : "a distance") + " of " +
                      format_number(expected) + " in column " + std::to_string(column + 1) +
@@ -120,6 +120,7 @@ double pair_overlap(const Entry& e, const ContactColumns& c, const Frame& f, std
                      " as the snapshot places them, to within " + format_number(allowed) +
                      "), got " + format_number(stated));
   }
+  if (printed >= rounding) return reach - distance;
   return is_overlap ? stated : reach - stated;
 }
 
@@ -143,8 +144,59 @@ ContactRow pair_row(const Entry& e, const ContactColumns& c, const Frame& f,
   return r;
 }
 
+// How far a wall contact's atom is from the wall, and to what rounding: from the entry's own
+// point of contact where the file gives one (LIGGGHTS' pos, on the surface of a wall that
+// may move or be a mesh the stated container only approximates), else from the stated wall
+// nearest to the atom.
+struct WallGap {
+  double gap;
+  double rounding;
+  bool from_point;
+};
+
+WallGap wall_gap(const Entry& e, const ContactColumns& c, const Frame& f, std::int64_t i) {
+  const Eigen::Vector3d x = centre(f, i);
+  if (c.point[0] < 0) return {nearest_wall(f.container, x)->distance, 0.0, false};
+  Eigen::Vector3d d = e.vector(c.point) - x;
+  double rounding = 0.0;
+  for (int a = 0; a < 3; ++a) {
+    d[a] = f.container.minimum_image(a, d[a]);
+    rounding += printed_rounding(e.words[static_cast<std::size_t>(c.point[a])]);
+  }
+  return {d.norm(), rounding, true};
+}
+
+// A wall contact's atom must touch its wall, and the overlap its column states (LIGGGHTS'
+// delta) must be the one the gap gives: a wall file of another snapshot or run would store
+// contacts the configuration does not hold. A point may be on the wall's surface or in the
+// middle of the overlap: half the overlap of leeway.
+double wall_overlap(const Entry& e, const ContactColumns& c, const Frame& f, std::int64_t i,
+                    const WallGap& g, double rounding) {
+  const double radius = f.radius()[i], expected = radius - g.gap;
+  const std::string between = "(atom " + std::to_string(f.id()[i]) + "'s centre " +
+                              format_number(g.gap) + " from the wall" +
+                              (g.from_point ? " at the entry's point" : " nearest it") +
+                              ", radius " + format_number(radius);
+  double allowed = rounding + g.rounding + 1e-9 * radius;
+  if (expected < -allowed) {
+    throw InputError(e.at() + "expected an atom that touches a wall, got a gap of " +
+                     format_number(-expected) + " " + between + ", positions known to " +
+                     format_number(allowed) + ")");
+  }
+  if (c.overlap < 0) return expected;
+  const double stated = e.value(c.overlap);
+  allowed += printed_rounding(e.words[static_cast<std::size_t>(c.overlap)]) +
+             (g.from_point ? 0.5 * std::abs(stated) : 0.0);
+  if (std::abs(stated - expected) > allowed) {
+    throw InputError(e.at() + "expected an overlap of " + format_number(expected) + " in column " +
+                     std::to_string(c.overlap + 1) + " " + between + ", to within " +
+                     format_number(allowed) + "), got " + format_number(stated));
+  }
+  return stated;
+}
+
 ContactRow wall_row(const Entry& e, const ContactColumns& c, const Frame& f,
-                    const std::string& frame_place) {
+                    const std::string& frame_place, double rounding) {
   ContactRow r;
   r.i = row_of(e, c.id1, f, frame_place);
   const Eigen::Vector3d x = centre(f, r.i);
@@ -159,8 +211,7 @@ ContactRow wall_row(const Entry& e, const ContactColumns& c, const Frame& f,
                      "(state its base, cylinder_radius or side_walls)");
   }
   r.j = partner::wall(touch->wall);
-  const double gap = nearest_wall(f.container, x)->distance;
-  r.overlap = c.overlap >= 0 ? e.value(c.overlap) : radius - gap;
+  r.overlap = wall_overlap(e, c, f, r.i, wall_gap(e, c, f, r.i), rounding);
   r.normal = e.vector(c.normal);
   r.tangential = tangential_of(e, c, r.normal);
   r.point = c.point[0] >= 0 ? e.vector(c.point)
@@ -241,7 +292,7 @@ void ContactDump::read(const Frame& frame, const std::string& frame_place, doubl
                          param_ + "'s keywords give, got " + std::to_string(words.size()) + ": " +
                          quoted(trimmed(line)));
       }
-      rows.push_back(wall_ ? wall_row(e, columns_, frame, frame_place)
+      rows.push_back(wall_ ? wall_row(e, columns_, frame, frame_place, rounding)
                            : pair_row(e, columns_, frame, frame_place, rounding));
       if (!wall_) pairs.add(e, frame, rows.back());
     }

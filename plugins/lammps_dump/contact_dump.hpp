@@ -28,9 +28,10 @@ class ContactDump {
   void check_timesteps(const DumpIndex& atoms, const std::string& atom_file) const;
   // Appends the contacts of the snapshot of the frame's step. InputError for a frame whose
   // step the file has no snapshot of, an entry line with other values than the columns
-  // say, an atom id the frame does not hold, or a pair of atoms apart by more than
-  // `rounding`, how far off the frame's centre distances may be (a wall contact is not
-  // checked so: the base of a vibrated bed moves, and the dump does not say where it was).
+  // say, an atom id the frame does not hold, a pair of atoms apart by more than
+  // `rounding` (how far off the frame's centre distances may be) or an atom apart from its
+  // wall (at the entry's point where given: the base of a vibrated bed moves, and only the
+  // entry says where it was), or an overlap column the positions contradict.
   void read(const Frame& frame, const std::string& frame_place, double rounding,
             std::vector<ContactRow>& rows);
   bool has_tangential() const { return columns_.tangential[0] >= 0 || columns_.force[0] >= 0; }

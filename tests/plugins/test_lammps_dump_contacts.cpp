@@ -136,6 +136,56 @@ TEST_F(LammpsDumpContacts, WallEntriesGoToTheNearestStatedWall) {
   EXPECT_EQ(f[0].contacts->get<Eigen::ArrayXd>("overlap")[2], 0.0);  // from the centre
 }
 
+// A wall file of another snapshot or run: an atom away from the wall the entry names, or an
+// overlap (delta) its position contradicts, is refused, not stored as a contact.
+TEST_F(LammpsDumpContacts, AWallContactMustBeWhereItsAtomIs) {
+  auto one_wall = [&](const std::string& columns, const std::string& entry) {
+    nlohmann::json params;
+    std::string header =
+        "ITEM: NUMBER OF ENTRIES\n1\nITEM: BOX BOUNDS pp pp ff\n0 10\n0 10\n0 10\nITEM: ENTRIES";
+    std::istringstream words(entry);
+    int count = 0;
+    for (std::string w; words >> w;) header += " c_w[" + std::to_string(++count) + "]";
+    header += "\n";
+    // The atoms of atom_snapshot printed to 7 digits, as %g would not: known to 1e-6.
+    std::string atoms;
+    for (const int step : {0, 100}) {
+      atoms += "ITEM: TIMESTEP\n" + std::to_string(step) +
+               "\nITEM: NUMBER OF ATOMS\n4\nITEM: BOX BOUNDS pp pp ff\n0 10\n0 10\n0 10\n"
+               "ITEM: ATOMS id type x y z radius\n3 1 5.000000 5.000000 0.5000000 0.5\n"
+               "1 1 1.000000 5.000000 2.000000 0.5\n2 1 2.000000 5.000000 2.000000 0.5\n"
+               "10 1 6.000000 5.000000 0.5000000 0.5\n";
+    }
+    params["file"] = write(atoms, "atoms.dump");
+    params["wall_file"] = write(
+        "ITEM: TIMESTEP\n0\n" + header + entry + "\nITEM: TIMESTEP\n100\n" + header + entry + "\n",
+        "walls.dump");
+    params["wall_columns"] = columns;
+    return params;
+  };
+  auto overlap = [&](const nlohmann::json& params) {
+    return frames(params)[0].contacts->get<Eigen::ArrayXd>("overlap")[0];
+  };
+  // Atom 1 at height 2, radius 0.5: 1.5 above the base.
+  EXPECT_EQ(refusal(one_wall("pos id force_normal", "1.000000 5.000000 0 1 5 2 0 0 1 0 0 4")),
+            "walls.dump: timestep 0, line 10: expected an atom that touches a wall, got a gap of "
+            "1.5 (atom 1's centre 2 from the wall at the entry's point, radius 0.5, positions "
+            "known to 2.73255e-06)");
+  EXPECT_EQ(refusal(one_wall("id force_normal", "0 0 1 0 0 4")),
+            "walls.dump: timestep 0, line 10: expected an atom that touches a wall, got a gap of "
+            "1.5 (atom 1's centre 2 from the wall nearest it, radius 0.5, positions known to "
+            "1.73255e-06)");
+  // Atom 10 rests on the base: no overlap, whatever delta says.
+  EXPECT_EQ(refusal(one_wall("id force_normal delta", "0 0 10 0 0 4 0.3")),
+            "walls.dump: timestep 0, line 10: expected an overlap of 0 in column 7 (atom 10's "
+            "centre 0.5 from the wall nearest it, radius 0.5, to within 0.0500017), got 0.3");
+  EXPECT_EQ(overlap(one_wall("id force_normal delta", "0 0 10 0 0 4 0.0")), 0.0);
+  // A point on the surface of a wall that moved (a vibrated base now at 0.1): its own gap.
+  EXPECT_NEAR(
+      overlap(one_wall("pos id force_normal", "6.000000 5.000000 0.1000000 6 5 0.5 0 0 10 0 0 4")),
+      0.1, 1e-15);
+}
+
 TEST_F(LammpsDumpContacts, BadPairFilesAreRefusedWithTheirLine) {
   const std::string second = pair_snapshot(100, "", 0);
   EXPECT_EQ(refusal(with_pairs(pair_snapshot(0, "1 7 0 -1.5 0 0 0.001\n", 1) + second)),
@@ -261,6 +311,8 @@ TEST_F(LammpsDumpContacts, APairsDistanceOrOverlapMustBeWhereItsAtomsAre) {
             "pairs.dump: timestep 0, line 10: expected an overlap of 0.001 in column 7 (atoms 1 "
             "and 2 as the snapshot places them, to within 0.0500017), got 0.7");
   EXPECT_NEAR(overlap(one_pair(lammps, "1 2 0.999 -1.5 0 0 0")), 0.001, 1e-12);
+  // dist printed with %g as "1" says 0.5 to 1.5; the positions' 0.999 is the one kept.
+  EXPECT_NEAR(overlap(one_pair(lammps, "1 2 1 -1.5 0 0 0")), 0.001, 1e-12);
   // %g prints atom 1234567 as 1.23457e+06, which named atom 1234570 when there was one.
   EXPECT_EQ(refusal(one_pair(lammps, "1.23457e+06 2 0.999 -1.5 0 0 0")),
             "pairs.dump: timestep 0, line 10: expected an atom id written to its last digit in "
