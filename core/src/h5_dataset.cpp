@@ -1,8 +1,10 @@
 #include "h5_dataset.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 #include <sstream>
 
 namespace granpipe::h5 {
@@ -223,6 +225,16 @@ std::int64_t widen_as(const unsigned char* p, bool is_signed) {
   return is_signed ? static_cast<std::int64_t>(s) : static_cast<std::int64_t>(u);
 }
 
+// HDF5 converts an unsigned 64-bit integer past the largest signed one to that one,
+// without a word.
+std::int64_t checked_signed(std::uint64_t u, const std::string& path) {
+  if (u <= static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max()))
+    return static_cast<std::int64_t>(u);
+  throw Error(path + ": expected integers up to " +
+              std::to_string(std::numeric_limits<std::int64_t>::max()) + ", got " +
+              std::to_string(u));
+}
+
 // An integer of `size` bytes in native byte order, widened to 64 bits.
 std::int64_t widen(const unsigned char* p, std::size_t size, bool is_signed,
                    const std::string& path) {
@@ -233,8 +245,12 @@ std::int64_t widen(const unsigned char* p, std::size_t size, bool is_signed,
       return widen_as<std::int16_t, std::uint16_t>(p, is_signed);
     case 4:
       return widen_as<std::int32_t, std::uint32_t>(p, is_signed);
-    case 8:
-      return widen_as<std::int64_t, std::int64_t>(p, is_signed);
+    case 8: {
+      if (is_signed) return widen_as<std::int64_t, std::int64_t>(p, true);
+      std::uint64_t u;
+      std::memcpy(&u, p, sizeof u);
+      return checked_signed(u, path);
+    }
     default:
       throw Error(path + ": unsupported enumeration width " + std::to_string(size));
   }
@@ -249,6 +265,12 @@ std::vector<std::int64_t> read_integer_rows(hid_t dataset, const std::string& pa
   std::vector<std::int64_t> values(count * per_row);
   Object type = owned(H5Dget_type(dataset), path + ": cannot read the data type");
   const H5T_class_t cls = H5Tget_class(type.id());
+  if (cls == H5T_INTEGER && H5Tget_sign(type.id()) == H5T_SGN_NONE && H5Tget_size(type.id()) >= 8) {
+    std::vector<std::uint64_t> raw(values.size());
+    read_rows(dataset, path, H5T_NATIVE_UINT64, first, count, raw.data());
+    for (std::size_t k = 0; k < raw.size(); ++k) values[k] = checked_signed(raw[k], path);
+    return values;
+  }
   if (cls == H5T_INTEGER) {
     read_rows(dataset, path, H5T_NATIVE_INT64, first, count, values.data());
     return values;
@@ -407,6 +429,13 @@ std::vector<std::int64_t> read_integer_attribute(hid_t object, const std::string
   OpenAttribute a = open_attribute(object, where);
   if (H5Tget_class(a.type.id()) != H5T_INTEGER) throw Error(where + ": expected integers");
   std::vector<std::int64_t> out(a.count);
+  if (H5Tget_sign(a.type.id()) == H5T_SGN_NONE && H5Tget_size(a.type.id()) >= 8) {
+    std::vector<std::uint64_t> raw(a.count);
+    check(H5Aread(a.attr.id(), H5T_NATIVE_UINT64, raw.data()),
+          where + ": cannot read the attribute");
+    for (std::size_t k = 0; k < raw.size(); ++k) out[k] = checked_signed(raw[k], where);
+    return out;
+  }
   check(H5Aread(a.attr.id(), H5T_NATIVE_INT64, out.data()), where + ": cannot read the attribute");
   return out;
 }

@@ -1,10 +1,41 @@
 #include "h5_element.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <string>
 #include <type_traits>
+#include <vector>
+
+#include "granpipe/format_number.hpp"
 
 namespace granpipe::h5 {
 namespace {
+
+// A frame's time orders and labels it: NaN or infinity would label every frame after it so.
+void check_finite(const std::vector<double>& times, const std::string& path) {
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    if (std::isfinite(times[k])) continue;
+    throw Error(path + ": sample " + std::to_string(k) + ": expected a finite time, got " +
+                format_number(times[k]));
+  }
+}
+
+// Sample i of a fixed clock. A step past the largest integer would wrap round to a
+// negative one, without a word.
+double fixed_sample(double i, double increment, double offset, const std::string&) {
+  return i * increment + offset;
+}
+
+std::int64_t fixed_sample(std::int64_t i, std::int64_t increment, std::int64_t offset,
+                          const std::string& path) {
+  std::int64_t step = 0;
+  if (!__builtin_mul_overflow(i, increment, &step) && !__builtin_add_overflow(step, offset, &step))
+    return step;
+  throw Error(path + ": sample " + std::to_string(i) +
+              ": expected a step within 64-bit integers, got " + std::to_string(i) + " x " +
+              std::to_string(increment) + " + " + std::to_string(offset));
+}
 
 // An H5MD clock (`step` or `time`) for up to `samples` samples: an explicit 1-D dataset
 // (possibly shorter than the values), or a scalar increment with an optional `offset`
@@ -23,6 +54,7 @@ std::vector<T> read_clock(hid_t file, const std::string& path, hsize_t samples) 
     } else {
       out.resize(n);
       read_rows(ds.id(), path, mem_type, 0, n, out.data());
+      check_finite(out, path);
     }
     return out;
   }
@@ -41,7 +73,9 @@ std::vector<T> read_clock(hid_t file, const std::string& path, hsize_t samples) 
     }
   }
   out.resize(samples);
-  for (hsize_t i = 0; i < samples; ++i) out[i] = static_cast<T>(i) * increment + offset;
+  for (hsize_t i = 0; i < samples; ++i)
+    out[i] = fixed_sample(static_cast<T>(i), increment, offset, path);
+  if constexpr (!integer) check_finite(out, path);
   return out;
 }
 

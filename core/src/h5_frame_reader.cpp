@@ -231,7 +231,16 @@ void FrameReader::Impl::check_version() {
   info.granpipe_file = true;
   if (h5::has_attribute(group.id(), L::kCompleteAttr)) {
     const auto flag = h5::read_integer_attribute(group.id(), L::kExtension, L::kCompleteAttr);
-    info.complete = info.complete && !flag.empty() && flag[0] == 1;
+    // Any other value is damage: read as "unfinished", it would let a damaged file's
+    // short elements cut frames off with a warning meant for a killed writer.
+    if (flag.size() != 1 || (flag[0] != 0 && flag[0] != 1)) {
+      throw h5::Error(
+          L::kExtension + "@" + L::kCompleteAttr +
+          ": expected 0 (the writer never finished) or 1, got " +
+          (flag.size() == 1 ? std::to_string(flag[0]) : std::to_string(flag.size()) + " values") +
+          " (damaged file)");
+    }
+    info.complete = info.complete && flag[0] == 1;
   } else {
     info.complete = false;
   }
@@ -504,11 +513,13 @@ void FrameReader::Impl::map_foreign_elements() {
   const std::vector<std::int64_t> frame_steps(steps.begin(), steps.begin() + info.frames);
   std::erase_if(columns, [&](ElementColumn& c) {
     if (c.element.map_by_step(frame_steps)) return false;
-    // Sizes are no option: left out, the default radius stood for the file's, exit 0.
-    if (c.property.name == "radius") {
-      throw h5::Error(c.element.path() +
-                      ": expected a radius at every step of the positions, got one on a clock of "
-                      "its own that misses some");
+    // Sizes and identities are no option: left out, the default radius, ids by row and
+    // species 0 stood for the file's, exit 0.
+    const std::string& name = c.property.name;
+    if (name == "radius" || name == "id" || name == "species") {
+      throw h5::Error(c.element.path() + ": expected " + (name == "id" ? "an " : "a ") + name +
+                      " at every step of the positions, got one on a clock of its own that "
+                      "misses some");
     }
     return true;
   });

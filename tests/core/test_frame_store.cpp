@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -423,23 +424,56 @@ TEST_F(FrameStore, ReadsAnotherToolsFile) {
 }
 
 // A radius sampled on a clock of its own (steps 10 and 30 of 10, 20, 30) was left out as an
-// optional element is, and the default radius read for every particle, exit 0.
-TEST_F(FrameStore, ARadiusMissingAtSomeStepsIsRefused) {
-  const fs::path p = file("foreign_radius.h5");
-  write_foreign(p, false);
-  {
-    Id f(H5Fopen(p.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
-    Id radius(make_group(f, "particles/atoms/radius"));
-    const double r[2][4] = {{0.3, 0.3, 0.3, 0.3}, {0.3, 0.3, 0.3, 0.3}};
-    const std::int64_t steps[2] = {10, 30};
-    put_dataset(radius, "value", H5T_NATIVE_DOUBLE, {2, 4}, r);
-    put_dataset(radius, "step", H5T_NATIVE_INT64, {2}, steps);
+// optional element is, and the default radius read for every particle, exit 0; ids and
+// species so became the rows' order and 0.
+TEST_F(FrameStore, ARadiusIdOrSpeciesMissingAtSomeStepsIsRefused) {
+  for (const std::string name : {"radius", "id", "species"}) {
+    const fs::path p = file("foreign_" + name + ".h5");
+    write_foreign(p, false);
+    {
+      Id f(H5Fopen(p.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
+      Id atoms(H5Gopen2(f, "particles/atoms", H5P_DEFAULT));
+      if (name == "species") EXPECT_GE(H5Ldelete(atoms, "species", H5P_DEFAULT), 0);
+      Id element(make_group(atoms, name.c_str()));
+      const std::int64_t values[2][4] = {{1, 2, 3, 4}, {1, 2, 3, 4}};
+      const std::int64_t steps[2] = {10, 30};
+      put_dataset(element, "value", H5T_NATIVE_INT64, {2, 4}, values);
+      put_dataset(element, "step", H5T_NATIVE_INT64, {2}, steps);
+    }
+    EXPECT_EQ(reader_error(p), "/particles/atoms/" + name + "/value: expected " +
+                                   (name == "id" ? "an " : "a ") + name +
+                                   " at every step of the positions, got one on a clock of its "
+                                   "own that misses some");
   }
-  EXPECT_EQ(test::input_error_of([&] { FrameReader r(p, "", 0.5); }),
-            p.string() +
-                ": /particles/atoms/radius/value: expected a radius at every step of the "
-                "positions, "
-                "got one on a clock of its own that misses some");
+}
+
+// Clocks: a step of 2^63 + 5 stored unsigned was clamped to 2^63 - 1; a fixed clock's
+// step past 64 bits wrapped round to a negative one; a NaN time labelled its frame.
+TEST_F(FrameStore, ClocksBeyondTheirNumbersAreRefused) {
+  auto with_clock = [&](const std::string& name, const char* clock, hid_t type,
+                        const std::vector<hsize_t>& shape, const void* values) {
+    const fs::path p = file(name);
+    write_foreign(p, false);
+    Id f(H5Fopen(p.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
+    Id position(H5Gopen2(f, "particles/atoms/position", H5P_DEFAULT));
+    EXPECT_GE(H5Ldelete(position, clock, H5P_DEFAULT), 0);
+    put_dataset(position, clock, type, shape, values);
+    return p;
+  };
+  const std::uint64_t huge[3] = {10, 20, (std::uint64_t{1} << 63) + 5};
+  EXPECT_EQ(reader_error(with_clock("huge.h5", "step", H5T_NATIVE_UINT64, {3}, huge)),
+            "/particles/atoms/position/step: expected integers up to 9223372036854775807, got "
+            "9223372036854775813");
+  const std::int64_t increment = std::int64_t{1} << 62;
+  EXPECT_EQ(reader_error(with_clock("wrap.h5", "step", H5T_NATIVE_INT64, {}, &increment)),
+            "/particles/atoms/position/step: sample 2: expected a step within 64-bit integers, "
+            "got 2 x 4611686018427387904 + 0");
+  const double nan_time[3] = {0.5, std::nan(""), 1.5};
+  EXPECT_EQ(reader_error(with_clock("nan.h5", "time", H5T_NATIVE_DOUBLE, {3}, nan_time)),
+            "/particles/atoms/position/time: sample 1: expected a finite time, got nan");
+  const double vast = 1e308;  // sample 2 at 2e308
+  EXPECT_EQ(reader_error(with_clock("inf.h5", "time", H5T_NATIVE_DOUBLE, {}, &vast)),
+            "/particles/atoms/position/time: sample 2: expected a finite time, got inf");
 }
 
 // HDF5 converts without a word: a species of 2^40 was read as 2147483647 and an id of
@@ -634,6 +668,23 @@ void mark_complete(hid_t file, int complete) {
   Id group(H5Gopen2(file, "/granpipe", H5P_DEFAULT));
   Id attr(H5Aopen(group, "complete", H5P_DEFAULT));
   ASSERT_GE(H5Awrite(attr, H5T_NATIVE_INT, &complete), 0);
+}
+
+// A complete flag of 2 or -1 read as "unfinished": the file's short elements then cut
+// frames off with the warning meant for a killed writer.
+TEST_F(FrameStore, ACompleteFlagOtherThanZeroOrOneIsRefused) {
+  const Optional none{false, false, false, false};
+  for (const int flag : {2, -1}) {
+    const fs::path p = write("flag" + std::to_string(flag) + ".h5", 3, 2, 4, none);
+    {
+      Id f(H5Fopen(p.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
+      mark_complete(f, flag);
+    }
+    EXPECT_EQ(reader_error(p),
+              "/granpipe@complete: expected 0 (the writer never finished) or "
+              "1, got " +
+                  std::to_string(flag) + " (damaged file)");
+  }
 }
 
 TEST_F(FrameStore, CountsOnlyFramesPresentInEveryDatasetOfAnUnfinishedFile) {
