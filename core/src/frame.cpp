@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <string>
 #include <type_traits>
 #include <variant>
 
@@ -99,25 +100,31 @@ void check_motion(const Frame& f, const std::string& where) {
   }
 }
 
+// Sizes and places a double computes with: a sphere's volume, a squared distance and an
+// overlap stay finite and normal within them (a radius of 1e-320 had a volume of 0, centres
+// 1e300 apart a squared distance of infinity).
+constexpr double kSmallestRadius = 1e-100, kLargestLength = 1e100;
+
 void check_particles(const Frame& f, const std::string& where) {
   const Coordinates& x = f.position();
   const Eigen::ArrayXd& r = f.radius();
+  auto refuse = [&](Eigen::Index k, const std::string& expected, double got,
+                    const std::string& tail) {
+    std::ostringstream s;
+    s << where << ": " << describe_particle(f, k) << ": expected " << expected << ", got " << got
+      << tail;
+    throw InputError(s.str());
+  };
   for (Eigen::Index k = 0; k < f.size(); ++k) {
     for (int a = 0; a < f.dim; ++a) {
-      if (!std::isfinite(x(k, a))) {
-        std::ostringstream s;
-        s << where << ": " << describe_particle(f, k) << ": expected a finite position, got "
-          << x(k, a) << " in coordinate "
-          << "xyz"[a];
-        throw InputError(s.str());
-      }
+      const std::string coordinate = std::string(" in coordinate ") + "xyz"[a];
+      if (!std::isfinite(x(k, a))) refuse(k, "a finite position", x(k, a), coordinate);
+      if (std::abs(x(k, a)) > kLargestLength)
+        refuse(k, "a position within +-1e+100", x(k, a), coordinate);
     }
-    if (!(r[k] > 0.0) || !std::isfinite(r[k])) {
-      std::ostringstream s;
-      s << where << ": " << describe_particle(f, k) << ": expected a finite radius > 0, got "
-        << r[k];
-      throw InputError(s.str());
-    }
+    if (!(r[k] > 0.0) || !std::isfinite(r[k])) refuse(k, "a finite radius > 0", r[k], "");
+    if (r[k] < kSmallestRadius || r[k] > kLargestLength)
+      refuse(k, "a radius from 1e-100 to 1e+100", r[k], "");
   }
 }
 

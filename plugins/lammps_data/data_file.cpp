@@ -181,6 +181,17 @@ Atom parse_atom(const std::string& line, long number, const std::string& where) 
                      ": expected \"id type diameter density x y z\" (atom_style sphere), got " +
                      quoted(line));
   }
+  // LAMMPS refuses a density <= 0 (a mass, for a point particle) and reads image flags as
+  // integers: anything else is another format's line.
+  const double density = *real_number(w[3]);
+  if (!(density > 0.0) || !std::isfinite(density)) {
+    throw InputError(at + ": expected a finite density > 0 in column 4, got " + quoted(w[3]));
+  }
+  for (std::size_t k = 7; k < w.size(); ++k) {
+    if (whole_number(w[k])) continue;
+    throw InputError(at + ": expected whole-number image flags in columns 8 to 10, got " +
+                     quoted(line));
+  }
   a.diameter = *diameter;
   a.x = {*x[0], *x[1], *x[2]};
   return a;

@@ -169,6 +169,22 @@ TEST(LammpsData, ASecondAtomsSectionIsRefused) {
             "x.data: line 5: expected one Atoms section, got a second (the first on line 3)");
 }
 
+// LAMMPS refuses a density <= 0 and reads image flags as integers: a NaN density or flags
+// "a b c" were read as spheres, exit 0.
+TEST(LammpsData, DensitiesAndImageFlagsAreChecked) {
+  const std::string head = "title\n1 atoms\nAtoms # sphere\n";
+  for (const std::string density : {"nan", "-1", "0", "inf"}) {
+    EXPECT_EQ(refusal(head + "1 1 1 " + density + " 0 0 0\n"),
+              "x.data: line 4: expected a finite density > 0 in column 4, got \"" + density + "\"");
+  }
+  for (const std::string flags : {"a b c", "0 1.5 0"}) {
+    EXPECT_EQ(refusal(head + "1 1 1 1 0 0 0 " + flags + "\n"),
+              "x.data: line 4: expected whole-number image flags in columns 8 to 10, got \"1 1 1 "
+              "1 0 0 0 " +
+                  flags + "\"");
+  }
+}
+
 // A dump's first line would pass for a title: the dump is named as such.
 TEST(LammpsData, ADumpIsNamedWithTheSourceThatReadsIt) {
   EXPECT_EQ(refusal("ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n2\n"),
@@ -221,6 +237,20 @@ TEST_F(LammpsDataSource, SpheresInsideOrTouchingTheWallsAreAccepted) {
   EXPECT_EQ(refusal(two_spheres("0 0 0.5", "1.5 0 0.52")), "accepted");
   // Pressed into the cylinder and the base by 4 % of the radius: a soft contact.
   EXPECT_EQ(refusal(two_spheres("0 0 0.48", "1.52 0 2")), "accepted");
+}
+
+// A diameter of 1e-320 gave a sphere of volume 0, a centre at 1e300 squared distances of
+// infinity: sizes and places a double cannot compute with are refused.
+TEST_F(LammpsDataSource, AbsurdSizesAndPlacesAreRefused) {
+  const std::string head =
+      "title\n\n2 atoms\n\n-2 2 xlo xhi\n-2 2 ylo yhi\n0 10 zlo zhi\n\n"
+      "Atoms # sphere\n\n1 1 1 1.91 0 0 0.5\n";
+  EXPECT_EQ(refusal(head + "7 1 1e-320 1.91 1 1 1\n"),
+            "spheres.data: particle 1 (id 7): expected a radius from 1e-100 to 1e+100, got "
+            "4.99994e-321");
+  EXPECT_EQ(refusal(head + "7 1 1 1.91 1 1 1e300\n", 1e301),
+            "spheres.data: particle 1 (id 7): expected a position within +-1e+100, got 1e+300 in "
+            "coordinate z");
 }
 
 TEST_F(LammpsDataSource, ASphereThroughTheCylinderIsRefusedByAtomId) {
