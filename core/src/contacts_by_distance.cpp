@@ -27,7 +27,7 @@ void find_wall_contacts(const Frame& f, double tolerance, std::vector<Found>& ou
       if (cylinder && a < 2) continue;  // the side of a cylinder is one round wall
       for (int side = 0; side < 2; ++side) {
         if (c.boundary[a][side] != Boundary::Wall) continue;
-        const double wall = (side == 0 ? c.lo[a] : c.hi[a]) + c.wall_offset[a];
+        const double wall = c.wall_at(a, side);
         const double dist = side == 0 ? f.position()(k, a) - wall : wall - f.position()(k, a);
         if (dist <= reach)
           out.push_back({k, partner::wall(static_cast<Wall>(2 * a + side)), dist - f.radius()[k]});

@@ -17,16 +17,11 @@ bool bounds(const Container& c, int dim, int axis, int side, bool open_sides_bou
   return axis < dim && (b == Boundary::Wall || (b == Boundary::Open && open_sides_bound));
 }
 
-double side_position(const Container& c, int axis, int side) {
-  return (side == 0 ? c.lo[axis] : c.hi[axis]) + c.wall_offset[axis];
-}
-
 // How far particle k reaches beyond a plane side; > allowed means outside.
 std::optional<ParticleOutside> beyond_side(const Frame& f, Eigen::Index k, int axis, int side,
                                            double tolerance) {
   const Container& c = f.container;
-  const double inward =
-      (side == 0 ? 1.0 : -1.0) * (f.position()(k, axis) - side_position(c, axis, side));
+  const double inward = (side == 0 ? 1.0 : -1.0) * (f.position()(k, axis) - c.wall_at(axis, side));
   const auto wall = static_cast<Wall>(2 * axis + side);
   if (c.boundary[axis][side] == Boundary::Open) {
     if (inward < 0.0) return ParticleOutside{k, wall, -inward};
@@ -54,8 +49,7 @@ std::string where_is(const Frame& f, Wall wall) {
            format_number(c.cylinder_center[1] + c.wall_offset[1]) + "))";
   }
   const int axis = static_cast<int>(wall) / 2, side = static_cast<int>(wall) % 2;
-  const std::string at =
-      std::string(1, "xyz"[axis]) + " = " + format_number(side_position(c, axis, side));
+  const std::string at = std::string(1, "xyz"[axis]) + " = " + format_number(c.wall_at(axis, side));
   const bool open = c.boundary[axis][side] == Boundary::Open;
   return std::string(open ? "the open side " : "the wall ") + to_string(wall) + " (" + at + ")";
 }

@@ -15,8 +15,10 @@ double Region::volume() const {
 Region container_region(const Frame& frame) {
   Region r;
   r.dim = frame.dim;
-  r.lo = frame.container.lo;
-  r.hi = frame.container.hi;
+  for (int a = 0; a < 3; ++a) {
+    r.lo[a] = frame.container.wall_at(a, 0);
+    r.hi[a] = frame.container.wall_at(a, 1);
+  }
   return r;
 }
 

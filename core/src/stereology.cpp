@@ -16,7 +16,7 @@ namespace {
 // The mean cut fraction between heights a and b above the bottom (one exact bin).
 double fraction_between(const Frame& frame, const Region& cross, double a, double b) {
   const int v = frame.dim - 1;
-  const double base = frame.container.lo[v];
+  const double base = frame.container.wall_at(v, 0);
   return bin_fractions(frame, cross, v, base + a, b - a, 1)[0];
 }
 
@@ -28,7 +28,7 @@ double quantile_height(const Frame& frame, double fraction) {
   const auto n = static_cast<double>(z.size());
   const auto k = static_cast<std::size_t>(std::max(0.0, std::ceil(fraction * n) - 1.0));
   std::nth_element(z.begin(), z.begin() + static_cast<long>(k), z.end());
-  return z[k] - frame.container.lo[v];
+  return z[k] - frame.container.wall_at(v, 0);
 }
 
 // The perturbed-zone model's factor for spheres near a plane (the paper's ref. [20]).
@@ -91,7 +91,7 @@ GlobalFractions global_fractions(const Frame& frame, const StereologySettings& s
   g.radius = frame.radius().mean();
   const Region cross = container_region(frame);
   const double r = g.radius;
-  g.top = (frame.position().col(v) + frame.radius()).maxCoeff() - frame.container.lo[v];
+  g.top = (frame.position().col(v) + frame.radius()).maxCoeff() - frame.container.wall_at(v, 0);
   if (s.bulk_top * r <= g.top) g.phi_b = fraction_between(frame, cross, 0.0, s.bulk_top * r);
   g.height_c = quantile_height(frame, s.fraction);
   const double layer = s.perturbed_top * r, h = g.height_c;

@@ -9,7 +9,7 @@ namespace granpipe::compaction {
 double mean_height_in_radii(const Frame& frame) {
   if (frame.size() == 0) return std::nan("");
   const int v = frame.dim - 1;
-  const double bottom = frame.container.lo[v] + frame.container.wall_offset[v];
+  const double bottom = frame.container.wall_at(v, 0);
   return (frame.position().col(v).mean() - bottom) / frame.radius().mean();
 }
 

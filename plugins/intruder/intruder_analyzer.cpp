@@ -44,7 +44,7 @@ BedState measure_bed(const Frame& f, const std::string& where) {
                       where + ": expected a base (a wall at the bottom along z) to measure " +
                           "heights and the stage from");
   const Eigen::Index big = find_intruder(f, where);
-  const double base = f.container.lo[2] + f.container.wall_offset[2];
+  const double base = f.container.wall_at(2, 0);
   const Eigen::ArrayXd weight = f.radius().cube();
   BedState s;
   s.intruder_height = f.position()(big, 2) - base;

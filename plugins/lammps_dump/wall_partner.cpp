@@ -14,7 +14,7 @@ std::optional<WallTouch> nearest_wall(const Container& c, const Eigen::Vector3d&
     if (cylinder && a < 2) continue;  // the side of a cylinder is one round wall
     for (int side = 0; side < 2; ++side) {
       if (c.boundary[a][side] != Boundary::Wall) continue;
-      const double wall = (side == 0 ? c.lo[a] : c.hi[a]) + c.wall_offset[a];
+      const double wall = c.wall_at(a, side);
       Eigen::Vector3d normal = Eigen::Vector3d::Zero();
       normal[a] = side == 0 ? -1.0 : 1.0;
       offer(static_cast<Wall>(2 * a + side), normal, side == 0 ? point[a] - wall : wall - point[a]);

@@ -63,14 +63,13 @@ Heights vertical_range(const Frame& f, Top top, const Region& columns,
                        const std::string& top_name) {
   const Container& c = f.container;
   const int v = f.dim - 1;
-  const double offset = c.periodic(v) ? 0.0 : c.wall_offset[v];
   if (top == Top::Auto) top = c.boundary[v][1] == Boundary::Open ? Top::Surface : Top::Container;
   if (top != Top::Container && c.periodic(v)) {
     throw InputError(top_name + ": expected \"container\" or \"auto\" for a container " +
                      "periodic along " + axis_name(v) + " (" + frame_name(f) + "), got \"" +
                      choice_name(top) + "\"");
   }
-  Heights h{c.lo[v] + offset, c.hi[v] + offset};
+  Heights h{c.wall_at(v, 0), c.wall_at(v, 1)};
   if (top == Top::Surface) {
     h.top = f.size() ? (f.position().col(v) + f.radius()).maxCoeff() : h.base;
   } else if (top == Top::LowestSurface) {
@@ -100,9 +99,8 @@ Region packing_region(const Frame& frame, const PackingSettings& s) {
   Region r;
   r.dim = dim;
   for (int a = 0; a < v; ++a) {
-    const double offset = c.periodic(a) ? 0.0 : c.wall_offset[a];
-    r.lo[a] = c.lo[a] + offset + s.exclude_sides * d;
-    r.hi[a] = c.hi[a] + offset - s.exclude_sides * d;
+    r.lo[a] = c.wall_at(a, 0) + s.exclude_sides * d;
+    r.hi[a] = c.wall_at(a, 1) - s.exclude_sides * d;
   }
   const Heights h = vertical_range(frame, s.top, r, s.params + ".top");
   r.lo[v] = h.base + s.exclude_bottom * d;

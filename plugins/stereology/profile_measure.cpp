@@ -37,7 +37,7 @@ ProfileMeasurement measure_profiles(const Frame& frame, const ProfileSettings& s
   ProfileMeasurement m;
   m.global = global_fractions(frame, s.global);
   const int v = frame.dim - 1;
-  const double r = m.global.radius, base = frame.container.lo[v];
+  const double r = m.global.radius, base = frame.container.wall_at(v, 0);
   const Region box = container_region(frame);
 
   const double step = s.step * r;

@@ -96,6 +96,27 @@ TEST(ProfileMeasure, OfALayeredCrystalIsItsFractionEverywhere) {
   }
 }
 
+// A vibrated base: the walls displaced by the wall offset. The bed moved down with its base
+// measures as it did at rest (phi_b was taken 0..4R above the rest place, exit 0).
+TEST(ProfileMeasure, HeightsAreAboveTheBaseWhereItIsAtTheFrame) {
+  const Frame rest = cubic_layers(4, 6);
+  Frame moved = rest;
+  moved.container.wall_offset = Eigen::Vector3d(0.0, 0.0, -3.0);
+  moved.position().col(2) -= 3.0;
+  ProfileSettings s;
+  s.step = 0.5;
+  s.lateral_band = 2.0;
+  const ProfileMeasurement a = measure_profiles(rest, s), b = measure_profiles(moved, s);
+  EXPECT_NEAR(b.global.phi_b, kPi / 6.0, 1e-13);
+  EXPECT_NEAR(b.global.phi_c, a.global.phi_c, 1e-13);
+  EXPECT_EQ(b.global.height_c, a.global.height_c);
+  ASSERT_EQ(b.vertical.size(), a.vertical.size());
+  for (std::size_t k = 0; k < a.vertical.size(); ++k)
+    EXPECT_NEAR(b.vertical[k], a.vertical[k], 1e-13) << k;
+  EXPECT_NEAR(b.central, a.central, 1e-13);
+  EXPECT_NEAR(b.lateral, a.lateral, 1e-13);
+}
+
 TEST(StereologyAnalyzer, IdenticalFramesChangeNothingAndTheTapIsRecorded) {
   const auto ctx = granpipe::test::make_context(schema(), {{"step", 0.5}, {"lateral_band", 4.0}});
   StereologyAnalyzer a(*ctx);

@@ -39,6 +39,12 @@ struct Container {
   Eigen::Vector3d wall_velocity = Eigen::Vector3d::Zero();
 
   bool periodic(int axis) const { return boundary[axis][0] == Boundary::Periodic; }
+  // Where the low (side 0) or high (side 1) end of `axis` is at this frame: a wall's rest
+  // place displaced by wall_offset (a periodic side does not move).
+  double wall_at(int axis, int side) const {
+    const double rest = side == 0 ? lo[axis] : hi[axis];
+    return periodic(axis) ? rest : rest + wall_offset[axis];
+  }
   double length(int axis) const { return hi[axis] - lo[axis]; }
   // A separation along `axis` by the minimum-image convention (unchanged on other axes).
   double minimum_image(int axis, double d) const {

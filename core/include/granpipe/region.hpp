@@ -15,7 +15,8 @@ struct Region {
   double volume() const;  // area in 2D
 };
 
-// The container's box [lo, hi] as a region (for a cylinder, its bounding box).
+// The container's box [lo, hi] where its walls are at this frame (displaced by the wall
+// offset, as a vibrated base is) as a region (for a cylinder, its bounding box).
 Region container_region(const Frame& frame);
 
 // Shifts k*L (k integer) along a periodic axis of length L that make [x - r, x + r]
