@@ -24,6 +24,13 @@ void check_container_values(const Container& c, int dim, const std::string& wher
     require_finite(c.hi[a], "upper side along " + axis, where);
     require_finite(c.wall_offset[a], "wall offset along " + axis, where);
     require_finite(c.wall_velocity[a], "wall velocity along " + axis, where);
+    // A periodic axis joins its two ends: periodic at one and a wall at the other was read
+    // as periodic by the measures and as a wall by the overlap check.
+    if ((c.boundary[a][0] == Boundary::Periodic) != (c.boundary[a][1] == Boundary::Periodic)) {
+      throw InputError(where + ": expected both sides along " + axis +
+                       " periodic or neither (a periodic axis joins its ends), got " +
+                       to_string(c.boundary[a][0]) + " and " + to_string(c.boundary[a][1]));
+    }
     if (!(c.lo[a] < c.hi[a])) {
       throw InputError(where + ": expected the container's sides along " + axis +
                        " in order (lo < hi), got " + format_number(c.lo[a]) + " to " +

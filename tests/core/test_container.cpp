@@ -40,7 +40,8 @@ TEST(Container, WrapIntoTheHalfOpenBox) {
 }
 
 // Numbers that are no numbers (an edge of inf, a wall offset of NaN from another tool or an
-// edited file) made every fraction 0 or NaN, exit 0. Frame::check refuses them.
+// edited file) made every fraction 0 or NaN, exit 0; an axis periodic at one end only was
+// periodic to the measures and a wall to the overlap check. Frame::check refuses them.
 TEST(ContainerCheck, ValuesMustBeFiniteAndInOrder) {
   Container c = Container::open_top_box(3, Eigen::Vector3d::Zero(), Eigen::Vector3d(4, 4, 8));
   EXPECT_NO_THROW(check_container_values(c, 3, "f"));
@@ -56,6 +57,11 @@ TEST(ContainerCheck, ValuesMustBeFiniteAndInOrder) {
   EXPECT_EQ(test::input_error_of([&] { check_container_values(c, 3, "f"); }),
             "f: expected the container's sides along x in order (lo < hi), got 4 to 4");
   c.lo[0] = 0.0;
+  c.boundary[0] = {Boundary::Periodic, Boundary::Wall};
+  EXPECT_EQ(test::input_error_of([&] { check_container_values(c, 3, "f"); }),
+            "f: expected both sides along x periodic or neither (a periodic axis joins its "
+            "ends), got periodic and wall");
+  c.boundary[0] = {Boundary::Wall, Boundary::Wall};
   c.shape = ContainerShape::Cylinder;
   c.cylinder_radius = -1.0;
   EXPECT_EQ(test::input_error_of([&] { check_container_values(c, 3, "f"); }),
