@@ -30,10 +30,17 @@ bool exists(hid_t loc, const std::string& path) {
 }
 
 namespace {
+// A link that leads nowhere (a soft link to a removed object, an external link to a
+// missing file) is not an absent element: read as one, a file's radii became the default
+// radius, exit 0.
 H5I_type_t type_at(hid_t loc, const std::string& path) {
   if (!exists(loc, path)) return H5I_BADID;
   Object o(H5Oopen(loc, path.c_str(), H5P_DEFAULT));
-  return o.valid() ? H5Iget_type(o.id()) : H5I_BADID;
+  if (!o.valid()) {
+    throw Error(path + ": expected a group or dataset, got a link that leads to none (a soft "
+                       "link to a removed object or an external link to a missing file)");
+  }
+  return H5Iget_type(o.id());
 }
 }  // namespace
 

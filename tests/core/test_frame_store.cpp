@@ -447,6 +447,27 @@ TEST_F(FrameStore, ARadiusIdOrSpeciesMissingAtSomeStepsIsRefused) {
   }
 }
 
+// A radius linked to nothing (a soft link to a removed object, an external link to a
+// missing file) read as no radius: the default radius stood for the file's, exit 0.
+TEST_F(FrameStore, ALinkThatLeadsNowhereIsRefused) {
+  for (const bool external : {false, true}) {
+    const fs::path p = file(external ? "external.h5" : "soft.h5");
+    write_foreign(p, false);
+    {
+      Id f(H5Fopen(p.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
+      Id atoms(H5Gopen2(f, "particles/atoms", H5P_DEFAULT));
+      if (external) {
+        H5Lcreate_external("missing.h5", "/radius", atoms, "radius", H5P_DEFAULT, H5P_DEFAULT);
+      } else {
+        H5Lcreate_soft("/particles/atoms/removed", atoms, "radius", H5P_DEFAULT, H5P_DEFAULT);
+      }
+    }
+    EXPECT_EQ(reader_error(p),
+              "/particles/atoms/radius: expected a group or dataset, got a link that leads to "
+              "none (a soft link to a removed object or an external link to a missing file)");
+  }
+}
+
 // Clocks: a step of 2^63 + 5 stored unsigned was clamped to 2^63 - 1; a fixed clock's
 // step past 64 bits wrapped round to a negative one; a NaN time labelled its frame.
 TEST_F(FrameStore, ClocksBeyondTheirNumbersAreRefused) {
