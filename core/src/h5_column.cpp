@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "granpipe/format_number.hpp"
+#include "granpipe/property.hpp"
 
 namespace granpipe::h5 {
 
@@ -151,6 +152,13 @@ void write_property_attributes(hid_t dataset, const Property& p) {
 Property read_property(hid_t dataset, const std::string& path, const std::string& name, Scope scope,
                        const Shape& item, int dim) {
   if (const Property* p = find_standard(name, scope)) return *p;
+  // Analyzers and writers name columns in JSON paths and file headers: another tool's
+  // element "a b" would break them.
+  if (!is_valid_column_name(name)) {
+    throw Error(path + ": expected an element name of letters, digits and _, not starting "
+                       "with a digit (a column's name), got \"" +
+                name + "\"");
+  }
   Property p{name, scope, value_type_of(dataset, path), 1, "", ""};
   if (has_attribute(dataset, kComponentsAttr)) {
     p.components = static_cast<int>(read_integer_attribute(dataset, path, kComponentsAttr).at(0));

@@ -468,6 +468,24 @@ TEST_F(FrameStore, ALinkThatLeadsNowhereIsRefused) {
   }
 }
 
+// An element "a b" in a granpipe file (whose columns are all read): no column can have that
+// name (analyzers and writers name columns in JSON paths and headers); it ended in an
+// internal error, exit 1.
+TEST_F(FrameStore, AnElementNamedAsNoColumnCanBeIsRefused) {
+  const fs::path p = write("name.h5", 3, 2, 4, Optional{false, false, false, false});
+  {
+    Id f(H5Fopen(p.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
+    Id element(make_group(f, "particles/all/a b"));
+    const double charge[3][4] = {};
+    const std::int64_t steps[3] = {0, 1, 2};
+    put_dataset(element, "value", H5T_NATIVE_DOUBLE, {3, 4}, charge);
+    put_dataset(element, "step", H5T_NATIVE_INT64, {3}, steps);
+  }
+  EXPECT_EQ(reader_error(p),
+            "/particles/all/a b/value: expected an element name of letters, digits and _, not "
+            "starting with a digit (a column's name), got \"a b\"");
+}
+
 // Clocks: a step of 2^63 + 5 stored unsigned was clamped to 2^63 - 1; a fixed clock's
 // step past 64 bits wrapped round to a negative one; a NaN time labelled its frame.
 TEST_F(FrameStore, ClocksBeyondTheirNumbersAreRefused) {
