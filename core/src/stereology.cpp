@@ -39,7 +39,7 @@ double perturbed_factor(const Frame& frame, const StereologySettings& s) {
   if (s.perturbed_factor > 0.0) return s.perturbed_factor;
   if (frame.dim == 3) return kSpheresOnAPlane;
   throw InputError(
-      "stereology: perturbed_factor: expected a factor for disks (the paper's 16/11 is for "
+      "perturbed_factor: expected a factor for disks (the paper's 16/11 is for "
       "spheres on a plane; 1: no correction), got 0 (the paper's value, which has none for "
       "disks)");
 }
@@ -74,15 +74,14 @@ StereologySettings stereology_settings(const Params& p) {
 GlobalFractions global_fractions(const Frame& frame, const StereologySettings& s) {
   if (frame.container.shape != ContainerShape::Box) {
     throw InputError(
-        "stereology: expected a box container (cuts need a rectangular "
+        "expected a box container (cuts need a rectangular "
         "cross-section), got a cylinder");
   }
   const int v = frame.dim - 1;
   // (Periodic along the vertical, phi_c of a crystal came out above the crystal's fraction
   // by the correction of a layer no wall perturbs, exit 0.)
   require_bottom_wall(frame.container, v,
-                      std::string("stereology: expected a container with a bottom wall along ") +
-                          "xyz"[v] +
+                      std::string("expected a container with a bottom wall along ") + "xyz"[v] +
                           " (heights are above it; phi_c corrects the layer it perturbs)");
   const double factor = perturbed_factor(frame, s);
   GlobalFractions g;
@@ -100,7 +99,7 @@ GlobalFractions global_fractions(const Frame& frame, const StereologySettings& s
     // A layer more than full is no packing (a factor of 1e300 gave phi_c 1.9e298, exit 0).
     if (corrected > 1.0) {
       throw InputError(
-          "stereology: perturbed_factor: expected a correction that leaves the "
+          "perturbed_factor: expected a correction that leaves the "
           "bottom layer's fraction at most 1, got " +
           format_number(factor) + ", which makes it " + format_number(corrected));
     }

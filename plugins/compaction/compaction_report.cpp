@@ -148,6 +148,11 @@ void report_spectrum(const Series& ss, Results& results, Log& log) {
     for (std::size_t k : even.index) values.push_back((ss.*kQuantities[q].values)[k]);
     if (enough) spectra[q] = power_spectrum(values, even.spacing);
     const Slope slope = log_log_slope(spectra[q]);
+    if (enough && std::isnan(slope.value)) {
+      log.warn(std::string("compaction: the power spectrum of ") + kQuantities[q].name +
+               " is zero at all but " + std::to_string(positive_powers(spectra[q])) +
+               " frequencies (it hardly fluctuates); its slope is left undefined");
+    }
     results.add_scalar(std::string("spectrum_slope_") + kQuantities[q].name, slope.value,
                        slope.error, "",
                        std::string("slope of ln S against ln f of ") + kQuantities[q].name +

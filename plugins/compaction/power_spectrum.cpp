@@ -3,6 +3,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_fft_real.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <map>
@@ -84,6 +85,11 @@ Spectrum power_spectrum(const std::vector<double>& values, double spacing) {
     s.power.push_back((nyquist ? 1.0 : 2.0) * scale * (re * re + im * im));
   }
   return s;
+}
+
+std::size_t positive_powers(const Spectrum& s) {
+  return static_cast<std::size_t>(
+      std::count_if(s.power.begin(), s.power.end(), [](double p) { return p > 0.0; }));
 }
 
 Slope log_log_slope(const Spectrum& s) {

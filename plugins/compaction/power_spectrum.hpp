@@ -7,6 +7,7 @@
 // uses only the frames on one grid: the spacing is the commonest gap between consecutive
 // frames (the larger of equally common ones), the grid ends at the last frame, and it runs
 // back as long as every grid tap has a frame (the longest unbroken stretch at the end).
+#include <cmath>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -15,7 +16,7 @@ namespace granpipe::compaction {
 
 struct EvenFrames {
   std::vector<std::size_t> index;  // into the series, in increasing tap
-  double spacing = 0.0;            // taps between them
+  double spacing = std::nan("");   // taps between them; NaN for fewer than two frames
 };
 
 // `taps` increasing.
@@ -34,7 +35,11 @@ struct Slope {
   double value = 0.0, error = 0.0;  // NaN with fewer than 3 frequencies
 };
 
-// Least squares of ln S against ln f, with the standard error from the residual scatter.
+// The frequencies at which the power is above zero: the points of the slope.
+std::size_t positive_powers(const Spectrum& s);
+
+// Least squares of ln S against ln f over positive_powers (NaN with fewer than 3), with the
+// standard error from the residual scatter.
 Slope log_log_slope(const Spectrum& s);
 
 }  // namespace granpipe::compaction

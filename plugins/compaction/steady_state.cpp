@@ -22,7 +22,8 @@ SteadyState steady_state(const std::vector<double>& values) {
   for (double v : values) {
     if (std::isfinite(v)) squares += (v - s.mean) * (v - s.mean);
   }
-  s.sigma = std::sqrt(squares / n);
+  // One frame shows no fluctuation to measure: undefined, not 0.
+  s.sigma = s.frames > 1 ? std::sqrt(squares / n) : std::nan("");
   s.mean_error = s.frames > 1 ? s.sigma / std::sqrt(n - 1.0) : std::nan("");
   return s;
 }

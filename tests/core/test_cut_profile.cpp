@@ -182,7 +182,7 @@ TEST(GlobalFractions, OfALayeredCrystalAreItsFractionWithThePerturbedZoneFactor)
 TEST(GlobalFractions, OfDisksNeedAPerturbedZoneFactorGiven) {
   const Frame f = square_disks(10, 20.0);
   EXPECT_EQ(granpipe::test::input_error_of([&] { global_fractions(f, {}); }),
-            "stereology: perturbed_factor: expected a factor for disks (the paper's 16/11 "
+            "perturbed_factor: expected a factor for disks (the paper's 16/11 "
             "is for spheres on a plane; 1: no correction), got 0 (the paper's value, which "
             "has none for disks)");
   StereologySettings plain;
@@ -219,12 +219,12 @@ TEST(GlobalFractions, RefuseAContainerWithoutABottomWall) {
   Frame f = cubic_layers(2, 4);
   f.container.boundary[2] = {Boundary::Periodic, Boundary::Periodic};
   EXPECT_EQ(granpipe::test::input_error_of([&] { global_fractions(f, {}); }),
-            "stereology: expected a container with a bottom wall along z (heights are above "
+            "expected a container with a bottom wall along z (heights are above "
             "it; phi_c corrects the layer it perturbs), got a container periodic along z "
             "(state the wall where the source allows it)");
   f.container.boundary[2] = {Boundary::Open, Boundary::Open};
   EXPECT_EQ(granpipe::test::input_error_of([&] { global_fractions(f, {}); }),
-            "stereology: expected a container with a bottom wall along z (heights are above "
+            "expected a container with a bottom wall along z (heights are above "
             "it; phi_c corrects the layer it perturbs), got a container open at the bottom "
             "along z (state the wall where the source allows it)");
 }

@@ -184,6 +184,14 @@ TEST(Compaction, TheSpectrumUsesTheLastUnbrokenGridOfFrames) {
   EXPECT_EQ(used, (std::vector<double>{70, 80, 90, 100, 110, 120}));
 }
 
+// One frame shows no fluctuation and no spacing: sigma and the spectrum's spacing were 0.
+TEST(Compaction, OneFrameLeavesSigmaAndSpacingUndefined) {
+  const SteadyState s = steady_state({2.0});
+  EXPECT_EQ(s.mean, 2.0);
+  EXPECT_TRUE(std::isnan(s.sigma));
+  EXPECT_TRUE(std::isnan(evenly_spaced({5.0}).spacing));
+}
+
 TEST(Compaction, SteadyStateOfAKnownSeries) {
   const SteadyState s = steady_state({1.0, 2.0, std::nan(""), 3.0, 4.0});
   EXPECT_EQ(s.frames, 4);
@@ -202,6 +210,23 @@ Frame cubic_stack(std::int64_t tap) {
   f.container = Container::open_top_box(3, Eigen::Vector3d(0, 0, -2), Eigen::Vector3d(6, 6, 10));
   if (tap >= 0) f.set_observable({"tap", Scope::Frame, ValueType::Integer, 1, "", "tap"}, tap);
   return f;
+}
+
+// A bed that never moves: every power is 0 and the slopes were NaN without a word.
+TEST(Compaction, ASpectrumWithoutFluctuationsSaysWhyItsSlopeIsUndefined) {
+  const auto ctx = test::make_context("compaction", {});
+  ctx->keep_log();
+  CompactionAnalyzer analyzer(*ctx);
+  FrameCache cache;
+  for (int tap = 0; tap < 20; ++tap) analyzer.consume(cubic_stack(tap), cache);
+  Results r;
+  analyzer.finish(r);
+  EXPECT_TRUE(std::isnan(r.scalar("spectrum_slope_z_mean").value));
+  granpipe::test::expect_said_once(ctx->logged_lines(),
+                                   "warning: compaction: the power spectrum of z_mean is zero at "
+                                   "all but 0 frequencies (it hardly fluctuates); its slope is "
+                                   "left undefined",
+                                   "spectrum of z_mean");
 }
 
 TEST(Compaction, MeanHeightOfALatticeIsInMeanRadiiAboveTheBottom) {

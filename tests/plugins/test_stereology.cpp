@@ -146,7 +146,7 @@ TEST(StereologyAnalyzer, ACorrectionThatOverfillsTheBottomLayerIsRefused) {
   EXPECT_LT(global_fractions(cubic_layers(8, 10), s).phi_c, 1.0);
   s.perturbed_factor = 2.0;
   EXPECT_EQ(granpipe::test::input_error_of([&] { global_fractions(cubic_layers(8, 10), s); }),
-            "stereology: perturbed_factor: expected a correction that leaves the bottom layer's "
+            "perturbed_factor: expected a correction that leaves the bottom layer's "
             "fraction at most 1, got 2, which makes it 1.0472");
 }
 
