@@ -140,9 +140,13 @@ void ArchesAnalyzer::consume(const Frame& frame, FrameCache& cache) {
   }
 
   by_ramp_.add(frame, {z_eq4, z_direct, arches_per_particle});
+  // A frame of a source without taps or cycles has none: NaN, not a tap -1.
+  auto observable = [&](const char* name) {
+    const auto value = frame.integer_observable(name);
+    return value ? static_cast<double>(*value) : std::nan("");
+  };
   const std::int64_t tap = frame.integer_observable("tap").value_or(-1);
-  per_frame_.add_row({static_cast<double>(frames_ - 1), static_cast<double>(tap),
-                      static_cast<double>(frame.integer_observable("cycle").value_or(-1)),
+  per_frame_.add_row({static_cast<double>(frames_ - 1), observable("tap"), observable("cycle"),
                       arches_per_particle, p1, p2, z_eq4, z_direct, base_fraction, missing,
                       non_supporting});
 

@@ -607,6 +607,8 @@ TEST(ArchesAnalyzer, AveragesOverFramesWithStandardErrors) {
   const auto& per_frame = r.tables().at("per_frame");
   ASSERT_EQ(per_frame.rows(), 2u);
   EXPECT_EQ(per_frame.column("tap"), (std::vector<double>{7, 8}));
+  // These frames have no cycle: undefined, not a cycle -1.
+  for (double cycle : per_frame.column("cycle")) EXPECT_TRUE(std::isnan(cycle));
   for (std::size_t k = 0; k < 2; ++k) {
     EXPECT_NEAR(per_frame.column("z_support_eq4")[k] - per_frame.column("z_support_direct")[k],
                 2 * per_frame.column("base_fraction")[k], 1e-14);
