@@ -17,7 +17,7 @@ import sys
 from paper_values import PaperValues, paper_problem
 from report_configuration import configuration_section
 from report_h5 import (HDF5_ERRORS, Damaged, attr_number, attr_numbers, attr_text, attr_texts,
-                       column, member, members, not_a_file, scalar, unreadable)
+                       column, member, members, not_a_file, producer, scalar, unreadable)
 from report_parts import TABLE_ROWS_SHOWN, html_table, number, table_section, with_error
 from report_plots import plots_section
 from report_sweep import report_problem, sweep_section
@@ -196,7 +196,7 @@ def report_body(run, pipeline_text, pipeline, results, partial, note, plt):
         if "sweep" in results:
             parts.append(sweep_section(plt, results, pipeline, paper))
         else:
-            parts += [producer_section(plt, name, member(results, name, "group"), paper)
+            parts += [producer_section(plt, name, producer(results, name), paper)
                       for name in results]
         if plt is not None:
             parts.append(paper.notes())

@@ -172,6 +172,16 @@ def member(parent, name, kind):
     return of_kind(linked(parent, name), kind)
 
 
+def producer(parent, name):
+    """parent[name], a producer's group of results, which granpipe tags with no kind: a result
+    found there (a table at the top of the file) would be shown as a heading over nothing."""
+    group = member(parent, name, "group")
+    kind = attr_text(group, "kind", None)
+    if kind is not None:
+        raise damaged(group, "a producer (a group of results)", f"a result of kind {shown(kind)}")
+    return group
+
+
 def numbers_dataset(parent, name, ndim, integer=False):
     """parent[name], a dataset of numbers (integers where `integer`) with `ndim` dimensions
     (0: a scalar), not read."""

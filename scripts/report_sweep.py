@@ -4,7 +4,7 @@ drawn together, the plots of a result against the swept parameter the pipeline d
 import html
 import json
 
-from report_h5 import damaged, indices, member, read_table
+from report_h5 import damaged, indices, member, producer, read_table
 from report_parts import (drawable, html_table, inline_svg, number, plain, table_section,
                           uncertainties)
 from report_plots import plots_section
@@ -87,7 +87,7 @@ def sweep_section(plt, results, pipeline, paper):
     which = "every point" if len(drawn) == len(labels) else f"{len(drawn)} of {len(labels)} points"
     names = sorted({sub for p in labels for sub in results[p].keys()})
     for name in names:
-        groups = [(labels[p], member(results[p], name, "group")) for p in drawn
+        groups = [(labels[p], producer(results[p], name)) for p in drawn
                   if name in results[p]]
         if not groups:
             continue

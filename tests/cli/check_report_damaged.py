@@ -72,6 +72,11 @@ def add_dataset(path, data):
     return in_h5("results.h5", lambda f: f.create_dataset(path, data=data))
 
 
+def moved(source, target):
+    """The object at `source` moved to `target`."""
+    return in_h5("results.h5", lambda f: f.move(source, target))
+
+
 def group_for_dataset(path):
     def change(f):
         del f[path]
@@ -158,6 +163,14 @@ DAMAGES = [
      r'/arches/arches_per_particle: expected numbers, found text "0\.5"'),
     ("table without columns", "arches", delete("arches/per_frame", "columns"),
      r"/arches/per_frame attribute columns: expected a list of text, found none"),
+    ("table column missing", "arches", delete("arches/per_frame/tap"),
+     r"/arches/per_frame/tap: expected a dataset, found none"),
+    ("table of a missing column as a producer", "arches",
+     each(moved("arches/per_frame", "per_frame"), delete("per_frame/tap")),
+     r'/per_frame: expected a producer \(a group of results\), found a result of kind "table"'),
+    ("ragged table as a producer", "arches",
+     each(moved("arches/per_frame", "per_frame"), rewrite("per_frame/tap", lambda v: v[:-1])),
+     r'/per_frame: expected a producer \(a group of results\), found a result of kind "table"'),
     ("units not one per column", "arches", set_attr("arches/per_frame", "units", [b""]),
      r"/arches/per_frame attribute units: expected 11 items \(a unit per column\), found 1"),
     ("histogram edges short", "arches", rewrite("arches/span_all/edges", lambda v: v[:-2]),
@@ -184,6 +197,10 @@ DAMAGES = [
      r"found 4"),
     ("fit dof NaN", "compaction", set_attr("compaction/eq3_phi_b", "dof", np.nan),
      r"/compaction/eq3_phi_b attribute dof: expected an integer, found nan"),
+    ("table as a sweep point's producer", "lattice",
+     moved("point_001/packing/profile", "point_001/profile"),
+     r'/point_001/profile: expected a producer \(a group of results\), found a result of kind '
+     r'"table"'),
     ("sweep point missing", "lattice", delete("point_003"),
      r"/point_003: expected a group, found none"),
     ("sweep point NaN", "lattice", rewrite("sweep/points/point", lambda v: v * np.nan),
