@@ -11,6 +11,7 @@
 // force f(delta/d) (k_n delta - gamma_n m_eff v_n) with f = 1 (linear spring-dashpot) or
 // sqrt(delta/d) (Hertz), d = R_i + R_j (for a wall: d = 2 R_i, the particle's mirror
 // image); the tangential force f(delta/d) (-k_t u - gamma_t m_eff v_t), |F_t| <= mu |F_n|.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -64,9 +65,10 @@ struct LinearNormal {
   static double potential(const ContactMaterial& m, double delta, double /*d*/) {
     return 0.5 * m.kn * delta * delta;
   }
-  // Eq. (10), the damped oscillator's half period.
+  // Eq. (10), the damped oscillator's half period, or the dashpot's time where shorter
+  // (near and past critical damping).
   static double contact_time(const ContactMaterial& m, const TwoBodies& b) {
-    return linear_contact_time(m.kn, m.gamma_n, b.m_eff);
+    return std::min(linear_contact_time(m.kn, m.gamma_n, b.m_eff), dashpot_time(m.gamma_n));
   }
   // The undamped overlap of a body of this mass hit at this speed, and at rest under this
   // weight; the speed and weight that give an overlap grow as its power below.
@@ -96,9 +98,10 @@ struct HertzNormal {
   static double potential(const ContactMaterial& m, double delta, double d) {
     return 0.4 * m.kn * delta * delta * std::sqrt(delta / d);
   }
-  // Undamped, at the impact speed (model.hpp).
+  // Undamped, at the impact speed (model.hpp), or the dashpot's time where shorter (its
+  // rate gamma_n f is at most gamma_n: delta < d).
   static double contact_time(const ContactMaterial& m, const TwoBodies& b) {
-    return hertz_contact_time(m.kn, b.d, b.m_eff, b.speed);
+    return std::min(hertz_contact_time(m.kn, b.d, b.m_eff, b.speed), dashpot_time(m.gamma_n));
   }
   static double impact_overlap(double kn, double mass, double speed, double d) {
     return std::pow(5.0 * mass * speed * speed * std::sqrt(d) / (4.0 * kn), 0.4);
@@ -154,11 +157,12 @@ struct CoulombSpring {
   static double potential(const ContactMaterial& m, double f, const Vec3& u) {
     return 0.5 * f * m.kt * u.squaredNorm();
   }
-  // No shorter than the normal law's: with k_t <= 2/7 k_n (the paper's 2/7) the tangential
-  // spring's period, rotation included (m_t = 2/7 m_eff for spheres), is at least the
-  // undamped normal one; so this part adds no duration of its own.
-  static double contact_time(const ContactMaterial& /*m*/, const TwoBodies& /*b*/) {
-    return std::numeric_limits<double>::infinity();
+  // The spring is no shorter than the normal law's: with k_t <= 2/7 k_n (the paper's 2/7)
+  // its period, rotation included (m_t = 2/7 m_eff for spheres), is at least the undamped
+  // normal one. Its dashpot acts on m_t at the rate gamma_t m_eff / m_t = 7/2 gamma_t, and
+  // not at all without friction (the force capped at mu |F_n| = 0).
+  static double contact_time(const ContactMaterial& m, const TwoBodies& /*b*/) {
+    return m.mu > 0.0 ? dashpot_time(3.5 * m.gamma_t) : std::numeric_limits<double>::infinity();
   }
 };
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <sstream>
 
@@ -109,6 +110,10 @@ double linear_contact_time(double kn, double gamma_n, double m_eff) {
 double linear_restitution(double kn, double gamma_n, double m_eff) {
   if (kn / m_eff - 0.25 * gamma_n * gamma_n <= 0.0) return 0.0;
   return std::exp(-0.5 * gamma_n * linear_contact_time(kn, gamma_n, m_eff));
+}
+
+double dashpot_time(double rate) {
+  return rate > 0.0 ? 2.0 * std::numbers::pi / rate : std::numeric_limits<double>::infinity();
 }
 
 double hertz_contact_time(double kn, double d, double m_eff, double speed) {

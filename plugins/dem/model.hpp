@@ -78,6 +78,12 @@ double linear_contact_time(double kn, double gamma_n, double m_eff);
 // Eq. (9): the restitution coefficient exp(-gamma_n t_c / 2) of the linear law (0 when
 // overdamped).
 double linear_restitution(double kn, double gamma_n, double m_eff);
+// The time an explicit step must resolve for a dashpot that slows a relative velocity at
+// `rate` (gamma_n, or gamma_t's on the tangential mass): 2 pi / rate, infinite for none.
+// The velocity Verlet step multiplies that velocity by about 1 - rate dt, which flips its
+// sign past rate dt = 2: a contact damped past critical then threw its spheres apart faster
+// than they met (gamma_n = 1.2e4 at dt = 2.5e-4: e = 2), while its undamped t_c passed.
+double dashpot_time(double rate);
 // Duration of an undamped Hertzian contact of the paper's law, F = k_n delta^(3/2) / sqrt(d),
 // hit at normal speed v: t_c = 2.943... delta_max / v with
 // delta_max = (5 m_eff v^2 sqrt(d) / (4 k_n))^(2/5).

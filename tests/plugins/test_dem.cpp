@@ -785,6 +785,33 @@ TEST(DemTimeStep, ShortestContactIsBetweenTheLightestSpheres) {
             "t_c = 0.00496996): expected dt <= t_c/10 = 0.000496996");
 }
 
+// A contact damped ten times past critical (2 sqrt(k_n / m_eff) = 1265): Eq. (10) has no
+// period, the undamped one let dt = 2.485e-4 pass, and that step (gamma_n dt = 3) threw the
+// spheres apart at about twice their approach speed. The dashpot's 2 pi / gamma_n decides
+// the step; within it they part no faster than they met.
+TEST(DemTimeStep, ADashpotPastCriticalDampingDecides) {
+  const double gamma = 1.2e4;
+  const dem::Model model = one_species(material(kKn, gamma, 0.0));
+  const dem::ContactTime t = dem::smallest_contact_time(
+      model, dem::WallSet(no_walls(), {}), Eigen::ArrayXd::Constant(2, 0.5),
+      Eigen::ArrayXi::Zero(2), dem::ContactLaw::Linear, 0.0);
+  EXPECT_DOUBLE_EQ(t.t_c, 2.0 * std::numbers::pi / gamma);
+  EXPECT_EQ(dem::check_time_step(2.485e-4, t).verdict, dem::StepVerdict::Refuse);
+  // The fastest relative speed after the spheres meet, at each step.
+  auto fastest_after_contact = [&](double dt) {
+    dem::Engine e(model, dem::WallSet(no_walls(), {}), settings(dt),
+                  spheres({{0, 0, 0}, {1.001, 0, 0}}, {{0.5, 0, 0}, {-0.5, 0, 0}}));
+    double fastest = 0.0;
+    for (int k = 0; k < 4000 && e.time() < 0.05; ++k) {
+      e.run(1);
+      fastest = std::max(fastest, (velocity(e, 1) - velocity(e, 0)).norm());
+    }
+    return fastest;
+  };
+  EXPECT_GT(fastest_after_contact(2.485e-4), 1.5);  // the step refused: unstable
+  EXPECT_LE(fastest_after_contact(t.t_c / 20), 1.0 + 1e-12);
+}
+
 TEST(DemTimeStep, WallsAndStiffSpeciesCountToo) {
   // Only intruders, and a base stiffer than the spheres: the wall decides.
   dem::Model model = bnp_model();
