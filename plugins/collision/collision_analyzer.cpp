@@ -72,7 +72,8 @@ CollisionAnalyzer::CollisionAnalyzer(const PluginContext& ctx)
       gamma_n_(ctx.params.real("gamma_n")),
       density_(ctx.params.reals("density")),
       density_param_(ctx.param("density")),
-      kn_param_(ctx.param("k_n")) {}
+      kn_param_(ctx.param("k_n")),
+      gamma_n_param_(ctx.param("gamma_n")) {}
 
 FrameContent CollisionAnalyzer::needs() const {
   return {.dim = 3, .contacts = true, .columns = {*find_standard("velocity", Scope::Particle)}};
@@ -109,7 +110,7 @@ void CollisionAnalyzer::consume(const Frame& frame, FrameCache&) {
 void CollisionAnalyzer::check_step(const Frame& frame, const std::string& where) {
   if (frames_ > 0 && frame.step != last_step_ + 1) {
     throw InputError(where +
-                     ": expected a frame every time step (the source's save_every 1), got step " +
+                     ": expected a frame every time step (the source's save_every set to 1), got step " +
                      std::to_string(frame.step) + " after step " + std::to_string(last_step_) +
                      " (a gap of " + std::to_string(frame.step - last_step_) + " steps)");
   }
@@ -125,10 +126,27 @@ void CollisionAnalyzer::check_stiffness() const {
                    " (fitted over " + std::to_string(stiffness_.samples()) + " frames in contact)");
 }
 
+// The damping c = gamma_n m_eff the frames show must be the parameters' (gamma_n, and the
+// density that gives m_eff): other values made the analytic restitution and contact time
+// another law's, and their errors plausible numbers (gamma_n 0 in the source: 11 %, exit 0).
+// Within a hundredth of the critical damping 2 sqrt(k_n m_eff): the fit is off by under 1 %
+// of c at dt = t_c / 12.
+void CollisionAnalyzer::check_damping() const {
+  const std::optional<double> measured = stiffness_.damping();
+  const double expected = gamma_n_ * m_eff_, critical = 2.0 * std::sqrt(kn_ * m_eff_);
+  if (!measured || std::abs(*measured - expected) <= kDampingTolerance * critical) return;
+  throw InputError(gamma_n_param_ + " and " + density_param_ +
+                   ": expected the source's, got gamma_n m_eff = " + format_number(expected, 4) +
+                   ", while the frames' normal forces show " + format_number(*measured, 4) +
+                   " (fitted over " + std::to_string(stiffness_.samples()) + " frames in contact)");
+}
+
 void CollisionAnalyzer::finish(Results& results) {
-  check_stiffness();
-  const CollisionMeasure m = tracker_.result("collision: " + std::to_string(frames_) + " frames");
+  // An overdamped law first: its forces, cut off where they would pull, fit no line.
   const LinearPrediction p = predict_linear(kn_, gamma_n_, m_eff_, "collision");
+  check_stiffness();
+  check_damping();
+  const CollisionMeasure m = tracker_.result("collision: " + std::to_string(frames_) + " frames");
   const double nan = std::nan("");
   results.add_scalar("contact_time", m.contact_time, nan, "time",
                      "measured: overlap's zero crossings");

@@ -7,8 +7,9 @@
 //
 // The analytic values are only the source's when the analyzer's parameters are: frames
 // must come every time step (consecutive steps; a gap is refused), and when the contact
-// table carries normal_force, the stiffness those forces show must be the given k_n
-// within kStiffnessTolerance (stiffness_fit.hpp), or the run is refused.
+// table carries normal_force, the stiffness and damping those forces show must be the given
+// k_n and gamma_n m_eff within kStiffnessTolerance and kDampingTolerance (stiffness_fit.hpp),
+// or the run is refused.
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -30,6 +31,8 @@ PairState pair_state(const Frame& frame, const std::string& where);
 // collision of pipelines/dem_speed_vs_error.json: 0.1 % at dt = t_c/100, 0.6 % at t_c/20,
 // 0.9 % at t_c/12.5); a wrong k_n is off by far more.
 constexpr double kStiffnessTolerance = 0.02;
+// The damping's, as a fraction of the critical damping (check_damping).
+constexpr double kDampingTolerance = 0.01;
 
 class CollisionAnalyzer : public Analyzer {
  public:
@@ -41,10 +44,11 @@ class CollisionAnalyzer : public Analyzer {
  private:
   void check_step(const Frame& frame, const std::string& where);
   void check_stiffness() const;
+  void check_damping() const;
 
   double kn_, gamma_n_;
   std::vector<double> density_;
-  std::string density_param_, kn_param_;
+  std::string density_param_, kn_param_, gamma_n_param_;
   double m_eff_ = 0.0;
   long frames_ = 0;
   std::int64_t last_step_ = 0;

@@ -2,7 +2,7 @@
 // The normal stiffness and damping of the law that made the frames, measured from them:
 // in contact, the linear law's normal force is F = k_n delta - c v_n (c = gamma_n m_eff,
 // v_n < 0 approaching), so a least-squares fit of the frames' normal forces against the
-// overlap and the normal velocity gives k_n. The analyzer's analytic values are only the
+// overlap and the normal velocity gives k_n, and c. The analyzer's analytic values are only the
 // source's when its k_n is: this is how a k_n other than the source's is caught, since a
 // frame does not carry the source's parameters.
 #include <cstddef>
@@ -19,8 +19,11 @@ class StiffnessFit {
   // k_n; nothing with fewer than 3 samples or overlaps and velocities that do not tell the
   // two terms apart.
   std::optional<double> stiffness() const;
+  // c = gamma_n m_eff, likewise.
+  std::optional<double> damping() const;
 
  private:
+  std::optional<double> determinant() const;
   // Sums of the normal equations for (k_n, c) with regressors delta and -v_n.
   double dd_ = 0.0, dv_ = 0.0, vv_ = 0.0, df_ = 0.0, vf_ = 0.0;
   std::size_t samples_ = 0;

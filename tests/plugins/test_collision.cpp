@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "collision_analyzer.hpp"
+#include "granpipe/format_number.hpp"
 #include "linear_law.hpp"
 #include "plugin_harness.hpp"
 
@@ -73,14 +74,16 @@ std::vector<Frame> exact_collision(double step, double until) {
   return frames;
 }
 
-std::unique_ptr<test::PluginHarness> context(double kn = kKn) {
+std::unique_ptr<test::PluginHarness> context(double kn = kKn, double gamma = kGamma) {
   return test::make_context(collision::schema(),
-                            {{"k_n", kn}, {"gamma_n", kGamma}, {"density", {kDensity}}});
+                            {{"k_n", kn}, {"gamma_n", gamma}, {"density", {kDensity}}});
 }
 
-// The analyzer on `frames`, saved every `save_every` steps, told the stiffness `kn`.
-Results analyse(std::vector<Frame> frames, std::int64_t save_every = 1, double kn = kKn) {
-  const auto ctx = context(kn);
+// The analyzer on `frames`, saved every `save_every` steps, told the stiffness `kn` and the
+// damping `gamma`.
+Results analyse(std::vector<Frame> frames, std::int64_t save_every = 1, double kn = kKn,
+                double gamma = kGamma) {
+  const auto ctx = context(kn, gamma);
   collision::CollisionAnalyzer analyzer(*ctx);
   FrameCache cache;
   for (std::size_t k = 0; k < frames.size(); ++k) {
@@ -93,10 +96,10 @@ Results analyse(std::vector<Frame> frames, std::int64_t save_every = 1, double k
 }
 
 // The InputError message of analysing `frames`, or "" when there is none.
-std::string refusal(const std::vector<Frame>& frames, std::int64_t save_every = 1,
-                    double kn = kKn) {
+std::string refusal(const std::vector<Frame>& frames, std::int64_t save_every = 1, double kn = kKn,
+                    double gamma = kGamma) {
   try {
-    analyse(frames, save_every, kn);
+    analyse(frames, save_every, kn, gamma);
   } catch (const InputError& e) {
     return e.what();
   }
@@ -188,10 +191,10 @@ TEST(Collision, AnOverdampedPairIsRefused) {
 // would widen them by up to 10 steps without a word.
 TEST(Collision, FramesThatAreNotEveryStepAreRefused) {
   const double t_c = collision::predict_linear(kKn, kGamma, kMass / 2.0, "test").contact_time;
-  EXPECT_EQ(
-      refusal(exact_collision(0.02 * t_c, 0.03), 10),
-      "frame 1: expected a frame every time step (the source's save_every 1), got step 10 after "
-      "step 0 (a gap of 10 steps)");
+  EXPECT_EQ(refusal(exact_collision(0.02 * t_c, 0.03), 10),
+            "frame 1: expected a frame every time step (the source's save_every set to 1), got "
+            "step 10 after "
+            "step 0 (a gap of 10 steps)");
 }
 
 // The frames' normal forces are the law's at kKn: an analyzer told half of it would compare
@@ -207,4 +210,18 @@ TEST(Collision, AStiffnessOtherThanTheForcesShowIsRefused) {
       "params.k_n: expected the source's normal stiffness, got 100000, while the frames' normal "
       "forces show k_n = 2e+05 (fitted over " +
           std::to_string(touching) + " frames in contact)");
+}
+
+// The frames' damping is kGamma m_eff: an analyzer told another gamma_n (or another density,
+// which gives another m_eff) compared with another law's restitution (11 % off for gamma_n
+// 0 in the source, exit 0).
+TEST(Collision, ADampingOtherThanTheForcesShowIsRefused) {
+  const double t_c = collision::predict_linear(kKn, kGamma, kMass / 2.0, "test").contact_time;
+  const std::vector<Frame> frames = exact_collision(0.02 * t_c, 0.03);
+  EXPECT_EQ(refusal(frames, 1, kKn, 1.05 * kGamma), "") << "within the tolerance";
+  const std::string wrong = refusal(frames, 1, kKn, 0.0);
+  EXPECT_EQ(wrong.substr(0, wrong.find(" (fitted")),
+            "params.gamma_n and params.density: expected the source's, got gamma_n m_eff = 0, "
+            "while the frames' normal forces show " +
+                format_number(kGamma * kMass / 2.0, 4));
 }
