@@ -1,12 +1,27 @@
 #include "disk_grid.hpp"
 
+#include <cmath>
+#include <sstream>
 #include <string>
 
 #include "granpipe/errors.hpp"
 
 namespace granpipe::disks2d_tap {
 
+// A grid of more cells holds a packing spread far beyond its disks (a tap amplitude of 1e9,
+// an initial fraction of 1e-9): it would take gigabytes, or overflow the cells' indices.
+constexpr double kMostCells = 1 << 28;
+
 void DiskGrid::reset(double width, double height, double cell, double margin) {
+  const double cols = std::floor(width / cell) + 1 + 2 * (std::ceil(margin / cell) + 1);
+  const double rows = std::floor(height / cell) + 1 + 2 * (std::ceil(margin / cell) + 1);
+  if (!(cols * rows <= kMostCells)) {
+    std::ostringstream s;
+    s << "disks2d_tap: expected a packing that a grid of at most 2^28 cells of side " << cell
+      << " covers, got one of width " << width << " and height " << height
+      << ": a tap amplitude, initial fraction or sizes this far apart spread the disks too thin";
+    throw InputError(s.str());
+  }
   width_ = width;
   height_ = height;
   cell_ = cell;
