@@ -37,7 +37,7 @@ void check_inside(const std::string& where, const std::vector<Eigen::Vector3d>& 
                   const TapBox& box) {
   const double r = box.radius, slack = kTolerance * r;
   for (std::size_t i = 0; i < x.size(); ++i) {
-    bool out = x[i].z() < r - slack || !x[i].allFinite();
+    bool out = x[i].z() < r - slack;
     if (!box.periodic())
       for (int a = 0; a < 2; ++a)
         out = out || x[i][a] < r - slack || x[i][a] > box.side - r + slack;
@@ -74,6 +74,7 @@ SavedPacking read_saved_packing(const StartFrame& start, const TapBox& box, long
   const std::string& at = start.where;
   if (f.dim != 3)
     throw InputError(at + ": expected a 3D frame, got " + std::to_string(f.dim) + "D");
+  f.check(at);  // a NaN centre named as such, not as a sphere through the bottom
   if (f.size() != n) {
     throw InputError(at + ": expected N = " + std::to_string(n) + " spheres, got " +
                      std::to_string(f.size()));

@@ -48,6 +48,18 @@ with h5py.File(sys.argv[1], "r+") as f:
 PY
 "$expect" 2 "source\\.params\\.initial_file(=[^ ]*)?: .*overlap\\.h5: frame [0-9]+: spheres [0-9]+ and [0-9]+ overlap \\(centres [0-9.e-]+ apart, expected at least 2R = 2\\)" \
   -- "$exe" "$pipeline" "${small[@]}" --set source.params.initial_file="$work/overlap.h5" --out "$work/third"
+# A NaN centre is named as such (it was "reaches through the bottom or a wall").
+cp "$work/first/frames.h5" "$work/nan.h5"
+"$python" - "$work/nan.h5" <<'PY'
+import sys, h5py
+with h5py.File(sys.argv[1], "r+") as f:
+    x = f["particles/all/position/value"]
+    last = x[-1]
+    last[3, 2] = float("nan")
+    x[-1] = last
+PY
+"$expect" 2 "source\\.params\\.initial_file(=[^ ]*)?: .*nan\\.h5: frame [0-9]+: particle 3 \\(id 3\\): expected a finite position, got nan in coordinate z$" \
+  -- "$exe" "$pipeline" "${small[@]}" --set source.params.initial_file="$work/nan.h5" --out "$work/nan_out"
 # initial_frame or continue_count without initial_file would change nothing: refused.
 "$expect" 2 "source\\.params\\.initial_frame=1: expected it only with initial_file \\(a frame of that file\\), got 1 without one$" \
   -- "$exe" "$pipeline" "${small[@]}" --set source.params.initial_frame=1 --out "$work/fourth"
