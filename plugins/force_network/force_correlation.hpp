@@ -5,6 +5,7 @@
 // along periodic sides) and f the normal forces scaled by the mean: in each bin of r, the
 // mean of f_i f_j over the pairs of contacts at that distance. Pairs are found with a
 // cell list (cells of side r_max), never by looping over all M^2 pairs.
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -23,8 +24,11 @@ struct ForceCorrelation {
     return r_max * static_cast<double>(k) / static_cast<double>(bins());
   }
   double upper(std::size_t k) const { return lower(k + 1); }
-  // F(r) of bin k; 0 when no pair falls in it (`pairs` says so).
-  double value(std::size_t k) const { return pairs[k] > 0 ? product_sum[k] / pairs[k] : 0.0; }
+  // F(r) of bin k; undefined (NaN) when no pair falls in it: 0 would read as forces
+  // anticorrelated there.
+  double value(std::size_t k) const {
+    return pairs[k] > 0 ? product_sum[k] / pairs[k] : std::nan("");
+  }
 };
 
 // `points` holds one contact point per row (dim columns), `f` its scaled force. Throws

@@ -53,7 +53,7 @@ void add_pdf_table(const PaperFrame& p, Results& results) {
 void add_correlation_table(const PaperFrame& p, Results& results) {
   Table t({"r_lo", "r_hi", "r", "F", "pairs"},
           "force-force correlation F(r) of Eq. (12) over the contact points of the paper's "
-          "frame (F = 0 where no pair falls)");
+          "frame (F undefined, NaN, where no pair falls)");
   t.units = {"length", "length", "length", "", ""};
   const ForceCorrelation& c = p.correlation;
   for (std::size_t k = 0; k < c.bins(); ++k) {
