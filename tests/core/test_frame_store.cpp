@@ -229,7 +229,9 @@ TEST_F(FrameStore, RoundTripIsBitIdenticalWithNoOptionalArray) {
 
 TEST_F(FrameStore, EmptyAndOneParticleFramesRoundTrip) {
   for (Eigen::Index n : {0, 1}) {
-    const fs::path p = write("n" + std::to_string(n) + ".h5", 3, 3, n, {true, true, false, true});
+    std::string name = "n";  // not "n" + to_string(n): GCC 12 warns of a restrict overlap
+    name += std::to_string(n) + ".h5";
+    const fs::path p = write(name, 3, 3, n, {true, true, false, true});
     FrameReader r(p);
     ASSERT_EQ(r.frames(), 3);
     for (long k = 0; k < 3; ++k) {
@@ -433,7 +435,9 @@ TEST_F(FrameStore, ARadiusIdOrSpeciesMissingAtSomeStepsIsRefused) {
     {
       Id f(H5Fopen(p.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
       Id atoms(H5Gopen2(f, "particles/atoms", H5P_DEFAULT));
-      if (name == "species") EXPECT_GE(H5Ldelete(atoms, "species", H5P_DEFAULT), 0);
+      if (name == "species") {
+        EXPECT_GE(H5Ldelete(atoms, "species", H5P_DEFAULT), 0);
+      }
       Id element(make_group(atoms, name.c_str()));
       const std::int64_t values[2][4] = {{1, 2, 3, 4}, {1, 2, 3, 4}};
       const std::int64_t steps[2] = {10, 30};
