@@ -155,8 +155,9 @@ Property read_property(hid_t dataset, const std::string& path, const std::string
   // Analyzers and writers name columns in JSON paths and file headers: another tool's
   // element "a b" would break them.
   if (!is_valid_column_name(name)) {
-    throw Error(path + ": expected an element name of letters, digits and _, not starting "
-                       "with a digit (a column's name), got \"" +
+    throw Error(path +
+                ": expected an element name of letters, digits and _, not starting "
+                "with a digit (a column's name), got \"" +
                 name + "\"");
   }
   Property p{name, scope, value_type_of(dataset, path), 1, "", ""};

@@ -37,8 +37,9 @@ H5I_type_t type_at(hid_t loc, const std::string& path) {
   if (!exists(loc, path)) return H5I_BADID;
   Object o(H5Oopen(loc, path.c_str(), H5P_DEFAULT));
   if (!o.valid()) {
-    throw Error(path + ": expected a group or dataset, got a link that leads to none (a soft "
-                       "link to a removed object or an external link to a missing file)");
+    throw Error(path +
+                ": expected a group or dataset, got a link that leads to none (a soft "
+                "link to a removed object or an external link to a missing file)");
   }
   return H5Iget_type(o.id());
 }

@@ -109,10 +109,10 @@ void CollisionAnalyzer::consume(const Frame& frame, FrameCache&) {
 // would widen the contact's ends by its gap without a word.
 void CollisionAnalyzer::check_step(const Frame& frame, const std::string& where) {
   if (frames_ > 0 && frame.step != last_step_ + 1) {
-    throw InputError(where +
-                     ": expected a frame every time step (the source's save_every set to 1), got step " +
-                     std::to_string(frame.step) + " after step " + std::to_string(last_step_) +
-                     " (a gap of " + std::to_string(frame.step - last_step_) + " steps)");
+    throw InputError(
+        where + ": expected a frame every time step (the source's save_every set to 1), got step " +
+        std::to_string(frame.step) + " after step " + std::to_string(last_step_) + " (a gap of " +
+        std::to_string(frame.step - last_step_) + " steps)");
   }
   last_step_ = frame.step;
 }
