@@ -144,6 +144,8 @@ double kinetic_energy_bound(const InitialState& s, const Model& model, double sp
   return bound;
 }
 
+constexpr double kMostSteps = 1e18;  // within 64-bit step counts, with room to add
+
 std::int64_t steps_in(double time, double dt) {
   return static_cast<std::int64_t>(std::ceil(time / dt - 1e-9));
 }
@@ -274,6 +276,14 @@ void DemSource::check_dt(const PluginContext& ctx, const ContactTime& shortest) 
 void DemSource::read_schedule(const PluginContext& ctx, const Drive& drive) {
   const Params& p = ctx.params;
   const double dt = p.real("dt");
+  // Steps are counted in 64-bit integers: a duration of 1e300 wrapped round to a negative
+  // count, refused as a save_from past it.
+  if (!(p.real("duration") / dt <= kMostSteps)) {
+    std::ostringstream m;
+    m << ctx.param("duration") << ": expected at most " << kMostSteps
+      << " time steps (duration / dt), got " << p.real("duration") / dt << " (dt " << dt << ")";
+    throw InputError(m.str());
+  }
   total_steps_ = end_step_ = steps_in(p.real("duration"), dt);
   save_every_ = p.integer("save_every");
   first_saved_step_ = steps_in(p.real("save_from"), dt);

@@ -187,6 +187,16 @@ TEST(DemSource, FramesCarryTheDrivesCyclesAndTheContainersVelocity) {
   fs::remove(file);
 }
 
+// A duration of 1e300 wrapped the step count round to a negative one, refused as a
+// save_from past the duration.
+TEST(DemSource, ADurationOfMoreStepsThanCanBeCountedIsRefusedByName) {
+  const fs::path file = start_file();
+  EXPECT_EQ(refusal({{"initial_file", file.string()}, {"duration", 1e300}}),
+            "params.duration: expected at most 1e+18 time steps (duration / dt), got 5e+303 (dt "
+            "0.0002)");
+  fs::remove(file);
+}
+
 // Two spheres started 0.1 into each other (20 % of their radius, within the start's
 // max_overlap) without gravity: the spring releases k 0.1^2 / 2 = 1000 where the scene's
 // speeds (nothing moves, nothing falls) allow 1e-4. That is the start's energy, not a
