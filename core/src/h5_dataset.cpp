@@ -243,6 +243,18 @@ std::int64_t checked_signed(std::uint64_t u, const std::string& path) {
               std::to_string(u));
 }
 
+std::vector<std::int64_t> checked_signed(const std::vector<std::uint64_t>& raw,
+                                         const std::string& path) {
+  std::vector<std::int64_t> out(raw.size());
+  for (std::size_t k = 0; k < raw.size(); ++k) out[k] = checked_signed(raw[k], path);
+  return out;
+}
+
+// An integer type whose values HDF5 would clamp on the way to int64.
+bool wide_unsigned(hid_t type) {
+  return H5Tget_sign(type) == H5T_SGN_NONE && H5Tget_size(type) >= 8;
+}
+
 // An integer of `size` bytes in native byte order, widened to 64 bits.
 std::int64_t widen(const unsigned char* p, std::size_t size, bool is_signed,
                    const std::string& path) {
@@ -273,11 +285,10 @@ std::vector<std::int64_t> read_integer_rows(hid_t dataset, const std::string& pa
   std::vector<std::int64_t> values(count * per_row);
   Object type = owned(H5Dget_type(dataset), path + ": cannot read the data type");
   const H5T_class_t cls = H5Tget_class(type.id());
-  if (cls == H5T_INTEGER && H5Tget_sign(type.id()) == H5T_SGN_NONE && H5Tget_size(type.id()) >= 8) {
+  if (cls == H5T_INTEGER && wide_unsigned(type.id())) {
     std::vector<std::uint64_t> raw(values.size());
     read_rows(dataset, path, H5T_NATIVE_UINT64, first, count, raw.data());
-    for (std::size_t k = 0; k < raw.size(); ++k) values[k] = checked_signed(raw[k], path);
-    return values;
+    return checked_signed(raw, path);
   }
   if (cls == H5T_INTEGER) {
     read_rows(dataset, path, H5T_NATIVE_INT64, first, count, values.data());
@@ -437,12 +448,11 @@ std::vector<std::int64_t> read_integer_attribute(hid_t object, const std::string
   OpenAttribute a = open_attribute(object, where);
   if (H5Tget_class(a.type.id()) != H5T_INTEGER) throw Error(where + ": expected integers");
   std::vector<std::int64_t> out(a.count);
-  if (H5Tget_sign(a.type.id()) == H5T_SGN_NONE && H5Tget_size(a.type.id()) >= 8) {
+  if (wide_unsigned(a.type.id())) {
     std::vector<std::uint64_t> raw(a.count);
     check(H5Aread(a.attr.id(), H5T_NATIVE_UINT64, raw.data()),
           where + ": cannot read the attribute");
-    for (std::size_t k = 0; k < raw.size(); ++k) out[k] = checked_signed(raw[k], where);
-    return out;
+    return checked_signed(raw, where);
   }
   check(H5Aread(a.attr.id(), H5T_NATIVE_INT64, out.data()), where + ": cannot read the attribute");
   return out;

@@ -39,14 +39,16 @@ std::int64_t fixed_sample(std::int64_t i, std::int64_t increment, std::int64_t o
 
 // An H5MD clock (`step` or `time`) for up to `samples` samples: an explicit 1-D dataset
 // (possibly shorter than the values), or a scalar increment with an optional `offset`
-// attribute (H5MD 1.1 fixed storage), where sample i is at i * increment + offset.
+// attribute (H5MD 1.1 fixed storage), where sample i is at i * increment + offset. `rows`:
+// those of an explicit clock, or `samples` for a fixed one (it has as many as asked).
 template <class T>
-std::vector<T> read_clock(hid_t file, const std::string& path, hsize_t samples) {
+std::vector<T> read_clock(hid_t file, const std::string& path, hsize_t samples, hsize_t& rows) {
   constexpr bool integer = std::is_integral_v<T>;
   const hid_t mem_type = integer ? H5T_NATIVE_INT64 : H5T_NATIVE_DOUBLE;
   Object ds = open_stored_dataset(file, path);
   const Shape shape = shape_of(ds.id(), path);
   std::vector<T> out;
+  rows = shape.size() == 1 ? shape[0] : samples;
   if (shape.size() == 1) {
     const hsize_t n = std::min(samples, shape[0]);
     if constexpr (integer) {
@@ -79,13 +81,6 @@ std::vector<T> read_clock(hid_t file, const std::string& path, hsize_t samples) 
   return out;
 }
 
-// The rows of an explicit clock, or `samples` for a fixed one (it has as many as asked).
-hsize_t clock_rows(hid_t file, const std::string& path, hsize_t samples) {
-  Object ds = open_stored_dataset(file, path);
-  const Shape shape = shape_of(ds.id(), path);
-  return shape.size() == 1 ? shape[0] : samples;
-}
-
 }  // namespace
 
 std::optional<Element> Element::open(hid_t file, const std::string& path) {
@@ -108,13 +103,11 @@ std::optional<Element> Element::open(hid_t file, const std::string& path) {
   if (!is_dataset(file, path + "/step")) {
     throw Error(path + "/step: missing (a time-dependent H5MD element holds step and value)");
   }
-  e.steps_ = read_clock<std::int64_t>(file, path + "/step", e.shape_[0]);
-  e.step_rows_ = clock_rows(file, path + "/step", e.shape_[0]);
+  e.steps_ = read_clock<std::int64_t>(file, path + "/step", e.shape_[0], e.step_rows_);
   e.samples_ = e.steps_.size();
   e.time_rows_ = e.shape_[0];
   if (is_dataset(file, path + "/time")) {
-    e.times_ = read_clock<double>(file, path + "/time", e.samples_);
-    e.time_rows_ = clock_rows(file, path + "/time", e.shape_[0]);
+    e.times_ = read_clock<double>(file, path + "/time", e.samples_, e.time_rows_);
     e.samples_ = std::min<hsize_t>(e.samples_, e.times_.size());
   }
   return e;

@@ -2,9 +2,9 @@
 // The normal stiffness and damping of the law that made the frames, measured from them:
 // in contact, the linear law's normal force is F = k_n delta - c v_n (c = gamma_n m_eff,
 // v_n < 0 approaching), so a least-squares fit of the frames' normal forces against the
-// overlap and the normal velocity gives k_n, and c. The analyzer's analytic values are only the
-// source's when its k_n is: this is how a k_n other than the source's is caught, since a
-// frame does not carry the source's parameters.
+// overlap and the normal velocity gives k_n and c. The analyzer's analytic values are only
+// the source's when its k_n, gamma_n and density are: this is how other values are caught,
+// since a frame does not carry the source's parameters.
 #include <cstddef>
 #include <optional>
 

@@ -13,9 +13,11 @@ namespace granpipe::disks2d_tap {
 constexpr double kMostCells = 1 << 28;
 
 void DiskGrid::reset(double width, double height, double cell, double margin) {
-  const double cols = std::floor(width / cell) + 1 + 2 * (std::ceil(margin / cell) + 1);
-  const double rows = std::floor(height / cell) + 1 + 2 * (std::ceil(margin / cell) + 1);
-  if (!(cols * rows <= kMostCells)) {
+  const double inv_cell = 1.0 / cell;
+  // Counted in doubles first: an int would overflow before the check.
+  const double cols = std::floor(width * inv_cell) + 1, rows = std::floor(height * inv_cell) + 1;
+  const double pad = std::ceil(margin * inv_cell) + 1;
+  if (!((cols + 2 * pad) * (rows + 2 * pad) <= kMostCells)) {
     std::ostringstream s;
     s << "disks2d_tap: expected a packing that a grid of at most 2^28 cells of side " << cell
       << " covers, got one of width " << width << " and height " << height
@@ -25,10 +27,10 @@ void DiskGrid::reset(double width, double height, double cell, double margin) {
   width_ = width;
   height_ = height;
   cell_ = cell;
-  inv_cell_ = 1.0 / cell;
-  ncol_ = static_cast<int>(std::floor(width * inv_cell_)) + 1;
-  nrow_ = static_cast<int>(std::floor(height * inv_cell_)) + 1;
-  pad_ = static_cast<int>(std::ceil(margin * inv_cell_)) + 1;
+  inv_cell_ = inv_cell;
+  ncol_ = static_cast<int>(cols);
+  nrow_ = static_cast<int>(rows);
+  pad_ = static_cast<int>(pad);
   stride_ = ncol_ + 2 * pad_;
   cells_.assign(static_cast<std::size_t>(stride_) * static_cast<std::size_t>(nrow_ + 2 * pad_),
                 kEmpty);

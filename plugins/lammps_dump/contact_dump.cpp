@@ -154,9 +154,11 @@ struct WallGap {
   bool from_point;
 };
 
-WallGap wall_gap(const Entry& e, const ContactColumns& c, const Frame& f, std::int64_t i) {
+// `nearest`: the stated wall nearest to the point, or without one to the atom.
+WallGap wall_gap(const Entry& e, const ContactColumns& c, const Frame& f, std::int64_t i,
+                 const WallTouch& nearest) {
+  if (c.point[0] < 0) return {nearest.distance, 0.0, false};
   const Eigen::Vector3d x = centre(f, i);
-  if (c.point[0] < 0) return {nearest_wall(f.container, x)->distance, 0.0, false};
   Eigen::Vector3d d = e.vector(c.point) - x;
   double rounding = 0.0;
   for (int a = 0; a < 3; ++a) {
@@ -211,7 +213,7 @@ ContactRow wall_row(const Entry& e, const ContactColumns& c, const Frame& f,
                      "(state its base, cylinder_radius or side_walls)");
   }
   r.j = partner::wall(touch->wall);
-  r.overlap = wall_overlap(e, c, f, r.i, wall_gap(e, c, f, r.i), rounding);
+  r.overlap = wall_overlap(e, c, f, r.i, wall_gap(e, c, f, r.i, *touch), rounding);
   r.normal = e.vector(c.normal);
   r.tangential = tangential_of(e, c, r.normal);
   r.point = c.point[0] >= 0 ? e.vector(c.point)
