@@ -39,6 +39,12 @@ std::vector<std::string> split_path(const std::string& path, const std::string& 
       ++pos;
       for (end = pos; end < path.size() && is_digit(path[end]);) ++end;
       if (end == pos || end == path.size() || path[end] != ']') throw malformed();
+      // [00] would name entry 0 under a second spelling, which the checks that compare
+      // paths (a --set against the sweep, two swept paths) would take for another entry.
+      if (end - pos > 1 && path[pos] == '0') {
+        throw InputError(where + ": expected a list index without leading zeros, got [" +
+                         path.substr(pos, end - pos) + "] in " + json_brief(path));
+      }
       parts.push_back(path.substr(pos, end - pos));
       pos = end + 1;
       continue;
@@ -131,7 +137,8 @@ bool is_plugin_param_path(const std::string& path) {
   if (path.rfind(analyzers, 0) != 0) return false;
   std::size_t end = analyzers.size();
   while (end < path.size() && is_digit(path[end])) ++end;
-  return end > analyzers.size() && path.compare(end, params.size(), params) == 0 &&
+  const bool leading_zero = end > analyzers.size() + 1 && path[analyzers.size()] == '0';
+  return end > analyzers.size() && !leading_zero && path.compare(end, params.size(), params) == 0 &&
          is_param_path_from(path, end + params.size());
 }
 

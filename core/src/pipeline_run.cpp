@@ -265,24 +265,34 @@ Results sweep_summary(const Pipeline::Impl& p, const ResultSet& all) {
     cols.push_back(path);
     swept.push_back(path);
   }
+  // Every scalar some point gave: a point may give one the others do not (a parameter
+  // swept from 0 turns a measurement on), and the column must still be there.
   std::vector<std::pair<std::string, std::string>> scalars;  // producer, scalar
-  const std::string first = point_prefix(p, 0);
-  for (const auto& [group, results] : all) {
-    if (group.rfind(first, 0) != 0) continue;
-    const std::string producer = group.substr(first.size());
-    for (const auto& [name, s] : results.scalars()) {
-      scalars.emplace_back(producer, name);
-      cols.push_back(producer + "." + name);
-      cols.push_back(producer + "." + name + "_err");
+  std::set<std::pair<std::string, std::string>> seen;
+  for (std::size_t k = 0; k < p.points.size(); ++k) {
+    const std::string prefix = point_prefix(p, k);
+    for (auto it = all.lower_bound(prefix); it != all.end() && it->first.rfind(prefix, 0) == 0;
+         ++it) {
+      const std::string producer = it->first.substr(prefix.size());
+      for (const auto& [name, s] : it->second.scalars()) {
+        if (!seen.emplace(producer, name).second) continue;
+        scalars.emplace_back(producer, name);
+        cols.push_back(producer + "." + name);
+        cols.push_back(producer + "." + name + "_err");
+      }
     }
   }
-  Table table(cols, "one row per sweep point; string-valued parameters as the index in their list");
+  Table table(cols,
+              "one row per sweep point; true/false parameters as 1/0, other values that are "
+              "not numbers as the index in their list; NaN where a point gave no such result");
   for (std::size_t k = 0; k < p.points.size(); ++k) {
     std::vector<double> row{static_cast<double>(k)};
     for (const auto& path : swept) {
       const json& v = p.points[k].assignment[path];
       if (v.is_number()) {
         row.push_back(v.get<double>());
+      } else if (v.is_boolean()) {
+        row.push_back(v.get<bool>() ? 1.0 : 0.0);
       } else {
         const json& list = p.resolved["sweep"]["parameters"][path];
         row.push_back(static_cast<double>(std::find(list.begin(), list.end(), v) - list.begin()));

@@ -76,8 +76,13 @@ void refuse_sets_the_sweep_replaces(const std::vector<Override>& sets,
                                     const std::vector<std::string>& sweep_paths) {
   for (const Override& set : sets) {
     for (const std::string& swept : sweep_paths) {
-      if (set.origin.empty() || !covers(swept, set.path)) continue;
-      throw InputError(set.origin + ": expected a value the sweep leaves alone, got " + swept +
+      if (set.origin.empty()) continue;
+      // A --set of the object holding a swept value (--set source.params={...}) is
+      // replaced there too, in part.
+      const bool holds = covers(set.path, swept) && set.path != swept;
+      if (!holds && !covers(swept, set.path)) continue;
+      throw InputError(set.origin + ": expected a value the sweep leaves alone, got " +
+                       (holds ? set.path + ", which holds " + swept : swept) +
                        ", which the sweep sets at every point; give the sweep the values " +
                        "instead: --set 'sweep.parameters." + swept + "=[...]'");
     }

@@ -20,6 +20,17 @@ std::string read_mode(const json& sweep, const JsonLocation& at) {
   return mode;
 }
 
+// Two swept paths of which one holds the other (cells and cells[0]) would set one value
+// twice at every point, the row recording both and the run using one.
+void refuse_overlap(const std::vector<std::string>& paths, const std::string& path,
+                    const JsonLocation& pat) {
+  for (const std::string& earlier : paths) {
+    if (!covers(earlier, path) && !covers(path, earlier)) continue;
+    throw InputError(pat.quoted_key(path).str() + ": expected a parameter no other swept path " +
+                     "holds or is part of, got one overlapping \"" + earlier + "\"");
+  }
+}
+
 // The lists of values, each checked, with their paths.
 std::vector<const json*> read_lists(const json& sweep, const JsonLocation& pat,
                                     std::vector<std::string>& paths) {
@@ -34,12 +45,14 @@ std::vector<const json*> read_lists(const json& sweep, const JsonLocation& pat,
     if (!values.is_array() || values.empty()) {
       throw InputError(at + ": expected a non-empty list of values, got " + json_brief(values));
     }
+    split_path(path, at);
     if (!is_plugin_param_path(path)) {
       throw InputError(at +
                        ": expected a plugin parameter path like source.params.name or "
                        "analyzers[0].params.name, got " +
                        json_brief(path));
     }
+    refuse_overlap(paths, path, pat);
     paths.push_back(path);
     lists.push_back(&values);
   }

@@ -3,6 +3,7 @@
 // reproducible; output directories are never overwritten silently.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -72,6 +73,19 @@ class RefusesAtTheEnd : public Analyzer {
   void finish(Results&) override { throw InputError("expected at least 5 frames, got 4"); }
 };
 
+// Gives "extra" only when its flag is on: a result some sweep points have and others not.
+class ExtraWhenFlagged : public Analyzer {
+ public:
+  explicit ExtraWhenFlagged(const PluginContext& c) : flag_(c.params.boolean("flag")) {}
+  void consume(const Frame&, FrameCache&) override {}
+  void finish(Results& r) override {
+    if (flag_) r.add_scalar("extra", 7.0);
+  }
+
+ private:
+  bool flag_;
+};
+
 Registry test_registry() {
   Registry r;
   Schema s;
@@ -83,6 +97,9 @@ Registry test_registry() {
   r.add_analyzer<MeanXAnalyzer>("meanx", "mean x", a);
   r.add_analyzer<NeedsSupports>("needs_supports", "needs support labels", Schema{});
   r.add_analyzer<RefusesAtTheEnd>("refuses_at_the_end", "refuses its data in finish()", Schema{});
+  Schema f;
+  f.boolean("flag", false, "give the extra result");
+  r.add_analyzer<ExtraWhenFlagged>("extra_when_flagged", "a result only when flagged", f);
   return r;
 }
 
@@ -317,6 +334,55 @@ TEST(PipelineErrors, SetOfParamsThatAreNoObjectIsNamedBeforeTheSweep) {
             "--set source.params=5: expected an object of parameters, got 5");
   EXPECT_EQ(error_of(swept, {"analyzers[0].params=[1]"}),
             "--set analyzers[0].params=[1]: expected an object of parameters, got [1]");
+}
+
+// One parameter, one spelling: [00] named entry 0 past the check that a --set leaves
+// swept values alone, and a sweep of both cells and cells[0] (or of [0] and [00]) set one
+// value twice at every point, recording both. A --set of the object holding a swept value
+// was replaced there without a word.
+TEST(PipelineErrors, ASweptValueIsSetOncePerPoint) {
+  const std::string swept =
+      R"({"source": {"plugin": "random"}, "analyzers": [{"plugin": "meanx"}],
+          "sweep": {"parameters": {"analyzers[0].params.scale": [1, 2]}}})";
+  EXPECT_EQ(error_of(swept, {"analyzers[00].params.scale=3"}),
+            "--set analyzers[00].params.scale=3: expected a list index without leading zeros, "
+            "got [00] in \"analyzers[00].params.scale\"");
+  EXPECT_EQ(error_of(swept, {R"(analyzers[0].params={"scale": 3})"}),
+            R"(--set analyzers[0].params={"scale": 3}: expected a value the sweep leaves alone, )"
+            "got analyzers[0].params, which holds analyzers[0].params.scale, which the sweep sets "
+            "at every point; give the sweep the values instead: --set "
+            "'sweep.parameters.analyzers[0].params.scale=[...]'");
+  EXPECT_EQ(
+      error_of(
+          R"({"source": {"plugin": "random"}, "analyzers": [{"plugin": "meanx"}], "sweep": {"mode": "zip",
+              "parameters": {"analyzers[0].params.scale": [1], "analyzers[00].params.scale": [2]}}})"),
+      "p.json: sweep.parameters[\"analyzers[00].params.scale\"]: expected a list index without "
+      "leading zeros, got [00] in \"analyzers[00].params.scale\"");
+  EXPECT_EQ(
+      error_of(R"({"source": {"plugin": "random"}, "sweep": {"parameters": {
+                  "source.params.walls": [{"base": 1}], "source.params.walls.base": [2]}}})"),
+      "p.json: sweep.parameters[\"source.params.walls.base\"]: expected a parameter no other "
+      "swept path holds or is part of, got one overlapping \"source.params.walls\"");
+}
+
+// The summary's true was 0 and false 1 (their places in the list), and a result only some
+// points gave was left out of it.
+TEST(Pipeline, SweepSummaryHoldsBooleansAsOneAndZeroAndEveryPointsResults) {
+  const Registry r = test_registry();
+  const char* text =
+      R"({"seed": 9, "source": {"plugin": "random"}, "analyzers": [{"plugin": "extra_when_flagged"}],
+    "output": {"save_frames": false}, "sweep": {"parameters": {"analyzers[0].params.flag": [false, true]}}})";
+  Log log;
+  log.set_quiet(true);
+  RunOptions o = quiet_options();
+  o.out = fresh_dir("summary");
+  const RunSummary run = Pipeline::parse(text, "p.json", {}, r).run(o, log);
+  const Table& points = run.results.at("sweep").tables().at("points");
+  EXPECT_EQ(points.column("analyzers[0].params.flag"), (std::vector<double>{0.0, 1.0}));
+  const std::vector<double>& extra = points.column("extra_when_flagged.extra");
+  EXPECT_TRUE(std::isnan(extra[0]));
+  EXPECT_EQ(extra[1], 7.0);
+  fs::remove_all(*o.out);
 }
 
 TEST(PipelineErrors, SetListIndexBeyond64BitsIsNoEntry) {
