@@ -25,9 +25,11 @@ class StrictReader {
         open(event == E::array_start);
         break;
       case E::key:
+        refuse_nul(parsed, true);
         read_key(parsed.get<std::string>());
         break;
       case E::value:
+        refuse_nul(parsed, false);
         element_done();
         break;
       case E::object_end:
@@ -76,6 +78,16 @@ class StrictReader {
                        std::to_string(kMaxJsonDepth) + " levels deep, got deeper");
     }
     levels_.push_back({is_array, path, 0, {}, {}});
+  }
+
+  // A string holding \u0000 ends at it wherever it becomes a C string (a file name read
+  // as its part before the NUL, the pipeline recording the whole).
+  void refuse_nul(const json& parsed, bool is_key) const {
+    if (!parsed.is_string() || parsed.get_ref<const std::string&>().find('\0') == std::string::npos)
+      return;
+    const std::string path = is_key ? levels_.back().path : element_path();
+    throw InputError(where(path) + ": expected " + (is_key ? "a key" : "a string") +
+                     " without a NUL character, got one holding \\u0000");
   }
 
   // The JSON library would keep the last of two equal keys; the user meant one of them.

@@ -148,6 +148,20 @@ TEST(PipelineErrors, ANulByteIsRefusedWhereItIs) {
             "p.json:1:12: malformed JSON: expected text, got a NUL byte (is it a binary file?)");
 }
 
+// A \u0000 in a string cut a file name short where it was opened (the file before the
+// NUL was read, the pipeline recording the whole name) and an output folder's message.
+TEST(PipelineErrors, AnEscapedNulInAStringIsRefusedWhereItIs) {
+  EXPECT_EQ(error_of(R"({"source": {"plugin": "random"}, "output": {"dir": "out/a\u0000b"}})"),
+            "p.json: output.dir: expected a string without a NUL character, got one holding "
+            "\\u0000");
+  EXPECT_EQ(error_of(kGood, {R"(name="a\u0000")"}),
+            R"(--set name="a\u0000": expected a string without a NUL character, got one holding )"
+            R"(\u0000)");
+  EXPECT_EQ(error_of(R"({"source": {"plugin": "random", "params": {"a\u0000": 1}}})"),
+            "p.json: source.params: expected a key without a NUL character, got one holding "
+            "\\u0000");
+}
+
 // 64 levels are read; the 65th is refused by a parser that never recurses, so that a
 // file nested a hundred thousand levels deep cannot overflow the stack.
 TEST(PipelineErrors, NestingDeeperThan64LevelsIsRefused) {
