@@ -54,6 +54,7 @@ void append_line(const fs::path& file, const std::string& line) {
 OutputDirectory::OutputDirectory(const fs::path& dir, bool overwrite,
                                  const std::vector<InputFile>& inputs)
     : final_(without_trailing_separators(dir)), work_(final_), marker_(new_run_marker()) {
+  check_output_spelling(final_);
   check_output_kind(final_);
   check_output_place(final_, inputs);
   std::error_code ec;

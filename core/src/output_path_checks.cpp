@@ -65,6 +65,20 @@ fs::path without_trailing_separators(const fs::path& dir) {
   return s;
 }
 
+void check_output_spelling(const fs::path& dir) {
+  bool past_start = false;
+  for (const fs::path& part : dir) {
+    const bool dots = part == "." || part == "..";
+    if (dots && past_start) {
+      throw InputError(dir.string() + ": expected an output directory without . or .. after " +
+                       "its first named folder, got one; write the folder it means (a run " +
+                       "into out/x/. would be swapped into itself, and out/missing/.. made " +
+                       "missing/)");
+    }
+    past_start = past_start || !dots;
+  }
+}
+
 void check_output_kind(const fs::path& dir) {
   std::error_code ec;
   const fs::file_status st = fs::symlink_status(dir, ec);

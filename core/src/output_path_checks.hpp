@@ -12,6 +12,11 @@ struct InputFile;
 // see the target of a symlink instead of the symlink.
 std::filesystem::path without_trailing_separators(const std::filesystem::path& dir);
 
+// Throws InputError when "." or ".." follow a named folder in `dir` (leading ones, as in
+// ../results, are the working directory's): out/x/. is out/x under another name, and
+// out/missing/../x is refused by the system only once out/missing has been made.
+void check_output_spelling(const std::filesystem::path& dir);
+
 // Throws InputError unless `dir` is a directory or does not exist yet: a symlink (to
 // anything), a regular file or a special file is refused.
 void check_output_kind(const std::filesystem::path& dir);

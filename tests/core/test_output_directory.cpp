@@ -230,6 +230,31 @@ TEST(OutputDirectory, RefusesAFileASymlinkAndWhatHoldsTheWorkingDirectory) {
   fs::remove_all(dir);
 }
 
+// out/x/. --overwrite ran to the end, then could not swap out/x for itself and left the
+// new run hidden inside the old one; out/missing/../x made out/missing and blamed another
+// run. Both refused before anything is made; a leading .. is the working directory's.
+TEST(OutputDirectory, RefusesDotsAfterANamedFolder) {
+  const fs::path dir = fresh_dir("dots");
+  EXPECT_EQ(run(kLattice, dir / "run"), "");
+  const std::string why =
+      ": expected an output directory without . or .. after its first named folder, got one; "
+      "write the folder it means (a run into out/x/. would be swapped into itself, and "
+      "out/missing/.. made missing/)";
+  EXPECT_EQ(run(kLattice, dir / "run" / ".", true), (dir / "run" / ".").string() + why);
+  EXPECT_EQ(run(kLattice, dir / "missing" / ".." / "run", true),
+            (dir / "missing" / ".." / "run").string() + why);
+  EXPECT_FALSE(fs::exists(dir / "missing"));
+  EXPECT_TRUE(marked(dir / "run", "complete"));
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+  const fs::path cwd = fs::current_path();
+  fs::create_directories(dir / "work");
+  fs::current_path(dir / "work");
+  EXPECT_EQ(run(kLattice, "../second"), "");
+  fs::current_path(cwd);
+  EXPECT_TRUE(marked(dir / "second", "complete"));
+  fs::remove_all(dir);
+}
+
 TEST(OutputDirectory, RefusesToReplaceADirectoryHoldingAnInputFile) {
   const fs::path out = fresh_dir("input_inside");
   ASSERT_EQ(
