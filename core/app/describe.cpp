@@ -23,6 +23,7 @@ void print_param(const ParamSpec& s, const std::string& indent) {
   const std::string inner = indent + "    ";
   std::cout << "\n";
   if (s.type != ParamType::Object) std::cout << inner << "default: " << default_text(s) << "\n";
+  if (s.applies) std::cout << inner << "acts only with " << s.applies_where << "\n";
   std::cout << inner << s.doc << "\n";
   if (s.type == ParamType::Species) std::cout << inner << "each species:\n";
   if (s.type == ParamType::Pairs) std::cout << inner << "each pair (its keys override \"*\"'s):\n";

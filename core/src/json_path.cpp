@@ -137,8 +137,7 @@ bool is_plugin_param_path(const std::string& path) {
   if (path.rfind(analyzers, 0) != 0) return false;
   std::size_t end = analyzers.size();
   while (end < path.size() && is_digit(path[end])) ++end;
-  const bool leading_zero = end > analyzers.size() + 1 && path[analyzers.size()] == '0';
-  return end > analyzers.size() && !leading_zero && path.compare(end, params.size(), params) == 0 &&
+  return end > analyzers.size() && path.compare(end, params.size(), params) == 0 &&
          is_param_path_from(path, end + params.size());
 }
 

@@ -135,10 +135,11 @@ std::string why_not_integer(const nlohmann::json& v) {
              : "";
 }
 
+// key_str: a --set of one entry of a list (cells[1]=0) is named, not the file.
 [[noreturn]] void fail(const JsonLocation& at, const ParamSpec& spec, const nlohmann::json& got) {
   const bool integer = spec.type == ParamType::Int || spec.type == ParamType::IntList;
-  throw InputError(at.str() + ": expected " + describe_expected(spec) + ", got " + json_brief(got) +
-                   (integer ? why_not_integer(got) : ""));
+  throw InputError(at.key_str() + ": expected " + describe_expected(spec) + ", got " +
+                   json_brief(got) + (integer ? why_not_integer(got) : ""));
 }
 
 bool in_range(const ParamSpec& s, double x) {
@@ -256,6 +257,23 @@ std::optional<nlohmann::json> implied_json(const ParamSpec& s) {
 
 }  // namespace
 
+namespace {
+
+// A value given where its parameter does nothing (a margin for region all) was ignored
+// without a word; the default itself is let be, so that a sweep may zip it with the mode.
+void refuse_what_has_no_effect(const nlohmann::json& object, const Schema& schema,
+                               const Params& params, const JsonLocation& where) {
+  for (const auto& s : schema.specs()) {
+    if (!s.applies || !object.contains(s.name) || !s.default_value) continue;
+    if (params.values().at(s.name) == *s.default_value || s.applies(params)) continue;
+    throw InputError(where.child(s.name).str() + ": expected its default " +
+                     json_brief(to_json(*s.default_value)) + " (it acts only with " +
+                     s.applies_where + "), got " + json_brief(object[s.name]));
+  }
+}
+
+}  // namespace
+
 Params read_params(const nlohmann::json& object, const Schema& schema, const JsonLocation& where,
                    const std::filesystem::path& base_dir, Missing missing) {
   if (!object.is_object()) {
@@ -285,7 +303,9 @@ Params read_params(const nlohmann::json& object, const Schema& schema, const Jso
                        ", got nothing (required)");
     }
   }
-  return Params(std::move(values));
+  Params params(std::move(values));
+  if (missing != Missing::Skip) refuse_what_has_no_effect(object, schema, params, where);
+  return params;
 }
 
 Params validate_params(nlohmann::json& object, const Schema& schema, const JsonLocation& where,

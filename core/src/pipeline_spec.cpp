@@ -291,8 +291,7 @@ Pipeline Pipeline::parse(const std::string& text, const std::string& origin,
     json p = root;
     std::string note;
     for (const auto& [path, value] : assignments[k].items()) {
-      const std::string at =
-          top.child("sweep").child("parameters").str() + "[" + json_brief(path) + "]";
+      const std::string at = top.child("sweep").child("parameters").quoted_key(path).str();
       locate(p, split_path(path, at), at) = value;
       note += (note.empty() ? " (sweep point " + std::to_string(k) + ": " : ", ") + path + " = " +
               json_brief(value);

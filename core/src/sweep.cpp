@@ -45,13 +45,13 @@ std::vector<const json*> read_lists(const json& sweep, const JsonLocation& pat,
     if (!values.is_array() || values.empty()) {
       throw InputError(at + ": expected a non-empty list of values, got " + json_brief(values));
     }
-    split_path(path, at);
     if (!is_plugin_param_path(path)) {
       throw InputError(at +
                        ": expected a plugin parameter path like source.params.name or "
                        "analyzers[0].params.name, got " +
                        json_brief(path));
     }
+    split_path(path, at);  // refuses a second spelling of an index ([00])
     refuse_overlap(paths, path, pat);
     paths.push_back(path);
     lists.push_back(&values);

@@ -66,7 +66,10 @@ Schema schema() {
          "candidates \"cutoff\": the largest centre distance of a candidate pair, in units of "
          "R_i + R_j; 0: per frame, the smallest that makes every contact's selection exact "
          "(elongation x longest contact / (2 R_min)), within [1, 3]")
-      .min(0.0);
+      .min(0.0)
+      .only_where("candidates cutoff", [](const Params& p) {
+        return p.choice<Candidates>("candidates") == Candidates::Cutoff;
+      });
   s.real("elongation", 1.2,
          "factor lengthening, once, every edge selected by an earlier pass before the next "
          "pass")
@@ -132,6 +135,7 @@ void MstAnalyzer::consume(const Frame& frame, FrameCache& cache) {
   }
   if (chosen_.offer(frames_, r.pairs.loaded)) keep_table_ii(frame, r);
 
+  frames_with_table_ += frame.contacts ? 1 : 0;
   tcp_ = r.tcp;
   mst_pass_.resize(frame.contacts ? frame.contacts->rows() : 0);
   for (Eigen::Index k = 0; k < mst_pass_.size(); ++k) {
@@ -149,7 +153,23 @@ void MstAnalyzer::keep_table_ii(const Frame& frame, const TcpReport& report) {
   for (const PassRow& p : report.passes) table_ii_.add_row(table_row(report, p));
 }
 
+// Which contacts a frame has depends on the data (a contact table, or distances), so a
+// parameter of the other way is said to have done nothing rather than refused.
+void MstAnalyzer::warn_idle_contact_rule() const {
+  if (options_.contacts.zero_force_contacts && frames_with_table_ == 0) {
+    log_.warn(
+        "mst: zero_force_contacts had no effect: no frame carried a contact table, so "
+        "contacts were found by distance (contact_tolerance)");
+  }
+  if (options_.contacts.tolerance != kDefaultContactTolerance && frames_with_table_ == frames_) {
+    log_.warn(
+        "mst: contact_tolerance had no effect: every frame carried a contact table, "
+        "whose contacts were used");
+  }
+}
+
 void MstAnalyzer::finish(Results& results) {
+  if (frames_ > 0) warn_idle_contact_rule();
   results.add_table("per_frame", per_frame_.table());
   results.add_scalar("frames", static_cast<double>(frames_), std::nan(""), "", "frames analysed");
   if (chosen_.frame() < 0) return;

@@ -24,10 +24,12 @@ class MstAnalyzer : public Analyzer {
 
  private:
   void keep_table_ii(const Frame& frame, const TcpReport& report);
+  void warn_idle_contact_rule() const;
 
   Log& log_;
   MstOptions options_;
   long frames_ = 0;
+  long frames_with_table_ = 0;  // frames whose contact table gave the contacts
   bool warned_inexact_ = false;
   FirstFrameWarning no_contacts_;
   StreamedTable per_frame_;

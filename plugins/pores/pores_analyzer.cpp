@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "granpipe/bin_count.hpp"
+#include "granpipe/curve_fit.hpp"
 #include "granpipe/deepest_overlap.hpp"
 #include "granpipe/errors.hpp"
 #include "granpipe/format_number.hpp"
@@ -17,6 +18,10 @@
 namespace granpipe::pores {
 
 Schema schema() {
+  const auto inner_region = [](const Params& p) {
+    return p.choice<RegionKind>("region") == RegionKind::Inner;
+  };
+  const auto probing = [](const Params& p) { return p.integer("probes") > 0; };
   Schema s;
   s.real("tolerance", 1e-9,
          "two Delaunay cells whose circumspheres agree within tolerance * R (centre and radius) "
@@ -32,10 +37,12 @@ Schema schema() {
          "region inner: distance kept from every wall and below the top (the container's, or "
          "the highest particle top for an open top)")
       .min(0.0)
-      .unit("particle radii");
+      .unit("particle radii")
+      .only_where("region inner", inner_region);
   s.real("height", 0.0, "region inner: height of the region above its bottom; 0: up to the top")
       .min(0.0)
-      .unit("particle radii");
+      .unit("particle radii")
+      .only_where("region inner", inner_region);
   s.real("bin_width", 0.01, "bin width of P(xi)").range(1e-6, 1.0);
   s.real("xi_max", 1.0, "upper end of the histogram of xi = r/R").range(1e-3, 1e3);
   s.real("v_bin_width", 0.005, "bin width of the volume distribution rho_v(v), v = xi^3")
@@ -52,10 +59,13 @@ Schema schema() {
             "random probes of P0(sigma) per frame, uniform in the region cut to the box "
             "container; 0: P0 not measured")
       .range(0.0, 1e8);
-  s.real("sigma_step", 0.05, "step of the grid of P0(sigma)").range(1e-4, 1.0);
+  s.real("sigma_step", 0.05, "step of the grid of P0(sigma)")
+      .range(1e-4, 1.0)
+      .only_where("probes > 0", probing);
   s.real("sigma_max", 1.0, "largest probe radius of P0(sigma)")
       .range(0.0, 10.0)
-      .unit("particle radii");
+      .unit("particle radii")
+      .only_where("probes > 0", probing);
   s.boolean("pore_table", false,
             "also a table of every pore of every frame: centre, xi, Delaunay cells merged, "
             "whether in the region (a row per pore: some 6 per sphere)");
@@ -114,7 +124,7 @@ void check_probe_reach(const Frame& frame, double reach, const std::string& para
                      " times the mean radius, and the largest radius): expected periodic sides "
                      "of at least twice that, got " +
                      format_number(frame.container.length(a)) + " along " + "xyz"[a] + "; lower " +
-                     param + " or set probes 0");
+                     param + " or set probes 0 (and it to its default)");
   }
 }
 
@@ -246,7 +256,11 @@ void PoresAnalyzer::finish(Results& results) {
               (frames_without_spheres_ == frames_ ? ", and so is the pooled one" : ""));
   }
   statistics_.report(results);
-  volumes_.report(results, statistics_.nu());
+  if (const CurveFitStatus tail = volumes_.report(results, statistics_.nu());
+      tail != CurveFitStatus::Fitted && statistics_.pores() > 0) {
+    log_.warn("pores: the fit of rho_v's tail (v >= v_tail), " + describe(tail) +
+              ": A and lambda are undefined (NaN)");
+  }
   if (probes_ > 0) void_probability_.report(results);
   results.add_scalar("undefined_volumes", static_cast<double>(undefined_volumes_), std::nan(""), "",
                      "spheres whose Voronoi (Laguerre) cell is undefined (voronoi_volume NaN): "

@@ -7,8 +7,11 @@
 namespace granpipe::pores {
 
 VoidProbability::VoidProbability(double sigma_step, double sigma_max) {
+  // The grid stops at sigma_max itself, a last step shorter where the step does not divide
+  // it: beyond, the probes would look further than the parameter says (and its check).
   const auto steps = static_cast<long>(std::ceil(sigma_max / sigma_step - 1e-9));
-  for (long k = 0; k <= steps; ++k) sigma_.push_back(static_cast<double>(k) * sigma_step);
+  for (long k = 0; k < steps; ++k) sigma_.push_back(static_cast<double>(k) * sigma_step);
+  sigma_.push_back(sigma_max);
   free_.assign(sigma_.size(), 0);
 }
 

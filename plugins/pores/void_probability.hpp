@@ -10,7 +10,7 @@ namespace granpipe::pores {
 
 class VoidProbability {
  public:
-  // sigma = 0, step, ... up to the first point at or above sigma_max.
+  // sigma = 0, step, 2 step, ... below sigma_max, then sigma_max.
   VoidProbability(double sigma_step, double sigma_max);
   double sigma_max() const { return sigma_.back(); }
   // gaps: of one frame's probes, in units of R.

@@ -14,7 +14,7 @@ Region probe_region(const Frame& frame, const std::optional<PoreRegion>& region,
   const Container& c = frame.container;
   if (c.shape != ContainerShape::Box) {
     throw InputError(where + ": P0 probes expected a box container, got a " + to_string(c.shape) +
-                     " (set probes 0)");
+                     " (set probes 0, sigma_step and sigma_max at their defaults)");
   }
   Region box;
   box.dim = 3;

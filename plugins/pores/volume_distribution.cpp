@@ -1,6 +1,7 @@
 #include "volume_distribution.hpp"
 
 #include <cmath>
+#include <string>
 
 namespace granpipe::pores {
 
@@ -55,7 +56,7 @@ CurveFit VolumeDistribution::tail_fit(double nu) const {
   return fit_curve(exponential, v, y, sigma, start);
 }
 
-void VolumeDistribution::report(Results& results, double nu) const {
+CurveFitStatus VolumeDistribution::report(Results& results, double nu) const {
   Table t({"v", "count", "rho_v", "rho_v_err"},
           "volume distribution of the pores in v = xi^3, weighted by volume: rho_v = xi/3 P(xi)");
   const std::vector<double> rho = density();
@@ -64,9 +65,14 @@ void VolumeDistribution::report(Results& results, double nu) const {
     t.add_row({centre(k), counts_[k], rho[k], err});
   }
   results.add_table("volume_distribution", std::move(t));
-  results.add_fit(
-      "rho_v_tail",
-      result_fit(tail_fit(nu), "rho_v(v) = A exp(-v / lambda), v >= v_tail", {"A", "lambda"}));
+  const CurveFit fit = tail_fit(nu);
+  results.add_fit("rho_v_tail",
+                  result_fit(fit, "rho_v(v) = A exp(-v / lambda), v >= v_tail", {"A", "lambda"}));
+  results.add_scalar("rho_v_tail_status", static_cast<double>(fit.status), std::nan(""), "",
+                     "the fit of rho_v's tail: " + describe(fit.status) +
+                         " (status 0 fitted, 1 no more non-empty bins from v_tail up than "
+                         "parameters, 2 no convergence, 3 a parameter not determined)");
+  return fit.status;
 }
 
 }  // namespace granpipe::pores

@@ -22,7 +22,8 @@ class VolumeDistribution {
   // The fit of A exp(-v / lambda) (parameters A, lambda) to the non-empty bins from v_tail
   // up, each weighted by its Poisson error.
   CurveFit tail_fit(double nu) const;
-  void report(Results& results, double nu) const;
+  // The table, the tail fit and its status scalar; returns the fit's status.
+  CurveFitStatus report(Results& results, double nu) const;
 
  private:
   double centre(std::size_t k) const { return (static_cast<double>(k) + 0.5) * bin_width_; }

@@ -44,6 +44,8 @@ Registry material_registry() {
   pair.real("mu", 0.5, "friction coefficient").min(0.0);
   Schema s;
   s.choice<Law>("law", Law::Linear, "contact law");
+  s.real("hertz_exponent", 1.5, "the Hertz law's force exponent")
+      .only_where("law hertz", [](const Params& p) { return p.choice<Law>("law") == Law::Hertz; });
   s.species_table("species", species, std::nullopt, "the particle species");
   s.pair_table("contacts", "species", pair, std::nullopt, "contact coefficients");
   s.object("walls", walls, "the container's walls");
@@ -101,6 +103,26 @@ TEST(ChoiceParams, BadChoiceNamesTheChoicesAndTheClosest) {
             "\"hertz\"?)");
   EXPECT_EQ(error_of(with(kAllPairs, R"("law": 1)")),
             "p.json: source.params.law: expected one of \"linear\", \"hertz\", got 1");
+}
+
+// A value of a parameter that acts only in another mode was ignored without a word; its
+// default is let be, so that a sweep can zip it with the mode.
+TEST(ChoiceParams, AValueWhereItHasNoEffectIsRefused) {
+  EXPECT_EQ(error_of(with(kAllPairs, R"("hertz_exponent": 2)")),
+            "p.json: source.params.hertz_exponent: expected its default 1.5 (it acts only with "
+            "law hertz), got 2");
+  EXPECT_EQ(error_of(with(kAllPairs), {"source.params.hertz_exponent=2"}),
+            "--set source.params.hertz_exponent=2: expected its default 1.5 (it acts only with "
+            "law hertz), got 2");
+  EXPECT_EQ(made(with(kAllPairs, R"("law": "hertz", "hertz_exponent": 2)")).real("hertz_exponent"),
+            2.0);
+  EXPECT_EQ(made(with(kAllPairs, R"("hertz_exponent": 1.5)")).real("hertz_exponent"), 1.5);
+  const Registry r = material_registry();
+  const std::string zipped =
+      R"({"name": "t", "source": {"plugin": "materials", "params": {)" + with(kAllPairs) +
+      R"(}}, "sweep": {"mode": "zip", "parameters": {"source.params.law": ["linear", "hertz"],
+                                                     "source.params.hertz_exponent": [1.5, 2]}}})";
+  EXPECT_EQ(Pipeline::parse(zipped, "p.json", {}, r).points(), 2u);
 }
 
 TEST(ObjectParams, DefaultsAreFilledInside) {

@@ -372,11 +372,10 @@ TEST(PipelineErrors, ASweptValueIsSetOncePerPoint) {
               "parameters": {"analyzers[0].params.scale": [1], "analyzers[00].params.scale": [2]}}})"),
       "p.json: sweep.parameters[\"analyzers[00].params.scale\"]: expected a list index without "
       "leading zeros, got [00] in \"analyzers[00].params.scale\"");
-  EXPECT_EQ(
-      error_of(R"({"source": {"plugin": "random"}, "sweep": {"parameters": {
+  EXPECT_EQ(error_of(R"({"source": {"plugin": "random"}, "sweep": {"parameters": {
                   "source.params.walls": [{"base": 1}], "source.params.walls.base": [2]}}})"),
-      "p.json: sweep.parameters[\"source.params.walls.base\"]: expected a parameter no other "
-      "swept path holds or is part of, got one overlapping \"source.params.walls\"");
+            "p.json: sweep.parameters[\"source.params.walls.base\"]: expected a parameter no other "
+            "swept path holds or is part of, got one overlapping \"source.params.walls\"");
 }
 
 // The summary's true was 0 and false 1 (their places in the list), and a result only some
@@ -397,6 +396,24 @@ TEST(Pipeline, SweepSummaryHoldsBooleansAsOneAndZeroAndEveryPointsResults) {
   EXPECT_TRUE(std::isnan(extra[0]));
   EXPECT_EQ(extra[1], 7.0);
   fs::remove_all(*o.out);
+}
+
+// A --set of one entry of a list was blamed on the file ("p.json: ...: got [1,0]").
+TEST(PipelineErrors, SetOfAListEntryIsNamedWhenTheListIsRefused) {
+  Registry r = test_registry();
+  Schema s;
+  s.integers("cells", std::vector<std::int64_t>{3, 3}, "cells").min(1);
+  r.add_analyzer<NeedsSupports>("cells", "a list parameter", s);
+  try {
+    Pipeline::parse(R"({"source": {"plugin": "random"}, "analyzers": [{"plugin": "cells",
+                        "params": {"cells": [1, 2]}}]})",
+                    "p.json", {"analyzers[0].params.cells[1]=0"}, r);
+    FAIL() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(),
+                 "--set analyzers[0].params.cells[1]=0: analyzers[0].params.cells: expected a "
+                 "list of integers >= 1, got [1,0]");
+  }
 }
 
 TEST(PipelineErrors, SetListIndexBeyond64BitsIsNoEntry) {
@@ -422,6 +439,13 @@ TEST(PipelineErrors, SweepPathOfAMissingAnalyzerSaysHowManyThereAre) {
                          "sweep": {"parameters": {"analyzers[2].params.scale": [1, 2]}}})"),
       "p.json: sweep.parameters[\"analyzers[2].params.scale\"]: expected an existing list entry "
       "analyzers[2], got a list of 1 entry");
+  // A --set of the sweep's parameters is named, then the entry (the entry's key was glued
+  // to the --set's text).
+  EXPECT_EQ(
+      error_of(R"({"source": {"plugin": "random"}, "analyzers": [{"plugin": "meanx"}]})",
+               {R"(sweep.parameters={"analyzers[2].params.scale": [1, 2]})"}),
+      R"(--set sweep.parameters={"analyzers[2].params.scale": [1, 2]}: sweep.parameters["analyzers[2].params.scale"]: )"
+      "expected an existing list entry analyzers[2], got a list of 1 entry");
 }
 
 // Found by fuzz_pipeline: a bare-word --set value that is not UTF-8 became a JSON string

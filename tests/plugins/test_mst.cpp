@@ -9,6 +9,7 @@
 #include <numeric>
 #include <random>
 #include <set>
+#include <string>
 #include <utility>
 
 #include "candidate_edges.hpp"
@@ -323,6 +324,31 @@ TEST(Mst, WithoutContactsTheRecoveredFractionIsUndefined) {
   EXPECT_EQ(lines[0],
             "warning: mst: frame 0: no contacts: its recovered_fraction is undefined (nan "
             "in per_frame, not 0; docs/mst.md); said for the first such frame only");
+}
+
+// Which contact rule applies depends on the data: zero_force_contacts on frames without
+// a contact table, or a contact_tolerance on frames with one, did nothing without a word.
+TEST(Mst, AContactRuleTheFramesCannotUseIsSaid) {
+  const auto said = [](const std::string& param, const nlohmann::json& params, bool table) {
+    const auto ctx = test::make_context("mst", params);
+    ctx->keep_log();
+    MstAnalyzer analyzer(*ctx);
+    Frame f = figure_13();
+    if (!table) f.contacts.reset();
+    FrameCache cache;
+    analyzer.consume(f, cache);
+    Results r;
+    analyzer.finish(r);
+    const std::vector<std::string> lines = ctx->logged_lines();
+    return std::count_if(lines.begin(), lines.end(), [&](const std::string& l) {
+      return l.rfind("warning: mst: " + param + " had no effect", 0) == 0;
+    });
+  };
+  EXPECT_EQ(said("zero_force_contacts", {{"zero_force_contacts", true}}, false), 1);
+  EXPECT_EQ(said("zero_force_contacts", {{"zero_force_contacts", true}}, true), 0);
+  EXPECT_EQ(said("contact_tolerance", {{"contact_tolerance", 0.5}}, true), 1);
+  EXPECT_EQ(said("contact_tolerance", {{"contact_tolerance", 0.5}}, false), 0);
+  EXPECT_EQ(said("contact_tolerance", {}, true), 0);
 }
 
 TEST(Mst, ANaNForceOrARowJoiningAParticleToItselfIsRefused) {

@@ -539,17 +539,41 @@ TEST(Pores, HistogramsOfMoreBinsThanMemoryHoldsAreRefused) {
   EXPECT_EQ(message({{"bin_width", 1e-4}, {"xi_max", 1000}}), "accepted");
 }
 
+namespace {
+
+// The results of the installed pores analyzer on an FCC crystal of 5^3 cells, its log kept.
+granpipe::Results crystal_results(granpipe::test::PluginHarness& ctx) {
+  ctx.keep_log();
+  auto analyzer = granpipe::test::installed_plugins().find("pores")->make_analyzer(ctx);
+  granpipe::FrameCache cache;
+  analyzer->consume(crystal_frame(fcc(), 5), cache);
+  granpipe::Results results;
+  analyzer->finish(results);
+  return results;
+}
+
+}  // namespace
+
+// A crystal's pores fill two bins of rho_v, the octahedral one alone from v_tail up: the
+// tail fit's A and lambda were NaN without a status or a word.
+TEST(Pores, AnUnfittedVolumeTailIsSaid) {
+  const auto ctx = granpipe::test::make_context("pores", {});
+  const granpipe::Results results = crystal_results(*ctx);
+  EXPECT_EQ(results.scalar("rho_v_tail_status").value,
+            static_cast<double>(granpipe::CurveFitStatus::TooFewPoints));
+  EXPECT_TRUE(std::isnan(results.fits().at("rho_v_tail").values[1]));
+  EXPECT_EQ(ctx->logged_lines(),
+            (std::vector<std::string>{
+                "warning: pores: the fit of rho_v's tail (v >= v_tail), not fitted: no more "
+                "points than parameters: A and lambda are undefined (NaN)"}));
+}
+
 // A region that holds no pore (a thin slab between layers of pores) left every
 // distribution NaN without a word, as if the packing had none.
 TEST(Pores, ARegionWithoutPoresIsSaid) {
   const auto ctx = granpipe::test::make_context(
       "pores", {{"region", "inner"}, {"margin", 2.5}, {"height", 0.05}});
-  ctx->keep_log();
-  auto analyzer = granpipe::test::installed_plugins().find("pores")->make_analyzer(*ctx);
-  granpipe::FrameCache cache;
-  analyzer->consume(crystal_frame(fcc(), 5), cache);
-  granpipe::Results results;
-  analyzer->finish(results);
+  const granpipe::Results results = crystal_results(*ctx);
   ASSERT_EQ(results.scalar("pores").value, 0);
   EXPECT_TRUE(std::isnan(results.scalar("nu").value));
   EXPECT_TRUE(std::isnan(results.scalar("pores_per_sphere").value));

@@ -60,6 +60,16 @@ TEST(PoresP0, OneSphereInABox) {
   }
 }
 
+// The grid ran past sigma_max to the next multiple of the step (sigma_max 0.3, step 0.2:
+// up to 0.4), the probes looking further than the parameter said.
+TEST(PoresP0, TheGridEndsAtSigmaMax) {
+  EXPECT_EQ(VoidProbability(0.2, 0.3).table().column("sigma"),
+            (std::vector<double>{0.0, 0.2, 0.3}));
+  EXPECT_EQ(VoidProbability(0.25, 1.0).table().column("sigma"),
+            (std::vector<double>{0.0, 0.25, 0.5, 0.75, 1.0}));
+  EXPECT_EQ(VoidProbability(0.5, 0.0).table().column("sigma"), (std::vector<double>{0.0}));
+}
+
 // Spheres placed at random without overlap in a periodic box: P0(0), the void fraction, is
 // 1 - phi in expectation, phi the exact particle volume over the box's.
 TEST(PoresP0, ZeroProbeFindsTheVoidFraction) {
@@ -159,7 +169,7 @@ TEST(PoresP0, ProbesReachingAcrossThePeriodAreRefusedNamingSigmaMax) {
                  "pores: frame at step 0: P0 probes look up to 5 from each point "
                  "(params.sigma_max times the mean radius, and the largest radius): expected "
                  "periodic sides of at least twice that, got 8.48528 along x; lower "
-                 "params.sigma_max or set probes 0");
+                 "params.sigma_max or set probes 0 (and it to its default)");
   }
 }
 

@@ -3,6 +3,7 @@
 // validates the pipeline's JSON against it and hands the plugin a Params object.
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -54,6 +55,11 @@ struct ParamSpec {
   std::shared_ptr<const Schema> fields;     // Object, Species, Pairs: the schema of each object
   std::string species;                      // Pairs: the Species parameter its keys name
   std::optional<std::string> default_json;  // Species, Pairs: the default, as JSON text
+  // Where the parameter has an effect (empty: everywhere) and that place in words
+  // ("region inner"): elsewhere a value other than the default is refused, as a mistyped
+  // parameter is, rather than ignored.
+  std::function<bool(const Params&)> applies;
+  std::string applies_where;
 };
 
 // The names a pipeline gives the values of an enum, declared once beside the enum (found
@@ -100,6 +106,14 @@ class Schema {
     }
     Entry& length(std::size_t n) {
       s_.list_length = n;
+      return *this;
+    }
+    // The parameter acts only `where` (in words, "probes > 0") `applies` holds.
+    Entry& only_where(std::string where, std::function<bool(const Params&)> applies) {
+      if (!s_.default_value)
+        throw InternalError("only_where on parameter '" + s_.name + "', which has no default");
+      s_.applies_where = std::move(where);
+      s_.applies = std::move(applies);
       return *this;
     }
 
