@@ -81,11 +81,15 @@ PointPlugins make_plugins(const Pipeline::Impl& p, std::size_t k, int threads, L
   const PointSpec& point = p.points[k];
   const Seeds seeds = Seeds(p.seed).derive("point", p.shared_seeds ? 0 : k);
   PointPlugins made;
+  const std::string provenance = "granpipe " + std::string(version()) + " commit " + git_commit() +
+                                 " pipeline " + p.name + " seed " + std::to_string(p.seed) +
+                                 (p.points.size() > 1 ? " sweep point " + std::to_string(k) : "");
   // Plugins check what the schema cannot (one parameter against another, a file's
   // content); their messages name the parameter (ctx.param) and get the file in front.
   auto context = [&](const Params& params, Seeds s, const std::string& name,
                      const std::string& params_path) {
     PluginContext c{params, s, threads, log, progress, dir, name, params_path};
+    c.provenance = provenance;
     c.streams = streams;
     c.results_group = point_prefix(p, k) + name;
     return c;

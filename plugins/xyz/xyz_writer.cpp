@@ -91,7 +91,8 @@ std::string particle_line(const Frame& f, Eigen::Index i, int digits) {
 XyzWriter::XyzWriter(const PluginContext& ctx)
     : final_path_(ctx.output_dir / (ctx.name + ".xyz")),
       partial_path_(ctx.output_dir / (ctx.name + ".partial.xyz")),
-      digits_(static_cast<int>(ctx.params.integer("digits"))) {}
+      digits_(static_cast<int>(ctx.params.integer("digits"))),
+      provenance_(ctx.provenance.empty() ? "" : " granpipe=\"" + ctx.provenance + "\"") {}
 
 XyzWriter::~XyzWriter() {
   if (file_) std::fclose(file_);  // never closed: the run failed; .partial.xyz says so
@@ -105,7 +106,7 @@ void XyzWriter::write(const Frame& frame) {
                        std::strerror(errno) + ")");
     }
   }
-  std::string text = std::to_string(frame.size()) + "\n" + comment_line(frame) + "\n";
+  std::string text = std::to_string(frame.size()) + "\n" + comment_line(frame) + provenance_ + "\n";
   for (Eigen::Index i = 0; i < frame.size(); ++i) text += particle_line(frame, i, digits_) + "\n";
   if (std::fwrite(text.data(), 1, text.size(), file_) != text.size() || std::fflush(file_) != 0) {
     throw InputError(partial_path_.string() + ": cannot write (is the disk full?)");

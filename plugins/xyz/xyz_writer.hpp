@@ -1,8 +1,9 @@
 #pragma once
 // Frames as extended XYZ: per frame a count line, a comment line with the box
 // (Lattice=..., its lower corner as Origin=...), which sides are periodic (pbc=...), the
-// time, the step and the list of
-// columns (Properties=...), then one line per particle. Every particle column of the frame
+// time, the step, the list of
+// columns (Properties=...) and the run that wrote it (granpipe=...), then one line per
+// particle. Every particle column of the frame
 // is written, the published ones included, so that OVITO or ASE see what granpipe saw.
 #include <cstdio>
 #include <filesystem>
@@ -12,7 +13,7 @@
 
 namespace granpipe::xyz {
 
-// The comment line of a frame (without the newline).
+// The comment line of a frame (without the newline), before the writer adds granpipe=.
 std::string comment_line(const Frame& frame);
 // One particle's line (without the newline); `digits` significant digits for reals.
 std::string particle_line(const Frame& frame, Eigen::Index i, int digits);
@@ -27,6 +28,7 @@ class XyzWriter : public Writer {
  private:
   std::filesystem::path final_path_, partial_path_;
   int digits_;
+  std::string provenance_;  // the comment line's last key: granpipe="granpipe 0.1.0 commit ..."
   std::FILE* file_ = nullptr;
 };
 

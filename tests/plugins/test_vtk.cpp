@@ -11,9 +11,11 @@
 
 #include "granpipe/pipeline.hpp"
 #include "granpipe/plugin_loader.hpp"
+#include "granpipe/version.hpp"
 #include "vtk_collection.hpp"
 #include "vtk_polydata.hpp"
 #include "vtk_sample_frames.hpp"
+#include "vtk_writer.hpp"
 
 using namespace granpipe;
 namespace fs = std::filesystem;
@@ -141,5 +143,16 @@ TEST(Vtk, APipelineWritesOneFilePerFrameAndTheCollection) {
   EXPECT_TRUE(contains(vtp.str(),
                        "<Piece NumberOfPoints=\"16\" NumberOfVerts=\"16\" "
                        "NumberOfLines=\"0\""));
+  // Every file names the run that wrote it, as result files do.
+  const std::string run = std::string("<?xml version=\"1.0\"?>\n<!-- granpipe ") + version() +
+                          " commit " + git_commit() + " pipeline p seed 4 -->\n<VTKFile ";
+  EXPECT_EQ(vtp.str().rfind(run, 0), 0u);
+  EXPECT_EQ(pvd.str().rfind(run, 0), 0u);
   fs::remove_all(*o.out);
+}
+
+// A comment may not hold "--": a pipeline named a--b would have made the files malformed.
+TEST(Vtk, TheRunsCommentHoldsNoDoubleDash) {
+  EXPECT_EQ(vtk::with_provenance("<?xml version=\"1.0\"?>\n<VTKFile/>\n", "pipeline a--b---c"),
+            "<?xml version=\"1.0\"?>\n<!-- pipeline a- -b- - -c -->\n<VTKFile/>\n");
 }

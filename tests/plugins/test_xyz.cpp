@@ -10,6 +10,7 @@
 #include "granpipe/frame_store.hpp"
 #include "granpipe/pipeline.hpp"
 #include "granpipe/plugin_loader.hpp"
+#include "granpipe/version.hpp"
 #include "xyz_writer.hpp"
 
 using namespace granpipe;
@@ -72,7 +73,8 @@ TEST(Xyz, APipelineWritesTheFramesThatFramesH5Holds) {
     std::getline(in, line);
     ASSERT_EQ(line, std::to_string(f.size()));
     std::getline(in, line);
-    EXPECT_EQ(line, xyz::comment_line(f));
+    EXPECT_EQ(line, xyz::comment_line(f) + " granpipe=\"granpipe " + version() + " commit " +
+                        git_commit() + " pipeline p seed 4\"");
     for (Eigen::Index i = 0; i < f.size(); ++i) {
       std::getline(in, line);
       std::istringstream values(line);

@@ -45,6 +45,9 @@ struct PluginContext {
   std::string name;
   // Where the parameters sit in the pipeline, e.g. "source.params" or "analyzers[1].params".
   std::string params_path;
+  // "granpipe 0.1.0 commit 3f2a... pipeline tap2d seed 7" (and the sweep point): what a
+  // file a plugin writes says of where it came from, as every result file does.
+  std::string provenance{};
 
   // Where streamed tables go, and the results group they belong to ("arches",
   // "point_002/arches"); no streams when a pipeline is only checked.
