@@ -97,8 +97,6 @@ InterruptionRecord::~InterruptionRecord() {
   taken = false;
 }
 
-int stop_requested() { return requested.load(); }
-
 void throw_if_stop_requested() {
   if (const int sig = requested.load()) throw StopRequested{sig};
 }

@@ -2,11 +2,14 @@
 #include <filesystem>
 #include <string>
 
+#include "granpipe/stop_request.hpp"
+
 namespace granpipe {
 
 // While armed, SIGINT and SIGTERM record that the run was interrupted (a line in run.log,
 // the marker's status, one line on stderr) and ask the run to stop: it checks
-// stop_requested() after each frame, unwinds (closing frames.partial.h5, so that it opens
+// for it after each frame (plugins in their long loops: stop_request.hpp), unwinds (closing
+// frames.partial.h5, so that it opens
 // without SWMR) and calls end_by_signal(), which ends the process as the signal would
 // have, so its exit status still names it. A second signal acts at once, as before. One
 // run per process is recorded. Only what is async-signal-safe happens in the handler:
@@ -25,16 +28,6 @@ class InterruptionRecord {
   bool armed_ = false;  // false when another run in this process holds the handlers
 };
 
-// What the runner throws to unwind once a signal asked it to stop; not an std::exception,
-// so that no handler for errors takes it for a failure.
-struct StopRequested {
-  int signal;
-};
-
-// The signal that asked the run to stop (SIGINT, SIGTERM), or 0.
-int stop_requested();
-// Throws StopRequested when a signal asked the run to stop.
-void throw_if_stop_requested();
 // Ends the process by `signal` as it would have ended without granpipe's handler; returns
 // only when the caller's own handler for it returns.
 void end_by_signal(int signal);

@@ -11,6 +11,7 @@
 
 #include "diagnostics.hpp"
 #include "frame_output.hpp"
+#include "granpipe/stop_request.hpp"
 #include "kernels.hpp"
 #include "scene_checks.hpp"
 #include "start.hpp"
@@ -351,6 +352,7 @@ void DemSource::run_to(std::int64_t step) {
   const std::int64_t first = engine_->step();
   const auto start = Clock::now();
   while (engine_->step() < step) {
+    throw_if_stop_requested();  // frames far apart: a signal is not left waiting for one
     const auto chunk_start = Clock::now();
     const std::int64_t steps = std::min(kProgressChunk, step - engine_->step());
     // The wall forces a frame shows are kept only in the step before it: recording them

@@ -7,6 +7,7 @@
 
 #include "contact_geometry.hpp"
 #include "granpipe/errors.hpp"
+#include "granpipe/stop_request.hpp"
 
 namespace granpipe::disks2d_tap {
 namespace {
@@ -22,6 +23,9 @@ constexpr double kStayTolerance = 1e-12;
 // Consecutive moves that leave a disk where it was, with none of its supports moving in
 // between, before the engine calls it a cycle.
 constexpr std::uint16_t kMaxStalledMoves = 1000;
+// Few enough that a signal is answered within a second, many enough to cost nothing.
+constexpr std::uint32_t kMovesBetweenStopChecks = 1 << 16;
+
 // KeepTouching: a contact survives a move while the gap stays below this * radius.
 constexpr double kTouchTolerance = 1e-9;
 
@@ -384,12 +388,17 @@ void Deposit::note_zero_move(std::int32_t i, bool moved) {
   }
 }
 
+// A deposition of a wide bed may take minutes: a signal is looked for between moves.
 void Deposit::run(RandomStream& rng) {
   if (options_.order == MoveOrder::Random) {
-    while (!unstable_.empty()) move(unstable_[rng.below(unstable_.size())]);
+    for (std::uint32_t moves = 0; !unstable_.empty(); ++moves) {
+      if (moves % kMovesBetweenStopChecks == 0) throw_if_stop_requested();
+      move(unstable_[rng.below(unstable_.size())]);
+    }
     return;
   }
   while (!unstable_.empty()) {
+    throw_if_stop_requested();
     sweep_.assign(unstable_.begin(), unstable_.end());
     rng.shuffle(sweep_);
     for (const std::int32_t i : sweep_) {

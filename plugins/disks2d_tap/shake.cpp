@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "granpipe/stop_request.hpp"
+
 namespace granpipe::disks2d_tap {
 
 void Shaker::tap(DiskPacking& p, double A, RandomStream& rng) {
@@ -26,6 +28,7 @@ void Shaker::tap(DiskPacking& p, double A, RandomStream& rng) {
   }
 
   for (int loop = 0; loop < loops_; ++loop) {
+    throw_if_stop_requested();  // a tap of a wide bed may take minutes
     for (const std::int32_t disk : order_.next(rng)) {
       const auto i = static_cast<std::size_t>(disk);
       const double length = jump * rng.uniform();

@@ -293,8 +293,9 @@ void TapSource::finish(Results& results) {
   results.add_scalar("taps", static_cast<double>(tap_), std::nan(""), "", "taps done");
   results.add_scalar(
       "mc_acceptance",
-      m.trials ? static_cast<double>(m.accepted) / static_cast<double>(m.trials) : 0.0,
-      std::nan(""), "", "fraction of accepted Monte Carlo jumps during taps");
+      m.trials ? static_cast<double>(m.accepted) / static_cast<double>(m.trials) : std::nan(""),
+      std::nan(""), "",
+      "fraction of accepted Monte Carlo jumps during taps; NaN without a jump (mc_loops 0)");
   results.add_scalar("deposition_seconds", deposition_seconds_, std::nan(""), "s",
                      "wall time spent depositing");
   results.add_scalar("tap_seconds", tap_seconds_, std::nan(""), "s",

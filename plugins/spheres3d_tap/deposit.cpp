@@ -8,6 +8,7 @@
 #include "granpipe/container.hpp"
 #include "granpipe/errors.hpp"
 #include "granpipe/frame.hpp"
+#include "granpipe/stop_request.hpp"
 #include "roll_path.hpp"
 
 namespace granpipe::spheres3d_tap {
@@ -132,6 +133,7 @@ void Deposition::drop_random(int n, RandomStream& rng) {
   const double lo = box_.periodic() ? 0.0 : box_.radius;
   const double hi = box_.periodic() ? box_.side : box_.side - box_.radius;
   for (int i = 0; i < n; ++i) {
+    if (i % 1024 == 0) throw_if_stop_requested();  // a large deposition takes minutes
     const double x = rng.uniform(lo, hi);
     drop(x, rng.uniform(lo, hi), rng);
   }

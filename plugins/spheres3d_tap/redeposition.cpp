@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "granpipe/stop_request.hpp"
+
 namespace granpipe::spheres3d_tap {
 namespace {
 // How far a sphere may stray before its neighbour list is renewed, in units of the
@@ -77,6 +79,7 @@ TapStats Redeposition::tap(std::vector<Eigen::Vector3d>& centres, double epsilon
   for (const auto& c : centres) height_sum += c.z();
   TapStats stats;
   for (std::int64_t check = 0; check < options_.max_checks; ++check) {
+    throw_if_stop_requested();  // a tap of a large packing may take minutes
     const double before = height_sum;
     for (std::int64_t k = 0; k < per_check; ++k, ++stats.trials)
       stats.accepted += trial(centres, rng, height_sum);

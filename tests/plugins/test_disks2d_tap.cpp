@@ -681,6 +681,19 @@ TEST(Disks2dTapSource, SameSeedSameFrames) {
   EXPECT_GT(results.scalar("moves").value, 0.0);
 }
 
+// Without a Monte Carlo jump (mc_loops 0) the acceptance is 0/0: it was reported as 0.
+TEST(Disks2dTapSource, TheAcceptanceOfNoJumpIsUndefined) {
+  granpipe::Results results;
+  run_source({{"N", std::int64_t{40}},
+              {"width", 8.0},
+              {"equilibration_taps", std::int64_t{0}},
+              {"production_taps", std::int64_t{1}},
+              {"save_every", std::int64_t{1}},
+              {"mc_loops", std::int64_t{0}}},
+             5, &results);
+  EXPECT_TRUE(std::isnan(results.scalar("mc_acceptance").value));
+}
+
 TEST(Disks2dTapSource, ShuffledMonteCarloOrderIsReproducibleAndChangesTheRun) {
   auto params = [](const std::string& order) {
     return nlohmann::json({{"N", std::int64_t{120}},

@@ -14,8 +14,6 @@ struct StopRequested {
   int signal;
 };
 
-// The signal that asked the run to stop (SIGINT, SIGTERM), or 0.
-int stop_requested();
 // Throws StopRequested when a signal asked the run to stop.
 void throw_if_stop_requested();
 
