@@ -67,15 +67,17 @@ fs::path without_trailing_separators(const fs::path& dir) {
 
 void check_output_spelling(const fs::path& dir) {
   bool past_start = false;
+  fs::path previous;
   for (const fs::path& part : dir) {
     const bool dots = part == "." || part == "..";
     if (dots && past_start) {
       throw InputError(dir.string() + ": expected an output directory without . or .. after " +
-                       "its first named folder, got one; write the folder it means (a run " +
-                       "into out/x/. would be swapped into itself, and out/missing/.. made " +
-                       "missing/)");
+                       "its first named folder, got \"" + part.string() + "\" after \"" +
+                       previous.string() + "\"; write the folder it means (a run into out/x/. " +
+                       "would be swapped into itself, and out/missing/.. made missing/)");
     }
     past_start = past_start || !dots;
+    previous = part;
   }
 }
 

@@ -236,13 +236,15 @@ TEST(OutputDirectory, RefusesAFileASymlinkAndWhatHoldsTheWorkingDirectory) {
 TEST(OutputDirectory, RefusesDotsAfterANamedFolder) {
   const fs::path dir = fresh_dir("dots");
   EXPECT_EQ(run(kLattice, dir / "run"), "");
-  const std::string why =
-      ": expected an output directory without . or .. after its first named folder, got one; "
-      "write the folder it means (a run into out/x/. would be swapped into itself, and "
-      "out/missing/.. made missing/)";
-  EXPECT_EQ(run(kLattice, dir / "run" / ".", true), (dir / "run" / ".").string() + why);
+  const auto why = [](const std::string& part, const std::string& after) {
+    return ": expected an output directory without . or .. after its first named folder, got \"" +
+           part + "\" after \"" + after +
+           "\"; write the folder it means (a run into out/x/. would be swapped into itself, and "
+           "out/missing/.. made missing/)";
+  };
+  EXPECT_EQ(run(kLattice, dir / "run" / ".", true), (dir / "run" / ".").string() + why(".", "run"));
   EXPECT_EQ(run(kLattice, dir / "missing" / ".." / "run", true),
-            (dir / "missing" / ".." / "run").string() + why);
+            (dir / "missing" / ".." / "run").string() + why("..", "missing"));
   EXPECT_FALSE(fs::exists(dir / "missing"));
   EXPECT_TRUE(marked(dir / "run", "complete"));
   EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
