@@ -267,8 +267,8 @@ void refuse_what_has_no_effect(const nlohmann::json& object, const Schema& schem
     if (!s.applies || !object.contains(s.name) || !s.default_value) continue;
     if (params.values().at(s.name) == *s.default_value || s.applies(params)) continue;
     throw InputError(where.child(s.name).str() + ": expected its default " +
-                     json_brief(to_json(*s.default_value)) + " (it acts only with " +
-                     s.applies_where + "), got " + json_brief(object[s.name]));
+                     format_value(*s.default_value) + " (it acts only with " + s.applies_where +
+                     "), got " + json_brief(object[s.name]));
   }
 }
 

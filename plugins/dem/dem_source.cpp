@@ -192,17 +192,24 @@ Schema schema() {
   s.pair_table("contacts", "species", material_fields(), R"({"*": {}})",
                "particle-particle contact material per species pair");
   s.object("walls", material_fields(), "the walls' contact material (every wall, every species)");
+  // Without a frequency the container stands still: an amplitude, start or number of
+  // periods then does nothing (periods 5 would not end the run), and is refused.
+  const auto moving = [](const Params& d) { return d.real("frequency") > 0.0; };
   Schema drive;
   drive.choice<Drive::Form>("form", Drive::Form::OneMinusCos,
                             "container motion z = A sin(wt), or A (1 - cos wt) from rest");
-  drive.real("amplitude", 0.0, "A").unit("length");
+  drive.real("amplitude", 0.0, "A").unit("length").only_where("frequency > 0", moving);
   drive.real("frequency", 0.0, "f = w / 2 pi").min(0.0).unit("1/time");
-  drive.real("start", 0.0, "time the motion starts").min(0.0).unit("time");
+  drive.real("start", 0.0, "time the motion starts")
+      .min(0.0)
+      .unit("time")
+      .only_where("frequency > 0", moving);
   drive
       .integer("periods", 0,
                "the motion stops after this many periods, the container then at rest (where "
                "it started, for one_minus_cos); 0: never")
-      .min(0);
+      .min(0)
+      .only_where("frequency > 0", moving);
   s.object("drive", drive, "vibration of the whole container (base, cylinder and walls)");
   s.choice<ContactLaw>("law", ContactLaw::Linear, "contact law: linear spring-dashpot or Hertz");
   s.boolean("friction", true, "tangential forces with history and Coulomb's cap");

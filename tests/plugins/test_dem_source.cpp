@@ -365,6 +365,22 @@ TEST(DemSource, ADriveWhosePeakSpeedWouldCrushASphereIsRefused) {
   fs::remove(file);
 }
 
+// A drive without a frequency stands still: its periods did not end the run, its amplitude
+// moved nothing, and neither was said.
+TEST(DemSource, ADriveWithoutAFrequencyTakesNoOtherValue) {
+  const fs::path file = start_file();
+  EXPECT_EQ(refusal({{"initial_file", file.string()}, {"drive", {{"periods", 5}}}}),
+            "test: params.drive.periods: expected its default 0 (it acts only with frequency > "
+            "0), got 5");
+  EXPECT_EQ(refusal({{"initial_file", file.string()}, {"drive", {{"amplitude", 0.5}}}}),
+            "test: params.drive.amplitude: expected its default 0 (it acts only with frequency > "
+            "0), got 0.5");
+  EXPECT_EQ(refusal({{"initial_file", file.string()},
+                     {"drive", {{"amplitude", 0.001}, {"frequency", 0.5}, {"periods", 5}}}}),
+            "no refusal");
+  fs::remove(file);
+}
+
 TEST(DemSource, AGravityThatWouldCrushASphereRestingOnTheBaseIsRefused) {
   const fs::path file = start_file();
   EXPECT_EQ(refusal({{"initial_file", file.string()}, {"gravity", {0.0, 0.0, -1e300}}}),
