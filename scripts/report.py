@@ -13,6 +13,7 @@ import html
 import json
 import os
 import sys
+import warnings
 
 from paper_values import PaperValues, paper_problem
 from report_configuration import configuration_section
@@ -140,6 +141,10 @@ def pyplot():
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
         plt.rcParams["svg.fonttype"] = "none"  # labels stay text: smaller, and searchable
+        # A point without an uncertainty (NaN) draws no error bar, as meant; matplotlib says
+        # so on stderr for each, past granpipe's --quiet.
+        warnings.filterwarnings("ignore", message=".*converting a masked element to nan",
+                                category=UserWarning)
         return plt
     except ImportError:
         return None
