@@ -16,6 +16,7 @@
 #include "granpipe/atomic_file.hpp"
 #include "granpipe/format_number.hpp"
 #include "granpipe/frame_store.hpp"
+#include "granpipe/result_store.hpp"
 #include "interruption_record.hpp"
 #include "output_directory.hpp"
 #include "pipeline_impl.hpp"
@@ -75,15 +76,23 @@ std::string point_prefix(const Pipeline::Impl& p, std::size_t k) {
   return buf;
 }
 
+// The run as the files its plugins write name it, with the sweep point.
+std::string point_label(const Pipeline::Impl& p, std::size_t k) {
+  Provenance run;
+  run.pipeline_name = p.name;
+  run.version = version();
+  run.commit = git_commit();
+  run.seed = p.seed;
+  return run_label(run) + (p.points.size() > 1 ? " sweep point " + std::to_string(k) : "");
+}
+
 PointPlugins make_plugins(const Pipeline::Impl& p, std::size_t k, int threads, Log& log,
                           Progress& progress, const fs::path& out, ResultStreams* streams) {
   const fs::path dir = point_directory(p, k, out);
   const PointSpec& point = p.points[k];
   const Seeds seeds = Seeds(p.seed).derive("point", p.shared_seeds ? 0 : k);
   PointPlugins made;
-  const std::string provenance = "granpipe " + std::string(version()) + " commit " + git_commit() +
-                                 " pipeline " + p.name + " seed " + std::to_string(p.seed) +
-                                 (p.points.size() > 1 ? " sweep point " + std::to_string(k) : "");
+  const std::string provenance = point_label(p, k);
   // Plugins check what the schema cannot (one parameter against another, a file's
   // content); their messages name the parameter (ctx.param) and get the file in front.
   auto context = [&](const Params& params, Seeds s, const std::string& name,

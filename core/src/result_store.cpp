@@ -110,10 +110,7 @@ std::string csv_number(double x) {
   return s.str();
 }
 
-std::string csv_header(const Provenance& p) {
-  return "# granpipe " + p.version + " commit " + p.commit + " pipeline " + p.pipeline_name +
-         " seed " + std::to_string(p.seed) + "\n";
-}
+std::string csv_header(const Provenance& p) { return "# " + run_label(p) + "\n"; }
 
 std::string quoted(const std::string& s) {
   if (s.find_first_of(",\"\n") == std::string::npos) return s;
@@ -239,6 +236,11 @@ void write_results(const fs::path& dir, const ResultSet& results, const Provenan
   }
   for (const auto& csv : csvs) rename_into_place(csv.first);
   rename_into_place(final_path);
+}
+
+std::string run_label(const Provenance& p) {
+  return "granpipe " + p.version + " commit " + p.commit + " pipeline " + p.pipeline_name +
+         " seed " + std::to_string(p.seed);
 }
 
 }  // namespace granpipe

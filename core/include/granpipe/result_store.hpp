@@ -26,6 +26,10 @@ struct Provenance {
   std::vector<double> stage_seconds;
 };
 
+// "granpipe 0.1.0 commit 3f2a... pipeline tap2d seed 7": the run, as every file it writes
+// names it (the CSV files' # line, the writers' files).
+std::string run_label(const Provenance& p);
+
 // One results group per named producer (a sweep point's source and analyzers).
 using ResultSet = std::map<std::string, Results>;
 
