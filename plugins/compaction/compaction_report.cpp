@@ -18,10 +18,6 @@ namespace granpipe::compaction {
 
 namespace {
 
-const char* const kStatusCodes =
-    " (status 0 fitted, 1 no more points than parameters, 2 no convergence, 3 a parameter "
-    "not determined)";
-
 // The three global values, the law each follows and its unit.
 struct Quantity {
   const char* name;
@@ -49,7 +45,7 @@ Series within(const Series& s, double from, double to) {
 void add_law_fit(Results& results, const std::string& name, const Law& law, const LawFit& fit,
                  const std::string& doc) {
   results.add_scalar(name + "_status", static_cast<double>(fit.status), std::nan(""), "",
-                     doc + ": " + describe(fit.status) + kStatusCodes);
+                     doc + ": " + describe(fit.status) + kCurveFitStatusCodes);
   results.add_scalar(name + "_scatter", fit.scatter, std::nan(""), "",
                      doc + ": rms residual of the points about the law (their sigma in the fit)");
   Fit out;
@@ -183,7 +179,7 @@ void report_ageing(const Series& s, const std::vector<std::int64_t>& waiting_tim
   points.units = {"taps", "taps", "R^2"};
   Table fits({"t_w", "points", "status", "A_inf", "A_inf_err", "B", "B_err", "tau", "tau_err"},
              std::string("Eq. (6) fitted to this realization's squared differences, per t_w") +
-                 kStatusCodes);
+                 kCurveFitStatusCodes);
   fits.units = {"taps", "", "", "R^2", "R^2", "", "", "taps", "taps"};
   for (std::size_t k = 0; k < a.points.size();) {
     std::vector<double> t, y;

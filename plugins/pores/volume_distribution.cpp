@@ -69,9 +69,8 @@ CurveFitStatus VolumeDistribution::report(Results& results, double nu) const {
   results.add_fit("rho_v_tail",
                   result_fit(fit, "rho_v(v) = A exp(-v / lambda), v >= v_tail", {"A", "lambda"}));
   results.add_scalar("rho_v_tail_status", static_cast<double>(fit.status), std::nan(""), "",
-                     "the fit of rho_v's tail: " + describe(fit.status) +
-                         " (status 0 fitted, 1 no more non-empty bins from v_tail up than "
-                         "parameters, 2 no convergence, 3 a parameter not determined)");
+                     "the fit of rho_v's tail (its points: the non-empty bins from v_tail up): " +
+                         describe(fit.status) + kCurveFitStatusCodes);
   return fit.status;
 }
 

@@ -27,6 +27,10 @@ enum class CurveFitStatus : std::uint8_t {
   NotDetermined,  // converged, but a parameter is not determined (singular Jacobian)
 };
 std::string describe(CurveFitStatus s);
+// The codes of a fit's status scalar, for its doc: " (status 0 fitted, 1 ...)".
+inline constexpr const char* kCurveFitStatusCodes =
+    " (status 0 fitted, 1 no more points than parameters, 2 no convergence, 3 a parameter "
+    "not determined)";
 
 struct CurveFit {
   CurveFitStatus status = CurveFitStatus::TooFewPoints;
