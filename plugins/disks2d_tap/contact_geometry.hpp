@@ -32,10 +32,13 @@ inline bool fall_contact(double x, double y, double xj, double yj, double R, dou
   return true;
 }
 
-// Where a roll path enters the circle of radius Rj around (xj, yj), as a unit direction
-// from the path's centre; false when the two circles do not cross.
-inline bool roll_entry(const RollPath& path, double xj, double yj, double Rj, double& qx,
-                       double& qy) {
+// Where a roll path enters and leaves the circle of radius Rj around (xj, yj), as unit
+// directions from the path's centre; false when the two circles do not cross.
+struct RollCrossings {
+  double entry_x, entry_y, exit_x, exit_y;
+};
+inline bool roll_crossings(const RollPath& path, double xj, double yj, double Rj,
+                           RollCrossings& c) {
   const double Dx = xj - path.cx, Dy = yj - path.cy;
   const double d2 = Dx * Dx + Dy * Dy;
   const double d = std::sqrt(d2);
@@ -44,10 +47,10 @@ inline bool roll_entry(const RollPath& path, double xj, double yj, double Rj, do
   if (!(k > -1.0 && k < 1.0)) return false;
   const double s = std::sqrt((1.0 - k) * (1.0 + k));
   const double nx = Dx / d, ny = Dy / d;
-  // Of the two crossings the path meets the entry one (the other is the exit): it lies
-  // on the side the path comes from, i.e. the line of centres rotated by h * angle.
-  qx = nx * k - path.h * ny * s;
-  qy = path.h * nx * s + ny * k;
+  // The entry lies on the side the path comes from, i.e. the line of centres rotated by
+  // h * angle; the exit on the other.
+  c = {nx * k - path.h * ny * s, path.h * nx * s + ny * k, nx * k + path.h * ny * s,
+       -path.h * nx * s + ny * k};
   return true;
 }
 

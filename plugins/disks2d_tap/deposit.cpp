@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <sstream>
 
@@ -20,6 +21,11 @@ constexpr double kAngleTolerance = 1e-9;
 // two disks leaning on each other could repeat forever, each such shift releasing the
 // other's support.
 constexpr double kStayTolerance = 1e-12;
+// Far from the origin a coordinate's rounding outgrows that tolerance (one ulp is 7e-12 at
+// x = 32768): a roll to a contact a few ulps ahead then lands where it started, give or
+// take an ulp in y, and counts as a move, so the disk rolls there forever. Contacts closer
+// than this many ulps of the box's largest coordinate are touching too.
+constexpr double kStayUlps = 16;
 // Consecutive moves that leave a disk where it was, with none of its supports moving in
 // between, before the engine calls it a cycle.
 constexpr std::uint16_t kMaxStalledMoves = 1000;
@@ -28,6 +34,16 @@ constexpr std::uint32_t kMovesBetweenStopChecks = 1 << 16;
 
 // KeepTouching: a contact survives a move while the gap stays below this * radius.
 constexpr double kTouchTolerance = 1e-9;
+
+// True when the roll starts inside the circle it crosses and heads deeper in: its entry
+// lies behind, its exit further ahead than that. Only rounding puts a disk inside, touching
+// the other; near a grazing crossing it moves the entry by up to the square root of the
+// coordinates' rounding (1e-6 rad at x = 1e5), more than any angle tolerance, and the roll
+// would run on into the other disk. A roll nearer the exit is leaving the other disk.
+bool inside_already(const RollPath& path, const RollCrossings& c) {
+  const double behind = -path.angle_to(c.entry_x, c.entry_y);
+  return behind > kAngleTolerance && path.angle_to(c.exit_x, c.exit_y) > behind;
+}
 
 // Most disks of radius >= r_min that can touch one disk of radius r_max, plus one.
 std::size_t touch_capacity(double r_min, double r_max) {
@@ -54,6 +70,7 @@ void Deposit::reset() {
   capacity_ = n == 0 ? 1 : touch_capacity(r_min, max_radius_);
   held_.assign(n * capacity_, -1);
   cached_divisor_ = -1;
+  position_ulp_ = std::numeric_limits<double>::epsilon() * std::max(p_.width, p_.top());
   if (n == 0) return;
 
   // Cells just below smallest diameter / sqrt 2 hold at most one disk centre.
@@ -84,6 +101,10 @@ void Deposit::reset() {
     }
     set_unstable(i, !p_.stable(k));
   }
+}
+
+double Deposit::stay_distance(double radius) const {
+  return std::max(kStayTolerance * radius, kStayUlps * position_ulp_);
 }
 
 const std::pair<double, double>& Deposit::roll_rotation(double divisor) {
@@ -142,7 +163,7 @@ Move Deposit::fall(std::int32_t i) {
     clearance_[k] = 0.0;
   }
   // Landing on the base is final, so it is always placed exactly.
-  const bool moved = (drop > kStayTolerance * ri || hit == kBase) && place(i, xi, y_new);
+  const bool moved = (drop > stay_distance(ri) || hit == kBase) && place(i, xi, y_new);
   if (moved) release_held(i);
   note_zero_move(i, moved);
 
@@ -206,12 +227,20 @@ Move Deposit::roll(std::int32_t i) {
     }
   };
   double ox, oy;
+  auto consider_wall = [&](PartnerCode wall, double x_contact) {
+    // Against it already: rounding may put the contact behind the start, by up to the
+    // square root of x's rounding when the roll meets the wall at a grazing angle.
+    if (std::abs(xi - x_contact) <= stay_distance(ri)) {
+      consider(wall, path.ux, path.uy);
+      return;
+    }
+    roll_reach_x(path, x_contact, ox, oy);
+    consider(wall, ox, oy);
+  };
   if (path.h > 0.0 && xe > p_.width - ri) {
-    roll_reach_x(path, p_.width - ri, ox, oy);
-    consider(kRightWall, ox, oy);
+    consider_wall(kRightWall, p_.width - ri);
   } else if (path.h < 0.0 && xe < ri) {
-    roll_reach_x(path, ri, ox, oy);
-    consider(kLeftWall, ox, oy);
+    consider_wall(kLeftWall, ri);
   }
   if (ye < ri) {
     roll_reach_y(path, ri, ox, oy);
@@ -225,7 +254,13 @@ Move Deposit::roll(std::int32_t i) {
                       const double Rj = ri + p_.r[m], dx = p_.x[m] - xi, dy = p_.y[m] - yi;
                       const double limit = Rj + chord;
                       if (dx * dx + dy * dy >= limit * limit) return;
-                      if (roll_entry(path, p_.x[m], p_.y[m], Rj, ox, oy)) consider(j, ox, oy);
+                      RollCrossings c;
+                      if (!roll_crossings(path, p_.x[m], p_.y[m], Rj, c)) return;
+                      if (inside_already(path, c)) {
+                        consider(j, path.ux, path.uy);
+                      } else {
+                        consider(j, c.entry_x, c.entry_y);
+                      }
                     });
 
   // Rolling off and landing on the base end in exact positions, so they are always made:
@@ -234,7 +269,7 @@ Move Deposit::roll(std::int32_t i) {
   const double x_new = rolled_off ? xs + path.h * R : xs + R * qx;
   const double y_new = rolled_off ? ys : ys + R * qy;
   const bool exact_end = rolled_off || hit == kBase;
-  const bool moved = (best > kStayTolerance || exact_end) && place(i, x_new, y_new);
+  const bool moved = (best * R > stay_distance(ri) || exact_end) && place(i, x_new, y_new);
   if (moved) {
     release_held(i);
     forget_clearance_above(i);

@@ -103,6 +103,9 @@ class Deposit {
   // After disk i rolled: the clearances cached for the disks above it may be too long.
   void forget_clearance_above(std::int32_t i);
   const std::pair<double, double>& roll_rotation(double divisor);
+  // A move shorter than this leaves disk of this radius where it is: the contact ahead
+  // touches it already.
+  double stay_distance(double radius) const;
 
   DiskPacking& p_;
   DepositOptions options_;
@@ -120,7 +123,8 @@ class Deposit {
   // rolls can bring an obstacle closer (falls are vertical and downward), and every
   // roll resets the clearances above it, so a fall within the clearance needs no search.
   std::vector<double> clearance_;
-  double lookahead_ = 0;  // how far below a fall's search reaches
+  double lookahead_ = 0;     // how far below a fall's search reaches
+  double position_ulp_ = 0;  // rounding of the largest coordinate in the box
   double cached_divisor_ = -1;
   std::pair<double, double> cached_rotation_{1.0, 0.0};  // cos, sin of the roll angle
   DepositStats stats_;

@@ -324,6 +324,23 @@ TEST(Disks2dTapDeposition, EndsWithEveryDiskStableAndNoOverlap) {
   }
 }
 
+// Far from the origin one ulp of x outgrows the engine's contact tolerances (7e-12 at
+// x = 32768). Rolls to a contact a few ulps ahead then went nowhere forever (a wide bed
+// never finished), and grazing contacts were missed (a bed 10^5 wide overlapped).
+TEST(Disks2dTapDeposition, FarFromTheOriginEndsStableWithoutOverlap) {
+  for (const double offset : {4e4, 1.5e5}) {
+    dt::DiskPacking p = random_bed(1000, 30.0, 0.0, 11);
+    for (double& x : p.x) x += offset;
+    p.width += offset;
+    dt::Deposit d(p, {.delta = 0.01});
+    RandomStream rng(12);
+    d.run(rng);
+    SCOPED_TRACE(testing::Message() << "offset " << offset);
+    ASSERT_TRUE(d.done());
+    EXPECT_NO_THROW(p.check("test", 1e-9));
+  }
+}
+
 TEST(Disks2dTapShake, DilationScalesHeightsAndMonteCarloNeverOverlaps) {
   dt::DiskPacking p = random_bed(300, 15.0, 0.2, 8);
   dt::Deposit d(p, {.delta = 0.05});
