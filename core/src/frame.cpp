@@ -8,6 +8,7 @@
 
 #include "granpipe/container_check.hpp"
 #include "granpipe/errors.hpp"
+#include "granpipe/format_number.hpp"
 
 namespace granpipe {
 
@@ -125,6 +126,15 @@ void check_particles(const Frame& f, const std::string& where) {
     if (!(r[k] > 0.0) || !std::isfinite(r[k])) refuse(k, "a finite radius > 0", r[k], "");
     if (r[k] < kSmallestRadius || r[k] > kLargestLength)
       refuse(k, "a radius from 1e-100 to 1e+100", r[k], "");
+    // Wider than a periodic box, a particle overlaps its own image: no measure holds.
+    for (int a = 0; a < f.dim; ++a) {
+      if (f.container.periodic(a) && 2.0 * r[k] > f.container.length(a)) {
+        refuse(k,
+               std::string("a diameter of at most the periodic box's length along ") + "xyz"[a] +
+                   ", " + format_number(f.container.length(a)),
+               2.0 * r[k], " (it would overlap its own image)");
+      }
+    }
   }
 }
 

@@ -99,12 +99,20 @@ std::string StatedContainer::placed_by(Wall w, const std::string& file_sides) co
 }
 
 std::optional<StatedContainer::Outside> StatedContainer::first_outside(
-    const Frame& frame, const std::string& file_sides) const {
-  const auto out = first_particle_outside(frame, kStatedWallTolerance);
+    const Frame& frame, const Container& file_box, const std::string& file_sides) const {
+  auto atom = [&](Eigen::Index k) { return "atom " + std::to_string(frame.id()[k]) + " "; };
+  if (const auto out = first_particle_outside(frame, kStatedWallTolerance)) {
+    return Outside{out->particle, atom(out->particle) +
+                                      describe(frame, *out, kStatedWallTolerance) + " (" +
+                                      placed_by(out->wall, file_sides) + ")"};
+  }
+  Frame in_file_box = frame;
+  in_file_box.container = file_box;
+  const auto out = first_particle_outside(in_file_box, kStatedWallTolerance);
   if (!out) return {};
-  return Outside{out->particle, "atom " + std::to_string(frame.id()[out->particle]) + " " +
-                                    describe(frame, *out, kStatedWallTolerance) + " (" +
-                                    placed_by(out->wall, file_sides) + ")"};
+  return Outside{out->particle, atom(out->particle) +
+                                    describe(in_file_box, *out, kStatedWallTolerance) + " (" +
+                                    file_sides + ")"};
 }
 
 }  // namespace granpipe

@@ -95,7 +95,9 @@ GlobalFractions global_fractions(const Frame& frame, const StereologySettings& s
   g.height_c = quantile_height(frame, s.fraction);
   const double layer = s.perturbed_top * r, h = g.height_c;
   if (h > layer) {
-    const double corrected = factor * fraction_between(frame, cross, 0.0, layer);
+    // An empty layer (perturbed_top 0: no correction) has no fraction of its own.
+    const double corrected =
+        layer > 0.0 ? factor * fraction_between(frame, cross, 0.0, layer) : 0.0;
     // A layer more than full is no packing (a factor of 1e300 gave phi_c 1.9e298, exit 0).
     if (corrected > 1.0) {
       throw InputError(

@@ -1,8 +1,10 @@
 #include "compaction_analyzer.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "granpipe/errors.hpp"
 
@@ -41,6 +43,16 @@ void check_tap_follows(const std::string& where, double tap, const Series& serie
   throw InputError(m.str());
 }
 
+// A t_w given twice would enter the ageing table and its fit twice, shrinking the error bars.
+void refuse_repeated(std::vector<std::int64_t> taps, const std::string& param) {
+  std::sort(taps.begin(), taps.end());
+  const auto twice = std::adjacent_find(taps.begin(), taps.end());
+  if (twice != taps.end()) {
+    throw InputError(param + ": expected distinct waiting times, got " + std::to_string(*twice) +
+                     " more than once");
+  }
+}
+
 }  // namespace
 
 CompactionAnalyzer::CompactionAnalyzer(const PluginContext& ctx)
@@ -55,6 +67,7 @@ CompactionAnalyzer::CompactionAnalyzer(const PluginContext& ctx)
   report_.fit_to = p.real("fit_to");
   report_.steady_from = p.real("steady_from");
   report_.waiting_times = p.integers("waiting_times");
+  refuse_repeated(report_.waiting_times, ctx.param("waiting_times"));
   if (report_.fit_to >= 0.0 && report_.fit_to <= report_.fit_from) {
     std::ostringstream m;
     m << ctx.param("fit_to") << ": expected a tap after fit_from (" << report_.fit_from

@@ -27,8 +27,9 @@ LammpsDataSource::LammpsDataSource(const PluginContext& ctx) {
   if (frame_.size() == 0) throw InputError(file + ": expected atoms, got none");
   frame_.check(file);
   // Without a cylinder or side walls, the x and y sides are the file's box, open.
-  frame_.container = stated.place(frame_.container, file);
-  if (const auto out = stated.first_outside(frame_, "the data file's box")) {
+  const Container file_box = frame_.container;
+  frame_.container = stated.place(file_box, file);
+  if (const auto out = stated.first_outside(frame_, file_box, "the data file's box")) {
     throw InputError(file + ": " + out->message);
   }
   refuse_deep_overlap(frame_, ctx.params.real("max_overlap"), ctx.param("max_overlap"), "", file);

@@ -216,7 +216,7 @@ Frame LammpsDumpSource::frame_of(const SnapshotHeader& h) {
   f.time = h.time ? *h.time : dt_ > 0 ? dt_ * static_cast<double>(f.step) : std::nan("");
   f.container = stated_.place(h.box.container, h.place.where(h.box.line));
   const std::string box = "the dump's BOX BOUNDS, line " + std::to_string(h.box.line);
-  if (const auto out = stated_.first_outside(f, box)) {
+  if (const auto out = stated_.first_outside(f, h.box.container, box)) {
     throw InputError(h.place.at(atoms.lines[static_cast<std::size_t>(out->particle)]) +
                      out->message);
   }

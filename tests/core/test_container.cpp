@@ -106,3 +106,20 @@ TEST(ContainerCheck, FramesRefuseContactsWithMissingWallsAndMotionThatIsNoNumber
   EXPECT_EQ(test::input_error_of([&] { f.check("f"); }),
             "f: particle 0 (id 0): expected a finite velocity, got nan in component 1");
 }
+
+// With two or more particles the neighbour search refused such a box; a lone particle met
+// no such search and a periodic box 0.1 wide gave a packing fraction of 52.
+TEST(ContainerCheck, FramesRefuseAParticleWiderThanItsPeriodicBox) {
+  Frame f;
+  f.resize(1, 3);
+  f.position() << 0, 0, 0.5;
+  f.radius().setConstant(0.5);
+  f.container =
+      Container::periodic_box(3, Eigen::Vector3d(-0.5, -0.05, 0), Eigen::Vector3d(0.5, 0.05, 10));
+  EXPECT_EQ(test::input_error_of([&] { f.check("f"); }),
+            "f: particle 0 (id 0): expected a diameter of at most the periodic box's length along "
+            "y, 0.1, got 1 (it would overlap its own image)");
+  f.container.lo[1] = -0.5;  // touching its own image is allowed
+  f.container.hi[1] = 0.5;
+  EXPECT_NO_THROW(f.check("f"));
+}

@@ -85,10 +85,31 @@ TEST(StatedContainer, TheFirstParticleOutsideNamesThePlacingParameter) {
   f.position() << 2, 2, 1, 0.3, 2, 1;  // the second through the wall x = 0
   f.id() << 5, 9;
   f.container = stated.place(file_box(false, false), "x");
-  const auto out = stated.first_outside(f, "the file's box");
+  const auto out = stated.first_outside(f, file_box(false, false), "the file's box");
   ASSERT_TRUE(out);
   EXPECT_EQ(out->particle, 1);
   EXPECT_EQ(out->message,
             "atom 9 at (0.3, 2, 1), radius 0.5: expected an overlap with the wall x_low (x = 0) "
             "of at most 0.025 (0.05 of its radius), got 0.2 (the container of params.side_walls)");
+}
+
+// The base and top replace the file's z sides, but a centre beyond them was lost to the
+// code that wrote the file (a z of 50 in a box to 8 was read as in the container to 100).
+TEST(StatedContainer, ACentreBeyondTheFilesOwnBoxIsOutside) {
+  auto harness = test::make_context(schema(), nlohmann::json::object());
+  const StatedContainer stated(*harness);
+  Frame f;
+  f.resize(2, 3);
+  f.radius().setConstant(0.5);
+  f.position() << 2, 2, 1, 2, 2, 50;
+  f.id() << 5, 9;
+  f.container = stated.place(file_box(false, false), "x");
+  const auto out = stated.first_outside(f, file_box(false, false), "the file's box");
+  ASSERT_TRUE(out);
+  EXPECT_EQ(out->particle, 1);
+  EXPECT_EQ(out->message,
+            "atom 9 at (2, 2, 50), radius 0.5: expected its centre inside the open side z_high (z "
+            "= 8), got it 42 beyond (the file's box)");
+  f.position()(1, 2) = 7.9;
+  EXPECT_FALSE(stated.first_outside(f, file_box(false, false), "the file's box"));
 }

@@ -251,6 +251,15 @@ TEST(Compaction, ANegativeWaitingTimeIsRefused) {
       "test: params.waiting_times: expected a list of integers >= 0, got [10,-1]");
 }
 
+// A t_w given twice entered the ageing table and its fit twice.
+TEST(Compaction, ARepeatedWaitingTimeIsRefused) {
+  EXPECT_EQ(granpipe::test::input_error_of([] {
+              const auto ctx = test::make_context("compaction", {{"waiting_times", {1, 10, 1}}});
+              CompactionAnalyzer analyzer(*ctx);
+            }),
+            "params.waiting_times: expected distinct waiting times, got 1 more than once");
+}
+
 TEST(Compaction, AFrameWithoutATapIsRefused) {
   EXPECT_EQ(granpipe::test::input_error_of([] {
               measure_frame(cubic_stack(-1), StereologySettings{}, "compaction: frame 3 (step 0)");

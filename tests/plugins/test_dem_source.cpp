@@ -197,6 +197,15 @@ TEST(DemSource, ADurationOfMoreStepsThanCanBeCountedIsRefusedByName) {
   fs::remove(file);
 }
 
+// A duration shorter than one step ran a whole step (t = 2e-4 for 1e-6), exit 0 and no
+// word.
+TEST(DemSource, ADurationShorterThanAStepIsRefused) {
+  const fs::path file = start_file();
+  EXPECT_EQ(refusal({{"initial_file", file.string()}, {"duration", 1e-6}}),
+            "params.duration: expected at least one time step (dt 0.0002), got 1e-06");
+  fs::remove(file);
+}
+
 // Two spheres started 0.1 into each other (20 % of their radius, within the start's
 // max_overlap) without gravity: the spring releases k 0.1^2 / 2 = 1000 where the scene's
 // speeds (nothing moves, nothing falls) allow 1e-4. That is the start's energy, not a

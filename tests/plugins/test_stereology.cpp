@@ -150,6 +150,14 @@ TEST(StereologyAnalyzer, ACorrectionThatOverfillsTheBottomLayerIsRefused) {
             "fraction at most 1, got 2, which makes it 1.0472");
 }
 
+// perturbed_top 0 (no corrected layer) gave phi_c NaN, blamed on a zone "not above" it.
+// The cubic crystal's fraction up to height_c (17 R) is then its own, pi/6.
+TEST(StereologyAnalyzer, NoPerturbedLayerLeavesPhiCUncorrected) {
+  StereologySettings s;
+  s.perturbed_top = 0.0;
+  EXPECT_NEAR(global_fractions(cubic_layers(8, 10), s).phi_c, kPi / 6.0, 1e-13);
+}
+
 TEST(StereologyAnalyzer, ACylinderIsRefused) {
   const auto ctx = granpipe::test::make_context(schema());
   StereologyAnalyzer a(*ctx);
