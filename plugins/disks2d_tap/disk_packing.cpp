@@ -149,6 +149,19 @@ DiskPacking DiskPacking::from_frame(const Frame& frame, const std::string& where
     s << where << ": expected a box whose left wall is at x = 0, got " << frame.container.lo.x();
     throw InputError(s.str());
   }
+  // The engine's box has side walls and a base: a periodic frame was read as walled.
+  const auto& sides = frame.container.boundary;
+  for (const auto& [side, name] :
+       {std::pair{sides[0][0], "x_low"}, {sides[0][1], "x_high"}, {sides[1][0], "y_low"}}) {
+    if (side != Boundary::Wall || frame.container.shape != ContainerShape::Box) {
+      throw InputError(where +
+                       ": expected a box with walls at x_low, x_high and y_low (the base), got " +
+                       std::string(frame.container.shape != ContainerShape::Box
+                                       ? to_string(frame.container.shape)
+                                       : to_string(side)) +
+                       " at " + name);
+    }
+  }
   DiskPacking p;
   p.width = frame.container.hi.x();
   for (Eigen::Index k = 0; k < frame.size(); ++k) {

@@ -19,6 +19,8 @@ enum class Protocol : std::uint8_t { Constant, Annealed };
 ChoiceNames<Protocol> choice_names(Protocol) {
   return {{"constant", Protocol::Constant}, {"annealed", Protocol::Annealed}};
 }
+// A start from a file takes its disks from it: the random placement's settings do nothing.
+bool placed_at_random(const Params& p) { return p.string("initial_file").empty(); }
 }  // namespace
 
 Schema schema() {
@@ -34,13 +36,15 @@ Schema schema() {
       .range(1e-50, 1e50)
       .unit("length");
   s.real("radius_spread", 0.0, "polydispersity: radii uniform in radius * [1 - spread, 1 + spread]")
-      .range(0.0, 0.5);
+      .range(0.0, 0.5)
+      .only_where("initial_file \"\"", placed_at_random);
   // Random sequential placement jams near 0.547, and the centres of a narrow box reach
   // less than its width: 0.5 is out of reach at the paper's width.
   s.real("initial_fraction", 0.3,
          "area fraction of the random initial placement (sets the height it fills)")
       .min(0.0, true)
-      .max(0.45);
+      .max(0.45)
+      .only_where("initial_file \"\"", placed_at_random);
   s.path("initial_file", std::string(""),
          "start from a frame of this H5MD file (a 2D granpipe frames.h5) instead of a random "
          "placement: its disks are deposited, then tapped; N and width must match it, "

@@ -59,16 +59,22 @@ Schema schema() {
          "dump local of the pair contacts at the atom dump's timesteps (LIGGGHTS compute "
          "pair/gran/local, or LAMMPS compute property/local patom1 patom2 and pair/local); "
          "\"\": no contacts");
+  const auto with_contacts = [](const Params& p) {
+    return !p.string("pair_file").empty() || !p.string("wall_file").empty();
+  };
   s.choice<ContactFormat>("pair_format", ContactFormat::Liggghts,
-                          "the code that wrote pair_file and wall_file");
+                          "the code that wrote pair_file and wall_file")
+      .only_where("a pair_file or wall_file", with_contacts);
   s.string("pair_columns", "",
            "the keywords of the computes that wrote pair_file, as in the input script: "
            "LIGGGHTS \"pos id force force_normal contactArea delta\" (any order), LAMMPS "
-           "one per column \"patom1 patom2 dist fx fy fz p1 p2 p3\"");
+           "one per column \"patom1 patom2 dist fx fy fz p1 p2 p3\"")
+      .only_where("a pair_file", [](const Params& p) { return !p.string("pair_file").empty(); });
   s.path("wall_file", std::string(""),
          "dump local of LIGGGHTS compute wall/gran/local at the atom dump's timesteps (\"\": "
          "none); each contact goes to the stated wall nearest to it");
-  s.string("wall_columns", "", "the keywords of compute wall/gran/local, as pair_columns");
+  s.string("wall_columns", "", "the keywords of compute wall/gran/local, as pair_columns")
+      .only_where("a wall_file", [](const Params& p) { return !p.string("wall_file").empty(); });
   return s;
 }
 

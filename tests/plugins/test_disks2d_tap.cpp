@@ -566,6 +566,11 @@ TEST(Disks2dTapPacking, FromFrameRejectsWhatIsNotABedOfDisks) {
   Frame shifted = f;
   shifted.container.lo.x() = -1.0;
   EXPECT_THROW(dt::DiskPacking::from_frame(shifted, "f"), InputError);
+  Frame periodic = f;  // was read as walled, exit 0
+  periodic.container.boundary[0] = {granpipe::Boundary::Periodic, granpipe::Boundary::Periodic};
+  EXPECT_EQ(granpipe::test::input_error_of([&] { dt::DiskPacking::from_frame(periodic, "f"); }),
+            "f: expected a box with walls at x_low, x_high and y_low (the base), got periodic at "
+            "x_low");
   Frame overlapping = f;
   overlapping.position().row(1) = overlapping.position().row(0);
   EXPECT_THROW(dt::DiskPacking::from_frame(overlapping, "f"), InputError);
@@ -899,5 +904,16 @@ TEST(Disks2dTapSource, StartsFromAFrameOfASavedFile) {
   EXPECT_THROW(from_file({{"initial_frame", std::int64_t{2}}}), InputError);  // the file holds 2
   EXPECT_THROW(from_file({{"N", std::int64_t{81}}}), InputError);
   EXPECT_THROW(from_file({{"width", 9.5}}), InputError);
+  // The random placement's settings did nothing here, without a word.
+  EXPECT_EQ(granpipe::test::input_error_of([&] {
+              from_file({{"radius_spread", 0.3}});
+            }),
+            "test: params.radius_spread: expected its default 0 (it acts only with initial_file "
+            "\"\"), got 0.3");
+  EXPECT_EQ(granpipe::test::input_error_of([&] {
+              from_file({{"initial_fraction", 0.2}});
+            }),
+            "test: params.initial_fraction: expected its default 0.3 (it acts only with "
+            "initial_file \"\"), got 0.2");
   fs::remove_all(dir);
 }

@@ -243,6 +243,20 @@ TEST_F(LammpsDumpContacts, BadPairFilesAreRefusedWithTheirLine) {
 // A pair listed twice, in either order (LAMMPS lists a pair across two processors twice
 // with newton_pair off), was read as two contacts: coordination, networks and the force
 // PDF counted it twice, exit 0.
+// Without the contact files, their format and columns did nothing, without a word.
+TEST_F(LammpsDumpContacts, ContactSettingsWithoutTheirFileAreRefused) {
+  const std::string atoms = write(atom_snapshot(0), "atoms.dump");
+  EXPECT_EQ(refusal({{"file", atoms}, {"pair_columns", "id force_normal"}}),
+            "test: params.pair_columns: expected its default \"\" (it acts only with a "
+            "pair_file), got \"id force_normal\"");
+  EXPECT_EQ(refusal({{"file", atoms}, {"wall_columns", "id force_normal"}}),
+            "test: params.wall_columns: expected its default \"\" (it acts only with a "
+            "wall_file), got \"id force_normal\"");
+  EXPECT_EQ(refusal({{"file", atoms}, {"pair_format", "lammps"}}),
+            "test: params.pair_format: expected its default \"liggghts\" (it acts only with a "
+            "pair_file or wall_file), got \"lammps\"");
+}
+
 TEST_F(LammpsDumpContacts, APairListedTwiceIsRefused) {
   const std::string second = pair_snapshot(100, "", 0);
   EXPECT_EQ(refusal(with_pairs(pair_snapshot(0, kPairs0 + "2 1 0 1.5 0 0 0.001\n", 3) + second)),
