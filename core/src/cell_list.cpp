@@ -21,14 +21,6 @@ constexpr double kMinRange = 1e-100, kMaxRange = 1e100;
 
 const char* axis_name(int a) { return a == 0 ? "x" : a == 1 ? "y" : "z"; }
 
-// `x` with as many digits as it takes to tell it from `other` (6 to 17).
-std::string number(double x, double other) {
-  for (int digits = 6;; ++digits) {
-    const std::string s = format_number(x, digits);
-    if (x == other || s != format_number(other, digits) || digits == 17) return s;
-  }
-}
-
 }  // namespace
 
 CellList::CellList(const Coordinates& position, const Container& container, int dim, double cutoff,
@@ -48,8 +40,9 @@ CellList::CellList(const Coordinates& position, const Container& container, int 
       length_[a] = container.length(a);
       if (!(length_[a] >= 2 * cutoff)) {
         throw InputError(at + "expected a periodic box of length at least " +
-                         number(2 * cutoff, length_[a]) + " (twice the contact range) along " +
-                         axis_name(a) + ", got " + number(length_[a], 2 * cutoff));
+                         format_apart(2 * cutoff, length_[a]) +
+                         " (twice the contact range) along " + axis_name(a) + ", got " +
+                         format_apart(length_[a], 2 * cutoff));
       }
     } else {
       // Non-periodic axes span the particles (they may leave an open top).

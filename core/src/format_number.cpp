@@ -10,4 +10,11 @@ std::string format_number(double x, int digits) {
   return buf;
 }
 
+std::string format_apart(double x, double other) {
+  for (int digits = 6;; ++digits) {
+    const std::string s = format_number(x, digits);
+    if (x == other || s != format_number(other, digits) || digits == 17) return s;
+  }
+}
+
 }  // namespace granpipe

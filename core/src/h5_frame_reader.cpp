@@ -587,10 +587,12 @@ void place_walls(Container& c, int a, const Frame& f, const std::string& file,
       return;
     }
   }
+  // Digits enough to tell the centres from the nearer placement's bounds.
+  const double bottom = lo < 0.0 ? -0.5 * length : 0.0, top = lo < 0.0 ? 0.5 * length : length;
   throw h5::Error(dataset + ": frame " + std::to_string(k) +
-                  ": expected particle centres inside a box of edge " + std::to_string(length) +
-                  " along " + "xyz"[a] + " (at [0, L] or [-L/2, L/2]), got " + std::to_string(lo) +
-                  " to " + std::to_string(hi));
+                  ": expected particle centres inside a box of edge " + format_number(length) +
+                  " along " + "xyz"[a] + " (at [0, L] or [-L/2, L/2]), got " +
+                  format_apart(lo, bottom) + " to " + format_apart(hi, top));
 }
 }  // namespace
 

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "granpipe/errors.hpp"
+#include "granpipe/format_number.hpp"
 #include "granpipe/start_frame.hpp"
 #include "placement.hpp"
 
@@ -180,9 +181,9 @@ DiskPacking random_placement(const PluginContext& ctx, const Seeds& seeds) {
   if (2.0 * r_max > width) {
     std::ostringstream s;
     // The box is what a --set usually changes; the radius keeps the paper's value.
-    s << ctx.param("width") << ": expected at least the largest disk diameter " << 2.0 * r_max
-      << " (radius " << p.real("radius") << ", radius_spread " << p.real("radius_spread")
-      << "), got " << width;
+    s << ctx.param("width") << ": expected at least the largest disk diameter "
+      << format_apart(2.0 * r_max, width) << " (radius " << p.real("radius") << ", radius_spread "
+      << p.real("radius_spread") << "), got " << format_apart(width, 2.0 * r_max);
     throw InputError(s.str());
   }
   // The simulation's grids have a cell per disk across the width: bound them before

@@ -56,6 +56,8 @@ struct AtomsSection {
   long count = -1;        // from the header
   long count_line = 0;    // the header line giving it
   long section_line = 0;  // the "Atoms" line
+  long types = 0;         // from the header's "N atom types"; 0: not given
+  long types_line = 0;
   Eigen::Vector3d lo = Eigen::Vector3d::Zero(), hi = Eigen::Vector3d::Zero();  // the box
   std::array<long, 3> box_line{0, 0, 0};  // of "lo hi xlo xhi" and so on; 0: none yet
 };
@@ -132,6 +134,16 @@ AtomsSection find_atoms_section(Lines& lines, const std::string& where) {
       }
       a.count_line = lines.number();
     }
+    if (header && w.size() == 3 && w[1] == "atom" && w[2] == "types") {
+      const auto types = whole_number(w[0]);
+      if (!types || *types < 1) {
+        throw InputError(where + ": line " + std::to_string(lines.number()) +
+                         ": expected \"N atom types\" with N a whole number >= 1, got " +
+                         quoted(line));
+      }
+      a.types = static_cast<long>(*types);
+      a.types_line = lines.number();
+    }
     if (w.empty() || w[0] != "Atoms") continue;
     a.section_line = lines.number();
     const std::size_t hash = line.find('#');
@@ -197,9 +209,20 @@ Atom parse_atom(const std::string& line, long number, const std::string& where) 
   return a;
 }
 
+// LAMMPS refuses a type beyond the header's count; read, it became a species of its own.
+void refuse_undeclared_type(const Atom& atom, const AtomsSection& section, long number,
+                            const std::string& where) {
+  if (section.types == 0 || atom.type <= section.types) return;
+  throw InputError(where + ": line " + std::to_string(number) +
+                   ": expected an atom type from 1 to " + std::to_string(section.types) +
+                   " (the header's \"atom types\", line " + std::to_string(section.types_line) +
+                   "), got " + std::to_string(atom.type));
+}
+
 // The Atoms section's lines, up to the next section or the end of the file; each id once.
 // `next_section` gets the line that ended it ("" at the end of the file).
-std::vector<Atom> read_section(Lines& lines, const std::string& where, std::string& next_section) {
+std::vector<Atom> read_section(Lines& lines, const AtomsSection& section, const std::string& where,
+                               std::string& next_section) {
   std::vector<Atom> out;
   std::map<std::int64_t, long> line_of_id;
   std::string line;
@@ -211,6 +234,7 @@ std::vector<Atom> read_section(Lines& lines, const std::string& where, std::stri
     }
     if (words(before_comment(line)).empty()) continue;
     out.push_back(parse_atom(line, lines.number(), where));
+    refuse_undeclared_type(out.back(), section, lines.number(), where);
     const auto [seen, fresh] = line_of_id.emplace(out.back().id, lines.number());
     if (!fresh) {
       throw InputError(where + ": line " + std::to_string(lines.number()) +
@@ -249,7 +273,7 @@ Frame read_atoms(std::istream& in, const std::string& where) {
   Lines lines(in);
   const AtomsSection section = find_atoms_section(lines, where);
   std::string next_section;
-  std::vector<Atom> list = read_section(lines, where, next_section);
+  std::vector<Atom> list = read_section(lines, section, where, next_section);
   if (!next_section.empty()) refuse_second_atoms_section(lines, next_section, section, where);
   check_count(list, section, where);
   check_box(section, where);

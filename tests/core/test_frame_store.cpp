@@ -618,6 +618,33 @@ TEST_F(FrameStore, NanPositionInAWalledBoxIsNamedByTheFrameCheck) {
   }
 }
 
+// A centre of 1e300 was printed with %f, a number of 300 digits; one just past the edge
+// as the edge itself ("box of edge 10 ..., got 0.5 to 10").
+TEST_F(FrameStore, ACentreOutsideTheBoxIsPrintedReadably) {
+  for (const double z : {1e300, 10.000001}) {
+    const fs::path p = file("outside.h5");
+    {
+      Id f(H5Fcreate(p.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT));
+      Id particles(make_group(f, "particles"));
+      Id all(make_group(particles, "all"));
+      Id box(make_group(all, "box"));
+      put_string_attribute(box, "boundary", {"none", "none", "none"});
+      const double edges[3] = {10.0, 10.0, 10.0};
+      put_dataset(box, "edges", H5T_NATIVE_DOUBLE, {3}, edges);
+      Id position(make_group(all, "position"));
+      const double x[1][2][3] = {{{2.0, 2.0, 0.5}, {5.0, 5.0, z}}};
+      put_dataset(position, "value", H5T_NATIVE_DOUBLE, {1, 2, 3}, x);
+      const std::int64_t step = 0;
+      put_dataset(position, "step", H5T_NATIVE_INT64, {1}, &step);
+    }
+    EXPECT_EQ(test::input_error_of([&] { FrameReader(p).read(0); }),
+              p.string() +
+                  ": /particles/all/box/edges: frame 0: expected particle centres inside a box "
+                  "of edge 10 along z (at [0, L] or [-L/2, L/2]), got 0.5 to " +
+                  (z > 11 ? "1e+300" : "10.000001"));
+  }
+}
+
 TEST_F(FrameStore, GroupChoosesAmongSeveralParticlesGroups) {
   const fs::path p = file("two_groups.h5");
   write_foreign(p, true);

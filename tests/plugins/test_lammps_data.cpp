@@ -160,6 +160,17 @@ TEST(LammpsData, IdsAndTypesAreWholeNumbersFromOne) {
   }
 }
 
+// LAMMPS refuses a type beyond the header's "atom types"; read, it was a species of its own.
+TEST(LammpsData, ATypeBeyondTheHeadersCountIsRefused) {
+  const std::string head = "title\n2 atoms\n1 atom types\nAtoms # sphere\n1 1 1 1 0 0 0\n";
+  EXPECT_EQ(refusal(head + "2 3 1 1 2 0 0\n"),
+            "x.data: line 6: expected an atom type from 1 to 1 (the header's \"atom types\", "
+            "line 3), got 3");
+  EXPECT_EQ(refusal("title\n1 atoms\n0 atom types\nAtoms # sphere\n1 1 1 1 0 0 0\n"),
+            "x.data: line 3: expected \"N atom types\" with N a whole number >= 1, got \"0 atom "
+            "types\"");
+}
+
 // Two data files joined: the atoms of the second Atoms section were left out, exit 0.
 TEST(LammpsData, ASecondAtomsSectionIsRefused) {
   EXPECT_EQ(refusal("title\n1 atoms\nAtoms # sphere\n1 1 1 1 0 0 0\n\nVelocities\n\n1 0 0 0 0 0 "

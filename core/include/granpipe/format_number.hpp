@@ -8,4 +8,8 @@ namespace granpipe {
 // "nan", "inf" and "-inf" as such.
 std::string format_number(double x, int digits = 6);
 
+// `x` with as many digits (6 to 17) as it takes to tell it from `other`: in a message that
+// compares the two, "expected at most 10, got 10" says nothing.
+std::string format_apart(double x, double other);
+
 }  // namespace granpipe
