@@ -256,6 +256,7 @@ DemSource::DemSource(const PluginContext& ctx) : log_(ctx.log), progress_(ctx.pr
   const Scene scene{model, walls, start.state, settings.law};
   check_gravity(ctx, scene, settings.gravity);
   check_drive(ctx, scene, drive, settings.dt);
+  check_damping(ctx, scene, settings.background_damping, settings.air_damping, settings.dt);
   const double speed = impact_speed(start, drive, settings);
   check_dt(ctx, smallest_contact_time(model, walls, start.state.radius, start.state.species,
                                       settings.law, speed));

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <utility>
@@ -122,6 +123,24 @@ void check_gravity(const PluginContext& ctx, const Scene& scene, const Eigen::Ve
   const double g_max = g * std::pow(kMaxOverlapFraction / d.fraction, exponent);
   throw InputError(ctx.param("gravity") + ": |g| = " + format_number(g, 3) + " would press " +
                    described(d, "resting on") + ": expected |g| <= " + format_number(g_max, 3));
+}
+
+void check_damping(const PluginContext& ctx, const Scene& scene, double background, double air,
+                   double dt) {
+  const double b = background + air;
+  if (b == 0.0) return;
+  double lightest = std::numeric_limits<double>::infinity();
+  for (Eigen::Index i = 0; i < scene.start.radius.size(); ++i) {
+    lightest =
+        std::min(lightest, scene.model.sphere_mass(scene.start.species[i], scene.start.radius[i]));
+  }
+  if (b * dt <= lightest) return;
+  throw InputError(ctx.param(air > background ? "air_damping" : "background_damping") +
+                   ": expected a drag that takes more than a time step to stop the lightest "
+                   "sphere (mass " +
+                   format_number(lightest) +
+                   "): b + b_air at most m / dt = " + format_number(lightest / dt) + ", got " +
+                   format_number(b) + " (b dt / m = " + format_number(b * dt / lightest, 3) + ")");
 }
 
 }  // namespace granpipe::dem

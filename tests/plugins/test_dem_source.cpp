@@ -206,6 +206,19 @@ TEST(DemSource, ADurationShorterThanAStepIsRefused) {
   fs::remove(file);
 }
 
+// A drag that reversed the velocities every step blew the run up, and the message blamed
+// dt against the contacts and the initial overlaps, never the damping.
+TEST(DemSource, ADragFasterThanAStepIsRefusedByName) {
+  const fs::path file = start_file();
+  const std::string refused = refusal({{"initial_file", file.string()}, {"air_damping", 12000.0}});
+  EXPECT_EQ(refused.substr(0, refused.find(" (mass")),
+            "params.air_damping: expected a drag that takes more than a time step to stop the "
+            "lightest sphere");
+  EXPECT_NE(refused.find(", got 12000 (b dt / m = "), std::string::npos) << refused;
+  EXPECT_EQ(refusal({{"initial_file", file.string()}, {"background_damping", 1.0}}), "no refusal");
+  fs::remove(file);
+}
+
 // Two spheres started 0.1 into each other (20 % of their radius, within the start's
 // max_overlap) without gravity: the spring releases k 0.1^2 / 2 = 1000 where the scene's
 // speeds (nothing moves, nothing falls) allow 1e-4. That is the start's energy, not a
