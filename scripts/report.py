@@ -26,7 +26,8 @@ from run_manifest import note_written
 
 
 def refuse(message):
-    print(message, file=sys.stderr)
+    """One line, as granpipe's own refusals (the report is its subcommand), and exit 2."""
+    print(f"granpipe: {message}", file=sys.stderr)
     sys.exit(2)
 
 
@@ -238,8 +239,9 @@ def main(run):
     html_text = page(f"granpipe run {name}", body)
     target = os.path.join(run, "report.html")
     if os.path.lexists(target) and not is_our_page(target):
-        refuse(f"{target}: expected a report granpipe wrote, found another file; it is left as "
-               "it is (move it away to have the report)")
+        found = "a directory" if os.path.isdir(target) else "another file"
+        refuse(f"{target}: expected a report granpipe wrote, found {found}; it is left as it is "
+               "(move it away to have the report)")
     partial = f"{target}.{os.getpid()}.tmp"  # two reports of one run at once: one wins whole
     try:
         with open(partial, "w") as f:

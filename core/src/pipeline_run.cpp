@@ -465,7 +465,8 @@ RunSummary run_in_directory(const Pipeline::Impl& p, const RunOptions& options, 
     for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(worker);
     worker();
     for (auto& t : pool) t.join();
-    progress.finish();
+    progress.finish(std::none_of(errors.begin(), errors.end(),
+                                 [](const std::exception_ptr& e) { return e != nullptr; }));
     stream.close();
     for (auto& e : errors)
       if (e) std::rethrow_exception(e);

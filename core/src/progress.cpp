@@ -48,7 +48,7 @@ void Progress::advance(double units) {
   std::unique_lock lock(mutex_, std::try_to_lock);
   if (!lock.owns_lock()) return;  // someone else is printing: skip, never wait
   last_print_ns_ = now;
-  print(false);
+  print("");
 }
 
 void Progress::skip(double units) {
@@ -62,13 +62,14 @@ void Progress::set_status(std::string status) {
   status_ = std::move(status);
 }
 
-void Progress::finish() {
+void Progress::finish(bool completed) {
   if (!enabled_) return;
   std::lock_guard lock(mutex_);
-  print(true);
+  print(completed ? "done" : "stopped short");
 }
 
-void Progress::print(bool final_line) {
+void Progress::print(const char* final) {
+  const bool final_line = *final != '\0';
   const double elapsed =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   const double advanced = done_.load();
@@ -90,7 +91,7 @@ void Progress::print(bool final_line) {
     std::fprintf(stderr, "%s: %.0f/%.0f %s (%.1f%%), %.3g %s/s, elapsed %s, ETA %s%s\n",
                  label_.c_str(), done, total_, unit_.c_str(), 100 * fraction, rate, unit_.c_str(),
                  format_duration(elapsed).c_str(),
-                 final_line ? "done" : format_duration(eta).c_str(), status.c_str());
+                 final_line ? final : format_duration(eta).c_str(), status.c_str());
   }
   std::fflush(stderr);
 }

@@ -9,6 +9,8 @@ namespace {
 
 const char* axis_name(int a) { return a == 0 ? "x" : a == 1 ? "y" : "z"; }
 
+constexpr double kDefaultBase = 0.0, kDefaultTop = 100.0;
+
 }  // namespace
 
 void declare_stated_container(Schema& s) {
@@ -21,9 +23,10 @@ void declare_stated_container(Schema& s) {
   s.reals("side_walls", std::vector<double>{},
           "x_lo, x_hi, y_lo, y_hi of flat side walls ([]: none; not with a cylinder)")
       .unit("length");
-  s.real("base", 0.0, "height of the flat base (none where the file's box is periodic along z)")
+  s.real("base", kDefaultBase,
+         "height of the flat base (none where the file's box is periodic along z)")
       .unit("length");
-  s.real("top", 100.0,
+  s.real("top", kDefaultTop,
          "height of the container's open top (none where the file's box is periodic along z)")
       .unit("length");
 }
@@ -77,7 +80,17 @@ Container StatedContainer::place(const Container& file_box, const std::string& w
     c.cylinder_radius = cylinder_radius_;
     c.cylinder_center = cylinder_axis_;
   }
-  if (!c.periodic(2)) {
+  if (c.periodic(2)) {
+    // A base or top given for such a file bounded nothing, without a word.
+    const bool base_given = base_ != kDefaultBase;
+    if (base_given || top_ != kDefaultTop) {
+      throw InputError(where + ": " + (base_given ? base_param_ : top_param_) +
+                       ": expected its default " +
+                       format_number(base_given ? kDefaultBase : kDefaultTop) +
+                       " for a box periodic along z (it bounds nothing there), got " +
+                       format_number(base_given ? base_ : top_));
+    }
+  } else {
     c.lo[2] = base_;
     c.hi[2] = top_;
     c.boundary[2] = {Boundary::Wall, Boundary::Open};

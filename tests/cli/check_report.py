@@ -148,6 +148,16 @@ with tempfile.TemporaryDirectory() as work:
     check(r.returncode == 2 and "expected a report granpipe wrote, found another file" in r.stderr
           and kept == "my notes", f"a user's report.html: {r.returncode} {r.stderr!r} {kept!r}")
 
+    # A directory in its place was called "another file".
+    os.remove(os.path.join(sweep, "report.html"))
+    os.makedirs(os.path.join(sweep, "report.html"))
+    r = subprocess.run([exe, "report", sweep], capture_output=True, text=True)
+    check(r.returncode == 2 and r.stderr.startswith("granpipe: ") and
+          "expected a report granpipe wrote, found a directory" in r.stderr
+          and os.path.isdir(os.path.join(sweep, "report.html")),
+          f"a directory report.html: {r.returncode} {r.stderr!r}")
+    os.rmdir(os.path.join(sweep, "report.html"))
+
     empty = os.path.join(work, "empty")
     os.makedirs(empty)
     r = subprocess.run([exe, "report", empty], capture_output=True, text=True)

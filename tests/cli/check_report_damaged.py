@@ -325,7 +325,7 @@ with tempfile.TemporaryDirectory() as work:
         before = files(run_dir)
         r = report(run_dir)
         path = re.escape(os.path.join(run_dir, file[0] if file else "results.h5"))
-        if r.returncode != 2 or not re.fullmatch(f"{path}: {message}\n", r.stderr):
+        if r.returncode != 2 or not re.fullmatch(f"granpipe: {path}: {message}\n", r.stderr):
             failures.append(f"{name}: exit {r.returncode}, {r.stderr!r}")
         if files(run_dir) != before:  # the refusal writes nothing, its report.html stays
             failures.append(f"{name}: the run's files changed")

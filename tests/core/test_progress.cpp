@@ -19,6 +19,18 @@ TEST(Progress, PlainFinalLineWithCountAndRate) {
   EXPECT_EQ(p.done(), 4.0);
 }
 
+// An interrupted run's last line said "ETA done" at 0/2 taps.
+TEST(Progress, AnIncompleteRunsLastLineSaysSo) {
+  Progress p;
+  testing::internal::CaptureStderr();
+  p.start("cut", 4, "taps");
+  p.advance();
+  p.finish(false);
+  const std::string out = testing::internal::GetCapturedStderr();
+  EXPECT_NE(out.find("cut: 1/4 taps (25.0%)"), std::string::npos) << out;
+  EXPECT_NE(out.find("ETA stopped short\n"), std::string::npos) << out;
+}
+
 TEST(Progress, DisabledPrintsNothingButCounts) {
   Progress p;
   p.set_enabled(false);

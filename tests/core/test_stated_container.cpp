@@ -58,8 +58,10 @@ TEST(StatedContainer, StatedWallsReplaceTheFilesSides) {
   EXPECT_EQ(c.hi, Eigen::Vector3d(3.5, 4, 100));
   EXPECT_EQ(c.boundary[2][0], Boundary::Wall);
   EXPECT_EQ(c.boundary[2][1], Boundary::Open);
-  // A box periodic along z keeps its z sides: base and top bound nothing there.
-  const Container periodic_z = stated.place(file_box(false, true), "x");
+  // A box periodic along z keeps its z sides: base and top bound nothing there (and are
+  // refused when given: ABaseOrTopForAZPeriodicBoxIsRefused).
+  auto no_base = test::make_context(schema(), {{"cylinder_radius", 1.5}});
+  const Container periodic_z = StatedContainer(*no_base).place(file_box(false, true), "x");
   EXPECT_TRUE(periodic_z.periodic(2));
   EXPECT_EQ(periodic_z.hi[2], 8.0);
   EXPECT_THROW(
@@ -112,4 +114,14 @@ TEST(StatedContainer, ACentreBeyondTheFilesOwnBoxIsOutside) {
             "= 8), got it 42 beyond (the file's box)");
   f.position()(1, 2) = 7.9;
   EXPECT_FALSE(stated.first_outside(f, file_box(false, false), "the file's box"));
+}
+
+// A base or top given for a file periodic along z bounded nothing, exit 0.
+TEST(StatedContainer, ABaseOrTopForAZPeriodicBoxIsRefused) {
+  auto harness = test::make_context(schema(), {{"base", 3.0}});
+  const StatedContainer stated(*harness);
+  EXPECT_EQ(test::input_error_of([&] { stated.place(file_box(false, true), "x.dump: line 5"); }),
+            "x.dump: line 5: params.base: expected its default 0 for a box periodic along z (it "
+            "bounds nothing there), got 3");
+  EXPECT_NO_THROW(stated.place(file_box(false, false), "x"));
 }

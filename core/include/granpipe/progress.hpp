@@ -17,7 +17,9 @@ class Progress {
   // Work a run begins with already done (a run continued from a saved frame): shown as done
   // but left out of the rate, so that the ETA is that of what is left.
   void skip(double units);
-  void finish();
+  // The last line: "done" when the run completed (a source may end before its estimated
+  // work, as a relaxed DEM bed does), "stopped short" when it failed or was interrupted.
+  void finish(bool completed = true);
   // A line the bar shows after its own figures (a source's simulated time, say); kept
   // until replaced.
   void set_status(std::string status);
@@ -25,7 +27,8 @@ class Progress {
   double done() const { return done_.load(); }
 
  private:
-  void print(bool final_line);
+  // final: "" for a line during the run, else what the ETA's place says at the end.
+  void print(const char* final);
   std::string label_, unit_, status_;
   double total_ = 0;
   std::atomic<double> done_{0.0};
