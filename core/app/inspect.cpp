@@ -56,7 +56,12 @@ void inspect(const std::string& path, long max_rows) {
     const Frame f = reader.read(k);
     std::printf("%5ld %9lld %13.6g", k, static_cast<long long>(f.step), f.time);
     for (const Property& o : info.observables) std::printf(" %12s", observable_text(f, o).c_str());
-    std::printf(" %9lld\n", static_cast<long long>(f.contacts ? f.contacts->rows() : 0));
+    // A frame without a contact table has no count of contacts, which is not 0.
+    if (f.contacts) {
+      std::printf(" %9lld\n", static_cast<long long>(f.contacts->rows()));
+    } else {
+      std::printf(" %9s\n", "none");
+    }
   }
   if (rows < info.frames)
     std::cout << "... (" << info.frames - rows << " more; --rows N shows more)\n";

@@ -81,7 +81,9 @@ DistanceContacts find_contacts_by_distance(const Frame& frame, double tolerance,
   }
   const Eigen::Index n = frame.size();
   std::vector<Found> pairs, walls;
-  if (n >= 2) {
+  // A lone particle too: in a periodic box it may touch its own images, which the pair
+  // loop does not count, and the search refuses such a box (a z of 0 came out, exit 0).
+  if (n >= 1) {
     const double cutoff = 2.0 * frame.radius().maxCoeff() * (1.0 + tolerance);
     const CellList cells(frame.position(), frame.container, frame.dim, cutoff, where);
     cells.for_each_pair([&](int i, int j, const double*, double r2) {

@@ -1,12 +1,18 @@
 #include "h5md_source.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
 #include "granpipe/deepest_overlap.hpp"
+#include "granpipe/format_number.hpp"
 #include "granpipe/particles_outside.hpp"
 
 namespace granpipe::h5md {
+
+namespace {
+constexpr double kDefaultRadius = 0.5;
+}  // namespace
 
 Schema schema() {
   Schema s;
@@ -17,7 +23,8 @@ Schema schema() {
   declare_frame_selection(s);
   s.string("group", std::string(""),
            "particles group of the file (/particles/<group>); empty: \"all\" or the only one");
-  s.real("radius", 0.5, "radius of every particle when the file stores none (other tools' files)")
+  s.real("radius", kDefaultRadius,
+         "radius of every particle when the file stores none (other tools' files)")
       .range(1e-50, 1e50)
       .unit("length");
   s.real("max_overlap", 1e-6,
@@ -62,6 +69,17 @@ void warn_unfinished(const PluginContext& ctx, const RunParts& parts) {
   }
 }
 
+// A radius given for a file that stores its own did nothing, without a word.
+void refuse_unused_radius(const PluginContext& ctx, const FrameFileInfo& info) {
+  const double radius = ctx.params.real("radius");
+  const bool stored = std::any_of(info.columns.begin(), info.columns.end(),
+                                  [](const Property& p) { return p.name == "radius"; });
+  if (!stored || radius == kDefaultRadius) return;
+  throw InputError(ctx.param("radius") + ": expected its default " + format_number(kDefaultRadius) +
+                   " for a file that stores radii (" + info.path + "), got " +
+                   format_number(radius));
+}
+
 }  // namespace
 
 H5mdSource::H5mdSource(const PluginContext& ctx)
@@ -80,6 +98,7 @@ H5mdSource::H5mdSource(const PluginContext& ctx)
     throw InputError(ctx.param("file") + ": expected a file with frames, got none" + held);
   selection_ = select_frames(ctx, frames, held);
   warn_unfinished(ctx, parts_);
+  refuse_unused_radius(ctx, info);
   next_ = selection_.first;
   // The first frame is read and checked now, so that bad particles stop the pipeline at
   // validation, before anything runs.

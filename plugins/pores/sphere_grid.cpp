@@ -40,12 +40,12 @@ std::size_t SphereGrid::index(const std::array<int, 3>& c) const {
   return (static_cast<std::size_t>(c[2]) * n_[1] + c[1]) * n_[0] + c[0];
 }
 
-std::vector<std::uint32_t> SphereGrid::overlapping(const Eigen::Vector3d& centre, double radius,
-                                                   double length) const {
+template <class Visit>
+void SphereGrid::for_each_overlapping(const Eigen::Vector3d& centre, double radius, double length,
+                                      Visit&& visit) const {
   const double reach = radius + largest_radius_;
   const std::array<int, 3> from = cell_of(centre - Eigen::Vector3d::Constant(reach));
   const std::array<int, 3> to = cell_of(centre + Eigen::Vector3d::Constant(reach));
-  std::vector<std::uint32_t> found;
   for (int z = from[2]; z <= to[2]; ++z)
     for (int y = from[1]; y <= to[1]; ++y)
       for (int x = from[0]; x <= to[0]; ++x) {
@@ -53,11 +53,26 @@ std::vector<std::uint32_t> SphereGrid::overlapping(const Eigen::Vector3d& centre
         for (std::uint32_t s = start_[k]; s < start_[k + 1]; ++s) {
           const std::uint32_t i = order_[s];
           const double touch = radii_[i] + radius - length;
-          if (touch > 0.0 && (centres_[i] - centre).squaredNorm() < touch * touch)
-            found.push_back(i);
+          if (touch > 0.0 && (centres_[i] - centre).squaredNorm() < touch * touch && !visit(i))
+            return;
         }
       }
+}
+
+std::vector<std::uint32_t> SphereGrid::overlapping(const Eigen::Vector3d& centre, double radius,
+                                                   double length) const {
+  std::vector<std::uint32_t> found;
+  for_each_overlapping(centre, radius, length, [&](std::uint32_t i) {
+    found.push_back(i);
+    return true;
+  });
   return found;
+}
+
+bool SphereGrid::overlaps_any(const Eigen::Vector3d& centre, double radius, double length) const {
+  bool any = false;
+  for_each_overlapping(centre, radius, length, [&](std::uint32_t) { return !(any = true); });
+  return any;
 }
 
 }  // namespace granpipe::pores

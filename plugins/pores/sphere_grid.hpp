@@ -17,10 +17,17 @@ class SphereGrid {
   // The spheres that the sphere (centre, radius) overlaps by more than `length`.
   std::vector<std::uint32_t> overlapping(const Eigen::Vector3d& centre, double radius,
                                          double length) const;
+  // Whether it overlaps any by more than `length` (stops at the first).
+  bool overlaps_any(const Eigen::Vector3d& centre, double radius, double length) const;
 
  private:
   std::array<int, 3> cell_of(const Eigen::Vector3d& x) const;
   std::size_t index(const std::array<int, 3>& c) const;
+  // Calls visit(i) for each sphere (centre, radius) overlaps by more than `length`, until
+  // it returns false.
+  template <class Visit>
+  void for_each_overlapping(const Eigen::Vector3d& centre, double radius, double length,
+                            Visit&& visit) const;
 
   const std::vector<Eigen::Vector3d>& centres_;
   std::vector<double> radii_;

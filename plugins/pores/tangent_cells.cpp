@@ -1,38 +1,21 @@
 #include "tangent_cells.hpp"
 
-#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <optional>
 
+#include "sphere_grid.hpp"
 #include "tangent_sphere.hpp"
-#include "vertex_neighbours.hpp"
 
 namespace granpipe::pores {
 
-namespace {
-
-// Whether a sphere next to one of the cell's four overlaps the tangent sphere by more
-// than `length`.
-bool overlaps_a_fifth(const DelaunayCell& cell, const TangentSphere& sphere,
-                      const VertexNeighbours& neighbours, const Centres& centres,
-                      const Frame& frame, double length) {
-  for (std::uint32_t v : cell.vertices) {
-    for (std::uint32_t w : neighbours.of(v)) {
-      if (std::find(cell.vertices.begin(), cell.vertices.end(), w) != cell.vertices.end()) continue;
-      const double reach = frame.radius()[centres.particle[w]] + sphere.radius - length;
-      if (reach > 0.0 && (centres.points[w] - sphere.centre).squaredNorm() < reach * reach)
-        return true;
-    }
-  }
-  return false;
-}
-
-}  // namespace
-
 NonPoreCells tangent_cells(std::vector<DelaunayCell>& cells, const Centres& centres,
                            const Frame& frame, double mean_radius, double length, int threads) {
-  const VertexNeighbours neighbours(cells, centres.points.size());
+  // Every sphere is looked at, not only those next to the four in the triangulation: a
+  // sphere a hundred times wider reaches past them (radii 0.02 and 2: a pore inside it).
+  std::vector<double> radius(centres.points.size());
+  for (std::size_t p = 0; p < radius.size(); ++p) radius[p] = frame.radius()[centres.particle[p]];
+  const SphereGrid grid(centres.points, std::move(radius), 2.0 * mean_radius);
   // Each cell's circumcentre before it becomes its tangent sphere's, and why it is left out.
   enum Kind : std::uint8_t { kPore, kUntangent, kFifthSphere };
   std::vector<Kind> kind(cells.size(), kPore);
@@ -52,7 +35,7 @@ NonPoreCells tangent_cells(std::vector<DelaunayCell>& cells, const Centres& cent
     const std::optional<TangentSphere> sphere = tangent_sphere(x, r);
     if (!sphere) {
       kind[i] = kUntangent;
-    } else if (overlaps_a_fifth(cell, *sphere, neighbours, centres, frame, length)) {
+    } else if (grid.overlaps_any(sphere->centre, sphere->radius, length)) {
       kind[i] = kFifthSphere;
     } else {
       cell.centre = sphere->centre;

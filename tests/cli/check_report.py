@@ -187,7 +187,7 @@ with tempfile.TemporaryDirectory() as work:
             f.write(content)
         for command in ([exe, "report", damaged], [python, script, damaged]):
             r = subprocess.run(command, capture_output=True, text=True)
-            check(r.returncode == 2 and r.stderr == f"{path}: {message}\n",
+            check(r.returncode == 2 and r.stderr == f"granpipe: {path}: {message}\n",
                   f"{content!r} by {command[1]}: {r.returncode} {r.stderr!r}")
 if failures:
     print("FAIL", *failures, sep="\n")

@@ -585,7 +585,7 @@ TEST_F(FrameStore, WallsOfAnotherToolsCentredBoxHoldItsParticles) {
         e.what(),
         (outside.string() +
          ": /particles/atoms/box/edges: frame 0: expected particle centres inside a box of "
-         "edge 6.000000 along z (at [0, L] or [-L/2, L/2]), got -6.500000 to -5.750000")
+         "edge 6 along z (at [0, L] or [-L/2, L/2]), got -6.5 to -5.75")
             .c_str());
   }
 }

@@ -177,6 +177,18 @@ TEST_F(H5mdSourceTest, OverlappingParticlesAreRefusedWithThePair) {
   EXPECT_EQ(error_of([&] { return source(p, 0, -1, 1, 0.25); }), "(no InputError)");
 }
 
+// The radius for files without one did nothing for a file with radii, without a word.
+TEST_F(H5mdSourceTest, ARadiusForAFileWithRadiiIsRefused) {
+  const fs::path p = write(2);
+  EXPECT_EQ(
+      error_of([&] {
+        harness_ = granpipe::test::make_context("h5md", {{"file", p.string()}, {"radius", 0.3}});
+        return std::make_unique<h5md::H5mdSource>(*harness_);
+      }),
+      "params.radius: expected its default 0.5 for a file that stores radii (" + p.string() +
+          "), got 0.3");
+}
+
 TEST_F(H5mdSourceTest, ExactlyTouchingParticlesAreAccepted) {
   EXPECT_EQ(error_of([&] { return source(write_pair(dir_, 1.0), 0, -1, 1); }), "(no InputError)");
 }

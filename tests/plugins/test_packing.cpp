@@ -100,6 +100,16 @@ TEST(Packing, CoordinationOfExactlyTouchingLattices) {
   }
 }
 
+// One cell of a simple cubic crystal holds one sphere touching its six images: z came out
+// 0 (the pair loop had no pair), where two spheres in so small a box are refused.
+TEST(Packing, ALoneSphereTouchingItsImagesIsRefusedAsPairsAre) {
+  const Frame f = one("sc", "periodic", {{"cells", {1, 1, 1}}});
+  ASSERT_EQ(f.size(), 1);
+  const std::string refused = granpipe::test::input_error_of([&] { measure(f); });
+  EXPECT_NE(refused.find("expected a periodic box of length at least"), std::string::npos)
+      << refused;
+}
+
 // Contact counts are relative to particle size: the same crystal at any scale.
 TEST(Packing, ContactsDoNotDependOnTheScale) {
   for (double radius : {1e-4, 1.0, 1e4}) {

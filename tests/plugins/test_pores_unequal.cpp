@@ -15,6 +15,7 @@
 #include "granpipe/frame.hpp"
 #include "granpipe/region.hpp"
 #include "measure_pores.hpp"
+#include "plugin_harness.hpp"
 #include "pore_region.hpp"
 #include "tangent_sphere.hpp"
 
@@ -195,6 +196,87 @@ TEST(PoresUnequal, ATangentSphereOverlappingAFifthIsNoPore) {
     EXPECT_EQ(m.xi.size(), d < 2.9 ? 0u : 2u) << d;
     EXPECT_EQ(small_pores, d < 2.9 ? 0 : 1) << d;
   }
+}
+
+// 29 spheres of radius 0.02 and one of radius 1, at random in a walled cube of side 4.
+Frame radii_fifty_apart() {
+  const std::vector<std::array<double, 4>> spheres{
+      {1.9971403352628552, 2.4019334961884957, 0.13360847315290039, 0.02},
+      {0.60578729492672545, 3.6957156509230633, 0.29886548157061948, 0.02},
+      {2.8966569065835501, 2.2437671855927657, 1.737986247459582, 1},
+      {2.0451044863409202, 2.6448580919665252, 1.1102229104140722, 0.02},
+      {3.254276286439846, 2.1943380647253043, 3.9044180116173295, 0.02},
+      {2.3627174036382121, 0.95179287740361895, 3.1967226277627945, 0.02},
+      {2.6865149348126067, 0.82077547004063112, 3.5896670716051808, 0.02},
+      {0.87990709937737155, 0.1509757620146176, 0.81504505847842845, 0.02},
+      {1.840475280377011, 2.7565180686222868, 0.23648552315127847, 0.02},
+      {1.2768114875940964, 0.37337952749428516, 0.70377162038995877, 0.02},
+      {0.11736098556213775, 3.3429343995562153, 1.866560660924534, 0.02},
+      {2.3896327450031909, 3.5672006968954753, 0.12669590908342307, 0.02},
+      {0.88015676194510162, 1.2681236786879893, 1.0422377733441699, 0.02},
+      {3.1336877629499784, 3.5630032629971358, 3.0265434903331379, 0.02},
+      {0.59030081621494801, 0.98748519367207255, 1.434590062606927, 0.02},
+      {1.9931434885416988, 0.33153224419443217, 2.4394799579451867, 0.02},
+      {2.5424432193944013, 1.3062105626514204, 2.5680716210619039, 0.02},
+      {0.5374096668893219, 1.2682327164165341, 1.5852621759651253, 0.02},
+      {2.8657915000656002, 3.206327275675489, 3.0312459368559015, 0.02},
+      {1.5659445330922253, 1.9914477974484714, 1.1518557046424038, 0.02},
+      {1.6638375043062215, 2.2108313283284353, 2.6864514338846184, 0.02},
+      {1.306697757421551, 2.1944847004064525, 0.13365387016136124, 0.02},
+      {0.63345582092442176, 3.1850870974999679, 3.1239049527004599, 0.02},
+      {3.5911266539737756, 3.0118726772147406, 1.2031864891177282, 0.02},
+      {0.62684370068204931, 3.4907681685738137, 2.7540055713222595, 0.02},
+      {2.2605404410264431, 0.26775257827430587, 2.2180721079881764, 0.02},
+      {1.7163555060296232, 3.3940350032096398, 0.5656538150624747, 0.02},
+      {0.55115113750656342, 2.0475809128232685, 3.4339377422774686, 0.02},
+      {1.0314736413456269, 3.453228417225183, 3.054318415217931, 0.02},
+      {3.6433885857260599, 1.4658174961060253, 3.5339957303448659, 0.02},
+  };
+  Frame f;
+  f.resize(static_cast<Eigen::Index>(spheres.size()), 3);
+  for (std::size_t i = 0; i < spheres.size(); ++i) {
+    const auto k = static_cast<Eigen::Index>(i);
+    f.position().row(k) << spheres[i][0], spheres[i][1], spheres[i][2];
+    f.radius()[k] = spheres[i][3];
+  }
+  f.container.lo.setConstant(0.0);
+  f.container.hi.setConstant(4.0);
+  return f;
+}
+
+// radii_fifty_apart: the tangent sphere of four small spheres (xi 20) overlapped the large one by
+// 0.32, which is no neighbour of the four in the triangulation, and was a pore (exit 0). Every pore
+// is checked here against every sphere.
+TEST(PoresUnequal, NoPoreOverlapsASphereFarInTheTriangulation) {
+  const Frame f = radii_fifty_apart();
+  const PoreMeasurement m = measure_pores(f, std::nullopt, 1e-9, "test");
+  ASSERT_FALSE(m.pores.empty());
+  for (const auto& pore : m.pores) {
+    const double rho = pore.radius - m.radius;
+    for (Eigen::Index k = 0; k < f.size(); ++k) {
+      const double gap =
+          (pore.centre - f.position().row(k).transpose().matrix()).norm() - rho - f.radius()[k];
+      EXPECT_GT(gap, -1e-9 * m.radius) << "pore at " << pore.centre.transpose() << ", sphere " << k;
+    }
+  }
+}
+
+// At a radius ratio of 50 pores inside the packing that no cell gives were missed (the
+// search around the cells left out was tested up to 4): the run says so.
+TEST(PoresUnequal, RadiiFarBeyondTheTestedRatioAreWarnedOf) {
+  const auto ctx = granpipe::test::make_context("pores", {});
+  ctx->keep_log();
+  auto analyzer = granpipe::test::installed_plugins().find("pores")->make_analyzer(*ctx);
+  granpipe::FrameCache cache;
+  analyzer->consume(radii_fifty_apart(), cache);
+  granpipe::Results results;
+  analyzer->finish(results);
+  granpipe::test::expect_said_once(
+      ctx->logged_lines(),
+      "warning: pores: radii differ by up to a factor of 50: pores that no Delaunay cell gives "
+      "are searched for as tested up to a factor of 4 (docs/pores.md, unequal radii); beyond, "
+      "some may be missing",
+      "radii differ");
 }
 
 // `n` spheres placed at random without overlap in a cube of side `side`, periodic or walled
