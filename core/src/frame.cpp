@@ -128,12 +128,12 @@ void check_particles(const Frame& f, const std::string& where) {
       refuse(k, "a radius from 1e-100 to 1e+100", r[k], "");
     // Wider than a periodic box, a particle overlaps its own image: no measure holds.
     for (int a = 0; a < f.dim; ++a) {
-      if (f.container.periodic(a) && 2.0 * r[k] > f.container.length(a)) {
-        refuse(k,
-               std::string("a diameter of at most the periodic box's length along ") + "xyz"[a] +
-                   ", " + format_number(f.container.length(a)),
-               2.0 * r[k], " (it would overlap its own image)");
-      }
+      const double length = f.container.length(a), diameter = 2.0 * r[k];
+      if (!f.container.periodic(a) || diameter <= length) continue;
+      throw InputError(where + ": " + describe_particle(f, k) +
+                       ": expected a diameter of at most the periodic box's length along " +
+                       "xyz"[a] + ", " + format_apart(length, diameter) + ", got " +
+                       format_apart(diameter, length) + " (it would overlap its own image)");
     }
   }
 }

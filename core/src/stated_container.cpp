@@ -11,6 +11,16 @@ const char* axis_name(int a) { return a == 0 ? "x" : a == 1 ? "y" : "z"; }
 
 constexpr double kDefaultBase = 0.0, kDefaultTop = 100.0;
 
+// The box with its non-periodic sides moved out by `margin`.
+Container widened(Container box, double margin) {
+  for (int a = 0; a < 3; ++a) {
+    if (box.periodic(a)) continue;
+    box.lo[a] -= margin;
+    box.hi[a] += margin;
+  }
+  return box;
+}
+
 }  // namespace
 
 void declare_stated_container(Schema& s) {
@@ -119,8 +129,10 @@ std::optional<StatedContainer::Outside> StatedContainer::first_outside(
                                       describe(frame, *out, kStatedWallTolerance) + " (" +
                                       placed_by(out->wall, file_sides) + ")"};
   }
+  // LAMMPS keeps atoms in its box only when it rebuilds its neighbour lists: a dump may
+  // hold some a little outside. A radius beyond is far more than that.
   Frame in_file_box = frame;
-  in_file_box.container = file_box;
+  in_file_box.container = widened(file_box, frame.radius().maxCoeff());
   const auto out = first_particle_outside(in_file_box, kStatedWallTolerance);
   if (!out) return {};
   return Outside{out->particle, atom(out->particle) +

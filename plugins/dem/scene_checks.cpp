@@ -136,7 +136,7 @@ void check_damping(const PluginContext& ctx, const Scene& scene, double backgrou
   }
   if (b * dt <= lightest) return;
   throw InputError(ctx.param(air > background ? "air_damping" : "background_damping") +
-                   ": expected a drag that takes more than a time step to stop the lightest "
+                   ": expected a drag that takes at least a time step to stop the lightest "
                    "sphere (mass " +
                    format_number(lightest) +
                    "): b + b_air at most m / dt = " + format_number(lightest / dt) + ", got " +

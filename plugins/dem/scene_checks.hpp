@@ -6,7 +6,7 @@
 //   - a sphere hit by a wall at the drive's peak speed A 2 pi f, and one resting on a wall
 //     under gravity, must stay within the overlap limit (overlap_limit.hpp), the largest
 //     sphere of every species that moves, against every wall;
-//   - the drag -b v (background and air damping together) must take more than one step to
+//   - the drag -b v (background and air damping together) must take at least one step to
 //     stop the lightest sphere, b dt / m <= 1: beyond, each step reverses its velocity, and
 //     from 2 on the run blows up, blamed on the contacts.
 // Each refusal names the parameter and says how far it may go.

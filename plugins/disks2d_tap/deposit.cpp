@@ -16,16 +16,17 @@ namespace {
 // A contact found this far (in radians) behind a roll's start is taken as touching now:
 // only rounding puts it there. Real contacts behind the start would be overlaps.
 constexpr double kAngleTolerance = 1e-9;
-// A contact this close ahead (relative to the radius, or in radians along a roll) is
-// touching already: the disk stays put. Moving it would only shift it by rounding, which
-// two disks leaning on each other could repeat forever, each such shift releasing the
-// other's support.
+// A contact this close ahead (relative to the radius of the path: the disk's for a fall,
+// the roll's centre path for a roll) is touching already: the disk stays put. Moving it would only
+// shift it by rounding, which two disks leaning on each other could repeat forever, each such shift
+// releasing the other's support.
 constexpr double kStayTolerance = 1e-12;
 // Far from the origin a coordinate's rounding outgrows that tolerance (one ulp is 7e-12 at
 // x = 32768): a roll to a contact a few ulps ahead then lands where it started, give or
 // take an ulp in y, and counts as a move, so the disk rolls there forever. Contacts closer
-// than this many ulps of the box's largest coordinate are touching too.
-constexpr double kStayUlps = 16;
+// than this many ulps of the box's largest coordinate are touching too (at the paper's
+// radius, the term takes over beyond coordinates of about 1800).
+constexpr double kStayUlps = 4;
 // Consecutive moves that leave a disk where it was, with none of its supports moving in
 // between, before the engine calls it a cycle.
 constexpr std::uint16_t kMaxStalledMoves = 1000;
@@ -269,7 +270,7 @@ Move Deposit::roll(std::int32_t i) {
   const double x_new = rolled_off ? xs + path.h * R : xs + R * qx;
   const double y_new = rolled_off ? ys : ys + R * qy;
   const bool exact_end = rolled_off || hit == kBase;
-  const bool moved = (best * R > stay_distance(ri) || exact_end) && place(i, x_new, y_new);
+  const bool moved = (best * R > stay_distance(R) || exact_end) && place(i, x_new, y_new);
   if (moved) {
     release_held(i);
     forget_clearance_above(i);

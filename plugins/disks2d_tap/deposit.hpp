@@ -103,8 +103,8 @@ class Deposit {
   // After disk i rolled: the clearances cached for the disks above it may be too long.
   void forget_clearance_above(std::int32_t i);
   const std::pair<double, double>& roll_rotation(double divisor);
-  // A move shorter than this leaves disk of this radius where it is: the contact ahead
-  // touches it already.
+  // A move shorter than this, along a path of this radius, leaves a disk where it is: the
+  // contact ahead touches it already.
   double stay_distance(double radius) const;
 
   DiskPacking& p_;

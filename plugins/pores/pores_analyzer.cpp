@@ -222,7 +222,7 @@ void PoresAnalyzer::probe_voids(const Frame& frame, double mean_radius, const st
 
 namespace {
 // The largest radius ratio at which the pores were found to be exactly the weighted Voronoi
-// diagram's vertices (tests against a brute force); at 100 some inside the packing were not.
+// diagram's vertices (tests against a brute force); at 50 some inside the packing were not.
 constexpr double kSearchedRadiusRatio = 4.0;
 }  // namespace
 
@@ -267,7 +267,8 @@ void PoresAnalyzer::finish(Results& results) {
               (frames_without_spheres_ == frames_ ? ", and so is the pooled one" : ""));
   }
   if (widest_radius_ratio_ > kSearchedRadiusRatio) {
-    log_.warn("pores: radii differ by up to a factor of " + format_number(widest_radius_ratio_, 3) +
+    log_.warn("pores: radii differ by up to a factor of " +
+              format_apart(widest_radius_ratio_, kSearchedRadiusRatio) +
               ": pores that no Delaunay cell gives are searched for as tested up to a factor of " +
               format_number(kSearchedRadiusRatio) +
               " (docs/pores.md, unequal radii); beyond, some may be missing");

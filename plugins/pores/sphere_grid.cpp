@@ -31,32 +31,16 @@ SphereGrid::SphereGrid(const std::vector<Eigen::Vector3d>& centres, std::vector<
 
 std::array<int, 3> SphereGrid::cell_of(const Eigen::Vector3d& x) const {
   std::array<int, 3> c{};
-  for (int a = 0; a < 3; ++a)
-    c[a] = std::clamp(static_cast<int>(std::floor((x[a] - lo_[a]) / cell_)), 0, n_[a] - 1);
+  for (int a = 0; a < 3; ++a) {
+    // Clamped before the cast: a sliver's tangent sphere reaches 10^9 cells and more.
+    c[a] = static_cast<int>(
+        std::clamp(std::floor((x[a] - lo_[a]) / cell_), 0.0, static_cast<double>(n_[a] - 1)));
+  }
   return c;
 }
 
 std::size_t SphereGrid::index(const std::array<int, 3>& c) const {
   return (static_cast<std::size_t>(c[2]) * n_[1] + c[1]) * n_[0] + c[0];
-}
-
-template <class Visit>
-void SphereGrid::for_each_overlapping(const Eigen::Vector3d& centre, double radius, double length,
-                                      Visit&& visit) const {
-  const double reach = radius + largest_radius_;
-  const std::array<int, 3> from = cell_of(centre - Eigen::Vector3d::Constant(reach));
-  const std::array<int, 3> to = cell_of(centre + Eigen::Vector3d::Constant(reach));
-  for (int z = from[2]; z <= to[2]; ++z)
-    for (int y = from[1]; y <= to[1]; ++y)
-      for (int x = from[0]; x <= to[0]; ++x) {
-        const std::size_t k = index({x, y, z});
-        for (std::uint32_t s = start_[k]; s < start_[k + 1]; ++s) {
-          const std::uint32_t i = order_[s];
-          const double touch = radii_[i] + radius - length;
-          if (touch > 0.0 && (centres_[i] - centre).squaredNorm() < touch * touch && !visit(i))
-            return;
-        }
-      }
 }
 
 std::vector<std::uint32_t> SphereGrid::overlapping(const Eigen::Vector3d& centre, double radius,
@@ -67,12 +51,6 @@ std::vector<std::uint32_t> SphereGrid::overlapping(const Eigen::Vector3d& centre
     return true;
   });
   return found;
-}
-
-bool SphereGrid::overlaps_any(const Eigen::Vector3d& centre, double radius, double length) const {
-  bool any = false;
-  for_each_overlapping(centre, radius, length, [&](std::uint32_t) { return !(any = true); });
-  return any;
 }
 
 }  // namespace granpipe::pores

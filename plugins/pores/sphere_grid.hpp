@@ -17,8 +17,18 @@ class SphereGrid {
   // The spheres that the sphere (centre, radius) overlaps by more than `length`.
   std::vector<std::uint32_t> overlapping(const Eigen::Vector3d& centre, double radius,
                                          double length) const;
-  // Whether it overlaps any by more than `length` (stops at the first).
-  bool overlaps_any(const Eigen::Vector3d& centre, double radius, double length) const;
+  // Whether it overlaps by more than `length` one of the spheres `counted` (a predicate on
+  // their index) accepts; stops at the first.
+  template <class Counted>
+  bool overlaps_any(const Eigen::Vector3d& centre, double radius, double length,
+                    Counted&& counted) const {
+    bool any = false;
+    for_each_overlapping(centre, radius, length, [&](std::uint32_t i) {
+      any = counted(i);
+      return !any;
+    });
+    return any;
+  }
 
  private:
   std::array<int, 3> cell_of(const Eigen::Vector3d& x) const;
@@ -27,7 +37,22 @@ class SphereGrid {
   // it returns false.
   template <class Visit>
   void for_each_overlapping(const Eigen::Vector3d& centre, double radius, double length,
-                            Visit&& visit) const;
+                            Visit&& visit) const {
+    const double reach = radius + largest_radius_;
+    const std::array<int, 3> from = cell_of(centre - Eigen::Vector3d::Constant(reach));
+    const std::array<int, 3> to = cell_of(centre + Eigen::Vector3d::Constant(reach));
+    for (int z = from[2]; z <= to[2]; ++z)
+      for (int y = from[1]; y <= to[1]; ++y)
+        for (int x = from[0]; x <= to[0]; ++x) {
+          const std::size_t k = index({x, y, z});
+          for (std::uint32_t s = start_[k]; s < start_[k + 1]; ++s) {
+            const std::uint32_t i = order_[s];
+            const double touch = radii_[i] + radius - length;
+            if (touch > 0.0 && (centres_[i] - centre).squaredNorm() < touch * touch && !visit(i))
+              return;
+          }
+        }
+  }
 
   const std::vector<Eigen::Vector3d>& centres_;
   std::vector<double> radii_;

@@ -1,21 +1,76 @@
 #include "tangent_cells.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <optional>
 
 #include "sphere_grid.hpp"
 #include "tangent_sphere.hpp"
+#include "vertex_neighbours.hpp"
 
 namespace granpipe::pores {
 
+namespace {
+
+// Spheres more than twice the mean radius wide: their surface reaches past the spheres
+// next to a cell in the triangulation (at radii 0.02 and 1, a sphere beyond them overlapped
+// the tangent sphere of four small ones by 0.32). Few in the packings that have them (an
+// intruder among beads), so a grid of their own answers for every cell at little cost.
+class WideSpheres {
+ public:
+  WideSpheres(const Centres& centres, const Frame& frame, double mean_radius) {
+    std::vector<double> radius;
+    for (std::uint32_t p = 0; p < centres.points.size(); ++p) {
+      const double r = frame.radius()[centres.particle[p]];
+      if (r <= 2.0 * mean_radius) continue;
+      point_.push_back(p);
+      centre_.push_back(centres.points[p]);
+      radius.push_back(r);
+    }
+    if (point_.empty()) return;
+    const double widest = *std::max_element(radius.begin(), radius.end());
+    grid_.emplace(centre_, std::move(radius), 2.0 * widest);
+  }
+
+  // Whether one of them, other than the cell's own four, overlaps the sphere by more than
+  // `length`.
+  bool overlap(const TangentSphere& sphere, const DelaunayCell& cell, double length) const {
+    if (!grid_) return false;
+    return grid_->overlaps_any(sphere.centre, sphere.radius, length, [&](std::uint32_t k) {
+      return std::find(cell.vertices.begin(), cell.vertices.end(), point_[k]) ==
+             cell.vertices.end();
+    });
+  }
+
+ private:
+  std::vector<std::uint32_t> point_;  // their index among the centres
+  std::vector<Eigen::Vector3d> centre_;
+  std::optional<SphereGrid> grid_;
+};
+
+// Whether a sphere next to one of the cell's four overlaps the tangent sphere by more
+// than `length`.
+bool overlaps_a_neighbour(const DelaunayCell& cell, const TangentSphere& sphere,
+                          const VertexNeighbours& neighbours, const Centres& centres,
+                          const Frame& frame, double length) {
+  for (std::uint32_t v : cell.vertices) {
+    for (std::uint32_t w : neighbours.of(v)) {
+      if (std::find(cell.vertices.begin(), cell.vertices.end(), w) != cell.vertices.end()) continue;
+      const double reach = frame.radius()[centres.particle[w]] + sphere.radius - length;
+      if (reach > 0.0 && (centres.points[w] - sphere.centre).squaredNorm() < reach * reach)
+        return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
 NonPoreCells tangent_cells(std::vector<DelaunayCell>& cells, const Centres& centres,
                            const Frame& frame, double mean_radius, double length, int threads) {
-  // Every sphere is looked at, not only those next to the four in the triangulation: a
-  // sphere a hundred times wider reaches past them (radii 0.02 and 2: a pore inside it).
-  std::vector<double> radius(centres.points.size());
-  for (std::size_t p = 0; p < radius.size(); ++p) radius[p] = frame.radius()[centres.particle[p]];
-  const SphereGrid grid(centres.points, std::move(radius), 2.0 * mean_radius);
+  const VertexNeighbours neighbours(cells, centres.points.size());
+  const WideSpheres wide(centres, frame, mean_radius);
   // Each cell's circumcentre before it becomes its tangent sphere's, and why it is left out.
   enum Kind : std::uint8_t { kPore, kUntangent, kFifthSphere };
   std::vector<Kind> kind(cells.size(), kPore);
@@ -35,7 +90,8 @@ NonPoreCells tangent_cells(std::vector<DelaunayCell>& cells, const Centres& cent
     const std::optional<TangentSphere> sphere = tangent_sphere(x, r);
     if (!sphere) {
       kind[i] = kUntangent;
-    } else if (grid.overlaps_any(sphere->centre, sphere->radius, length)) {
+    } else if (overlaps_a_neighbour(cell, *sphere, neighbours, centres, frame, length) ||
+               wide.overlap(*sphere, cell, length)) {
       kind[i] = kFifthSphere;
     } else {
       cell.centre = sphere->centre;

@@ -23,8 +23,10 @@ struct NonPoreCells {
 // the mean particle radius R, so that, as for equal spheres' circumspheres, radius / R - 1
 // is xi and the merge and the periodic skin treat both alike. Flat cells are kept as they
 // are, for merge_cells to count. A cell without a
-// tangent sphere, or whose tangent sphere overlaps another sphere by more than `length`,
-// is no pore: it is no vertex of the spheres' additively weighted Voronoi diagram.
+// tangent sphere, or whose tangent sphere overlaps by more than `length` one of the
+// spheres next to its four (their neighbours in the triangulation) or a sphere more than
+// twice the mean radius wide anywhere, is no pore: it is no vertex of the spheres'
+// additively weighted Voronoi diagram.
 NonPoreCells tangent_cells(std::vector<DelaunayCell>& cells, const Centres& centres,
                            const Frame& frame, double mean_radius, double length, int threads);
 

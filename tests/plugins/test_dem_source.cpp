@@ -212,7 +212,7 @@ TEST(DemSource, ADragFasterThanAStepIsRefusedByName) {
   const fs::path file = start_file();
   const std::string refused = refusal({{"initial_file", file.string()}, {"air_damping", 12000.0}});
   EXPECT_EQ(refused.substr(0, refused.find(" (mass")),
-            "params.air_damping: expected a drag that takes more than a time step to stop the "
+            "params.air_damping: expected a drag that takes at least a time step to stop the "
             "lightest sphere");
   EXPECT_NE(refused.find(", got 12000 (b dt / m = "), std::string::npos) << refused;
   EXPECT_EQ(refusal({{"initial_file", file.string()}, {"background_damping", 1.0}}), "no refusal");

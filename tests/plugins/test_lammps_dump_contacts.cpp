@@ -240,9 +240,6 @@ TEST_F(LammpsDumpContacts, BadPairFilesAreRefusedWithTheirLine) {
             "\"ITEM: NUMBER OF ATOMS\": a dump of atoms, not a dump local");
 }
 
-// A pair listed twice, in either order (LAMMPS lists a pair across two processors twice
-// with newton_pair off), was read as two contacts: coordination, networks and the force
-// PDF counted it twice, exit 0.
 // Without the contact files, their format and columns did nothing, without a word.
 TEST_F(LammpsDumpContacts, ContactSettingsWithoutTheirFileAreRefused) {
   const std::string atoms = write(atom_snapshot(0), "atoms.dump");
@@ -257,6 +254,9 @@ TEST_F(LammpsDumpContacts, ContactSettingsWithoutTheirFileAreRefused) {
             "pair_file or wall_file), got \"lammps\"");
 }
 
+// A pair listed twice, in either order (LAMMPS lists a pair across two processors twice
+// with newton_pair off), was read as two contacts: coordination, networks and the force
+// PDF counted it twice, exit 0.
 TEST_F(LammpsDumpContacts, APairListedTwiceIsRefused) {
   const std::string second = pair_snapshot(100, "", 0);
   EXPECT_EQ(refusal(with_pairs(pair_snapshot(0, kPairs0 + "2 1 0 1.5 0 0 0.001\n", 3) + second)),

@@ -38,9 +38,10 @@ class StatedContainer {
   // The first particle outside its container, as a message starting with "atom <id>":
   // "atom 7 at (1.9, 0, 1), radius 0.5: expected an overlap with the wall cylinder ...
   // (the container of source.params.cylinder_radius)". `file_sides` names what placed the
-  // sides no parameter states (e.g. "the dump's BOX BOUNDS, line 6"). A centre beyond a
-  // non-periodic side of `file_box` (the file's own box, whose z sides the base and top
-  // replace) is outside too: the code that wrote the file would have lost that particle.
+  // sides no parameter states (e.g. "the dump's BOX BOUNDS, line 6"). A centre more than
+  // the largest radius beyond a non-periodic side of `file_box` (the file's own box, whose
+  // z sides the base and top replace) is outside too: the code that wrote the file would
+  // have lost that particle.
   struct Outside {
     Eigen::Index particle = 0;  // row in the frame
     std::string message;
