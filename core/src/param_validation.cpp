@@ -259,6 +259,14 @@ std::optional<nlohmann::json> implied_json(const ParamSpec& s) {
 
 namespace {
 
+// "; here region is "all"" when the condition starts with a parameter's name: the value
+// that made the given one useless may come from elsewhere (a --set, a sweep's point).
+std::string mode_here(const std::string& applies_where, const Params& params) {
+  const std::string mode = applies_where.substr(0, applies_where.find(' '));
+  if (!params.has(mode)) return "";
+  return "; here " + mode + " is " + format_value(params.values().at(mode));
+}
+
 // A value given where its parameter does nothing (a margin for region all) was ignored
 // without a word; the default itself is let be, so that a sweep may zip it with the mode.
 void refuse_what_has_no_effect(const nlohmann::json& object, const Schema& schema,
@@ -268,7 +276,7 @@ void refuse_what_has_no_effect(const nlohmann::json& object, const Schema& schem
     if (params.values().at(s.name) == *s.default_value || s.applies(params)) continue;
     throw InputError(where.child(s.name).str() + ": expected its default " +
                      format_value(*s.default_value) + " (it acts only with " + s.applies_where +
-                     "), got " + json_brief(object[s.name]));
+                     mode_here(s.applies_where, params) + "), got " + json_brief(object[s.name]));
   }
 }
 

@@ -55,17 +55,7 @@ RedepositionOptions redeposition_options(const Params& p) {
 
 TapBox tap_box(const PluginContext& ctx) {
   const Params& p = ctx.params;
-  const TapBox box{p.real("side") * p.real("radius"), p.real("radius"), p.choice<Sides>("sides")};
-  // Narrower, the box holds a column: a sphere may touch two images of one sphere, or be
-  // wedged between a sphere and the far wall, which the deposition's roll geometry does not
-  // model (it left overlapping spheres, or one through a wall, exit 0).
-  if (box.side < 4.0 * box.radius) {
-    std::ostringstream s;
-    s << ctx.param("side") << ": expected a box at least two diameters (4 R) wide, got "
-      << p.real("side") << " R";
-    throw InputError(s.str());
-  }
-  return box;
+  return {p.real("side") * p.real("radius"), p.real("radius"), p.choice<Sides>("sides")};
 }
 
 // How epsilon goes: one value, or stepped ramps of sqrt(epsilon) (parameter protocol).
@@ -113,7 +103,12 @@ Schema schema() {
   Schema s;
   s.integer("N", 4096, "number of spheres (the paper's 4096)").range(1, 1000000);
   s.real("radius", 1.0, "sphere radius R").range(1e-50, 1e50).unit("length");
-  s.real("side", 32.0, "side L of the square box, in units of R (the paper's 32)").range(0.0, 1e4);
+  // Narrower than two diameters, the box holds a column: a sphere may touch two images of
+  // one sphere, or be wedged between a sphere and the far wall, which the deposition's roll
+  // geometry does not model (it left overlapping spheres, or one through a wall, exit 0).
+  s.real("side", 32.0,
+         "side L of the square box, in units of R (the paper's 32); at least two diameters")
+      .range(4.0, 1e4);
   s.choice<Sides>("sides", Sides::Periodic,
                   "lateral sides: periodic (P.B.C.) or fixed walls (F.B.C.); the paper's initial "
                   "packing fraction 58.4 % is the periodic deposition's");

@@ -110,10 +110,10 @@ TEST(ChoiceParams, BadChoiceNamesTheChoicesAndTheClosest) {
 TEST(ChoiceParams, AValueWhereItHasNoEffectIsRefused) {
   EXPECT_EQ(error_of(with(kAllPairs, R"("hertz_exponent": 2)")),
             "p.json: source.params.hertz_exponent: expected its default 1.5 (it acts only with "
-            "law hertz), got 2");
+            "law hertz; here law is \"linear\"), got 2");
   EXPECT_EQ(error_of(with(kAllPairs), {"source.params.hertz_exponent=2"}),
             "--set source.params.hertz_exponent=2: expected its default 1.5 (it acts only with "
-            "law hertz), got 2");
+            "law hertz; here law is \"linear\"), got 2");
   EXPECT_EQ(made(with(kAllPairs, R"("law": "hertz", "hertz_exponent": 2)")).real("hertz_exponent"),
             2.0);
   EXPECT_EQ(made(with(kAllPairs, R"("hertz_exponent": 1.5)")).real("hertz_exponent"), 1.5);

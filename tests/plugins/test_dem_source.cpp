@@ -393,10 +393,10 @@ TEST(DemSource, ADriveWithoutAFrequencyTakesNoOtherValue) {
   const fs::path file = start_file();
   EXPECT_EQ(refusal({{"initial_file", file.string()}, {"drive", {{"periods", 5}}}}),
             "test: params.drive.periods: expected its default 0 (it acts only with frequency > "
-            "0), got 5");
+            "0; here frequency is 0), got 5");
   EXPECT_EQ(refusal({{"initial_file", file.string()}, {"drive", {{"amplitude", 0.5}}}}),
             "test: params.drive.amplitude: expected its default 0 (it acts only with frequency > "
-            "0), got 0.5");
+            "0; here frequency is 0), got 0.5");
   EXPECT_EQ(refusal({{"initial_file", file.string()},
                      {"drive", {{"amplitude", 0.001}, {"frequency", 0.5}, {"periods", 5}}}}),
             "no refusal");

@@ -913,11 +913,13 @@ TEST(Disks2dTapSource, StartsFromAFrameOfASavedFile) {
               from_file({{"radius_spread", 0.3}});
             }),
             "test: params.radius_spread: expected its default 0 (it acts only with initial_file "
-            "\"\"), got 0.3");
+            "\"\"; here initial_file is \"" +
+                file.string() + "\"), got 0.3");
   EXPECT_EQ(granpipe::test::input_error_of([&] {
               from_file({{"initial_fraction", 0.2}});
             }),
             "test: params.initial_fraction: expected its default 0.3 (it acts only with "
-            "initial_file \"\"), got 0.2");
+            "initial_file \"\"; here initial_file is \"" +
+                file.string() + "\"), got 0.2");
   fs::remove_all(dir);
 }
