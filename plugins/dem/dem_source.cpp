@@ -151,6 +151,18 @@ std::int64_t steps_in(double time, double dt) {
   return static_cast<std::int64_t>(std::ceil(time / dt - 1e-9));
 }
 
+// The run ends at the first step at or after the duration (less than a step late, as the
+// frames' times show), but a duration shorter than one step ran a whole step (200 times
+// 1e-6 with dt 2e-4) without a word.
+void refuse_less_than_a_step(const PluginContext& ctx, double dt) {
+  const double duration = ctx.params.real("duration");
+  if (duration / dt >= 1.0 - 1e-9) return;
+  std::ostringstream m;
+  m << ctx.param("duration") << ": expected at least one time step (dt " << dt << "), got "
+    << duration;
+  throw InputError(m.str());
+}
+
 }  // namespace
 
 Schema schema() {
@@ -280,18 +292,6 @@ void DemSource::check_dt(const PluginContext& ctx, const ContactTime& shortest) 
   if (verdict.verdict == StepVerdict::Refuse)
     throw InputError(ctx.param("dt") + ": " + verdict.message);
   if (verdict.verdict == StepVerdict::Warn) log_.warn(ctx.param("dt") + ": " + verdict.message);
-}
-
-// The run ends at the first step at or after the duration (less than a step late, as the
-// frames' times show), but a duration shorter than one step ran a whole step (200 times
-// 1e-6 with dt 2e-4) without a word.
-void DemSource::refuse_less_than_a_step(const PluginContext& ctx, double dt) {
-  const double duration = ctx.params.real("duration");
-  if (duration / dt >= 1.0 - 1e-9) return;
-  std::ostringstream m;
-  m << ctx.param("duration") << ": expected at least one time step (dt " << dt << "), got "
-    << duration;
-  throw InputError(m.str());
 }
 
 void DemSource::read_schedule(const PluginContext& ctx, const Drive& drive) {

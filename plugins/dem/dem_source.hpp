@@ -43,7 +43,6 @@ class DemSource : public Source {
   void check_dt(const PluginContext& ctx, const ContactTime& shortest);
   // Steps of the run and of its frames, and the relaxation that may end it early.
   void read_schedule(const PluginContext& ctx, const Drive& drive);
-  void refuse_less_than_a_step(const PluginContext& ctx, double dt);
   // Advances to the next step at which a frame is due, reporting progress as it goes.
   void run_to(std::int64_t step);
   void report_progress(std::int64_t steps, double seconds);

@@ -18,6 +18,12 @@
 
 namespace granpipe::pores {
 
+namespace {
+// The largest radius ratio at which the pores were found to be exactly the weighted Voronoi
+// diagram's vertices (tests against a brute force); at 50 some inside the packing were not.
+constexpr double kSearchedRadiusRatio = 4.0;
+}  // namespace
+
 Schema schema() {
   const auto inner_region = [](const Params& p) {
     return p.choice<RegionKind>("region") == RegionKind::Inner;
@@ -219,12 +225,6 @@ void PoresAnalyzer::probe_voids(const Frame& frame, double mean_radius, const st
   for (double& gap : gaps) gap /= mean_radius;
   void_probability_.add(gaps, particle_measure_in(frame, box), box.volume());
 }
-
-namespace {
-// The largest radius ratio at which the pores were found to be exactly the weighted Voronoi
-// diagram's vertices (tests against a brute force); at 50 some inside the packing were not.
-constexpr double kSearchedRadiusRatio = 4.0;
-}  // namespace
 
 void PoresAnalyzer::consume(const Frame& frame, FrameCache&) {
   const std::string where = "pores: frame at step " + std::to_string(frame.step);

@@ -590,27 +590,32 @@ TEST_F(FrameStore, WallsOfAnotherToolsCentredBoxHoldItsParticles) {
   }
 }
 
+namespace {
+// A plain H5MD file of one frame: two particles at `x` in a walled box of edge 10.
+void write_two_in_a_walled_box(const fs::path& p, const double (&x)[1][2][3]) {
+  Id f(H5Fcreate(p.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT));
+  Id particles(make_group(f, "particles"));
+  Id all(make_group(particles, "all"));
+  Id box(make_group(all, "box"));
+  put_string_attribute(box, "boundary", {"none", "none", "none"});
+  const double edges[3] = {10.0, 10.0, 10.0};
+  put_dataset(box, "edges", H5T_NATIVE_DOUBLE, {3}, edges);
+  Id position(make_group(all, "position"));
+  put_dataset(position, "value", H5T_NATIVE_DOUBLE, {1, 2, 3}, x);
+  const std::int64_t step = 0;
+  put_dataset(position, "step", H5T_NATIVE_INT64, {1}, &step);
+}
+}  // namespace
+
 // Walls are placed from the particle centres: a NaN among them is reported by the frame
 // check, on its own axis, not as a box of range nan to nan (or on another axis).
 TEST_F(FrameStore, NanPositionInAWalledBoxIsNamedByTheFrameCheck) {
   const double nan = std::nan("");
   for (const auto& [particle, axis] : {std::pair{0, 0}, {1, 0}, {0, 1}, {1, 2}}) {
     const fs::path p = file("nan_" + std::to_string(particle) + std::to_string(axis) + ".h5");
-    {
-      Id f(H5Fcreate(p.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT));
-      Id particles(make_group(f, "particles"));
-      Id all(make_group(particles, "all"));
-      Id box(make_group(all, "box"));
-      put_string_attribute(box, "boundary", {"none", "none", "none"});
-      const double edges[3] = {10.0, 10.0, 10.0};
-      put_dataset(box, "edges", H5T_NATIVE_DOUBLE, {3}, edges);
-      Id position(make_group(all, "position"));
-      double x[1][2][3] = {{{2.0, 2.0, 2.0}, {5.0, 5.0, 5.0}}};
-      x[0][particle][axis] = nan;
-      put_dataset(position, "value", H5T_NATIVE_DOUBLE, {1, 2, 3}, x);
-      const std::int64_t step = 0;
-      put_dataset(position, "step", H5T_NATIVE_INT64, {1}, &step);
-    }
+    double x[1][2][3] = {{{2.0, 2.0, 2.0}, {5.0, 5.0, 5.0}}};
+    x[0][particle][axis] = nan;
+    write_two_in_a_walled_box(p, x);
     EXPECT_EQ(test::input_error_of([&] { FrameReader(p).read(0); }),
               p.string() + ": frame 0: particle " + std::to_string(particle) + " (id " +
                   std::to_string(particle) +
@@ -623,20 +628,8 @@ TEST_F(FrameStore, NanPositionInAWalledBoxIsNamedByTheFrameCheck) {
 TEST_F(FrameStore, ACentreOutsideTheBoxIsPrintedReadably) {
   for (const double z : {1e300, 10.000001}) {
     const fs::path p = file("outside.h5");
-    {
-      Id f(H5Fcreate(p.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT));
-      Id particles(make_group(f, "particles"));
-      Id all(make_group(particles, "all"));
-      Id box(make_group(all, "box"));
-      put_string_attribute(box, "boundary", {"none", "none", "none"});
-      const double edges[3] = {10.0, 10.0, 10.0};
-      put_dataset(box, "edges", H5T_NATIVE_DOUBLE, {3}, edges);
-      Id position(make_group(all, "position"));
-      const double x[1][2][3] = {{{2.0, 2.0, 0.5}, {5.0, 5.0, z}}};
-      put_dataset(position, "value", H5T_NATIVE_DOUBLE, {1, 2, 3}, x);
-      const std::int64_t step = 0;
-      put_dataset(position, "step", H5T_NATIVE_INT64, {1}, &step);
-    }
+    const double x[1][2][3] = {{{2.0, 2.0, 0.5}, {5.0, 5.0, z}}};
+    write_two_in_a_walled_box(p, x);
     EXPECT_EQ(test::input_error_of([&] { FrameReader(p).read(0); }),
               p.string() +
                   ": /particles/all/box/edges: frame 0: expected particle centres inside a box "

@@ -33,6 +33,18 @@ Container file_box(bool periodic_x, bool periodic_z) {
   return c;
 }
 
+// Atoms 5 at (2, 2, 1) and 9 at `second`, radius 0.5, in the stated container placed in
+// file_box(false, false).
+Frame two_atoms(const StatedContainer& stated, const Eigen::Vector3d& second) {
+  Frame f;
+  f.resize(2, 3);
+  f.radius().setConstant(0.5);
+  f.position() << 2, 2, 1, second.x(), second.y(), second.z();
+  f.id() << 5, 9;
+  f.container = stated.place(file_box(false, false), "x");
+  return f;
+}
+
 }  // namespace
 
 TEST(StatedContainer, ParametersThatContradictEachOtherAreRefused) {
@@ -81,12 +93,8 @@ TEST(StatedContainer, StatedWallsReplaceTheFilesSides) {
 TEST(StatedContainer, TheFirstParticleOutsideNamesThePlacingParameter) {
   auto harness = test::make_context(schema(), {{"side_walls", {0, 4, 0, 4}}});
   const StatedContainer stated(*harness);
-  Frame f;
-  f.resize(2, 3);
-  f.radius().setConstant(0.5);
-  f.position() << 2, 2, 1, 0.3, 2, 1;  // the second through the wall x = 0
-  f.id() << 5, 9;
-  f.container = stated.place(file_box(false, false), "x");
+  // The second through the wall x = 0.
+  Frame f = two_atoms(stated, Eigen::Vector3d(0.3, 2, 1));
   const auto out = stated.first_outside(f, file_box(false, false), "the file's box");
   ASSERT_TRUE(out);
   EXPECT_EQ(out->particle, 1);
@@ -100,12 +108,7 @@ TEST(StatedContainer, TheFirstParticleOutsideNamesThePlacingParameter) {
 TEST(StatedContainer, ACentreBeyondTheFilesOwnBoxIsOutside) {
   auto harness = test::make_context(schema(), nlohmann::json::object());
   const StatedContainer stated(*harness);
-  Frame f;
-  f.resize(2, 3);
-  f.radius().setConstant(0.5);
-  f.position() << 2, 2, 1, 2, 2, 50;
-  f.id() << 5, 9;
-  f.container = stated.place(file_box(false, false), "x");
+  Frame f = two_atoms(stated, Eigen::Vector3d(2, 2, 50));
   const auto out = stated.first_outside(f, file_box(false, false), "the file's box");
   ASSERT_TRUE(out);
   EXPECT_EQ(out->particle, 1);
