@@ -55,6 +55,10 @@ void check_columns(const DumpIndex& index, const SnapshotHeader& h) {
 // The first line must open a snapshot; otherwise say what the file is.
 void check_is_dump(TextLines& lines, bool found, const std::string& line) {
   const std::string expected = "expected a LAMMPS dump (starting \"ITEM: TIMESTEP\"), got ";
+  if (!found && lines.ended_early()) {
+    throw InputError(lines.path() + ": " + expected +
+                     "gzip data that end before the first line (the file was cut)");
+  }
   if (!found) throw InputError(lines.path() + ": " + expected + "an empty file");
   if (line.starts_with("ITEM:")) return;
   const long number = lines.number();
@@ -112,6 +116,7 @@ DumpIndex index_snapshots(TextLines& lines, const DumpKind& kind) {
     index.snapshots.push_back(start);
   }
   index.ended_early = lines.ended_early();
+  if (!index.ended_early) lines.check_nothing_follows();
   return index;
 }
 

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "granpipe/errors.hpp"
+#include "gzip_members.hpp"
 
 namespace granpipe::lammps_dump {
 
@@ -49,8 +50,27 @@ void TextLines::check_read_error() {
     ended_early_ = true;
     return;
   }
-  const std::string why = code == Z_ERRNO ? std::strerror(errno) : message;
-  throw InputError(path_ + ": line " + std::to_string(number_ + 1) + ": cannot read: " + why);
+  if (code == Z_ERRNO) {
+    throw InputError(path_ + ": line " + std::to_string(number_ + 1) +
+                     ": cannot read: " + std::strerror(errno));
+  }
+  // zlib reads ahead in large blocks, so the fault lies somewhere after the last line read,
+  // not necessarily in the next; its message repeats the path.
+  std::string why = message;
+  if (why.starts_with(path_ + ": ")) why.erase(0, path_.size() + 2);
+  const std::string where =
+      number_ == 0 ? "before its first line" : "after line " + std::to_string(number_);
+  throw InputError(path_ + ": the gzip data are corrupt (" + why + "), found " + where);
+}
+
+void TextLines::check_nothing_follows() {
+  if (gzdirect(file_)) return;
+  const auto stray = bytes_after_gzip(path_, gztell(file_));
+  if (!stray) return;
+  throw InputError(path_ + ": expected nothing after the gzip data, got bytes that are not " +
+                   "gzip from byte " + std::to_string(*stray) +
+                   " on (text appended to a compressed file?): decompress it, append, compress "
+                   "it again");
 }
 
 std::int64_t TextLines::offset() const { return gztell(file_); }

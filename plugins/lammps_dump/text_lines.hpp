@@ -25,6 +25,9 @@ class TextLines {
   bool cut() const { return cut_; }
   // The compressed data stop before the gzip stream's end: the file was cut.
   bool ended_early() const { return ended_early_; }
+  // After the last line: InputError when bytes follow the gzip data that zlib passed over
+  // (text appended to a compressed dump).
+  void check_nothing_follows();
 
   // Where the next line starts, in bytes of the (decompressed) text, to come back to with
   // seek(offset, number of the line before it).

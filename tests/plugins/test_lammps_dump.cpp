@@ -330,6 +330,49 @@ TEST_F(LammpsDump, AGzipFileCutShortIsReadToTheCutWithAWarning) {
             std::string::npos);
 }
 
+// zlib passes silently over bytes after a gzip member that start no other: text appended
+// to a compressed dump would be left out. Members written one after another (a dump
+// appended to with gzip) are one text.
+TEST_F(LammpsDump, TextAfterTheGzipDataIsRefusedAndJoinedMembersAreRead) {
+  const std::string first = snapshot(0, atoms(), kPlain);
+  const std::string second = snapshot(10, atoms(), kPlain);
+  const fs::path file = write_gz(first + second);
+  const auto compressed_bytes = fs::file_size(file);
+  std::ofstream(file, std::ios::binary | std::ios::app) << snapshot(20, atoms(), kPlain);
+  EXPECT_EQ(refusal_of_file(file),
+            "atoms.dump.gz: expected nothing after the gzip data, got bytes that are not gzip "
+            "from byte " +
+                std::to_string(compressed_bytes) +
+                " on (text appended to a compressed file?): decompress it, append, compress it "
+                "again");
+
+  const fs::path one = write_gz(first, "one.gz"), two = write_gz(second, "two.gz");
+  const fs::path joined = dir_ / "joined.dump.gz";
+  std::ofstream(joined, std::ios::binary) << std::ifstream(one, std::ios::binary).rdbuf()
+                                          << std::ifstream(two, std::ios::binary).rdbuf();
+  EXPECT_EQ(frames(joined).size(), 2u);
+  std::ofstream(joined, std::ios::binary | std::ios::app) << "x";  // a single stray byte
+  EXPECT_EQ(refusal_of_file(joined).substr(0, 70),
+            "joined.dump.gz: expected nothing after the gzip data, got bytes that a");
+}
+
+TEST_F(LammpsDump, AGzipFileCutInItsHeaderOrCorruptIsRefusedAsSuch) {
+  const fs::path file = write_gz(snapshot(0, atoms(), kPlain));
+  fs::resize_file(file, 10);  // the gzip header alone
+  EXPECT_EQ(refusal_of_file(file),
+            "atoms.dump.gz: expected a LAMMPS dump (starting \"ITEM: TIMESTEP\"), got gzip data "
+            "that end before the first line (the file was cut)");
+  const fs::path corrupt = write_gz(snapshot(0, atoms(), kPlain));
+  {
+    std::fstream f(corrupt, std::ios::binary | std::ios::in | std::ios::out);
+    f.seekp(static_cast<std::streamoff>(fs::file_size(corrupt)) - 6);  // inside the checksum
+    f.put('\x5a');
+  }
+  EXPECT_EQ(refusal_of_file(corrupt),
+            "atoms.dump.gz: the gzip data are corrupt (incorrect data check), found before its "
+            "first line");
+}
+
 TEST_F(LammpsDump, OtherColumnsAreKeptUnderTheirNames) {
   auto s = source(write(
       "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n2\nITEM: BOX BOUNDS pp pp ff\n0 4\n-1 3\n0 10\n"

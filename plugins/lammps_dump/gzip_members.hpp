@@ -1,0 +1,18 @@
+#pragma once
+// What follows the last gzip member of a file. zlib's gzread stops silently at bytes after
+// a member that do not start another one, so text appended to a compressed dump (or a
+// second file joined to it) would be left out without a word.
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace granpipe::lammps_dump {
+
+// The offset in the file of the first byte after its gzip members that starts no member,
+// or nothing when the members run to the end of the file. `text_bytes` is the length of
+// the decompressed text, read whole: when the last member's stored length equals it, the
+// file is one member and no second pass is needed. InputError naming `path` when the file
+// cannot be read again.
+std::optional<std::int64_t> bytes_after_gzip(const std::string& path, std::int64_t text_bytes);
+
+}  // namespace granpipe::lammps_dump
