@@ -7,6 +7,7 @@
 #include <limits>
 #include <optional>
 
+#include "lifted_vertices.hpp"
 #include "pore_region.hpp"
 #include "sphere_grid.hpp"
 #include "tangent_sphere.hpp"
@@ -71,6 +72,19 @@ class Search {
     return t.radius <= 2.0 * widest_ && counts(t.centre, reach(t));
   }
 
+  // A vertex of the lifted triangulation that no cell gave: not a cell's quadruple, and
+  // clear of every sphere (the triangulation's bounds already are; this guards rounding).
+  bool is_missing(const LiftedVertex& v) const {
+    return !std::binary_search(known_.begin(), known_.end(), v.spheres) &&
+           !overlaps_any(v.sphere, v.spheres,
+                         grid_->overlapping(v.sphere.centre, v.sphere.radius, length_));
+  }
+
+  double largest_over_smallest_radius() const {
+    const auto [small, large] = std::minmax_element(radius_.begin(), radius_.end());
+    return *large / *small;
+  }
+
   // The vertices whose four spheres come within reach of the cell's tangent sphere t.
   void around(const TangentSphere& t, std::vector<Vertex>& found) const {
     std::vector<std::uint32_t> near = grid_->overlapping(t.centre, reach(t), 0.0);
@@ -125,6 +139,68 @@ class Search {
   std::vector<Quadruple> known_;  // sorted
 };
 
+using Found = std::vector<Vertex>;
+
+Found searched_around(const Search& search, const std::vector<DelaunayCell>& cells,
+                      const std::vector<std::size_t>& left_out, int threads) {
+  std::vector<TangentSphere> seeds;
+  for (std::size_t c : left_out) {
+    const std::optional<TangentSphere> t = search.solve(sorted(cells[c].vertices));
+    if (t && search.worth_searching(*t)) seeds.push_back(*t);
+  }
+  std::vector<Found> found(seeds.size());
+  const auto n = static_cast<std::ptrdiff_t>(seeds.size());
+#pragma omp parallel for schedule(dynamic) num_threads(threads)
+  for (std::ptrdiff_t s = 0; s < n; ++s) search.around(seeds[s], found[s]);
+  Found all;
+  for (const Found& f : found) all.insert(all.end(), f.begin(), f.end());
+  return all;
+}
+
+Found lifted_missing(const Search& search, const Centres& centres, const Frame& frame,
+                     double length) {
+  std::vector<double> radii(centres.points.size());
+  for (std::size_t p = 0; p < radii.size(); ++p) radii[p] = frame.radius()[centres.particle[p]];
+  Found all;
+  for (const LiftedVertex& v : lifted_vertices(centres.points, radii, length))
+    if (search.is_missing(v)) all.push_back({v.spheres, v.sphere});
+  return all;
+}
+
+// One vertex of each sphere: a vertex of five or more spheres on one sphere is given by
+// several quadruples, of which a cell may hold one; the first in the spheres' order stays.
+Found one_of_each_sphere(Found all, const std::vector<DelaunayCell>& cells, double length) {
+  struct Entry {
+    Eigen::Vector3d centre;
+    std::size_t vertex;  // in all; all.size() for a cell's pore, which always stays
+  };
+  std::vector<Entry> entries;
+  for (const DelaunayCell& c : cells)
+    if (c.pore && !c.flat) entries.push_back({c.centre, all.size()});
+  for (std::size_t v = 0; v < all.size(); ++v) entries.push_back({all[v].sphere.centre, v});
+  std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
+    return std::tie(a.centre[0], a.vertex) < std::tie(b.centre[0], b.vertex);
+  });
+  std::vector<bool> dropped(all.size(), false);
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    if (entries[i].vertex == all.size()) continue;
+    for (std::size_t j = i; j-- > 0 && entries[i].centre[0] - entries[j].centre[0] <= length;) {
+      const bool kept = entries[j].vertex == all.size() || !dropped[entries[j].vertex];
+      if (!kept || (entries[i].centre - entries[j].centre).norm() > length) continue;
+      if (entries[j].vertex != all.size() && entries[i].vertex < entries[j].vertex) {
+        dropped[entries[j].vertex] = true;  // the earlier quadruple stays
+        continue;
+      }
+      dropped[entries[i].vertex] = true;
+      break;
+    }
+  }
+  Found one;
+  for (std::size_t v = 0; v < all.size(); ++v)
+    if (!dropped[v]) one.push_back(all[v]);
+  return one;
+}
+
 }  // namespace
 
 std::vector<Pore> missing_vertices(const std::vector<DelaunayCell>& cells,
@@ -133,22 +209,15 @@ std::vector<Pore> missing_vertices(const std::vector<DelaunayCell>& cells,
                                    double length, int threads) {
   if (left_out.empty()) return {};
   const Search search(cells, centres, frame, primary, length);
-  std::vector<TangentSphere> seeds;
-  for (std::size_t c : left_out) {
-    const std::optional<TangentSphere> t = search.solve(sorted(cells[c].vertices));
-    if (t && search.worth_searching(*t)) seeds.push_back(*t);
-  }
-  std::vector<std::vector<Vertex>> found(seeds.size());
-  const auto n = static_cast<std::ptrdiff_t>(seeds.size());
-#pragma omp parallel for schedule(dynamic) num_threads(threads)
-  for (std::ptrdiff_t s = 0; s < n; ++s) search.around(seeds[s], found[s]);
-  std::vector<Vertex> all;
-  for (const std::vector<Vertex>& f : found) all.insert(all.end(), f.begin(), f.end());
+  Found all = search.largest_over_smallest_radius() > kSearchedRadiusRatio
+                  ? lifted_missing(search, centres, frame, length)
+                  : searched_around(search, cells, left_out, threads);
   const auto by_spheres = [](const Vertex& a, const Vertex& b) { return a.spheres < b.spheres; };
   std::stable_sort(all.begin(), all.end(), by_spheres);
   all.erase(std::unique(all.begin(), all.end(),
                         [](const Vertex& a, const Vertex& b) { return a.spheres == b.spheres; }),
             all.end());
+  all = one_of_each_sphere(std::move(all), cells, length);
   std::vector<Pore> pores;
   pores.reserve(all.size());
   for (const Vertex& v : all) pores.push_back({v.sphere.centre, v.sphere.radius + mean_radius, 0});

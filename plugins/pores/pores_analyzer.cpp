@@ -18,12 +18,6 @@
 
 namespace granpipe::pores {
 
-namespace {
-// The largest radius ratio at which the pores were found to be exactly the weighted Voronoi
-// diagram's vertices (tests against a brute force); at 50 some inside the packing were not.
-constexpr double kSearchedRadiusRatio = 4.0;
-}  // namespace
-
 Schema schema() {
   const auto inner_region = [](const Params& p) {
     return p.choice<RegionKind>("region") == RegionKind::Inner;
@@ -244,10 +238,6 @@ void PoresAnalyzer::consume(const Frame& frame, FrameCache&) {
                       m.spheres > 0 ? pores / static_cast<double>(m.spheres) : nan,
                       m.xi.empty() ? nan : xi3 / pores, static_cast<double>(m.flat_cells)});
   frames_without_spheres_ += m.spheres == 0 ? 1 : 0;
-  if (frame.size() > 0) {
-    widest_radius_ratio_ =
-        std::max(widest_radius_ratio_, frame.radius().maxCoeff() / frame.radius().minCoeff());
-  }
   ++frames_;
 }
 
@@ -265,13 +255,6 @@ void PoresAnalyzer::finish(Results& results) {
               " frame(s) have no particle centre in the region: their pores_per_sphere is "
               "undefined (NaN)" +
               (frames_without_spheres_ == frames_ ? ", and so is the pooled one" : ""));
-  }
-  if (widest_radius_ratio_ > kSearchedRadiusRatio) {
-    log_.warn("pores: radii differ by up to a factor of " +
-              format_apart(widest_radius_ratio_, kSearchedRadiusRatio) +
-              ": pores that no Delaunay cell gives are searched for as tested up to a factor of " +
-              format_number(kSearchedRadiusRatio) +
-              " (docs/pores.md, unequal radii); beyond, some may be missing");
   }
   statistics_.report(results);
   if (const CurveFitStatus tail = volumes_.report(results, statistics_.nu());

@@ -48,8 +48,7 @@ class PoresAnalyzer : public Analyzer {
   long undefined_volumes_ = 0, hidden_spheres_ = 0;
   double bin_width_, xi_max_, v_bin_width_, v_max_;
   long frames_ = 0;
-  long frames_without_spheres_ = 0;   // in the region: pores_per_sphere undefined
-  double widest_radius_ratio_ = 1.0;  // largest over smallest radius, over the frames
+  long frames_without_spheres_ = 0;  // in the region: pores_per_sphere undefined
 };
 
 }  // namespace granpipe::pores

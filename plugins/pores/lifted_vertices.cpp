@@ -1,0 +1,117 @@
+#include "lifted_vertices.hpp"
+
+#include <CGAL/Epick_d.h>
+#include <CGAL/Regular_triangulation.h>
+#include <CGAL/Regular_triangulation_traits_adapter.h>
+#include <CGAL/Triangulation_data_structure.h>
+#include <CGAL/Triangulation_full_cell.h>
+#include <CGAL/Triangulation_vertex.h>
+
+#include <algorithm>
+#include <numeric>
+#include <optional>
+
+namespace granpipe::pores {
+
+namespace {
+
+using Kernel = CGAL::Epick_d<CGAL::Dimension_tag<4>>;
+using Traits = CGAL::Regular_triangulation_traits_adapter<Kernel>;
+using Tds = CGAL::Triangulation_data_structure<CGAL::Dimension_tag<4>,
+                                               CGAL::Triangulation_vertex<Traits, std::uint32_t>,
+                                               CGAL::Triangulation_full_cell<Traits>>;
+using Lifted = CGAL::Regular_triangulation<Kernel, Tds>;
+using FullCell = Lifted::Full_cell_handle;
+using Vertex = Lifted::Vertex_handle;
+
+// Bottom up, then across: the order a deposit's rows mostly have, and one in which each
+// point lies near the one before, so that its location from there is short.
+std::vector<std::uint32_t> insertion_order(const std::vector<Eigen::Vector3d>& centres) {
+  std::vector<std::uint32_t> order(centres.size());
+  std::iota(order.begin(), order.end(), 0u);
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return std::tie(centres[a][2], centres[a][1], centres[a][0], a) <
+           std::tie(centres[b][2], centres[b][1], centres[b][0], b);
+  });
+  return order;
+}
+
+Lifted triangulate(const std::vector<Eigen::Vector3d>& centres, const std::vector<double>& radii) {
+  Lifted lifted(4);
+  FullCell hint;
+  for (std::uint32_t i : insertion_order(centres)) {
+    const double coordinates[4] = {centres[i][0], centres[i][1], centres[i][2], radii[i]};
+    const Lifted::Weighted_point p(Kernel::Point_d(coordinates, coordinates + 4),
+                                   2.0 * radii[i] * radii[i]);
+    const Vertex v = hint == FullCell() ? lifted.insert(p) : lifted.insert(p, hint);
+    if (v == Vertex()) continue;  // hidden: a sphere inside another, touched by no vertex
+    v->data() = i;
+    hint = v->full_cell();
+  }
+  return lifted;
+}
+
+class Faces {
+ public:
+  Faces(const Lifted& lifted, const std::vector<Eigen::Vector3d>& centres,
+        const std::vector<double>& radii, double length)
+      : lifted_(lifted), centres_(centres), radii_(radii), length_(length) {}
+
+  // The tangent sphere of the face of `cell` opposite its vertex `k`, bounded by the two
+  // opposite spheres (none for a face of the hull or of a flat triangulation).
+  void solve(FullCell cell, int k, std::vector<LiftedVertex>& found) const {
+    std::array<std::uint32_t, 4> q{};
+    int n = 0;
+    for (int j = 0; j <= lifted_.current_dimension(); ++j) {
+      if (j == k) continue;
+      if (lifted_.is_infinite(cell->vertex(j))) return;
+      q[n++] = cell->vertex(j)->data();
+    }
+    std::array<Eigen::Vector3d, 4> x;
+    std::array<double, 4> r{};
+    for (int j = 0; j < 4; ++j) {
+      x[j] = centres_[q[j]];
+      r[j] = radii_[q[j]];
+    }
+    const std::optional<TangentSphere> t = tangent_sphere(x, r);
+    if (!t || t->radius < 0.0) return;
+    if (k >= 0 && (overlaps(cell->vertex(k), *t) ||
+                   overlaps(cell->neighbor(k)->vertex(cell->mirror_index(k)), *t)))
+      return;
+    std::sort(q.begin(), q.end());
+    found.push_back({q, *t});
+  }
+
+ private:
+  bool overlaps(Vertex v, const TangentSphere& t) const {
+    if (lifted_.is_infinite(v)) return false;
+    const double touch = radii_[v->data()] + t.radius - length_;
+    return touch > 0.0 && (centres_[v->data()] - t.centre).squaredNorm() < touch * touch;
+  }
+
+  const Lifted& lifted_;
+  const std::vector<Eigen::Vector3d>& centres_;
+  const std::vector<double>& radii_;
+  double length_;
+};
+
+}  // namespace
+
+std::vector<LiftedVertex> lifted_vertices(const std::vector<Eigen::Vector3d>& centres,
+                                          const std::vector<double>& radii, double length) {
+  Lifted lifted = triangulate(centres, radii);
+  const Faces faces(lifted, centres, radii, length);
+  std::vector<LiftedVertex> found;
+  if (lifted.current_dimension() == 3) {
+    for (auto c = lifted.full_cells_begin(); c != lifted.full_cells_end(); ++c)
+      faces.solve(c, -1, found);  // which returns at the hull's cells
+  } else if (lifted.current_dimension() == 4) {
+    // Each face once, from the full cell of the two that comes first in memory.
+    for (auto c = lifted.full_cells_begin(); c != lifted.full_cells_end(); ++c)
+      for (int k = 0; k <= 4; ++k)
+        if (&*c < &*c->neighbor(k)) faces.solve(c, k, found);
+  }
+  return found;
+}
+
+}  // namespace granpipe::pores
