@@ -29,8 +29,9 @@ class OutputDirectory {
   // one holding them; one holding an input file; a directory granpipe did not make; one
   // another run is writing into; an earlier run's output without `overwrite`, or one
   // holding entries its run did not write.
+  // `stages`: the names files of the run's stages start with (run_manifest.hpp).
   OutputDirectory(const std::filesystem::path& dir, bool overwrite,
-                  const std::vector<InputFile>& inputs);
+                  const std::vector<InputFile>& inputs, std::vector<std::string> stages);
   ~OutputDirectory();
   OutputDirectory(const OutputDirectory&) = delete;
   OutputDirectory& operator=(const OutputDirectory&) = delete;
@@ -57,6 +58,7 @@ class OutputDirectory {
   std::filesystem::path swap_in();
   void remove_earlier(const std::filesystem::path& dir, Log& log);
 
+  std::vector<std::string> stages_;
   std::filesystem::path final_, work_;
   bool replacing_ = false, claimed_ = false, manifest_written_ = false;
   RunMarker marker_;

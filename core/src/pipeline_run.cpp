@@ -190,6 +190,15 @@ std::vector<std::string> stage_names(const Pipeline::Impl& p) {
   return names;
 }
 
+// What the files of the stages start with (run_manifest.hpp): "source" and the analyzers'
+// and writers' names.
+std::vector<std::string> file_stages(const Pipeline::Impl& p) {
+  std::vector<std::string> names{"source"};
+  for (const PluginSpec& a : p.analyzers) names.push_back(a.name);
+  for (const PluginSpec& w : p.writers) names.push_back(w.name);
+  return names;
+}
+
 PointOutcome run_point(const Pipeline::Impl& p, std::size_t k, PointPlugins plugins,
                        const ResultStream& stream, Progress& progress, const fs::path& out) {
   const bool source_reports = plugins.source->work().reported_by_source;
@@ -400,7 +409,8 @@ RunSummary run_in_directory(const Pipeline::Impl& p, const RunOptions& options, 
   const auto t0 = std::chrono::steady_clock::now();
   const std::string started = utc_now();
   RunSummary summary;
-  OutputDirectory out(options.out.value_or(p.output_dir), options.overwrite, input_files(p));
+  OutputDirectory out(options.out.value_or(p.output_dir), options.overwrite, input_files(p),
+                      file_stages(p));
   summary.output_dir = out.final_path();
   const fs::path dir = out.work_path();  // beside output_dir while replacing an earlier run
 

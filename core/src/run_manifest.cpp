@@ -64,17 +64,53 @@ bool is_report(const fs::path& file) {
   return head.find(kReportMark) != std::string::npos;
 }
 
+const std::regex& point_folder() {
+  static const std::regex point("point_[0-9]+");
+  return point;
+}
+
+// The name of a file or folder, and the folder it is in ("" at the top), without a folder's
+// trailing '/'.
+fs::path bare_name(const Entry& e) {
+  return fs::path(e.directory ? e.name.substr(0, e.name.size() - 1) : e.name);
+}
+
+// At the top or in a point_NNN folder; folders only point_NNN at the top.
+bool where_a_run_writes(const Entry& e) {
+  const fs::path name = bare_name(e);
+  const std::string parent = name.parent_path().string();
+  if (e.directory) return parent.empty() && std::regex_match(name.string(), point_folder());
+  return parent.empty() || std::regex_match(parent, point_folder());
+}
+
 // For a run without a manifest: what any run writes before it ends.
 bool written_before_the_end(const Entry& e) {
-  static const std::regex point("point_[0-9]+");
   static const std::set<std::string> files{kRunMarkerName, "pipeline.json", "run.log",
                                            "frames.partial.h5", "results.partial.h5"};
-  const fs::path name(e.directory ? e.name.substr(0, e.name.size() - 1) : e.name);
-  const std::string parent = name.parent_path().string();
-  if (e.directory) return parent.empty() && std::regex_match(name.string(), point);
-  if (!parent.empty() && !std::regex_match(parent, point)) return false;
-  if (files.count(name.filename().string())) return true;
+  if (!where_a_run_writes(e)) return false;
+  const fs::path name = bare_name(e);
+  if (e.directory || files.count(name.filename().string())) return true;
   return name == "report.html" && is_report(e.path);
+}
+
+// `name` starts with `stage` followed by '.' or '_'.
+bool of_stage(const std::string& name, const std::string& stage) {
+  return name.size() > stage.size() && name.compare(0, stage.size(), stage) == 0 &&
+         (name[stage.size()] == '.' || name[stage.size()] == '_');
+}
+
+bool named_as_the_run_names(const Entry& e, const std::vector<std::string>& stages) {
+  static const std::set<std::string> files{"results.h5", "frames.h5"};
+  if (written_before_the_end(e)) return true;
+  if (!where_a_run_writes(e)) return false;
+  std::string file = bare_name(e).filename().string();
+  if (files.count(file) || (of_stage(file, "sweep") && file.ends_with(".csv"))) return true;
+  std::smatch point;
+  static const std::regex point_prefix("point_[0-9]+\\.");
+  if (std::regex_search(file, point, point_prefix, std::regex_constants::match_continuous))
+    file.erase(0, point.length());
+  return std::any_of(stages.begin(), stages.end(),
+                     [&](const std::string& stage) { return of_stage(file, stage); });
 }
 
 class RunEntries {
@@ -90,10 +126,12 @@ class RunEntries {
 
 }  // namespace
 
-void write_run_manifest(const fs::path& dir) {
+void write_run_manifest(const fs::path& dir, const std::vector<std::string>& stages) {
   std::string text = std::string(kHeader) + "\n" + kRunManifestName + "\n";
   for (const Entry& e : entries_below(dir))
-    if (e.name.find('\n') == std::string::npos && e.name != kRunManifestName) text += e.name + "\n";
+    if (e.name.find('\n') == std::string::npos && e.name != kRunManifestName &&
+        named_as_the_run_names(e, stages))
+      text += e.name + "\n";
   write_file_atomically(dir / kRunManifestName, text);
 }
 

@@ -370,6 +370,28 @@ TEST(OutputDirectory, OverwriteNeverFollowsASymlinkInTheEarlierRun) {
   fs::remove_all(elsewhere);
 }
 
+// The manifest listed every entry of the folder when the run ended, so a note a user wrote
+// into a fresh run's folder while it went on counted as the run's, and a later --overwrite
+// removed it without a word. Only what is named as a run names its files is listed (a
+// stage's name first: here the scribbling analyzer's table would be
+// scribbling.scalars.csv, were it to report one).
+TEST(OutputDirectory, WhatAUserAddsToAFreshRunsFolderIsNotTheRuns) {
+  const fs::path out = fresh_dir("scribbled_fresh");
+  scribble_into = out;
+  const std::string scribbling = R"({"source": {"plugin": "lattice",
+    "params": {"lattice": "sc", "cells": [2, 2, 2], "frames": 2}},
+    "analyzers": [{"plugin": "scribbling"}]})";
+  ASSERT_EQ(run(scribbling, out), "");
+  EXPECT_EQ(read(out / ".granpipe-manifest").find("notes.txt"), std::string::npos);
+  const auto before = snapshot(out);
+  EXPECT_EQ(run(kLattice, out, true),
+            out.string() +
+                ": --overwrite removes only what granpipe wrote, and this run's folder also holds "
+                "notes.txt; move them out or remove the folder yourself; nothing was changed");
+  EXPECT_EQ(snapshot(out), before);
+  fs::remove_all(out);
+}
+
 // A user who writes into the earlier run's folder while the new run goes on keeps the
 // note: the new run removes the earlier one's files and leaves the folder with the note.
 TEST(ReplacingRun, WhatAUserAddsDuringTheRunIsLeftInTheEarlierFolder) {
