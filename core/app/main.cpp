@@ -1,6 +1,7 @@
 // The granpipe executable. Exit codes: 0 ok, 2 bad input, 1 internal error.
 #include <CLI/CLI.hpp>
 #include <charconv>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <iostream>
@@ -80,6 +81,10 @@ bool is_subcommand(const char* arg) {
 int main(int argc, char** argv) {
   using namespace granpipe;
   huge_pages::restart_with_malloc_huge_pages(argv);
+  // Under a file-size limit (ulimit -f) a write past it sends SIGXFSZ, which killed the run
+  // without a word and left it marked running. Ignored, the write fails (EFBIG) and the run
+  // ends as on a full disk: one line, exit 2, marked failed.
+  std::signal(SIGXFSZ, SIG_IGN);
   // `granpipe PIPELINE.json ...` is short for `granpipe run PIPELINE.json ...`.
   std::vector<char*> args(argv, argv + argc);
   static char run_word[] = "run";
