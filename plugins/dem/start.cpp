@@ -1,5 +1,6 @@
 #include "start.hpp"
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <utility>
@@ -35,9 +36,10 @@ Start start_from_file(const PluginContext& ctx, StartFrame start, int species) {
   s.radius = f.radius();
   s.species = f.species().cast<int>();
   if (f.size() > 0 && s.species.maxCoeff() >= species) {
-    throw InputError(
-        ctx.param("species") + ": expected an entry for every species of the start frame (" +
-        std::to_string(s.species.maxCoeff() + 1) + "), got " + std::to_string(species));
+    throw InputError(ctx.param("species") +
+                     ": expected an entry for every species of the start frame (" +
+                     std::to_string(std::int64_t{s.species.maxCoeff()} + 1) + "), got " +
+                     std::to_string(species));
   }
   if (f.has("velocity")) s.velocity = f.table<double>("velocity").matrix().transpose();
   if (f.has("angular_velocity")) {

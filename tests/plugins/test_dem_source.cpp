@@ -5,9 +5,11 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <functional>
+#include <limits>
 #include <numbers>
 #include <optional>
 #include <string>
@@ -98,6 +100,27 @@ TEST(DemSource, ASphereOnTheBaseSettlesAtTheOverlapOfItsWeight) {
   EXPECT_EQ(last.contact_j()[0], partner::wall(Wall::ZLow));
   const auto& normal = last.contacts->get<Coordinates>("normal_force");
   EXPECT_NEAR(std::abs(normal(0, 2)), weight, 1e-3 * weight);
+  fs::remove(file);
+}
+
+// The count of species a start frame needs was its largest species + 1 in int, which at
+// 2^31 - 1 overflowed and read -2147483648.
+TEST(DemSource, AStartFrameOfTheLargestSpeciesNumberIsRefusedWithItsCount) {
+  const fs::path file =
+      fs::temp_directory_path() / ("granpipe_dem_species_" + std::to_string(::getpid()) + ".h5");
+  fs::remove(file);
+  Frame f;
+  f.resize(1, 3);
+  f.radius().setConstant(0.5);
+  f.position().row(0) << 0.0, 0.0, 0.5;
+  f.species()[0] = std::numeric_limits<std::int32_t>::max();
+  f.container = Container::open_top_box(3, Eigen::Vector3d(-2, -2, 0), Eigen::Vector3d(2, 2, 10));
+  FrameWriter w(file, "{}");
+  w.append(f);
+  w.close();
+  EXPECT_EQ(refusal({{"initial_file", file.string()}}),
+            "params.species: expected an entry for every species of the start frame "
+            "(2147483648), got 1");
   fs::remove(file);
 }
 
