@@ -101,6 +101,9 @@ def sweep_groups(out, over):
     for k, p in enumerate(points, start=1):
         # A point given twice would be pooled twice, or stand for the other's row.
         number = p[header.index("point")]
+        if not math.isfinite(number) or number != int(number) or number < 0:
+            refuse(f"{points_path}: data row {k}, column point: expected a point number, "
+                   f"found {number:g}")
         if number in row_of_point:
             refuse(f"{points_path}: data rows {row_of_point[number]} and {k}: expected each "
                    f"point once, found point {number:g} in both")

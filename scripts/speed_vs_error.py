@@ -15,18 +15,19 @@ its own group with its own reference, and the table has, per knob value, the mea
 of the seconds and of each |deviation|, with the standard error of that mean (_err).
 """
 import argparse
-import csv
 import os
 
 from charts import loglog_chart
 from input_error import read_pipeline, refuse
-from result_csv import read_table
+from result_csv import read_table, write_csv
 from speed_error import deviation_table, other_swept, pooled, value_namer
 
 
 def read_points(path):
-    _, header, rows = read_table(path)
-    return [dict(zip(header, row)) for row in rows], header
+    provenance, header, rows = read_table(path)
+    if not rows:
+        refuse(f"{path}: expected rows of sweep points, found only a header")
+    return provenance, [dict(zip(header, row)) for row in rows], header
 
 
 def main():
@@ -38,7 +39,7 @@ def main():
     ap.add_argument("--pool", help="swept parameter (e.g. replicas) to average the deviations over")
     args = ap.parse_args()
 
-    points, header = read_points(os.path.join(args.out, "sweep.points.csv"))
+    provenance, points, header = read_points(os.path.join(args.out, "sweep.points.csv"))
     for col in [args.knob, args.time] + args.quantity:
         if col not in header:
             refuse(f"{args.out}/sweep.points.csv: expected a column {col}, got none")
@@ -49,10 +50,9 @@ def main():
         if args.pool not in swept:
             refuse(f"{args.out}/sweep.points.csv: --pool {args.pool}: expected a swept parameter, got none")
         rows, series = pooled(rows, args.knob, args.quantity, args.pool)
-    with open(os.path.join(args.out, "speed_vs_error.csv"), "w", newline="") as f:
-        writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
-        writer.writeheader()
-        writer.writerows(rows)
+    write_csv(os.path.join(args.out, "speed_vs_error.csv"),
+              f"{provenance or '#'} speed against error by scripts/speed_vs_error.py",
+              [list(rows[0].keys())] + [list(r.values()) for r in rows])
     loglog_chart(series, "run time of the point (s)", "|deviation from the finest point|",
              os.path.join(args.out, "speed_vs_error.svg"))
     cols = ["group", args.knob, "seconds"] + [q + "_deviation" for q in args.quantity]

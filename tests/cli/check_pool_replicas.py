@@ -111,6 +111,11 @@ with tempfile.TemporaryDirectory() as out:
                             "expected a column point, found ['index', 'source.params.N', "
                             "'source.params.replica', 'packing.phi']..."),
         "a header only": ([header], "expected rows of sweep points, found only a header"),
+        # A NaN point number ended in a traceback (ValueError from int()).
+        "a point not a number": ([header, "0,100,0,0.80,0.01", "nan,100,1,0.84,0.01"],
+                                 "data row 2, column point: expected a point number, found nan"),
+        "a point not whole": ([header, "0.5,100,0,0.80,0.01"],
+                              "data row 1, column point: expected a point number, found 0.5"),
     }
     for what, (lines, message) in broken.items():
         for name in os.listdir(out):
