@@ -49,6 +49,23 @@ void check_inside(const std::string& where, const std::vector<Eigen::Vector3d>& 
   }
 }
 
+// Spheres that rest on one another stand at most a column of all n high. One far above
+// (a frame of another run, or a typo) would not come down in the redeposition's short
+// moves, so it rose with every dilation, and its height sized the grid of the search (a
+// centre at 1e8 R took gigabytes).
+void check_resting(const std::string& where, const std::vector<Eigen::Vector3d>& x,
+                   const TapBox& box) {
+  const double highest = (2.0 * static_cast<double>(x.size()) - 1.0) * box.radius;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (x[i].z() > highest * (1.0 + kTolerance)) {
+      throw InputError(where + ": sphere " + std::to_string(i) + " at z = " + number(x[i].z()) +
+                       ": expected a packing at rest on the bottom, no centre higher than a "
+                       "column of all " +
+                       std::to_string(x.size()) + " spheres, (2N - 1) R = " + number(highest));
+    }
+  }
+}
+
 void check_overlaps(const std::string& where, const std::vector<Eigen::Vector3d>& x,
                     const TapBox& box) {
   SphereGrid grid(box);
@@ -88,6 +105,7 @@ SavedPacking read_saved_packing(const StartFrame& start, const TapBox& box, long
   std::vector<Eigen::Vector3d> x(static_cast<std::size_t>(n));
   for (long k = 0; k < n; ++k) x[static_cast<std::size_t>(k)] = f.position().row(k).transpose();
   check_inside(at, x, box);
+  check_resting(at, x, box);
   check_overlaps(at, x, box);
   return {x, f.step, f.integer_observable("tap"), at};
 }

@@ -21,7 +21,8 @@ struct SavedPacking {
 
 // The centres of a start frame. Throws InputError beginning with `start.where` when the
 // frame is not 3D, holds other than `n` spheres, other radii than the box's, another box,
-// or spheres that overlap (by more than 1e-9 R) or reach through the bottom or a wall.
+// spheres that overlap (by more than 1e-9 R) or reach through the bottom or a wall, or one
+// higher than a column of all n could stand.
 SavedPacking read_saved_packing(const StartFrame& start, const TapBox& box, long n);
 
 }  // namespace granpipe::spheres3d_tap

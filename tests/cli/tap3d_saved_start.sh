@@ -60,6 +60,19 @@ with h5py.File(sys.argv[1], "r+") as f:
 PY
 "$expect" 2 "source\\.params\\.initial_file(=[^ ]*)?: .*nan\\.h5: frame [0-9]+: particle 3 \\(id 3\\): expected a finite position, got nan in coordinate z$" \
   -- "$exe" "$pipeline" "${small[@]}" --set source.params.initial_file="$work/nan.h5" --out "$work/nan_out"
+# A sphere far above the packing rose with every dilation (the moves could not bring it
+# down), and at 1e8 its height sized the search's grid (gigabytes, then a crash).
+cp "$work/first/frames.h5" "$work/far.h5"
+"$python" - "$work/far.h5" <<'PY'
+import sys, h5py
+with h5py.File(sys.argv[1], "r+") as f:
+    x = f["particles/all/position/value"]
+    last = x[-1]
+    last[5, 2] = 1e8
+    x[-1] = last
+PY
+"$expect" 2 "source\\.params\\.initial_file(=[^ ]*)?: .*far\\.h5: frame [0-9]+: sphere 5 at z = 100000000: expected a packing at rest on the bottom, no centre higher than a column of all 60 spheres, \\(2N - 1\\) R = 119$" \
+  -- "$exe" "$pipeline" "${small[@]}" --set source.params.initial_file="$work/far.h5" --out "$work/far_out"
 # initial_frame or continue_count without initial_file would change nothing: refused.
 "$expect" 2 "source\\.params\\.initial_frame=1: expected it only with initial_file \\(a frame of that file\\), got 1 without one$" \
   -- "$exe" "$pipeline" "${small[@]}" --set source.params.initial_frame=1 --out "$work/fourth"
