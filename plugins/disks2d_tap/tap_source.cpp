@@ -22,6 +22,21 @@ ChoiceNames<Protocol> choice_names(Protocol) {
 }
 // A start from a file takes its disks from it: the random placement's settings do nothing.
 bool placed_at_random(const Params& p) { return p.string("initial_file").empty(); }
+bool constant(const Params& p) { return p.choice<Protocol>("protocol") == Protocol::Constant; }
+bool annealed(const Params& p) { return p.choice<Protocol>("protocol") == Protocol::Annealed; }
+// Cooling only from an amplitude (cool_from > 0) of the constant protocol.
+bool cooled(const Params& p) { return constant(p) && p.real("cool_from") > 0.0; }
+
+const double kPaperRadius = 0.1 + 1.0 / std::numbers::sqrt2;
+
+// A radius given for a start file that stores its own did nothing, without a word.
+void refuse_unused_radius(const PluginContext& ctx, const std::optional<StartFrame>& start) {
+  const double radius = ctx.params.real("radius");
+  if (!start || !start->radii_stored || radius == kPaperRadius) return;
+  throw InputError(ctx.param("radius") + ": expected its default " + format_number(kPaperRadius) +
+                   " with an initial_file that stores radii (" + start->where + "), got " +
+                   format_number(radius));
+}
 }  // namespace
 
 Schema schema() {
@@ -32,7 +47,7 @@ Schema schema() {
       .range(1e-50, 1e50)
       .unit("length");
   s.integer("N", 2000, "number of disks").range(1, 1000000);
-  s.real("radius", 0.1 + 1.0 / std::numbers::sqrt2,
+  s.real("radius", kPaperRadius,
          "disk radius (mean radius when radius_spread > 0); the paper's 0.1 + 1/sqrt2")
       .range(1e-50, 1e50)
       .unit("length");
@@ -83,26 +98,45 @@ Schema schema() {
   s.choice<Protocol>("protocol", Protocol::Constant,
                      "constant: equilibration then production taps at A; annealed: A ramped up and "
                      "down between anneal_A_min and anneal_A_max (the paper's Fig. 8)");
-  s.real("A", 1.1, "tap amplitude of the constant protocol").min(1.0, true);
-  s.integer("equilibration_taps", 1000, "constant protocol: taps before saving").min(0);
-  s.integer("production_taps", 1000, "constant protocol: taps after equilibration").min(1);
+  s.real("A", 1.1, "tap amplitude of the constant protocol")
+      .min(1.0, true)
+      .only_where("protocol \"constant\"", constant);
+  s.integer("equilibration_taps", 1000, "constant protocol: taps before saving")
+      .min(0)
+      .only_where("protocol \"constant\"", constant);
+  s.integer("production_taps", 1000, "constant protocol: taps after equilibration")
+      .min(1)
+      .only_where("protocol \"constant\"", constant);
   s.real("cool_from", 0.0,
          "constant protocol: first cool the bed from this amplitude down to A, in steps of "
          "cool_step with cool_taps_per_step taps each, saving nothing (0: no cooling)")
-      .min(0.0);
-  s.real("cool_step", 0.02, "constant protocol: amplitude step of the cooling").min(0.0, true);
-  s.integer("cool_taps_per_step", 2000, "constant protocol: taps at each cooling amplitude").min(1);
+      .min(0.0)
+      .only_where("protocol \"constant\"", constant);
+  s.real("cool_step", 0.02, "constant protocol: amplitude step of the cooling")
+      .min(0.0, true)
+      .only_where("cool_from > 0", cooled);
+  s.integer("cool_taps_per_step", 2000, "constant protocol: taps at each cooling amplitude")
+      .min(1)
+      .only_where("cool_from > 0", cooled);
   s.integer("save_every", 10,
             "save every k-th production tap (annealed: every k-th tap of each amplitude step)")
       .min(1);
   s.real("anneal_A_min", 1.0, "annealed protocol: lowest amplitude (1: a tap that does nothing)")
-      .min(1.0);
-  s.real("anneal_A_max", 2.0, "annealed protocol: highest amplitude").min(1.0, true);
-  s.integer("anneal_steps", 20, "annealed protocol: amplitude steps per rise or fall").min(1);
-  s.integer("anneal_taps_per_step", 100, "annealed protocol: taps at each amplitude").min(1);
+      .min(1.0)
+      .only_where("protocol \"annealed\"", annealed);
+  s.real("anneal_A_max", 2.0, "annealed protocol: highest amplitude")
+      .min(1.0, true)
+      .only_where("protocol \"annealed\"", annealed);
+  s.integer("anneal_steps", 20, "annealed protocol: amplitude steps per rise or fall")
+      .min(1)
+      .only_where("protocol \"annealed\"", annealed);
+  s.integer("anneal_taps_per_step", 100, "annealed protocol: taps at each amplitude")
+      .min(1)
+      .only_where("protocol \"annealed\"", annealed);
   s.integer("anneal_cycles", 5,
             "annealed protocol: rise-and-fall cycles (the first rise is kept apart)")
-      .min(1);
+      .min(1)
+      .only_where("protocol \"annealed\"", annealed);
   s.integer("replica", 0,
             "independent copy of the run: each value draws other random numbers (sweep it to "
             "average over independent simulations)")
@@ -232,6 +266,7 @@ TapSource::TapSource(const PluginContext& ctx)
               ctx.params.choice<Dilation>("dilation"), ctx.params.choice<McOrder>("mc_order")) {
   const Params& p = ctx.params;
   const std::optional<StartFrame> start = read_start_frame(ctx, p.real("radius"));
+  refuse_unused_radius(ctx, start);
   packing_ = start ? saved_bed(ctx, *start) : random_placement(ctx, replica_seeds(ctx));
   if (p.real("delta") > packing_.min_radius()) {
     std::ostringstream s;

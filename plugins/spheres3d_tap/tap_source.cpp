@@ -77,6 +77,17 @@ EpsilonProtocol epsilon_protocol(const PluginContext& ctx) {
       << hi;
     throw InputError(s.str());
   }
+  // The ramp turns at the last whole step: a top between two steps was never reached, and
+  // said nothing (0.1 to 0.25 in steps of 0.1 turned at 0.2).
+  const double steps = std::round((hi - lo) / step);
+  if (std::abs(lo + steps * step - hi) > 1e-9 * step) {
+    std::ostringstream s;
+    s << ctx.param("ramp_root_max")
+      << ": expected ramp_root_min + a whole number of ramp_root_step (" << lo << " + k " << step
+      << "), got " << hi << ": the ramp would turn at "
+      << lo + std::floor((hi - lo) / step + 1e-9) * step;
+    throw InputError(s.str());
+  }
   if (hi * hi > 1.0) {
     std::ostringstream s;
     s << ctx.param("ramp_root_max")
@@ -100,6 +111,12 @@ Seeds replica_seeds(const PluginContext& ctx) {
 }  // namespace
 
 Schema schema() {
+  const auto constant = [](const Params& p) {
+    return p.choice<Protocol>("protocol") == Protocol::Constant;
+  };
+  const auto ramp = [](const Params& p) {
+    return p.choice<Protocol>("protocol") == Protocol::Ramp;
+  };
   Schema s;
   s.integer("N", 4096, "number of spheres (the paper's 4096)").range(1, 1000000);
   s.real("radius", 1.0, "sphere radius R").range(1e-50, 1e50).unit("length");
@@ -124,19 +141,31 @@ Schema schema() {
                      "constant: taps taps at epsilon; ramp: sqrt(epsilon) stepped from "
                      "ramp_root_min to ramp_root_max and back (the paper's Fig. 4)");
   s.real("epsilon", 0.05, "constant protocol: tap dilation, centre heights z -> z (1 + epsilon)")
-      .range(0.0, 1.0);
-  s.integer("taps", 100, "constant protocol: taps after the start").min(0);
-  s.real("ramp_root_min", 0.025, "ramp protocol: lowest sqrt(epsilon)").range(0.0, 1.0);
-  s.real("ramp_root_max", 0.4, "ramp protocol: highest sqrt(epsilon)").range(0.0, 1.0);
+      .range(0.0, 1.0)
+      .only_where("protocol \"constant\"", constant);
+  s.integer("taps", 100, "constant protocol: taps after the start")
+      .min(0)
+      .only_where("protocol \"constant\"", constant);
+  s.real("ramp_root_min", 0.025, "ramp protocol: lowest sqrt(epsilon)")
+      .range(0.0, 1.0)
+      .only_where("protocol \"ramp\"", ramp);
+  s.real("ramp_root_max", 0.4,
+         "ramp protocol: highest sqrt(epsilon), reached from ramp_root_min in whole steps")
+      .range(0.0, 1.0)
+      .only_where("protocol \"ramp\"", ramp);
   s.real("ramp_root_step", 0.025, "ramp protocol: step of sqrt(epsilon) (the paper's 0.025)")
-      .range(1e-6, 1.0);
+      .range(1e-6, 1.0)
+      .only_where("protocol \"ramp\"", ramp);
   s.integer("ramp_taps_per_step", 4000, "ramp protocol: taps at each value (the paper's 4000)")
-      .min(1);
+      .min(1)
+      .only_where("protocol \"ramp\"", ramp);
   s.integer("ramp_legs", 3,
             "ramp protocol: legs, alternately up and down (the paper's up, down, up: 3)")
-      .range(1, 1000);
+      .range(1, 1000)
+      .only_where("protocol \"ramp\"", ramp);
   s.integer("save_every", 10,
-            "save every k-th tap, the start (tap 0) and, in a ramp, the last tap at each value")
+            "save every k-th tap, the start (tap 0), the last tap and, in a ramp, the last tap "
+            "at each value")
       .min(1);
   s.boolean("log_frames", true, "also save taps spaced evenly in log(tap), ten per decade");
   s.boolean("save_start", true,
@@ -180,6 +209,11 @@ TapSource::TapSource(const PluginContext& ctx)
           "per_tap", Table({"tap", "epsilon", "leg", "mean_height", "mc_trials", "mc_acceptance"},
                            "every tap: its epsilon and ramp leg, <Z> after "
                            "redeposition, trial moves, accepted fraction"))) {
+  if (!schedule_.start && protocol_.taps() == 0) {
+    throw InputError(ctx.param("save_start") +
+                     ": expected true for a run of no tap (taps 0), got false: the run would "
+                     "save no frame");
+  }
   const std::optional<StartFrame> start = read_start_frame(ctx, box_.radius);
   // Without a file it would change nothing: a start meant to continue a run would
   // silently begin a new one.
@@ -304,7 +338,11 @@ bool TapSource::next(Frame& frame) {
     }
     seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     record(stats, e);
-    if ((starting ? schedule_.start : schedule_.saves(tap_)) || (e.leg >= 0 && e.ends_step)) {
+    // The last tap too: its packing is the run's result, and the one a continuation starts
+    // from (taps 120 in steps of 50 left the last 20 unsaved).
+    const bool last = !starting && tap_ == protocol_.taps();
+    if ((starting ? schedule_.start : schedule_.saves(tap_)) || (e.leg >= 0 && e.ends_step) ||
+        last) {
       to_frame(frame, stats, e);
       return true;
     }

@@ -673,6 +673,23 @@ std::vector<Frame> run_source(const nlohmann::json& params, std::uint64_t seed,
 
 }  // namespace
 
+// A parameter of the other protocol did nothing, without a word: the annealed run's A,
+// the constant run's anneal_A_max, and cool_step without cool_from.
+TEST(Disks2dTapSource, AParameterOfTheOtherProtocolIsRefused) {
+  const auto refusal = [](const nlohmann::json& params) {
+    return granpipe::test::input_error_of([&] { run_source(params, 1); });
+  };
+  EXPECT_EQ(refusal({{"protocol", "annealed"}, {"A", 1.7}}),
+            "test: params.A: expected its default 1.1 (it acts only with protocol \"constant\"; "
+            "here protocol is \"annealed\"), got 1.7");
+  EXPECT_EQ(refusal({{"anneal_A_max", 3.0}}),
+            "test: params.anneal_A_max: expected its default 2 (it acts only with protocol "
+            "\"annealed\"; here protocol is \"constant\"), got 3.0");
+  EXPECT_EQ(refusal({{"cool_step", 0.05}}),
+            "test: params.cool_step: expected its default 0.02 (it acts only with cool_from > 0; "
+            "here cool_from is 0), got 0.05");
+}
+
 TEST(Disks2dTapSource, SameSeedSameFrames) {
   const auto params = nlohmann::json({{"N", std::int64_t{120}},
                                       {"width", 10.0},
@@ -921,5 +938,12 @@ TEST(Disks2dTapSource, StartsFromAFrameOfASavedFile) {
             "test: params.initial_fraction: expected its default 0.3 (it acts only with "
             "initial_file \"\"; here initial_file is \"" +
                 file.string() + "\"), got 0.2");
+  // Nor did a radius: the file stores the disks' own.
+  EXPECT_EQ(granpipe::test::input_error_of([&] {
+              from_file({{"radius", 2.0}});
+            }),
+            "params.radius: expected its default 0.807107 with an initial_file that stores radii "
+            "(params.initial_file: " +
+                file.string() + ": frame 1), got 2");
   fs::remove_all(dir);
 }
