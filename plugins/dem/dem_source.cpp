@@ -236,7 +236,11 @@ Schema schema() {
          "initial state too")
       .min(0.0)
       .unit("time");
-  s.real("skin", 0.2, "neighbour-list skin, in smallest diameters").min(0.0, true);
+  // Beyond a couple of diameters the lists hold hundreds of pairs a sphere, which the
+  // memory estimate of about 2 kB a sphere does not cover (1e12 took gigabytes).
+  s.real("skin", 0.2, "neighbour-list skin, in smallest diameters, at most 2")
+      .min(0.0, true)
+      .max(2.0);
   s.boolean("adapt_threads", true,
             "run on one thread while that is measured to be faster than all (a busy machine); "
             "false: always all");

@@ -48,6 +48,9 @@ Start start_from_file(const PluginContext& ctx, StartFrame start, int species) {
   return {std::move(s), f.container};
 }
 
+// The widest cylinder, in small diameters: the lattice's rows and columns are counted in int.
+constexpr double kWidestCylinder = 1e6;
+
 // The bed's refusals, each naming the parameter at fault (loose_lattice's own checks can
 // only name the bed as a whole).
 void check_bed(const PluginContext& ctx) {
@@ -65,6 +68,10 @@ void check_bed(const PluginContext& ctx) {
   if (!(b.real("cylinder_diameter") >= narrowest)) {
     refuse("cylinder_diameter", "at least " + format_number(narrowest) + " (a sphere of diameter " +
                                     format_number(d) + " and its nudge)");
+  }
+  if (!(b.real("cylinder_diameter") <= kWidestCylinder * d)) {
+    refuse("cylinder_diameter", "at most " + format_number(kWidestCylinder) + " small diameters, " +
+                                    format_number(kWidestCylinder * d));
   }
   if (!(b.real("intruder_diameter") < b.real("cylinder_diameter"))) {
     refuse("intruder_diameter",

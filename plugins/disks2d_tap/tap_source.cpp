@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <optional>
 #include <sstream>
@@ -28,6 +29,9 @@ bool annealed(const Params& p) { return p.choice<Protocol>("protocol") == Protoc
 bool cooled(const Params& p) { return constant(p) && p.real("cool_from") > 0.0; }
 
 const double kPaperRadius = 0.1 + 1.0 / std::numbers::sqrt2;
+// The shaker's grid is as tall as the loops could lift a disk (one jump a loop): 10^8 loops
+// took gigabytes, 10^12 overflowed the count.
+constexpr std::int64_t kMostMcLoops = 100000;
 
 // A radius given for a start file that stores its own did nothing, without a word.
 void refuse_unused_radius(const PluginContext& ctx, const std::optional<StartFrame>& start) {
@@ -91,7 +95,7 @@ Schema schema() {
   s.integer("mc_loops", kPaperMatchedMcLoops,
             "Monte Carlo loops after each dilation, each trying one jump per disk; the "
             "default puts the order-disorder transition where the paper's 'about 20' do")
-      .min(0);
+      .range(0, kMostMcLoops);
   s.choice<McOrder>("mc_order", McOrder::Index,
                     "order in which a Monte Carlo loop visits the disks: by index, the same in "
                     "every loop, or a fresh random permutation per loop");

@@ -418,6 +418,42 @@ TEST(DemDamping, AirDragBringsAFallingSphereToItsTerminalSlipAgainstTheContainer
   EXPECT_NEAR(velocity(e, 0).x(), 0.0, 1e-15);
 }
 
+// The lattice scanned each layer's whole square of sites: a cylinder 10^12 diameters wide
+// hung even `granpipe validate`. Each row now scans only its chord; the sites and their
+// order are a full scan's (here without jitter, an intruder's hole cut out), and a bed of
+// a few spheres in a cylinder 10^6 diameters wide is built at once.
+TEST(DemLooseLattice, RowsScanOnlyTheirChordAndKeepTheFullScansSites) {
+  const double radius = 0.5, spacing = 1.03, cylinder = 6.125, intruder = 1.58;
+  const dem::InitialState bed = dem::loose_lattice({.count = 2000,
+                                                    .radius = radius,
+                                                    .cylinder_radius = cylinder,
+                                                    .spacing = spacing,
+                                                    .jitter = 0.0,
+                                                    .intruder_radius = intruder,
+                                                    .seed = 3});
+  const double reach = cylinder - radius - 0.01 * radius;
+  const Vector3d nut(0.0, 0.0, intruder * 1.01);
+  std::vector<Vector3d> full{nut};
+  const int half = static_cast<int>(reach / spacing) + 1;
+  for (int layer = 0; full.size() < 2001; ++layer) {
+    const double z = radius * 1.01 + layer * spacing, shift = layer % 2 ? 0.5 * spacing : 0.0;
+    for (int i = -half; i <= half && full.size() < 2001; ++i)
+      for (int j = -half; j <= half && full.size() < 2001; ++j) {
+        const Vector3d x(i * spacing + shift, j * spacing + shift, z);
+        if (std::hypot(x.x(), x.y()) <= reach &&
+            (x - nut).norm() >= intruder + radius + 0.01 * radius)
+          full.push_back(x);
+      }
+  }
+  ASSERT_EQ(bed.position.cols(), 2001);
+  for (Eigen::Index k = 0; k < bed.position.cols(); ++k)
+    EXPECT_EQ(Vector3d(bed.position.col(k)), full[static_cast<std::size_t>(k)]) << k;
+  const dem::InitialState wide = dem::loose_lattice(
+      {.count = 60, .radius = 0.5, .cylinder_radius = 5e5, .spacing = 1.03, .seed = 3});
+  ASSERT_EQ(wide.position.cols(), 60);
+  for (Eigen::Index k = 0; k < 60; ++k) EXPECT_LE(wide.position.col(k).head<2>().norm(), 5e5);
+}
+
 namespace {
 
 // A bed of n unit spheres dropped from a loose lattice into a cylinder of radius R, with

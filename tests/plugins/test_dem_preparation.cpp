@@ -236,6 +236,12 @@ TEST(DemSource, TheStartIsEitherAFileOrABed) {
   expect_refusal(narrow,
                  "params.bed.cylinder_diameter: expected at least 1.03 (a sphere of "
                  "diameter 1 and its nudge), got 1");
+  // 10^12 wide hung even `granpipe validate` (the lattice's rows overflowed int).
+  nlohmann::json vast = small_preparation();
+  vast["bed"]["cylinder_diameter"] = 1e12;
+  expect_refusal(vast,
+                 "params.bed.cylinder_diameter: expected at most 1e+06 small diameters, 1e+06, "
+                 "got 1e+12");
   expect_refusal(one_species,
                  "params.species: expected a second species for the bed's intruder (species 1), "
                  "got 1 species");

@@ -124,6 +124,14 @@ TEST(DemSource, AStartFrameOfTheLargestSpeciesNumberIsRefusedWithItsCount) {
   fs::remove(file);
 }
 
+// A skin of 10^12 diameters listed every pair: memory grew as N^2, unseen by the memory check.
+TEST(DemSource, ASkinWiderThanTwoDiametersIsRefused) {
+  const fs::path file = start_file();
+  EXPECT_EQ(refusal({{"initial_file", file.string()}, {"skin", 1e12}}),
+            "test: params.skin: expected a number > 0 and <= 2, got 1000000000000.0");
+  fs::remove(file);
+}
+
 TEST(DemSource, ATimeStepAboveTheShortestContactTimeIsRefusedNamingDt) {
   const fs::path file = start_file();
   try {
