@@ -674,8 +674,8 @@ std::vector<Frame> run_source(const nlohmann::json& params, std::uint64_t seed,
 }  // namespace
 
 // A parameter of the other protocol did nothing, without a word: the annealed run's A,
-// the constant run's anneal_A_max, and cool_step without cool_from.
-TEST(Disks2dTapSource, AParameterOfTheOtherProtocolIsRefused) {
+// the constant run's anneal_A_max, cool_step without cool_from; and mc_loops past 10^5.
+TEST(Disks2dTapSource, ParametersThatWouldDoNothingOrTooMuchAreRefused) {
   const auto refusal = [](const nlohmann::json& params) {
     return granpipe::test::input_error_of([&] { run_source(params, 1); });
   };
@@ -688,6 +688,9 @@ TEST(Disks2dTapSource, AParameterOfTheOtherProtocolIsRefused) {
   EXPECT_EQ(refusal({{"cool_step", 0.05}}),
             "test: params.cool_step: expected its default 0.02 (it acts only with cool_from > 0; "
             "here cool_from is 0), got 0.05");
+  // The shaker's grid is as tall as the loops could lift a disk: 10^8 took gigabytes.
+  EXPECT_EQ(refusal({{"mc_loops", 100000000}}),
+            "test: params.mc_loops: expected an integer in [0, 100000], got 100000000");
 }
 
 TEST(Disks2dTapSource, SameSeedSameFrames) {
