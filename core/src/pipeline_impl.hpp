@@ -17,6 +17,10 @@ struct PointSpec {
   std::vector<Params> analyzer_params, writer_params;
 };
 
+// " (sweep point k: path = value, ...)" after a message about point k of a sweep, so that
+// the value at fault is named; "" without a sweep.
+std::string sweep_point_note(const PointSpec& point, std::size_t k);
+
 // An analyzer or writer of the pipeline.
 struct PluginSpec {
   const PluginInfo* info = nullptr;

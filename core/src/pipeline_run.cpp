@@ -107,7 +107,7 @@ PointPlugins make_plugins(const Pipeline::Impl& p, std::size_t k, int threads, L
     made.source = p.source->make_source(context(
         point.source_params, seeds.derive("source:" + p.source->name), "source", "source.params"));
   } catch (const InputError& e) {
-    throw InputError(located_message(p.top(), e.what()));
+    throw InputError(located_message(p.top(), e.what()) + sweep_point_note(point, k));
   }
   FrameColumns frames(made.source->content(), p.source->name);
   // Columns an analyzer reads as the source saved them, by analyzer index, and the columns
@@ -123,7 +123,7 @@ PointPlugins make_plugins(const Pipeline::Impl& p, std::size_t k, int threads, L
           context(point.analyzer_params[a], seeds.derive("analyzer:" + spec.name), spec.name,
                   at + ".params")));
     } catch (const InputError& e) {
-      throw InputError(located_message(p.top(), e.what()));
+      throw InputError(located_message(p.top(), e.what()) + sweep_point_note(point, k));
     }
     const std::string missing = frames.lacks(made.analyzers.back()->needs());
     if (!missing.empty())
@@ -145,7 +145,7 @@ PointPlugins make_plugins(const Pipeline::Impl& p, std::size_t k, int threads, L
         made.warnings.push_back(p.origin + ": " + w);
       }
     } catch (const InputError& e) {
-      throw InputError(p.origin + ": " + e.what());
+      throw InputError(p.origin + ": " + e.what() + sweep_point_note(point, k));
     }
   }
   for (std::size_t w = 0; w < p.writers.size(); ++w) {
@@ -155,7 +155,7 @@ PointPlugins make_plugins(const Pipeline::Impl& p, std::size_t k, int threads, L
           context(point.writer_params[w], seeds.derive("writer:" + spec.name), spec.name,
                   "writers[" + std::to_string(w) + "].params")));
     } catch (const InputError& e) {
-      throw InputError(located_message(p.top(), e.what()));
+      throw InputError(located_message(p.top(), e.what()) + sweep_point_note(point, k));
     }
   }
   return made;
@@ -216,7 +216,8 @@ PointOutcome run_point(const Pipeline::Impl& p, std::size_t k, PointPlugins plug
     } catch (const InputError& e) {
       const std::string m = e.what();
       const bool names_part = m.rfind(part + ".", 0) == 0 || m.rfind(part + ":", 0) == 0;
-      throw InputError(p.origin + ": " + (names_part ? m : part + ": " + m));
+      throw InputError(p.origin + ": " + (names_part ? m : part + ": " + m) +
+                       sweep_point_note(p.points[k], k));
     } catch (const InternalError& e) {  // a plugin's bug: still say whose
       throw InternalError(p.origin + ": " + part + ": " + e.what());
     }

@@ -15,6 +15,14 @@
 #include "sweep.hpp"
 
 namespace granpipe {
+
+std::string sweep_point_note(const PointSpec& point, std::size_t k) {
+  std::string note;
+  for (const auto& [path, value] : point.assignment.items())
+    note += (note.empty() ? " (sweep point " + std::to_string(k) + ": " : ", ") + path + " = " +
+            json_brief(value);
+  return note.empty() ? note : note + ")";
+}
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
@@ -289,14 +297,11 @@ Pipeline Pipeline::parse(const std::string& text, const std::string& origin,
     PointSpec point;
     point.assignment = assignments[k];
     json p = root;
-    std::string note;
     for (const auto& [path, value] : assignments[k].items()) {
       const std::string at = top.child("sweep").child("parameters").quoted_key(path).str();
       locate(p, split_path(path, at), at) = value;
-      note += (note.empty() ? " (sweep point " + std::to_string(k) + ": " : ", ") + path + " = " +
-              json_brief(value);
     }
-    if (!note.empty()) note += ")";
+    const std::string note = sweep_point_note(point, k);
     try {
       point.source_params = validate_params(p["source"]["params"], impl->source->schema,
                                             src_at.child("params"), impl->base_dir);

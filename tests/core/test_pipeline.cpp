@@ -563,6 +563,32 @@ TEST(PipelineErrors, AnAnalyzersRefusalInFinishNamesTheAnalyzer) {
   fs::remove_all(out);
 }
 
+// A refusal while a sweep ran did not say which point it came from: the value at fault
+// could not be told in a long sweep.
+TEST(PipelineErrors, ARefusalDuringASweepNamesThePoint) {
+  const Registry r = test_registry();
+  const Pipeline p = Pipeline::parse(
+      R"({"source": {"plugin": "random", "params": {"frames": 4}},
+          "analyzers": [{"plugin": "refuses_at_the_end"}],
+          "sweep": {"parameters": {"source.params.n": [5, 6]}}})",
+      "p.json", {}, r);
+  Log log;
+  log.set_quiet(true);
+  const fs::path out = fresh_dir("sweep_refusal");
+  RunOptions o = quiet_options();
+  o.out = out;
+  o.threads = 1;
+  try {
+    p.run(o, log);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(),
+                 "p.json: analyzers[0]: expected at least 5 frames, got 4 (sweep point 0: "
+                 "source.params.n = 5)");
+  }
+  fs::remove_all(out);
+}
+
 // The "report" section is checked with the pipeline: a misspelled plot or column is
 // refused before the run, not missing from report.html after it.
 TEST(PipelineErrors, ReportSectionNamesWhatItExpected) {
