@@ -111,12 +111,24 @@ struct ContainerSeries {
 };
 
 // Puts columns in the order the writer's frames held them (`attribute` of the extension
-// group lists their names); columns it does not list keep their place after those.
+// group lists their names); columns it does not list keep their place after those. A
+// listed column missing from `base` (position aside, read on its own) is refused: a file
+// without its radii read them as the default and blamed particle 0 for a radius of 0.
 template <class C>
-void restore_order(hid_t file, const std::string& attribute, std::vector<C>& columns) {
+void restore_order(hid_t file, const std::string& attribute, const std::string& base,
+                   std::vector<C>& columns) {
   h5::Object group = h5::open_group(file, L::kExtension);
   if (!h5::has_attribute(group.id(), attribute)) return;
   const auto order = h5::read_string_attribute(group.id(), L::kExtension, attribute);
+  for (const std::string& name : order) {
+    const bool found =
+        name == "position" || std::any_of(columns.begin(), columns.end(),
+                                          [&](const C& c) { return c.property.name == name; });
+    if (!found) {
+      throw h5::Error(base + "/" + name + ": missing, where " + L::kExtension + "@" + attribute +
+                      " lists it (a damaged granpipe file?)");
+    }
+  }
   auto rank = [&](const C& c) {
     return std::find(order.begin(), order.end(), c.property.name) - order.begin();
   };
@@ -395,7 +407,7 @@ hsize_t FrameReader::Impl::open_contacts(hsize_t& frames) {
     contact_rows = std::min(contact_rows, rows_of(shape, expected, c.path));
     contact_columns.push_back(std::move(c));
   }
-  restore_order(file.id(), L::kContactColumnsAttr, contact_columns);
+  restore_order(file.id(), L::kContactColumnsAttr, L::kContacts, contact_columns);
   if (contact_columns.size() < 2 || contact_columns[0].property.name != "i" ||
       contact_columns[1].property.name != "j") {
     throw h5::Error(L::kContacts + ": expected the contact columns i and j");
@@ -558,8 +570,8 @@ void FrameReader::Impl::open(const std::string& group) {
   if (ours) {
     open_observables();
     settle_frames();
-    restore_order(file.id(), L::kParticleColumnsAttr, columns);
-    restore_order(file.id(), L::kObservablesAttr, observables);
+    restore_order(file.id(), L::kParticleColumnsAttr, base, columns);
+    restore_order(file.id(), L::kObservablesAttr, L::kObservables, observables);
   } else {
     if (info.complete) check_clocks();
     map_foreign_elements();

@@ -490,6 +490,20 @@ TEST_F(FrameStore, AnElementNamedAsNoColumnCanBeIsRefused) {
             "starting with a digit (a column's name), got \"a b\"");
 }
 
+// A granpipe file without its radius element read every radius as the default and
+// blamed particle 0 for a radius of 0; the extension's list of columns names it.
+TEST_F(FrameStore, AColumnTheFileListsButLacksIsRefused) {
+  const fs::path p = write("no_radius.h5", 3, 2, 4, Optional{false, false, false, false});
+  {
+    Id f(H5Fopen(p.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
+    Id all(H5Gopen2(f, "particles/all", H5P_DEFAULT));
+    EXPECT_GE(H5Ldelete(all, "radius", H5P_DEFAULT), 0);
+  }
+  EXPECT_EQ(reader_error(p),
+            "/particles/all/radius: missing, where /granpipe@particle_columns lists it (a "
+            "damaged granpipe file?)");
+}
+
 // Clocks: a step of 2^63 + 5 stored unsigned was clamped to 2^63 - 1; a fixed clock's
 // step past 64 bits wrapped round to a negative one; a NaN time labelled its frame.
 TEST_F(FrameStore, ClocksBeyondTheirNumbersAreRefused) {
