@@ -113,6 +113,7 @@ Frame H5mdSource::read_checked(long index) const {
   if (frame.size() == 0) throw InputError(where + ": expected particles, got none");
   check_overlaps(frame, where);
   check_inside(frame, where);
+  if (frame.contacts) check_contacts_touch(frame, where);
   return frame;
 }
 
@@ -183,6 +184,30 @@ void H5mdSource::check_inside(const Frame& frame, const std::string& where) cons
       << describe(frame, *out, max_overlap_) << " (" << max_overlap_param_
       << " sets the overlap accepted with a wall)";
   throw InputError(msg.str());
+}
+
+// A contact joins particles that touch: one between particles a whole radius (of the
+// smaller) or more apart is no contact under any writer's rounding, and entered the
+// networks as a bond (a contact to a particle 80 diameters away joined it to the largest).
+void H5mdSource::check_contacts_touch(const Frame& frame, const std::string& where) {
+  const IndexArray &i = frame.contact_i(), &j = frame.contact_j();
+  for (Eigen::Index c = 0; c < i.size(); ++c) {
+    if (!partner::is_particle(j[c])) continue;
+    Eigen::Vector3d d = Eigen::Vector3d::Zero();
+    for (int a = 0; a < frame.dim; ++a) {
+      d[a] = frame.position()(j[c], a) - frame.position()(i[c], a);
+      if (frame.container.periodic(a)) d[a] = frame.container.minimum_image(a, d[a]);
+    }
+    const double ri = frame.radius()[i[c]], rj = frame.radius()[j[c]];
+    const double gap = d.norm() - ri - rj, smaller = std::min(ri, rj);
+    if (!(gap > smaller)) continue;
+    throw InputError(where + ": contact " + std::to_string(c) +
+                     ": expected particles that touch, got " + std::to_string(i[c]) + " and " +
+                     std::to_string(j[c]) + " (ids " + std::to_string(frame.id()[i[c]]) + ", " +
+                     std::to_string(frame.id()[j[c]]) + "), whose surfaces are " +
+                     format_number(gap) + " apart (more than the smaller radius, " +
+                     format_number(smaller) + ")");
+  }
 }
 
 void H5mdSource::finish(Results& results) {

@@ -30,6 +30,7 @@ class H5mdSource : public Source {
   // with the pair and the size of the overlap, unless max_overlap allows it.
   void check_overlaps(const Frame& frame, const std::string& where) const;
   void check_inside(const Frame& frame, const std::string& where) const;
+  static void check_contacts_touch(const Frame& frame, const std::string& where);
   Frame read_checked(long index) const;
   void check_step_rises(const Frame& frame, long index);
   RunParts parts_;

@@ -177,6 +177,34 @@ TEST_F(H5mdSourceTest, OverlappingParticlesAreRefusedWithThePair) {
   EXPECT_EQ(error_of([&] { return source(p, 0, -1, 1, 0.25); }), "(no InputError)");
 }
 
+// A contact between particles far apart entered the networks as a bond (a contact to a
+// particle 80 diameters away joined it to the largest network), exit 0. Particles 0 and 2
+// of frame k lie 1 apart across the periodic side, 99 inside the box: touching.
+TEST_F(H5mdSourceTest, AContactBetweenParticlesApartIsRefused) {
+  const auto with_contact = [&](std::int64_t j) {
+    const fs::path p = dir_ / ("contact_" + std::to_string(j) + ".h5");
+    FrameWriter w(p, "{}");
+    Frame f;
+    f.resize(3, 2);
+    f.position().col(0) << -0.5, 1.5, 98.5;
+    f.position().col(1).setZero();
+    f.radius().setConstant(0.5);
+    f.container = Container::periodic_box(2, Eigen::Vector3d(-1, -5, 0), Eigen::Vector3d(99, 5, 0));
+    f.add_contacts(1);
+    f.contact_i()[0] = 0;
+    f.contact_j()[0] = j;
+    w.append(f);
+    w.close();
+    return p;
+  };
+  EXPECT_EQ(error_of([&] { return source(with_contact(2), 0, -1, 1); }), "(no InputError)");
+  const fs::path apart = with_contact(1);
+  EXPECT_EQ(error_of([&] { return source(apart, 0, -1, 1); }),
+            apart.string() +
+                ": frame 0: contact 0: expected particles that touch, got 0 and 1 (ids 0, 1), "
+                "whose surfaces are 1 apart (more than the smaller radius, 0.5)");
+}
+
 // The radius for files without one did nothing for a file with radii, without a word.
 TEST_F(H5mdSourceTest, ARadiusForAFileWithRadiiIsRefused) {
   const fs::path p = write(2);
