@@ -90,6 +90,8 @@ cp "$work/first/frames.h5" "$work/shifted.h5"
 import sys, h5py
 with h5py.File(sys.argv[1], "r+") as f:
     del f["observables/tap"]
+    listed = f["granpipe"].attrs["observables"]  # the file lists what it holds
+    f["granpipe"].attrs["observables"] = [o for o in listed if o != b"tap"]
 with h5py.File(sys.argv[2], "r+") as f:
     step = f["particles/all/position/step"]
     step[...] = step[()] - 10

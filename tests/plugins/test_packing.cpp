@@ -486,3 +486,32 @@ TEST(Packing, ARegionWithoutCentresSaysZMeanIsUndefined) {
             "undefined (NaN in per_frame, left out of the mean); said for the first such frame "
             "only");
 }
+
+// Frames of Monte Carlo moves leave gaps: z_mean 0 at the default tolerance was averaged
+// with a deposition's without a word. Two spheres a tenth of a radius apart: said once.
+TEST(Packing, AFrameWithoutATouchingPairSaysZMeanIsZero) {
+  const auto ctx = granpipe::test::make_context(granpipe::packing::schema(), {{"profile_step", 0}});
+  ctx->keep_log();
+  granpipe::packing::PackingAnalyzer analyzer(*ctx);
+  Frame f;
+  f.resize(2, 3);
+  f.radius().setConstant(1.0);
+  f.position().row(0) << 2.0, 2.0, 1.0;
+  f.position().row(1) << 4.1, 2.0, 1.0;
+  f.container =
+      granpipe::Container::open_top_box(3, Eigen::Vector3d::Zero(), Eigen::Vector3d(6, 6, 6));
+  for (int k = 0; k < 2; ++k) {
+    FrameCache cache;
+    f.step = k;
+    analyzer.consume(f, cache);
+  }
+  granpipe::Results r;
+  analyzer.finish(r);
+  EXPECT_EQ(r.scalar("z_mean").value, 0.0);
+  EXPECT_EQ(ctx->logged_lines(),
+            std::vector<std::string>{
+                "warning: packing: frame at step 0: no two particles touch within "
+                "contact_tolerance 1e-09: its z_mean is 0 (packings of Monte Carlo moves leave "
+                "gaps; a larger contact_tolerance counts near contacts); said for the first such "
+                "frame only"});
+}
