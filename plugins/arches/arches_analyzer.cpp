@@ -57,6 +57,7 @@ ArchesAnalyzer::ArchesAnalyzer(const PluginContext& ctx)
     : log_(ctx.log),
       output_dir_(ctx.output_dir),
       file_stem_(ctx.name.empty() ? "arches" : ctx.name),
+      provenance_(ctx.provenance),
       tolerance_(ctx.params.real(kContactToleranceName)),
       span_bin_(ctx.params.real("span_bin")),
       svg_frames_(static_cast<long>(ctx.params.integer("svg_frames"))),
@@ -154,7 +155,8 @@ void ArchesAnalyzer::consume(const Frame& frame, FrameCache& cache) {
     const std::string stem = tap >= 0 ? std::to_string(tap) : "frame" + std::to_string(frames_ - 1);
     write_arches_svg(
         output_dir_ / (file_stem_ + "_" + stem + ".svg"), frame, arches,
-        where + ": " + std::to_string(n) + " disks, " + std::to_string(st.arches()) + " arches");
+        where + ": " + std::to_string(n) + " disks, " + std::to_string(st.arches()) + " arches",
+        provenance_);
     ++drawn_;
   }
 }

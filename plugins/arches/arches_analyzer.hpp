@@ -30,7 +30,8 @@ class ArchesAnalyzer : public Analyzer {
 
   Log& log_;
   std::filesystem::path output_dir_;
-  std::string file_stem_;  // the analyzer's name in the pipeline
+  std::string file_stem_;   // the analyzer's name in the pipeline
+  std::string provenance_;  // the run's, for the pictures
   double tolerance_;
   double span_bin_;
   long svg_frames_;

@@ -83,7 +83,8 @@ void write_circles(std::ostream& out, const Frame& frame, const std::vector<char
 }  // namespace
 
 void write_arches_svg(const std::filesystem::path& path, const Frame& frame,
-                      const std::vector<Arch>& arches, const std::string& title) {
+                      const std::vector<Arch>& arches, const std::string& title,
+                      const std::string& provenance) {
   const Bounds b = picture_bounds(frame);
   const double width = b.x1 - b.x0, height = b.y1 - b.y0;
   const double rmean = frame.size() > 0 ? frame.radius().mean() : 0.01 * width;
@@ -98,8 +99,9 @@ void write_arches_svg(const std::filesystem::path& path, const Frame& frame,
       << "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" << kPixelWidth
       << "\" height=\"" << kPixelWidth * height / width << "\" viewBox=\"" << b.x0 << ' ' << -b.y1
       << ' ' << width << ' ' << height << "\">\n"
-      << "<title>" << escape(title)
-      << "</title>\n"
+      << "<title>" << escape(title) << "</title>\n"
+      << "<desc>" << escape(provenance)
+      << "</desc>\n"
       // y points up in the packing and down in SVG.
       << "<g transform=\"scale(1,-1)\">\n"
       << "<path d=\"" << wall_path(frame, b.y1)

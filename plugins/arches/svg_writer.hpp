@@ -10,9 +10,11 @@
 
 namespace granpipe::arches {
 
-// Writes atomically (temporary file, then rename). Throws InputError when the file
+// Writes atomically (temporary file, then rename), the run's `provenance` (pipeline,
+// version, commit, seed) as the picture's description. Throws InputError when the file
 // cannot be written.
 void write_arches_svg(const std::filesystem::path& path, const Frame& frame,
-                      const std::vector<Arch>& arches, const std::string& title);
+                      const std::vector<Arch>& arches, const std::string& title,
+                      const std::string& provenance);
 
 }  // namespace granpipe::arches

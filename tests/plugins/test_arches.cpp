@@ -479,9 +479,17 @@ TEST(ArchesSvg, OneCirclePerDiskAndOneLinePerMutualLink) {
   const Frame f = lattice_with_arches();
   const auto arches = arches_of(f);
   const auto path = dir / "lattice.svg";
-  ga::write_arches_svg(path, f, arches, "lattice <test> & arches");
+  // The picture carries the run's provenance, as every result file does (it had none).
+  ga::write_arches_svg(path, f, arches, "lattice <test> & arches",
+                       "granpipe 0.1 (abc): run \"a&b\", seed 3");
   const auto count = parse_svg(path);
   EXPECT_EQ(count.at("svg"), 1);
+  EXPECT_EQ(count.at("desc"), 1);
+  {
+    boost::property_tree::ptree svg;
+    boost::property_tree::read_xml(path.string(), svg);
+    EXPECT_EQ(svg.get<std::string>("svg.desc"), "granpipe 0.1 (abc): run \"a&b\", seed 3");
+  }
   EXPECT_EQ(count.at("circle"), kLatticeDisks);
   EXPECT_EQ(count.at("line"), 3);  // a1-a2, a2-a3, U-V
   EXPECT_FALSE(std::filesystem::exists(dir / "lattice.svg.tmp"));
