@@ -126,6 +126,9 @@ void check_particles(const Frame& f, const std::string& where) {
     if (!(r[k] > 0.0) || !std::isfinite(r[k])) refuse(k, "a finite radius > 0", r[k], "");
     if (r[k] < kSmallestRadius || r[k] > kLargestLength)
       refuse(k, "a radius from 1e-100 to 1e+100", r[k], "");
+    // Species index tables (densities, materials, the analyzers' per-species counts): a
+    // negative one was read by some and passed by others.
+    if (f.species()[k] < 0) refuse(k, "a species >= 0", f.species()[k], "");
     // Wider than a periodic box, a particle overlaps its own image: no measure holds.
     for (int a = 0; a < f.dim; ++a) {
       const double length = f.container.length(a), diameter = 2.0 * r[k];

@@ -844,6 +844,21 @@ TEST(Pipeline, SavedFramesReadBackAndCarryProvenance) {
   fs::remove_all(*o.out);
 }
 
+// A negative species was read by some plugins (h5md, packing) and refused by others (dem).
+TEST(Frame, CheckRefusesANegativeSpecies) {
+  Frame f;
+  f.resize(2, 2);
+  f.radius().setConstant(0.5);
+  f.position()(1, 0) = 1.0;
+  f.species()[1] = -3;
+  try {
+    f.check("x.h5: frame 3");
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "x.h5: frame 3: particle 1 (id 1): expected a species >= 0, got -3");
+  }
+}
+
 TEST(Frame, CheckNamesInconsistentContacts) {
   Frame f;
   f.resize(2, 2);
