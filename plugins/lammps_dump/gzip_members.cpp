@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "granpipe/errors.hpp"
@@ -15,10 +16,13 @@ namespace granpipe::lammps_dump {
 
 namespace {
 
-using File = std::unique_ptr<std::FILE, int (*)(std::FILE*)>;
+struct Close {
+  void operator()(std::FILE* f) const { std::fclose(f); }
+};
+using File = std::unique_ptr<std::FILE, Close>;
 
 File open_again(const std::string& path) {
-  File f(std::fopen(path.c_str(), "rb"), &std::fclose);
+  File f(std::fopen(path.c_str(), "rb"));
   if (!f) throw InputError(path + ": cannot open again: " + std::strerror(errno));
   return f;
 }

@@ -28,96 +28,46 @@ Quadruple sorted(Quadruple q) {
   return q;
 }
 
-class Search {
+// What a vertex of the lifted triangulation is checked against: the cells' pores (their
+// four spheres), the spheres (a grid of them), and where a pore can be.
+class Known {
  public:
-  Search(const std::vector<DelaunayCell>& cells, const Centres& centres, const Frame& frame,
-         const Region& primary, double length)
-      : centres_(centres),
-        radius_(centres.points.size()),
-        primary_(primary),
-        length_(length),
-        margin_(frame.radius().mean()) {
-    bounds_.lo.setConstant(std::numeric_limits<double>::infinity());
-    bounds_.hi = -bounds_.lo;
-    for (std::size_t p = 0; p < radius_.size(); ++p) {
+  Known(const std::vector<DelaunayCell>& cells, const Centres& centres, const Frame& frame,
+        const Region& primary, double length)
+      : centres_(centres), radius_(centres.points.size()), primary_(primary), length_(length) {
+    container_.lo = frame.container.lo;
+    container_.hi = frame.container.hi;
+    for (std::size_t p = 0; p < radius_.size(); ++p)
       radius_[p] = frame.radius()[centres.particle[p]];
-      const Eigen::Vector3d r = Eigen::Vector3d::Constant(radius_[p]);
-      bounds_.lo = bounds_.lo.cwiseMin(centres.points[p] - r);
-      bounds_.hi = bounds_.hi.cwiseMax(centres.points[p] + r);
-    }
     grid_.emplace(centres.points, radius_, 2.0 * frame.radius().mean());
-    for (const DelaunayCell& c : cells) {
-      if (!c.pore || c.flat) continue;
-      known_.push_back(sorted(c.vertices));
-      if (counts(c.centre, 0.0)) widest_ = std::max(widest_, c.radius - frame.radius().mean());
-    }
+    for (const DelaunayCell& c : cells)
+      if (c.pore && !c.flat) known_.push_back(sorted(c.vertices));
     std::sort(known_.begin(), known_.end());
   }
 
-  std::optional<TangentSphere> solve(const Quadruple& q) const {
-    std::array<Eigen::Vector3d, 4> x;
-    std::array<double, 4> r{};
-    for (int k = 0; k < 4; ++k) {
-      x[k] = centres_.points[q[k]];
-      r[k] = radius_[q[k]];
-    }
-    return tangent_sphere(x, r);
-  }
+  const std::vector<double>& radii() const { return radius_; }
 
-  // Whether the search around t can find a vertex that counts. Wider tangent spheres than
-  // twice the widest pore of a cell (slivers, the hull) overlap many spheres: a search
-  // around them would be long, and each vertex the cells miss lies in a tangent sphere at
-  // most 1.5 times as wide as its own in the packings tested (docs/notes/pores-apollonius.md).
-  bool worth_searching(const TangentSphere& t) const {
-    return t.radius <= 2.0 * widest_ && counts(t.centre, reach(t));
-  }
-
-  // A vertex of the lifted triangulation that no cell gave: not a cell's quadruple, and
-  // clear of every sphere (the triangulation's bounds already are; this guards rounding).
+  // A vertex no cell gave, where a pore can be, and clear of every sphere (the
+  // triangulation's bounds already are; this guards rounding).
   bool is_missing(const LiftedVertex& v) const {
-    return !std::binary_search(known_.begin(), known_.end(), v.spheres) &&
+    return counts(v.sphere.centre) &&
+           !std::binary_search(known_.begin(), known_.end(), v.spheres) &&
            !overlaps_any(v.sphere, v.spheres,
                          grid_->overlapping(v.sphere.centre, v.sphere.radius, length_));
   }
 
-  double largest_over_smallest_radius() const {
-    const auto [small, large] = std::minmax_element(radius_.begin(), radius_.end());
-    return *large / *small;
-  }
-
-  // The vertices whose four spheres come within reach of the cell's tangent sphere t.
-  void around(const TangentSphere& t, std::vector<Vertex>& found) const {
-    std::vector<std::uint32_t> near = grid_->overlapping(t.centre, reach(t), 0.0);
-    std::sort(near.begin(), near.end());
-    const std::size_t n = near.size();
-    for (std::size_t i = 0; i < n; ++i)
-      for (std::size_t j = i + 1; j < n; ++j)
-        for (std::size_t k = j + 1; k < n; ++k)
-          for (std::size_t l = k + 1; l < n; ++l) {
-            const Quadruple q{near[i], near[j], near[k], near[l]};
-            const std::optional<TangentSphere> s = solve(q);
-            // The spheres near are the likeliest to overlap it: they are tried first.
-            if (!s || overlaps_any(*s, q, near) ||
-                overlaps_any(*s, q, grid_->overlapping(s->centre, s->radius, length_)) ||
-                std::binary_search(known_.begin(), known_.end(), q))
-              continue;
-            found.push_back({q, *s});
-          }
-  }
-
  private:
-  double reach(const TangentSphere& t) const { return t.radius + margin_; }
-
-  // Inside the spheres' bounding box (beyond it lie the cells of their hull, whose tangent
-  // spheres are wide), and along periodic axes (where the primary box is bounded) within
-  // `reach` of the box.
-  bool counts(const Eigen::Vector3d& x, double reach) const {
-    if (!in_box(bounds_, x)) return false;
-    Eigen::Vector3d outside = Eigen::Vector3d::Zero();
-    for (int a = 0; a < 3; ++a)
-      if (std::isfinite(primary_.lo[a]))
-        outside[a] = std::max({primary_.lo[a] - x[a], x[a] - primary_.hi[a], 0.0});
-    return outside.norm() <= reach;
+  // Inside the container (beyond its walls lie vertices outside the packing's hull, which
+  // no cell gives either: below a floor, behind a wall), and along periodic axes inside
+  // the primary box, whose images give the rest.
+  bool counts(const Eigen::Vector3d& x) const {
+    for (int a = 0; a < 3; ++a) {
+      const bool periodic = std::isfinite(primary_.lo[a]);
+      const double lo = periodic ? primary_.lo[a] : container_.lo[a];
+      const double hi = periodic ? primary_.hi[a] : container_.hi[a];
+      if (x[a] < lo || x[a] > hi) return false;
+    }
+    return true;
   }
 
   bool overlaps_any(const TangentSphere& s, const Quadruple& q,
@@ -132,38 +82,18 @@ class Search {
 
   const Centres& centres_;
   std::vector<double> radius_;
-  Region primary_, bounds_;  // bounds_: of the spheres
-  double length_, margin_;
-  double widest_ = 0.0;  // the largest pore of a cell that counts
+  Region primary_, container_;  // container_: its box
+  double length_;
   std::optional<SphereGrid> grid_;
   std::vector<Quadruple> known_;  // sorted
 };
 
 using Found = std::vector<Vertex>;
 
-Found searched_around(const Search& search, const std::vector<DelaunayCell>& cells,
-                      const std::vector<std::size_t>& left_out, int threads) {
-  std::vector<TangentSphere> seeds;
-  for (std::size_t c : left_out) {
-    const std::optional<TangentSphere> t = search.solve(sorted(cells[c].vertices));
-    if (t && search.worth_searching(*t)) seeds.push_back(*t);
-  }
-  std::vector<Found> found(seeds.size());
-  const auto n = static_cast<std::ptrdiff_t>(seeds.size());
-#pragma omp parallel for schedule(dynamic) num_threads(threads)
-  for (std::ptrdiff_t s = 0; s < n; ++s) search.around(seeds[s], found[s]);
+Found lifted_missing(const Known& known, const Centres& centres, double length) {
   Found all;
-  for (const Found& f : found) all.insert(all.end(), f.begin(), f.end());
-  return all;
-}
-
-Found lifted_missing(const Search& search, const Centres& centres, const Frame& frame,
-                     double length) {
-  std::vector<double> radii(centres.points.size());
-  for (std::size_t p = 0; p < radii.size(); ++p) radii[p] = frame.radius()[centres.particle[p]];
-  Found all;
-  for (const LiftedVertex& v : lifted_vertices(centres.points, radii, length))
-    if (search.is_missing(v)) all.push_back({v.spheres, v.sphere});
+  for (const LiftedVertex& v : lifted_vertices(centres.points, known.radii(), length))
+    if (known.is_missing(v)) all.push_back({v.spheres, v.sphere});
   return all;
 }
 
@@ -203,15 +133,10 @@ Found one_of_each_sphere(Found all, const std::vector<DelaunayCell>& cells, doub
 
 }  // namespace
 
-std::vector<Pore> missing_vertices(const std::vector<DelaunayCell>& cells,
-                                   const std::vector<std::size_t>& left_out, const Centres& centres,
+std::vector<Pore> missing_vertices(const std::vector<DelaunayCell>& cells, const Centres& centres,
                                    const Frame& frame, const Region& primary, double mean_radius,
-                                   double length, int threads) {
-  if (left_out.empty()) return {};
-  const Search search(cells, centres, frame, primary, length);
-  Found all = search.largest_over_smallest_radius() > kSearchedRadiusRatio
-                  ? lifted_missing(search, centres, frame, length)
-                  : searched_around(search, cells, left_out, threads);
+                                   double length) {
+  Found all = lifted_missing(Known(cells, centres, frame, primary, length), centres, length);
   const auto by_spheres = [](const Vertex& a, const Vertex& b) { return a.spheres < b.spheres; };
   std::stable_sort(all.begin(), all.end(), by_spheres);
   all.erase(std::unique(all.begin(), all.end(),

@@ -8,8 +8,11 @@
 #include <CGAL/Triangulation_vertex.h>
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
 #include <numeric>
 #include <optional>
+#include <tuple>
 
 namespace granpipe::pores {
 

@@ -109,8 +109,8 @@ struct Measure {
           tangent_cells(cells, centres, frame, radii.mean, length(), threads);
       found.untangent_cells = count_inside(primary, left_out.untangent);
       found.fifth_sphere_cells = count_inside(primary, left_out.fifth_sphere);
-      missing = missing_vertices(cells, left_out.fifth_sphere_cells, centres, frame, primary,
-                                 radii.mean, length(), threads);
+      if (!left_out.fifth_sphere_cells.empty())
+        missing = missing_vertices(cells, centres, frame, primary, radii.mean, length());
     }
     MergedPores merged = merge_cells(cells, radii.mean, tolerance, threads);
     found.flat_cells = merged.flat_cells;
