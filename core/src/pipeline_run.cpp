@@ -127,7 +127,8 @@ PointPlugins make_plugins(const Pipeline::Impl& p, std::size_t k, int threads, L
     }
     const std::string missing = frames.lacks(made.analyzers.back()->needs());
     if (!missing.empty())
-      throw InputError(spec.where + ": " + analyzer_title(spec) + " needs " + missing);
+      throw InputError(spec.where + ": " + analyzer_title(spec) + " needs " + missing +
+                       sweep_point_note(point, k));
     for (const Property& c : made.analyzers.back()->needs().columns) {
       const bool by_analyzer =
           std::any_of(published.begin(), published.end(),

@@ -70,8 +70,8 @@ void check_bed(const PluginContext& ctx) {
                                     format_number(d) + " and its nudge)");
   }
   if (!(b.real("cylinder_diameter") <= kWidestCylinder * d)) {
-    refuse("cylinder_diameter", "at most " + format_number(kWidestCylinder) + " small diameters, " +
-                                    format_number(kWidestCylinder * d));
+    refuse("cylinder_diameter", "at most " + format_number(kWidestCylinder * d) + " (" +
+                                    format_number(kWidestCylinder) + " small diameters)");
   }
   if (!(b.real("intruder_diameter") < b.real("cylinder_diameter"))) {
     refuse("intruder_diameter",

@@ -37,9 +37,11 @@ constexpr std::int64_t kMostMcLoops = 100000;
 void refuse_unused_radius(const PluginContext& ctx, const std::optional<StartFrame>& start) {
   const double radius = ctx.params.real("radius");
   if (!start || !start->radii_stored || radius == kPaperRadius) return;
-  throw InputError(ctx.param("radius") + ": expected its default " + format_number(kPaperRadius) +
-                   " with an initial_file that stores radii (" + start->where + "), got " +
-                   format_number(radius));
+  std::ostringstream s;
+  s.precision(17);  // the default's own digits: six would read as another value
+  s << ctx.param("radius") << ": expected its default " << kPaperRadius
+    << " with an initial_file that stores radii (" << start->where << "), got " << radius;
+  throw InputError(s.str());
 }
 }  // namespace
 

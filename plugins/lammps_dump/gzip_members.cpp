@@ -43,13 +43,16 @@ class MemberWalk {
     stream_.zalloc = Z_NULL;
     stream_.zfree = Z_NULL;
     stream_.opaque = Z_NULL;
-    inflateInit2(&stream_, 15 + 16);  // a gzip header and trailer
+    ready_ = inflateInit2(&stream_, 15 + 16) == Z_OK;  // a gzip header and trailer
   }
-  ~MemberWalk() { inflateEnd(&stream_); }
+  ~MemberWalk() {
+    if (ready_) inflateEnd(&stream_);
+  }
   MemberWalk(const MemberWalk&) = delete;
   MemberWalk& operator=(const MemberWalk&) = delete;
 
   std::optional<std::int64_t> first_stray_byte() {
+    if (!ready_) throw InternalError("zlib: cannot start inflating (out of memory?)");
     std::rewind(file_);
     while (inflate_member()) {
       if (!refill()) return std::nullopt;  // the members end with the file
@@ -92,6 +95,7 @@ class MemberWalk {
 
   std::FILE* file_;
   z_stream stream_{};
+  bool ready_ = false;
   std::vector<unsigned char> in_ = std::vector<unsigned char>(1 << 16);
   std::vector<unsigned char> out_ = std::vector<unsigned char>(1 << 18);
   std::int64_t consumed_ = 0;  // bytes of the file given to inflate

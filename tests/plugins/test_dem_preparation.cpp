@@ -240,7 +240,7 @@ TEST(DemSource, TheStartIsEitherAFileOrABed) {
   nlohmann::json vast = small_preparation();
   vast["bed"]["cylinder_diameter"] = 1e12;
   expect_refusal(vast,
-                 "params.bed.cylinder_diameter: expected at most 1e+06 small diameters, 1e+06, "
+                 "params.bed.cylinder_diameter: expected at most 1e+06 (1e+06 small diameters), "
                  "got 1e+12");
   expect_refusal(one_species,
                  "params.species: expected a second species for the bed's intruder (species 1), "

@@ -945,7 +945,8 @@ TEST(Disks2dTapSource, StartsFromAFrameOfASavedFile) {
   EXPECT_EQ(granpipe::test::input_error_of([&] {
               from_file({{"radius", 2.0}});
             }),
-            "params.radius: expected its default 0.807107 with an initial_file that stores radii "
+            "params.radius: expected its default 0.80710678118654744 with an initial_file that "
+            "stores radii "
             "(params.initial_file: " +
                 file.string() + ": frame 1), got 2");
   fs::remove_all(dir);
