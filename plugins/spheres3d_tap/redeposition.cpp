@@ -1,11 +1,16 @@
 #include "redeposition.hpp"
 
 #include <cmath>
+#include <cstdint>
 
 #include "granpipe/stop_request.hpp"
 
 namespace granpipe::spheres3d_tap {
 namespace {
+
+// A mask: a stop is looked for when the trial count's low 20 bits are all set.
+constexpr std::int64_t kTrialsBetweenStopChecks = (std::int64_t{1} << 20) - 1;
+
 // How far a sphere may stray before its neighbour list is renewed, in units of the
 // longest move: measured at the paper's settings, renewals then cost a few per cent of
 // the trials' time while the lists stay about a dozen spheres long.
@@ -81,8 +86,12 @@ TapStats Redeposition::tap(std::vector<Eigen::Vector3d>& centres, double epsilon
   for (std::int64_t check = 0; check < options_.max_checks; ++check) {
     throw_if_stop_requested();  // a tap of a large packing may take minutes
     const double before = height_sum;
-    for (std::int64_t k = 0; k < per_check; ++k, ++stats.trials)
+    for (std::int64_t k = 0; k < per_check; ++k, ++stats.trials) {
+      // One check can hold any number of trials (check_moves 1e15 never ended one): the
+      // signal is looked for every 2^20 too.
+      if ((k & kTrialsBetweenStopChecks) == kTrialsBetweenStopChecks) throw_if_stop_requested();
       stats.accepted += trial(centres, rng, height_sum);
+    }
     if (std::abs(height_sum - before) < options_.eta * std::abs(before)) {
       // A dilated packing in which no sphere moved stayed lifted: it did not settle.
       stats.converged = stats.accepted > 0 || epsilon == 0.0;

@@ -99,4 +99,21 @@ timeout 10 tail --pid="$pid" -f /dev/null || { echo "FAIL: SIGTERM left the sour
 wait "$pid" || code=$?
 [ "$code" -eq 143 ] || { echo "FAIL: exit status $code after SIGTERM inside a frame, expected 143"; exit 1; }
 status_is "$out" interrupted
+# One check of a tap's redeposition can hold any number of trials: check_moves 1e15 ended
+# none, and the first SIGTERM waited for ever.
+cat >"$work/endless.json" <<'JSON'
+{"name": "endless", "source": {"plugin": "spheres3d_tap", "params": {"N": 60, "side": 6,
+ "taps": 1, "check_moves": 1000000000000000}}}
+JSON
+out=$work/endless
+"$exe" "$work/endless.json" --quiet --out "$out" 2>"$work/stderr" &
+pid=$!
+for _ in $(seq 1 100); do [ -f "$out/run.log" ] && break; sleep 0.1; done
+sleep 2
+kill -TERM "$pid"
+code=0
+timeout 10 tail --pid="$pid" -f /dev/null || { echo "FAIL: SIGTERM left the tap running 10 s"; kill -9 "$pid"; exit 1; }
+wait "$pid" || code=$?
+[ "$code" -eq 143 ] || { echo "FAIL: exit status $code after SIGTERM inside a check, expected 143"; exit 1; }
+status_is "$out" interrupted
 echo "interruptions recorded in run.log and the marker; the earlier run kept whole; a long frame stopped"
