@@ -189,6 +189,7 @@ struct FrameReader::Impl {
   void open(const std::string& group);
   std::string choose_group(const std::string& group) const;
   void check_version();
+  void check_h5md_version();
   void open_position(const std::string& base);
   void open_columns(const std::string& base);
   std::optional<ElementColumn> open_column(const std::string& base, const std::string& name);
@@ -228,6 +229,19 @@ std::string FrameReader::Impl::choose_group(const std::string& group) const {
   throw h5::Error(L::kParticles + ": " +
                   (groups.empty() ? std::string("no particles group")
                                   : "several particles groups (" + list + "); choose one"));
+}
+
+// The H5MD layer's own version, where a file states it: this reader knows 1.x, and a file
+// of another major version may lay its elements out otherwise.
+void FrameReader::Impl::check_h5md_version() {
+  if (!h5::is_group(file.id(), "/h5md")) return;
+  h5::Object h5md = h5::open_group(file.id(), "/h5md");
+  if (!h5::has_attribute(h5md.id(), "version")) return;
+  const auto version = h5::read_integer_attribute(h5md.id(), "/h5md", "version");
+  if (!version.empty() && version[0] == 1) return;
+  std::string found = version.empty() ? "none" : std::to_string(version[0]);
+  if (version.size() > 1) found += "." + std::to_string(version[1]);
+  throw h5::Error("/h5md@version: expected H5MD 1.x, got " + found);
 }
 
 void FrameReader::Impl::check_version() {
@@ -553,6 +567,7 @@ void FrameReader::Impl::open(const std::string& group) {
       if (!text.empty()) info.creator += (info.creator.empty() ? "" : " ") + text[0];
     }
   }
+  check_h5md_version();
   const bool extension = h5::is_group(file.id(), L::kExtension);
   if (extension) check_version();
   if (extension && !h5::is_group(file.id(), L::kParticles) && group.empty()) {

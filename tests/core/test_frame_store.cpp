@@ -490,6 +490,19 @@ TEST_F(FrameStore, AnElementNamedAsNoColumnCanBeIsRefused) {
             "starting with a digit (a column's name), got \"a b\"");
 }
 
+// A file of another H5MD major version was read as 1.x, whose layout it need not have.
+TEST_F(FrameStore, AnotherH5mdMajorVersionIsRefused) {
+  const fs::path p = file("h5md_2.h5");
+  write_foreign(p, false);
+  {
+    Id f(H5Fopen(p.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
+    Id h5md(H5Gopen2(f, "h5md", H5P_DEFAULT));
+    EXPECT_GE(H5Adelete(h5md, "version"), 0);
+    put_int_attribute(h5md, "version", {2, 0}, false);
+  }
+  EXPECT_EQ(reader_error(p), "/h5md@version: expected H5MD 1.x, got 2.0");
+}
+
 // A granpipe file without its radius element read every radius as the default and
 // blamed particle 0 for a radius of 0; the extension's list of columns names it.
 TEST_F(FrameStore, AColumnTheFileListsButLacksIsRefused) {
