@@ -70,6 +70,10 @@ class Faces {
       if (lifted_.is_infinite(cell->vertex(j))) return;
       q[n++] = cell->vertex(j)->data();
     }
+    // Solved in the rows' order, not the cell's: which of the face's two cells solves it
+    // follows their addresses, and another order of the four rounds otherwise (the pores
+    // then changed in their last bits with the number of threads).
+    std::sort(q.begin(), q.end());
     std::array<Eigen::Vector3d, 4> x;
     std::array<double, 4> r{};
     for (int j = 0; j < 4; ++j) {
@@ -81,7 +85,6 @@ class Faces {
     if (k >= 0 && (overlaps(cell->vertex(k), *t) ||
                    overlaps(cell->neighbor(k)->vertex(cell->mirror_index(k)), *t)))
       return;
-    std::sort(q.begin(), q.end());
     found.push_back({q, *t});
   }
 
