@@ -27,12 +27,14 @@ File open_again(const std::string& path) {
   return f;
 }
 
-// The gzip trailer's last field: the member's text length modulo 2^32, little-endian.
-bool last_member_holds(std::FILE* f, std::int64_t text_bytes) {
-  std::array<unsigned char, 4> b{};
-  if (std::fseek(f, -4, SEEK_END) != 0 || std::fread(b.data(), 1, 4, f) != 4) return false;
-  const std::uint32_t stored = b[0] | (b[1] << 8) | (b[2] << 16) | (std::uint32_t(b[3]) << 24);
-  return stored == static_cast<std::uint32_t>(text_bytes);
+// The gzip trailer: the member's CRC-32 and its text length modulo 2^32, little-endian.
+bool last_member_holds(std::FILE* f, std::int64_t text_bytes, std::uint32_t text_crc) {
+  std::array<unsigned char, 8> b{};
+  if (std::fseek(f, -8, SEEK_END) != 0 || std::fread(b.data(), 1, 8, f) != 8) return false;
+  const auto word = [&](int at) {
+    return b[at] | (b[at + 1] << 8) | (b[at + 2] << 16) | (std::uint32_t(b[at + 3]) << 24);
+  };
+  return word(0) == text_crc && word(4) == static_cast<std::uint32_t>(text_bytes);
 }
 
 // Inflates member after member (the text is thrown away) up to the first byte that is not
@@ -103,9 +105,10 @@ class MemberWalk {
 
 }  // namespace
 
-std::optional<std::int64_t> bytes_after_gzip(const std::string& path, std::int64_t text_bytes) {
+std::optional<std::int64_t> bytes_after_gzip(const std::string& path, std::int64_t text_bytes,
+                                             std::uint32_t text_crc) {
   File f = open_again(path);
-  if (last_member_holds(f.get(), text_bytes)) return std::nullopt;
+  if (last_member_holds(f.get(), text_bytes, text_crc)) return std::nullopt;
   return MemberWalk(f.get()).first_stray_byte();
 }
 

@@ -30,6 +30,8 @@ bool TextLines::next(std::string& line) {
   bool ended = false;
   while (!ended && gzgets(file_, chunk, sizeof chunk)) {
     const std::size_t n = std::strlen(chunk);
+    crc_ = static_cast<std::uint32_t>(
+        crc32(crc_, reinterpret_cast<const Bytef*>(chunk), static_cast<uInt>(n)));
     ended = n > 0 && chunk[n - 1] == '\n';
     line.append(chunk, ended ? n - 1 : n);
   }
@@ -65,7 +67,7 @@ void TextLines::check_read_error() {
 
 void TextLines::check_nothing_follows() {
   if (gzdirect(file_)) return;
-  const auto stray = bytes_after_gzip(path_, gztell(file_));
+  const auto stray = bytes_after_gzip(path_, gztell(file_), crc_);
   if (!stray) return;
   throw InputError(path_ + ": expected nothing after the gzip data, got bytes that are not " +
                    "gzip from byte " + std::to_string(*stray) +

@@ -25,8 +25,9 @@ class TextLines {
   bool cut() const { return cut_; }
   // The compressed data stop before the gzip stream's end: the file was cut.
   bool ended_early() const { return ended_early_; }
-  // After the last line: InputError when bytes follow the gzip data that zlib passed over
-  // (text appended to a compressed dump).
+  // After the last line of a first reading from the start, without seek(): InputError
+  // when bytes follow the gzip data that zlib passed over (text appended to a compressed
+  // dump).
   void check_nothing_follows();
 
   // Where the next line starts, in bytes of the (decompressed) text, to come back to with
@@ -41,6 +42,7 @@ class TextLines {
   gzFile file_;
   long number_ = 0;
   bool cut_ = false, ended_early_ = false;
+  std::uint32_t crc_ = 0;  // CRC-32 of the text read so far, for check_nothing_follows
 };
 
 }  // namespace granpipe::lammps_dump

@@ -354,6 +354,14 @@ TEST_F(LammpsDump, TextAfterTheGzipDataIsRefusedAndJoinedMembersAreRead) {
   std::ofstream(joined, std::ios::binary | std::ios::app) << "x";  // a single stray byte
   EXPECT_EQ(refusal_of_file(joined).substr(0, 70),
             "joined.dump.gz: expected nothing after the gzip data, got bytes that a");
+  // Bytes whose last four are the text's length, as a one-member file's trailer ends.
+  const std::string text = first + second;
+  const fs::path posing = write_gz(text, "posing.dump.gz");
+  std::string tail = "junk";
+  for (int k = 0; k < 4; ++k) tail += static_cast<char>((text.size() >> (8 * k)) & 0xff);
+  std::ofstream(posing, std::ios::binary | std::ios::app) << tail;
+  EXPECT_EQ(refusal_of_file(posing).substr(0, 70),
+            "posing.dump.gz: expected nothing after the gzip data, got bytes that a");
 }
 
 TEST_F(LammpsDump, AGzipFileCutInItsHeaderOrCorruptIsRefusedAsSuch) {
