@@ -9,9 +9,10 @@ void check_bin_count(double extent, double step, const std::string& what, const 
                      double most) {
   const double bins = extent / step;
   if (bins <= most) return;
+  // Digits enough to tell the count from the limit (1.0000002e7 read "1e+07" against 1e7).
   throw InputError(what + ": expected at most " + format_number(most, 15) + " " + noun + ", got " +
-                   format_number(bins) + " (" + format_number(extent) + " in steps of " +
-                   format_number(step) + ")");
+                   format_apart(bins, most) + " (" + format_number(extent) + " in steps of " +
+                   format_number(step, 15) + ")");
 }
 
 }  // namespace granpipe

@@ -449,6 +449,12 @@ TEST(Packing, StepsTooSmallForTheBedAreRefused) {
   EXPECT_EQ(granpipe::test::input_error_of([&] { measure(f, cuts); }),
             "packing.cuts_step: expected at most 10000000 cuts of phi_cuts, got 4e+12 (4 in "
             "steps of 1e-12)");
+  // Just past the limit the count read as the limit itself ("got 1e+07").
+  PackingSettings barely;
+  barely.cuts_step = 4.0 / 10000001.0;
+  EXPECT_EQ(granpipe::test::input_error_of([&] { measure(f, barely); }),
+            "packing.cuts_step: expected at most 10000000 cuts of phi_cuts, got 10000001 (4 in "
+            "steps of 3.99999960000004e-07)");
   // The analyzer names them where the pipeline has them (the harness's "params"), not
   // "packing.<name>" whatever its name and place.
   const auto ctx =
