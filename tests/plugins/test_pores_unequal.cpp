@@ -14,6 +14,7 @@
 
 #include "granpipe/frame.hpp"
 #include "granpipe/region.hpp"
+#include "lifted_vertices.hpp"
 #include "measure_pores.hpp"
 #include "plugin_harness.hpp"
 #include "pore_region.hpp"
@@ -487,6 +488,40 @@ TEST(PoresUnequal, VeryUnequalRadiiStillGiveEveryVertex) {
     ASSERT_EQ(measured.size(), brute.size());
     for (std::size_t k = 0; k < brute.size(); ++k) EXPECT_NEAR(measured[k], brute[k], 1e-9);
   }
+}
+
+// Radii an affine function of the centres (here of z) lift every sphere into one
+// hyperplane of the 4D space: the regular triangulation is then 3-dimensional, its full
+// cells are the faces, with no bound along the edge. Its vertices that overlap no sphere
+// are every vertex the brute force finds.
+TEST(PoresUnequal, LiftedSpheresInOneHyperplaneStillGiveEveryVertex) {
+  Frame f = loose_packing({.n = 40, .side = 6.0, .seed = 12, .periodic = false});
+  for (Eigen::Index k = 0; k < f.size(); ++k) f.radius()[k] = 0.3 + 0.05 * f.position()(k, 2);
+  std::vector<Eigen::Vector3d> x;
+  std::vector<double> r;
+  for (Eigen::Index k = 0; k < f.size(); ++k) {
+    x.push_back(f.position().row(k).transpose().matrix());
+    r.push_back(f.radius()[k]);
+  }
+  for (Eigen::Index k = 0; k < f.size(); ++k)
+    for (Eigen::Index j = 0; j < k; ++j)
+      ASSERT_GE((x[k] - x[j]).norm(), r[k] + r[j]) << "the packing overlaps";
+  granpipe::Region box;
+  box.lo.setConstant(-1e9);
+  box.hi.setConstant(1e9);
+  std::vector<double> lifted;
+  for (const auto& v : granpipe::pores::lifted_vertices(x, r, 1e-9)) {
+    bool empty = true;
+    for (std::size_t k = 0; k < x.size() && empty; ++k) {
+      if (std::find(v.spheres.begin(), v.spheres.end(), k) != v.spheres.end()) continue;
+      empty = (x[k] - v.sphere.centre).norm() > r[k] + v.sphere.radius - 1e-9;
+    }
+    if (empty && v.sphere.radius < 3.0) lifted.push_back(v.sphere.radius);
+  }
+  std::sort(lifted.begin(), lifted.end());
+  const std::vector<double> brute = weighted_voronoi_vertices(f, 3.0, box);
+  ASSERT_EQ(lifted.size(), brute.size());
+  for (std::size_t k = 0; k < brute.size(); ++k) EXPECT_NEAR(lifted[k], brute[k], 1e-9);
 }
 
 }  // namespace
