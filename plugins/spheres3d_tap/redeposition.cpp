@@ -1,5 +1,6 @@
 #include "redeposition.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -7,6 +8,12 @@
 
 namespace granpipe::spheres3d_tap {
 namespace {
+
+// A sweep of a few spheres is too short a check: with one sphere, one refused trial left
+// <Z> unchanged and passed for settled, the sphere still 0.03 R above its rest (and lifted
+// again by the next dilation). 64 trials all refused while a sphere can still descend are
+// rare (about 3e-5 for one 0.03 R up).
+constexpr std::int64_t kFewestTrialsPerCheck = 64;
 
 // A mask: a stop is looked for when the trial count's low 20 bits are all set.
 constexpr std::int64_t kTrialsBetweenStopChecks = (std::int64_t{1} << 20) - 1;
@@ -103,7 +110,8 @@ TapStats Redeposition::tap(std::vector<Eigen::Vector3d>& centres, double epsilon
 }
 
 std::int64_t Redeposition::trials_per_check(std::size_t spheres) const {
-  return options_.check_moves > 0 ? options_.check_moves : static_cast<std::int64_t>(spheres);
+  if (options_.check_moves > 0) return options_.check_moves;
+  return std::max(static_cast<std::int64_t>(spheres), kFewestTrialsPerCheck);
 }
 
 double Redeposition::largest_height_change(std::size_t spheres) const {

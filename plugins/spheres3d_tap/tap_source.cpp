@@ -182,7 +182,9 @@ Schema schema() {
          "a tap's redeposition stops when <Z> changes by less than this fraction between two "
          "checks")
       .range(0.0, 1.0);
-  s.integer("check_moves", 0, "trial moves between two checks of <Z> (0: N, one sweep)").min(0);
+  s.integer("check_moves", 0,
+            "trial moves between two checks of <Z> (0: N, one sweep, and at least 64)")
+      .min(0);
   s.integer("max_checks", 100000,
             "a tap's redeposition stops after this many checks even if <Z> still moves (such taps "
             "are counted in unconverged_taps)")

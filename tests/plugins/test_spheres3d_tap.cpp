@@ -397,6 +397,21 @@ TEST(Redeposition, ATapInWhichNoSphereMovedIsNotSettled) {
   EXPECT_DOUBLE_EQ(c[0].z(), 3.3 * kR);
 }
 
+// A check of one sweep is one trial for one sphere: a single refused trial left <Z> unchanged
+// and passed for settled, and a lone sphere rose tap by tap (1.10 R after five). Each check
+// now holds at least 64 trials: the sphere comes back to rest on the bottom every tap.
+TEST(Redeposition, ALoneSphereComesBackToRestEveryTap) {
+  const TapBox b = box(6.0, Sides::Walls);
+  std::vector<Eigen::Vector3d> c{{3.0 * kR, 3.0 * kR, kR}};
+  Redeposition redeposition(b, RedepositionOptions{});
+  FastRandomStream rng(49);
+  for (int tap = 0; tap < 20; ++tap) {
+    const TapStats stats = redeposition.tap(c, 0.05, rng);
+    EXPECT_TRUE(stats.converged) << tap;
+    EXPECT_LT(c[0].z(), 1.01 * kR) << tap;
+  }
+}
+
 TEST(Redeposition, TrialMovesNeverRaiseTheMeanHeight) {
   // Eq. (1) is truncated at theta = pi/2: no trial move goes up, so without a dilation
   // <Z> can only fall, and a dilated packing ends below its dilated height.
