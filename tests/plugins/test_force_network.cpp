@@ -299,15 +299,15 @@ TEST(ForceNetwork, BadParametersAreRefusedWithTheirPath) {
             "params.by_pass: expected a contact column name (letters, digits and '_', not "
             "starting with a digit) or \"\", got \"2nd pass\"");
   EXPECT_EQ(refusal(frame_of(kTable), {{"f_max", 1e9}}),
-            "params.f_max: expected at most 100000 bins of bin_width, got f_max / bin_width = "
+            "params.f_max: expected at most 10000 bins of bin_width, got f_max / bin_width = "
             "5000000000.000000");
   EXPECT_THROW(test::make_context("force_network", {{"bin_width", 0}}), InputError);
-  // f_max 0 with a bin too narrow for the frame's largest f, 2.4: the PDF stopped at 100000
-  // bins, f = 1, and left the larger forces out of it and its fit, exit 0.
+  // f_max 0 with a bin too narrow for the frame's largest f, 2.4: the PDF stopped at its
+  // most bins and left the larger forces out of it and its fit, exit 0.
   EXPECT_EQ(refusal(frame_of(kTable), {{"bin_width", 1e-5}}),
             "frame 0: bin_width (f_max 0: the PDF reaches the frame's largest f): expected at "
-            "most 100000 bins, got 240000 (2.4 in steps of 1e-05)");
-  EXPECT_EQ(refusal(frame_of(kTable), {{"bin_width", 1e-4}}), "no error");
+            "most 10000 bins, got 240000 (2.4 in steps of 1e-05)");
+  EXPECT_EQ(refusal(frame_of(kTable), {{"bin_width", 2.4e-4}}), "no error");  // 10000 bins
 }
 
 // Samples of Eq. (11) by rejection: f from exp(-beta f), kept with probability
