@@ -4,8 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <limits>
-#include <optional>
+#include <tuple>
 
 #include "lifted_vertices.hpp"
 #include "pore_region.hpp"
@@ -18,14 +17,16 @@ namespace {
 
 using Quadruple = std::array<std::uint32_t, 4>;  // sorted point rows
 
-struct Vertex {
-  Quadruple spheres;
-  TangentSphere sphere;
-};
-
 Quadruple sorted(Quadruple q) {
   std::sort(q.begin(), q.end());
   return q;
+}
+
+// The radius of each point (sphere or image).
+std::vector<double> radii_of(const Centres& centres, const Frame& frame) {
+  std::vector<double> r(centres.points.size());
+  for (std::size_t p = 0; p < r.size(); ++p) r[p] = frame.radius()[centres.particle[p]];
+  return r;
 }
 
 // What a vertex of the lifted triangulation is checked against: the cells' pores (their
@@ -34,12 +35,13 @@ class Known {
  public:
   Known(const std::vector<DelaunayCell>& cells, const Centres& centres, const Frame& frame,
         const Region& primary, double length)
-      : centres_(centres), radius_(centres.points.size()), primary_(primary), length_(length) {
+      : centres_(centres),
+        radius_(radii_of(centres, frame)),
+        primary_(primary),
+        length_(length),
+        grid_(centres.points, radius_, 2.0 * frame.radius().mean()) {
     container_.lo = frame.container.lo;
     container_.hi = frame.container.hi;
-    for (std::size_t p = 0; p < radius_.size(); ++p)
-      radius_[p] = frame.radius()[centres.particle[p]];
-    grid_.emplace(centres.points, radius_, 2.0 * frame.radius().mean());
     for (const DelaunayCell& c : cells)
       if (c.pore && !c.flat) known_.push_back(sorted(c.vertices));
     std::sort(known_.begin(), known_.end());
@@ -53,7 +55,7 @@ class Known {
     return counts(v.sphere.centre) &&
            !std::binary_search(known_.begin(), known_.end(), v.spheres) &&
            !overlaps_any(v.sphere, v.spheres,
-                         grid_->overlapping(v.sphere.centre, v.sphere.radius, length_));
+                         grid_.overlapping(v.sphere.centre, v.sphere.radius, length_));
   }
 
  private:
@@ -74,8 +76,8 @@ class Known {
                     const std::vector<std::uint32_t>& spheres) const {
     for (std::uint32_t p : spheres) {
       if (std::find(q.begin(), q.end(), p) != q.end()) continue;
-      const double touch = radius_[p] + s.radius - length_;
-      if (touch > 0.0 && (centres_.points[p] - s.centre).squaredNorm() < touch * touch) return true;
+      if (overlap_by_more_than(centres_.points[p], radius_[p], s.centre, s.radius, length_))
+        return true;
     }
     return false;
   }
@@ -84,16 +86,16 @@ class Known {
   std::vector<double> radius_;
   Region primary_, container_;  // container_: its box
   double length_;
-  std::optional<SphereGrid> grid_;
+  SphereGrid grid_;
   std::vector<Quadruple> known_;  // sorted
 };
 
-using Found = std::vector<Vertex>;
+using Found = std::vector<LiftedVertex>;
 
 Found lifted_missing(const Known& known, const Centres& centres, double length) {
   Found all;
   for (const LiftedVertex& v : lifted_vertices(centres.points, known.radii(), length))
-    if (known.is_missing(v)) all.push_back({v.spheres, v.sphere});
+    if (known.is_missing(v)) all.push_back(v);
   return all;
 }
 
@@ -137,15 +139,14 @@ std::vector<Pore> missing_vertices(const std::vector<DelaunayCell>& cells, const
                                    const Frame& frame, const Region& primary, double mean_radius,
                                    double length) {
   Found all = lifted_missing(Known(cells, centres, frame, primary, length), centres, length);
-  const auto by_spheres = [](const Vertex& a, const Vertex& b) { return a.spheres < b.spheres; };
-  std::stable_sort(all.begin(), all.end(), by_spheres);
-  all.erase(std::unique(all.begin(), all.end(),
-                        [](const Vertex& a, const Vertex& b) { return a.spheres == b.spheres; }),
-            all.end());
+  // Each face (four spheres) comes once: in the spheres' order, whatever the triangulation's.
+  std::sort(all.begin(), all.end(),
+            [](const LiftedVertex& a, const LiftedVertex& b) { return a.spheres < b.spheres; });
   all = one_of_each_sphere(std::move(all), cells, length);
   std::vector<Pore> pores;
   pores.reserve(all.size());
-  for (const Vertex& v : all) pores.push_back({v.sphere.centre, v.sphere.radius + mean_radius, 0});
+  for (const LiftedVertex& v : all)
+    pores.push_back({v.sphere.centre, v.sphere.radius + mean_radius, 0});
   return pores;
 }
 

@@ -14,6 +14,8 @@
 #include <optional>
 #include <tuple>
 
+#include "sphere_grid.hpp"
+
 namespace granpipe::pores {
 
 namespace {
@@ -90,9 +92,8 @@ class Faces {
 
  private:
   bool overlaps(Vertex v, const TangentSphere& t) const {
-    if (lifted_.is_infinite(v)) return false;
-    const double touch = radii_[v->data()] + t.radius - length_;
-    return touch > 0.0 && (centres_[v->data()] - t.centre).squaredNorm() < touch * touch;
+    return !lifted_.is_infinite(v) && overlap_by_more_than(centres_[v->data()], radii_[v->data()],
+                                                           t.centre, t.radius, length_);
   }
 
   const Lifted& lifted_;

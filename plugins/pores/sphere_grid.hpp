@@ -9,6 +9,13 @@
 
 namespace granpipe::pores {
 
+// Whether the spheres (a, ra) and (b, rb) overlap by more than `length`.
+inline bool overlap_by_more_than(const Eigen::Vector3d& a, double ra, const Eigen::Vector3d& b,
+                                 double rb, double length) {
+  const double touch = ra + rb - length;
+  return touch > 0.0 && (a - b).squaredNorm() < touch * touch;
+}
+
 class SphereGrid {
  public:
   // Cells of side `cell`; the centres may lie anywhere (periodic images beyond the box).
@@ -47,8 +54,7 @@ class SphereGrid {
           const std::size_t k = index({x, y, z});
           for (std::uint32_t s = start_[k]; s < start_[k + 1]; ++s) {
             const std::uint32_t i = order_[s];
-            const double touch = radii_[i] + radius - length;
-            if (touch > 0.0 && (centres_[i] - centre).squaredNorm() < touch * touch && !visit(i))
+            if (overlap_by_more_than(centres_[i], radii_[i], centre, radius, length) && !visit(i))
               return;
           }
         }

@@ -82,38 +82,32 @@ beside=$(compgen -G "$earlier.granpipe-new-*")
 status_is "$beside" interrupted
 grep -q "^granpipe: interrupted by SIGINT; the earlier run in $earlier is untouched; this one is in $beside, marked interrupted$" "$work/stderr" ||
   { echo "FAIL: stderr: $(cat "$work/stderr")"; exit 1; }
+# stopped_inside NAME WHAT: runs $work/NAME.json, sends SIGTERM 2 s after it starts (inside
+# one long frame) and checks that the run ends within 10 s, interrupted.
+stopped_inside() {
+  local out=$work/$1 code=0
+  "$exe" "$work/$1.json" --quiet --out "$out" 2>"$work/stderr" &
+  pid=$!
+  for _ in $(seq 1 100); do [ -f "$out/run.log" ] && break; sleep 0.1; done
+  sleep 2  # into the long frame (the wide bed's deposition alone takes longer than 10 s)
+  kill -TERM "$pid"
+  timeout 10 tail --pid="$pid" -f /dev/null || { echo "FAIL: SIGTERM left $2 running 10 s"; kill -9 "$pid"; exit 1; }
+  wait "$pid" || code=$?
+  [ "$code" -eq 143 ] || { echo "FAIL: exit status $code after SIGTERM inside $2, expected 143"; exit 1; }
+  status_is "$out" interrupted
+}
 # A source whose one frame takes minutes (a tap of a bed 60000 disks wide) looks for the
 # signal in its loops: SIGTERM waited for the frame's end (an hour with 10^5 disks).
 cat >"$work/wide.json" <<'JSON'
 {"name": "wide", "source": {"plugin": "disks2d_tap", "params": {"width": 60000, "N": 60000,
  "protocol": "constant", "A": 1.1, "equilibration_taps": 1, "production_taps": 1, "save_every": 1}}}
 JSON
-out=$work/wide
-"$exe" "$work/wide.json" --quiet --out "$out" 2>"$work/stderr" &
-pid=$!
-for _ in $(seq 1 100); do [ -f "$out/run.log" ] && break; sleep 0.1; done
-sleep 2  # into the deposition, which alone takes longer than 10 s here
-kill -TERM "$pid"
-code=0
-timeout 10 tail --pid="$pid" -f /dev/null || { echo "FAIL: SIGTERM left the source running 10 s"; kill -9 "$pid"; exit 1; }
-wait "$pid" || code=$?
-[ "$code" -eq 143 ] || { echo "FAIL: exit status $code after SIGTERM inside a frame, expected 143"; exit 1; }
-status_is "$out" interrupted
+stopped_inside wide "the source"
 # One check of a tap's redeposition can hold any number of trials: check_moves 1e15 ended
 # none, and the first SIGTERM waited for ever.
 cat >"$work/endless.json" <<'JSON'
 {"name": "endless", "source": {"plugin": "spheres3d_tap", "params": {"N": 60, "side": 6,
  "taps": 1, "check_moves": 1000000000000000}}}
 JSON
-out=$work/endless
-"$exe" "$work/endless.json" --quiet --out "$out" 2>"$work/stderr" &
-pid=$!
-for _ in $(seq 1 100); do [ -f "$out/run.log" ] && break; sleep 0.1; done
-sleep 2
-kill -TERM "$pid"
-code=0
-timeout 10 tail --pid="$pid" -f /dev/null || { echo "FAIL: SIGTERM left the tap running 10 s"; kill -9 "$pid"; exit 1; }
-wait "$pid" || code=$?
-[ "$code" -eq 143 ] || { echo "FAIL: exit status $code after SIGTERM inside a check, expected 143"; exit 1; }
-status_is "$out" interrupted
+stopped_inside endless "the tap"
 echo "interruptions recorded in run.log and the marker; the earlier run kept whole; a long frame stopped"
