@@ -58,7 +58,7 @@ class MemberWalk {
     std::rewind(file_);
     while (inflate_member()) {
       if (!refill()) return std::nullopt;  // the members end with the file
-      if (!starts_member()) return consumed_;
+      if (!starts_member()) return only_zeros_follow() ? std::nullopt : std::optional(consumed_);
       inflateReset(&stream_);
     }
     return std::nullopt;  // corrupt or cut data: gzread has said so already
@@ -93,6 +93,17 @@ class MemberWalk {
       stream_.next_in = in_.data();
     }
     return stream_.avail_in >= 2 && stream_.next_in[0] == 0x1f && stream_.next_in[1] == 0x8b;
+  }
+  // Zero bytes padding the file to a block size (tapes, some archivers): gzip ignores them,
+  // and they cannot hide text.
+  bool only_zeros_follow() {
+    do {
+      for (uInt i = 0; i < stream_.avail_in; ++i) {
+        if (stream_.next_in[i] != 0) return false;
+      }
+      stream_.avail_in = 0;
+    } while (refill());
+    return true;
   }
 
   std::FILE* file_;

@@ -46,10 +46,11 @@ std::string comment_line(const Frame& f) {
       lattice += buf;
     }
   }
-  // Without Origin viewers put the cell's corner at 0, off particles whose box starts elsewhere.
+  // Without Origin viewers put the cell's corner at 0, off particles whose box starts elsewhere;
+  // a vibrated container's walls are where they are at this frame, not at rest.
   std::string origin = "Origin=\"";
   for (int a = 0; a < 3; ++a) {
-    std::snprintf(buf, sizeof buf, "%s%.17g", a ? " " : "", a < f.dim ? c.lo[a] : 0.0);
+    std::snprintf(buf, sizeof buf, "%s%.17g", a ? " " : "", a < f.dim ? c.wall_at(a, 0) : 0.0);
     origin += buf;
   }
   std::string pbc = "pbc=\"";

@@ -362,6 +362,14 @@ TEST_F(LammpsDump, TextAfterTheGzipDataIsRefusedAndJoinedMembersAreRead) {
   std::ofstream(posing, std::ios::binary | std::ios::app) << tail;
   EXPECT_EQ(refusal_of_file(posing).substr(0, 70),
             "posing.dump.gz: expected nothing after the gzip data, got bytes that a");
+  // Zero bytes padding a file to a block size are no text (gzip ignores them too); a byte
+  // after them is.
+  const fs::path padded = write_gz(text, "padded.dump.gz");
+  std::ofstream(padded, std::ios::binary | std::ios::app) << std::string(100000, '\0');
+  EXPECT_EQ(frames(padded).size(), 2u);
+  std::ofstream(padded, std::ios::binary | std::ios::app) << "ITEM";
+  EXPECT_EQ(refusal_of_file(padded).substr(0, 70),
+            "padded.dump.gz: expected nothing after the gzip data, got bytes that a");
 }
 
 TEST_F(LammpsDump, AGzipFileCutInItsHeaderOrCorruptIsRefusedAsSuch) {

@@ -42,6 +42,17 @@ TEST(Xyz, CommentLineListsTheBoxItsOriginThePeriodicSidesAndEveryColumn) {
             "supports:I:2 pbc=\"T T F\" Time=1.5 Step=7");
 }
 
+// A vibrated container's walls move by wall_offset; a periodic side does not.
+TEST(Xyz, TheOriginIsWhereTheWallsAreAtTheFrame) {
+  Frame f = two_disks();
+  f.container.wall_offset = Eigen::Vector3d(0.25, 0.125, 0.0);
+  EXPECT_NE(xyz::comment_line(f).find("Lattice=\"4 0 0 0 2.5 0 0 0 1\" Origin=\"-1 0.5 0\""),
+            std::string::npos);
+  f.container.boundary[1] = {Boundary::Wall, Boundary::Wall};
+  EXPECT_NE(xyz::comment_line(f).find("Lattice=\"4 0 0 0 2.5 0 0 0 1\" Origin=\"-1 0.625 0\""),
+            std::string::npos);
+}
+
 TEST(Xyz, ParticleLinesHoldEveryColumnWithZEqualZeroIn2D) {
   const Frame f = two_disks();
   EXPECT_EQ(xyz::particle_line(f, 0, 17), "0.5 1 0 0.5 0 0 -1 -4");
