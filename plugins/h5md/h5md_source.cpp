@@ -1,12 +1,12 @@
 #include "h5md_source.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <sstream>
 
 #include "granpipe/deepest_overlap.hpp"
 #include "granpipe/format_number.hpp"
 #include "granpipe/particles_outside.hpp"
+#include "granpipe/separation.hpp"
 
 namespace granpipe::h5md {
 
@@ -193,13 +193,9 @@ void H5mdSource::check_contacts_touch(const Frame& frame, const std::string& whe
   const IndexArray &i = frame.contact_i(), &j = frame.contact_j();
   for (Eigen::Index c = 0; c < i.size(); ++c) {
     if (!partner::is_particle(j[c])) continue;
-    Eigen::Vector3d d = Eigen::Vector3d::Zero();
-    for (int a = 0; a < frame.dim; ++a) {
-      d[a] = frame.position()(j[c], a) - frame.position()(i[c], a);
-      if (frame.container.periodic(a)) d[a] = frame.container.minimum_image(a, d[a]);
-    }
     const double ri = frame.radius()[i[c]], rj = frame.radius()[j[c]];
-    const double gap = d.norm() - ri - rj, smaller = std::min(ri, rj);
+    const double gap = separation(frame, i[c], j[c]).norm() - ri - rj;
+    const double smaller = std::min(ri, rj);
     if (!(gap > smaller)) continue;
     throw InputError(where + ": contact " + std::to_string(c) +
                      ": expected particles that touch, got " + std::to_string(i[c]) + " and " +

@@ -9,6 +9,7 @@
 
 #include "granpipe/errors.hpp"
 #include "granpipe/format_number.hpp"
+#include "granpipe/separation.hpp"
 #include "granpipe/text_words.hpp"
 #include "position_precision.hpp"
 #include "snapshot_header.hpp"
@@ -64,12 +65,6 @@ std::int64_t row_of(const Entry& e, int column, const Frame& f, const std::strin
 
 Eigen::Vector3d centre(const Frame& f, std::int64_t row) {
   return f.position().row(row).transpose().matrix();
-}
-
-Eigen::Vector3d separation(const Frame& f, std::int64_t i, std::int64_t j) {
-  Eigen::Vector3d d = centre(f, j) - centre(f, i);
-  for (int a = 0; a < 3; ++a) d[a] = f.container.minimum_image(a, d[a]);
-  return d;
 }
 
 Eigen::Vector3d wrapped(const Container& c, Eigen::Vector3d x) {

@@ -1,10 +1,10 @@
 #include "contact_pairs.hpp"
 
 #include <algorithm>
-#include <cmath>
 
 #include "granpipe/contacts_by_distance.hpp"
 #include "granpipe/loaded_pair_contacts.hpp"
+#include "granpipe/separation.hpp"
 
 namespace granpipe::mst {
 
@@ -21,15 +21,6 @@ std::vector<Eigen::Index> pair_rows(const Frame& f) {
 
 ContactPairs::Pair ordered(std::int64_t a, std::int64_t b) {
   return {std::min(a, b), std::max(a, b)};
-}
-
-double centre_distance(const Frame& f, std::int64_t a, std::int64_t b) {
-  double r2 = 0.0;
-  for (int axis = 0; axis < f.dim; ++axis) {
-    const double d = f.container.minimum_image(axis, f.position()(b, axis) - f.position()(a, axis));
-    r2 += d * d;
-  }
-  return std::sqrt(r2);
 }
 
 // The pairs of the table rows `counted` (ascending).
@@ -71,7 +62,7 @@ ContactPairs contact_pairs(const Frame& frame, FrameCache& cache, const ContactR
                                               : from_table(frame, loaded);
   c.loaded = static_cast<std::int64_t>(loaded.size());
   c.length.reserve(c.pairs.size());
-  for (const auto& [i, j] : c.pairs) c.length.push_back(centre_distance(frame, i, j));
+  for (const auto& [i, j] : c.pairs) c.length.push_back(separation(frame, i, j).norm());
   return c;
 }
 

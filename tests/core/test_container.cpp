@@ -9,6 +9,7 @@
 #include "granpipe/container_check.hpp"
 #include "granpipe/errors.hpp"
 #include "granpipe/frame.hpp"
+#include "granpipe/separation.hpp"
 #include "plugin_harness.hpp"
 
 using namespace granpipe;
@@ -20,6 +21,17 @@ TEST(Container, MinimumImageOnPeriodicAxesOnly) {
   EXPECT_DOUBLE_EQ(c.minimum_image(0, -2.5), 1.5);
   EXPECT_DOUBLE_EQ(c.minimum_image(0, 1.0), 1.0);
   EXPECT_DOUBLE_EQ(c.minimum_image(1, 7.0), 7.0);  // walls: unchanged
+}
+
+// Two disks touching through the periodic side x: 0.5 apart, not 3.5; y is walled.
+TEST(Container, SeparationOfTwoParticlesTakesTheNearerImage) {
+  Frame f;
+  f.resize(2, 2);
+  f.container = Container::periodic_box(2, Eigen::Vector3d(-1, 0, 0), Eigen::Vector3d(3, 10, 0));
+  f.container.boundary[1] = {Boundary::Wall, Boundary::Wall};
+  f.position() << -0.75, 1.0, 2.75, 9.0;
+  EXPECT_EQ(separation(f, 0, 1), Eigen::Vector3d(-0.5, 8.0, 0.0));
+  EXPECT_EQ(separation(f, 1, 0), Eigen::Vector3d(0.5, -8.0, 0.0));
 }
 
 TEST(Container, WrapIntoTheHalfOpenBox) {

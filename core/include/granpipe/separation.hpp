@@ -1,0 +1,21 @@
+#pragma once
+// The vector between two particles' centres as the contact and distance checks need it:
+// across a periodic side the nearer image is meant, so a pair touching through the side is
+// as close as it is in the container.
+#include <Eigen/Core>
+
+#include "granpipe/frame.hpp"
+
+namespace granpipe {
+
+// From the centre of row i to that of row j, by the minimum-image convention along the
+// container's periodic axes; the components past the frame's dimension are zero.
+inline Eigen::Vector3d separation(const Frame& f, Eigen::Index i, Eigen::Index j) {
+  Eigen::Vector3d d = Eigen::Vector3d::Zero();
+  for (int a = 0; a < f.dim; ++a) {
+    d[a] = f.container.minimum_image(a, f.position()(j, a) - f.position()(i, a));
+  }
+  return d;
+}
+
+}  // namespace granpipe
