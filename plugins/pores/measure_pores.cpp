@@ -65,13 +65,27 @@ double shortest_period(const Container& c) {
   return shortest;
 }
 
+bool has_open_side(const Container& c) {
+  for (const auto& sides : c.boundary)
+    if (sides[0] == Boundary::Open || sides[1] == Boundary::Open) return true;
+  return false;
+}
+
 // Skin::wider; throws InputError after `where` when the skin spans the period already.
-Skin wider_skin(const Skin& skin, double shortfall, double period, const std::string& where) {
+// Counting every pore under an open top is the common cause: the hollows of a rough surface
+// have pore spheres as wide as the box, whatever its size.
+Skin wider_skin(const Skin& skin, double shortfall, double period, bool open_top_counted,
+                const std::string& where) {
   if (skin.bulk >= period) {
     std::ostringstream m;
     m << where << ": expected periodic sides longer than the pores (" << period
-      << "), got a pore sphere or a particle's cell wider than the box; pores of boxes this "
-         "small are not computed";
+      << "), got a pore sphere or a particle's cell wider than the box; ";
+    if (open_top_counted) {
+      m << "with an open side, region all counts the pores of the surface's hollows too: set "
+           "region inner (the pores below the top)";
+    } else {
+      m << "pores of boxes this small are not computed";
+    }
     throw InputError(m.str());
   }
   return skin.wider(shortfall, period);
@@ -179,7 +193,8 @@ struct Measure {
         shortfall = periodic ? shortfall_of(found, bounds) : 0.0;
         if (shortfall <= 0.0) return found;
       }
-      const Skin wider = wider_skin(skin, shortfall, period, where);
+      const Skin wider =
+          wider_skin(skin, shortfall, period, !region && has_open_side(frame.container), where);
       const Centres more = images_between(frame, skin, wider);
       t.insert(more.points);
       centres.points.insert(centres.points.end(), more.points.begin(), more.points.end());
