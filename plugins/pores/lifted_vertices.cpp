@@ -1,18 +1,21 @@
 #include "lifted_vertices.hpp"
 
 #include <CGAL/Epick_d.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Regular_triangulation.h>
 #include <CGAL/Regular_triangulation_traits_adapter.h>
+#include <CGAL/Spatial_sort_traits_adapter_3.h>
 #include <CGAL/Triangulation_data_structure.h>
 #include <CGAL/Triangulation_full_cell.h>
 #include <CGAL/Triangulation_vertex.h>
+#include <CGAL/property_map.h>
+#include <CGAL/spatial_sort.h>
 
 #include <algorithm>
 #include <array>
 #include <cstdint>
-#include <numeric>
 #include <optional>
-#include <tuple>
+#include <utility>
 
 #include "sphere_grid.hpp"
 
@@ -29,15 +32,23 @@ using Lifted = CGAL::Regular_triangulation<Kernel, Tds>;
 using FullCell = Lifted::Full_cell_handle;
 using Vertex = Lifted::Vertex_handle;
 
-// Bottom up, then across: the order a deposit's rows mostly have, and one in which each
-// point lies near the one before, so that its location from there is short.
+// CGAL's spatial sort of the centres (a Hilbert sort in randomised rounds, its shuffle
+// seeded the same every time), each point then located from the one before: what CGAL's
+// own insertion of a range does. Sorted bottom up and across instead, each point lay on the
+// hull of those before, whose cells every insertion then remade: half as slow again (3.4 s
+// against 2.3 s for the pores of 2·10^4 deposited spheres of radii 0.5 to 1).
 std::vector<std::uint32_t> insertion_order(const std::vector<Eigen::Vector3d>& centres) {
-  std::vector<std::uint32_t> order(centres.size());
-  std::iota(order.begin(), order.end(), 0u);
-  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-    return std::tie(centres[a][2], centres[a][1], centres[a][0], a) <
-           std::tie(centres[b][2], centres[b][1], centres[b][0], b);
-  });
+  using Point = CGAL::Epick::Point_3;
+  std::vector<std::pair<Point, std::uint32_t>> points;
+  points.reserve(centres.size());
+  for (std::size_t k = 0; k < centres.size(); ++k)
+    points.emplace_back(Point(centres[k][0], centres[k][1], centres[k][2]),
+                        static_cast<std::uint32_t>(k));
+  using SortTraits = CGAL::Spatial_sort_traits_adapter_3<
+      CGAL::Epick, CGAL::First_of_pair_property_map<std::pair<Point, std::uint32_t>>>;
+  CGAL::spatial_sort(points.begin(), points.end(), SortTraits());
+  std::vector<std::uint32_t> order(points.size());
+  for (std::size_t k = 0; k < points.size(); ++k) order[k] = points[k].second;
   return order;
 }
 
