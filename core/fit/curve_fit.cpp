@@ -4,6 +4,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_multifit_nlinear.h>
 
+#include <Eigen/SVD>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -64,9 +65,29 @@ struct MatrixFree {
 // precision: the covariance is rounding noise, a parameter is not determined.
 const double kMinRcond = std::sqrt(std::numeric_limits<double>::epsilon());
 
+// The Jacobian's reciprocal condition number with each column scaled to unit length, so
+// that parameters of very different sizes do not count as ill-determined. GSL's own rcond
+// passed a fit of Eq. (4) run off to tau = 10^20, where three parameters only enter
+// through t/tau: their columns are collinear however small, and the covariance GSL
+// returned was garbage (an error of exactly 0 on one, 10^52 on another).
+double scaled_rcond(const gsl_matrix* jac) {
+  Eigen::MatrixXd j(static_cast<Eigen::Index>(jac->size1), static_cast<Eigen::Index>(jac->size2));
+  for (Eigen::Index k = 0; k < j.rows(); ++k)
+    for (Eigen::Index m = 0; m < j.cols(); ++m)
+      j(k, m) = gsl_matrix_get(jac, static_cast<std::size_t>(k), static_cast<std::size_t>(m));
+  for (Eigen::Index m = 0; m < j.cols(); ++m) {
+    const double norm = j.col(m).norm();
+    if (!(norm > 0.0) || !std::isfinite(norm)) return 0.0;
+    j.col(m) /= norm;
+  }
+  const Eigen::VectorXd s = Eigen::JacobiSVD<Eigen::MatrixXd>(j).singularValues();
+  return s[s.size() - 1] / s[0];
+}
+
 CurveFitStatus read_solution(gsl_multifit_nlinear_workspace* w, bool weighted, CurveFit& fit) {
   double rcond = 0.0;
-  if (gsl_multifit_nlinear_rcond(&rcond, w) != GSL_SUCCESS || rcond < kMinRcond)
+  if (gsl_multifit_nlinear_rcond(&rcond, w) != GSL_SUCCESS || rcond < kMinRcond ||
+      scaled_rcond(gsl_multifit_nlinear_jac(w)) < kMinRcond)
     return CurveFitStatus::NotDetermined;
   const std::size_t p = gsl_multifit_nlinear_position(w)->size;
   const std::unique_ptr<gsl_matrix, MatrixFree> covariance(gsl_matrix_alloc(p, p));
@@ -84,6 +105,8 @@ CurveFitStatus read_solution(gsl_multifit_nlinear_workspace* w, bool weighted, C
     for (Eigen::Index l = 0; l < n; ++l)
       fit.covariance(m, l) = scale * gsl_matrix_get(covariance.get(), static_cast<std::size_t>(m),
                                                     static_cast<std::size_t>(l));
+  // GSL zeroes the rows of the columns it finds dependent: no error is exactly 0.
+  if (!(fit.covariance.diagonal().array() > 0.0).all()) return CurveFitStatus::NotDetermined;
   fit.error = fit.covariance.diagonal().cwiseSqrt();
   const bool finite = std::isfinite(fit.chi2) && fit.value.allFinite() && fit.error.allFinite();
   return finite ? CurveFitStatus::Fitted : CurveFitStatus::NotConverged;

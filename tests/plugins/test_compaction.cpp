@@ -127,6 +127,26 @@ TEST(Compaction, TooFewPointsLeaveTheFitUndefined) {
   for (double e : fit.error) EXPECT_TRUE(std::isnan(e));
 }
 
+// <Z> of 40 taps at epsilon 0.05 (tap3d_ageing, 1024 spheres, replica 2): it rises, then
+// falls, which Eq. (4) cannot follow. The fit ran off to tau = 1.4e20, where Z_inf, B and
+// tau enter only through t/tau, and was reported fitted, with an error of exactly 0 on
+// Z_inf and 1e33 on B.
+TEST(Compaction, AFitThatRunsOffIsUndeterminedNotFittedWithAZeroError) {
+  const std::vector<double> z{14.769551, 15.019905, 15.021672, 15.049595, 15.033167, 15.072977,
+                              15.099577, 15.108332, 15.050388, 15.046157, 14.973076, 15.014822,
+                              15.028316, 15.00975,  14.963616, 14.871555, 14.867611, 14.960819,
+                              14.911352, 14.974088, 15.005506, 14.909977, 14.841954, 14.829851,
+                              14.796863, 14.756641, 14.848437, 14.781976, 14.710194, 14.733209,
+                              14.774973, 14.84142,  14.847523, 14.744955, 14.681762, 14.648375,
+                              14.634517, 14.693094, 14.664514, 14.695428, 14.648993};
+  std::vector<double> t(z.size());
+  for (std::size_t k = 0; k < t.size(); ++k) t[k] = static_cast<double>(k);
+  const LawFit fit = fit_law(eq4_law(), t, z);
+  EXPECT_EQ(fit.status, CurveFitStatus::NotDetermined) << describe(fit.status);
+  for (double v : fit.value) EXPECT_TRUE(std::isnan(v));
+  for (double e : fit.error) EXPECT_TRUE(std::isnan(e));
+}
+
 // n samples of noise with S(f) ~ f^-alpha: white noise shaped by f^(-alpha/2) in Fourier space.
 std::vector<double> power_law_noise(double alpha, std::size_t n, unsigned seed) {
   std::mt19937_64 rng(seed);
