@@ -54,7 +54,7 @@ def run_point(args, pipeline, name, settings, cpu_log):
     if os.path.exists(out):
         refuse(f"{out}: expected no directory for a point not in cpu_seconds.csv, found one "
                "(an interrupted run?): remove it to run the point again")
-    command = [args.granpipe, pipeline, "--out", out, "--threads", "1", "--quiet"]
+    command = [args.granpipe, pipeline, "--out", out, "--threads", "1", "--quiet", "--no-report"]
     for key, value in settings.items():
         command += ["--set", f"{key}={json.dumps(value)}"]
     before = cpu_seconds_of_children()

@@ -246,7 +246,7 @@ def run_dir(work, name):
 def run_granpipe(work, build, cores, label, steps):
     cwd = run_dir(work, label)
     env = {"GRANPIPE_PLUGIN_PATH": os.path.join(build, "lib", "granpipe", "plugins"), "OMP_NUM_THREADS": str(cores)}
-    cmd = [os.path.join(build, "bin", "granpipe"), "granpipe.json", "--threads", str(cores), "--quiet", "--out", "out",
+    cmd = [os.path.join(build, "bin", "granpipe"), "granpipe.json", "--threads", str(cores), "--quiet", "--no-report", "--out", "out",
            "--set", f"source.params.duration={steps * DT!r}"]
     record = run_timed(cmd, cwd, env, cores)
     record["kernels"] = granpipe_kernels(os.path.join(cwd, "out", "run.log"))

@@ -20,7 +20,7 @@ BENCHMARKS = [("bench_disks2d_tap", "BM_Tap/500|BM_Tap/2000"),
               ("bench_packing", "BM_MeasurePacking/16|BM_MeasurePacking/32")]
 PIPELINE = ["pipelines/tap2d_arches.json", "--set", "source.params.N=500",
             "--set", "source.params.equilibration_taps=20", "--set", "source.params.production_taps=20",
-            "--threads", "1", "--quiet"]
+            "--threads", "1", "--quiet", "--no-report"]
 
 
 def run_benchmark(build, exe, pattern):

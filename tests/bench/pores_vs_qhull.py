@@ -83,7 +83,7 @@ def deposit_once(build, work, n, sides, seed):
     with open(path, "w") as f:
         json.dump(pipeline, f)
     print(f"depositing {n} spheres, {sides} sides (box side {side}), seed {seed}", flush=True)
-    made = subprocess.run([f"{build}/bin/granpipe", path, "--quiet", "--overwrite"],
+    made = subprocess.run([f"{build}/bin/granpipe", path, "--quiet", "--no-report", "--overwrite"],
                           stderr=subprocess.PIPE, text=True)
     if made.returncode == 0:
         return frames
