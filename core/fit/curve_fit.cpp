@@ -93,6 +93,10 @@ CurveFitStatus read_solution(gsl_multifit_nlinear_workspace* w, bool weighted, C
   const std::unique_ptr<gsl_matrix, MatrixFree> covariance(gsl_matrix_alloc(p, p));
   if (gsl_multifit_nlinear_covar(gsl_multifit_nlinear_jac(w), 0.0, covariance.get()) != GSL_SUCCESS)
     return CurveFitStatus::NotConverged;
+  // GSL zeroes the rows of the columns it finds dependent. (Scaled, a variance is 0 for data
+  // the curve goes through exactly: errors 0 are right there.)
+  for (std::size_t m = 0; m < p; ++m)
+    if (!(gsl_matrix_get(covariance.get(), m, m) > 0.0)) return CurveFitStatus::NotDetermined;
   const double norm = gsl_blas_dnrm2(gsl_multifit_nlinear_residual(w));
   fit.chi2 = norm * norm;
   // Unweighted points: the scatter about the fit is their error (chi^2/dof estimates the
@@ -105,8 +109,6 @@ CurveFitStatus read_solution(gsl_multifit_nlinear_workspace* w, bool weighted, C
     for (Eigen::Index l = 0; l < n; ++l)
       fit.covariance(m, l) = scale * gsl_matrix_get(covariance.get(), static_cast<std::size_t>(m),
                                                     static_cast<std::size_t>(l));
-  // GSL zeroes the rows of the columns it finds dependent: no error is exactly 0.
-  if (!(fit.covariance.diagonal().array() > 0.0).all()) return CurveFitStatus::NotDetermined;
   fit.error = fit.covariance.diagonal().cwiseSqrt();
   const bool finite = std::isfinite(fit.chi2) && fit.value.allFinite() && fit.error.allFinite();
   return finite ? CurveFitStatus::Fitted : CurveFitStatus::NotConverged;

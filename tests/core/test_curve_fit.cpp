@@ -88,3 +88,22 @@ TEST(CurveFit, TooFewPointsOrAnUndeterminedParameterAreUndefinedNotZero) {
   EXPECT_TRUE(std::isnan(undetermined.value[1]));
   EXPECT_EQ(describe(undetermined.status), "not fitted: a parameter is not determined by the data");
 }
+
+// Points a line goes through exactly: the scatter, hence every error, is about 0, and the fit
+// is a fit (a zero variance from GSL means an undetermined parameter only before the scaling
+// by the scatter).
+TEST(CurveFit, DataOnTheCurveAreFittedWithErrorsZero) {
+  const CurveModel line{[](const Eigen::VectorXd& p, double x) { return p[0] + p[1] * x; },
+                        [](const Eigen::VectorXd&, double x) {
+                          Eigen::VectorXd g(2);
+                          g << 1.0, x;
+                          return g;
+                        }};
+  const CurveFit fit =
+      fit_curve(line, {0.0, 1.0, 2.0, 3.0}, {1.0, 3.0, 5.0, 7.0}, {}, Eigen::Vector2d(0.0, 0.0));
+  ASSERT_TRUE(fit.fitted()) << describe(fit.status);
+  EXPECT_NEAR(fit.value[0], 1.0, 1e-9);
+  EXPECT_NEAR(fit.value[1], 2.0, 1e-9);
+  EXPECT_LT(fit.error[0], 1e-9);
+  EXPECT_LT(fit.error[1], 1e-9);
+}
