@@ -122,6 +122,8 @@ function(_granpipe_find_dependencies targets missing)
       list(APPEND found_targets ${target})
       if(dependency STREQUAL "GSL" AND TARGET granpipe_curve_fit)
         list(APPEND found_targets granpipe_curve_fit)  # the core's fitter comes with GSL
+      elseif(dependency STREQUAL "GSL" AND TARGET granpipe::granpipe_curve_fit)
+        list(APPEND found_targets granpipe::granpipe_curve_fit)  # the same, installed
       endif()
     else()
       list(APPEND not_found ${dependency})

@@ -2,6 +2,11 @@ include(CMakePackageConfigHelpers)
 install(TARGETS granpipe_core EXPORT granpipeTargets
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+# The curve fitter (a static library, as in the tree) for plugins that declare DEPENDS GSL.
+if(TARGET granpipe_curve_fit)
+  install(TARGETS granpipe_curve_fit EXPORT granpipeTargets
+          ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+endif()
 install(TARGETS granpipe RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(PROGRAMS scripts/report.py DESTINATION ${CMAKE_INSTALL_DATADIR}/granpipe)
 list(REMOVE_ITEM GRANPIPE_REPORT_SCRIPTS report.py)

@@ -14,7 +14,8 @@ export GRANPIPE_PLUGIN_PATH="$work/plugin-build"
 "$work/prefix/bin/granpipe" describe radius_stats
 cat >"$work/pipeline.json" <<JSON
 {"source": {"plugin": "lattice", "params": {"lattice": "sc", "cells": [3, 3, 3], "radius": 0.25}},
- "analyzers": [{"plugin": "radius_stats", "params": {"scale": 2.0, "r_max": 1.0, "bins": 4}}],
+ "analyzers": [{"plugin": "radius_stats", "params": {"scale": 2.0, "r_max": 1.0, "bins": 4}},
+               {"plugin": "height_fit"}],
  "output": {"dir": "$work/out"}}
 JSON
 "$work/prefix/bin/granpipe" "$work/pipeline.json" --quiet
@@ -24,6 +25,12 @@ grep -q "^particles,27," "$csv" || { echo "FAIL: expected 27 particles:"; cat "$
 # 27 particles x 1 frame of scaled radius 0.5: all in the third of 4 bins of [0, 1).
 grep -q "^0.5,0.75,27," "$work/out/radius_stats.radii.csv" ||
   { echo "FAIL: the histogram of radii:"; cat "$work/out/radius_stats.radii.csv"; exit 1; }
+# The core's curve fitter, linked by DEPENDS GSL: equal radii are a line of slope 0.
+python3 - "$work/out/height_fit.radius_line.csv" <<'PY' || { echo "FAIL: the fit of height_fit"; exit 1; }
+import csv, sys
+rows = {r[0]: r for r in csv.reader(l for l in open(sys.argv[1]) if not l.startswith("#"))}
+assert abs(float(rows["a"][1]) - 0.25) < 1e-9 and abs(float(rows["b"][1])) < 1e-9, rows
+PY
 # The README shows the plugins' code as it is.
 for example in radius_stats contact_forces; do
   python3 - "$src/README.md" "$src/tests/outoftree/example_plugin/$example.cpp" <<'PY' ||
