@@ -272,6 +272,25 @@ TEST(Pores, InnerRegionKeepsItsMarginFromTheWalls) {
   EXPECT_FALSE(granpipe::pores::pore_region(f, s, 1.0, "test"));
 }
 
+// An SC lattice's pores lie on the inner region's faces at the default margin: counted on
+// one side (the half-open box, moved down by half the tolerance), whatever the rounding of
+// their centres. Before, 64 pores with radius 0.5, 125 with 0.05, 27 moved by 0.1.
+TEST(Pores, PoresOnTheInnerRegionsFacesAreCountedOnOneSide) {
+  for (const double radius : {0.5, 0.05, 1.5}) {
+    for (const double moved : {0.0, 0.1, 1e3}) {
+      Frame f = crystal_frame(sc(), 6, radius);  // pores at (2i + 1) R, faces at R and 9 R
+      f.position().array() += moved;
+      f.container.lo.array() += moved;
+      f.container.hi.array() += moved;
+      const granpipe::pores::RegionSettings s{granpipe::pores::RegionKind::Inner, 2.0, 0.0};
+      const PoreMeasurement m =
+          measure_pores(f, granpipe::pores::pore_region(f, s, radius, "test"), 1e-9, "test");
+      EXPECT_EQ(m.xi.size(), 64u) << "radius " << radius << ", moved by " << moved;
+      EXPECT_EQ(m.spheres, 64) << "radius " << radius << ", moved by " << moved;
+    }
+  }
+}
+
 // Periodic on every side, a margin of 100 radii changed nothing (exit 0): no wall to keep
 // it from.
 TEST(Pores, AnInnerRegionNeedsAWall) {
