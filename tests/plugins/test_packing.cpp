@@ -238,6 +238,22 @@ TEST(Packing, ExcludedLayersAndFreeSurface) {
   EXPECT_THROW(measure(one("square"), surface), granpipe::InputError);  // periodic top
 }
 
+// A lattice whose centres lie on the region's faces (excluding half a diameter): counted on
+// the lower faces only, whatever the rounding. Before, number_density x (2R)^3 was 1, 1.728
+// or 0.512 and z_mean 5.4, 5 or 6 as the radius changed.
+TEST(Packing, CentresOnTheRegionsFacesAreCountedOnOneSide) {
+  for (const double radius : {0.5, 0.05, 0.15, 0.3, 1.1}) {
+    const Frame f = one("sc", "walls", {{"cells", {6, 6, 6}}, {"radius", radius}});
+    PackingSettings s;
+    s.exclude_bottom = s.exclude_top = s.exclude_sides = 0.5;
+    s.top = granpipe::packing::Top::Surface;
+    const PackingMeasurement m = measure(f, s);
+    EXPECT_EQ(m.centres, 125) << "radius " << radius;  // 5 of 6 along each axis
+    EXPECT_NEAR(m.number_density * std::pow(2.0 * radius, 3), 1.0, 1e-12) << "radius " << radius;
+    EXPECT_NEAR(m.z_mean, 5.4, 1e-12) << "radius " << radius;  // a fifth miss one per axis
+  }
+}
+
 // Stacks of unit disks (or balls) standing in unit columns from the base up, the k-th
 // stack `heights[k]` high: a heaped bed with known surface. 2D: one row of stacks;
 // 3D: heights.size() = side * side stacks.
