@@ -1,10 +1,15 @@
 #include "granpipe/frame.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <numeric>
 #include <sstream>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <variant>
+#include <vector>
 
 #include "granpipe/container_check.hpp"
 #include "granpipe/errors.hpp"
@@ -73,6 +78,34 @@ void check_contacts(const Frame& f, const std::string& where) {
                        to_string(partner::wall_of(j[k])) + " (code " + std::to_string(j[k]) +
                        "), which it does not have");
     }
+  }
+}
+
+// Each contact once: a pair (or a particle and a wall) in two rows, as (i, j) and (j, i) or
+// repeated, counted twice in every coordination, network and force statistic (an H5MD
+// file's table listing each pair both ways doubled z).
+void check_each_contact_once(const Frame& f, const std::string& where) {
+  const IndexArray &i = f.contact_i(), &j = f.contact_j();
+  using Key = std::pair<std::int64_t, std::int64_t>;
+  const auto key = [&](Eigen::Index k) -> Key {
+    if (!partner::is_particle(j[k])) return {i[k], j[k]};
+    return {std::min(i[k], j[k]), std::max(i[k], j[k])};
+  };
+  std::vector<Eigen::Index> rows(static_cast<std::size_t>(i.size()));
+  std::iota(rows.begin(), rows.end(), Eigen::Index{0});
+  std::sort(rows.begin(), rows.end(), [&](Eigen::Index a, Eigen::Index b) {
+    return std::pair(key(a), a) < std::pair(key(b), b);
+  });
+  for (std::size_t n = 1; n < rows.size(); ++n) {
+    if (key(rows[n]) != key(rows[n - 1])) continue;
+    const Eigen::Index a = rows[n - 1], b = rows[n];
+    const std::string second = partner::is_particle(j[a])
+                                   ? std::to_string(j[a])
+                                   : std::string(to_string(partner::wall_of(j[a]))) + " (code " +
+                                         std::to_string(j[a]) + ")";
+    throw InputError(where + ": contacts " + std::to_string(a) + " and " + std::to_string(b) +
+                     ": expected each contact once, got " + std::to_string(i[a]) + " and " +
+                     second + " in both (a table listing each pair both ways?)");
   }
 }
 
@@ -204,7 +237,10 @@ void Frame::check_layout(const std::string& where) const {
 void Frame::check(const std::string& where) const {
   check_layout(where);
   check_container_values(container, dim, where);
-  if (contacts) check_contacts(*this, where);
+  if (contacts) {
+    check_contacts(*this, where);
+    check_each_contact_once(*this, where);
+  }
   check_particles(*this, where);
   check_motion(*this, where);
 }
