@@ -12,9 +12,14 @@ namespace {
 
 // Mass-weighted mean of a per-particle value over the bed (every particle but `skip`).
 // Mass ∝ density r³; the frame carries no density, and the bed's particles share one
-// species in the scenes this serves, so r³ weights them.
+// species in the scenes this serves, so r³ weights them. Summed over the bed itself: the
+// sum over all less the intruder's term cancelled when the intruder outweighs the bed (a bed
+// of radius 1e-5 beside an intruder of 1 had the velocity 0 for 2.8e-5).
 double bed_mean(const Eigen::ArrayXd& weight, const Eigen::ArrayXd& value, Eigen::Index skip) {
-  return ((weight * value).sum() - weight[skip] * value[skip]) / (weight.sum() - weight[skip]);
+  const Eigen::Index n = weight.size(), after = n - skip - 1;
+  const double weighted =
+      (weight.head(skip) * value.head(skip)).sum() + (weight.tail(after) * value.tail(after)).sum();
+  return weighted / (weight.head(skip).sum() + weight.tail(after).sum());
 }
 
 }  // namespace

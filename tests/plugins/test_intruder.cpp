@@ -119,6 +119,23 @@ TEST(Intruder, VelocitiesAreTheIntrudersAndTheBedsCentreOfMass) {
   EXPECT_EQ(s.stage, intruder::Stage::Compression);
 }
 
+// A bed of radius 1e-5 beside an intruder of radius 1: the bed's mean taken as the sum over
+// all less the intruder's term cancelled to a velocity of 0 (and a height off by 2e-3).
+TEST(Intruder, ATinyBedBesideAHeavyIntruderKeepsItsMeans) {
+  Frame f = bed();
+  f.radius() << 1e-5, 1.0, 1e-5;
+  f.position()(0, 2) = 0.25 + 1e-5;
+  f.position()(2, 2) = 0.25 + 3e-5;
+  auto& v = f.add("velocity").as<Coordinates>();
+  v.setZero();
+  v(0, 2) = 2e-5;
+  v(1, 2) = 3.0;
+  v(2, 2) = 4e-5;
+  const intruder::BedState s = intruder::measure_bed(f, "test");
+  EXPECT_NEAR(s.bed_velocity, 3e-5, 1e-18);
+  EXPECT_NEAR(s.bed_height, 2e-5, 1e-15);  // the positions known to an ulp of 0.25
+}
+
 TEST(Intruder, LiftOffAndImpactAreTheMidpointsOfTheFramesWhereTheBaseContactChanges) {
   const Property cycles{"cycles", Scope::Frame, ValueType::Real, 1, "1", "drive periods"};
   Frame lifted = bed();
