@@ -5,10 +5,10 @@
 
 namespace granpipe::mst {
 
-Multipass::Multipass(std::uint32_t vertices, std::vector<Edge> edges, double elongation)
-    : vertices_(vertices), elongation_(elongation), parent_(vertices), rank_(vertices) {
+Multipass::Multipass(std::uint32_t vertices, std::vector<Edge> edges, double elongation, double tie)
+    : vertices_(vertices), elongation_(elongation), tie_(tie), parent_(vertices), rank_(vertices) {
   sorted_.reserve(edges.size());
-  for (const Edge& e : edges) sorted_.push_back({e, 0});
+  for (const Edge& e : edges) sorted_.push_back({e, order_of(e.weight), 0});
   edges = {};
   std::sort(sorted_.begin(), sorted_.end(), ranked_lighter);
 }
@@ -21,7 +21,10 @@ void Multipass::lengthen_last_selection() {
   for (const Ranked& r : sorted_) {
     (r.first_pass == static_cast<std::uint32_t>(passes_) ? lengthened_ : kept_).push_back(r);
   }
-  for (Ranked& r : lengthened_) r.edge.weight *= elongation_;
+  for (Ranked& r : lengthened_) {
+    r.edge.weight *= elongation_;
+    r.order = order_of(r.edge.weight);
+  }
   // Rounding may make two weights equal, whose (i, j) order then decides.
   if (!std::is_sorted(lengthened_.begin(), lengthened_.end(), ranked_lighter)) {
     std::sort(lengthened_.begin(), lengthened_.end(), ranked_lighter);

@@ -4,10 +4,13 @@
 // the pass before is lengthened once by the elongation factor (an edge selected in several
 // passes is lengthened once, not once per pass), and the forest is computed again.
 //
-// Kruskal over edges kept sorted by (weight, i, j), with Boost's disjoint sets. The sorted
+// Kruskal over edges kept sorted by (weight, i, j), with Boost's disjoint sets; ties by
+// (i, j) so that equal lengths (lattices) give one answer whatever the edges' order. The sorted
 // order is made once; between passes only the newly lengthened edges move: they are taken
 // out (still in order among themselves), lengthened and merged back in linear time.
+#include <cmath>
 #include <cstdint>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -17,8 +20,11 @@ namespace granpipe::mst {
 
 class Multipass {
  public:
-  // `vertices` particles 0..vertices-1; `edges` in any order, i < j < vertices.
-  Multipass(std::uint32_t vertices, std::vector<Edge> edges, double elongation);
+  // `vertices` particles 0..vertices-1; `edges` in any order, i < j < vertices. Weights
+  // that round to one multiple of `tie` (> 0) are equal, (i, j) then deciding: lengths of a
+  // lattice are equal but for the rounding of the coordinates they come from, which a
+  // frame moved or stored at another periodic image changes. 0: the weights as they are.
+  Multipass(std::uint32_t vertices, std::vector<Edge> edges, double elongation, double tie = 0.0);
 
   struct Pass {
     double weight = 0.0;    // of the forest, with the lengthened weights
@@ -31,13 +37,19 @@ class Multipass {
  private:
   struct Ranked {
     Edge edge;
+    double order;              // the weight on the grid of tie_, for the order
     std::uint32_t first_pass;  // 0: never selected
   };
-  static bool ranked_lighter(const Ranked& a, const Ranked& b) { return lighter(a.edge, b.edge); }
+  static bool ranked_lighter(const Ranked& a, const Ranked& b) {
+    return std::tie(a.order, a.edge.i, a.edge.j) < std::tie(b.order, b.edge.i, b.edge.j);
+  }
+  double order_of(double weight) const {
+    return tie_ > 0.0 ? std::nearbyint(weight / tie_) : weight;
+  }
   void lengthen_last_selection();
 
   std::uint32_t vertices_;
-  double elongation_;
+  double elongation_, tie_;
   int passes_ = 0;
   std::size_t forest_edges_ = 0;  // known after pass 1: the candidate graph's
   std::vector<Ranked> sorted_, kept_, lengthened_;

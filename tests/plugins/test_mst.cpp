@@ -179,6 +179,31 @@ TEST(Mst, LatticeTiesGiveOneValidTreeWhateverTheRowOrder) {
   }
 }
 
+// The same lattice moved by 0.1, by a whole period, or with its first layer stored at the
+// other side of the periodic box: its lengths differ in the last bits, and the passes chose
+// other edges (pass 2: 239 contacts, 248 moved by 0.1).
+TEST(Mst, LatticeTiesDoNotDependOnWhereTheFrameLies) {
+  Frame f = cubic_lattice(5);
+  f.container = Container::periodic_box(3, Eigen::Vector3d::Zero(), Eigen::Vector3d::Constant(5));
+  FrameCache cache;
+  const TcpReport reference = tcp_report(f, cache, options(Candidates::Cutoff), "t");
+  for (const double moved : {0.1, 5.0, 1e3}) {
+    Frame g = f;
+    g.position().array() += moved;
+    g.container.lo.array() += moved;
+    g.container.hi.array() += moved;
+    FrameCache other;
+    const TcpReport r = tcp_report(g, other, options(Candidates::Cutoff), "t");
+    EXPECT_EQ(selections_by_id(g, r), selections_by_id(f, reference)) << "moved by " << moved;
+  }
+  Frame image = f;
+  for (Eigen::Index k = 0; k < image.size(); ++k)
+    if (image.position()(k, 0) < 1.0) image.position()(k, 0) += 5.0;
+  FrameCache other;
+  const TcpReport r = tcp_report(image, other, options(Candidates::Cutoff), "t");
+  EXPECT_EQ(selections_by_id(image, r), selections_by_id(f, reference));
+}
+
 TEST(Mst, PassOneTcpsAreTreesOnTheContactNetworksParticles) {
   // A jittered cubic lattice of touching spheres: contacts by distance, every contact
   // shorter than every other pair, so pass 1 finds each network's particles exactly.
