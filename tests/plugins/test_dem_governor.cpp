@@ -42,7 +42,8 @@ TEST(DemGovernor, KeepsAllThreadsOnAQuietMachineAndProbesLessAndLess) {
   ThreadGovernor g(2, true);
   const Simulated run = simulate(g, 0.0, 120.0, quiet);
   EXPECT_EQ(run.threads_at_end, 2);
-  // Probes at 1, 3, 7, 15, 31, 47, ... s, each 0.05 s on one thread: about 0.8 % of the steps.
+  // Probes at 0.25, 0.8, 1.85, 3.9, 8, 16.1, 32.2, 48.3, ... s, each 0.05 s on one thread:
+  // about 0.6 % of the steps.
   EXPECT_LT(run.fraction_on_one, 0.01);
   EXPECT_GT(run.fraction_on_one, 0.0);
 }
@@ -51,8 +52,19 @@ TEST(DemGovernor, FallsBackToOneThreadOnABusyMachine) {
   ThreadGovernor g(2, true);
   const Simulated run = simulate(g, 0.0, 120.0, busy);
   EXPECT_EQ(run.threads_at_end, 1);
-  // Two threads for the first second and the probes' windows after it.
+  // Two threads for the first quarter second and the probes' windows after it.
   EXPECT_GT(run.fraction_on_one, 0.97);
+}
+
+// A run of a second (a short pipeline, a test) on a busy machine: with the first probe after
+// 1 s it ran on two threads throughout, 4-8 times as long as on one.
+TEST(DemGovernor, AShortRunOnABusyMachineFallsBackWithinHalfASecond) {
+  ThreadGovernor g(2, true);
+  simulate(g, 0.0, 0.5, busy);
+  EXPECT_EQ(g.threads(), 1);
+  // On one thread from there, but for one probe of two.
+  const Simulated rest = simulate(g, 0.5, 1.0, busy);
+  EXPECT_GT(rest.fraction_on_one, 0.9);
 }
 
 TEST(DemGovernor, ComesBackToAllThreadsWhenTheLoadGoes) {
