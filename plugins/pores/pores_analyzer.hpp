@@ -31,6 +31,7 @@ class PoresAnalyzer : public Analyzer {
   void add_frame_distributions(const Frame& frame, const PoreMeasurement& m);
   void add_pore_rows(const Frame& frame, const PoreMeasurement& m);
   void keep_cells(const Frame& frame, const PoreMeasurement& m);
+  void warn_if_coarse(const Frame& frame, const std::string& where);
 
   PoreStatistics statistics_;
   VolumeDistribution volumes_;
@@ -49,6 +50,7 @@ class PoresAnalyzer : public Analyzer {
   double bin_width_, xi_max_, v_bin_width_, v_max_;
   long frames_ = 0;
   long frames_without_spheres_ = 0;  // in the region: pores_per_sphere undefined
+  bool warned_coarse_ = false;
 };
 
 }  // namespace granpipe::pores

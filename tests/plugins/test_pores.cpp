@@ -596,6 +596,38 @@ TEST(Pores, AnUnfittedVolumeTailIsSaid) {
                 "points than parameters: A and lambda are undefined (NaN)"}));
 }
 
+// An SC lattice of radius 0.05 moved 10^6 from the origin: its positions are rounded to
+// 1.2e-10, above tolerance x R, and its cube sites split into several pores (170 for 125)
+// without a word. Said, with a tolerance that merges them again.
+TEST(Pores, PositionsCoarserThanTheToleranceAreSaid) {
+  Frame f = crystal_frame(sc(), 6, 0.05);
+  f.position().array() += 1e6;
+  f.container.lo.array() += 1e6;
+  f.container.hi.array() += 1e6;
+  const auto pores_of = [&](granpipe::test::PluginHarness& ctx) {
+    ctx.keep_log();
+    auto analyzer = granpipe::test::installed_plugins().find("pores")->make_analyzer(ctx);
+    granpipe::FrameCache cache;
+    analyzer->consume(f, cache);
+    granpipe::Results results;
+    analyzer->finish(results);
+    return results.scalar("pores").value;
+  };
+  const auto coarse = granpipe::test::make_context("pores", {});
+  pores_of(*coarse);
+  const std::vector<std::string> lines = coarse->logged_lines();
+  ASSERT_FALSE(lines.empty());
+  EXPECT_EQ(lines[0],
+            "warning: pores: frame at step 0: positions up to 1e+06 from the origin are "
+            "rounded to 1.16415e-10, more than a quarter of tolerance x the mean radius "
+            "(5e-11): pores of one site may be counted apart; raise tolerance to 1.86265e-08 "
+            "or move the origin into the packing");
+  const auto fine = granpipe::test::make_context("pores", {{"tolerance", 1.9e-8}});
+  EXPECT_EQ(pores_of(*fine), 125.0);  // 5^3 cube sites
+  for (const std::string& line : fine->logged_lines())
+    EXPECT_EQ(line.find("rounded to"), std::string::npos) << line;
+}
+
 // A region that holds no pore (a thin slab between layers of pores) left every
 // distribution NaN without a word, as if the packing had none.
 TEST(Pores, ARegionWithoutPoresIsSaid) {
