@@ -283,6 +283,10 @@ void FrameReader::Impl::open_position(const std::string& base) {
   info.particles = static_cast<long>(item[0]);
   info.dim = static_cast<int>(item[1]);
   info.frames = static_cast<long>(position->samples());
+  const h5::Object type =
+      h5::owned(H5Dget_type(position->dataset()), position->path() + ": cannot read the data type");
+  if (H5Tget_class(type.id()) == H5T_FLOAT)
+    info.position_bytes = static_cast<int>(H5Tget_size(type.id()));
   if (position->timed()) {
     steps = position->steps();
     times = position->times();

@@ -24,6 +24,9 @@ struct FrameFileInfo {
   // plugin's own), per-frame observables, and the contact columns (when it has contacts).
   std::vector<Property> columns, observables, contact_columns;
   bool has_contacts = false;
+  // Bytes of each stored position coordinate: 8 for doubles, 4 for the 32-bit floats other
+  // tools write (6 to 7 digits: too coarse to find contacts from by distance).
+  int position_bytes = 8;
   bool has(std::string_view column) const;
   std::string creator;  // /h5md/creator name and version
 };
