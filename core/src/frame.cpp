@@ -3,11 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <numeric>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <type_traits>
-#include <utility>
 #include <variant>
 #include <vector>
 
@@ -81,31 +80,25 @@ void check_contacts(const Frame& f, const std::string& where) {
   }
 }
 
-// Each contact once: a pair (or a particle and a wall) in two rows, as (i, j) and (j, i) or
-// repeated, counted twice in every coordination, network and force statistic (an H5MD
-// file's table listing each pair both ways doubled z).
-void check_each_contact_once(const Frame& f, const std::string& where) {
+// Each pair of particles in one row: a pair in two, as (i, j) and (j, i) or repeated, counted
+// twice in every coordination, network and force statistic (an H5MD file's table listing
+// each pair both ways doubled z). A particle may touch one wall in several rows: a wall
+// made of a mesh touches it at each facet (LIGGGHTS' wall contacts).
+void check_each_pair_once(const Frame& f, const std::string& where) {
   const IndexArray &i = f.contact_i(), &j = f.contact_j();
-  using Key = std::pair<std::int64_t, std::int64_t>;
-  const auto key = [&](Eigen::Index k) -> Key {
-    if (!partner::is_particle(j[k])) return {i[k], j[k]};
-    return {std::min(i[k], j[k]), std::max(i[k], j[k])};
-  };
-  std::vector<Eigen::Index> rows(static_cast<std::size_t>(i.size()));
-  std::iota(rows.begin(), rows.end(), Eigen::Index{0});
-  std::sort(rows.begin(), rows.end(), [&](Eigen::Index a, Eigen::Index b) {
-    return std::pair(key(a), a) < std::pair(key(b), b);
-  });
-  for (std::size_t n = 1; n < rows.size(); ++n) {
-    if (key(rows[n]) != key(rows[n - 1])) continue;
-    const Eigen::Index a = rows[n - 1], b = rows[n];
-    const std::string second = partner::is_particle(j[a])
-                                   ? std::to_string(j[a])
-                                   : std::string(to_string(partner::wall_of(j[a]))) + " (code " +
-                                         std::to_string(j[a]) + ")";
-    throw InputError(where + ": contacts " + std::to_string(a) + " and " + std::to_string(b) +
-                     ": expected each contact once, got " + std::to_string(i[a]) + " and " +
-                     second + " in both (a table listing each pair both ways?)");
+  std::vector<std::tuple<std::int64_t, std::int64_t, Eigen::Index>> pairs;
+  for (Eigen::Index k = 0; k < i.size(); ++k) {
+    if (partner::is_particle(j[k]))
+      pairs.emplace_back(std::min(i[k], j[k]), std::max(i[k], j[k]), k);
+  }
+  std::sort(pairs.begin(), pairs.end());
+  for (std::size_t n = 1; n < pairs.size(); ++n) {
+    const auto [a, b, row] = pairs[n];
+    const auto [a0, b0, row0] = pairs[n - 1];
+    if (a != a0 || b != b0) continue;
+    throw InputError(where + ": contacts " + std::to_string(row0) + " and " + std::to_string(row) +
+                     ": expected each pair of particles once, got " + std::to_string(a) + " and " +
+                     std::to_string(b) + " in both (a table listing each pair both ways?)");
   }
 }
 
@@ -239,7 +232,7 @@ void Frame::check(const std::string& where) const {
   check_container_values(container, dim, where);
   if (contacts) {
     check_contacts(*this, where);
-    check_each_contact_once(*this, where);
+    check_each_pair_once(*this, where);
   }
   check_particles(*this, where);
   check_motion(*this, where);

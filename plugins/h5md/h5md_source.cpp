@@ -96,8 +96,9 @@ void warn_if_single_precision(const PluginContext& ctx, const FrameFileInfo& inf
                format_number(rounding / contact) +
                " of the smallest contact distance, coarser than the contact_tolerance " +
                format_number(kDefaultContactTolerance) +
-               " by which analyzers find contacts from positions (and than pores' tolerance): "
-               "give the frames' contacts, or raise those tolerances above it");
+               " by which analyzers find contacts from positions (and than pores' tolerance): " +
+               (info.has_contacts ? "" : "give the frames' contacts, or ") +
+               "raise those tolerances above it");
 }
 
 }  // namespace

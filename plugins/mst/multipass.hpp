@@ -8,7 +8,6 @@
 // (i, j) so that equal lengths (lattices) give one answer whatever the edges' order. The sorted
 // order is made once; between passes only the newly lengthened edges move: they are taken
 // out (still in order among themselves), lengthened and merged back in linear time.
-#include <cmath>
 #include <cstdint>
 #include <tuple>
 #include <utility>
@@ -20,10 +19,10 @@ namespace granpipe::mst {
 
 class Multipass {
  public:
-  // `vertices` particles 0..vertices-1; `edges` in any order, i < j < vertices. Weights
-  // that round to one multiple of `tie` (> 0) are equal, (i, j) then deciding: lengths of a
-  // lattice are equal but for the rounding of the coordinates they come from, which a
-  // frame moved or stored at another periodic image changes. 0: the weights as they are.
+  // `vertices` particles 0..vertices-1; `edges` in any order, i < j < vertices. A run of
+  // weights each within `tie` of the one before is a tie, (i, j) then deciding: lengths of
+  // a lattice are equal but for the rounding of the coordinates they come from, which a
+  // frame moved or stored at another periodic image changes. 0: equal weights only.
   Multipass(std::uint32_t vertices, std::vector<Edge> edges, double elongation, double tie = 0.0);
 
   struct Pass {
@@ -37,22 +36,22 @@ class Multipass {
  private:
   struct Ranked {
     Edge edge;
-    double order;              // the weight on the grid of tie_, for the order
     std::uint32_t first_pass;  // 0: never selected
   };
   static bool ranked_lighter(const Ranked& a, const Ranked& b) {
-    return std::tie(a.order, a.edge.i, a.edge.j) < std::tie(b.order, b.edge.i, b.edge.j);
-  }
-  double order_of(double weight) const {
-    return tie_ > 0.0 ? std::nearbyint(weight / tie_) : weight;
+    return std::tie(a.edge.weight, a.edge.i, a.edge.j) <
+           std::tie(b.edge.weight, b.edge.i, b.edge.j);
   }
   void lengthen_last_selection();
+  // The edges of sorted_ from `first` whose weights chain within tie_, in (i, j) order.
+  std::size_t tied_run(std::size_t first);
 
   std::uint32_t vertices_;
   double elongation_, tie_;
   int passes_ = 0;
   std::size_t forest_edges_ = 0;  // known after pass 1: the candidate graph's
   std::vector<Ranked> sorted_, kept_, lengthened_;
+  std::vector<Ranked*> run_;  // tied_run's
   std::vector<std::uint32_t> parent_;
   std::vector<std::uint8_t> rank_;
 };

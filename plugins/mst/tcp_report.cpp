@@ -62,16 +62,17 @@ std::int64_t unproven(const MstOptions& o, const TcpReport& r) {
                        [&](double l) { return !(stretch(o) * l < r.complete_below); });
 }
 
-// The grid the MST's order puts weights on: 2^12 units in the last place of the largest
-// coordinate (or box side), far above the rounding of a centre distance computed from such
-// coordinates and far below any difference of lengths in a packing. Without it an SC
-// lattice moved by 0.1 selected 248 contacts in pass 2 instead of 239.
-double tie_quantum(const Frame& f) {
-  double largest = f.position().abs().maxCoeff();
+// How far apart two lengths may be and still tie: 64 units in the last place of the largest
+// coordinate (or box side), above the rounding of a centre distance computed from such
+// coordinates (a few units) and below any difference of lengths that is not rounding near
+// the origin. Without it an SC lattice moved by 0.1 selected 248 contacts in pass 2 instead
+// of 239.
+double tie_length(const Frame& f) {
+  double largest = f.size() > 0 ? f.position().abs().maxCoeff() : 0.0;
   for (int a = 0; a < f.dim; ++a) {
     largest = std::max({largest, std::abs(f.container.lo[a]), std::abs(f.container.hi[a])});
   }
-  return 4096.0 * (std::nextafter(largest, HUGE_VAL) - largest);
+  return 64.0 * (std::nextafter(largest, HUGE_VAL) - largest);
 }
 
 }  // namespace
@@ -94,7 +95,7 @@ TcpReport tcp_report(const Frame& frame, FrameCache& cache, const MstOptions& op
   std::vector<std::uint32_t> number_of_row(row_of.size());
   for (std::uint32_t k = 0; k < n; ++k) number_of_row[row_of[k]] = k;
   Multipass mst(n, renumbered(std::move(edges), number_of_row), options.elongation,
-                tie_quantum(frame));
+                tie_length(frame));
 
   std::vector<ContactPairs::Pair> selected;  // contacting edges selected so far, as rows
   for (int p = 1; p <= options.passes; ++p) {

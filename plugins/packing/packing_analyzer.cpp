@@ -86,19 +86,26 @@ double mean_over(const IntArray& z, const std::vector<char>& in, long count) {
   return sum / static_cast<double>(count);
 }
 
-}  // namespace
-
 // Centres on the region's faces (a lattice's, with exclude_* of half a diameter) count on
-// its lower faces only, whatever their rounding: the region is moved down by this many
-// diameters to count them. Before, number_density and z_mean of one lattice jumped with its
-// radius (x (2R)^3: 1, 1.728 or 0.512).
-constexpr double kFaceShift = 1e-9;
-
-Region moved_down(Region r, double shift) {
-  r.lo.array() -= shift;
-  r.hi.array() -= shift;
+// its lower faces only, whatever their rounding: the region's bounded sides are moved down
+// by 1e-9 diameters, or by 64 units in the last place of the largest coordinate when that is
+// more, to count them. Before, number_density and z_mean of one lattice jumped with its
+// radius (x (2R)^3: 1, 1.728 or 0.512). A region spanning a whole period stays: the centres
+// are wrapped into it, and moved it would lose those wrapped just below its top.
+Region moved_down(const Frame& frame, Region r, double diameter) {
+  const double largest = frame.position().abs().maxCoeff();
+  const double shift =
+      std::max(1e-9 * diameter, 64.0 * (std::nextafter(largest, HUGE_VAL) - largest));
+  for (int a = 0; a < frame.dim; ++a) {
+    const Container& c = frame.container;
+    if (c.periodic(a) && r.hi[a] - r.lo[a] >= c.length(a)) continue;
+    r.lo[a] -= shift;
+    r.hi[a] -= shift;
+  }
   return r;
 }
+
+}  // namespace
 
 Region packing_region(const Frame& frame, const PackingSettings& s) {
   const Container& c = frame.container;
@@ -144,7 +151,7 @@ PackingMeasurement measure_packing(const Frame& frame, FrameCache& cache,
   const double volume = region.volume();
   m.phi = particle_measure_in(frame, region) / volume;
 
-  const std::vector<char> in = centres_in(frame, moved_down(region, kFaceShift * m.diameter));
+  const std::vector<char> in = centres_in(frame, moved_down(frame, region, m.diameter));
   m.centres = std::count(in.begin(), in.end(), char{1});
   m.number_density = static_cast<double>(m.centres) / volume;
 

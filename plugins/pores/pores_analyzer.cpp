@@ -231,12 +231,14 @@ void PoresAnalyzer::warn_if_coarse(const Frame& frame, const std::string& where)
   const double length = settings_.tolerance * frame.radius().mean();
   if (!(4.0 * rounding > length)) return;
   warned_coarse_ = true;
+  // The schema allows tolerances up to 1e-3: past it only the origin can move.
+  const double needed = 8.0 * rounding / frame.radius().mean();
   log_.warn(where + ": positions up to " + format_number(farthest) +
             " from the origin are rounded to " + format_number(rounding) +
             ", more than a quarter of tolerance x the mean radius (" + format_number(length) +
-            "): pores of one site may be counted apart; raise tolerance to " +
-            format_number(8.0 * rounding / frame.radius().mean()) +
-            " or move the origin into the packing");
+            "): pores of one site may be counted apart; " +
+            (needed <= 1e-3 ? "raise tolerance to " + format_number(needed) + " or " : "") +
+            "move the origin into the packing");
 }
 
 void PoresAnalyzer::consume(const Frame& frame, FrameCache&) {

@@ -57,7 +57,7 @@ TEST(DemGovernor, FallsBackToOneThreadOnABusyMachine) {
 }
 
 // A run of a second (a short pipeline, a test) on a busy machine: with the first probe after
-// 1 s it ran on two threads throughout, 4-8 times as long as on one.
+// 1 s it ran on two stalling threads throughout.
 TEST(DemGovernor, AShortRunOnABusyMachineFallsBackWithinHalfASecond) {
   ThreadGovernor g(2, true);
   simulate(g, 0.0, 0.5, busy);

@@ -252,6 +252,14 @@ TEST(Packing, CentresOnTheRegionsFacesAreCountedOnOneSide) {
     EXPECT_NEAR(m.number_density * std::pow(2.0 * radius, 3), 1.0, 1e-12) << "radius " << radius;
     EXPECT_NEAR(m.z_mean, 5.4, 1e-12) << "radius " << radius;  // a fifth miss one per axis
   }
+  // Periodic: centres a hair below the box's bottom are wrapped to just below its top, and
+  // every one is counted.
+  Frame periodic = one("sc", "periodic", {{"cells", {6, 6, 6}}, {"radius", 0.5}});
+  for (int a = 0; a < 3; ++a) {
+    const double low = periodic.position().col(a).minCoeff();
+    periodic.position().col(a) -= low - periodic.container.lo[a] + 1e-15;
+  }
+  EXPECT_EQ(measure(periodic).centres, periodic.size());
 }
 
 // Stacks of unit disks (or balls) standing in unit columns from the base up, the k-th
