@@ -52,7 +52,7 @@ void ThreadGovernor::decide(double other_per_step, double now) {
     // Two windows in a row must say so: a busy machine's windows are noisy (a thread that
     // lost its core for a time slice, or a competitor that paused), and a wrong switch
     // costs the whole wait before the next probe.
-    if (!other_won_once_) {
+    if (!other_won_once_ && other_per_step >= kClearMargin * chosen_per_step_) {
       other_won_once_ = true;
       start(Phase::TimingChosen, chosen_, now);
       return;

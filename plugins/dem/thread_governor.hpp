@@ -8,9 +8,9 @@
 //
 // The governor runs on the count it chose, and now and then times a short window on it
 // and one on the other count (1 when it runs on all, all when it runs on 1); the other
-// count wins when it is faster by a clear margin in two probes in a row. A probe that confirms the
-// choice doubles the wait before the next, up to kLongestWait, so that a quiet machine pays for few
-// probes and a load that comes or goes is noticed within it.
+// count wins when it is faster by a margin in two probes in a row, or by a wide one in one. A probe
+// that confirms the choice doubles the wait before the next, up to kLongestWait, so that a quiet
+// machine pays for few probes and a load that comes or goes is noticed within it.
 namespace granpipe::dem {
 
 class ThreadGovernor {
@@ -23,6 +23,9 @@ class ThreadGovernor {
   static constexpr double kWindow = 0.05;  // seconds of each timed window, and
   static constexpr long kWindowSteps = 3;  // at least this many steps
   static constexpr double kMargin = 0.9;   // the other count must take < 0.9 x as long
+  // ... in two probes in a row, or < 0.6 x in one: a window's noise (a thread off its core
+  // for a time slice) is a tenth, not a half, and a wrong switch costs only kFirstWait.
+  static constexpr double kClearMargin = 0.6;
 
   // allowed: the most threads the run may use; adapt = false keeps to them.
   ThreadGovernor(int allowed, bool adapt);

@@ -67,6 +67,20 @@ TEST(DemGovernor, AShortRunOnABusyMachineFallsBackWithinHalfASecond) {
   EXPECT_GT(rest.fraction_on_one, 0.9);
 }
 
+// Two threads half as fast again as one: one probe decides (a window's noise is far less).
+// A difference within the margins takes two probes in a row.
+TEST(DemGovernor, AWideDifferenceSwitchesAfterOneProbe) {
+  ThreadGovernor g(2, true);
+  simulate(g, 0.0, ThreadGovernor::kFirstWait + 0.12, busy);  // one probe: two windows
+  EXPECT_EQ(g.threads(), 1);
+  const auto somewhat = [](int threads, double) { return threads == 2 ? 2.4e-3 : 1.8e-3; };
+  ThreadGovernor h(2, true);
+  simulate(h, 0.0, ThreadGovernor::kFirstWait + 0.12, somewhat);
+  EXPECT_EQ(h.threads(), 2);
+  simulate(h, ThreadGovernor::kFirstWait + 0.12, 1.0, somewhat);
+  EXPECT_EQ(h.threads(), 1);
+}
+
 TEST(DemGovernor, ComesBackToAllThreadsWhenTheLoadGoes) {
   ThreadGovernor g(2, true);
   const auto load_for_a_minute = [](int threads, double now) {
