@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "granpipe/coordinate_spacing.hpp"
 #include "multipass.hpp"
 
 namespace granpipe::mst {
@@ -68,11 +69,11 @@ std::int64_t unproven(const MstOptions& o, const TcpReport& r) {
 // the origin. Without it an SC lattice moved by 0.1 selected 248 contacts in pass 2 instead
 // of 239.
 double tie_length(const Frame& f) {
-  double largest = f.size() > 0 ? f.position().abs().maxCoeff() : 0.0;
+  double largest = largest_coordinate(f);
   for (int a = 0; a < f.dim; ++a) {
     largest = std::max({largest, std::abs(f.container.lo[a]), std::abs(f.container.hi[a])});
   }
-  return 64.0 * (std::nextafter(largest, HUGE_VAL) - largest);
+  return 64.0 * double_spacing(largest);
 }
 
 }  // namespace

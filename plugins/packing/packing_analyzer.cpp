@@ -7,6 +7,7 @@
 
 #include "granpipe/bin_count.hpp"
 #include "granpipe/contacts_by_distance.hpp"
+#include "granpipe/coordinate_spacing.hpp"
 #include "granpipe/cut_profile.hpp"
 #include "granpipe/format_number.hpp"
 #include "lowest_surface.hpp"
@@ -93,9 +94,7 @@ double mean_over(const IntArray& z, const std::vector<char>& in, long count) {
 // radius (x (2R)^3: 1, 1.728 or 0.512). A region spanning a whole period stays: the centres
 // are wrapped into it, and moved it would lose those wrapped just below its top.
 Region moved_down(const Frame& frame, Region r, double diameter) {
-  const double largest = frame.position().abs().maxCoeff();
-  const double shift =
-      std::max(1e-9 * diameter, 64.0 * (std::nextafter(largest, HUGE_VAL) - largest));
+  const double shift = std::max(1e-9 * diameter, 64.0 * double_spacing(largest_coordinate(frame)));
   for (int a = 0; a < frame.dim; ++a) {
     const Container& c = frame.container;
     if (c.periodic(a) && r.hi[a] - r.lo[a] >= c.length(a)) continue;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "granpipe/bin_count.hpp"
+#include "granpipe/coordinate_spacing.hpp"
 #include "granpipe/curve_fit.hpp"
 #include "granpipe/deepest_overlap.hpp"
 #include "granpipe/errors.hpp"
@@ -226,8 +227,8 @@ void PoresAnalyzer::probe_voids(const Frame& frame, double mean_radius, const st
 // such cells, so it is no refusal.
 void PoresAnalyzer::warn_if_coarse(const Frame& frame, const std::string& where) {
   if (warned_coarse_ || frame.size() == 0) return;
-  const double farthest = frame.position().abs().maxCoeff();
-  const double rounding = std::nextafter(farthest, HUGE_VAL) - farthest;
+  const double farthest = largest_coordinate(frame);
+  const double rounding = double_spacing(farthest);
   const double length = settings_.tolerance * frame.radius().mean();
   if (!(4.0 * rounding > length)) return;
   warned_coarse_ = true;

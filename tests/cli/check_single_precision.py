@@ -7,8 +7,9 @@ import os
 import subprocess
 import sys
 
-import h5py
 import numpy as np
+
+from foreign_h5md import write_h5md
 
 exe, work = sys.argv[1], sys.argv[2]
 os.makedirs(work, exist_ok=True)
@@ -23,29 +24,10 @@ def fcc(cells):
     return np.array(sites) + 0.25, cells * a
 
 
-def write_h5md(path, x, side, dtype):
-    with h5py.File(path, "w") as f:
-        h5md = f.create_group("h5md")
-        h5md.attrs["version"] = np.array([1, 1], dtype="i4")
-        h5md.create_group("author").attrs["name"] = "test"
-        creator = h5md.create_group("creator")
-        creator.attrs["name"] = "check_single_precision.py"
-        creator.attrs["version"] = "1"
-        group = f.create_group("particles/all")
-        box = group.create_group("box")
-        box.attrs["dimension"] = 3
-        box.attrs["boundary"] = np.array([b"periodic"] * 3, dtype="S8")
-        box.create_dataset("edges", data=np.array([side] * 3))
-        element = group.create_group("position")
-        element.create_dataset("step", data=np.array([0], dtype="i8"))
-        element.create_dataset("time", data=np.array([0.0]))
-        element.create_dataset("value", data=x[None].astype(dtype))
-
-
 def warnings(dtype):
     x, side = fcc(4)
     path = os.path.join(work, f"fcc_{dtype}.h5")
-    write_h5md(path, x, side, dtype)
+    write_h5md(path, x.astype(dtype), [side] * 3, "periodic", "check_single_precision.py")
     pipeline = {"name": "single_precision", "seed": 1,
                 "source": {"plugin": "h5md", "params": {"file": path}},
                 "analyzers": [{"plugin": "packing"}],

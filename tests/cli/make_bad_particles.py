@@ -3,27 +3,13 @@ with two overlapping particles, two with a NaN position (in the first particle, 
 minimum and maximum meet first, and in another)."""
 import sys
 
-import h5py
 import numpy as np
+
+from foreign_h5md import write_h5md
 
 
 def write(path, positions):
-    with h5py.File(path, "w") as f:
-        h5md = f.create_group("h5md")
-        h5md.attrs["version"] = np.array([1, 1], dtype="i4")
-        h5md.create_group("author").attrs["name"] = "test"
-        creator = h5md.create_group("creator")
-        creator.attrs["name"] = "make_bad_particles.py"
-        creator.attrs["version"] = "1"
-        group = f.create_group("particles/all")
-        box = group.create_group("box")
-        box.attrs["dimension"] = 3
-        box.attrs["boundary"] = np.array([b"none"] * 3, dtype="S8")
-        box.create_dataset("edges", data=np.array([10.0, 10.0, 10.0]))
-        position = group.create_group("position")
-        position.create_dataset("step", data=np.array([0], dtype="i8"))
-        position.create_dataset("time", data=np.array([0.0]))
-        position.create_dataset("value", data=np.array([positions], dtype="f8"))
+    write_h5md(path, np.array(positions, dtype="f8"), [10.0] * 3, "none", "make_bad_particles.py")
 
 
 out = sys.argv[1]

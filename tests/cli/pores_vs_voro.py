@@ -13,6 +13,8 @@ import sys
 import h5py
 import numpy as np
 
+from foreign_h5md import write_h5md
+
 SKIP = 77
 exe, work = sys.argv[1], sys.argv[2]
 voro = shutil.which("voro++")
@@ -36,29 +38,9 @@ def random_spheres(n, radii, seed):
     return x, r
 
 
-def write_h5md(path, x, r):
-    """The packing as another tool would write it: plain H5MD, a periodic box."""
-    with h5py.File(path, "w") as f:
-        h5md = f.create_group("h5md")
-        h5md.attrs["version"] = np.array([1, 1], dtype="i4")
-        h5md.create_group("author").attrs["name"] = "test"
-        creator = h5md.create_group("creator")
-        creator.attrs["name"] = "pores_vs_voro.py"
-        creator.attrs["version"] = "1"
-        group = f.create_group("particles/all")
-        box = group.create_group("box")
-        box.attrs["dimension"] = 3
-        box.attrs["boundary"] = np.array([b"periodic"] * 3, dtype="S8")
-        box.create_dataset("edges", data=np.array([side] * 3))
-        for name, value in (("position", x), ("radius", r)):
-            element = group.create_group(name)
-            element.create_dataset("step", data=np.array([0], dtype="i8"))
-            element.create_dataset("time", data=np.array([0.0]))
-            element.create_dataset("value", data=value[None])
-
-
 def granpipe_volumes(name, x, r):
-    write_h5md(os.path.join(work, name + ".h5"), x, r)
+    write_h5md(os.path.join(work, name + ".h5"), x, [side] * 3, "periodic", "pores_vs_voro.py",
+               radius=r)
     out = os.path.join(work, "out_" + name)
     pipeline = {"name": "pores_vs_voro", "seed": 1,
                 "source": {"plugin": "h5md", "params": {"file": os.path.join(work, name + ".h5")}},
