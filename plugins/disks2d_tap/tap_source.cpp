@@ -37,11 +37,10 @@ constexpr std::int64_t kMostMcLoops = 100000;
 void refuse_unused_radius(const PluginContext& ctx, const std::optional<StartFrame>& start) {
   const double radius = ctx.params.real("radius");
   if (!start || !start->radii_stored || radius == kPaperRadius) return;
-  std::ostringstream s;
-  s.precision(17);  // the default's own digits: six would read as another value
-  s << ctx.param("radius") << ": expected its default " << kPaperRadius
-    << " with an initial_file that stores radii (" << start->where << "), got " << radius;
-  throw InputError(s.str());
+  // The default's own digits: six would read as another value.
+  throw InputError(ctx.param("radius") + ": expected its default " +
+                   format_number(kPaperRadius, 17) + " with an initial_file that stores radii (" +
+                   start->where + "), got " + format_number(radius, 17));
 }
 }  // namespace
 
