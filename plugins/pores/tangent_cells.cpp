@@ -57,8 +57,8 @@ bool overlaps_a_neighbour(const DelaunayCell& cell, const TangentSphere& sphere,
   for (std::uint32_t v : cell.vertices) {
     for (std::uint32_t w : neighbours.of(v)) {
       if (std::find(cell.vertices.begin(), cell.vertices.end(), w) != cell.vertices.end()) continue;
-      const double reach = frame.radius()[centres.particle[w]] + sphere.radius - length;
-      if (reach > 0.0 && (centres.points[w] - sphere.centre).squaredNorm() < reach * reach)
+      if (overlap_by_more_than(centres.points[w], frame.radius()[centres.particle[w]],
+                               sphere.centre, sphere.radius, length))
         return true;
     }
   }
