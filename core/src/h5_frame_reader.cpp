@@ -164,6 +164,14 @@ void check_unique_ids(const Frame& f, const std::string& dataset, long k) {
   }
 }
 
+// Bytes of each stored value when it is a float (8: doubles; 4: the 32-bit floats other
+// tools write), 8 for integer storage, which holds its values exactly.
+int float_bytes(const h5::Element& e) {
+  const h5::Object type = h5::owned(H5Dget_type(e.dataset()), e.path() + ": cannot read the data type");
+  if (H5Tget_class(type.id()) != H5T_FLOAT) return 8;
+  return static_cast<int>(H5Tget_size(type.id()));
+}
+
 }  // namespace
 
 bool FrameFileInfo::has(std::string_view column) const {
@@ -283,10 +291,7 @@ void FrameReader::Impl::open_position(const std::string& base) {
   info.particles = static_cast<long>(item[0]);
   info.dim = static_cast<int>(item[1]);
   info.frames = static_cast<long>(position->samples());
-  const h5::Object type =
-      h5::owned(H5Dget_type(position->dataset()), position->path() + ": cannot read the data type");
-  if (H5Tget_class(type.id()) == H5T_FLOAT)
-    info.position_bytes = static_cast<int>(H5Tget_size(type.id()));
+  info.position_bytes = float_bytes(*position);
   if (position->timed()) {
     steps = position->steps();
     times = position->times();
@@ -317,6 +322,7 @@ std::optional<ElementColumn> FrameReader::Impl::open_column(const std::string& b
                     (expected.empty() ? "" : " x " + h5::format_shape(expected)) +
                     " per frame, got " + h5::format_shape(item));
   }
+  if (column == "radius") info.radius_bytes = float_bytes(*e);
   return ElementColumn{std::move(p), std::move(*e)};
 }
 

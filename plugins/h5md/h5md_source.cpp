@@ -82,18 +82,22 @@ void refuse_unused_radius(const PluginContext& ctx, const FrameFileInfo& info) {
                    format_number(radius));
 }
 
-// Positions stored as 32-bit floats (other tools' files) are known to 2^-24 of their size:
-// contacts found from them by distance (contact_tolerance, 1e-9 of the contact distance by
-// default) were missed without a word (packing's z of an FCC crystal: 4 for 12), and so
-// pores of one site were counted apart.
+// Positions or radii stored as 32-bit floats (other tools' files) are known to 2^-24 of
+// their size: contacts found from them by distance (contact_tolerance, 1e-9 of the contact
+// distance by default) were missed without a word (packing's z of an FCC crystal: 4 for 12),
+// and so pores of one site were counted apart.
 void warn_if_single_precision(const PluginContext& ctx, const FrameFileInfo& info,
                               const Frame& first) {
-  if (info.position_bytes >= 8) return;
-  const double rounding = first.position().abs().maxCoeff() * std::ldexp(1.0, -24);
+  const bool positions = info.position_bytes < 8, radii = info.radius_bytes < 8;
+  if (!positions && !radii) return;
+  const double largest = positions ? first.position().abs().maxCoeff() : first.radius().maxCoeff();
+  const double rounding = largest * std::ldexp(1.0, -24);
   const double contact = 2.0 * first.radius().minCoeff();
-  ctx.log.warn(info.path + ": positions stored as " + std::to_string(8 * info.position_bytes) +
-               "-bit floats: a coordinate is known to " + format_number(rounding) + ", " +
-               format_number(rounding / contact) +
+  const std::string what = positions && radii ? "positions and radii" : positions ? "positions" : "radii";
+  const int bytes = positions ? info.position_bytes : info.radius_bytes;
+  ctx.log.warn(info.path + ": " + what + " stored as " + std::to_string(8 * bytes) +
+               "-bit floats: " + (positions ? "a coordinate" : "a radius") + " is known to " +
+               format_number(rounding) + ", " + format_number(rounding / contact) +
                " of the smallest contact distance, coarser than the contact_tolerance " +
                format_number(kDefaultContactTolerance) +
                " by which analyzers find contacts from positions (and than pores' tolerance): " +

@@ -27,6 +27,7 @@ struct FrameFileInfo {
   // Bytes of each stored position coordinate: 8 for doubles, 4 for the 32-bit floats other
   // tools write (6 to 7 digits: too coarse to find contacts from by distance).
   int position_bytes = 8;
+  int radius_bytes = 8;  // the same for stored radii (contact distances are their sums)
   bool has(std::string_view column) const;
   std::string creator;  // /h5md/creator name and version
 };
