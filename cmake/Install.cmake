@@ -18,11 +18,14 @@ install(FILES ${PROJECT_BINARY_DIR}/core/include/granpipe/version.hpp
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/granpipe)
 set(config_dir ${CMAKE_INSTALL_LIBDIR}/cmake/granpipe)
 install(EXPORT granpipeTargets NAMESPACE granpipe:: DESTINATION ${config_dir})
+# Made for the install only, and kept out of the build tree's top: there find_package
+# (CMAKE_PREFIX_PATH=build) took it and failed on the targets only an install has.
+set(staged_config ${PROJECT_BINARY_DIR}/install-config)
 configure_package_config_file(cmake/granpipeConfig.cmake.in
-  ${PROJECT_BINARY_DIR}/granpipeConfig.cmake INSTALL_DESTINATION ${config_dir})
-write_basic_package_version_file(${PROJECT_BINARY_DIR}/granpipeConfigVersion.cmake
+  ${staged_config}/granpipeConfig.cmake INSTALL_DESTINATION ${config_dir})
+write_basic_package_version_file(${staged_config}/granpipeConfigVersion.cmake
   COMPATIBILITY SameMinorVersion)
-install(FILES ${PROJECT_BINARY_DIR}/granpipeConfig.cmake
-              ${PROJECT_BINARY_DIR}/granpipeConfigVersion.cmake
+install(FILES ${staged_config}/granpipeConfig.cmake
+              ${staged_config}/granpipeConfigVersion.cmake
               cmake/GranpipePlugin.cmake
         DESTINATION ${config_dir})

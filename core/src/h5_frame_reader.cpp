@@ -167,7 +167,8 @@ void check_unique_ids(const Frame& f, const std::string& dataset, long k) {
 // Bytes of each stored value when it is a float (8: doubles; 4: the 32-bit floats other
 // tools write), 8 for integer storage, which holds its values exactly.
 int float_bytes(const h5::Element& e) {
-  const h5::Object type = h5::owned(H5Dget_type(e.dataset()), e.path() + ": cannot read the data type");
+  const h5::Object type =
+      h5::owned(H5Dget_type(e.dataset()), e.path() + ": cannot read the data type");
   if (H5Tget_class(type.id()) != H5T_FLOAT) return 8;
   return static_cast<int>(H5Tget_size(type.id()));
 }

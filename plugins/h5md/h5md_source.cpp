@@ -93,7 +93,9 @@ void warn_if_single_precision(const PluginContext& ctx, const FrameFileInfo& inf
   const double largest = positions ? first.position().abs().maxCoeff() : first.radius().maxCoeff();
   const double rounding = largest * std::ldexp(1.0, -24);
   const double contact = 2.0 * first.radius().minCoeff();
-  const std::string what = positions && radii ? "positions and radii" : positions ? "positions" : "radii";
+  const std::string what = positions && radii ? "positions and radii"
+                           : positions        ? "positions"
+                                              : "radii";
   const int bytes = positions ? info.position_bytes : info.radius_bytes;
   ctx.log.warn(info.path + ": " + what + " stored as " + std::to_string(8 * bytes) +
                "-bit floats: " + (positions ? "a coordinate" : "a radius") + " is known to " +
