@@ -32,7 +32,7 @@ run)
     --set source.params.N=4096 --set source.params.side=32 \
     --set source.params.ramp_root_min=0.05 --set source.params.ramp_root_step=0.025 \
     --set source.params.ramp_taps_per_step=4000 --set source.params.save_every=1000 \
-    --set source.params.eta=1e-7 $start
+    --set source.params.eta=1e-7 --set output.save_frames=true $start
   ;;
 keep)
   saved=$out/frames.h5
