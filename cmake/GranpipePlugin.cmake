@@ -124,6 +124,12 @@ function(_granpipe_find_dependencies targets missing)
         list(APPEND found_targets granpipe_curve_fit)  # the core's fitter comes with GSL
       elseif(dependency STREQUAL "GSL" AND TARGET granpipe::granpipe_curve_fit)
         list(APPEND found_targets granpipe::granpipe_curve_fit)  # the same, installed
+      elseif(dependency STREQUAL "GSL")
+        # The header is installed either way; its library only where granpipe found GSL.
+        message(WARNING "granpipe was built without GSL: its curve fitter "
+                        "(granpipe/curve_fit.hpp) is not there to link, so a plugin that "
+                        "calls it fails to link or load; rebuild granpipe with GSL "
+                        "(Debian: libgsl-dev)")
       endif()
     else()
       list(APPEND not_found ${dependency})

@@ -52,12 +52,8 @@ void append_line(const fs::path& file, const std::string& line) {
 }  // namespace
 
 OutputDirectory::OutputDirectory(const fs::path& dir, bool overwrite,
-                                 const std::vector<InputFile>& inputs,
-                                 std::vector<std::string> stages)
-    : stages_(std::move(stages)),
-      final_(without_trailing_separators(dir)),
-      work_(final_),
-      marker_(new_run_marker()) {
+                                 const std::vector<InputFile>& inputs)
+    : final_(without_trailing_separators(dir)), work_(final_), marker_(new_run_marker()) {
   check_output_spelling(final_);
   check_output_kind(final_);
   check_output_place(final_, inputs);
@@ -69,7 +65,7 @@ OutputDirectory::OutputDirectory(const fs::path& dir, bool overwrite,
 OutputDirectory::~OutputDirectory() {
   if (!claimed_ || manifest_written_) return;
   try {
-    write_run_manifest(work_, stages_);
+    write_run_manifest(work_, files_);
   } catch (const InputError&) {
     // A full disk: without a manifest, --overwrite removes only what every run writes.
   }
@@ -189,7 +185,7 @@ void OutputDirectory::claim_beside() {
 void OutputDirectory::complete(Log& log) {
   interruption_.reset();
   throw_if_stop_requested();  // a signal that came before the handlers were given back
-  write_run_manifest(work_, stages_);
+  write_run_manifest(work_, files_);
   manifest_written_ = true;
   marker_.status = RunStatus::Complete;
   write_run_marker(work_, marker_);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "directory_lock.hpp"
+#include "granpipe/output_files.hpp"
 #include "interruption_record.hpp"
 #include "run_marker.hpp"
 
@@ -29,9 +30,8 @@ class OutputDirectory {
   // one holding them; one holding an input file; a directory granpipe did not make; one
   // another run is writing into; an earlier run's output without `overwrite`, or one
   // holding entries its run did not write.
-  // `stages`: the names files of the run's stages start with (run_manifest.hpp).
   OutputDirectory(const std::filesystem::path& dir, bool overwrite,
-                  const std::vector<InputFile>& inputs, std::vector<std::string> stages);
+                  const std::vector<InputFile>& inputs);
   ~OutputDirectory();
   OutputDirectory(const OutputDirectory&) = delete;
   OutputDirectory& operator=(const OutputDirectory&) = delete;
@@ -40,6 +40,9 @@ class OutputDirectory {
   // Where the run writes: final_path(), or a new directory beside it while the run
   // replaces an earlier one, which stays untouched until this run is complete.
   const std::filesystem::path& work_path() const { return work_; }
+
+  // Where the run records the files it writes beside the core's own, for its manifest.
+  FileRecord& files() { return files_; }
 
   // Makes work_path() this run's: of two runs claiming one directory, one wins and the
   // other gets an InputError. Marks it running; SIGINT and SIGTERM now mark it interrupted.
@@ -58,7 +61,7 @@ class OutputDirectory {
   std::filesystem::path swap_in();
   void remove_earlier(const std::filesystem::path& dir, Log& log);
 
-  std::vector<std::string> stages_;
+  FileRecord files_;
   std::filesystem::path final_, work_;
   bool replacing_ = false, claimed_ = false, manifest_written_ = false;
   RunMarker marker_;

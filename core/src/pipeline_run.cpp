@@ -87,7 +87,8 @@ std::string point_label(const Pipeline::Impl& p, std::size_t k) {
 }
 
 PointPlugins make_plugins(const Pipeline::Impl& p, std::size_t k, int threads, Log& log,
-                          Progress& progress, const fs::path& out, ResultStreams* streams) {
+                          Progress& progress, const fs::path& out, ResultStreams* streams,
+                          FileRecord* files) {
   const fs::path dir = point_directory(p, k, out);
   const PointSpec& point = p.points[k];
   const Seeds seeds = Seeds(p.seed).derive("point", p.shared_seeds ? 0 : k);
@@ -100,6 +101,7 @@ PointPlugins make_plugins(const Pipeline::Impl& p, std::size_t k, int threads, L
     PluginContext c{params, s, threads, log, progress, dir, name, params_path};
     c.provenance = provenance;
     c.streams = streams;
+    c.file_record = files;
     c.results_group = point_prefix(p, k) + name;
     return c;
   };
@@ -188,15 +190,6 @@ std::vector<std::string> stage_names(const Pipeline::Impl& p) {
   for (const PluginSpec& a : p.analyzers) names.push_back("analyzer " + a.name);
   for (const PluginSpec& w : p.writers) names.push_back("writer " + w.name);
   if (p.save_frames) names.push_back("frames file");
-  return names;
-}
-
-// What the files of the stages start with (run_manifest.hpp): "source" and the analyzers'
-// and writers' names.
-std::vector<std::string> file_stages(const Pipeline::Impl& p) {
-  std::vector<std::string> names{"source"};
-  for (const PluginSpec& a : p.analyzers) names.push_back(a.name);
-  for (const PluginSpec& w : p.writers) names.push_back(w.name);
   return names;
 }
 
@@ -393,7 +386,7 @@ void Pipeline::check(Log& log) const {
   quiet.set_enabled(false);
   std::set<std::string> warned;
   for (std::size_t k = 0; k < impl_->points.size(); ++k) {
-    warn_once(make_plugins(*impl_, k, 1, log, quiet, {}, nullptr), warned, log);
+    warn_once(make_plugins(*impl_, k, 1, log, quiet, {}, nullptr, nullptr), warned, log);
   }
 }
 
@@ -411,8 +404,7 @@ RunSummary run_in_directory(const Pipeline::Impl& p, const RunOptions& options, 
   const auto t0 = std::chrono::steady_clock::now();
   const std::string started = utc_now();
   RunSummary summary;
-  OutputDirectory out(options.out.value_or(p.output_dir), options.overwrite, input_files(p),
-                      file_stages(p));
+  OutputDirectory out(options.out.value_or(p.output_dir), options.overwrite, input_files(p));
   summary.output_dir = out.final_path();
   const fs::path dir = out.work_path();  // beside output_dir while replacing an earlier run
 
@@ -430,7 +422,7 @@ RunSummary run_in_directory(const Pipeline::Impl& p, const RunOptions& options, 
   double total_work = 0;
   std::string unit = "frames";
   for (std::size_t k = 0; k < p.points.size(); ++k) {
-    plugins.push_back(make_plugins(p, k, per_point, log, progress, dir, &stream));
+    plugins.push_back(make_plugins(p, k, per_point, log, progress, dir, &stream, &out.files()));
     const Source::Work w = plugins.back().source->work();
     total_work += w.total;
     unit = w.unit;
@@ -499,7 +491,7 @@ RunSummary run_in_directory(const Pipeline::Impl& p, const RunOptions& options, 
     log.info(stage_times_line(ended, p.points.size()));
     summary.stage_names = ended.stage_names;
     summary.stage_seconds = ended.stage_seconds;
-    write_results(dir, summary.results, ended);
+    for (const fs::path& file : write_results(dir, summary.results, ended)) out.files().add(file);
     fs::remove(dir / "results.partial.h5");
     log.info("done: " + std::to_string(summary.frames) + " frame(s) in " +
              std::to_string(summary.seconds) + " s; results in " +

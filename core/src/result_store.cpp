@@ -217,7 +217,8 @@ void write_provenance(hid_t file, const Provenance& provenance) {
 
 // Every file is written under a temporary name and renamed only once all are written,
 // so a run that fails here (a full disk) leaves no results file under its final name.
-void write_results(const fs::path& dir, const ResultSet& results, const Provenance& provenance) {
+std::vector<fs::path> write_results(const fs::path& dir, const ResultSet& results,
+                                    const Provenance& provenance) {
   const fs::path final_path = dir / "results.h5";
   TextFiles csvs;
   for (const auto& [group, r] : results) collect_csvs(dir, group, r, provenance, csvs);
@@ -234,8 +235,14 @@ void write_results(const fs::path& dir, const ResultSet& results, const Provenan
     for (const fs::path& f : written) fs::remove(f, ignored);
     throw;
   }
-  for (const auto& csv : csvs) rename_into_place(csv.first);
+  std::vector<fs::path> files;
+  for (const auto& csv : csvs) {
+    rename_into_place(csv.first);
+    files.push_back(csv.first);
+  }
   rename_into_place(final_path);
+  files.push_back(final_path);
+  return files;
 }
 
 std::string run_label(const Provenance& p) {

@@ -8,6 +8,7 @@
 
 #include "granpipe/atomic_file.hpp"
 #include "granpipe/errors.hpp"
+#include "granpipe/output_files.hpp"
 #include "run_marker.hpp"
 
 namespace granpipe {
@@ -93,24 +94,13 @@ bool written_before_the_end(const Entry& e) {
   return name == "report.html" && is_report(e.path);
 }
 
-// `name` starts with `stage` followed by '.' or '_'.
-bool of_stage(const std::string& name, const std::string& stage) {
-  return name.size() > stage.size() && name.compare(0, stage.size(), stage) == 0 &&
-         (name[stage.size()] == '.' || name[stage.size()] == '_');
-}
-
-bool named_as_the_run_names(const Entry& e, const std::vector<std::string>& stages) {
+// The core's own files, the point folders, and what the run's plugins recorded
+// (output_files.hpp): never a file merely named like them.
+bool written_by_this_run(const Entry& e, const fs::path& dir, const FileRecord& recorded) {
   static const std::set<std::string> files{"results.h5", "frames.h5"};
   if (written_before_the_end(e)) return true;
   if (!where_a_run_writes(e)) return false;
-  std::string file = bare_name(e).filename().string();
-  if (files.count(file) || (of_stage(file, "sweep") && file.ends_with(".csv"))) return true;
-  std::smatch point;
-  static const std::regex point_prefix("point_[0-9]+\\.");
-  if (std::regex_search(file, point, point_prefix, std::regex_constants::match_continuous))
-    file.erase(0, point.length());
-  return std::any_of(stages.begin(), stages.end(),
-                     [&](const std::string& stage) { return of_stage(file, stage); });
+  return files.count(bare_name(e).filename().string()) > 0 || recorded.has(dir / e.name);
 }
 
 class RunEntries {
@@ -126,11 +116,11 @@ class RunEntries {
 
 }  // namespace
 
-void write_run_manifest(const fs::path& dir, const std::vector<std::string>& stages) {
+void write_run_manifest(const fs::path& dir, const FileRecord& recorded) {
   std::string text = std::string(kHeader) + "\n" + kRunManifestName + "\n";
   for (const Entry& e : entries_below(dir))
     if (e.name.find('\n') == std::string::npos && e.name != kRunManifestName &&
-        named_as_the_run_names(e, stages))
+        written_by_this_run(e, dir, recorded))
       text += e.name + "\n";
   write_file_atomically(dir / kRunManifestName, text);
 }

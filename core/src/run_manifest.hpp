@@ -6,20 +6,21 @@
 #include <string>
 #include <vector>
 
+#include "granpipe/output_files.hpp"
+
 namespace granpipe {
 
 inline constexpr const char* kRunManifestName = ".granpipe-manifest";
 
-// Writes the manifest of `dir`, listing the entries below it now that are named as a run
-// names what it writes: its own files (the marker, pipeline.json, run.log, the results and
-// frames files, sweep.*.csv) and point_NNN folders, and, in the folder or a point_NNN
-// folder, files whose names start with one of `stages` (the source's "source", the
-// analyzers' and writers' names), with a point_NNN. before it or not, and '.' or '_' after
-// it. A user may add files while the run goes (notes.txt, a folder of plots): those are
-// left out, and so protected. Names are relative, a directory's ends in '/'; a name
-// holding a newline is left out too. granpipe's scripts add what they write into a
-// finished run (report.html, pooled tables: scripts/run_manifest.py). Throws InputError.
-void write_run_manifest(const std::filesystem::path& dir, const std::vector<std::string>& stages);
+// Writes the manifest of `dir`, listing the entries below it now that the run wrote: its
+// own files (the marker, pipeline.json, run.log, the results and frames files, granpipe's
+// report), the point_NNN folders, and the files `recorded` (the CSV tables, what plugins
+// named with ctx.output_files()). A file a user adds while the run goes (notes.txt,
+// packing_notes.txt, a folder of plots) is left out whatever its name, and so protected.
+// Names are relative, a directory's ends in '/'; a name holding a newline is left out
+// too. granpipe's scripts add what they write into a finished run (report.html, pooled
+// tables: scripts/run_manifest.py). Throws InputError.
+void write_run_manifest(const std::filesystem::path& dir, const FileRecord& recorded);
 
 // The entries below `dir`, sorted, that its run did not write: those missing from its
 // manifest, or, for a run without one (killed outright, or made before manifests), those

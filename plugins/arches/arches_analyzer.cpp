@@ -55,8 +55,7 @@ Schema schema() {
 
 ArchesAnalyzer::ArchesAnalyzer(const PluginContext& ctx)
     : log_(ctx.log),
-      output_dir_(ctx.output_dir),
-      file_stem_(ctx.name.empty() ? "arches" : ctx.name),
+      files_(ctx.output_files()),
       provenance_(ctx.provenance),
       tolerance_(ctx.params.real(kContactToleranceName)),
       span_bin_(ctx.params.real("span_bin")),
@@ -151,10 +150,10 @@ void ArchesAnalyzer::consume(const Frame& frame, FrameCache& cache) {
                       arches_per_particle, p1, p2, z_eq4, z_direct, base_fraction, missing,
                       non_supporting});
 
-  if (drawn_ < svg_frames_ && !output_dir_.empty()) {
+  if (drawn_ < svg_frames_ && files_.enabled()) {
     const std::string stem = tap >= 0 ? std::to_string(tap) : "frame" + std::to_string(frames_ - 1);
     write_arches_svg(
-        output_dir_ / (file_stem_ + "_" + stem + ".svg"), frame, arches,
+        files_.path("_" + stem + ".svg"), frame, arches,
         where + ": " + std::to_string(n) + " disks, " + std::to_string(st.arches()) + " arches",
         provenance_);
     ++drawn_;

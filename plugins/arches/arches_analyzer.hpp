@@ -29,8 +29,7 @@ class ArchesAnalyzer : public Analyzer {
   void add_size_distribution(const std::vector<Eigen::Index>& n, double disks);
 
   Log& log_;
-  std::filesystem::path output_dir_;
-  std::string file_stem_;   // the analyzer's name in the pipeline
+  OutputFiles files_;       // arches_<tap>.svg, under the analyzer's name in the pipeline
   std::string provenance_;  // the run's, for the pictures
   double tolerance_;
   double span_bin_;

@@ -23,19 +23,19 @@ std::string with_provenance(std::string xml, const std::string& provenance) {
 }
 
 VtkWriter::VtkWriter(const PluginContext& ctx)
-    : dir_(ctx.output_dir), name_(ctx.name), provenance_(ctx.provenance) {}
+    : files_(ctx.output_files()), provenance_(ctx.provenance) {}
 
 void VtkWriter::write(const Frame& frame) {
   char number[24];
   std::snprintf(number, sizeof number, "_%06zu.vtp", written_.size());
-  const std::string file = name_ + number;
-  write_file_atomically(dir_ / file, with_provenance(polydata_xml(frame), provenance_));
-  written_.push_back({frame.time, frame.step, file});
+  const std::filesystem::path file = files_.path(number);
+  write_file_atomically(file, with_provenance(polydata_xml(frame), provenance_));
+  written_.push_back({frame.time, frame.step, file.filename().string()});
 }
 
 void VtkWriter::close() {
   if (written_.empty()) return;  // no frame: no collection
-  write_file_atomically(dir_ / (name_ + ".pvd"),
+  write_file_atomically(files_.path(".pvd"),
                         with_provenance(collection_xml(written_), provenance_));
 }
 

@@ -22,8 +22,7 @@ class VtkWriter : public Writer {
   void close() override;
 
  private:
-  std::filesystem::path dir_;
-  std::string name_;
+  OutputFiles files_;
   std::string provenance_;
   std::vector<WrittenFrame> written_;
 };

@@ -90,8 +90,8 @@ std::string particle_line(const Frame& f, Eigen::Index i, int digits) {
 }
 
 XyzWriter::XyzWriter(const PluginContext& ctx)
-    : final_path_(ctx.output_dir / (ctx.name + ".xyz")),
-      partial_path_(ctx.output_dir / (ctx.name + ".partial.xyz")),
+    : final_path_(ctx.output_files().path(".xyz")),
+      partial_path_(ctx.output_files().path(".partial.xyz")),
       digits_(static_cast<int>(ctx.params.integer("digits"))),
       provenance_(ctx.provenance.empty() ? "" : " granpipe=\"" + ctx.provenance + "\"") {}
 

@@ -10,6 +10,8 @@
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "granpipe/pipeline.hpp"
 #include "granpipe/plugin_loader.hpp"
@@ -40,17 +42,31 @@ class PickyAnalyzer : public Analyzer {
   int frames_ = 0;
 };
 
-// Where ScribblingAnalyzer writes a user's note while a run goes on.
+// Where ScribblingAnalyzer writes a user's notes while a run goes on, and their names.
 fs::path scribble_into;
+std::vector<std::string> scribbled{"notes.txt"};
 
-// A user writing notes.txt into a folder while a run goes on.
+// A user writing notes into a folder while a run goes on.
 class ScribblingAnalyzer : public Analyzer {
  public:
   explicit ScribblingAnalyzer(const PluginContext&) {}
   void consume(const Frame&, FrameCache&) override {
-    std::ofstream(scribble_into / "notes.txt") << "mine";
+    for (const std::string& name : scribbled) std::ofstream(scribble_into / name) << "mine";
   }
   void finish(Results&) override {}
+};
+
+// An analyzer that draws each frame into a file of its own, named as plugins name theirs.
+class DrawingAnalyzer : public Analyzer {
+ public:
+  explicit DrawingAnalyzer(const PluginContext& ctx) : files_(ctx.output_files()) {}
+  void consume(const Frame& frame, FrameCache&) override {
+    std::ofstream(files_.path("_" + std::to_string(frame.step) + ".svg")) << "<svg/>";
+  }
+  void finish(Results&) override {}
+
+ private:
+  OutputFiles files_;
 };
 
 Registry registry() {
@@ -59,6 +75,7 @@ Registry registry() {
   r.add_source<DivergingSource>("diverging", "fails at once", Schema{});
   r.add_analyzer<PickyAnalyzer>("picky", "fails on frame 1", Schema{});
   r.add_analyzer<ScribblingAnalyzer>("scribbling", "writes a note", Schema{});
+  r.add_analyzer<DrawingAnalyzer>("drawing", "draws each frame", Schema{});
   return r;
 }
 
@@ -372,23 +389,41 @@ TEST(OutputDirectory, OverwriteNeverFollowsASymlinkInTheEarlierRun) {
 
 // The manifest listed every entry of the folder when the run ended, so a note a user wrote
 // into a fresh run's folder while it went on counted as the run's, and a later --overwrite
-// removed it without a word. Only what is named as a run names its files is listed (a
-// stage's name first: here the scribbling analyzer's table would be
-// scribbling.scalars.csv, were it to report one).
+// removed it without a word; then every file named like a stage's (scribbling_notes.txt,
+// source.todo) still was. Only what the run recorded as it wrote it is listed.
 TEST(OutputDirectory, WhatAUserAddsToAFreshRunsFolderIsNotTheRuns) {
   const fs::path out = fresh_dir("scribbled_fresh");
   scribble_into = out;
+  scribbled = {"notes.txt", "scribbling_notes.txt", "source.todo"};
   const std::string scribbling = R"({"source": {"plugin": "lattice",
     "params": {"lattice": "sc", "cells": [2, 2, 2], "frames": 2}},
     "analyzers": [{"plugin": "scribbling"}]})";
   ASSERT_EQ(run(scribbling, out), "");
-  EXPECT_EQ(read(out / ".granpipe-manifest").find("notes.txt"), std::string::npos);
+  scribbled = {"notes.txt"};
+  for (const char* note : {"notes.txt", "scribbling_notes.txt", "source.todo"})
+    EXPECT_EQ(read(out / ".granpipe-manifest").find(note), std::string::npos) << note;
   const auto before = snapshot(out);
   EXPECT_EQ(run(kLattice, out, true),
             out.string() +
                 ": --overwrite removes only what granpipe wrote, and this run's folder also holds "
-                "notes.txt; move them out or remove the folder yourself; nothing was changed");
+                "notes.txt, scribbling_notes.txt, source.todo; move them out or remove the folder "
+                "yourself; nothing was changed");
   EXPECT_EQ(snapshot(out), before);
+  fs::remove_all(out);
+}
+
+// A plugin's own files, named with ctx.output_files(), are the run's: listed, and replaced.
+TEST(OutputDirectory, APluginsOwnFilesAreListedAndReplaced) {
+  const fs::path out = fresh_dir("drawn");
+  const std::string drawing = R"({"source": {"plugin": "lattice",
+    "params": {"lattice": "sc", "cells": [2, 2, 2], "frames": 2}},
+    "analyzers": [{"plugin": "drawing"}]})";
+  ASSERT_EQ(run(drawing, out), "");
+  const std::string manifest = read(out / ".granpipe-manifest");
+  EXPECT_NE(manifest.find("\ndrawing_0.svg\n"), std::string::npos) << manifest;
+  EXPECT_NE(manifest.find("\ndrawing_1.svg\n"), std::string::npos) << manifest;
+  EXPECT_EQ(run(kLattice, out, true), "");
+  EXPECT_FALSE(fs::exists(out / "drawing_0.svg"));
   fs::remove_all(out);
 }
 

@@ -12,6 +12,7 @@
 #include "granpipe/frame.hpp"
 #include "granpipe/frame_cache.hpp"
 #include "granpipe/log.hpp"
+#include "granpipe/output_files.hpp"
 #include "granpipe/params.hpp"
 #include "granpipe/plugin.hpp"
 #include "granpipe/progress.hpp"
@@ -53,7 +54,7 @@ inline constexpr std::uint64_t kLayoutFingerprint = abi_detail::fnv1a({
     GRANPIPE_LAYOUT_OF(Results),       GRANPIPE_LAYOUT_OF(RunningMean),
     GRANPIPE_LAYOUT_OF(StreamedTable), GRANPIPE_LAYOUT_OF(FrameContent),
     GRANPIPE_LAYOUT_OF(PluginContext), GRANPIPE_LAYOUT_OF(PluginInfo),
-    GRANPIPE_LAYOUT_OF(Registry),
+    GRANPIPE_LAYOUT_OF(Registry),      GRANPIPE_LAYOUT_OF(OutputFiles),
 });
 #undef GRANPIPE_LAYOUT_OF
 

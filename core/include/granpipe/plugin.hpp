@@ -13,6 +13,7 @@
 #include "granpipe/frame.hpp"
 #include "granpipe/frame_cache.hpp"
 #include "granpipe/log.hpp"
+#include "granpipe/output_files.hpp"
 #include "granpipe/params.hpp"
 #include "granpipe/progress.hpp"
 #include "granpipe/random.hpp"
@@ -49,6 +50,9 @@ struct PluginContext {
   // file a plugin writes says of where it came from, as every result file does.
   std::string provenance{};
 
+  // Where the names of the files the run writes are recorded (output_files()).
+  FileRecord* file_record = nullptr;
+
   // Where streamed tables go, and the results group they belong to ("arches",
   // "point_002/arches"); no streams when a pipeline is only checked.
   ResultStreams* streams = nullptr;
@@ -60,6 +64,11 @@ struct PluginContext {
     const std::size_t id = streams ? streams->declare(results_group, table, empty) : 0;
     return {std::move(empty), streams, id};
   }
+
+  // Names the files this instance writes into output_dir (<name><suffix>) and records
+  // them as the run's: a later --overwrite removes those and leaves any other file there
+  // as the user's. Keep it as a member; write no file into output_dir by another name.
+  OutputFiles output_files() const { return {file_record, output_dir, name}; }
 
   // "source.params.cells": the start of a message about one parameter, so that a plugin's
   // own checks read like the core's ("<file>: source.params.cells: expected ..., got ...").
@@ -112,7 +121,7 @@ class Analyzer {
 
 // Saves frames: the H5MD frame store (frames.h5) is one; VTK or extended XYZ others.
 // Sees every frame (every output.frame_stride-th) after the analyzers, with the columns
-// they published. Files it writes into ctx.output_dir start with ctx.name; it creates
+// they published. It names the files it writes with ctx.output_files(); it creates
 // them at the first write (plugins are also made to check a pipeline, which writes nothing).
 class Writer {
  public:

@@ -33,8 +33,10 @@ std::string run_label(const Provenance& p);
 // One results group per named producer (a sweep point's source and analyzers).
 using ResultSet = std::map<std::string, Results>;
 
-// Writes `dir/results.h5` and one CSV per table, histogram and scalar group beside it.
-void write_results(const std::filesystem::path& dir, const ResultSet& results,
-                   const Provenance& provenance);
+// Writes `dir/results.h5` and one CSV per table, histogram and scalar group beside it,
+// and returns the files written.
+std::vector<std::filesystem::path> write_results(const std::filesystem::path& dir,
+                                                 const ResultSet& results,
+                                                 const Provenance& provenance);
 
 }  // namespace granpipe
