@@ -198,7 +198,10 @@ ParamValue convert(const nlohmann::json& v, const ParamSpec& s, const JsonLocati
                        did_you_mean(x, s.choices));
     }
     case ParamType::Path:
-      if (!v.is_string() || v.get<std::string>().empty()) fail(at, s, v);
+      if (!v.is_string()) fail(at, s, v);
+      // An optional path's "" (no file) is its default, as the run's pipeline.json records it.
+      if (v.get<std::string>().empty() && optional_path(s)) return std::string();
+      if (v.get<std::string>().empty()) fail(at, s, v);
       return existing_file(v, at, base_dir);
     case ParamType::PathList: {
       if (!v.is_array()) fail(at, s, v);

@@ -262,6 +262,12 @@ std::string format_value(const ParamValue& v) {
       v);
 }
 
+bool optional_path(const ParamSpec& spec) {
+  if (spec.type != ParamType::Path || !spec.default_value) return false;
+  const auto* text = std::get_if<std::string>(&*spec.default_value);
+  return text && text->empty();
+}
+
 std::string describe_expected(const ParamSpec& spec) {
   std::string what;
   switch (spec.type) {
@@ -276,7 +282,8 @@ std::string describe_expected(const ParamSpec& spec) {
     case ParamType::String:
       return "a string";
     case ParamType::Path:
-      return "a path to an existing file";
+      return optional_path(spec) ? "a path to an existing file, or \"\" for none"
+                                 : "a path to an existing file";
     case ParamType::PathList:
       return "a list of paths to existing files";
     case ParamType::Choice: {

@@ -2,8 +2,12 @@
 // choices read as enums, nested objects, species tables and species-pair tables. Every
 // bad value gives one line naming the file and the JSON path of the offending entry.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
+#include <filesystem>
+#include <fstream>
 #include <optional>
+#include <string>
 
 #include "granpipe/pipeline.hpp"
 #include "plugin_harness.hpp"
@@ -318,4 +322,27 @@ TEST(SchemaDeclarations, MistakesOfThePluginAreInternalErrors) {
   EXPECT_THROW(s.pair_table("contacts", "species", pair, R"({"a-a": {"k_n": 1}})", "b-b missing"),
                InternalError);
   s.pair_table("contacts", "species", pair, R"({"*": {"k_n": 1}})", "every pair");
+}
+
+// A run's pipeline.json records an optional path's default "" (no file), which was then
+// refused as "expected a path to an existing file": the recorded pipeline did not run again.
+TEST(PathParams, AnOptionalPathTakesItsEmptyDefaultGivenExplicitly) {
+  const std::filesystem::path data =
+      std::filesystem::temp_directory_path() / ("granpipe_test_path_" + std::to_string(getpid()));
+  std::ofstream(data) << "data";
+  Schema s;
+  s.path("initial_file", std::string(""), "a start file, or none");
+  s.path("data", std::nullopt, "a required file");
+  const auto ctx = test::make_context(s, {{"initial_file", ""}, {"data", data.string()}});
+  EXPECT_EQ(ctx->params().string("initial_file"), "");
+  EXPECT_EQ(test::input_error_of([&] {
+              test::make_context(s, {{"data", ""}});
+            }),
+            "test: params.data: expected a path to an existing file, got \"\"");
+  EXPECT_EQ(test::input_error_of([&] {
+              test::make_context(s, {{"initial_file", 3}, {"data", data.string()}});
+            }),
+            "test: params.initial_file: expected a path to an existing file, or \"\" for none, "
+            "got 3");
+  std::filesystem::remove(data);
 }

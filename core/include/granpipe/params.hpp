@@ -249,5 +249,7 @@ class PairTable {
 std::string format_value(const ParamValue& v);
 // What a spec accepts, e.g. "a number in [0, 1]" or "one of \"sc\", \"fcc\"".
 std::string describe_expected(const ParamSpec& spec);
+// A path parameter whose default is "" (no file): "" is then a value it takes.
+bool optional_path(const ParamSpec& spec);
 
 }  // namespace granpipe
