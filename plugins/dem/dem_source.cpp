@@ -11,6 +11,8 @@
 
 #include "diagnostics.hpp"
 #include "frame_output.hpp"
+#include "granpipe/format_number.hpp"
+#include "granpipe/step_count.hpp"
 #include "granpipe/stop_request.hpp"
 #include "kernels.hpp"
 #include "scene_checks.hpp"
@@ -144,8 +146,6 @@ double kinetic_energy_bound(const InitialState& s, const Model& model, double sp
   }
   return bound;
 }
-
-constexpr double kMostSteps = 1e18;  // within 64-bit step counts, with room to add
 
 std::int64_t steps_in(double time, double dt) {
   return static_cast<std::int64_t>(std::ceil(time / dt - 1e-9));
@@ -303,16 +303,14 @@ void DemSource::read_schedule(const PluginContext& ctx, const Drive& drive) {
   const double dt = p.real("dt");
   // Steps are counted in 64-bit integers: a duration of 1e300 wrapped round to a negative
   // count, refused as a save_from past it.
-  if (!(p.real("duration") / dt <= kMostSteps)) {
-    std::ostringstream m;
-    m << ctx.param("duration") << ": expected at most " << kMostSteps
-      << " time steps (duration / dt), got " << p.real("duration") / dt << " (dt " << dt << ")";
-    throw InputError(m.str());
-  }
+  check_step_count(p.real("duration") / dt, ctx.param("duration"), "time steps",
+                   "duration / dt, dt " + format_number(dt));
   total_steps_ = end_step_ = steps_in(p.real("duration"), dt);
   refuse_less_than_a_step(ctx, dt);
   save_every_ = p.integer("save_every");
-  first_saved_step_ = steps_in(p.real("save_from"), dt);
+  // Compared as times first: a save_from of 1e16 wrapped round to a negative step.
+  const bool within = p.real("save_from") <= p.real("duration");
+  first_saved_step_ = within ? steps_in(p.real("save_from"), dt) : total_steps_ + 1;
   if (first_saved_step_ > total_steps_) {
     std::ostringstream m;
     m << ctx.param("save_from") << ": expected a time within the duration (" << p.real("duration")

@@ -11,6 +11,7 @@
 #include "granpipe/errors.hpp"
 #include "granpipe/format_number.hpp"
 #include "granpipe/start_frame.hpp"
+#include "granpipe/step_count.hpp"
 #include "placement.hpp"
 
 namespace granpipe::disks2d_tap {
@@ -162,8 +163,32 @@ DepositOptions deposit_options(const Params& p) {
   return o;
 }
 
+// The taps a schedule counts, in doubles: their 64-bit sums and products wrapped round.
+void check_tap_counts(const PluginContext& ctx) {
+  const Params& p = ctx.params;
+  const auto count = [&](const char* name) { return static_cast<double>(p.integer(name)); };
+  if (p.choice<Protocol>("protocol") == Protocol::Annealed) {
+    check_step_count(
+        2.0 * count("anneal_cycles") * count("anneal_steps") * count("anneal_taps_per_step"),
+        ctx.param("anneal_cycles"), "taps",
+        "2 anneal_cycles x anneal_steps x anneal_taps_per_step");
+    return;
+  }
+  double cooling = 0.0;
+  if (p.real("cool_from") > p.real("A")) {
+    const double levels = std::ceil((p.real("cool_from") - p.real("A")) / p.real("cool_step"));
+    check_step_count(levels, ctx.param("cool_step"), "cooling levels",
+                     "(cool_from - A) / cool_step");
+    cooling = levels * count("cool_taps_per_step");
+  }
+  check_step_count(cooling + count("equilibration_taps") + count("production_taps"),
+                   ctx.param("production_taps"), "taps",
+                   "cooling levels x cool_taps_per_step + equilibration_taps + production_taps");
+}
+
 TapSchedule tap_schedule(const PluginContext& ctx) {
   const Params& p = ctx.params;
+  check_tap_counts(ctx);
   if (p.choice<Protocol>("protocol") == Protocol::Constant) {
     const double from = p.real("cool_from");
     if (from == 0.0) {

@@ -11,6 +11,7 @@
 #include "granpipe/errors.hpp"
 #include "granpipe/format_number.hpp"
 #include "granpipe/start_frame.hpp"
+#include "granpipe/step_count.hpp"
 #include "saved_packing.hpp"
 
 namespace granpipe::spheres3d_tap {
@@ -66,8 +67,10 @@ ChoiceNames<Protocol> choice_names(Protocol) {
 
 EpsilonProtocol epsilon_protocol(const PluginContext& ctx) {
   const Params& p = ctx.params;
-  if (p.choice<Protocol>("protocol") == Protocol::Constant)
+  if (p.choice<Protocol>("protocol") == Protocol::Constant) {
+    check_step_count(static_cast<double>(p.integer("taps")), ctx.param("taps"), "taps", "taps");
     return EpsilonProtocol::constant(p.real("epsilon"), p.integer("taps"));
+  }
   const double lo = p.real("ramp_root_min"), hi = p.real("ramp_root_max"),
                step = p.real("ramp_root_step");
   if (!(hi >= lo + step)) {
@@ -94,8 +97,13 @@ EpsilonProtocol epsilon_protocol(const PluginContext& ctx) {
       << ": expected at most 1 (epsilon at most 1, as for epsilon), got " << hi;
     throw InputError(s.str());
   }
+  const double legs = static_cast<double>(p.integer("ramp_legs"));
+  check_step_count(
+      static_cast<double>(p.integer("ramp_taps_per_step")) * ((steps + 1) + (legs - 1) * steps),
+      ctx.param("ramp_taps_per_step"), "taps",
+      "ramp_taps_per_step x the values of sqrt(epsilon) over ramp_legs legs");
   return EpsilonProtocol::ramp(lo, hi, step, p.integer("ramp_taps_per_step"),
-                               static_cast<int>(p.integer("ramp_legs")));
+                               static_cast<int>(legs));
 }
 
 double mean_height(const std::vector<Eigen::Vector3d>& centres) {

@@ -29,4 +29,7 @@ PY
 "$expect" 2 '^granpipe: --set source\.params\.ramp_root_max=0\.25: expected ramp_root_min \+ a whole number of ramp_root_step \(0\.1 \+ k 0\.1\), got 0\.25: the ramp would turn at 0\.2$' \
   -- "$exe" validate "$pipeline" --set 'source.params.protocol="ramp"' --set source.params.ramp_root_min=0.1 \
      --set source.params.ramp_root_step=0.1 --set source.params.ramp_root_max=0.25
-echo "spheres3d_tap: the last tap saved; empty schedules, other protocols' parameters and ramps between steps refused"
+# A ramp of 2^62 taps a step counted -2^63 taps in all and ran none, exit 0.
+"$expect" 2 '^granpipe: --set source\.params\.ramp_taps_per_step=4611686018427387904: expected at most 9007199254740992 taps, got 2\.12138e\+20 \(ramp_taps_per_step x the values of sqrt\(epsilon\) over ramp_legs legs\)$' \
+  -- "$exe" validate "$pipeline" --set 'source.params.protocol="ramp"' --set source.params.ramp_taps_per_step=4611686018427387904
+echo "spheres3d_tap: the last tap saved; empty schedules, other protocols' parameters, ramps between steps and uncountable ramps refused"

@@ -223,8 +223,22 @@ TEST(DemSource, FramesCarryTheDrivesCyclesAndTheContainersVelocity) {
 TEST(DemSource, ADurationOfMoreStepsThanCanBeCountedIsRefusedByName) {
   const fs::path file = start_file();
   EXPECT_EQ(refusal({{"initial_file", file.string()}, {"duration", 1e300}}),
-            "params.duration: expected at most 1e+18 time steps (duration / dt), got 5e+303 (dt "
-            "0.0002)");
+            "params.duration: expected at most 9007199254740992 time steps, got 5e+303 "
+            "(duration / dt, dt 0.0002)");
+  fs::remove(file);
+}
+
+// A save_from of 1e16 (within the 2^53 steps a duration may have, but past this one's)
+// wrapped round to a negative step and saved every frame from t = 0, exit 0.
+TEST(DemSource, ASaveFromPastTheDurationIsRefusedHoweverFarPast) {
+  const fs::path file = start_file();
+  for (const double save_from : {1.0, 1e16, 1e300}) {
+    EXPECT_EQ(
+        refusal({{"initial_file", file.string()}, {"duration", 0.03}, {"save_from", save_from}}),
+        "params.save_from: expected a time within the duration (0.03), got " +
+            format_number(save_from))
+        << save_from;
+  }
   fs::remove(file);
 }
 

@@ -693,6 +693,29 @@ TEST(Disks2dTapSource, ParametersThatWouldDoNothingOrTooMuchAreRefused) {
             "test: params.mc_loops: expected an integer in [0, 100000], got 100000000");
 }
 
+// Tap counts made of parameters wrapped round past 2^63: 2^63 - 1 production taps
+// counted -2^63 in all and ran none (every result NaN, exit 0); cool_from 1e300 or a
+// cool_step of 1e-320 skipped the cooling without a word.
+TEST(Disks2dTapSource, TapCountsPastWhatCanBeCountedAreRefused) {
+  const auto refusal = [](const nlohmann::json& params) {
+    return granpipe::test::input_error_of([&] { run_source(params, 1); });
+  };
+  const auto most = std::numeric_limits<std::int64_t>::max();
+  EXPECT_EQ(refusal({{"production_taps", most}}),
+            "params.production_taps: expected at most 9007199254740992 taps, got "
+            "9.22337e+18 (cooling levels x cool_taps_per_step + equilibration_taps + "
+            "production_taps)");
+  EXPECT_EQ(refusal({{"cool_from", 1.3}, {"cool_step", 1e-320}}),
+            "params.cool_step: expected at most 9007199254740992 cooling levels, got inf "
+            "((cool_from - A) / cool_step)");
+  EXPECT_EQ(refusal({{"cool_from", 1e300}}),
+            "params.cool_step: expected at most 9007199254740992 cooling levels, got 5e+301 "
+            "((cool_from - A) / cool_step)");
+  EXPECT_EQ(refusal({{"protocol", "annealed"}, {"anneal_cycles", most / 2}}),
+            "params.anneal_cycles: expected at most 9007199254740992 taps, got "
+            "1.84467e+22 (2 anneal_cycles x anneal_steps x anneal_taps_per_step)");
+}
+
 TEST(Disks2dTapSource, SameSeedSameFrames) {
   const auto params = nlohmann::json({{"N", std::int64_t{120}},
                                       {"width", 10.0},
