@@ -304,6 +304,14 @@ TapSource::TapSource(const PluginContext& ctx)
       << ", got " << p.real("delta");
     throw InputError(s.str());
   }
+  // A fall of delta must move a disk: below 1e-9 of the bed's size it is lost in the
+  // rounding of the coordinates (1e-320 moved nothing, and the deposition never ended).
+  const double size = std::max(packing_.width, packing_.top());
+  if (p.real("delta") < 1e-9 * size) {
+    throw InputError(ctx.param("delta") + ": expected at least 1e-9 of the bed's size (" +
+                     format_number(size) + "), below which a fall is lost in the rounding of " +
+                     "the coordinates, got " + format_number(p.real("delta")));
+  }
   const auto protocol = p.choice<Protocol>("protocol");
   if (protocol == Protocol::Constant && p.integer("production_taps") < p.integer("save_every")) {
     throw InputError(ctx.param("production_taps") + ": expected at least save_every = " +

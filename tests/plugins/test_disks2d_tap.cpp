@@ -716,6 +716,17 @@ TEST(Disks2dTapSource, TapCountsPastWhatCanBeCountedAreRefused) {
             "1.84467e+22 (2 anneal_cycles x anneal_steps x anneal_taps_per_step)");
 }
 
+// A fall of 1e-320 left every coordinate as it was: the deposition never ended.
+TEST(Disks2dTapSource, AFallLostInTheRoundingIsRefused) {
+  const std::string refused = granpipe::test::input_error_of([&] {
+    run_source(nlohmann::json({{"delta", 1e-320}}), 1);
+  });
+  EXPECT_EQ(refused.substr(0, refused.find(" (")),
+            "params.delta: expected at least 1e-9 of the bed's size");
+  EXPECT_EQ(refused.substr(refused.find("), ")),
+            "), below which a fall is lost in the rounding of the coordinates, got 9.99989e-321");
+}
+
 TEST(Disks2dTapSource, SameSeedSameFrames) {
   const auto params = nlohmann::json({{"N", std::int64_t{120}},
                                       {"width", 10.0},
