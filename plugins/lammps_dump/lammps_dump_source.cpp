@@ -83,6 +83,7 @@ LammpsDumpSource::LammpsDumpSource(const PluginContext& ctx)
       stated_(ctx),
       radius_(ctx.params.real("radius")),
       dt_(ctx.params.real("dt")),
+      dt_param_(ctx.param("dt")),
       max_overlap_(ctx.params.real("max_overlap")),
       max_overlap_param_(ctx.param("max_overlap")),
       lines_(file_),
@@ -220,6 +221,10 @@ Frame LammpsDumpSource::frame_of(const SnapshotHeader& h) {
   refuse_a_2d_run(f, h.box.container, h.place.at(h.box.line));
   f.step = *h.place.timestep;
   f.time = h.time ? *h.time : dt_ > 0 ? dt_ * static_cast<double>(f.step) : std::nan("");
+  if (!h.time && dt_ > 0 && !std::isfinite(f.time)) {
+    throw InputError(dt_param_ + ": expected a time step whose product with the dump's TIMESTEP " +
+                     std::to_string(f.step) + " is finite, got " + format_number(dt_));
+  }
   f.container = stated_.place(h.box.container, h.place.where(h.box.line));
   const std::string box = "the dump's BOX BOUNDS, line " + std::to_string(h.box.line);
   if (const auto out = stated_.first_outside(f, h.box.container, box)) {

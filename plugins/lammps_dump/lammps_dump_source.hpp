@@ -56,8 +56,9 @@ class LammpsDumpSource : public Source {
 
   std::string file_;
   StatedContainer stated_;
-  double radius_;       // every atom's when the dump has no radius or diameter column; else 0
-  double dt_;           // the run's timestep, for the time of dumps without ITEM: TIME; else 0
+  double radius_;  // every atom's when the dump has no radius or diameter column; else 0
+  double dt_;      // the run's timestep, for the time of dumps without ITEM: TIME; else 0
+  std::string dt_param_;
   double max_overlap_;  // of two atoms, over the smaller radius
   std::string max_overlap_param_;
   TextLines lines_;

@@ -266,6 +266,10 @@ TEST_F(LammpsDump, TheTimeIsItemTimeOrTheStepTimesDt) {
   EXPECT_EQ(frame(text, {{"dt", 0.5}}).time, 150.0);
   // dump_modify units yes, time yes: ITEM: UNITS once, ITEM: TIME in every snapshot.
   EXPECT_EQ(frame("ITEM: UNITS\nlj\nITEM: TIME\n2.75\n" + text).time, 2.75);
+  // A dt of 1e308 gave every frame the time inf, exit 0.
+  EXPECT_EQ(refusal(text, {{"dt", 1e308}}),
+            "params.dt: expected a time step whose product with the dump's TIMESTEP 300 is "
+            "finite, got 1e+308");
 }
 
 TEST_F(LammpsDump, AGzipFileReadsAsThePlainOne) {
