@@ -209,15 +209,29 @@ def column(group, name, length=None, why=""):
     return values
 
 
+def still_written(group):
+    """Whether the file is a run's results.partial.h5 (marked incomplete): its streamed
+    tables grow a column at a time while the run goes."""
+    complete = group.file.attrs.get("complete", 1)
+    return getattr(complete, "size", 1) == 1 and complete == 0
+
+
 def read_table(group):
-    """(column names, units, {name: values}) of a table: a group of columns of one length."""
+    """(column names, units, {name: values}) of a table: a group of columns of one length.
+    In a file still being written the columns are cut to the rows they all have: a row
+    reaches them one column at a time, and a report of a running run read some columns a
+    row longer than others, and called the file damaged."""
     of_kind(group, "group")
     columns = attr_texts(group, "columns")
     units = attr_texts(group, "units", len(columns), "a unit per column")
+    growing = still_written(group)
     data, length = {}, None
     for name in columns:
-        data[name] = column(group, name, length, f"as many as {columns[0]}")
+        data[name] = column(group, name, None if growing else length, f"as many as {columns[0]}")
         length = len(data[columns[0]])
+    if growing:
+        rows = min((len(values) for values in data.values()), default=0)
+        data = {name: values[:rows] for name, values in data.items()}
     return columns, units, data
 
 
