@@ -1,6 +1,7 @@
 #include "output_path_checks.hpp"
 
 #include <pwd.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -125,6 +126,18 @@ void check_removable(const fs::path& dir) {
   if (access(dir.parent_path().empty() ? "." : dir.parent_path().c_str(), W_OK | X_OK) != 0)
     refuse(dir.parent_path(), std::strerror(errno));
   if (access(dir.c_str(), W_OK | X_OK) != 0) refuse(dir, std::strerror(errno));
+  // What access() does not see, and the swap at the end of the run then failed on, its
+  // results left aside: a mount point cannot be renamed, and in a sticky folder (/tmp)
+  // only the owner of an entry, or of the folder, may rename it.
+  struct stat folder {
+  }, parent{};
+  const fs::path above = dir.parent_path().empty() ? fs::path(".") : dir.parent_path();
+  if (stat(dir.c_str(), &folder) == 0 && stat(above.c_str(), &parent) == 0) {
+    if (folder.st_dev != parent.st_dev) refuse(dir, "it is a mount point, which cannot be renamed");
+    const uid_t me = geteuid();
+    if ((parent.st_mode & S_ISVTX) && me != 0 && folder.st_uid != me && parent.st_uid != me)
+      refuse(dir, "another user owns it, in a folder where only owners may rename");
+  }
   std::error_code ec;
   for (fs::recursive_directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
     std::error_code kind;

@@ -34,4 +34,13 @@ for free_kib in 0 4 8 16 24 32 48; do
     umount "$disk"
   done
 done
-echo "a full disk at every stage: one line, exit 2, no final-named file"
+
+# An earlier run whose folder is a mount point cannot be swapped out: --overwrite was
+# refused only at the end of the run, its results left aside. Refused before the run now.
+mount -t tmpfs -o size=1m tmpfs "$disk" || { echo "skipped: cannot mount a tmpfs"; exit 77; }
+"$exe" "$here/long_lattice.json" --quiet --no-report --set source.params.frames=2 --out "$disk"
+"$expect" 2 "^granpipe: $disk: --overwrite would have to remove the earlier run in $disk but cannot \(it is a mount point, which cannot be renamed\); nothing was changed$" \
+  -- "$exe" "$here/long_lattice.json" --quiet --no-report --set source.params.frames=2 --out "$disk" --overwrite
+[ -z "$(ls -d "$disk".granpipe-* 2>/dev/null)" ] || { echo "FAIL: a refused run left a directory"; exit 1; }
+umount "$disk"
+echo "a full disk at every stage: one line, exit 2, no final-named file; a mount point not replaced"

@@ -34,6 +34,16 @@ run chmod a-w "$work/parent"
   -- "${as_user[@]}" "$exe" "$pipeline" --quiet --out "$work/parent/earlier" --overwrite
 run chmod u+w "$work/parent"
 
+# In a sticky folder (as /tmp) another user's earlier run cannot be renamed by this one,
+# writable as it is: refused at the end of the run before, its results left aside.
+if [ "$(id -u)" -eq 0 ]; then
+  mkdir -m 1777 "$work/sticky"
+  "$exe" "$pipeline" --quiet --no-report --out "$work/sticky/earlier"
+  chmod -R a+rwX "$work/sticky/earlier"
+  "$expect" 2 "earlier: --overwrite would have to remove the earlier run in $work/sticky/earlier but cannot \(another user owns it, in a folder where only owners may rename\); nothing was changed" \
+    -- "${as_user[@]}" "$exe" "$pipeline" --quiet --out "$work/sticky/earlier" --overwrite
+fi
+
 sum "$work/parent/earlier" | cmp -s - "$work/earlier.sum" || { echo "FAIL: a refused --overwrite changed the earlier run"; exit 1; }
 [ -z "$(ls -d "$work"/parent/earlier.granpipe-* 2>/dev/null)" ] || { echo "FAIL: a refused run left a directory"; exit 1; }
 echo "--overwrite refused before changing anything it could not finish"
