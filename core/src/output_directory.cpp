@@ -192,7 +192,7 @@ void OutputDirectory::complete(Log& log) {
   if (replacing_) remove_earlier(swap_in(), log);
 }
 
-// Returns where the earlier run is now.
+// Returns where the earlier run is now (nothing when it is gone).
 fs::path OutputDirectory::swap_in() {
   const fs::path built = work_;
   auto refuse = [&](int why) {
@@ -201,7 +201,17 @@ fs::path OutputDirectory::swap_in() {
   };
   if (renameat2(AT_FDCWD, built.c_str(), AT_FDCWD, final_.c_str(), RENAME_EXCHANGE) == 0) {
     work_ = final_;
-    return built;
+    // What was in <out> now bears the new run's temporary name, which the docs say may be
+    // deleted: what is left of it (a user's note, or a folder put there during the run)
+    // goes by a name that says it was there before.
+    const fs::path aside = beside(final_, "old", marker_);
+    return std::rename(built.c_str(), aside.c_str()) == 0 ? aside : built;
+  }
+  // <out> removed while the run went (the message said "the earlier run is untouched"):
+  // nothing to swap with, the new run takes its place.
+  if (errno == ENOENT && std::rename(built.c_str(), final_.c_str()) == 0) {
+    work_ = final_;
+    return {};
   }
   if (errno != EINVAL && errno != ENOSYS) refuse(errno);
   // A file system without atomic exchange: two renames, the first undone if the second fails.
@@ -218,6 +228,10 @@ fs::path OutputDirectory::swap_in() {
 
 void OutputDirectory::remove_earlier(const fs::path& dir, Log& log) {
   earlier_lock_.reset();
+  if (dir.empty()) {
+    log.warn(final_.string() + ": the earlier run was removed while this one went");
+    return;
+  }
   std::optional<RunMarker> earlier;
   try {
     earlier = read_run_marker(dir);

@@ -106,8 +106,11 @@ bool written_by_this_run(const Entry& e, const fs::path& dir, const FileRecord& 
 class RunEntries {
  public:
   explicit RunEntries(const fs::path& dir) : manifest_(read_manifest(dir)) {}
+  // A manifest names only places a run writes: one edited by hand (keep/, keep/k.txt) is
+  // not believed beyond them.
   bool written_by_the_run(const Entry& e) const {
-    return manifest_ ? manifest_->count(e.name) > 0 : written_before_the_end(e);
+    return manifest_ ? manifest_->count(e.name) > 0 && where_a_run_writes(e)
+                     : written_before_the_end(e);
   }
 
  private:

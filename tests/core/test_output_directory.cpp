@@ -56,6 +56,14 @@ class ScribblingAnalyzer : public Analyzer {
   void finish(Results&) override {}
 };
 
+// A user removing the earlier run's folder while the run that replaces it goes on.
+class RemovingAnalyzer : public Analyzer {
+ public:
+  explicit RemovingAnalyzer(const PluginContext&) {}
+  void consume(const Frame&, FrameCache&) override { fs::remove_all(scribble_into); }
+  void finish(Results&) override {}
+};
+
 // An analyzer that draws each frame into a file of its own, named as plugins name theirs.
 class DrawingAnalyzer : public Analyzer {
  public:
@@ -76,6 +84,7 @@ Registry registry() {
   r.add_analyzer<PickyAnalyzer>("picky", "fails on frame 1", Schema{});
   r.add_analyzer<ScribblingAnalyzer>("scribbling", "writes a note", Schema{});
   r.add_analyzer<DrawingAnalyzer>("drawing", "draws each frame", Schema{});
+  r.add_analyzer<RemovingAnalyzer>("removing", "removes the earlier run", Schema{});
   return r;
 }
 
@@ -441,7 +450,42 @@ TEST(ReplacingRun, WhatAUserAddsDuringTheRunIsLeftInTheEarlierFolder) {
   EXPECT_FALSE(fs::exists(out / "notes.txt"));
   const fs::path earlier = only_sibling(out);
   ASSERT_NE(earlier, fs::path());
+  // Not the new run's temporary name, which the docs say may be deleted.
+  EXPECT_EQ(earlier.filename().string().rfind(out.filename().string() + ".granpipe-old-", 0), 0u)
+      << earlier;
   EXPECT_EQ(snapshot(earlier), (std::map<std::string, std::string>{{"notes.txt", "mine"}}));
   fs::remove_all(earlier);
+  fs::remove_all(out);
+}
+
+// The earlier run removed while the new one went: the swap failed with "No such file or
+// directory; the earlier run is untouched", and the complete new run was marked failed.
+TEST(ReplacingRun, AnEarlierRunRemovedMeanwhileLeavesTheNewOneInItsPlace) {
+  const fs::path out = fresh_dir("removed");
+  ASSERT_EQ(run(kLattice, out), "");
+  scribble_into = out;
+  const std::string removing = R"({"source": {"plugin": "lattice",
+    "params": {"lattice": "sc", "cells": [2, 2, 2], "frames": 2}},
+    "analyzers": [{"plugin": "removing"}]})";
+  ASSERT_EQ(run(removing, out, true), "");
+  EXPECT_TRUE(marked(out, "complete"));
+  EXPECT_TRUE(fs::exists(out / "results.h5"));
+  EXPECT_EQ(only_sibling(out), fs::path());
+  fs::remove_all(out);
+}
+
+// A manifest edited by hand (with a forged marker) listing a folder of the user's and its
+// file: --overwrite removed both, exit 0. A run lists no folder but point_NNN.
+TEST(OutputDirectory, AManifestIsNotBelievedBeyondWhereARunWrites) {
+  const fs::path out = fresh_dir("forged");
+  ASSERT_EQ(run(kLattice, out), "");
+  fs::create_directory(out / "keep");
+  std::ofstream(out / "keep" / "k.txt") << "mine";
+  std::ofstream(out / ".granpipe-manifest", std::ios::app) << "keep/\nkeep/k.txt\n";
+  EXPECT_EQ(run(kLattice, out, true),
+            out.string() +
+                ": --overwrite removes only what granpipe wrote, and this run's folder also holds "
+                "keep/; move them out or remove the folder yourself; nothing was changed");
+  EXPECT_EQ(read(out / "keep" / "k.txt"), "mine");
   fs::remove_all(out);
 }
