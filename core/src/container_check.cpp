@@ -37,6 +37,18 @@ void check_container_values(const Container& c, int dim, const std::string& wher
                        format_number(c.hi[a]));
     }
   }
+  // Finite sides, a volume that is not: a base at -1e308 gave the box the volume inf, and
+  // packing reported phi = 0 for the bed in it.
+  double volume = 1.0;
+  std::string sides;
+  for (int a = 0; a < dim; ++a) {
+    volume *= c.hi[a] - c.lo[a];
+    sides += (a ? " x " : "") + format_number(c.hi[a] - c.lo[a]);
+  }
+  if (!std::isfinite(volume)) {
+    throw InputError(where + ": expected a container of finite " + (dim == 2 ? "area" : "volume") +
+                     ", got sides of " + sides);
+  }
   if (c.shape != ContainerShape::Cylinder) return;
   require_finite(c.cylinder_center[0], "cylinder axis x", where);
   require_finite(c.cylinder_center[1], "cylinder axis y", where);

@@ -65,6 +65,15 @@ TEST(ContainerCheck, ValuesMustBeFiniteAndInOrder) {
   EXPECT_EQ(test::input_error_of([&] { check_container_values(c, 3, "f"); }),
             "f: expected a finite wall offset along z of the container, got nan");
   c.wall_offset[2] = 0.0;
+  // Finite sides, an infinite volume: packing's phi read 0 for a base at -1e308.
+  c.lo[2] = -1e308;
+  EXPECT_EQ(test::input_error_of([&] { check_container_values(c, 3, "f"); }),
+            "f: expected a container of finite volume, got sides of 4 x 4 x 1e+308");
+  c.hi[2] = 1e308;
+  EXPECT_EQ(test::input_error_of([&] { check_container_values(c, 3, "f"); }),
+            "f: expected a container of finite volume, got sides of 4 x 4 x inf");
+  c.lo[2] = 0.0;
+  c.hi[2] = 8.0;
   c.lo[0] = 4.0;
   EXPECT_EQ(test::input_error_of([&] { check_container_values(c, 3, "f"); }),
             "f: expected the container's sides along x in order (lo < hi), got 4 to 4");
