@@ -461,7 +461,7 @@ TEST(Packing, PublishesTheCoordinationOfEachParticle) {
 // A step far too small for the bed (a typo, or another unit) asked for more cuts than an
 // int counts: the count wrapped around to an empty profile, or one cut for phi_cuts
 // (0.71 where phi is 0.64), exit 0. It is refused before anything is cut.
-TEST(Packing, StepsTooSmallForTheBedAreRefused) {
+TEST(Packing, StepsThatDoNotFitTheBedAreRefused) {
   const Frame f = one("sc", "walls");
   PackingSettings profile;
   profile.profile_step = 1e-12;
@@ -473,6 +473,12 @@ TEST(Packing, StepsTooSmallForTheBedAreRefused) {
   EXPECT_EQ(granpipe::test::input_error_of([&] { measure(f, cuts); }),
             "packing.cuts_step: expected at most 10000000 cuts of phi_cuts, got 4e+12 (4 in "
             "steps of 1e-12)");
+  // A step beyond the bed left the profile empty, exit 0.
+  PackingSettings huge;
+  huge.profile_step = 1e308;
+  EXPECT_EQ(granpipe::test::input_error_of([&] { measure(f, huge); }),
+            "packing.profile_step: expected at most the bed's height (4 diameters), got 1e+308: "
+            "the profile would hold no cut");
   // Just past the limit the count read as the limit itself ("got 1e+07").
   PackingSettings barely;
   barely.cuts_step = 4.0 / 10000001.0;
