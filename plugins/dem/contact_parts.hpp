@@ -157,12 +157,17 @@ struct CoulombSpring {
   static double potential(const ContactMaterial& m, double f, const Vec3& u) {
     return 0.5 * f * m.kt * u.squaredNorm();
   }
-  // The spring is no shorter than the normal law's: with k_t <= 2/7 k_n (the paper's 2/7)
-  // its period, rotation included (m_t = 2/7 m_eff for spheres), is at least the undamped
-  // normal one. Its dashpot acts on m_t at the rate gamma_t m_eff / m_t = 7/2 gamma_t, and
-  // not at all without friction (the force capped at mu |F_n| = 0).
-  static double contact_time(const ContactMaterial& m, const TwoBodies& /*b*/) {
-    return m.mu > 0.0 ? dashpot_time(3.5 * m.gamma_t) : std::numeric_limits<double>::infinity();
+  // The spring acts on m_t = 2/7 m_eff (rotation included, for spheres), with the normal
+  // law's overlap factor: its period is the normal one times sqrt(2/7 k_n / k_t), no shorter
+  // with k_t <= 2/7 k_n (the paper's 2/7), shorter above (k_t = 1e8 against k_n = 2e5 went
+  // unchecked and blew the run up, the message advising a stiffer k_n). Its dashpot acts on
+  // m_t at the rate gamma_t m_eff / m_t = 7/2 gamma_t. Neither acts without friction (the
+  // force capped at mu |F_n| = 0).
+  static double contact_time(const ContactMaterial& m, double normal_time) {
+    if (!(m.mu > 0.0)) return std::numeric_limits<double>::infinity();
+    const double spring =
+        m.kt > 0.0 ? normal_time * std::sqrt(2.0 / 7.0 * m.kn / m.kt) : normal_time;
+    return std::min(spring, dashpot_time(3.5 * m.gamma_t));
   }
 };
 

@@ -110,7 +110,10 @@ StepCheck check_time_step(double dt, const ContactTime& shortest) {
     << shortest.between << ", t_c = " << shortest.t_c << ")";
   if (fraction > kRefuseAboveContactFraction) {
     s << ": expected dt <= t_c/" << 1.0 / kRefuseAboveContactFraction << " = "
-      << shortest.t_c * kRefuseAboveContactFraction;
+      << shortest.t_c * kRefuseAboveContactFraction
+      << " (or that pair's contact longer: t_c is the shortest its normal law, tangential "
+         "spring and dashpot and rolling spring give; stiffer k_n, k_t, k_roll and larger "
+         "gamma_n, gamma_t shorten it)";
     return {StepVerdict::Refuse, s.str()};
   }
   s << ": above t_c/" << 1.0 / kWarnAboveContactFraction

@@ -818,7 +818,10 @@ TEST(DemTimeStep, ShortestContactIsBetweenTheLightestSpheres) {
   EXPECT_EQ(refuse.verdict, dem::StepVerdict::Refuse);
   EXPECT_EQ(refuse.message,
             "dem: dt = 0.0006 is t_c/8.28327 for the shortest contact (species 0 and species 0, "
-            "t_c = 0.00496996): expected dt <= t_c/10 = 0.000496996");
+            "t_c = 0.00496996): expected dt <= t_c/10 = 0.000496996 (or that pair's contact "
+            "longer: t_c is the shortest its normal law, tangential spring and dashpot and "
+            "rolling spring give; stiffer k_n, k_t, k_roll and larger gamma_n, gamma_t shorten "
+            "it)");
 }
 
 // A contact damped ten times past critical (2 sqrt(k_n / m_eff) = 1265): Eq. (10) has no

@@ -304,13 +304,23 @@ TEST(DemContactEvaluator, PartsAddTheirEnergiesAndDurations) {
   EXPECT_DOUBLE_EQ(Plain::contact_time(m, spheres), normal_tc);
   EXPECT_DOUBLE_EQ(Rolling::contact_time(m, spheres), normal_tc);
   // A sphere on a wall whose tangential (so rolling) spring is as stiff as the normal one:
-  // pi sqrt(0.1 / (k_n / 4)) is shorter than pi sqrt(1 / k_n), and decides.
+  // the rolling spring's pi sqrt(0.1 / (k_n / 4)) is shorter than pi sqrt(1 / k_n), and the
+  // tangential spring's, on m_t = 2/7 m_eff, shorter still: pi sqrt(2/7 / k_n) decides.
   dem::ContactMaterial stiff = m;
   stiff.kt = kKn;
   const dem::TwoBodies on_wall{1.0, 0.1, 1.0, 0.5, 1.0};
-  EXPECT_DOUBLE_EQ(Rolling::contact_time(stiff, on_wall),
-                   std::numbers::pi * std::sqrt(0.1 / (0.25 * kKn)));
-  EXPECT_DOUBLE_EQ(Plain::contact_time(stiff, on_wall), dem::linear_contact_time(kKn, 0.0, 1.0));
+  const double wall_tc = dem::linear_contact_time(kKn, 0.0, 1.0);
+  EXPECT_LT(std::numbers::pi * std::sqrt(0.1 / (0.25 * kKn)), wall_tc);
+  EXPECT_DOUBLE_EQ(Rolling::contact_time(stiff, on_wall), wall_tc * std::sqrt(2.0 / 7.0));
+  EXPECT_DOUBLE_EQ(Plain::contact_time(stiff, on_wall), wall_tc);
+  // The tangential spring alone, and without friction none.
+  using TangentialOnly = ContactOf<dem::LinearNormal, dem::CoulombSpring>;
+  EXPECT_DOUBLE_EQ(TangentialOnly::contact_time(stiff, on_wall), wall_tc * std::sqrt(2.0 / 7.0));
+  // k_t = 500 k_n (the probe's 1e8 against 2e5) went unchecked: t_c is now the spring's.
+  stiff.kt = 500.0 * kKn;
+  EXPECT_DOUBLE_EQ(TangentialOnly::contact_time(stiff, on_wall),
+                   wall_tc * std::sqrt(2.0 / 7.0 / 500.0));
+  EXPECT_DOUBLE_EQ(TangentialOnly::contact_time(material(0.0, 0.0), on_wall), wall_tc);
   // Without rolling friction the rolling part has no duration.
   EXPECT_DOUBLE_EQ(Rolling::contact_time(material(0.0, 0.5), on_wall),
                    dem::linear_contact_time(kKn, 0.0, 1.0));
