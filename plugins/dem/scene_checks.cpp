@@ -90,6 +90,12 @@ void check_drive(const PluginContext& ctx, const Scene& scene, const Drive& driv
   check_steps_per_period(ctx, drive, dt);
   // The undamped overlap of a sphere hit at speed v (d = 2a for a wall).
   const double peak = std::abs(drive.amplitude * drive.angular_frequency);
+  if (!std::isfinite(peak)) {  // the bound below was then "A 2 pi f <= -nan"
+    throw InputError(ctx.param("drive") + ": amplitude " + format_number(drive.amplitude) +
+                     " and frequency " +
+                     format_number(drive.angular_frequency / (2.0 * std::numbers::pi)) +
+                     ": expected a finite peak wall speed A 2 pi f, got " + format_number(peak));
+  }
   const auto [d, exponent] = with_contact_law(scene.law, [&](auto normal) {
     using Normal = decltype(normal);
     const auto hit = [&](const ContactMaterial& m, double mass, double a, double scale) {

@@ -429,6 +429,11 @@ TEST(DemSource, ADriveWhosePeakSpeedWouldCrushASphereIsRefused) {
             "6.28e+05, which would press a sphere of species 0 (radius 0.5) hit by wall z_low "
             "1.41e+03 deep (2.81e+05 % of its radius; a sound run stays within 30 %): expected "
             "A 2 pi f <= 67.1");
+  // A speed that is no number: the bound read "A 2 pi f <= -nan".
+  EXPECT_EQ(refusal({{"initial_file", file.string()},
+                     {"drive", {{"amplitude", 1e308}, {"frequency", 10.0}}}}),
+            "params.drive: amplitude 1e+308 and frequency 10: expected a finite peak wall speed "
+            "A 2 pi f, got inf");
   fs::remove(file);
 }
 
