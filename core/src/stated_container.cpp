@@ -29,7 +29,9 @@ void declare_stated_container(Schema& s) {
       .unit("length");
   s.reals("cylinder_axis", std::vector<double>{0.0, 0.0}, "x and y of the cylinder's vertical axis")
       .length(2)
-      .unit("length");
+      .unit("length")
+      .only_where("cylinder_radius > 0",
+                  [](const Params& p) { return p.real("cylinder_radius") > 0.0; });
   s.reals("side_walls", std::vector<double>{},
           "x_lo, x_hi, y_lo, y_hi of flat side walls ([]: none; not with a cylinder)")
       .unit("length");

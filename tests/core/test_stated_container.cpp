@@ -57,6 +57,10 @@ TEST(StatedContainer, ParametersThatContradictEachOtherAreRefused) {
             "params.side_walls: expected y_hi above y_lo, got 3 and 3");
   EXPECT_EQ(refusal({{"base", 2.0}, {"top", 1.0}}),
             "params.top: expected a height above base, got 1");
+  // An axis without a cylinder placed nothing, without a word.
+  EXPECT_EQ(refusal({{"cylinder_axis", {1.0, 2.0}}}),
+            "test: params.cylinder_axis: expected its default [0, 0] (it acts only with "
+            "cylinder_radius > 0; here cylinder_radius is 0), got [1.0,2.0]");
 }
 
 TEST(StatedContainer, StatedWallsReplaceTheFilesSides) {
