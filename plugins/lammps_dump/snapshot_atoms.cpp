@@ -7,6 +7,7 @@
 #include <numeric>
 
 #include "granpipe/errors.hpp"
+#include "granpipe/format_number.hpp"
 #include "granpipe/text_words.hpp"
 
 namespace granpipe::lammps_dump {
@@ -105,10 +106,21 @@ std::vector<std::size_t> id_order(const AtomLines& a, const SnapshotPlace& place
   return order;
 }
 
+// A coordinate more periods than this from a periodic box keeps under half its digits once
+// wrapped into it: x = 1e300 in a box of side 4 wrapped to an arbitrary place, and was
+// refused as an overlap of two other atoms.
+constexpr double kMostPeriodsAway = 67108864.0;  // 2^26
+
 // A position column's value in the box's coordinates, wrapped into periodic sides.
-double position(double value, Coordinate kind, const Container& box, int axis) {
+double position(double value, Coordinate kind, const Container& box, int axis,
+                const SnapshotPlace& place, long line) {
   const bool scaled = kind == Coordinate::Scaled || kind == Coordinate::ScaledUnwrapped;
   const double x = scaled ? box.lo[axis] + value * box.length(axis) : value;
+  if (box.periodic(axis) && !(std::abs(x - box.lo[axis]) <= kMostPeriodsAway * box.length(axis))) {
+    throw InputError(place.at(line) + "expected a position within 2^26 periods of the box along " +
+                     std::string(1, "xyz"[axis]) + " (wrapped into it, one farther keeps under " +
+                     "half its digits), got " + format_number(x));
+  }
   return box.wrap(axis, x);
 }
 
@@ -130,7 +142,8 @@ void fill_frame(const AtomLines& a, const std::vector<std::size_t>& order, const
     f.id()[row] = a.ids[line];
     f.species()[row] = a.types[line] - 1;
     for (int axis = 0; axis < 3; ++axis)
-      f.position()(row, axis) = position(*v++, c.coordinate[axis], h.box.container, axis);
+      f.position()(row, axis) =
+          position(*v++, c.coordinate[axis], h.box.container, axis, h.place, a.lines[line]);
     f.radius()[row] = c.size < 0 ? radius : c.diameter ? 0.5 * *v++ : *v++;
     for (ValueTable<double>* vector : vectors)
       for (Eigen::Index axis = 0; axis < 3; ++axis) (*vector)(row, axis) = *v++;

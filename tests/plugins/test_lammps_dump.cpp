@@ -210,6 +210,12 @@ TEST_F(LammpsDump, ScaledAndUnwrappedPositionsAreThePlainOnes) {
   }
   // Kinds mixed per axis, as dump custom allows.
   expect_the_atoms(frame(snapshot(0, atoms(), with({"xs", "yu", "z"}), 1)), 1e-12);
+  // 2^27 periods away a position wrapped keeps under half its digits (x = 1e300 wrapped to
+  // an arbitrary place and was refused as an overlap of two other atoms, "line 1").
+  EXPECT_EQ(refusal(snapshot(0, atoms(), with({"xu", "yu", "zu"}), 134217728)),
+            "atoms.dump: timestep 0, line 11: expected a position within 2^26 periods of the "
+            "box along x (wrapped into it, one farther keeps under half its digits), got "
+            "5.36871e+08");
 }
 
 TEST_F(LammpsDump, PlainPositionsAreWrappedIntoPeriodicSides) {
