@@ -31,7 +31,8 @@ class OutputFiles {
   bool enabled() const { return !dir_.empty(); }
   // <run folder>/<instance name><suffix>, recorded as the run's. `suffix` starts with '.'
   // or '_' and names no folder (".xyz", "_frame_000012.svg"); anything else is an
-  // InternalError (a plugin's mistake, not the user's).
+  // InternalError (a plugin's mistake, not the user's). Without a folder (a pipeline only
+  // checked), the bare name, recorded nowhere: callable from a plugin's constructor.
   std::filesystem::path path(const std::string& suffix) const;
 
  private:
