@@ -111,9 +111,8 @@ struct Contact {
 
   // The shortest duration any part gives this two-body contact.
   static double contact_time(const ContactMaterial& m, const TwoBodies& b) {
-    const double normal = Normal::contact_time(m, b);
-    double t = normal;
-    if constexpr (kFriction) t = std::min(t, Tangential::contact_time(m, normal));
+    double t = Normal::contact_time(m, b);
+    if constexpr (kFriction) t = std::min(t, Tangential::template contact_time<Normal>(m, b));
     if constexpr (kRolling) t = std::min(t, Rolling::contact_time(m, b));
     return t;
   }

@@ -68,7 +68,12 @@ struct LinearNormal {
   // Eq. (10), the damped oscillator's half period, or the dashpot's time where shorter
   // (near and past critical damping).
   static double contact_time(const ContactMaterial& m, const TwoBodies& b) {
-    return std::min(linear_contact_time(m.kn, m.gamma_n, b.m_eff), dashpot_time(m.gamma_n));
+    return std::min(spring_half_period(m.kn, m.gamma_n, b.m_eff, b), dashpot_time(m.gamma_n));
+  }
+  // The half period of a spring of stiffness k of this law's shape with a dashpot of this
+  // rate on this mass (the tangential spring's too): Eq. (10).
+  static double spring_half_period(double k, double rate, double mass, const TwoBodies& /*b*/) {
+    return linear_contact_time(k, rate, mass);
   }
   // The undamped overlap of a body of this mass hit at this speed, and at rest under this
   // weight; the speed and weight that give an overlap grow as its power below.
@@ -101,7 +106,10 @@ struct HertzNormal {
   // Undamped, at the impact speed (model.hpp), or the dashpot's time where shorter (its
   // rate gamma_n f is at most gamma_n: delta < d).
   static double contact_time(const ContactMaterial& m, const TwoBodies& b) {
-    return std::min(hertz_contact_time(m.kn, b.d, b.m_eff, b.speed), dashpot_time(m.gamma_n));
+    return std::min(spring_half_period(m.kn, m.gamma_n, b.m_eff, b), dashpot_time(m.gamma_n));
+  }
+  static double spring_half_period(double k, double /*rate*/, double mass, const TwoBodies& b) {
+    return hertz_contact_time(k, b.d, mass, b.speed);
   }
   static double impact_overlap(double kn, double mass, double speed, double d) {
     return std::pow(5.0 * mass * speed * speed * std::sqrt(d) / (4.0 * kn), 0.4);
@@ -158,16 +166,19 @@ struct CoulombSpring {
     return 0.5 * f * m.kt * u.squaredNorm();
   }
   // The spring acts on m_t = 2/7 m_eff (rotation included, for spheres), with the normal
-  // law's overlap factor: its period is the normal one times sqrt(2/7 k_n / k_t), no shorter
-  // with k_t <= 2/7 k_n (the paper's 2/7), shorter above (k_t = 1e8 against k_n = 2e5 went
-  // unchecked and blew the run up, the message advising a stiffer k_n). Its dashpot acts on
-  // m_t at the rate gamma_t m_eff / m_t = 7/2 gamma_t. Neither acts without friction (the
-  // force capped at mu |F_n| = 0).
-  static double contact_time(const ContactMaterial& m, double normal_time) {
+  // law's shape, and its dashpot at the rate gamma_t m_eff / m_t = 7/2 gamma_t: no shorter
+  // than the normal contact with k_t <= 2/7 k_n and gamma_t >= 2/7 gamma_n (the paper's),
+  // shorter with a stiffer spring (k_t = 1e8 against k_n = 2e5 went unchecked and blew the
+  // run up, the message advising a stiffer k_n). Neither acts without friction (the force
+  // capped at mu |F_n| = 0).
+  template <class Normal>
+  static double contact_time(const ContactMaterial& m, const TwoBodies& b) {
     if (!(m.mu > 0.0)) return std::numeric_limits<double>::infinity();
-    const double spring =
-        m.kt > 0.0 ? normal_time * std::sqrt(2.0 / 7.0 * m.kn / m.kt) : normal_time;
-    return std::min(spring, dashpot_time(3.5 * m.gamma_t));
+    const double rate = 3.5 * m.gamma_t;
+    const double spring = m.kt > 0.0
+                              ? Normal::spring_half_period(m.kt, rate, 2.0 / 7.0 * b.m_eff, b)
+                              : std::numeric_limits<double>::infinity();
+    return std::min(spring, dashpot_time(rate));
   }
 };
 

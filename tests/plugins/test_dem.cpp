@@ -784,9 +784,10 @@ TEST(DemNeighbours, IntruderOnABedFeelsTheSumOfItsManyContacts) {
 namespace {
 
 // The Brazil-nut materials of the paper's Table I: small spheres (d = 1, density 1.91,
-// mass 1.0) and the intruder (d = 3.16, density 13.54, mass 221).
+// mass 1.0) and the intruder (d = 3.16, density 13.54, mass 221), gamma_t = gamma_n / 2 (the
+// dem source's default).
 dem::Model bnp_model() {
-  const dem::ContactMaterial m{2e5, 2.0 / 7.0 * 2e5, 40.0, 0.0, 0.5};
+  const dem::ContactMaterial m{2e5, 2.0 / 7.0 * 2e5, 40.0, 20.0, 0.5};
   dem::Model model = dem::Model::uniform(2, 1.91, m, {2e5, 2.0 / 7.0 * 2e5, 40.0, 20.0, 0.5});
   model.density[1] = 13.54;
   return model;
@@ -822,6 +823,13 @@ TEST(DemTimeStep, ShortestContactIsBetweenTheLightestSpheres) {
             "longer: t_c is the shortest its normal law, tangential spring and dashpot and "
             "rolling spring give; stiffer k_n, k_t, k_roll and larger gamma_n, gamma_t shorten "
             "it)");
+  // Without a tangential dashpot the tangential spring (k_t = 2/7 k_n on 2/7 m_eff, so the
+  // normal spring's undamped period) is the shorter.
+  dem::Model undamped = bnp_model();
+  for (dem::ContactMaterial& m : undamped.pair) m.gamma_t = 0.0;
+  const dem::ContactTime u = dem::smallest_contact_time(
+      undamped, dem::WallSet(cylinder(6.125), {}), radius, species, dem::ContactLaw::Linear, 0.0);
+  EXPECT_DOUBLE_EQ(u.t_c, dem::linear_contact_time(2.0 / 7.0 * 2e5, 0.0, 2.0 / 7.0 * small / 2));
 }
 
 // A contact damped ten times past critical (2 sqrt(k_n / m_eff) = 1265): Eq. (10) has no

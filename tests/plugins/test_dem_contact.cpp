@@ -321,6 +321,15 @@ TEST(DemContactEvaluator, PartsAddTheirEnergiesAndDurations) {
   EXPECT_DOUBLE_EQ(TangentialOnly::contact_time(stiff, on_wall),
                    wall_tc * std::sqrt(2.0 / 7.0 / 500.0));
   EXPECT_DOUBLE_EQ(TangentialOnly::contact_time(material(0.0, 0.0), on_wall), wall_tc);
+  // The spring's time is its own oscillator's, damped by its own dashpot (rate 7/2 gamma_t
+  // on 2/7 m_eff), whatever the normal dashpot (it was scaled from the damped normal time).
+  dem::ContactMaterial damped = material(100.0, 0.5);
+  damped.kt = kKn;
+  const double tangential = dem::linear_contact_time(kKn, 3.5 * 50.0, 2.0 / 7.0);
+  EXPECT_LT(tangential, dem::linear_contact_time(kKn, 100.0, 1.0));
+  EXPECT_DOUBLE_EQ(TangentialOnly::contact_time(damped, on_wall), tangential);
+  damped.gamma_n = 400.0;
+  EXPECT_DOUBLE_EQ(TangentialOnly::contact_time(damped, on_wall), tangential);
   // Without rolling friction the rolling part has no duration.
   EXPECT_DOUBLE_EQ(Rolling::contact_time(material(0.0, 0.5), on_wall),
                    dem::linear_contact_time(kKn, 0.0, 1.0));
