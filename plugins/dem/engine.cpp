@@ -11,6 +11,7 @@
 #include "deep_overlap.hpp"
 #include "granpipe/errors.hpp"
 #include "granpipe/huge_pages.hpp"
+#include "idle_cores.hpp"
 #include "overlap_limit.hpp"
 
 namespace granpipe::dem {
@@ -63,7 +64,8 @@ Engine::Engine(const Model& model, const WallSet& walls, const Settings& setting
     : model_(model),
       walls_(walls),
       settings_(settings),
-      governor_(std::max(settings.threads, 1), settings.adapt_threads) {
+      governor_(std::max(settings.threads, 1), settings.adapt_threads,
+                settings.adapt_threads ? idle_cores() : settings.threads) {
   settings_.check();
   model_.check();
   if (model_.rolls() && !(settings_.friction && settings_.rotation)) {

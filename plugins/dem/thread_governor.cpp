@@ -4,8 +4,12 @@
 
 namespace granpipe::dem {
 
-ThreadGovernor::ThreadGovernor(int allowed, bool adapt)
-    : allowed_(allowed), adapt_(adapt && allowed > 1), chosen_(allowed), current_(allowed) {}
+ThreadGovernor::ThreadGovernor(int allowed, bool adapt, int idle)
+    : allowed_(allowed), adapt_(adapt && allowed > 1), chosen_(allowed), current_(allowed) {
+  if (!adapt_ || idle >= allowed) return;
+  chosen_ = current_ = 1;
+  wait_ = kFirstWaitWhenBusy;
+}
 
 void ThreadGovernor::start(Phase phase, int threads, double now) {
   phase_ = phase;

@@ -19,6 +19,10 @@ class ThreadGovernor {
   // and 5000 steps took 1.7 times as long on 2 threads as on 1 with the first probe after
   // 1 s, 1.4 and 1.2 times with it after 0.25 s.
   static constexpr double kFirstWait = 0.25;
+  // ... and when the run starts on fewer threads because other work holds the cores
+  // (idle_cores.hpp): the evidence is already there, and a probe of all threads costs a
+  // stalled window (a run of 1000 steps is over in about a second).
+  static constexpr double kFirstWaitWhenBusy = 1.0;
   static constexpr double kLongestWait = 16.0;
   static constexpr double kWindow = 0.05;  // seconds of each timed window, and
   static constexpr long kWindowSteps = 3;  // at least this many steps
@@ -27,8 +31,11 @@ class ThreadGovernor {
   // for a time slice) is a tenth, not a half, and a wrong switch costs only kFirstWait.
   static constexpr double kClearMargin = 0.6;
 
-  // allowed: the most threads the run may use; adapt = false keeps to them.
-  ThreadGovernor(int allowed, bool adapt);
+  // allowed: the most threads the run may use; adapt = false keeps to them. idle: the cores
+  // other work leaves idle at the start (idle_cores()): with fewer than allowed, the run
+  // starts on one thread.
+  ThreadGovernor(int allowed, bool adapt, int idle);
+  ThreadGovernor(int allowed, bool adapt) : ThreadGovernor(allowed, adapt, allowed) {}
 
   // The count for the next step.
   int threads() const { return current_; }

@@ -67,6 +67,21 @@ TEST(DemGovernor, AShortRunOnABusyMachineFallsBackWithinHalfASecond) {
   EXPECT_GT(rest.fraction_on_one, 0.9);
 }
 
+// Other work holding a core at the start (idle_cores()): the run starts on one thread and
+// probes two only after a second, so a run of a second never stalls two threads.
+TEST(DemGovernor, ARunStartedBesideOtherWorkStartsOnOneThread) {
+  ThreadGovernor g(2, true, 1);
+  EXPECT_EQ(g.threads(), 1);
+  const Simulated first = simulate(g, 0.0, ThreadGovernor::kFirstWaitWhenBusy - 0.01, busy);
+  EXPECT_EQ(first.fraction_on_one, 1.0);
+  // The load gone, its first probe finds two threads faster and takes them.
+  simulate(g, ThreadGovernor::kFirstWaitWhenBusy - 0.01, 1.5, quiet);
+  EXPECT_EQ(g.threads(), 2);
+  // All cores idle, or a governor that does not adapt: all threads from the start.
+  EXPECT_EQ(ThreadGovernor(2, true, 2).threads(), 2);
+  EXPECT_EQ(ThreadGovernor(2, false, 0).threads(), 2);
+}
+
 // Two threads half as fast again as one: one probe decides (a window's noise is far less).
 // A difference within the margins takes two probes in a row.
 TEST(DemGovernor, AWideDifferenceSwitchesAfterOneProbe) {
