@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "granpipe/bottom_wall.hpp"
@@ -26,7 +27,11 @@ double quantile_height(const Frame& frame, double fraction) {
   const int v = frame.dim - 1;
   std::vector<double> z(frame.position().col(v).begin(), frame.position().col(v).end());
   const auto n = static_cast<double>(z.size());
-  const auto k = static_cast<std::size_t>(std::max(0.0, std::ceil(fraction * n) - 1.0));
+  // A share that is a whole number of centres counts it whole: 0.14 * 50 is
+  // 7.000000000000001 in doubles, and took the 8th centre.
+  const double share = fraction * n;
+  const double centres = std::ceil(share - 64.0 * std::numeric_limits<double>::epsilon() * share);
+  const auto k = static_cast<std::size_t>(std::max(0.0, centres - 1.0));
   std::nth_element(z.begin(), z.begin() + static_cast<long>(k), z.end());
   return z[k] - frame.container.wall_at(v, 0);
 }

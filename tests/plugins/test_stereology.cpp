@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <tuple>
 
 #include "fermi_profile.hpp"
 #include "granpipe/errors.hpp"
@@ -93,6 +94,22 @@ TEST(ProfileMeasure, OfALayeredCrystalIsItsFractionEverywhere) {
     double cell = 0.0;
     for (std::size_t j = k; j < k + 4; ++j) cell += m.transversal[j] / 4.0;
     EXPECT_NEAR(cell, kPi / 6.0, 1e-13) << k;
+  }
+}
+
+// H is the centre height below which `fraction` of the centres lie: 0.14 of 50 is 7, but
+// 0.14 * 50 is 7.000000000000001 in doubles, and H was the 8th centre (phi_c of the wrong
+// bed, exit 0); so for 0.56 of 25 and ten more two-digit fractions.
+TEST(ProfileMeasure, TheHeightOfAFractionOfTheCentresCountsWholeCentres) {
+  ProfileSettings s;
+  s.step = 0.5;
+  s.lateral_band = 0.5;
+  for (const auto& [layers, fraction, centre] :
+       {std::tuple{50, 0.14, 7}, std::tuple{25, 0.56, 14}, std::tuple{10, 0.9, 9},
+        std::tuple{10, 0.95, 10}, std::tuple{10, 0.05, 1}}) {
+    s.global.fraction = fraction;
+    const ProfileMeasurement m = measure_profiles(cubic_layers(1, layers), s);
+    EXPECT_EQ(m.global.height_c, 2.0 * centre - 1.0) << fraction << " of " << layers;
   }
 }
 
