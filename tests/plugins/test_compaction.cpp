@@ -194,6 +194,20 @@ TEST(Compaction, SpectrumIntegratesToTheVariance) {
   }
 }
 
+// A constant series of a prime length: the mean's sum rounds, and the transform of that
+// rounding gave powers of 1e-63 and a slope of 1.67 +- 0.31 (exit 0). No power at all.
+TEST(Compaction, AConstantSeriesHasNoSpectrumWhateverItsLength) {
+  for (std::size_t n : {11u, 13u, 16u, 101u}) {
+    const Spectrum s = power_spectrum(std::vector<double>(n, 1.1), 1.0);
+    EXPECT_EQ(positive_powers(s), 0u) << n;
+    EXPECT_TRUE(std::isnan(log_log_slope(s).value)) << n;
+  }
+  // A fluctuation of a millionth of the value is one.
+  std::vector<double> x(11, 1.1);
+  x[3] += 1e-6;
+  EXPECT_GT(positive_powers(power_spectrum(x, 1.0)), 0u);
+}
+
 TEST(Compaction, TheSpectrumUsesTheLastUnbrokenGridOfFrames) {
   // Saved every 10 taps, the log frames 63 and 79 between, the save of tap 60 missing.
   const std::vector<double> taps{40, 50, 63, 70, 79, 80, 90, 100, 110, 120};
