@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "granpipe/container_check.hpp"
 #include "granpipe/errors.hpp"
 
 namespace granpipe::arches {
@@ -14,17 +15,28 @@ bool is_valid_partner(std::int64_t p, Eigen::Index self, Eigen::Index n) {
          p == partner::wall(Wall::YLow);
 }
 
-void check_side(const IndexArray& side, const char* name, const std::string& where) {
+void check_side(const IndexArray& side, const char* name, const Container& c,
+                const std::string& where) {
   const Eigen::Index n = side.size();
+  const auto label = [&](Eigen::Index i) {
+    return where + ": supports." + name + "[" + std::to_string(i) + "]: ";
+  };
   for (Eigen::Index i = 0; i < n; ++i) {
-    if (is_valid_partner(side(i), i, n)) continue;
-    throw InputError(where + ": supports." + name + "[" + std::to_string(i) +
-                     "]: expected a disk index in [0, " + std::to_string(n) + ") other than " +
-                     std::to_string(i) + ", " + std::to_string(partner::none) + " (none), " +
-                     std::to_string(partner::wall(Wall::XLow)) + " (left wall), " +
-                     std::to_string(partner::wall(Wall::XHigh)) + " (right wall) or " +
-                     std::to_string(partner::wall(Wall::YLow)) + " (base), got " +
-                     std::to_string(side(i)));
+    const std::int64_t p = side(i);
+    if (!is_valid_partner(p, i, n)) {
+      throw InputError(label(i) + "expected a disk index in [0, " + std::to_string(n) +
+                       ") other than " + std::to_string(i) + ", " + std::to_string(partner::none) +
+                       " (none), " + std::to_string(partner::wall(Wall::XLow)) + " (left wall), " +
+                       std::to_string(partner::wall(Wall::XHigh)) + " (right wall) or " +
+                       std::to_string(partner::wall(Wall::YLow)) + " (base), got " +
+                       std::to_string(p));
+    }
+    // Side walls labelled in a box periodic along x made an arch "supported" at both ends
+    // by walls that are not there (exit 0).
+    if (partner::is_wall(p) && !has_wall(c, partner::wall_of(p))) {
+      throw InputError(label(i) + "expected a support the container has, got " + std::to_string(p) +
+                       " (wall " + to_string(partner::wall_of(p)) + "), a side it has none on");
+    }
   }
 }
 
@@ -51,8 +63,8 @@ void check_supports(const Frame& frame, const std::string& where) {
                      " left and right labels, got " + std::to_string(s.left.size()) + " and " +
                      std::to_string(s.right.size()));
   }
-  check_side(s.left, "left", where);
-  check_side(s.right, "right", where);
+  check_side(s.left, "left", frame.container, where);
+  check_side(s.right, "right", frame.container, where);
   for (Eigen::Index i = 0; i < n; ++i) {
     if (partner::is_particle(s.left(i)) && s.left(i) == s.right(i)) {
       throw InputError(where + ": supports[" + std::to_string(i) +

@@ -439,6 +439,14 @@ TEST(Arches, BadSupportLabelsAreInputErrors) {
   f = two_disk_arch();
   f.dim = 3;
   EXPECT_THROW(ga::check_supports(f, "test"), granpipe::InputError);
+  // A side wall in a box periodic along x made an arch "supported" by a wall not there.
+  f = two_disk_arch();
+  supports(f)(2, 0) = kLeftWall;
+  EXPECT_NO_THROW(ga::check_supports(f, "test"));
+  f.container.boundary[0] = {granpipe::Boundary::Periodic, granpipe::Boundary::Periodic};
+  EXPECT_EQ(granpipe::test::input_error_of([&] { ga::check_supports(f, "test"); }),
+            "test: supports.left[2]: expected a support the container has, got -2 (wall x_low), "
+            "a side it has none on");
 }
 
 TEST(Arches, RingOfMutualSupportsIsAnInputError) {
