@@ -90,9 +90,13 @@ void add_fitted_curves(const Series& range, const std::array<LawFit, 3>& fits, R
                            .logx = true});
 }
 
-void report_fits(const Series& s, double from, double to, Results& results) {
+void report_fits(const Series& s, double from, double to, Results& results, Log& log) {
   results.add_scalar("fit_from", from, std::nan(""), "taps", "first tap of the fits' range");
   results.add_scalar("fit_to", to, std::nan(""), "taps", "last tap of the fits' range");
+  if (from > to) {
+    log.warn("compaction: fit_from: " + format_number(from) + " taps is past the fits' last tap, " +
+             format_number(to) + ": no frame to fit; Eqs. (3) and (4) are left undefined");
+  }
   const Series range = within(s, from, to);
   std::array<LawFit, 3> fits;
   for (std::size_t q = 0; q < kQuantities.size(); ++q) {
@@ -102,6 +106,11 @@ void report_fits(const Series& s, double from, double to, Results& results) {
                 std::string("fit of ") + kQuantities[q].name + " against the tap, taps " +
                     std::to_string(static_cast<long long>(from)) + " to " +
                     std::to_string(static_cast<long long>(to)));
+    // Said, as stereology says its Eq. (7): only the _status scalar recorded it.
+    if (fits[q].status != CurveFitStatus::Fitted && from <= to) {
+      log.warn(std::string("compaction: ") + kQuantities[q].fit_name + ": " +
+               describe(fits[q].status) + "; its parameters are left undefined");
+    }
   }
   add_fitted_curves(range, fits, results);
 }
@@ -173,6 +182,14 @@ void report_ageing(const Series& s, const std::vector<std::int64_t>& waiting_tim
   const Ageing a = ageing(s.tap, s.z_mean, waiting_times);
   for (const std::int64_t t_w : a.left_out)
     log.warn("compaction: waiting_times: " + std::to_string(t_w) + " is no frame's tap; left out");
+  for (const std::int64_t t_w : waiting_times) {
+    const auto at = [&](const AgeingPoint& p) { return p.t_w == static_cast<double>(t_w); };
+    const bool left_out = std::find(a.left_out.begin(), a.left_out.end(), t_w) != a.left_out.end();
+    if (!left_out && std::none_of(a.points.begin(), a.points.end(), at)) {
+      log.warn("compaction: waiting_times: " + std::to_string(t_w) +
+               " is the last frame's tap, with no frame after it; left out");
+    }
+  }
   Table points({"t_w", "t", "squared_difference"},
                "(<Z>(t_w) - <Z>(t_w + t))^2 of this realization: Eq. (5) before the mean over "
                "realizations (scripts/pool_ageing.py)");
@@ -181,6 +198,7 @@ void report_ageing(const Series& s, const std::vector<std::int64_t>& waiting_tim
              std::string("Eq. (6) fitted to this realization's squared differences, per t_w") +
                  kCurveFitStatusCodes);
   fits.units = {"taps", "", "", "R^2", "R^2", "", "", "taps", "taps"};
+  std::string unfitted;
   for (std::size_t k = 0; k < a.points.size();) {
     std::vector<double> t, y;
     const double t_w = a.points[k].t_w;
@@ -192,6 +210,12 @@ void report_ageing(const Series& s, const std::vector<std::int64_t>& waiting_tim
     const LawFit f = fit_law(eq6_law(), t, y);
     fits.add_row({t_w, static_cast<double>(t.size()), static_cast<double>(f.status), f.value[0],
                   f.error[0], f.value[1], f.error[1], f.value[2], f.error[2]});
+    if (f.status != CurveFitStatus::Fitted)
+      unfitted += (unfitted.empty() ? "" : ", ") + format_number(t_w);
+  }
+  if (!unfitted.empty()) {
+    log.warn("compaction: Eq. (6) not fitted at t_w = " + unfitted +
+             " (ageing_fits' status); its parameters there are left undefined");
   }
   results.add_table("ageing", std::move(points));
   results.add_table("ageing_fits", std::move(fits));
@@ -219,7 +243,8 @@ double range_end(double asked, double last, const char* name, Log& log) {
 void report_compaction(const Series& series, const ReportSettings& settings, Results& results,
                        Log& log) {
   const double last = series.tap.back();
-  report_fits(series, settings.fit_from, range_end(settings.fit_to, last, "fit_to", log), results);
+  report_fits(series, settings.fit_from, range_end(settings.fit_to, last, "fit_to", log), results,
+              log);
   const double steady_from = settings.steady_from < 0.0 ? 0.5 * last : settings.steady_from;
   if (steady_from > last) {
     log.warn("compaction: steady_from: " + format_number(steady_from) +
