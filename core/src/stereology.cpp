@@ -119,8 +119,10 @@ std::string undefined_fractions(const GlobalFractions& g, const StereologySettin
   const auto radii = [&](double length) { return format_number(length / g.radius) + " R"; };
   std::string why;
   if (std::isnan(g.phi_b)) {
-    why = "phi_b is undefined (NaN): bulk_top, " + format_number(s.bulk_top) +
-          " R, reaches above the highest particle top, " + radii(g.top);
+    // Apart: "bulk_top, 6 R, reaches above ... 6 R" for 6.0000001 said nothing.
+    why = "phi_b is undefined (NaN): bulk_top, " + format_apart(s.bulk_top, g.top / g.radius) +
+          " R, reaches above the highest particle top, " +
+          format_apart(g.top / g.radius, s.bulk_top) + " R";
   }
   if (std::isnan(g.phi_c)) {
     why += std::string(why.empty() ? "" : "; ") +

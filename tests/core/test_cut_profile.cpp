@@ -210,6 +210,12 @@ TEST(GlobalFractions, AreUndefinedWithoutParticlesOrAZoneAboveTheLayer) {
   bed.bulk_top = 2.0;  // up to the top exactly: a bulk
   EXPECT_NEAR(global_fractions(one_layer, bed).phi_b, kPi / 6.0, 1e-13);
   EXPECT_EQ(undefined_fractions(global_fractions(cubic_layers(4, 10), {}), {}), "");
+  // Just above the top, told apart ("bulk_top, 2 R, reaches above ... 2 R" said nothing).
+  bed.bulk_top = 2.0000001;
+  EXPECT_EQ(undefined_fractions(global_fractions(one_layer, bed), bed),
+            "phi_b is undefined (NaN): bulk_top, 2.0000001 R, reaches above the highest "
+            "particle top, 2 R; phi_c is undefined (NaN): its zone's top height_c, 1 R, is not "
+            "above perturbed_top, 1 R");
 }
 
 // A crystal periodic along z: phi_c corrected a "bottom layer" no wall perturbs and came
