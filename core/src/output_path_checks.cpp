@@ -1,5 +1,6 @@
 #include "output_path_checks.hpp"
 
+#include <fcntl.h>
 #include <pwd.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -56,6 +57,16 @@ fs::path home_directory() {
   if (const char* home = std::getenv("HOME"); home && *home) return home;
   if (const passwd* pw = getpwuid(getuid()); pw && pw->pw_dir) return pw->pw_dir;
   return {};
+}
+
+// The kernel's own word where it gives it (a bind mount of the same file system counts, a
+// btrfs subvolume, renamed like a folder, does not); else another device than the parent's.
+bool is_mount_point(const fs::path& dir, const struct stat& folder, const struct stat& parent) {
+  struct statx x {};
+  if (statx(AT_FDCWD, dir.c_str(), AT_SYMLINK_NOFOLLOW, STATX_BASIC_STATS, &x) == 0 &&
+      (x.stx_attributes_mask & STATX_ATTR_MOUNT_ROOT))
+    return (x.stx_attributes & STATX_ATTR_MOUNT_ROOT) != 0;
+  return folder.st_dev != parent.st_dev;
 }
 
 }  // namespace
@@ -133,7 +144,8 @@ void check_removable(const fs::path& dir) {
   }, parent{};
   const fs::path above = dir.parent_path().empty() ? fs::path(".") : dir.parent_path();
   if (stat(dir.c_str(), &folder) == 0 && stat(above.c_str(), &parent) == 0) {
-    if (folder.st_dev != parent.st_dev) refuse(dir, "it is a mount point, which cannot be renamed");
+    if (is_mount_point(dir, folder, parent))
+      refuse(dir, "it is a mount point, which cannot be renamed");
     const uid_t me = geteuid();
     if ((parent.st_mode & S_ISVTX) && me != 0 && folder.st_uid != me && parent.st_uid != me)
       refuse(dir, "another user owns it, in a folder where only owners may rename");

@@ -43,4 +43,11 @@ mount -t tmpfs -o size=1m tmpfs "$disk" || { echo "skipped: cannot mount a tmpfs
   -- "$exe" "$here/long_lattice.json" --quiet --no-report --set source.params.frames=2 --out "$disk" --overwrite
 [ -z "$(ls -d "$disk".granpipe-* 2>/dev/null)" ] || { echo "FAIL: a refused run left a directory"; exit 1; }
 umount "$disk"
+# The same for a bind mount of the same file system (the same device as its parent).
+mkdir -p "$work/bound"
+mount --bind "$work/bound" "$work/bound" || { echo "skipped: cannot bind-mount"; exit 77; }
+"$exe" "$here/long_lattice.json" --quiet --no-report --set source.params.frames=2 --out "$work/bound"
+"$expect" 2 "^granpipe: $work/bound: --overwrite would have to remove the earlier run in $work/bound but cannot \(it is a mount point, which cannot be renamed\); nothing was changed$" \
+  -- "$exe" "$here/long_lattice.json" --quiet --no-report --set source.params.frames=2 --out "$work/bound" --overwrite
+umount "$work/bound"
 echo "a full disk at every stage: one line, exit 2, no final-named file; a mount point not replaced"
