@@ -491,7 +491,7 @@ RunSummary run_in_directory(const Pipeline::Impl& p, const RunOptions& options, 
     log.info(stage_times_line(ended, p.points.size()));
     summary.stage_names = ended.stage_names;
     summary.stage_seconds = ended.stage_seconds;
-    for (const fs::path& file : write_results(dir, summary.results, ended)) out.files().add(file);
+    write_results(dir, summary.results, ended, out.files());
     fs::remove(dir / "results.partial.h5");
     log.info("done: " + std::to_string(summary.frames) + " frame(s) in " +
              std::to_string(summary.seconds) + " s; results in " +

@@ -216,18 +216,25 @@ void write_provenance(hid_t file, const Provenance& provenance) {
 }
 
 // Every file is written under a temporary name and renamed only once all are written,
-// so a run that fails here (a full disk) leaves no results file under its final name.
-std::vector<fs::path> write_results(const fs::path& dir, const ResultSet& results,
-                                    const Provenance& provenance) {
+// so a run that fails here (a full disk) leaves no results file under its final name. Each
+// name is recorded before the file is made: what a failure leaves (a temporary, or CSVs
+// renamed before it) is the run's too.
+void write_results(const fs::path& dir, const ResultSet& results, const Provenance& provenance,
+                   FileRecord& record) {
   const fs::path final_path = dir / "results.h5";
   TextFiles csvs;
   for (const auto& [group, r] : results) collect_csvs(dir, group, r, provenance, csvs);
   std::vector<fs::path> written;
+  const auto made = [&](const fs::path& file) {
+    record.add(temporary(file));
+    record.add(file);
+    written.push_back(temporary(file));
+  };
   try {
-    written.push_back(temporary(final_path));
+    made(final_path);
     write_h5(written.back(), final_path, results, provenance);
     for (const auto& [path, text] : csvs) {
-      written.push_back(temporary(path));
+      made(path);
       write_text(written.back(), path, text);
     }
   } catch (...) {
@@ -235,14 +242,8 @@ std::vector<fs::path> write_results(const fs::path& dir, const ResultSet& result
     for (const fs::path& f : written) fs::remove(f, ignored);
     throw;
   }
-  std::vector<fs::path> files;
-  for (const auto& csv : csvs) {
-    rename_into_place(csv.first);
-    files.push_back(csv.first);
-  }
+  for (const auto& csv : csvs) rename_into_place(csv.first);
   rename_into_place(final_path);
-  files.push_back(final_path);
-  return files;
 }
 
 std::string run_label(const Provenance& p) {

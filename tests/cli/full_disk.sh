@@ -30,6 +30,11 @@ for free_kib in 0 4 8 16 24 32 48; do
     done
     if [ -e "$disk/run" ]; then
       grep -q '"status":"failed"' "$disk/run/.granpipe-run" || { echo "FAIL: not marked failed"; exit 1; }
+      # What the failed run left is listed as its own: with room again, --overwrite replaces it.
+      mount -o remount,size=4m "$disk"
+      "$exe" "$here/long_lattice.json" --quiet --no-report --set source.params.frames=2 \
+        --set output.save_frames=false --out "$disk/run" --overwrite ||
+        { echo "FAIL: --overwrite of the failed run refused"; ls -la "$disk/run"; exit 1; }
     fi
     umount "$disk"
   done

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "granpipe/output_files.hpp"
 #include "granpipe/results.hpp"
 
 namespace granpipe {
@@ -34,9 +35,8 @@ std::string run_label(const Provenance& p);
 using ResultSet = std::map<std::string, Results>;
 
 // Writes `dir/results.h5` and one CSV per table, histogram and scalar group beside it,
-// and returns the files written.
-std::vector<std::filesystem::path> write_results(const std::filesystem::path& dir,
-                                                 const ResultSet& results,
-                                                 const Provenance& provenance);
+// each recorded in `record` as the run's before it is made.
+void write_results(const std::filesystem::path& dir, const ResultSet& results,
+                   const Provenance& provenance, FileRecord& record);
 
 }  // namespace granpipe
