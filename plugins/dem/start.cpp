@@ -64,6 +64,10 @@ void check_bed(const PluginContext& ctx) {
     refuse("spacing", "more than 1 + 2 jitter = " + format_number(1.0 + 2.0 * jitter) +
                           " (room for the sideways nudges)");
   }
+  // 1e308 put the spheres at z = inf, refused as "particle 1: position z" naming no parameter.
+  if (!(b.real("spacing") <= kWidestCylinder)) {
+    refuse("spacing", "at most " + format_number(kWidestCylinder) + " small diameters");
+  }
   const double narrowest = 2.0 * narrowest_cylinder_radius(0.5 * d, jitter * d);
   if (!(b.real("cylinder_diameter") >= narrowest)) {
     refuse("cylinder_diameter", "at least " + format_number(narrowest) + " (a sphere of diameter " +

@@ -245,4 +245,8 @@ TEST(DemSource, TheStartIsEitherAFileOrABed) {
   expect_refusal(one_species,
                  "params.species: expected a second species for the bed's intruder (species 1), "
                  "got 1 species");
+  // 1e308 put the spheres at z = inf, refused naming no parameter.
+  nlohmann::json loose = small_preparation();
+  loose["bed"]["spacing"] = 1e308;
+  expect_refusal(loose, "params.bed.spacing: expected at most 1e+06 small diameters, got 1e+308");
 }
