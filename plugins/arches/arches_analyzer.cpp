@@ -47,8 +47,8 @@ Schema schema() {
              "arch sizes s whose span distribution n_s(x) is reported (all arches always are)")
       .min(2);
   s.integer("svg_frames", 1,
-            "how many frames, the first ones consumed, are drawn as arches_<tap>.svg "
-            "(0: none)")
+            "how many frames, the first ones consumed, are drawn as <name>_<tap>.svg, "
+            "<name> the analyzer's name in the pipeline (0: none)")
       .min(0);
   return s;
 }
