@@ -36,6 +36,23 @@ double quantile_height(const Frame& frame, double fraction) {
   return z[k] - frame.container.wall_at(v, 0);
 }
 
+// A centre beyond an open lateral side lies outside the cuts' cross-section: it was left out
+// of phi while H and <Z> counted it (exit 0). Walls and periodic sides bound the bed anyway.
+void refuse_centres_beyond_open_sides(const Frame& frame) {
+  const Container& c = frame.container;
+  for (int a = 0; a + 1 < frame.dim; ++a) {
+    for (Eigen::Index i = 0; i < frame.size(); ++i) {
+      const double x = frame.position()(i, a);
+      const bool beyond = (c.boundary[a][0] == Boundary::Open && x < c.lo[a]) ||
+                          (c.boundary[a][1] == Boundary::Open && x > c.hi[a]);
+      if (!beyond) continue;
+      throw InputError("particle " + std::to_string(i) + ": expected its centre within the open " +
+                       "sides along " + "xyz"[a] + " (" + format_number(c.lo[a]) + " to " +
+                       format_number(c.hi[a]) + "), where the cuts are, got " + format_number(x));
+    }
+  }
+}
+
 // The perturbed-zone model's factor for spheres near a plane (the paper's ref. [20]).
 constexpr double kSpheresOnAPlane = 16.0 / 11.0;
 
@@ -88,6 +105,7 @@ GlobalFractions global_fractions(const Frame& frame, const StereologySettings& s
   require_bottom_wall(frame.container, v,
                       std::string("expected a container with a bottom wall along ") + "xyz"[v] +
                           " (heights are above it; phi_c corrects the layer it perturbs)");
+  refuse_centres_beyond_open_sides(frame);
   const double factor = perturbed_factor(frame, s);
   GlobalFractions g;
   g.phi_b = g.phi_c = std::nan("");

@@ -167,6 +167,20 @@ TEST(StereologyAnalyzer, ACorrectionThatOverfillsTheBottomLayerIsRefused) {
             "fraction at most 1, got 2, which makes it 1.0472");
 }
 
+// A centre beyond an open side was left out of phi, and counted in H and <Z> (exit 0).
+TEST(StereologyAnalyzer, ACentreBeyondAnOpenSideIsRefused) {
+  Frame f = cubic_layers(4, 3);
+  f.container.boundary[0] = {Boundary::Open, Boundary::Open};
+  EXPECT_NEAR(global_fractions(f, {}).phi_b, kPi / 6.0, 1e-13);
+  f.position()(5, 0) = -3.0;
+  EXPECT_EQ(granpipe::test::input_error_of([&] { global_fractions(f, {}); }),
+            "particle 5: expected its centre within the open sides along x (0 to 8), where the "
+            "cuts are, got -3");
+  // Beyond a wall it is a frame's own refusal; beyond a periodic side it is an image.
+  f.container.boundary[0] = {Boundary::Periodic, Boundary::Periodic};
+  EXPECT_NO_THROW(global_fractions(f, {}));
+}
+
 // perturbed_top 0 (no corrected layer) gave phi_c NaN, blamed on a zone "not above" it.
 // The cubic crystal's fraction up to height_c (17 R) is then its own, pi/6.
 TEST(StereologyAnalyzer, NoPerturbedLayerLeavesPhiCUncorrected) {
