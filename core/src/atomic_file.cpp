@@ -22,7 +22,11 @@ void write_file_atomically(const fs::path& path, const std::string& content) {
   }
   std::error_code ec;
   fs::rename(tmp, path, ec);
-  if (ec) throw InputError(path.string() + ": expected a writable file, got " + ec.message());
+  if (ec) {
+    std::error_code ignored;
+    fs::remove(tmp, ignored);  // ours, and no longer of use
+    throw InputError(path.string() + ": expected a writable file, got " + ec.message());
+  }
 }
 
 }  // namespace granpipe

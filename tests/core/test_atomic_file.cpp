@@ -1,0 +1,54 @@
+// A file written whole or not at all (granpipe/atomic_file.hpp): the temporary it is written
+// under never outlives a failure.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "granpipe/atomic_file.hpp"
+#include "granpipe/errors.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path d =
+      fs::temp_directory_path() / ("granpipe_test_atomic_" + name + "_" + std::to_string(getpid()));
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+std::string read(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+}  // namespace
+
+TEST(AtomicFile, ReplacesTheFileWhole) {
+  const fs::path dir = fresh_dir("replace");
+  granpipe::write_file_atomically(dir / "a.txt", "first");
+  granpipe::write_file_atomically(dir / "a.txt", "second");
+  EXPECT_EQ(read(dir / "a.txt"), "second");
+  EXPECT_FALSE(fs::exists(dir / "a.txt.tmp"));
+  fs::remove_all(dir);
+}
+
+// A rename that fails (a folder where the file goes) left its temporary behind, which the
+// run had not listed, and a later --overwrite refused the folder for it.
+TEST(AtomicFile, AFailedRenameLeavesNoTemporary) {
+  const fs::path dir = fresh_dir("rename");
+  fs::create_directory(dir / "b.pvd");
+  fs::create_directory(dir / "b.pvd" / "inside");
+  EXPECT_THROW(granpipe::write_file_atomically(dir / "b.pvd", "text"), granpipe::InputError);
+  EXPECT_FALSE(fs::exists(dir / "b.pvd.tmp"));
+  EXPECT_TRUE(fs::is_directory(dir / "b.pvd" / "inside"));
+  fs::remove_all(dir);
+}
