@@ -19,10 +19,10 @@ void DiskGrid::reset(double width, double height, double cell, double margin) {
   const double pad = std::ceil(margin * inv_cell) + 1;
   if (!((cols + 2 * pad) * (rows + 2 * pad) <= kMostCells)) {
     std::ostringstream s;
-    s << "disks2d_tap: expected a packing that a grid of at most 2^28 cells of side " << cell
+    s << "expected a packing that a grid of at most 2^28 cells of side " << cell
       << " covers, got one of width " << width << " and height " << height
-      << ": a tap amplitude, initial fraction or sizes this far apart spread the disks too thin";
-    throw InputError(s.str());
+      << ": spread too thin for disks of these sizes";
+    throw SpreadTooThin(s.str());
   }
   width_ = width;
   height_ = height;

@@ -8,14 +8,23 @@
 #include <cstdint>
 #include <vector>
 
+#include "granpipe/errors.hpp"
+
 namespace granpipe::disks2d_tap {
+
+// A packing spread too thin for the grid (reset): its callers put the parameter that
+// spread it in front (initial_fraction, A).
+class SpreadTooThin : public InputError {
+ public:
+  using InputError::InputError;
+};
 
 class DiskGrid {
  public:
   static constexpr std::int32_t kEmpty = -1;
 
   // Cells covering x in [0, width], y in [0, height], with `margin` (a distance) of
-  // padding cells around them. Empties the grid.
+  // padding cells around them. Empties the grid. SpreadTooThin beyond 2^28 cells.
   void reset(double width, double height, double cell, double margin);
 
   double cell_size() const { return cell_; }

@@ -263,7 +263,11 @@ DiskPacking random_placement(const PluginContext& ctx, const Seeds& seeds) {
   for (double ri : radii) area += std::numbers::pi * ri * ri;
   const double height = std::max(area / (width * p.real("initial_fraction")), 2.0 * r_max);
   RandomStream placement = seeds.stream("placement");
-  return place_at_random(width, height, radii, placement, ctx.param("N"));
+  try {
+    return place_at_random(width, height, radii, placement, ctx.param("N"));
+  } catch (const SpreadTooThin& e) {
+    throw InputError(ctx.param("initial_fraction") + ": " + e.what());
+  }
 }
 
 // A saved bed to continue from, e.g. one cooled slowly through the transition.
@@ -293,7 +297,10 @@ TapSource::TapSource(const PluginContext& ctx)
       tap_rng_(replica_seeds(ctx).stream("tap")),
       schedule_(tap_schedule(ctx)),
       shaker_(static_cast<int>(ctx.params.integer("mc_loops")),
-              ctx.params.choice<Dilation>("dilation"), ctx.params.choice<McOrder>("mc_order")) {
+              ctx.params.choice<Dilation>("dilation"), ctx.params.choice<McOrder>("mc_order")),
+      amplitude_param_(ctx.param(annealed(ctx.params)               ? "anneal_A_max"
+                                 : ctx.params.real("cool_from") > 0 ? "cool_from"
+                                                                    : "A")) {
   const Params& p = ctx.params;
   const std::optional<StartFrame> start = read_start_frame(ctx, p.real("radius"));
   refuse_unused_radius(ctx, start);
@@ -341,10 +348,15 @@ bool TapSource::next(Frame& frame) {
   while (tap_ < schedule_.total()) {
     const TapStep step = schedule_.at(++tap_);
     const auto t0 = std::chrono::steady_clock::now();
-    shaker_.tap(packing_, step.amplitude, tap_rng_);
-    deposit_->reset();
-    tap_seconds_ += seconds_since(t0);
-    deposit();
+    try {
+      shaker_.tap(packing_, step.amplitude, tap_rng_);
+      deposit_->reset();
+      tap_seconds_ += seconds_since(t0);
+      deposit();
+    } catch (const SpreadTooThin& e) {
+      throw InputError(amplitude_param_ + ": tap " + std::to_string(tap_) + " of amplitude " +
+                       format_number(step.amplitude) + ": " + e.what());
+    }
     progress_.advance(1.0);
     if (step.save) {
       packing_.to_frame(frame);

@@ -6,6 +6,7 @@
 // the support labels.
 #include <cstdint>
 #include <memory>
+#include <string>
 
 #include "deposit.hpp"
 #include "disk_packing.hpp"
@@ -42,6 +43,7 @@ class TapSource : public Source {
   bool started_ = false;
   std::int64_t tap_ = 0;
   double deposition_seconds_ = 0, tap_seconds_ = 0;
+  std::string amplitude_param_;  // what sets the largest amplitude, for refusals
 };
 
 }  // namespace granpipe::disks2d_tap

@@ -874,14 +874,17 @@ TEST(Disks2dTapSource, WidthIsBoundedInDiametersBeforeAllocating) {
 // A tap of amplitude 1e9 or an initial fraction of 1e-9 spreads the disks over a height a
 // grid of disk-sized cells cannot cover: an internal error, exit 1 ("cannot create
 // std::vector larger than max_size()"), or gigabytes and minutes before it.
+// The refusal names the parameter that spread them (it named none).
 TEST(Disks2dTapSource, APackingSpreadTooThinIsRefused) {
-  const std::string expected =
-      "disks2d_tap: expected a packing that a grid of at most 2^28 cells of side ";
-  for (const auto& params : {nlohmann::json({{"initial_fraction", 1e-9}}),
-                             nlohmann::json({{"A", 1e9}, {"equilibration_taps", 1}})}) {
+  const std::string grid = "expected a packing that a grid of at most 2^28 cells of side ";
+  for (const auto& [params, named] :
+       {std::pair{nlohmann::json({{"initial_fraction", 1e-9}}),
+                  std::string("params.initial_fraction: ")},
+        std::pair{nlohmann::json({{"A", 1e9}, {"equilibration_taps", 1}}),
+                  std::string("params.A: tap 1 of amplitude 1e+09: ")}}) {
     const std::string m = granpipe::test::input_error_of([&] { run_source(params, 1); });
-    EXPECT_EQ(m.substr(0, expected.size()), expected) << m;
-    EXPECT_NE(m.find("spread the disks too thin"), std::string::npos) << m;
+    EXPECT_EQ(m.substr(0, named.size() + grid.size()), named + grid) << m;
+    EXPECT_NE(m.find("spread too thin for disks of these sizes"), std::string::npos) << m;
   }
 }
 
