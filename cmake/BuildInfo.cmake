@@ -5,7 +5,9 @@ execute_process(COMMAND git -C ${SOURCE_DIR} rev-parse HEAD
 if(NOT rc EQUAL 0 OR commit STREQUAL "")
   set(commit "unknown")
 else()
-  execute_process(COMMAND git -C ${SOURCE_DIR} status --porcelain --untracked-files=no
+  # Untracked files count: the build compiles every core/src/*.cpp and plugin folder, added
+  # to git or not, and results named a clean commit for a tree that was not.
+  execute_process(COMMAND git -C ${SOURCE_DIR} status --porcelain --untracked-files=normal
                   OUTPUT_VARIABLE dirty OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET)
   if(NOT dirty STREQUAL "")
     set(commit "${commit}-dirty")
