@@ -4,12 +4,16 @@
 
 namespace granpipe {
 
-void Log::open_file(const std::string& path) {
+void Log::open_file(const std::string& path, const std::string& first) {
   std::lock_guard lock(mutex_);
   // A Log used for several runs writes each run's lines into that run's log only.
   if (file_.is_open()) file_.close();
   file_.clear();
   file_.open(path, std::ios::app);
+  if (!first.empty()) {
+    if (!quiet_) std::cerr << first << '\n';
+    file_ << first << '\n';
+  }
   for (const std::string& line : pending_) file_ << line << '\n';
   file_ << std::flush;
   pending_.clear();

@@ -432,7 +432,11 @@ RunSummary run_in_directory(const Pipeline::Impl& p, const RunOptions& options, 
   try {
     for (std::size_t k = 0; k < p.points.size(); ++k)
       create_point_directory(point_directory(p, k, dir));
-    log.open_file((dir / "run.log").string());
+    log.open_file((dir / "run.log").string(),
+                  "granpipe " + std::string(version()) + " (" + git_commit() + "): " + p.name +
+                      ", " + std::to_string(p.points.size()) + " point(s), seed " +
+                      std::to_string(p.seed) + ", " + std::to_string(threads) +
+                      " thread(s), output " + summary.output_dir.string());
     // The next run's early lines (its plugins' checks) must not land in this run's log.
     const ClosesLog closing{log};
     const std::string resolved = p.resolved.dump(2);
@@ -444,9 +448,6 @@ RunSummary run_in_directory(const Pipeline::Impl& p, const RunOptions& options, 
     // Until the run ends the streamed tables go to results.partial.h5, marked incomplete
     // (as frames.partial.h5): a file named results.h5 is always a finished one.
     stream.open(dir / "results.partial.h5", provenance(0.0, false));
-    log.info("granpipe " + std::string(version()) + " (" + git_commit() + "): " + p.name + ", " +
-             std::to_string(p.points.size()) + " point(s), seed " + std::to_string(p.seed) + ", " +
-             std::to_string(threads) + " thread(s), output " + summary.output_dir.string());
     std::set<std::string> warned;
     for (const PointPlugins& point : plugins) warn_once(point, warned, log);
 

@@ -41,6 +41,19 @@ TEST(Log, AWarningBeforeTheLogOpensReachesItEvenWhenQuiet) {
   fs::remove(path);
 }
 
+// The run's provenance line is its log's first, before the plugins' early warnings.
+TEST(Log, TheFirstLineGoesBeforeTheLinesKept) {
+  const fs::path path = fresh("granpipe_log_provenance");
+  Log log;
+  log.set_quiet(true);
+  log.warn("positions printed to 6 digits");
+  log.open_file(path.string(), "granpipe 0.1.0 (abc): run, seed 1");
+  log.info("done");
+  EXPECT_EQ(read(path),
+            "granpipe 0.1.0 (abc): run, seed 1\nwarning: positions printed to 6 digits\ndone\n");
+  fs::remove(path);
+}
+
 TEST(Log, AClosedLogKeepsTheNextRunsLinesForTheNextLog) {
   const fs::path first = fresh("granpipe_log_first"), second = fresh("granpipe_log_second");
   Log log;

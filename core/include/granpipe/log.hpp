@@ -14,7 +14,9 @@ class Log {
  public:
   void info(const std::string& message);
   void warn(const std::string& message);
-  void open_file(const std::string& path);
+  // `first`, when given, is the log's first line, before those kept until it opened (the
+  // run's provenance line came after the plugins' early warnings); said as info() says it.
+  void open_file(const std::string& path, const std::string& first = "");
   // Ends the run's log: later lines wait for the next open_file.
   void close_file();
   void set_quiet(bool quiet) { quiet_ = quiet; }
