@@ -19,15 +19,18 @@ TapSchedule TapSchedule::cooled_constant(double from, double step, std::int64_t 
                                          double A, std::int64_t equilibration,
                                          std::int64_t production, std::int64_t save_every) {
   TapSchedule s = constant(A, equilibration, production, save_every);
-  // Levels from - k step, k = 0, 1, ..., while above A (a hair of rounding tolerated, so
-  // that A itself, reached in whole steps, is not a cooling level).
-  const auto levels = static_cast<std::int64_t>(std::ceil((from - A) / step - 1e-9));
   s.cool_from_ = from;
   s.cool_step_ = step;
   s.taps_per_step_ = taps_per_step;
-  s.cooling_taps_ = std::max<std::int64_t>(levels, 0) * taps_per_step;
+  s.cooling_taps_ = static_cast<std::int64_t>(cooling_levels(from, step, A)) * taps_per_step;
   s.total_ += s.cooling_taps_;
   return s;
+}
+
+double TapSchedule::cooling_levels(double from, double step, double A) {
+  // Levels from - k step, k = 0, 1, ..., while above A (a hair of rounding tolerated, so
+  // that A itself, reached in whole steps, is not a cooling level).
+  return std::max(std::ceil((from - A) / step - 1e-9), 0.0);
 }
 
 TapSchedule TapSchedule::annealed(double A_min, double A_max, std::int64_t steps,
@@ -40,7 +43,8 @@ TapSchedule TapSchedule::annealed(double A_min, double A_max, std::int64_t steps
   s.steps_ = steps;
   s.taps_per_step_ = taps_per_step;
   s.save_every_ = save_every;
-  s.total_ = 2 * cycles * steps * taps_per_step;
+  s.total_ = static_cast<std::int64_t>(annealed_taps(
+      static_cast<double>(steps), static_cast<double>(taps_per_step), static_cast<double>(cycles)));
   return s;
 }
 

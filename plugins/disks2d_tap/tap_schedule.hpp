@@ -32,6 +32,13 @@ class TapSchedule {
                               std::int64_t taps_per_step, std::int64_t cycles,
                               std::int64_t save_every);
 
+  // The counts the factories above multiply and add, in doubles, for the caller to check
+  // against the 64-bit range first (sums and products of large counts wrap round).
+  static double cooling_levels(double from, double step, double A);
+  static double annealed_taps(double steps, double taps_per_step, double cycles) {
+    return 2.0 * cycles * steps * taps_per_step;
+  }
+
   std::int64_t total() const { return total_; }
   // Tap number `tap`, counted from 1 to total().
   TapStep at(std::int64_t tap) const;

@@ -169,14 +169,16 @@ void check_tap_counts(const PluginContext& ctx) {
   const auto count = [&](const char* name) { return static_cast<double>(p.integer(name)); };
   if (p.choice<Protocol>("protocol") == Protocol::Annealed) {
     check_step_count(
-        2.0 * count("anneal_cycles") * count("anneal_steps") * count("anneal_taps_per_step"),
+        TapSchedule::annealed_taps(count("anneal_steps"), count("anneal_taps_per_step"),
+                                   count("anneal_cycles")),
         ctx.param("anneal_cycles"), "taps",
         "2 anneal_cycles x anneal_steps x anneal_taps_per_step");
     return;
   }
   double cooling = 0.0;
   if (p.real("cool_from") > p.real("A")) {
-    const double levels = std::ceil((p.real("cool_from") - p.real("A")) / p.real("cool_step"));
+    const double levels =
+        TapSchedule::cooling_levels(p.real("cool_from"), p.real("cool_step"), p.real("A"));
     check_step_count(levels, ctx.param("cool_step"), "cooling levels",
                      "(cool_from - A) / cool_step");
     cooling = levels * count("cool_taps_per_step");

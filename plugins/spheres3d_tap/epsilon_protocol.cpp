@@ -19,8 +19,8 @@ EpsilonProtocol EpsilonProtocol::ramp(double root_min, double root_max, double r
   p.root_step_ = root_step;
   p.per_step_ = taps_per_step;
   p.steps_ = static_cast<std::int64_t>(std::floor((root_max - root_min) / root_step + 1e-9));
-  // The first leg visits steps_ + 1 values; each later leg turns at the end and visits steps_.
-  p.taps_ = taps_per_step * ((p.steps_ + 1) + (legs - 1) * p.steps_);
+  p.taps_ = static_cast<std::int64_t>(
+      ramp_taps(static_cast<double>(p.steps_), static_cast<double>(taps_per_step), legs));
   return p;
 }
 

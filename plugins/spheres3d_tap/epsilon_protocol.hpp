@@ -20,6 +20,13 @@ class EpsilonProtocol {
   static EpsilonProtocol ramp(double root_min, double root_max, double root_step,
                               std::int64_t taps_per_step, int legs);
 
+  // The taps of such a ramp with `steps` steps up a leg, in doubles, for the caller to
+  // check against the 64-bit range first: the first leg visits steps + 1 values, each
+  // later leg turns at the end and visits steps.
+  static double ramp_taps(double steps, double taps_per_step, double legs) {
+    return taps_per_step * ((steps + 1) + (legs - 1) * steps);
+  }
+
   std::int64_t taps() const { return taps_; }
   EpsilonAt at(std::int64_t tap) const;  // tap from 1 to taps()
 

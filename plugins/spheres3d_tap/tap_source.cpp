@@ -99,7 +99,7 @@ EpsilonProtocol epsilon_protocol(const PluginContext& ctx) {
   }
   const double legs = static_cast<double>(p.integer("ramp_legs"));
   check_step_count(
-      static_cast<double>(p.integer("ramp_taps_per_step")) * ((steps + 1) + (legs - 1) * steps),
+      EpsilonProtocol::ramp_taps(steps, static_cast<double>(p.integer("ramp_taps_per_step")), legs),
       ctx.param("ramp_taps_per_step"), "taps",
       "ramp_taps_per_step x the values of sqrt(epsilon) over ramp_legs legs");
   return EpsilonProtocol::ramp(lo, hi, step, p.integer("ramp_taps_per_step"),
