@@ -1,34 +1,25 @@
 // A file written whole or not at all (granpipe/atomic_file.hpp): the temporary it is written
 // under never outlives a failure.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include "granpipe/atomic_file.hpp"
 #include "granpipe/errors.hpp"
+#include "test_files.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 
 fs::path fresh_dir(const std::string& name) {
-  const fs::path d =
-      fs::temp_directory_path() / ("granpipe_test_atomic_" + name + "_" + std::to_string(getpid()));
-  fs::remove_all(d);
+  const fs::path d = granpipe::test::fresh_path("atomic", name);
   fs::create_directories(d);
   return d;
 }
 
-std::string read(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using granpipe::test::read_file;
 
 }  // namespace
 
@@ -36,7 +27,7 @@ TEST(AtomicFile, ReplacesTheFileWhole) {
   const fs::path dir = fresh_dir("replace");
   granpipe::write_file_atomically(dir / "a.txt", "first");
   granpipe::write_file_atomically(dir / "a.txt", "second");
-  EXPECT_EQ(read(dir / "a.txt"), "second");
+  EXPECT_EQ(read_file(dir / "a.txt"), "second");
   EXPECT_FALSE(fs::exists(dir / "a.txt.tmp"));
   fs::remove_all(dir);
 }

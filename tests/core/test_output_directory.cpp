@@ -2,7 +2,6 @@
 // recorded in run.log and the marker, and a replacing run that fails leaving the earlier
 // run whole. Runs use the real lattice and h5md plugins plus small failing ones.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -15,6 +14,7 @@
 
 #include "granpipe/pipeline.hpp"
 #include "granpipe/plugin_loader.hpp"
+#include "test_files.hpp"
 
 using namespace granpipe;
 namespace fs = std::filesystem;
@@ -95,22 +95,12 @@ const char* kPicky = R"({"source": {"plugin": "lattice",
   "params": {"lattice": "sc", "cells": [2, 2, 2], "jitter": 0.01, "frames": 3}},
   "analyzers": [{"plugin": "picky"}]})";
 
-fs::path fresh_dir(const std::string& name) {
-  fs::path d =
-      fs::temp_directory_path() / ("granpipe_test_outdir_" + name + "_" + std::to_string(getpid()));
-  fs::remove_all(d);
-  return d;
-}
+fs::path fresh_dir(const std::string& name) { return test::fresh_path("outdir", name); }
 
-std::string read(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test::read_file;
 
 std::string last_line(const fs::path& file) {
-  std::string text = read(file);
+  std::string text = read_file(file);
   while (!text.empty() && text.back() == '\n') text.pop_back();
   return text.substr(text.rfind('\n') + 1);
 }
@@ -119,7 +109,7 @@ std::string last_line(const fs::path& file) {
 std::map<std::string, std::string> snapshot(const fs::path& dir) {
   std::map<std::string, std::string> files;
   for (const auto& e : fs::recursive_directory_iterator(dir))
-    if (e.is_regular_file()) files[fs::relative(e.path(), dir).string()] = read(e.path());
+    if (e.is_regular_file()) files[fs::relative(e.path(), dir).string()] = read_file(e.path());
   return files;
 }
 
@@ -153,7 +143,8 @@ fs::path only_sibling(const fs::path& out) {
 }
 
 bool marked(const fs::path& dir, const std::string& status) {
-  return read(dir / ".granpipe-run").find("\"status\":\"" + status + "\"") != std::string::npos;
+  return read_file(dir / ".granpipe-run").find("\"status\":\"" + status + "\"") !=
+         std::string::npos;
 }
 
 }  // namespace
@@ -204,13 +195,13 @@ TEST(ReplacingRun, AFailureLeavesTheEarlierRunWholeAndItsOwnFilesBeside) {
 TEST(ReplacingRun, SuccessSwapsTheNewRunInAndRemovesTheEarlierOne) {
   const fs::path out = fresh_dir("replace_works");
   ASSERT_EQ(run(kLattice, out), "");
-  const std::string earlier = read(out / ".granpipe-run");
+  const std::string earlier = read_file(out / ".granpipe-run");
   ASSERT_EQ(run(std::string(kLattice).replace(std::string(kLattice).find("\"seed\": 1"), 9,
                                               "\"seed\": 2"),
                 out, true),
             "");
-  EXPECT_NE(read(out / ".granpipe-run"), earlier);
-  EXPECT_NE(read(out / "pipeline.json").find("\"seed\": 2"), std::string::npos);
+  EXPECT_NE(read_file(out / ".granpipe-run"), earlier);
+  EXPECT_NE(read_file(out / "pipeline.json").find("\"seed\": 2"), std::string::npos);
   EXPECT_TRUE(marked(out, "complete"));
   EXPECT_EQ(only_sibling(out), fs::path());
   fs::remove_all(out);
@@ -226,7 +217,7 @@ TEST(OutputDirectory, OverwriteRefusesADirectoryWithoutTheMarker) {
           ": --overwrite replaces only directories granpipe made (they hold a .granpipe-run "
           "file), got one without (if an older granpipe, which wrote no marker, made it: remove "
           "it yourself); nothing was changed");
-  EXPECT_EQ(read(out / "pipeline.json"), "{}");
+  EXPECT_EQ(read_file(out / "pipeline.json"), "{}");
   fs::remove_all(out);
 }
 
@@ -252,7 +243,7 @@ TEST(OutputDirectory, RefusesAFileASymlinkAndWhatHoldsTheWorkingDirectory) {
                 ", which holds the working directory; choose another --out");
   fs::current_path(cwd);
   EXPECT_TRUE(fs::is_empty(dir / "real"));
-  EXPECT_EQ(read(dir / "file"), "mine");
+  EXPECT_EQ(read_file(dir / "file"), "mine");
   fs::remove_all(dir);
 }
 
@@ -329,7 +320,7 @@ TEST(OutputDirectory, OverwriteRefusesARunFolderHoldingWhatTheRunDidNotWrite) {
 TEST(OutputDirectory, AManifestListsWhatTheRunWroteAndNothingElse) {
   const fs::path out = fresh_dir("manifest");
   ASSERT_EQ(run(kLattice, out), "");
-  std::istringstream listed(read(out / ".granpipe-manifest"));
+  std::istringstream listed(read_file(out / ".granpipe-manifest"));
   std::string line;
   std::getline(listed, line);
   EXPECT_EQ(line, "# granpipe run manifest: what the run wrote here");
@@ -345,7 +336,7 @@ TEST(OutputDirectory, AManifestListsWhatTheRunWroteAndNothingElse) {
 TEST(OutputDirectory, AFailedRunListsWhatItWroteSoOverwriteReplacesIt) {
   const fs::path out = fresh_dir("failed_manifest");
   EXPECT_THROW(run(kDiverging, out), std::runtime_error);
-  EXPECT_NE(read(out / ".granpipe-manifest").find("\nrun.log\n"), std::string::npos);
+  EXPECT_NE(read_file(out / ".granpipe-manifest").find("\nrun.log\n"), std::string::npos);
   std::ofstream(out / "notes.txt") << "mine";
   EXPECT_NE(run(kLattice, out, true).find("also holds notes.txt;"), std::string::npos);
   fs::remove(out / "notes.txt");
@@ -390,7 +381,7 @@ TEST(OutputDirectory, OverwriteNeverFollowsASymlinkInTheEarlierRun) {
   ASSERT_EQ(run(kLattice, out), "");
   fs::create_directory_symlink(elsewhere, out / "point_000");
   EXPECT_NE(run(kLattice, out, true).find("also holds point_000;"), std::string::npos);
-  EXPECT_EQ(read(elsewhere / "results.h5"), "mine");
+  EXPECT_EQ(read_file(elsewhere / "results.h5"), "mine");
   fs::remove(out / "point_000");
   fs::remove_all(out);
   fs::remove_all(elsewhere);
@@ -410,7 +401,7 @@ TEST(OutputDirectory, WhatAUserAddsToAFreshRunsFolderIsNotTheRuns) {
   ASSERT_EQ(run(scribbling, out), "");
   scribbled = {"notes.txt"};
   for (const char* note : {"notes.txt", "scribbling_notes.txt", "source.todo"})
-    EXPECT_EQ(read(out / ".granpipe-manifest").find(note), std::string::npos) << note;
+    EXPECT_EQ(read_file(out / ".granpipe-manifest").find(note), std::string::npos) << note;
   const auto before = snapshot(out);
   EXPECT_EQ(run(kLattice, out, true),
             out.string() +
@@ -428,7 +419,7 @@ TEST(OutputDirectory, APluginsOwnFilesAreListedAndReplaced) {
     "params": {"lattice": "sc", "cells": [2, 2, 2], "frames": 2}},
     "analyzers": [{"plugin": "drawing"}]})";
   ASSERT_EQ(run(drawing, out), "");
-  const std::string manifest = read(out / ".granpipe-manifest");
+  const std::string manifest = read_file(out / ".granpipe-manifest");
   EXPECT_NE(manifest.find("\ndrawing_0.svg\n"), std::string::npos) << manifest;
   EXPECT_NE(manifest.find("\ndrawing_1.svg\n"), std::string::npos) << manifest;
   EXPECT_EQ(run(kLattice, out, true), "");
@@ -486,6 +477,6 @@ TEST(OutputDirectory, AManifestIsNotBelievedBeyondWhereARunWrites) {
             out.string() +
                 ": --overwrite removes only what granpipe wrote, and this run's folder also holds "
                 "keep/; move them out or remove the folder yourself; nothing was changed");
-  EXPECT_EQ(read(out / "keep" / "k.txt"), "mine");
+  EXPECT_EQ(read_file(out / "keep" / "k.txt"), "mine");
   fs::remove_all(out);
 }

@@ -10,6 +10,7 @@
 
 #include "granpipe/frame_store.hpp"
 #include "granpipe/pipeline.hpp"
+#include "test_files.hpp"
 
 using namespace granpipe;
 namespace fs = std::filesystem;
@@ -119,12 +120,7 @@ const char* kGood = R"({
   "analyzers": [{"plugin": "meanx", "params": {"scale": 2.0}}]
 })";
 
-fs::path fresh_dir(const std::string& name) {
-  fs::path d = fs::temp_directory_path() /
-               ("granpipe_test_pipeline_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(d);
-  return d;
-}
+fs::path fresh_dir(const std::string& name) { return test::fresh_path("pipeline", name); }
 
 // Run options without progress output (each test sets its own output directory).
 RunOptions quiet_options() {

@@ -2,7 +2,6 @@
 // written to frames.h5, read back by the h5md source, and refused before a run when an
 // analyzer needs one that nobody provides.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -13,6 +12,7 @@
 #include "granpipe/pipeline.hpp"
 #include "granpipe/plugin_loader.hpp"
 #include "plugin_harness.hpp"
+#include "test_files.hpp"
 
 using namespace granpipe;
 namespace fs = std::filesystem;
@@ -221,12 +221,7 @@ Registry registry_with_h5md() {
   return r;
 }
 
-fs::path fresh_dir(const std::string& name) {
-  fs::path d = fs::temp_directory_path() /
-               ("granpipe_test_columns_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(d);
-  return d;
-}
+fs::path fresh_dir(const std::string& name) { return test::fresh_path("columns", name); }
 
 double run_label_sum(const std::string& text, const Registry& r, const fs::path& out) {
   const Pipeline p = Pipeline::parse(text, "p.json", {}, r);
