@@ -94,6 +94,9 @@ const char* kDiverging = R"({"source": {"plugin": "diverging"}})";
 const char* kPicky = R"({"source": {"plugin": "lattice",
   "params": {"lattice": "sc", "cells": [2, 2, 2], "jitter": 0.01, "frames": 3}},
   "analyzers": [{"plugin": "picky"}]})";
+const char* kScribbling = R"({"source": {"plugin": "lattice",
+  "params": {"lattice": "sc", "cells": [2, 2, 2], "frames": 2}},
+  "analyzers": [{"plugin": "scribbling"}]})";
 
 fs::path fresh_dir(const std::string& name) { return test::fresh_path("outdir", name); }
 
@@ -395,10 +398,7 @@ TEST(OutputDirectory, WhatAUserAddsToAFreshRunsFolderIsNotTheRuns) {
   const fs::path out = fresh_dir("scribbled_fresh");
   scribble_into = out;
   scribbled = {"notes.txt", "scribbling_notes.txt", "source.todo"};
-  const std::string scribbling = R"({"source": {"plugin": "lattice",
-    "params": {"lattice": "sc", "cells": [2, 2, 2], "frames": 2}},
-    "analyzers": [{"plugin": "scribbling"}]})";
-  ASSERT_EQ(run(scribbling, out), "");
+  ASSERT_EQ(run(kScribbling, out), "");
   scribbled = {"notes.txt"};
   for (const char* note : {"notes.txt", "scribbling_notes.txt", "source.todo"})
     EXPECT_EQ(read_file(out / ".granpipe-manifest").find(note), std::string::npos) << note;
@@ -433,10 +433,7 @@ TEST(ReplacingRun, WhatAUserAddsDuringTheRunIsLeftInTheEarlierFolder) {
   const fs::path out = fresh_dir("scribbled");
   ASSERT_EQ(run(kLattice, out), "");
   scribble_into = out;
-  const std::string scribbling = R"({"source": {"plugin": "lattice",
-    "params": {"lattice": "sc", "cells": [2, 2, 2], "frames": 2}},
-    "analyzers": [{"plugin": "scribbling"}]})";
-  ASSERT_EQ(run(scribbling, out, true), "");
+  ASSERT_EQ(run(kScribbling, out, true), "");
   EXPECT_TRUE(marked(out, "complete"));
   EXPECT_FALSE(fs::exists(out / "notes.txt"));
   const fs::path earlier = only_sibling(out);
