@@ -246,19 +246,42 @@ Frame cubic_stack(std::int64_t tap) {
   return f;
 }
 
-// A bed that never moves: every power is 0 and the slopes were NaN without a word.
-TEST(Compaction, ASpectrumWithoutFluctuationsSaysWhyItsSlopeIsUndefined) {
-  const auto ctx = test::make_context("compaction", {});
+// The analyzer's results over `frames`, and the lines it logged.
+struct Analysis {
+  Results results;
+  std::vector<std::string> log;
+};
+Analysis analyze_logged(const std::vector<Frame>& frames, nlohmann::json params = {}) {
+  const auto ctx = test::make_context("compaction", std::move(params));
   ctx->keep_log();
   CompactionAnalyzer analyzer(*ctx);
   FrameCache cache;
-  for (int tap = 0; tap < 20; ++tap) analyzer.consume(cubic_stack(tap), cache);
-  Results r;
-  analyzer.finish(r);
-  EXPECT_TRUE(std::isnan(r.scalar("spectrum_slope_z_mean").value));
+  for (const Frame& f : frames) analyzer.consume(f, cache);
+  Analysis a;
+  analyzer.finish(a.results);
+  a.log = ctx->logged_lines();
+  return a;
+}
+
+Results analyze(const std::vector<Frame>& frames, nlohmann::json params = {}) {
+  return analyze_logged(frames, std::move(params)).results;
+}
+
+std::vector<Frame> cubic_stacks(const std::vector<int>& taps) {
+  std::vector<Frame> frames;
+  for (int tap : taps) frames.push_back(cubic_stack(tap));
+  return frames;
+}
+
+// A bed that never moves: every power is 0 and the slopes were NaN without a word.
+TEST(Compaction, ASpectrumWithoutFluctuationsSaysWhyItsSlopeIsUndefined) {
+  std::vector<Frame> frames;
+  for (int tap = 0; tap < 20; ++tap) frames.push_back(cubic_stack(tap));
+  const Analysis a = analyze_logged(frames);
+  EXPECT_TRUE(std::isnan(a.results.scalar("spectrum_slope_z_mean").value));
   // (The laws' fits to a bed that never moves are said undefined before.)
   std::vector<std::string> spectra;
-  for (const std::string& line : ctx->logged_lines())
+  for (const std::string& line : a.log)
     if (line.find("power spectrum") != std::string::npos) spectra.push_back(line);
   granpipe::test::expect_said_once(spectra,
                                    "warning: compaction: the power spectrum of z_mean is zero at "
@@ -325,16 +348,6 @@ TEST(Compaction, ATapBelowZeroOrNotAnIntegerIsRefused) {
             "integer)");
 }
 
-Results analyze(const std::vector<Frame>& frames, nlohmann::json params = {}) {
-  const auto ctx = test::make_context("compaction", std::move(params));
-  CompactionAnalyzer analyzer(*ctx);
-  FrameCache cache;
-  for (const Frame& f : frames) analyzer.consume(f, cache);
-  Results r;
-  analyzer.finish(r);
-  return r;
-}
-
 TEST(Compaction, TapsGoingBackAreRefused) {
   EXPECT_THROW(analyze({cubic_stack(5), cubic_stack(5)}), InputError);
 }
@@ -351,7 +364,7 @@ TEST(Compaction, AgeingSquaresTheChangeSinceEachWaitingTime) {
 }
 
 TEST(Compaction, AShortRunReportsUndefinedFitsNotZeros) {
-  const Results r = analyze({cubic_stack(0), cubic_stack(1), cubic_stack(2)});
+  const Results r = analyze(cubic_stacks({0, 1, 2}));
   EXPECT_EQ(r.tables().at("per_frame").rows(), 3u);
   EXPECT_EQ(r.scalar("eq3_phi_b_status").value, 1.0);  // too few points
   for (double v : r.fits().at("eq3_phi_b").values) EXPECT_TRUE(std::isnan(v));
@@ -366,18 +379,11 @@ TEST(Compaction, AShortRunReportsUndefinedFitsNotZeros) {
 
 // fit_to past the last tap was reported as the fits' end (1000 for a run of 20 taps, exit 0).
 TEST(Compaction, ARangePastTheLastTapEndsThereAndSaysSo) {
-  const auto ctx = test::make_context(
-      "compaction", {{"fit_from", 1.0}, {"fit_to", 1000.0}, {"steady_from", 50.0}});
-  ctx->keep_log();
-  CompactionAnalyzer analyzer(*ctx);
-  FrameCache cache;
-  for (int tap : {0, 1, 2, 3}) analyzer.consume(cubic_stack(tap), cache);
-  Results r;
-  analyzer.finish(r);
+  const auto [r, log] = analyze_logged(
+      cubic_stacks({0, 1, 2, 3}), {{"fit_from", 1.0}, {"fit_to", 1000.0}, {"steady_from", 50.0}});
   EXPECT_EQ(r.scalar("fit_to").value, 3.0);
   EXPECT_EQ(r.tables().at("fitted_laws").rows(), 3u);
   EXPECT_TRUE(std::isnan(r.scalar("z_mean_ss").value));
-  const auto log = ctx->logged_lines();
   ASSERT_GE(log.size(), 5u);
   EXPECT_EQ(
       log[0],
@@ -395,15 +401,9 @@ TEST(Compaction, ARangePastTheLastTapEndsThereAndSaysSo) {
 // A fit range that ends before it starts, and a waiting time with no frame after it, gave
 // NaN fits without a word.
 TEST(Compaction, AnEmptyFitRangeAndALastWaitingTimeAreSaid) {
-  const auto ctx =
-      test::make_context("compaction", {{"fit_from", 50.0}, {"waiting_times", {1, 3}}});
-  ctx->keep_log();
-  CompactionAnalyzer analyzer(*ctx);
-  FrameCache cache;
-  for (int tap : {0, 1, 2, 3}) analyzer.consume(cubic_stack(tap), cache);
-  Results r;
-  analyzer.finish(r);
-  const auto log = ctx->logged_lines();
+  const std::vector<std::string> log =
+      analyze_logged(cubic_stacks({0, 1, 2, 3}), {{"fit_from", 50.0}, {"waiting_times", {1, 3}}})
+          .log;
   const auto said = [&](const std::string& line) {
     return std::find(log.begin(), log.end(), line) != log.end();
   };
@@ -452,18 +452,13 @@ TEST(Compaction, OnTheTappingSourceMeanHeightIsTheSourcesObservable) {
 // slab half empty (exit 0, no word) and phi_c NaN without a word. Both are NaN now, and
 // the first such frame says why.
 TEST(Compaction, UndefinedFractionsAreNaNAndSaidOnce) {
-  const auto ctx = test::make_context("compaction", {{"bulk_top", 100.0}, {"perturbed_top", 50.0}});
-  ctx->keep_log();
-  CompactionAnalyzer analyzer(*ctx);
-  FrameCache cache;
-  for (int tap : {0, 1}) analyzer.consume(cubic_stack(tap), cache);
-  Results r;
-  analyzer.finish(r);
+  const auto [r, log] =
+      analyze_logged(cubic_stacks({0, 1}), {{"bulk_top", 100.0}, {"perturbed_top", 50.0}});
   const Table& t = r.tables().at("per_frame");
   for (double v : t.column("phi_b")) EXPECT_TRUE(std::isnan(v));
   for (double v : t.column("phi_c")) EXPECT_TRUE(std::isnan(v));
   granpipe::test::expect_said_once(
-      ctx->logged_lines(),
+      log,
       "warning: compaction: frame 0 (step 0): phi_b is undefined (NaN): bulk_top, 100 R, "
       "reaches above the highest particle top, 6 R; phi_c is undefined (NaN): its zone's "
       "top height_c, 5 R, is not above perturbed_top, 50 R; said for the first such frame "
