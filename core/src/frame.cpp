@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <sstream>
 #include <string>
 #include <tuple>
@@ -80,27 +81,23 @@ void check_contacts(const Frame& f, const std::string& where) {
   }
 }
 
-// Each pair of particles in one row: a pair in two, as (i, j) and (j, i) or repeated, counted
-// twice in every coordination, network and force statistic (an H5MD file's table listing
-// each pair both ways doubled z). A particle may touch one wall in several rows: a wall
-// made of a mesh touches it at each facet (LIGGGHTS' wall contacts).
-// A table whose particle rows name i < j in strictly increasing (i, j) order (a simulator's
-// own, as the dem source writes it) holds each pair once: seen in one pass, without the
-// sort's copy of the pairs (tens of MB for a million spheres, on top of the frame).
-bool pairs_strictly_increasing(const IndexArray& i, const IndexArray& j) {
-  std::int64_t last_i = -1, last_j = -1;
+// A table whose rows name (i, j) in strictly increasing order, each particle pair with
+// i < j (a simulator's own, as the dem source writes it), repeats no contact: seen in one
+// pass, without the sorts' copies of the rows below (tens of MB for a million spheres, on
+// top of the frame).
+bool rows_strictly_increasing(const IndexArray& i, const IndexArray& j) {
   for (Eigen::Index k = 0; k < i.size(); ++k) {
-    if (!partner::is_particle(j[k])) continue;
-    if (i[k] >= j[k] || i[k] < last_i || (i[k] == last_i && j[k] <= last_j)) return false;
-    last_i = i[k];
-    last_j = j[k];
+    if (partner::is_particle(j[k]) && i[k] >= j[k]) return false;
+    if (k > 0 && (i[k] < i[k - 1] || (i[k] == i[k - 1] && j[k] <= j[k - 1]))) return false;
   }
   return true;
 }
 
+// Each pair of particles in one row: a pair in two, as (i, j) and (j, i) or repeated, counted
+// twice in every coordination, network and force statistic (an H5MD file's table listing
+// each pair both ways doubled z).
 void check_each_pair_once(const Frame& f, const std::string& where) {
   const IndexArray &i = f.contact_i(), &j = f.contact_j();
-  if (pairs_strictly_increasing(i, j)) return;
   std::vector<std::tuple<std::int64_t, std::int64_t, Eigen::Index>> pairs;
   for (Eigen::Index k = 0; k < i.size(); ++k) {
     if (partner::is_particle(j[k]))
@@ -115,6 +112,59 @@ void check_each_pair_once(const Frame& f, const std::string& where) {
                      ": expected each pair of particles once, got " + std::to_string(a) + " and " +
                      std::to_string(b) + " in both (a table listing each pair both ways?)");
   }
+}
+
+// Whether rows a and b of the table hold the same bits in every column (NaN, a value a
+// file leaves out, equal to itself).
+bool same_row(const PropertyTable& table, Eigen::Index a, Eigen::Index b) {
+  for (std::size_t c = 0; c < table.size(); ++c) {
+    const bool same = std::visit(
+        [&](const auto& v) {
+          for (Eigen::Index k = 0; k < v.cols(); ++k)
+            if (std::memcmp(&v(a, k), &v(b, k), sizeof(v(a, k))) != 0) return false;
+          return true;
+        },
+        table.column(c).storage());
+    if (!same) return false;
+  }
+  return true;
+}
+
+// A particle may touch one wall in several rows (a wall made of a mesh touches it at each
+// facet: LIGGGHTS' wall contacts), but not twice with the same values: a row written twice
+// doubled the base contacts and the wall's forces (an H5MD file, a LIGGGHTS wall dump; exit
+// 0). A table of i and j alone cannot tell two facets from a repeated row.
+void check_each_wall_contact_once(const Frame& f, const std::string& where) {
+  if (f.contacts->size() <= 2) return;
+  const IndexArray &i = f.contact_i(), &j = f.contact_j();
+  std::vector<std::tuple<std::int64_t, std::int64_t, Eigen::Index>> rows;
+  for (Eigen::Index k = 0; k < i.size(); ++k) {
+    if (!partner::is_particle(j[k])) rows.emplace_back(i[k], j[k], k);
+  }
+  std::sort(rows.begin(), rows.end());
+  std::size_t group = 0;  // the first row of this (particle, wall)
+  for (std::size_t n = 1; n < rows.size(); ++n) {
+    const auto [a, w, row] = rows[n];
+    if (a != std::get<0>(rows[group]) || w != std::get<1>(rows[group])) {
+      group = n;
+      continue;
+    }
+    for (std::size_t m = group; m < n; ++m) {
+      const Eigen::Index earlier = std::get<2>(rows[m]);
+      if (!same_row(*f.contacts, earlier, row)) continue;
+      throw InputError(where + ": contacts " + std::to_string(earlier) + " and " +
+                       std::to_string(row) + ": expected each contact once, got " +
+                       describe_particle(f, a) + " against the wall " +
+                       to_string(partner::wall_of(w)) + " in both with the same values (a row " +
+                       "written twice?)");
+    }
+  }
+}
+
+void check_each_contact_once(const Frame& f, const std::string& where) {
+  if (rows_strictly_increasing(f.contact_i(), f.contact_j())) return;
+  check_each_pair_once(f, where);
+  check_each_wall_contact_once(f, where);
 }
 
 // The motion a simulator starts from and writers pass on: a NaN there is a broken file,
@@ -247,7 +297,7 @@ void Frame::check(const std::string& where) const {
   check_container_values(container, dim, where);
   if (contacts) {
     check_contacts(*this, where);
-    check_each_pair_once(*this, where);
+    check_each_contact_once(*this, where);
   }
   check_particles(*this, where);
   check_motion(*this, where);

@@ -17,27 +17,31 @@ bool bounds(const Container& c, int dim, int axis, int side, bool open_sides_bou
   return axis < dim && (b == Boundary::Wall || (b == Boundary::Open && open_sides_bound));
 }
 
-// How far particle k reaches beyond a plane side; > allowed means outside.
-std::optional<ParticleOutside> beyond_side(const Frame& f, Eigen::Index k, int axis, int side,
-                                           double tolerance) {
+// How far particle k's centre lies inside the wall (or open side) w.
+double centre_inside(const Frame& f, Eigen::Index k, Wall w) {
   const Container& c = f.container;
-  const double inward = (side == 0 ? 1.0 : -1.0) * (f.position()(k, axis) - c.wall_at(axis, side));
-  const auto wall = static_cast<Wall>(2 * axis + side);
-  if (c.boundary[axis][side] == Boundary::Open) {
-    if (inward < 0.0) return ParticleOutside{k, wall, -inward};
-    return {};
+  if (w == Wall::CylinderSide) {
+    const double dx = f.position()(k, 0) - c.cylinder_center[0] - c.wall_offset[0];
+    const double dy = f.position()(k, 1) - c.cylinder_center[1] - c.wall_offset[1];
+    return c.cylinder_radius - std::hypot(dx, dy);
   }
-  const double overlap = f.radius()[k] - inward;
-  if (overlap > tolerance * f.radius()[k]) return ParticleOutside{k, wall, overlap};
-  return {};
+  const int axis = static_cast<int>(w) / 2, side = static_cast<int>(w) % 2;
+  return (side == 0 ? 1.0 : -1.0) * (f.position()(k, axis) - c.wall_at(axis, side));
 }
 
-std::optional<ParticleOutside> beyond_cylinder(const Frame& f, Eigen::Index k, double tolerance) {
-  const Container& c = f.container;
-  const double dx = f.position()(k, 0) - c.cylinder_center[0] - c.wall_offset[0];
-  const double dy = f.position()(k, 1) - c.cylinder_center[1] - c.wall_offset[1];
-  const double overlap = f.radius()[k] - (c.cylinder_radius - std::hypot(dx, dy));
-  if (overlap > tolerance * f.radius()[k]) return ParticleOutside{k, Wall::CylinderSide, overlap};
+// How far particle k reaches beyond a side (a plane or the cylinder); > allowed means
+// outside.
+std::optional<ParticleOutside> beyond(const Frame& f, Eigen::Index k, Wall wall, double tolerance) {
+  if (wall != Wall::CylinderSide) {
+    const Boundary b = f.container.boundary[static_cast<int>(wall) / 2][static_cast<int>(wall) % 2];
+    if (b == Boundary::Open) {
+      const double inward = centre_inside(f, k, wall);
+      if (inward < 0.0) return ParticleOutside{k, wall, -inward};
+      return {};
+    }
+  }
+  const double overlap = -surface_gap(f, k, wall);
+  if (overlap > tolerance * f.radius()[k]) return ParticleOutside{k, wall, overlap};
   return {};
 }
 
@@ -56,6 +60,10 @@ std::string where_is(const Frame& f, Wall wall) {
 
 }  // namespace
 
+double surface_gap(const Frame& frame, Eigen::Index k, Wall w) {
+  return centre_inside(frame, k, w) - frame.radius()[k];
+}
+
 std::optional<ParticleOutside> first_particle_outside(const Frame& frame, double tolerance,
                                                       bool open_sides_bound) {
   const bool cylinder = frame.container.shape == ContainerShape::Cylinder && frame.dim == 3;
@@ -63,11 +71,11 @@ std::optional<ParticleOutside> first_particle_outside(const Frame& frame, double
     for (int axis = 0; axis < 3; ++axis) {
       for (int side = 0; side < 2; ++side) {
         if (!bounds(frame.container, frame.dim, axis, side, open_sides_bound)) continue;
-        if (auto out = beyond_side(frame, k, axis, side, tolerance)) return out;
+        if (auto out = beyond(frame, k, static_cast<Wall>(2 * axis + side), tolerance)) return out;
       }
     }
     if (cylinder) {
-      if (auto out = beyond_cylinder(frame, k, tolerance)) return out;
+      if (auto out = beyond(frame, k, Wall::CylinderSide, tolerance)) return out;
     }
   }
   return {};

@@ -217,10 +217,15 @@ void H5mdSource::check_inside(const Frame& frame, const std::string& where) cons
 // A contact joins particles that touch: one between particles a whole radius (of the
 // smaller) or more apart is no contact under any writer's rounding, and entered the
 // networks as a bond (a contact to a particle 80 diameters away joined it to the largest).
+// A wall contact likewise (the top particle's "base contact", 86 above the base, was
+// counted as one).
 void H5mdSource::check_contacts_touch(const Frame& frame, const std::string& where) {
   const IndexArray &i = frame.contact_i(), &j = frame.contact_j();
   for (Eigen::Index c = 0; c < i.size(); ++c) {
-    if (!partner::is_particle(j[c])) continue;
+    if (!partner::is_particle(j[c])) {
+      check_wall_contact_touches(frame, c, where);
+      continue;
+    }
     const double ri = frame.radius()[i[c]], rj = frame.radius()[j[c]];
     const double gap = separation(frame, i[c], j[c]).norm() - ri - rj;
     const double smaller = std::min(ri, rj);
@@ -232,6 +237,19 @@ void H5mdSource::check_contacts_touch(const Frame& frame, const std::string& whe
                      format_number(gap) + " apart (more than the smaller radius, " +
                      format_number(smaller) + ")");
   }
+}
+
+void H5mdSource::check_wall_contact_touches(const Frame& frame, Eigen::Index c,
+                                            const std::string& where) {
+  const std::int64_t k = frame.contact_i()[c];
+  const Wall wall = partner::wall_of(frame.contact_j()[c]);
+  const double gap = surface_gap(frame, k, wall), radius = frame.radius()[k];
+  if (!(gap > radius)) return;
+  throw InputError(where + ": contact " + std::to_string(c) + ": expected particle " +
+                   std::to_string(k) + " (id " + std::to_string(frame.id()[k]) +
+                   ") to touch the wall " + to_string(wall) + ", got its surface " +
+                   format_number(gap) + " from it (more than its radius, " + format_number(radius) +
+                   ")");
 }
 
 void H5mdSource::finish(Results& results) {

@@ -31,6 +31,8 @@ class H5mdSource : public Source {
   void check_overlaps(const Frame& frame, const std::string& where) const;
   void check_inside(const Frame& frame, const std::string& where) const;
   static void check_contacts_touch(const Frame& frame, const std::string& where);
+  static void check_wall_contact_touches(const Frame& frame, Eigen::Index c,
+                                         const std::string& where);
   Frame read_checked(long index) const;
   void check_step_rises(const Frame& frame, long index);
   RunParts parts_;

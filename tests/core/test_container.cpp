@@ -9,6 +9,7 @@
 #include "granpipe/container_check.hpp"
 #include "granpipe/errors.hpp"
 #include "granpipe/frame.hpp"
+#include "granpipe/property.hpp"
 #include "granpipe/separation.hpp"
 #include "plugin_harness.hpp"
 
@@ -161,6 +162,31 @@ TEST(ContainerCheck, FramesRefuseAPairListedTwice) {
   EXPECT_EQ(test::input_error_of([&] { f.check("f"); }),
             "f: contacts 0 and 3: expected each pair of particles once, got 0 and 1 in both (a "
             "table listing each pair both ways?)");
+}
+
+// Two rows of one particle against one wall are two facets of a mesh wall where their
+// values differ, and one row written twice where they do not (an H5MD file whose base
+// contacts were each listed twice doubled the intruder's base contacts, exit 0).
+TEST(ContainerCheck, FramesRefuseAWallContactWrittenTwice) {
+  Frame f;
+  f.resize(2, 3);
+  f.position() << 0.5, 0.5, 0.5, 1.5, 0.5, 0.5;
+  f.radius().setConstant(0.5);
+  f.container = Container::open_top_box(3, Eigen::Vector3d::Zero(), Eigen::Vector3d(4, 4, 8));
+  PropertyTable& contacts = f.add_contacts(4);
+  contacts.column(0).as<IndexArray>() << 1, 0, 1, 0;
+  const std::int64_t base = partner::wall(Wall::ZLow);
+  contacts.column(1).as<IndexArray>() << base, 1, base, base;
+  EXPECT_NO_THROW(f.check("f"));  // i and j alone: facets or a repeat, who can tell
+  auto& point = contacts.add(*find_standard("point", Scope::Contact)).as<Coordinates>();
+  point.setConstant(std::nan(""));  // the same NaNs are the same values
+  point.row(0) << 1.5, 0.5, 0.0;
+  point.row(2) << 1.25, 0.5, 0.0;
+  EXPECT_NO_THROW(f.check("f"));
+  point.row(2) = point.row(0);
+  EXPECT_EQ(test::input_error_of([&] { f.check("f"); }),
+            "f: contacts 0 and 2: expected each contact once, got particle 1 (id 1) against the "
+            "wall z_low in both with the same values (a row written twice?)");
 }
 
 // With two or more particles the neighbour search refused such a box; a lone particle met

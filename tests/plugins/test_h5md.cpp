@@ -205,6 +205,41 @@ TEST_F(H5mdSourceTest, AContactBetweenParticlesApartIsRefused) {
                 "whose surfaces are 1 apart (more than the smaller radius, 0.5)");
 }
 
+// A "base contact" of a particle 86 above the base was counted among the intruder's base
+// contacts, exit 0. In a box with a floor at y = 0 and a wall at x = 10 (offset by 0.25),
+// particle 0 rests on the floor and particle 1 touches nothing.
+TEST_F(H5mdSourceTest, AWallContactOfAParticleAwayFromTheWallIsRefused) {
+  const auto with_contact = [&](std::int64_t i, Wall wall) {
+    const fs::path p = dir_ / ("wall_contact_" + std::to_string(i) + to_string(wall) + ".h5");
+    FrameWriter w(p, "{}");
+    Frame f;
+    f.resize(2, 2);
+    f.position() << 1.0, 0.5, 6.0, 3.5;
+    f.radius().setConstant(0.5);
+    f.container = Container::open_top_box(2, Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(10, 20, 0));
+    f.container.wall_offset.x() = 0.25;
+    f.add_contacts(1);
+    f.contact_i()[0] = i;
+    f.contact_j()[0] = partner::wall(wall);
+    w.append(f);
+    w.close();
+    return p;
+  };
+  EXPECT_EQ(error_of([&] { return source(with_contact(0, Wall::YLow), 0, -1, 1); }),
+            "(no InputError)");
+  const fs::path above = with_contact(1, Wall::YLow);
+  EXPECT_EQ(error_of([&] { return source(above, 0, -1, 1); }),
+            above.string() +
+                ": frame 0: contact 0: expected particle 1 (id 1) to touch the wall y_low, got "
+                "its surface 3 from it (more than its radius, 0.5)");
+  // 10.25 - 6 - 0.5 from the displaced wall (3.5 from where it stands at rest).
+  const fs::path side = with_contact(1, Wall::XHigh);
+  EXPECT_EQ(error_of([&] { return source(side, 0, -1, 1); }),
+            side.string() +
+                ": frame 0: contact 0: expected particle 1 (id 1) to touch the wall x_high, got "
+                "its surface 3.75 from it (more than its radius, 0.5)");
+}
+
 // The radius for files without one did nothing for a file with radii, without a word.
 TEST_F(H5mdSourceTest, ARadiusForAFileWithRadiiIsRefused) {
   const fs::path p = write(2);

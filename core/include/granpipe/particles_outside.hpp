@@ -30,6 +30,10 @@ struct ParticleOutside {
 std::optional<ParticleOutside> first_particle_outside(const Frame& frame, double tolerance,
                                                       bool open_sides_bound = true);
 
+// How far particle k's surface lies from the wall w of the frame's container, where the
+// frame shows it (wall_offset included); negative where the particle presses into it.
+double surface_gap(const Frame& frame, Eigen::Index k, Wall w);
+
 // "at (7, 0, 2), radius 0.5: expected an overlap with the wall cylinder (radius 6.125 about
 // (0, 0)) of at most 0.025 (0.05 of its radius), got 1.375": to follow the particle's name
 // in a one-line message.
