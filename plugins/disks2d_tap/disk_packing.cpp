@@ -143,10 +143,18 @@ DiskPacking DiskPacking::from_frame(const Frame& frame, const std::string& where
   if (frame.dim != 2) {
     throw InputError(where + ": expected a 2D frame, got " + std::to_string(frame.dim) + "D");
   }
-  if (frame.container.lo.x() != 0.0) {
+  // The engine's box has its left wall at x = 0 and its base at y = 0, at rest: a base
+  // raised by 1.5 (lo or wall_offset) was read as one at 0, the disks on it left floating.
+  const Container& c = frame.container;
+  if (c.lo.x() != 0.0 || c.lo.y() != 0.0 || c.wall_offset.norm() != 0.0) {
     std::ostringstream s;
     s.precision(17);
-    s << where << ": expected a box whose left wall is at x = 0, got " << frame.container.lo.x();
+    s << where << ": expected a box whose left wall is at x = 0 and base at y = 0, at rest, got ";
+    if (c.wall_offset.norm() != 0.0) {
+      s << "its walls displaced by (" << c.wall_offset.x() << ", " << c.wall_offset.y() << ")";
+    } else {
+      s << "x = " << c.lo.x() << " and y = " << c.lo.y();
+    }
     throw InputError(s.str());
   }
   // The engine's box has side walls and a base: a periodic frame was read as walled.

@@ -2,7 +2,9 @@
 
 #include <cmath>
 #include <sstream>
+#include <string>
 
+#include "granpipe/container.hpp"
 #include "granpipe/errors.hpp"
 #include "sphere_grid.hpp"
 
@@ -19,18 +21,42 @@ std::string number(double v) {
   return s.str();
 }
 
-void check_box(const std::string& where, const Frame& f, const TapBox& box) {
-  const Container& c = f.container;
-  const bool periodic = c.periodic(0) && c.periodic(1);
-  if (periodic != box.periodic() || c.lo.norm() != 0.0 ||
-      std::abs(c.hi.x() - box.side) > 1e-12 * box.side ||
+// How the saved frame's container differs from the model's (the box of side L over a
+// bottom at z = 0, open at the top, its walls at rest), or "" where it does not. The model
+// puts the spheres in its own box: a cylinder was read as the square around it, a base
+// raised by a wall offset as one at z = 0, a side periodic along x alone as a wall.
+std::string container_difference(const Container& c, const TapBox& box) {
+  if (c.shape != ContainerShape::Box) return std::string("a ") + to_string(c.shape) + " container";
+  if (c.lo.norm() != 0.0 || std::abs(c.hi.x() - box.side) > 1e-12 * box.side ||
       std::abs(c.hi.y() - box.side) > 1e-12 * box.side) {
-    throw InputError(where + ": expected a box [0, " + number(box.side) + "]^2 with " +
-                     (box.periodic() ? "periodic" : "wall") +
-                     " sides over a bottom at z = 0, got [" + number(c.lo.x()) + ", " +
-                     number(c.hi.x()) + "] x [" + number(c.lo.y()) + ", " + number(c.hi.y()) +
-                     "] with " + (periodic ? "periodic" : "other") + " sides");
+    std::ostringstream s;
+    s.precision(17);
+    s << "[" << c.lo.x() << ", " << c.hi.x() << "] x [" << c.lo.y() << ", " << c.hi.y()
+      << "] over a bottom at z = " << c.lo.z();
+    return s.str();
   }
+  const Container model = box.container(c.hi.z());
+  for (int axis = 0; axis < 3; ++axis) {
+    for (int side = 0; side < 2; ++side) {
+      if (c.boundary[axis][side] == model.boundary[axis][side]) continue;
+      return std::string(to_string(c.boundary[axis][side])) + " at " +
+             to_string(static_cast<Wall>(2 * axis + side));
+    }
+  }
+  if (c.wall_offset.norm() != 0.0) {
+    return "its walls displaced by (" + number(c.wall_offset.x()) + ", " +
+           number(c.wall_offset.y()) + ", " + number(c.wall_offset.z()) + ")";
+  }
+  return "";
+}
+
+void check_box(const std::string& where, const Frame& f, const TapBox& box) {
+  const std::string difference = container_difference(f.container, box);
+  if (difference.empty()) return;
+  throw InputError(where + ": expected a box [0, " + number(box.side) + "]^2 with " +
+                   (box.periodic() ? "periodic" : "wall") +
+                   " sides over a bottom wall at z = 0, open at the top, at rest, got " +
+                   difference);
 }
 
 void check_inside(const std::string& where, const std::vector<Eigen::Vector3d>& x,

@@ -570,6 +570,17 @@ TEST(Disks2dTapPacking, FromFrameRejectsWhatIsNotABedOfDisks) {
   Frame shifted = f;
   shifted.container.lo.x() = -1.0;
   EXPECT_THROW(dt::DiskPacking::from_frame(shifted, "f"), InputError);
+  // A base raised by 1.5 was read as one at y = 0, the disks on it left floating (exit 0).
+  Frame raised = f;
+  raised.container.lo.y() = 1.5;
+  EXPECT_EQ(granpipe::test::input_error_of([&] { dt::DiskPacking::from_frame(raised, "f"); }),
+            "f: expected a box whose left wall is at x = 0 and base at y = 0, at rest, got x = 0 "
+            "and y = 1.5");
+  Frame driven = f;
+  driven.container.wall_offset.y() = 1.5;
+  EXPECT_EQ(granpipe::test::input_error_of([&] { dt::DiskPacking::from_frame(driven, "f"); }),
+            "f: expected a box whose left wall is at x = 0 and base at y = 0, at rest, got its "
+            "walls displaced by (0, 1.5)");
   Frame periodic = f;  // was read as walled, exit 0
   periodic.container.boundary[0] = {granpipe::Boundary::Periodic, granpipe::Boundary::Periodic};
   EXPECT_EQ(granpipe::test::input_error_of([&] { dt::DiskPacking::from_frame(periodic, "f"); }),

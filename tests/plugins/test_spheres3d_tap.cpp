@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 #include <vector>
 
 #include "deposit.hpp"
@@ -14,7 +15,9 @@
 #include "granpipe/container.hpp"
 #include "granpipe/frame.hpp"
 #include "neighbour_lists.hpp"
+#include "plugin_harness.hpp"
 #include "redeposition.hpp"
+#include "saved_packing.hpp"
 #include "sphere_grid.hpp"
 #include "tap_schedule.hpp"
 #include "trial_move.hpp"
@@ -491,6 +494,47 @@ TEST(EpsilonProtocol, RampsStepTheRootUpDownAndUpAgainEndingEachStep) {
   EXPECT_EQ(constant.taps(), 7);
   EXPECT_EQ(constant.at(3).epsilon, 0.05);
   EXPECT_EQ(constant.at(3).leg, -1);
+}
+
+// A start frame's own container was not compared with the model's box: a cylinder was run
+// as the square around it, a base raised by a wall offset as one at z = 0 (the spheres
+// left floating), a box periodic along x alone as a walled one; all with exit 0.
+TEST(Spheres3dTapSavedStart, AContainerOtherThanTheModelsIsRefused) {
+  const TapBox walled = box(6.0, Sides::Walls);
+  StartFrame start;
+  start.where = "f";
+  Frame& f = start.frame;
+  f.resize(2, 3);
+  f.position() << 1, 1, 1, 3, 1, 1;
+  f.radius().setConstant(kR);
+  f.container = walled.container(10.0);
+  const auto refusal = [&](const auto& change) {
+    const Frame kept = f;
+    change(f.container);
+    const std::string message = test::input_error_of([&] { read_saved_packing(start, walled, 2); });
+    f = kept;
+    return message;
+  };
+  EXPECT_EQ(read_saved_packing(start, walled, 2).centres.size(), 2u);
+  const std::string expected =
+      "f: expected a box [0, 6]^2 with wall sides over a bottom wall at z = 0, open at the top, "
+      "at rest, got ";
+  EXPECT_EQ(refusal([](Container& c) {
+              c.shape = ContainerShape::Cylinder;
+              c.cylinder_center = {3, 3};
+              c.cylinder_radius = 3.0;
+            }),
+            expected + "a cylinder container");
+  EXPECT_EQ(refusal([](Container& c) { c.wall_offset.z() = 2.5; }),
+            expected + "its walls displaced by (0, 0, 2.5)");
+  EXPECT_EQ(refusal([](Container& c) {
+              c.boundary[0] = {Boundary::Periodic, Boundary::Periodic};
+            }),
+            expected + "periodic at x_low");
+  EXPECT_EQ(refusal([](Container& c) { c.boundary[2][1] = Boundary::Wall; }),
+            expected + "wall at z_high");
+  EXPECT_EQ(refusal([](Container& c) { c.lo.z() = -1.0; }),
+            expected + "[0, 6] x [0, 6] over a bottom at z = -1");
 }
 
 }  // namespace
