@@ -174,17 +174,25 @@ bool H5mdSource::next(Frame& frame) {
 
 // Frames whose steps go back or repeat (a part copying an earlier part's frames, a session
 // started from a frame other than its first, a file written out of order) would count
-// taps twice, or in the wrong order, in every analysis over the run.
+// taps twice, or in the wrong order, in every analysis over the run. Their times follow
+// (a file of another tool whose times ran down gave the intruder's lift-offs backwards).
 void H5mdSource::check_step_rises(const Frame& frame, long index) {
-  if (last_step_ && frame.step <= *last_step_) {
+  const bool steps_back = last_step_ && frame.step <= *last_step_;
+  if (steps_back || frame.time < last_time_) {
     const bool parts = parts_.parts().size() > 1;
-    throw InputError((parts ? continued_param_ : file_param_) + ": " + parts_.where(index) +
-                     ": expected a step above " + std::to_string(*last_step_) + " (" +
-                     parts_.where(last_index_) + ", the frame read before it: " +
-                     (parts ? "the parts are one run, steps rising" : "a run's steps rise") +
-                     "), got " + std::to_string(frame.step));
+    const std::string place = (parts ? continued_param_ : file_param_) + ": " +
+                              parts_.where(index) + ": expected a ",
+                      before = " (" + parts_.where(last_index_) + ", the frame read before it";
+    if (steps_back) {
+      throw InputError(place + "step above " + std::to_string(*last_step_) + before + ": " +
+                       (parts ? "the parts are one run, steps rising" : "a run's steps rise") +
+                       "), got " + std::to_string(frame.step));
+    }
+    throw InputError(place + "time at or after " + format_number(last_time_) + before + "), got " +
+                     format_number(frame.time));
   }
   last_step_ = frame.step;
+  last_time_ = frame.time;
   last_index_ = index;
 }
 

@@ -4,6 +4,7 @@
 // files (positions and the box; radii from the `radius` parameter). A run split over
 // sessions is read from its parts as one.
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 
@@ -44,6 +45,7 @@ class H5mdSource : public Source {
   // Steps rise from frame to frame (one file, or the parts of a run): the last frame read.
   std::string file_param_, continued_param_;
   std::optional<std::int64_t> last_step_;
+  double last_time_ = std::numeric_limits<double>::quiet_NaN();
   long last_index_ = -1;
 };
 

@@ -98,6 +98,13 @@ LammpsDumpSource::LammpsDumpSource(const PluginContext& ctx)
   next_ = selection_.first;
   first_frame_ = read_snapshot(selection_.first);
   if (!pairs_) warn_if_coarse(ctx, *first_frame_);
+  // Undefined times are NaN in every table with a time column: said once, with the cure.
+  if (std::isnan(first_frame_->time)) {
+    ctx.log.warn(file_ + ": the dump has no ITEM: TIME and " + dt_param_ +
+                 " is 0: times are undefined (NaN in the results); give the run's timestep "
+                 "as " +
+                 dt_param_);
+  }
 }
 
 // Two centres each off by up to the rounding of a position: their distance by up to twice
@@ -235,7 +242,20 @@ Frame LammpsDumpSource::frame_of(const SnapshotHeader& h) {
   add_contacts(f, atoms.precision);
   precision_ = atoms.precision;
   f.check(h.place.where(h.place.first_line));
+  check_time_follows(f, h);
   return std::move(f);
+}
+
+// Snapshots come in rising timesteps (the index checks them); their ITEM: TIME values follow
+// (a dump whose times ran down gave the intruder's lift-offs backwards, exit 0). An undefined
+// time (NaN) is compared with nothing.
+void LammpsDumpSource::check_time_follows(const Frame& f, const SnapshotHeader& h) {
+  if (f.time < last_time_) {
+    throw InputError(h.place.at(h.place.first_line) + "expected a time at or after " +
+                     format_number(last_time_) + " (the snapshot read before it), got " +
+                     format_number(f.time));
+  }
+  last_time_ = f.time;
 }
 
 bool LammpsDumpSource::next(Frame& frame) {

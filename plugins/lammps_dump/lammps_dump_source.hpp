@@ -8,6 +8,7 @@
 // snapshots before it, with a warning. Contacts with their forces come from dumps local of
 // the same run (pair_file, wall_file; contact_dump.hpp); without them, a warning says when
 // the positions are printed too coarsely for contacts found from them.
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -53,6 +54,7 @@ class LammpsDumpSource : public Source {
   // The frame of the snapshot whose header was just read: its atoms, step, time and
   // container, every atom checked to be inside.
   Frame frame_of(const SnapshotHeader& header);
+  void check_time_follows(const Frame& f, const SnapshotHeader& header);
 
   std::string file_;
   StatedContainer stated_;
@@ -70,6 +72,7 @@ class LammpsDumpSource : public Source {
   long next_ = 0, read_ = 0;
   // Read when the source is made, so that bad atoms stop the pipeline before it runs.
   std::optional<Frame> first_frame_;
+  double last_time_ = std::numeric_limits<double>::quiet_NaN();  // of the snapshot read last
 };
 
 }  // namespace granpipe::lammps_dump

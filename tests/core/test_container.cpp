@@ -164,29 +164,59 @@ TEST(ContainerCheck, FramesRefuseAPairListedTwice) {
             "table listing each pair both ways?)");
 }
 
-// Two rows of one particle against one wall are two facets of a mesh wall where their
-// values differ, and one row written twice where they do not (an H5MD file whose base
-// contacts were each listed twice doubled the intruder's base contacts, exit 0).
-TEST(ContainerCheck, FramesRefuseAWallContactWrittenTwice) {
+namespace {
+
+// Two touching spheres on the base of an open box.
+Frame two_on_the_base() {
   Frame f;
   f.resize(2, 3);
   f.position() << 0.5, 0.5, 0.5, 1.5, 0.5, 0.5;
   f.radius().setConstant(0.5);
   f.container = Container::open_top_box(3, Eigen::Vector3d::Zero(), Eigen::Vector3d(4, 4, 8));
+  return f;
+}
+
+}  // namespace
+
+// Two rows of one particle against one wall are two facets of a mesh wall where their
+// values differ, and one row written twice where they do not (an H5MD file whose base
+// contacts were each listed twice doubled the intruder's base contacts, exit 0).
+TEST(ContainerCheck, FramesRefuseAWallContactWrittenTwice) {
+  Frame f = two_on_the_base();
   PropertyTable& contacts = f.add_contacts(4);
   contacts.column(0).as<IndexArray>() << 1, 0, 1, 0;
   const std::int64_t base = partner::wall(Wall::ZLow);
   contacts.column(1).as<IndexArray>() << base, 1, base, base;
   EXPECT_NO_THROW(f.check("f"));  // i and j alone: facets or a repeat, who can tell
   auto& point = contacts.add(*find_standard("point", Scope::Contact)).as<Coordinates>();
-  point.setConstant(std::nan(""));  // the same NaNs are the same values
   point.row(0) << 1.5, 0.5, 0.0;
+  point.row(1) << 1.0, 0.5, 0.5;
+  point.row(3) << 0.5, 0.5, 0.0;
   point.row(2) << 1.25, 0.5, 0.0;
   EXPECT_NO_THROW(f.check("f"));
   point.row(2) = point.row(0);
   EXPECT_EQ(test::input_error_of([&] { f.check("f"); }),
             "f: contacts 0 and 2: expected each contact once, got particle 1 (id 1) against the "
             "wall z_low in both with the same values (a row written twice?)");
+}
+
+// An H5MD file's contact forces of inf and overlaps of NaN went into the networks' and the
+// intruder's statistics, exit 0.
+TEST(ContainerCheck, FramesRefuseContactValuesThatAreNotNumbers) {
+  Frame f = two_on_the_base();
+  PropertyTable& contacts = f.add_contacts(2);
+  contacts.column(0).as<IndexArray>() << 0, 1;
+  contacts.column(1).as<IndexArray>() << 1, partner::wall(Wall::ZLow);
+  auto& overlap = contacts.add(*find_standard("overlap", Scope::Contact)).as<Values<double>>();
+  auto& normal = contacts.add(*find_standard("normal_force", Scope::Contact)).as<Coordinates>();
+  EXPECT_NO_THROW(f.check("f"));
+  normal(1, 2) = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(test::input_error_of([&] { f.check("f"); }),
+            "f: contact 1: expected a finite normal_force, got inf in component 2");
+  normal(1, 2) = 1.0;
+  overlap[0] = std::nan("");
+  EXPECT_EQ(test::input_error_of([&] { f.check("f"); }),
+            "f: contact 0: expected a finite overlap, got nan");
 }
 
 // With two or more particles the neighbour search refused such a box; a lone particle met

@@ -336,11 +336,13 @@ class RunPartsTest : public H5mdSourceTest {
   }
 
   // Frames k of `ks` in that order, made as write_part makes them.
+  // Frames k at steps 10 k, with the times given (or 0).
   fs::path write_frames(const std::string& name, const std::vector<long>& ks, double part,
-                        Eigen::Index particles = 3) {
+                        Eigen::Index particles = 3, const std::vector<double>& times = {}) {
     const fs::path p = dir_ / name;
     FrameWriter w(p, "{}");
-    for (long k : ks) {
+    for (std::size_t n = 0; n < ks.size(); ++n) {
+      const long k = ks[n];
       Frame f;
       f.resize(particles, 2);
       for (Eigen::Index i = 0; i < particles; ++i) f.position()(i, 0) = static_cast<double>(k + i);
@@ -350,6 +352,7 @@ class RunPartsTest : public H5mdSourceTest {
       f.add("velocity");
       f.table<double>("velocity").setConstant(part);
       f.step = 10 * k;
+      if (!times.empty()) f.time = times[n];
       w.append(f);
     }
     w.close();
@@ -507,6 +510,20 @@ TEST_F(RunPartsTest, StepsThatRepeatOrGoBackInOneFileAreRefused) {
                 ": frame 1, the frame read before it: a run's steps rise), got 10");
   const fs::path rising = write_frames("one_rising.h5", {0, 1, 3}, 1);
   EXPECT_EQ(error_of([&] { return joined(rising, {}); }), "(no InputError)");
+}
+
+// Times that ran down while the steps rose (another tool's file) gave the intruder's
+// lift-offs backwards, exit 0.
+TEST_F(RunPartsTest, TimesThatGoBackAreRefused) {
+  const auto with_times = [&](const std::string& name, const std::vector<double>& times) {
+    return write_frames(name, {0, 1, 2}, 1, 3, times);
+  };
+  const fs::path back = with_times("times_back.h5", {3.0, 2.0, 1.0});
+  EXPECT_EQ(error_of([&] { return joined(back, {}); }),
+            "params.file: " + back.string() + ": frame 1: expected a time at or after 3 (" +
+                back.string() + ": frame 0, the frame read before it), got 2");
+  const fs::path level = with_times("times_level.h5", {1.0, 1.0, 2.0});
+  EXPECT_EQ(error_of([&] { return joined(level, {}); }), "(no InputError)");
 }
 
 TEST_F(RunPartsTest, AMissingPartIsRefusedAtValidation) {

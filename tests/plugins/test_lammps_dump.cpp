@@ -270,12 +270,27 @@ TEST_F(LammpsDump, EachSnapshotIsAFrameSelectedAsTheH5mdSourceSelects) {
 TEST_F(LammpsDump, TheTimeIsItemTimeOrTheStepTimesDt) {
   const std::string text = snapshot(300, atoms(), kPlain);
   EXPECT_EQ(frame(text, {{"dt", 0.5}}).time, 150.0);
+  EXPECT_TRUE(harness_->logged_lines().empty());
+  // Neither: NaN in every time column of the results, said once with the cure.
+  EXPECT_TRUE(std::isnan(frame(text).time));
+  EXPECT_EQ(harness_->logged_lines(),
+            std::vector<std::string>{"warning: " + (dir_ / "atoms.dump").string() +
+                                     ": the dump has no ITEM: TIME and params.dt is 0: times are "
+                                     "undefined (NaN in the results); give the run's timestep as "
+                                     "params.dt"});
   // dump_modify units yes, time yes: ITEM: UNITS once, ITEM: TIME in every snapshot.
   EXPECT_EQ(frame("ITEM: UNITS\nlj\nITEM: TIME\n2.75\n" + text).time, 2.75);
   // A dt of 1e308 gave every frame the time inf, exit 0.
   EXPECT_EQ(refusal(text, {{"dt", 1e308}}),
             "params.dt: expected a time step whose product with the dump's TIMESTEP 300 is "
             "finite, got 1e+308");
+  // Times that ran down while the timesteps rose gave the intruder's lift-offs backwards,
+  // exit 0.
+  const std::string later = snapshot(400, atoms(), kPlain);
+  EXPECT_EQ(frames(write("ITEM: TIME\n2.75\n" + text + "ITEM: TIME\n2.75\n" + later)).size(), 2u);
+  EXPECT_EQ(refusal("ITEM: TIME\n2.75\n" + text + "ITEM: TIME\n2.5\n" + later),
+            "atoms.dump: timestep 400, line 16: expected a time at or after 2.75 (the snapshot "
+            "read before it), got 2.5");
 }
 
 TEST_F(LammpsDump, AGzipFileReadsAsThePlainOne) {
@@ -302,7 +317,7 @@ TEST_F(LammpsDump, AFileCutInsideItsLastSnapshotGivesTheCompleteOnesWithAWarning
   const std::string two = snapshot(0, atoms(), kPlain) + snapshot(10, atoms(), kPlain);
   const std::string third = snapshot(20, atoms(), kPlain);
   const fs::path file = write(two + third.substr(0, third.size() - 20));  // inside an atom line
-  EXPECT_EQ(frames(file).size(), 2u);
+  EXPECT_EQ(frames(file, {{"dt", 0.5}}).size(), 2u);
   const auto log = harness_->logged_lines();
   ASSERT_EQ(log.size(), 1u);
   EXPECT_NE(log[0].find(file.string() +

@@ -57,10 +57,12 @@ class LammpsDumpContacts : public ::testing::Test {
     std::ofstream(p, std::ios::binary) << content;
     return p.string();
   }
+  // (With the run's timestep: the frames have times, and the log no word about them.)
   nlohmann::json with_pairs(const std::string& pairs) {
     return {{"file", write(atom_snapshot(0) + atom_snapshot(100), "atoms.dump")},
             {"pair_file", write(pairs, "pairs.dump")},
-            {"pair_columns", "id force_normal delta"}};
+            {"pair_columns", "id force_normal delta"},
+            {"dt", 0.001}};
   }
   std::vector<Frame> frames(const nlohmann::json& params) {
     harness_ = test::make_context("lammps_dump", params);
@@ -341,10 +343,12 @@ TEST_F(LammpsDumpContacts, PositionsPrintedWithPercentGAreWarnedAbout) {
   // %.17g: a centre distance known to 4e-16, well within the tolerance.
   frames({{"file", write(header + "1 1 1.2345678901234567 5 2 0.5\n2 1 2.2345678901234567 5 2 "
                                   "0.5\n",
-                         "g17.dump")}});
+                         "g17.dump")},
+          {"dt", 0.001}});
   EXPECT_TRUE(harness_->logged_lines().empty());
   // %g: each coordinate within 5e-6 of the printed one, a centre within 8.7e-6.
-  frames({{"file", write(header + "1 1 1.23457 5 2 0.5\n2 1 2.23457 5 2 0.5\n", "g.dump")}});
+  frames({{"file", write(header + "1 1 1.23457 5 2 0.5\n2 1 2.23457 5 2 0.5\n", "g.dump")},
+          {"dt", 0.001}});
   const auto log = harness_->logged_lines();
   ASSERT_EQ(log.size(), 1u);
   EXPECT_NE(log[0].find("g.dump: positions printed to 6 significant digits: a centre distance "
