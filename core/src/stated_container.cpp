@@ -133,13 +133,12 @@ std::optional<StatedContainer::Outside> StatedContainer::first_outside(
   }
   // LAMMPS keeps atoms in its box only when it rebuilds its neighbour lists: a dump may
   // hold some a little outside. A radius beyond is far more than that.
-  Frame in_file_box = frame;
-  in_file_box.container = widened(file_box, frame.radius().maxCoeff());
-  const auto out = first_particle_outside(in_file_box, kStatedWallTolerance);
+  const Container in_file_box = widened(file_box, frame.radius().maxCoeff());
+  const auto out = first_particle_outside(frame, in_file_box, kStatedWallTolerance);
   if (!out) return {};
   return Outside{out->particle, atom(out->particle) +
-                                    describe(in_file_box, *out, kStatedWallTolerance) + " (" +
-                                    file_sides + ")"};
+                                    describe(frame, in_file_box, *out, kStatedWallTolerance) +
+                                    " (" + file_sides + ")"};
 }
 
 }  // namespace granpipe

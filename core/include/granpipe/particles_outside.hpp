@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "granpipe/container.hpp"
 #include "granpipe/frame.hpp"
 
 namespace granpipe {
@@ -29,6 +30,10 @@ struct ParticleOutside {
 // thrown above it is still in the container.
 std::optional<ParticleOutside> first_particle_outside(const Frame& frame, double tolerance,
                                                       bool open_sides_bound = true);
+// The same for the frame's particles in another container (a file's own box).
+std::optional<ParticleOutside> first_particle_outside(const Frame& frame,
+                                                      const Container& container, double tolerance,
+                                                      bool open_sides_bound = true);
 
 // How far particle k's surface lies from the wall w of the frame's container, where the
 // frame shows it (wall_offset included); negative where the particle presses into it.
@@ -38,5 +43,7 @@ double surface_gap(const Frame& frame, Eigen::Index k, Wall w);
 // (0, 0)) of at most 0.025 (0.05 of its radius), got 1.375": to follow the particle's name
 // in a one-line message.
 std::string describe(const Frame& frame, const ParticleOutside& outside, double tolerance);
+std::string describe(const Frame& frame, const Container& container, const ParticleOutside& outside,
+                     double tolerance);
 
 }  // namespace granpipe
