@@ -58,11 +58,11 @@ void check_container_values(const Container& c, int dim, const std::string& wher
   }
 }
 
-bool has_wall(const Container& c, Wall w) {
-  const bool cylinder = c.shape == ContainerShape::Cylinder;
+bool has_wall(const Container& c, int dim, Wall w) {
+  const bool cylinder = c.shape == ContainerShape::Cylinder && dim == 3;
   if (w == Wall::CylinderSide) return cylinder;
   const int axis = static_cast<int>(w) / 2, side = static_cast<int>(w) % 2;
-  if (cylinder && axis < 2) return false;
+  if (axis >= dim || (cylinder && axis < 2)) return false;
   return c.boundary[axis][side] == Boundary::Wall;
 }
 

@@ -73,7 +73,7 @@ void check_contacts(const Frame& f, const std::string& where) {
                        " and " + std::to_string(j[k]));
     }
     // A contact with a wall the container does not have was counted as a wall contact.
-    if (partner::is_wall(j[k]) && !has_wall(f.container, partner::wall_of(j[k]))) {
+    if (partner::is_wall(j[k]) && !has_wall(f.container, f.dim, partner::wall_of(j[k]))) {
       throw InputError(where + ": contact " + std::to_string(k) + ": expected a wall of the " +
                        to_string(f.container.shape) + " container as second partner, got " +
                        to_string(partner::wall_of(j[k])) + " (code " + std::to_string(j[k]) +

@@ -28,6 +28,11 @@ double centre_inside(const Frame& f, const Container& c, Eigen::Index k, Wall w)
   return (side == 0 ? 1.0 : -1.0) * (f.position()(k, axis) - c.wall_at(axis, side));
 }
 
+// How far particle k's surface lies from the wall w of container c.
+double gap_to(const Frame& f, const Container& c, Eigen::Index k, Wall w) {
+  return centre_inside(f, c, k, w) - f.radius()[k];
+}
+
 // How far particle k reaches beyond a side of c (a plane or the cylinder); > allowed means
 // outside.
 std::optional<ParticleOutside> beyond(const Frame& f, const Container& c, Eigen::Index k, Wall wall,
@@ -40,7 +45,7 @@ std::optional<ParticleOutside> beyond(const Frame& f, const Container& c, Eigen:
       return {};
     }
   }
-  const double overlap = f.radius()[k] - centre_inside(f, c, k, wall);
+  const double overlap = -gap_to(f, c, k, wall);
   if (overlap > tolerance * f.radius()[k]) return ParticleOutside{k, wall, overlap};
   return {};
 }
@@ -60,7 +65,7 @@ std::string where_is(const Container& c, Wall wall) {
 }  // namespace
 
 double surface_gap(const Frame& frame, Eigen::Index k, Wall w) {
-  return centre_inside(frame, frame.container, k, w) - frame.radius()[k];
+  return gap_to(frame, frame.container, k, w);
 }
 
 std::optional<ParticleOutside> first_particle_outside(const Frame& frame, double tolerance,

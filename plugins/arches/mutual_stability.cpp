@@ -33,7 +33,7 @@ void check_side(const IndexArray& side, const char* name, const Container& c,
     }
     // Side walls labelled in a box periodic along x made an arch "supported" at both ends
     // by walls that are not there (exit 0).
-    if (partner::is_wall(p) && !has_wall(c, partner::wall_of(p))) {
+    if (partner::is_wall(p) && !has_wall(c, 2, partner::wall_of(p))) {
       throw InputError(label(i) + "expected a support the container has, got " + std::to_string(p) +
                        " (wall " + to_string(partner::wall_of(p)) + "), a side it has none on");
     }

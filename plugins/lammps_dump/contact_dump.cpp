@@ -234,6 +234,25 @@ class PairLines {
   std::map<std::pair<std::int64_t, std::int64_t>, long> lines_;
 };
 
+// A wall line repeated word for word is one contact written twice (an atom touching a mesh
+// wall at two facets has two points of contact, and two lines that differ).
+class WallLines {
+ public:
+  void add(const Entry& e) {
+    std::string key;
+    for (const std::string_view w : e.words) key.append(w).push_back(' ');
+    const auto [first, added] = lines_.emplace(std::move(key), e.line);
+    if (added) return;
+    throw InputError(e.at() +
+                     "expected each wall contact once, got the same entry again (first "
+                     "on line " +
+                     std::to_string(first->second) + ")");
+  }
+
+ private:
+  std::map<std::string, long> lines_;
+};
+
 }  // namespace
 
 ContactDump::ContactDump(std::string path, ContactColumns columns, bool wall,
@@ -280,6 +299,7 @@ void ContactDump::read(const Frame& frame, const std::string& frame_place, doubl
     next_line_of(SnapshotPlace{path(), start.line_before + 1}, lines_, line);
     const SnapshotHeader h = read_header(path(), lines_, line, kLocalDump);
     PairLines pairs;
+    WallLines walls;
     for (std::int64_t k = 0; k < h.atoms; ++k) {
       next_line_of(h.place, lines_, line);
       split_words(line, words);
@@ -291,7 +311,11 @@ void ContactDump::read(const Frame& frame, const std::string& frame_place, doubl
       }
       rows.push_back(wall_ ? wall_row(e, columns_, frame, frame_place, rounding)
                            : pair_row(e, columns_, frame, frame_place, rounding));
-      if (!wall_) pairs.add(e, frame, rows.back());
+      if (wall_) {
+        walls.add(e);
+      } else {
+        pairs.add(e, frame, rows.back());
+      }
     }
   } catch (const SnapshotCut& cut) {
     throw InputError(path() + ": expected " + cut.place.name() +

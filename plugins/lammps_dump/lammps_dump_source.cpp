@@ -255,7 +255,7 @@ void LammpsDumpSource::check_time_follows(const Frame& f, const SnapshotHeader& 
                      format_number(last_time_) + " (the snapshot read before it), got " +
                      format_number(f.time));
   }
-  last_time_ = f.time;
+  if (!std::isnan(f.time)) last_time_ = f.time;
 }
 
 bool LammpsDumpSource::next(Frame& frame) {

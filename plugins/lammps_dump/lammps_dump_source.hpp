@@ -72,7 +72,8 @@ class LammpsDumpSource : public Source {
   long next_ = 0, read_ = 0;
   // Read when the source is made, so that bad atoms stop the pipeline before it runs.
   std::optional<Frame> first_frame_;
-  double last_time_ = std::numeric_limits<double>::quiet_NaN();  // of the snapshot read last
+  // The last defined time read (NaN: none yet).
+  double last_time_ = std::numeric_limits<double>::quiet_NaN();
 };
 
 }  // namespace granpipe::lammps_dump

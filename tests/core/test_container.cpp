@@ -96,15 +96,24 @@ TEST(ContainerCheck, ValuesMustBeFiniteAndInOrder) {
 TEST(ContainerCheck, WallsAreTheSolidSidesAndTheCylinder) {
   Container c = Container::open_top_box(3, Eigen::Vector3d::Zero(), Eigen::Vector3d(4, 4, 8));
   c.boundary[0] = {Boundary::Periodic, Boundary::Periodic};
-  EXPECT_FALSE(has_wall(c, Wall::XLow));
-  EXPECT_TRUE(has_wall(c, Wall::YHigh));
-  EXPECT_TRUE(has_wall(c, Wall::ZLow));
-  EXPECT_FALSE(has_wall(c, Wall::ZHigh));  // the open top
-  EXPECT_FALSE(has_wall(c, Wall::CylinderSide));
+  EXPECT_FALSE(has_wall(c, 3, Wall::XLow));
+  EXPECT_TRUE(has_wall(c, 3, Wall::YHigh));
+  EXPECT_TRUE(has_wall(c, 3, Wall::ZLow));
+  EXPECT_FALSE(has_wall(c, 3, Wall::ZHigh));  // the open top
+  EXPECT_FALSE(has_wall(c, 3, Wall::CylinderSide));
   c.shape = ContainerShape::Cylinder;
   c.cylinder_radius = 2.0;
-  EXPECT_TRUE(has_wall(c, Wall::CylinderSide));
-  EXPECT_FALSE(has_wall(c, Wall::YHigh));  // the cylinder's box only bounds its cell grid
+  EXPECT_TRUE(has_wall(c, 3, Wall::CylinderSide));
+  EXPECT_FALSE(has_wall(c, 3, Wall::YHigh));  // the cylinder's box only bounds its cell grid
+  // A 2D frame's z sides (walls in what disks2d_tap writes) are none: a contact with z_low
+  // was read, its particle's z read past the end of a table of two columns.
+  Container flat = Container::open_top_box(2, Eigen::Vector3d::Zero(), Eigen::Vector3d(4, 4, 0));
+  flat.boundary[2] = {Boundary::Wall, Boundary::Wall};
+  EXPECT_TRUE(has_wall(flat, 2, Wall::YLow));
+  EXPECT_FALSE(has_wall(flat, 2, Wall::ZLow));
+  flat.shape = ContainerShape::Cylinder;
+  flat.cylinder_radius = 2.0;
+  EXPECT_FALSE(has_wall(flat, 2, Wall::CylinderSide));
 }
 
 // A contact naming a wall the container does not have was counted as a wall contact, and
@@ -147,13 +156,15 @@ TEST(ContainerCheck, FramesRefuseAPairListedTwice) {
   EXPECT_EQ(test::input_error_of([&] { f.check("f"); }),
             "f: contacts 0 and 3: expected each pair of particles once, got 0 and 1 in both (a "
             "table listing each pair both ways?)");
-  // A simulator's own order, i < j increasing, takes a shortcut that must not pass a row
-  // repeated right after itself, nor one that goes back.
+  // A simulator's own order, (i, j) increasing with i < j (the dem source's, wall rows
+  // first), takes a shortcut that must not pass a row repeated right after itself, nor one
+  // that goes back.
+  const std::int64_t base = partner::wall(Wall::ZLow);
   contacts.column(0).as<IndexArray>() << 0, 0, 0, 1;
-  contacts.column(1).as<IndexArray>() << 1, partner::wall(Wall::ZLow), 2, 2;
+  contacts.column(1).as<IndexArray>() << base, 1, 2, 2;
   EXPECT_NO_THROW(f.check("f"));
   contacts.column(0).as<IndexArray>() << 0, 0, 1, 1;
-  contacts.column(1).as<IndexArray>() << 1, partner::wall(Wall::ZLow), 2, 2;
+  contacts.column(1).as<IndexArray>() << base, 1, 2, 2;
   EXPECT_EQ(test::input_error_of([&] { f.check("f"); }),
             "f: contacts 2 and 3: expected each pair of particles once, got 1 and 2 in both (a "
             "table listing each pair both ways?)");

@@ -10,7 +10,7 @@ namespace granpipe::test {
 // (the process id keeps two test programs run at once apart). Not created.
 std::filesystem::path fresh_path(const std::string& suite, const std::string& name);
 
-// The file's bytes; empty when it cannot be read (the comparison then fails).
+// The file's bytes; empty when it cannot be read.
 std::string read_file(const std::filesystem::path& file);
 
 }  // namespace granpipe::test

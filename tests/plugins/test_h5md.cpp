@@ -5,8 +5,10 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <optional>
 
 #include "granpipe/frame_store.hpp"
+#include "granpipe/property.hpp"
 #include "h5md_source.hpp"
 #include "plugin_harness.hpp"
 
@@ -209,8 +211,12 @@ TEST_F(H5mdSourceTest, AContactBetweenParticlesApartIsRefused) {
 // contacts, exit 0. In a box with a floor at y = 0 and a wall at x = 10 (offset by 0.25),
 // particle 0 rests on the floor and particle 1 touches nothing.
 TEST_F(H5mdSourceTest, AWallContactOfAParticleAwayFromTheWallIsRefused) {
-  const auto with_contact = [&](std::int64_t i, Wall wall) {
-    const fs::path p = dir_ / ("wall_contact_" + std::to_string(i) + to_string(wall) + ".h5");
+  // With a contact point, the wall was where the point says (a mesh, a moving base the
+  // stated container only approximates).
+  const auto with_contact = [&](std::int64_t i, Wall wall,
+                                std::optional<Eigen::Vector2d> point = std::nullopt) {
+    const fs::path p = dir_ / ("wall_contact_" + std::to_string(i) + to_string(wall) +
+                               (point ? "_point" + std::to_string((*point)[1]) : "") + ".h5");
     FrameWriter w(p, "{}");
     Frame f;
     f.resize(2, 2);
@@ -221,6 +227,10 @@ TEST_F(H5mdSourceTest, AWallContactOfAParticleAwayFromTheWallIsRefused) {
     f.add_contacts(1);
     f.contact_i()[0] = i;
     f.contact_j()[0] = partner::wall(wall);
+    if (point) {
+      f.contacts->add(*find_standard("point", Scope::Contact)).as<Coordinates>().row(0) =
+          point->transpose();
+    }
     w.append(f);
     w.close();
     return p;
@@ -238,6 +248,15 @@ TEST_F(H5mdSourceTest, AWallContactOfAParticleAwayFromTheWallIsRefused) {
             side.string() +
                 ": frame 0: contact 0: expected particle 1 (id 1) to touch the wall x_high, got "
                 "its surface 3.75 from it (more than its radius, 0.5)");
+  EXPECT_EQ(error_of([&] {
+              return source(with_contact(1, Wall::YLow, {{6.0, 3.0}}), 0, -1, 1);
+            }),
+            "(no InputError)");
+  const fs::path far = with_contact(1, Wall::YLow, {{6.0, 0.0}});
+  EXPECT_EQ(error_of([&] { return source(far, 0, -1, 1); }),
+            far.string() +
+                ": frame 0: contact 0: expected particle 1 (id 1) to touch the wall y_low, got "
+                "its surface 3 from the contact's point (more than its radius, 0.5)");
 }
 
 // The radius for files without one did nothing for a file with radii, without a word.

@@ -291,6 +291,11 @@ TEST_F(LammpsDump, TheTimeIsItemTimeOrTheStepTimesDt) {
   EXPECT_EQ(refusal("ITEM: TIME\n2.75\n" + text + "ITEM: TIME\n2.5\n" + later),
             "atoms.dump: timestep 400, line 16: expected a time at or after 2.75 (the snapshot "
             "read before it), got 2.5");
+  // A snapshot without a time (NaN) between them changes nothing.
+  EXPECT_EQ(refusal("ITEM: TIME\n2.75\n" + text + snapshot(350, atoms(), kPlain) +
+                    "ITEM: TIME\n2.5\n" + later),
+            "atoms.dump: timestep 400, line 29: expected a time at or after 2.75 (the snapshot "
+            "read before it), got 2.5");
 }
 
 TEST_F(LammpsDump, AGzipFileReadsAsThePlainOne) {

@@ -136,6 +136,18 @@ TEST_F(LammpsDumpContacts, WallEntriesGoToTheNearestStatedWall) {
   EXPECT_EQ(f[0].contacts->get<ValueTable<double>>("normal_force")(2, 2), 4.0);
   EXPECT_EQ(f[0].contacts->get<ValueTable<double>>("point")(2, 0), 6.0);
   EXPECT_EQ(f[0].contacts->get<Eigen::ArrayXd>("overlap")[2], 0.0);  // from the centre
+  // An atom touching a mesh wall at two facets has two entries, with two points; one entry
+  // written twice doubled the base contacts (exit 0).
+  const std::string two =
+      "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ENTRIES\n2\nITEM: BOX BOUNDS pp pp ff\n0 10\n0 10\n"
+      "0 10\nITEM: ENTRIES c_w[1] c_w[2] c_w[3] c_w[4] c_w[5] c_w[6] c_w[7] c_w[8] c_w[9] "
+      "c_w[10] c_w[11] c_w[12]\n6 5 0 6 5 0.5 0 0 10 0 0 4\n";
+  params["wall_file"] = write(two + "5.9 5 0 6 5 0.5 0 1 10 0 0 4\n" + no_walls, "facets.dump");
+  EXPECT_EQ(frames(params)[0].contacts->rows(), 4);
+  params["wall_file"] = write(two + "6 5 0 6 5 0.5 0 0 10 0 0 4\n" + no_walls, "twice.dump");
+  EXPECT_EQ(refusal(params),
+            "twice.dump: timestep 0, line 11: expected each wall contact once, got the same entry "
+            "again (first on line 10)");
 }
 
 // A wall file of another snapshot or run: an atom away from the wall the entry names, or an

@@ -517,8 +517,7 @@ TEST(Spheres3dTapSavedStart, AContainerOtherThanTheModelsIsRefused) {
   };
   EXPECT_EQ(read_saved_packing(start, walled, 2).centres.size(), 2u);
   const std::string expected =
-      "f: expected a box [0, 6]^2 with wall sides over a bottom wall at z = 0, open at the top, "
-      "at rest, got ";
+      "f: expected a box [0, 6]^2 with wall sides over a bottom wall at z = 0, at rest, got ";
   EXPECT_EQ(refusal([](Container& c) {
               c.shape = ContainerShape::Cylinder;
               c.cylinder_center = {3, 3};
@@ -531,8 +530,13 @@ TEST(Spheres3dTapSavedStart, AContainerOtherThanTheModelsIsRefused) {
               c.boundary[0] = {Boundary::Periodic, Boundary::Periodic};
             }),
             expected + "periodic at x_low");
-  EXPECT_EQ(refusal([](Container& c) { c.boundary[2][1] = Boundary::Wall; }),
-            expected + "wall at z_high");
+  EXPECT_EQ(refusal([](Container& c) { c.boundary[2][0] = Boundary::Open; }),
+            expected + "open at z_low");
+  EXPECT_EQ(refusal([](Container& c) { c.wall_velocity.z() = 0.5; }),
+            expected + "its walls moving at (0, 0, 0.5)");
+  // Another tool's H5MD file has a wall at the top (boundary "none"): no matter.
+  f.container.boundary[2][1] = Boundary::Wall;
+  EXPECT_EQ(read_saved_packing(start, walled, 2).centres.size(), 2u);
   EXPECT_EQ(refusal([](Container& c) { c.lo.z() = -1.0; }),
             expected + "[0, 6] x [0, 6] over a bottom at z = -1");
 }

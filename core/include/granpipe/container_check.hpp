@@ -15,9 +15,10 @@ namespace granpipe {
 // finite and > 0.
 void check_container_values(const Container& container, int dim, const std::string& where);
 
-// Whether `w` is a wall of the container: a solid side of a box, the z sides of a cylinder
-// container where solid, or its cylinder (the x and y sides of a cylinder container only
-// bound its cell grid).
-bool has_wall(const Container& container, Wall w);
+// Whether `w` is a wall of the container in `dim` dimensions: a solid side of a box along
+// its first dim axes (a 2D frame's z sides are none), the z sides of a cylinder container
+// where solid, or its cylinder (the x and y sides of a cylinder container only bound its
+// cell grid).
+bool has_wall(const Container& container, int dim, Wall w);
 
 }  // namespace granpipe
