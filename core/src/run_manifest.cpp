@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <regex>
 #include <set>
+#include <string>
 
 #include "granpipe/atomic_file.hpp"
 #include "granpipe/errors.hpp"
@@ -57,12 +59,34 @@ std::optional<std::set<std::string>> read_manifest(const fs::path& dir) {
   return names;
 }
 
-bool is_report(const fs::path& file) {
+// The first `bytes` bytes of a file (fewer when it is shorter or unreadable).
+std::string head_of(const fs::path& file, std::size_t bytes) {
   std::ifstream in(file, std::ios::binary);
-  std::string head(4096, '\0');
+  std::string head(bytes, '\0');
   in.read(head.data(), static_cast<std::streamsize>(head.size()));
   head.resize(static_cast<std::size_t>(in.gcount()));
-  return head.find(kReportMark) != std::string::npos;
+  return head;
+}
+
+bool is_report(const fs::path& file) {
+  return head_of(file, 4096).find(kReportMark) != std::string::npos;
+}
+
+// Whether a file named like one a run writes before it ends holds what granpipe writes
+// there: without a manifest (a run killed) the name alone let --overwrite remove a user's
+// notes saved as point_001/run.log, or a folder point_007 of their own holding one.
+bool holds_what_a_run_writes(const fs::path& file) {
+  const std::string name = file.filename().string();
+  if (name == "run.log") return head_of(file, 9) == "granpipe ";  // its provenance line
+  if (name == "frames.partial.h5" || name == "results.partial.h5")
+    return head_of(file, 8) == "\x89HDF\r\n\x1a\n";
+  if (name == "pipeline.json") {
+    const auto j = nlohmann::json::parse(head_of(file, std::size_t{64} << 20), nullptr, false);
+    return j.is_object() && j.contains("source") && j["source"].is_object() &&
+           j["source"].contains("plugin");
+  }
+  if (name == "report.html") return is_report(file);
+  return name == kRunMarkerName;  // read and checked as a marker already
 }
 
 const std::regex& point_folder() {
@@ -84,14 +108,16 @@ bool where_a_run_writes(const Entry& e) {
   return parent.empty() || std::regex_match(parent, point_folder());
 }
 
-// For a run without a manifest: what any run writes before it ends.
+// For a run without a manifest: what any run writes before it ends, where it writes it,
+// holding what it writes.
 bool written_before_the_end(const Entry& e) {
   static const std::set<std::string> files{kRunMarkerName, "pipeline.json", "run.log",
                                            "frames.partial.h5", "results.partial.h5"};
   if (!where_a_run_writes(e)) return false;
+  if (e.directory) return true;
   const fs::path name = bare_name(e);
-  if (e.directory || files.count(name.filename().string())) return true;
-  return name == "report.html" && is_report(e.path);
+  const bool named = files.count(name.filename().string()) > 0 || name == "report.html";
+  return named && holds_what_a_run_writes(e.path);
 }
 
 // The core's own files, the point folders, and what the run's plugins recorded

@@ -145,6 +145,16 @@ fs::path only_sibling(const fs::path& out) {
   return found;
 }
 
+// A run's folder as the run leaves it when killed at the start: its marker, pipeline.json
+// and run.log, no manifest.
+void leave_as_killed(const fs::path& dir) {
+  for (const auto& e : fs::directory_iterator(dir)) {
+    const std::string name = e.path().filename().string();
+    if (name != ".granpipe-run" && name != "pipeline.json" && name != "run.log")
+      fs::remove(e.path());
+  }
+}
+
 bool marked(const fs::path& dir, const std::string& status) {
   return read_file(dir / ".granpipe-run").find("\"status\":\"" + status + "\"") !=
          std::string::npos;
@@ -362,17 +372,36 @@ TEST(OutputDirectory, AKilledRunWithoutManifestLosesOnlyWhatEveryRunWritesFirst)
       << refusal;
   EXPECT_EQ(refusal.find("pipeline.json"), std::string::npos) << refusal;
   EXPECT_EQ(refusal.find("run.log"), std::string::npos) << refusal;
-  for (const auto& e : fs::directory_iterator(out)) {
-    const std::string name = e.path().filename().string();
-    if (name != ".granpipe-run" && name != "pipeline.json" && name != "run.log")
-      fs::remove(e.path());
-  }
-  std::ofstream(out / "frames.partial.h5") << "frames so far";
+  leave_as_killed(out);
+  std::ofstream(out / "frames.partial.h5") << "\x89HDF\r\n\x1a\n frames so far";
   std::ofstream(out / "report.html") << "<p>my own report</p>";
   EXPECT_NE(run(kLattice, out, true).find("also holds report.html (its run left no list"),
             std::string::npos);
   std::ofstream(out / "report.html") << "<meta name=generator content=\"granpipe report\">";
   EXPECT_EQ(run(kLattice, out, true), "");
+  fs::remove_all(out);
+}
+
+// Named like them is not enough: a user's notes saved as run.log in a folder point_007 of
+// their own (or a pipeline.json, a frames.partial.h5) in a killed run's folder went with
+// --overwrite.
+TEST(OutputDirectory, AKilledRunsFilesAreKnownByWhatTheyHoldNotByTheirNames) {
+  const fs::path out = fresh_dir("killed_named");
+  ASSERT_EQ(run(kLattice, out), "");
+  leave_as_killed(out);
+  fs::create_directory(out / "point_007");
+  for (const char* name : {"run.log", "pipeline.json", "frames.partial.h5"}) {
+    std::ofstream(out / "point_007" / name) << "my notes";
+    const std::string refusal = run(kLattice, out, true);
+    EXPECT_NE(refusal.find(std::string("also holds point_007/") + name + " (its run left no list"),
+              std::string::npos)
+        << refusal;
+    fs::remove(out / "point_007" / name);
+  }
+  std::ofstream(out / "point_007" / "pipeline.json") << "{}";
+  EXPECT_NE(run(kLattice, out, true).find("also holds point_007/pipeline.json"), std::string::npos);
+  fs::remove(out / "point_007" / "pipeline.json");
+  EXPECT_EQ(run(kLattice, out, true), "");  // the run's own, and an empty point folder
   fs::remove_all(out);
 }
 
