@@ -7,6 +7,7 @@
 #include <regex>
 #include <set>
 #include <string>
+#include <string_view>
 
 #include "granpipe/atomic_file.hpp"
 #include "granpipe/errors.hpp"
@@ -72,14 +73,20 @@ bool is_report(const fs::path& file) {
   return head_of(file, 4096).find(kReportMark) != std::string::npos;
 }
 
+// Whether the file starts as `start` does, or with a piece of it (a disk that filled up
+// left a log empty).
+bool starts_as(const fs::path& file, std::string_view start) {
+  return start.rfind(head_of(file, start.size()), 0) == 0;
+}
+
 // Whether a file named like one a run writes before it ends holds what granpipe writes
 // there: without a manifest (a run killed) the name alone let --overwrite remove a user's
 // notes saved as point_001/run.log, or a folder point_007 of their own holding one.
 bool holds_what_a_run_writes(const fs::path& file) {
   const std::string name = file.filename().string();
-  if (name == "run.log") return head_of(file, 9) == "granpipe ";  // its provenance line
+  if (name == "run.log") return starts_as(file, "granpipe ");  // its provenance line
   if (name == "frames.partial.h5" || name == "results.partial.h5")
-    return head_of(file, 8) == "\x89HDF\r\n\x1a\n";
+    return starts_as(file, std::string_view("\x89HDF\r\n\x1a\n", 8));
   if (name == "pipeline.json") {
     const auto j = nlohmann::json::parse(head_of(file, std::size_t{64} << 20), nullptr, false);
     return j.is_object() && j.contains("source") && j["source"].is_object() &&
