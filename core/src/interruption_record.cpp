@@ -1,10 +1,12 @@
 #include "interruption_record.hpp"
 
 #include <fcntl.h>
+#include <time.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <csignal>
+#include <cstdint>
 
 #include "run_marker.hpp"
 
@@ -21,10 +23,22 @@ struct Prepared {
   bool handled[2] = {false, false};
 };
 
-std::atomic<bool> taken{false};         // by a live InterruptionRecord
-std::atomic<Prepared*> armed{nullptr};  // set once everything is prepared
-std::atomic<int> requested{0};          // the signal that asked the run to stop
+std::atomic<bool> taken{false};             // by a live InterruptionRecord
+std::atomic<Prepared*> armed{nullptr};      // set once everything is prepared
+std::atomic<int> requested{0};              // the signal that asked the run to stop
+std::atomic<std::int64_t> requested_at{0};  // when, in ns of CLOCK_MONOTONIC
 Prepared prepared;
+
+// A signal within this time of the first is the same request sent twice: timeout(1) sends
+// SIGTERM to the run and then to its process group, and as a second signal it ended the run
+// at once, its partial files left open for writing (h5py could not open them).
+constexpr std::int64_t kSameRequestNs = 500'000'000;
+
+std::int64_t monotonic_ns() {
+  timespec t{};
+  clock_gettime(CLOCK_MONOTONIC, &t);  // async-signal-safe
+  return std::int64_t{t.tv_sec} * 1'000'000'000 + t.tv_nsec;
+}
 
 void write_all(int fd, const std::string& text) {
   const char* p = text.data();
@@ -39,6 +53,14 @@ void write_all(int fd, const std::string& text) {
 
 extern "C" void record_and_request_stop(int sig) {
   const int k = sig == SIGINT ? 0 : 1;
+  const std::int64_t now = monotonic_ns();
+  if (armed.load() && requested.load() != 0) {
+    if (now - requested_at.load() < kSameRequestNs) return;
+    // A second request: the action from before (the default: end at once).
+    sigaction(sig, &prepared.previous[k], nullptr);
+    raise(sig);
+    return;
+  }
   if (const Prepared* p = armed.load()) {
     write_all(p->log_fd, p->log_line[k]);
     // Markers all have one size: the new status overwrites the old in place.
@@ -49,12 +71,12 @@ extern "C" void record_and_request_stop(int sig) {
     }
     write_all(STDERR_FILENO, p->stderr_line[k]);
   }
-  // The action from before takes over for a second signal, as for one that came while
-  // nothing was armed (then at once).
-  sigaction(sig, &prepared.previous[k], nullptr);
   if (armed.load()) {
+    requested_at = now;
     requested = sig;
   } else {
+    // Nothing armed: the action from before, at once.
+    sigaction(sig, &prepared.previous[k], nullptr);
     raise(sig);
   }
 }

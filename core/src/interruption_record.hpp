@@ -11,7 +11,9 @@ namespace granpipe {
 // for it after each frame (plugins in their long loops: stop_request.hpp), unwinds (closing
 // frames.partial.h5, so that it opens
 // without SWMR) and calls end_by_signal(), which ends the process as the signal would
-// have, so its exit status still names it. A second signal acts at once, as before. One
+// have, so its exit status still names it. A second signal acts at once, as before, unless
+// it comes within half a second of the first (the same request sent twice, as timeout(1)
+// does). One
 // run per process is recorded. Only what is async-signal-safe happens in the handler:
 // everything it writes is prepared here.
 class InterruptionRecord {
