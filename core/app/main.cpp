@@ -66,9 +66,15 @@ void check_run_directory(const std::string& dir) {
 }
 
 // --out "": an empty path meant the pipeline's own output directory, which --overwrite
-// then replaced.
+// then replaced. --out --no-report took the next option as the folder's name, and left the
+// report written into ./--no-report.
 std::string check_out(const std::string& text) {
-  return text.empty() ? "expected a directory path, got \"\"" : "";
+  if (text.empty()) return "expected a directory path, got \"\"";
+  if (text[0] == '-') {
+    return "expected a directory path, got \"" + text + "\", an option (a folder named so: ./" +
+           text + ")";
+  }
+  return "";
 }
 
 bool is_subcommand(const char* arg) {
