@@ -78,6 +78,23 @@ Override apply_set(json& root, const std::string& assignment) {
   return {target.path, where};
 }
 
+// Two --set of one value (or of a value and what holds it) ran with whichever came last,
+// without a word, where a sweep refuses the same: a script adding its --set to a user's
+// ran with the script's.
+void refuse_sets_of_one_value(const std::vector<Override>& sets) {
+  for (std::size_t b = 1; b < sets.size(); ++b) {
+    for (std::size_t a = 0; a < b; ++a) {
+      const std::string &first = sets[a].path, &second = sets[b].path;
+      if (!covers(first, second) && !covers(second, first)) continue;
+      const std::string what = first == second         ? second
+                               : covers(first, second) ? second + ", inside " + first
+                                                       : second + ", which holds " + first;
+      throw InputError(sets[b].origin + ": expected a value no other --set gives, got " + what +
+                       ", which " + sets[a].origin + " sets too");
+    }
+  }
+}
+
 // A --set of a parameter the sweep sets at every point was dropped without a word (the run
 // went on with the sweep's values, the pipeline.json recording none of the --set's).
 void refuse_sets_the_sweep_replaces(const std::vector<Override>& sets,
@@ -218,6 +235,7 @@ Pipeline Pipeline::parse(const std::string& text, const std::string& origin,
   auto impl = std::make_unique<Impl>();
   impl->origin = origin;
   for (const auto& s : sets) impl->overrides.push_back(apply_set(root, s));
+  refuse_sets_of_one_value(impl->overrides);
   const JsonLocation top = impl->top();
   check_keys(root,
              {"name", "description", "seed", "source", "analyzers", "writers", "output", "sweep",

@@ -350,6 +350,13 @@ TEST(PipelineErrors, SetOverridesAreValidatedToo) {
       "--set source.params.n=5: expected a value the sweep leaves alone, got source.params.n, "
       "which the sweep sets at every point; give the sweep the values instead: --set "
       "'sweep.parameters.source.params.n=[...]'");
+  // Two --set of one value ran with the last, without a word (a script's after a user's).
+  EXPECT_EQ(error_of(kGood, {"source.params.n=5", "source.params.n=6"}),
+            "--set source.params.n=6: expected a value no other --set gives, got "
+            "source.params.n, which --set source.params.n=5 sets too");
+  EXPECT_EQ(error_of(kGood, {"source.params.n=5", R"(source.params={"n": 6})"}),
+            R"(--set source.params={"n": 6}: expected a value no other --set gives, got )"
+            "source.params, which holds source.params.n, which --set source.params.n=5 sets too");
 }
 
 // A --set that put a non-object where a sweep assigns into it was blamed on the sweep
