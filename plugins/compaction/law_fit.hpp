@@ -8,6 +8,7 @@
 // of y. Successive frames of one run are correlated: the errors are those of independent
 // points.
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -19,8 +20,9 @@ namespace granpipe::compaction {
 struct LawFit {
   CurveFitStatus status = CurveFitStatus::TooFewPoints;
   std::vector<double> value, error;  // in Law::names order, tau itself; NaN when not fitted
-  double scatter = 0.0;              // s, the points' spread about the law
-  double chi2 = 0.0;
+  // s, the points' spread about the law, and chi^2: NaN when not fitted.
+  double scatter = std::numeric_limits<double>::quiet_NaN();
+  double chi2 = std::numeric_limits<double>::quiet_NaN();
   int dof = 0;
   bool fitted() const { return status == CurveFitStatus::Fitted; }
 };

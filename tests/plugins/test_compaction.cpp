@@ -368,6 +368,7 @@ TEST(Compaction, AShortRunReportsUndefinedFitsNotZeros) {
   EXPECT_EQ(r.tables().at("per_frame").rows(), 3u);
   EXPECT_EQ(r.scalar("eq3_phi_b_status").value, 1.0);  // too few points
   for (double v : r.fits().at("eq3_phi_b").values) EXPECT_TRUE(std::isnan(v));
+  EXPECT_TRUE(std::isnan(r.fits().at("eq3_phi_b").chi2));  // 0 read as a perfect fit
   const Table& curves = r.tables().at("fitted_laws");
   ASSERT_EQ(curves.rows(), 3u);
   for (double v : curves.column("phi_b_eq3")) EXPECT_TRUE(std::isnan(v));  // drawn as nothing

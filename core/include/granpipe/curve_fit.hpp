@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -36,7 +37,9 @@ struct CurveFit {
   CurveFitStatus status = CurveFitStatus::TooFewPoints;
   Eigen::VectorXd value, error;  // NaN when not fitted: undefined, not zero
   Eigen::MatrixXd covariance;    // scaled as the errors are; empty when not fitted
-  double chi2 = 0.0;
+  // NaN when not fitted: a failed fit's chi^2 of 0 read as a perfect one (the report: "chi^2
+  // = 0, 37 degrees of freedom").
+  double chi2 = std::numeric_limits<double>::quiet_NaN();
   int dof = 0;
   bool fitted() const { return status == CurveFitStatus::Fitted; }
 };
