@@ -131,9 +131,13 @@ Schema schema() {
   // Narrower than two diameters, the box holds a column: a sphere may touch two images of
   // one sphere, or be wedged between a sphere and the far wall, which the deposition's roll
   // geometry does not model (it left overlapping spheres, or one through a wall, exit 0).
+  // At exactly two diameters a sphere touches one neighbour on both sides, a pair no contact
+  // table holds once: the analyzers' neighbour search refused such a box after the
+  // deposition, though validation had passed it.
   s.real("side", 32.0,
-         "side L of the square box, in units of R (the paper's 32); at least two diameters")
-      .range(4.0, 1e4);
+         "side L of the square box, in units of R (the paper's 32); at least 4.1, a little more "
+         "than two diameters")
+      .range(4.1, 1e4);
   s.choice<Sides>("sides", Sides::Periodic,
                   "lateral sides: periodic (P.B.C.) or fixed walls (F.B.C.); the paper's initial "
                   "packing fraction 58.4 % is the periodic deposition's");
