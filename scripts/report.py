@@ -68,13 +68,13 @@ def histogram_section(name, group):
 SECTIONS = {"fit": fit_section, "histogram": histogram_section}
 
 
-def producer_section(plt, path, group, paper):
+def producer_section(plt, path, group, paper, partial):
     parts = [f"<h3 id=\"{html.escape(path)}\">{html.escape(path)}</h3>",
              plots_section(plt, [("", group)], path, paper), scalars_section(group)]
     for name, item in members(group):
         kind = attr_text(item, "kind", "")
         if kind == "table":
-            parts.append(table_section(path, name, item))
+            parts.append(table_section(path, name, item, partial=partial))
         elif kind in SECTIONS:
             parts.append(SECTIONS[kind](name, member(group, name, "group")))
     return "".join(parts)
@@ -202,7 +202,7 @@ def report_body(run, pipeline_text, pipeline, results, partial, note, plt):
         if "sweep" in results:
             parts.append(sweep_section(plt, results, pipeline, paper))
         else:
-            parts += [producer_section(plt, name, producer(results, name), paper)
+            parts += [producer_section(plt, name, producer(results, name), paper, partial)
                       for name in results]
         if plt is not None:
             parts.append(paper.notes())

@@ -34,13 +34,17 @@ def html_table(header, rows):
     return f"<table>{f'<tr>{head}</tr>' if head else ''}{body}</table>"
 
 
-def table_section(producer, name, group, rows_shown=TABLE_ROWS_SHOWN):
+def table_section(producer, name, group, rows_shown=TABLE_ROWS_SHOWN, partial=False):
+    """A table's first rows; the rest in its CSV, which a run writes when it ends (a partial
+    run's report linked CSVs that were not there)."""
     columns, units, data = read_table(group)
     n = len(data[columns[0]]) if columns else 0
     header = [f"{c} ({u})" if u else c for c, u in zip(columns, units)]
     rows = [[number(data[c][r]) for c in columns] for r in range(min(n, rows_shown))]
     csv = html.escape(csv_name(producer, name))  # names from the file: no markup of theirs
-    more = (f" — the first {rows_shown} of {n} rows; every row in <a href=\"{csv}\">{csv}</a>"
+    where = ("results.partial.h5 (the CSVs are written when the run ends)" if partial
+             else f"<a href=\"{csv}\">{csv}</a>")
+    more = (f" — the first {rows_shown} of {n} rows; every row in {where}"
             if n > rows_shown else f" — {n} rows")
     return (f"<h4>table {html.escape(name)}</h4><p>{html.escape(attr_text(group, 'doc'))}{more}"
             f"</p>" + html_table(header, rows))

@@ -62,6 +62,20 @@ PY
     -- "$exe" "$long" --quiet --out "$out"
 done
 
+# The report of a stopped run linked the CSVs of its long tables, which a run writes only
+# when it ends.
+out=$work/reported
+start_long "$out"
+sleep 1  # hundreds of frames: more rows than the report shows
+stop TERM 143
+"$exe" report "$out" 2>/dev/null
+grep -q 'every row in results.partial.h5 (the CSVs are written when the run ends)' "$out/report.html" ||
+  { echo "FAIL: the report of a stopped run does not say where its long tables are"; exit 1; }
+if grep -q 'href="packing.per_frame.csv"' "$out/report.html"; then
+  echo "FAIL: the report of a stopped run links a CSV the run did not write"
+  exit 1
+fi
+
 out=$work/killed
 start_long "$out"
 stop KILL 137
