@@ -132,9 +132,18 @@ bool Element::map_by_step(const std::vector<std::int64_t>& frame_steps) {
     rows_.clear();
     return true;
   }
+  // H5MD steps rise: of a step written twice the second sample was left unread without a
+  // word, and steps out of order were called a clock that misses some.
+  const auto back = std::adjacent_find(first, last, std::greater_equal<>());
+  if (back != last) {
+    const std::string group =
+        data_path_.substr(0, data_path_.size() - std::string("/value").size());
+    throw Error(group + "/step: expected rising steps, got " + std::to_string(back[1]) +
+                " at sample " + std::to_string(back - first + 1) + " after " +
+                std::to_string(back[0]));
+  }
   std::vector<hsize_t> rows;
   for (std::int64_t s : frame_steps) {
-    // H5MD steps increase monotonically.
     auto it = std::lower_bound(first, last, s);
     if (it == last || *it != s) return false;
     rows.push_back(static_cast<hsize_t>(it - first));

@@ -451,6 +451,28 @@ TEST_F(FrameStore, ARadiusIdOrSpeciesMissingAtSomeStepsIsRefused) {
   }
 }
 
+// Of a radius written twice at one step the second sample was left unread without a word,
+// and steps out of order were called a clock that misses some.
+TEST_F(FrameStore, AnElementWhoseStepsDoNotRiseIsRefused) {
+  const std::vector<std::vector<std::int64_t>> clocks{{10, 20, 20, 30}, {10, 30, 20, 40}};
+  for (std::size_t c = 0; c < clocks.size(); ++c) {
+    const fs::path p = file("steps_" + std::to_string(c) + ".h5");
+    write_foreign(p, false);
+    {
+      Id f(H5Fopen(p.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
+      Id atoms(H5Gopen2(f, "particles/atoms", H5P_DEFAULT));
+      Id element(make_group(atoms, "radius"));
+      const double values[4][4] = {{1, 1, 1, 1}, {1, 1, 1, 1}, {2, 2, 2, 2}, {1, 1, 1, 1}};
+      put_dataset(element, "value", H5T_NATIVE_DOUBLE, {4, 4}, values);
+      put_dataset(element, "step", H5T_NATIVE_INT64, {4}, clocks[c].data());
+    }
+    EXPECT_EQ(reader_error(p), c == 0 ? "/particles/atoms/radius/step: expected rising steps, got "
+                                        "20 at sample 2 after 20"
+                                      : "/particles/atoms/radius/step: expected rising steps, got "
+                                        "20 at sample 2 after 30");
+  }
+}
+
 // A radius linked to nothing (a soft link to a removed object, an external link to a
 // missing file) read as no radius: the default radius stood for the file's, exit 0.
 TEST_F(FrameStore, ALinkThatLeadsNowhereIsRefused) {
