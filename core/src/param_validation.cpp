@@ -119,10 +119,7 @@ nlohmann::json to_json(const ParamValue& v) {
       v);
 }
 
-namespace {
-
-// Why a whole number is no integer parameter: "expected an integer >= 1, got 1e+19" left the
-// reader to guess.
+// "expected an integer >= 1, got 1e+19" left the reader to guess.
 std::string why_not_integer(const nlohmann::json& v) {
   if (v.is_number_unsigned() &&
       v.get<std::uint64_t>() > std::uint64_t{std::numeric_limits<std::int64_t>::max()})
@@ -134,6 +131,8 @@ std::string why_not_integer(const nlohmann::json& v) {
                "write larger ones in digits)"
              : "";
 }
+
+namespace {
 
 // key_str: a --set of one entry of a list (cells[1]=0) is named, not the file.
 [[noreturn]] void fail(const JsonLocation& at, const ParamSpec& spec, const nlohmann::json& got) {

@@ -44,6 +44,8 @@ std::string located_message(const JsonLocation& top, const std::string& message)
 // JSON numbers that are whole (5 or 5.0, 1e3) are integers; 5.5 and 1e30 (beyond the
 // doubles that hold every integer) are not.
 bool as_integer(const nlohmann::json& v, std::int64_t& out);
+// Why a whole number is no integer, to follow "got ...": " (beyond 2^63 - 1, ...)", or "".
+std::string why_not_integer(const nlohmann::json& v);
 
 // Short rendering of a JSON value for "got ..." (strings quoted, long values cut).
 std::string json_brief(const nlohmann::json& v);

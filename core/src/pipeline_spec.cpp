@@ -280,13 +280,14 @@ Pipeline Pipeline::parse(const std::string& text, const std::string& origin,
   if (out.contains("save_frames") && !out["save_frames"].is_boolean())
     throw InputError(out_at.child("save_frames").str() + ": expected true or false, got " +
                      json_brief(out["save_frames"]));
-  if (out.contains("frame_stride") &&
-      (!out["frame_stride"].is_number_integer() || out["frame_stride"].get<std::int64_t>() < 1))
+  // As plugins' integers are read: 1e3 is 1000, 2^63 is too large (it wrapped below 1).
+  std::int64_t stride = 1;
+  if (out.contains("frame_stride") && (!as_integer(out["frame_stride"], stride) || stride < 1))
     throw InputError(out_at.child("frame_stride").str() + ": expected an integer >= 1, got " +
-                     json_brief(out["frame_stride"]));
+                     json_brief(out["frame_stride"]) + why_not_integer(out["frame_stride"]));
   impl->output_dir = out.value("dir", "out/" + impl->name);
   impl->save_frames = out.value("save_frames", true);
-  impl->frame_stride = out.value("frame_stride", std::int64_t{1});
+  impl->frame_stride = stride;
   out["dir"] = impl->output_dir.string();
   out["save_frames"] = impl->save_frames;
   out["frame_stride"] = impl->frame_stride;

@@ -162,6 +162,15 @@ TEST(PipelineErrors, ANulByteIsRefusedWhereItIs) {
             "p.json:1:12: malformed JSON: expected text, got a NUL byte (is it a binary file?)");
 }
 
+// A frame_stride of 2^63 wrapped below 1 and was called no integer; 1e3 was refused, though
+// plugins take it as 1000.
+TEST(PipelineErrors, FrameStrideIsReadAsPluginsReadIntegers) {
+  EXPECT_EQ(error_of(kGood, {"output.frame_stride=9223372036854775808"}),
+            "--set output.frame_stride=9223372036854775808: expected an integer >= 1, got "
+            "9223372036854775808 (beyond 2^63 - 1, the largest integer)");
+  EXPECT_EQ(error_of(kGood, {"output.frame_stride=1e3"}), "no error");
+}
+
 // A \u0000 in a string cut a file name short where it was opened (the file before the
 // NUL was read, the pipeline recording the whole name) and an output folder's message.
 TEST(PipelineErrors, AnEscapedNulInAStringIsRefusedWhereItIs) {
