@@ -335,7 +335,8 @@ std::vector<InputFile> input_files(const Pipeline::Impl& p) {
   auto add = [&](const Schema& schema, const Params& params, const std::string& at) {
     for (const ParamSpec& s : schema.specs()) {
       if (!params.has(s.name)) continue;
-      const std::string where = p.origin + ": " + at + "." + s.name;
+      // A --set of the path is named, not the file that no longer says it.
+      const std::string where = JsonLocation{p.origin, at + "." + s.name, &p.overrides}.str();
       if (s.type == ParamType::Path) files.push_back({where, params.string(s.name)});
       if (s.type != ParamType::PathList) continue;
       const std::vector<std::string>& list = params.paths(s.name);

@@ -62,6 +62,10 @@ JSON
   -- "$exe" "$work/reprocess.json" --quiet --out "$work/earlier" --overwrite
 "$expect" 2 "reprocess\.json: source\.params\.file: expected a file outside the output directory $work/earlier/point_000, " \
   -- "$exe" "$work/reprocess.json" --quiet --out "$work/earlier/point_000" --overwrite
+# Given by --set, the --set is named (the file's own path was).
+"$expect" 2 "^granpipe: --set source\.params\.file=[^:]*: expected a file outside the output directory $work/earlier, " \
+  -- "$exe" "$work/reprocess.json" --quiet --out "$work/earlier" --overwrite \
+  --set "source.params.file=$work/earlier/point_000/frames.h5"
 cp "$work/reprocess.json" "$work/earlier/reprocess.json"
 "$expect" 2 "earlier/reprocess\.json: expected a file outside the output directory $work/earlier, got \"$work/earlier/reprocess\.json\" inside it" \
   -- "$exe" "$work/earlier/reprocess.json" --quiet --out "$work/earlier" --overwrite
