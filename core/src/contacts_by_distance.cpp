@@ -3,10 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 #include "granpipe/cell_list.hpp"
+#include "granpipe/coordinate_spacing.hpp"
 #include "granpipe/errors.hpp"
+#include "granpipe/format_number.hpp"
 
 namespace granpipe {
 namespace {
@@ -114,6 +117,20 @@ DistanceContacts find_contacts_by_distance(const Frame& frame, double tolerance,
     }
   }
   return out;
+}
+
+std::string coarse_for_contacts(const Frame& frame, double tolerance) {
+  if (frame.size() == 0) return "";
+  const double farthest = largest_coordinate(frame);
+  const double rounding = double_spacing(farthest);
+  const double contact = 2.0 * frame.radius().minCoeff();
+  // Two centres each off by up to a spacing per coordinate.
+  if (!(2.0 * rounding > tolerance * contact)) return "";
+  return "positions up to " + format_number(farthest) + " from the origin are rounded to " +
+         format_number(rounding) + ", more than half of contact_tolerance x the smallest " +
+         "contact distance (" + format_number(tolerance * contact) +
+         "): touching particles may be missed; raise contact_tolerance to " +
+         format_number(4.0 * rounding / contact) + " or move the origin into the packing";
 }
 
 std::string contacts_by_distance_key(double tolerance) {

@@ -97,6 +97,10 @@ void ArchesAnalyzer::consume(const Frame& frame, FrameCache& cache) {
     return;
   }
   ++measured_frames_;
+  if (coarse_.pending()) {
+    const std::string why = coarse_for_contacts(frame, tolerance_);
+    if (!why.empty()) coarse_.warn(log_, where + ": " + why);
+  }
   const double disks = static_cast<double>(n);
 
   const std::vector<Arch> arches = find_arches(frame, where);

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "granpipe/log.hpp"
 #include "granpipe/plugin.hpp"
 #include "granpipe/ramp_means.hpp"
 #include "mutual_stability.hpp"
@@ -32,6 +33,7 @@ class ArchesAnalyzer : public Analyzer {
   OutputFiles files_;       // arches_<tap>.svg, under the analyzer's name in the pipeline
   std::string provenance_;  // the run's, for the pictures
   double tolerance_;
+  FirstFrameWarning coarse_;  // positions rounded coarser than the contact tolerance
   double span_bin_;
   long svg_frames_;
 

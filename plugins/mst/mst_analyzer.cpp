@@ -113,6 +113,10 @@ void MstAnalyzer::publish(PropertyTable& columns) {
 
 void MstAnalyzer::consume(const Frame& frame, FrameCache& cache) {
   const std::string where = "frame " + std::to_string(frames_);
+  if (!frame.contacts && coarse_.pending()) {
+    const std::string why = coarse_for_contacts(frame, options_.contacts.tolerance);
+    if (!why.empty()) coarse_.warn(log_, "mst: " + where + ": " + why);
+  }
   const TcpReport r = tcp_report(frame, cache, options_, where);
   if (r.unproven > 0 && !warned_inexact_) {
     warned_inexact_ = true;

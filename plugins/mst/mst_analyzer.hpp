@@ -32,6 +32,7 @@ class MstAnalyzer : public Analyzer {
   long frames_with_table_ = 0;  // frames whose contact table gave the contacts
   bool warned_inexact_ = false;
   FirstFrameWarning no_contacts_;
+  FirstFrameWarning coarse_;  // contacts by distance from positions rounded coarser than that
   StreamedTable per_frame_;
   // Table II of the frame with the most loaded pair contacts (the first of equals).
   MostLoadedFrame chosen_;

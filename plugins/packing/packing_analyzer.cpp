@@ -214,6 +214,10 @@ void PackingAnalyzer::consume(const Frame& frame, FrameCache& cache) {
     return;
   }
   dim_ = frame.dim;
+  if (coarse_.pending()) {
+    const std::string why = coarse_for_contacts(frame, settings_.tolerance);
+    if (!why.empty()) coarse_.warn(log_, "packing: " + frame_name(frame) + ": " + why);
+  }
   const PackingMeasurement m = measure_packing(frame, cache, settings_);
   const DistanceContacts& contacts = contacts_by_distance(frame, cache, settings_.tolerance);
   coordination_ = contacts.coordination(frame.size(), false);

@@ -87,6 +87,7 @@ class PackingAnalyzer : public Analyzer {
   long frames_ = 0, skipped_ = 0;
   FirstFrameWarning centreless_;
   FirstFrameWarning untouching_;  // frames of several particles without one contact
+  FirstFrameWarning coarse_;      // positions rounded coarser than the contact tolerance
   RunningMean phi_, density_, z_, z_walls_, phi_cuts_;
   RampMeans by_ramp_{{"phi", "z_mean"}};
   StreamedTable per_frame_;
