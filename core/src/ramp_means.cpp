@@ -1,5 +1,6 @@
 #include "granpipe/ramp_means.hpp"
 
+#include <cmath>
 #include <optional>
 
 #include "granpipe/errors.hpp"
@@ -17,9 +18,11 @@ void RampMeans::add(const Frame& frame, const std::vector<double>& values) {
   if (!cycle || *cycle < 0 || !control) return;
   if (values.size() != names_.size())
     throw InternalError("RampMeans: one value per quantity expected");
-  auto& means = means_[{ramp_branch(*cycle), *control}];
-  means.resize(names_.size());
-  for (std::size_t q = 0; q < values.size(); ++q) means[q].add(values[q]);
+  Means& means = means_[{ramp_branch(*cycle), *control}];
+  means.of.resize(names_.size());
+  ++means.frames;
+  for (std::size_t q = 0; q < values.size(); ++q)
+    if (!std::isnan(values[q])) means.of[q].add(values[q]);
 }
 
 Table RampMeans::table(const std::string& doc) const {
@@ -31,9 +34,9 @@ Table RampMeans::table(const std::string& doc) const {
   Table t(columns, doc);
   for (const auto& [key, means] : means_) {
     std::vector<double> row{static_cast<double>(key.first), key.second,
-                            static_cast<double>(means.front().count())};
-    for (const auto& m : means) {
-      row.push_back(m.mean());
+                            static_cast<double>(means.frames)};
+    for (const RunningMean& m : means.of) {
+      row.push_back(m.count() > 0 ? m.mean() : std::nan(""));
       row.push_back(m.standard_error());
     }
     t.add_row(row);

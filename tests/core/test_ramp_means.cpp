@@ -2,6 +2,9 @@
 // increasing and decreasing ramps pool over their cycles, frames without a cycle are ignored.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <vector>
+
 #include "granpipe/errors.hpp"
 #include "granpipe/ramp_means.hpp"
 
@@ -46,4 +49,20 @@ TEST(RampMeans, EmptyWithoutCycles) {
   m.add(at(-1, 0.0), {1.0, 2.0});
   EXPECT_TRUE(m.empty());
   EXPECT_THROW(RampMeans({"phi"}).add(at(0, 1.0), {1.0, 2.0}), InternalError);
+}
+
+// One frame whose phi_b is undefined (a layer too thin for it) made its whole row NaN,
+// where the scalar means leave it out: its frame counts, its value does not.
+TEST(RampMeans, AnUndefinedValueIsLeftOutOfItsMeanOnly) {
+  RampMeans m({"phi_b", "z"});
+  m.add(at(0, 1.1), {0.5, 4.0});
+  m.add(at(0, 1.1), {std::nan(""), 4.5});
+  m.add(at(1, 1.1), {std::nan(""), 5.0});
+  const Table t = m.table("doc");
+  ASSERT_EQ(t.rows(), 2u);
+  EXPECT_EQ(t.column("frames"), (std::vector<double>{2, 1}));
+  EXPECT_EQ(t.column("phi_b")[0], 0.5);
+  EXPECT_DOUBLE_EQ(t.column("z")[0], 4.25);
+  EXPECT_TRUE(std::isnan(t.column("phi_b")[1]));  // defined in no frame: undefined, not 0
+  EXPECT_EQ(t.column("z")[1], 5.0);
 }

@@ -28,18 +28,24 @@ class RampMeans {
                      std::string cycle = "cycle")
       : names_(std::move(quantities)), control_(std::move(control)), cycle_(std::move(cycle)) {}
   // Adds one frame's values (one per quantity); frames without a cycle and a control
-  // value among their observables are ignored.
+  // value among their observables are ignored, and an undefined value (NaN) is left out of
+  // its quantity's mean, as the scalar means leave it out (one thin frame made a whole
+  // branch's row NaN).
   void add(const Frame& frame, const std::vector<double>& values);
   bool empty() const { return means_.empty(); }
   // Columns: branch (0 first increase, 1 decreasing, 2 increasing), the control value
-  // (named after its observable), frames, then each
-  // quantity and its standard error.
+  // (named after its observable), frames, then each quantity's mean over the frames where
+  // it is defined (NaN where it is nowhere) and its standard error.
   Table table(const std::string& doc) const;
 
  private:
+  struct Means {
+    long frames = 0;
+    std::vector<RunningMean> of;  // one per quantity
+  };
   std::vector<std::string> names_;
   std::string control_, cycle_;
-  std::map<std::pair<RampBranch, double>, std::vector<RunningMean>> means_;
+  std::map<std::pair<RampBranch, double>, Means> means_;
 };
 
 }  // namespace granpipe
