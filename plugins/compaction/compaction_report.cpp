@@ -53,6 +53,7 @@ void add_law_fit(Results& results, const std::string& name, const Law& law, cons
   out.names = law.names;
   out.values = fit.value;  // NaN when not fitted: undefined, never 0
   out.errors = fit.error;
+  out.covariance = fit.covariance;
   out.chi2 = fit.chi2;
   out.dof = fit.dof;
   results.add_fit(name, std::move(out));

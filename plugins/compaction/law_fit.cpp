@@ -35,8 +35,9 @@ SeriesEnds series_ends(const Points& p) {
   return e;
 }
 
-// The fitted parameters with tau = exp(ln tau) and its error propagated; the points'
-// scatter about the law is sqrt(chi^2 / dof), as they are unweighted.
+// The fitted parameters with tau = exp(ln tau) and its error and covariances propagated
+// (d tau = tau d ln tau); the points' scatter about the law is sqrt(chi^2 / dof), as they
+// are unweighted.
 LawFit reported(const CurveFit& fit) {
   LawFit out;
   out.status = fit.status;
@@ -44,6 +45,12 @@ LawFit reported(const CurveFit& fit) {
   out.error.assign(fit.error.begin(), fit.error.end());
   out.value.back() = std::exp(fit.value[fit.value.size() - 1]);
   out.error.back() = out.value.back() * fit.error[fit.error.size() - 1];
+  out.covariance = fit.covariance;
+  if (out.covariance.size() > 0) {
+    const Eigen::Index last = out.covariance.rows() - 1;
+    out.covariance.row(last) *= out.value.back();
+    out.covariance.col(last) *= out.value.back();
+  }
   out.scatter = fit.fitted() ? std::sqrt(fit.chi2 / fit.dof) : std::nan("");
   out.chi2 = fit.chi2;
   out.dof = fit.dof;

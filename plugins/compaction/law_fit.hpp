@@ -7,6 +7,7 @@
 // errors are scaled here, so that they are the usual least-squares ones whatever the size
 // of y. Successive frames of one run are correlated: the errors are those of independent
 // points.
+#include <Eigen/Core>
 #include <cstddef>
 #include <limits>
 #include <string>
@@ -20,6 +21,7 @@ namespace granpipe::compaction {
 struct LawFit {
   CurveFitStatus status = CurveFitStatus::TooFewPoints;
   std::vector<double> value, error;  // in Law::names order, tau itself; NaN when not fitted
+  Eigen::MatrixXd covariance;        // of value, tau's row and column too; empty when not fitted
   // s, the points' spread about the law, and chi^2: NaN when not fitted.
   double scatter = std::numeric_limits<double>::quiet_NaN();
   double chi2 = std::numeric_limits<double>::quiet_NaN();

@@ -61,6 +61,12 @@ void expect_recovered(const Law& law, const std::vector<double>& truth, double s
       EXPECT_LT(fit.error[q], 0.5 * std::abs(truth[q])) << law.names[q] << " barely determined";
     }
     EXPECT_NEAR(fit.scatter, sigma, 0.2 * sigma);
+    // The covariance is of the parameters reported, tau's too (the results stored none).
+    ASSERT_EQ(fit.covariance.rows(), static_cast<Eigen::Index>(truth.size()));
+    for (std::size_t q = 0; q < truth.size(); ++q) {
+      const auto k = static_cast<Eigen::Index>(q);
+      EXPECT_NEAR(std::sqrt(fit.covariance(k, k)), fit.error[q], 1e-9 * fit.error[q]);
+    }
   }
 }
 
