@@ -127,7 +127,13 @@ void ArchesAnalyzer::consume(const Frame& frame, FrameCache& cache) {
   const double non_supporting =
       cc.contacts > 0 ? static_cast<double>(cc.non_supporting()) / static_cast<double>(cc.contacts)
                       : std::nan("");
-  if (cc.contacts > 0) non_supporting_.add(non_supporting);
+  if (cc.contacts > 0) {
+    non_supporting_.add(non_supporting);
+  } else if (no_contacts_.pending()) {
+    no_contacts_.warn(log_, where +
+                                ": no disk touches another or a wall: its "
+                                "non_supporting_contact_fraction is undefined (NaN in per_frame)");
+  }
   if (sc.contacts() > 0) {
     detached_.add(static_cast<double>(sc.contacts() - cc.supporting) /
                   static_cast<double>(sc.contacts()));
@@ -164,7 +170,25 @@ void ArchesAnalyzer::consume(const Frame& frame, FrameCache& cache) {
   }
 }
 
+// A mean over no frame, or a distribution of no arch, is NaN in the results: said so.
+void ArchesAnalyzer::warn_undefined() const {
+  if (measured_frames_ == 0) return;
+  if (non_supporting_.count() == 0) {
+    log_.warn(
+        "arches: no frame had a contact: non_supporting_contact_fraction is undefined "
+        "(NaN)");
+  }
+  if (detached_.count() == 0) {
+    log_.warn(
+        "arches: no frame had a supporting contact: detached_support_fraction is "
+        "undefined (NaN)");
+  }
+  if (span_all_.total() == 0)
+    log_.warn("arches: no arch in any frame: the span distribution span_all is undefined (NaN)");
+}
+
 void ArchesAnalyzer::finish(Results& results) {
+  warn_undefined();
   results.add_scalar("frames", static_cast<double>(measured_frames_), std::nan(""), "",
                      "frames analysed (frames without disks are skipped)");
   results.add_mean("arches_per_particle", arches_per_particle_, "",

@@ -28,12 +28,14 @@ class ArchesAnalyzer : public Analyzer {
 
  private:
   void add_size_distribution(const std::vector<Eigen::Index>& n, double disks);
+  void warn_undefined() const;
 
   Log& log_;
   OutputFiles files_;       // arches_<tap>.svg, under the analyzer's name in the pipeline
   std::string provenance_;  // the run's, for the pictures
   double tolerance_;
-  FirstFrameWarning coarse_;  // positions rounded coarser than the contact tolerance
+  FirstFrameWarning coarse_;       // positions rounded coarser than the contact tolerance
+  FirstFrameWarning no_contacts_;  // frames whose disks touch nothing
   double span_bin_;
   long svg_frames_;
 

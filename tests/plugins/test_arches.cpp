@@ -717,3 +717,34 @@ TEST(ArchesAnalyzer, ASpanBinTooSmallForTheSpansIsRefused) {
         << e.what();
   }
 }
+
+// Two disks floating apart, no support and no contact: the contact fractions and the span
+// distribution are NaN (0/0), and were so without a word.
+TEST(ArchesAnalyzer, FractionsOfNothingAreSaidUndefined) {
+  const auto ctx = context(0, 0.25);
+  ctx->keep_log();
+  ga::ArchesAnalyzer analyzer(*ctx);
+  granpipe::FrameCache cache;
+  analyzer.consume(make_frame({{1.0, 3.0, kNone, kNone}, {5.0, 3.0, kNone, kNone}}, 10.0), cache);
+  granpipe::Results r;
+  analyzer.finish(r);
+  EXPECT_TRUE(std::isnan(r.scalar("non_supporting_contact_fraction").value));
+  EXPECT_TRUE(std::isnan(r.scalar("detached_support_fraction").value));
+  const std::vector<std::string> log = ctx->logged_lines();
+  const auto said = [&](const std::string& line) {
+    return std::find(log.begin(), log.end(), line) != log.end();
+  };
+  EXPECT_TRUE(
+      said("warning: arches: frame 0: no disk touches another or a wall: its "
+           "non_supporting_contact_fraction is undefined (NaN in per_frame); said for the "
+           "first such frame only"));
+  EXPECT_TRUE(
+      said("warning: arches: no frame had a contact: non_supporting_contact_fraction is "
+           "undefined (NaN)"));
+  EXPECT_TRUE(
+      said("warning: arches: no frame had a supporting contact: "
+           "detached_support_fraction is undefined (NaN)"));
+  EXPECT_TRUE(
+      said("warning: arches: no arch in any frame: the span distribution span_all is "
+           "undefined (NaN)"));
+}
