@@ -120,17 +120,20 @@ DistanceContacts find_contacts_by_distance(const Frame& frame, double tolerance,
 }
 
 std::string coarse_for_contacts(const Frame& frame, double tolerance) {
-  if (frame.size() == 0) return "";
+  // A tolerance of 0 asks for exact contacts, which no rounding gives: the user's choice.
+  if (frame.size() == 0 || tolerance == 0.0) return "";
   const double farthest = largest_coordinate(frame);
   const double rounding = double_spacing(farthest);
   const double contact = 2.0 * frame.radius().minCoeff();
   // Two centres each off by up to a spacing per coordinate.
   if (!(2.0 * rounding > tolerance * contact)) return "";
+  const double needed = 4.0 * rounding / contact;  // the schema's largest tolerance is 1
   return "positions up to " + format_number(farthest) + " from the origin are rounded to " +
          format_number(rounding) + ", more than half of contact_tolerance x the smallest " +
          "contact distance (" + format_number(tolerance * contact) +
-         "): touching particles may be missed; raise contact_tolerance to " +
-         format_number(4.0 * rounding / contact) + " or move the origin into the packing";
+         "): touching particles may be missed; " +
+         (needed <= 1.0 ? "raise contact_tolerance to " + format_number(needed) + " or " : "") +
+         "move the origin into the packing";
 }
 
 std::string contacts_by_distance_key(double tolerance) {

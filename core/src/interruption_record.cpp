@@ -23,10 +23,14 @@ struct Prepared {
   bool handled[2] = {false, false};
 };
 
-std::atomic<bool> taken{false};             // by a live InterruptionRecord
-std::atomic<Prepared*> armed{nullptr};      // set once everything is prepared
-std::atomic<int> requested{0};              // the signal that asked the run to stop
-std::atomic<std::int64_t> requested_at{0};  // when, in ns of CLOCK_MONOTONIC
+std::atomic<bool> taken{false};           // by a live InterruptionRecord
+std::atomic<Prepared*> armed{nullptr};    // set once everything is prepared
+std::atomic<int> requested{0};            // the signal that asked the run to stop
+std::atomic<int> claimed{0};              // the signal whose delivery records it
+std::atomic<std::int64_t> claimed_at{0};  // when, in ns of CLOCK_MONOTONIC (0: being claimed)
+// Only lock-free atomics may be touched in a signal handler.
+static_assert(std::atomic<int>::is_always_lock_free &&
+              std::atomic<std::int64_t>::is_always_lock_free);
 Prepared prepared;
 
 // A signal within this time of the first is the same request sent twice: timeout(1) sends
@@ -54,31 +58,35 @@ void write_all(int fd, const std::string& text) {
 extern "C" void record_and_request_stop(int sig) {
   const int k = sig == SIGINT ? 0 : 1;
   const std::int64_t now = monotonic_ns();
-  if (armed.load() && requested.load() != 0) {
-    if (now - requested_at.load() < kSameRequestNs) return;
+  const Prepared* p = armed.load();
+  if (!p) {
+    // Nothing armed: the action from before, at once.
+    sigaction(sig, &prepared.previous[k], nullptr);
+    raise(sig);
+    return;
+  }
+  // One delivery claims the request, whichever thread the kernel gives it to (a signal sent
+  // to the process may land on any of the run's threads, a second one while the first is
+  // still in here).
+  int none = 0;
+  if (!claimed.compare_exchange_strong(none, sig)) {
+    const std::int64_t at = claimed_at.load();
+    if (at == 0 || now - at < kSameRequestNs) return;  // the same request, sent again
     // A second request: the action from before (the default: end at once).
     sigaction(sig, &prepared.previous[k], nullptr);
     raise(sig);
     return;
   }
-  if (const Prepared* p = armed.load()) {
-    write_all(p->log_fd, p->log_line[k]);
-    // Markers all have one size: the new status overwrites the old in place.
-    const int fd = open(p->marker_path.c_str(), O_WRONLY | O_CLOEXEC);
-    if (fd >= 0) {
-      write_all(fd, p->marker_text);
-      close(fd);
-    }
-    write_all(STDERR_FILENO, p->stderr_line[k]);
+  claimed_at = now;
+  write_all(p->log_fd, p->log_line[k]);
+  // Markers all have one size: the new status overwrites the old in place.
+  const int fd = open(p->marker_path.c_str(), O_WRONLY | O_CLOEXEC);
+  if (fd >= 0) {
+    write_all(fd, p->marker_text);
+    close(fd);
   }
-  if (armed.load()) {
-    requested_at = now;
-    requested = sig;
-  } else {
-    // Nothing armed: the action from before, at once.
-    sigaction(sig, &prepared.previous[k], nullptr);
-    raise(sig);
-  }
+  write_all(STDERR_FILENO, p->stderr_line[k]);
+  requested = sig;
 }
 
 }  // namespace
@@ -96,6 +104,8 @@ InterruptionRecord::InterruptionRecord(const std::filesystem::path& dir, std::st
     prepared.stderr_line[k] = "granpipe: interrupted by " + name + "; " + outcome + "\n";
   }
   requested = 0;
+  claimed = 0;
+  claimed_at = 0;
   armed = &prepared;
   armed_ = true;
   struct sigaction action {};
@@ -124,7 +134,7 @@ void throw_if_stop_requested() {
 }
 
 void end_by_signal(int signal) {
-  // The handler gave the signal back its earlier action before it asked the run to stop.
+  // The record, disarmed, gave the signal back its earlier action.
   raise(signal);
 }
 

@@ -78,17 +78,17 @@ Override apply_set(json& root, const std::string& assignment) {
   return {target.path, where};
 }
 
-// Two --set of one value (or of a value and what holds it) ran with whichever came last,
-// without a word, where a sweep refuses the same: a script adding its --set to a user's
-// ran with the script's.
+// Two --set of one value ran with the last, without a word, where a sweep refuses the same
+// (a script adding its --set to a user's ran with the script's); so did a --set of what
+// holds a value another --set gave before it, which it replaced. A value set inside what a
+// --set before it made (writers=[...] then writers[0].name=...) is how such a value is
+// given: both hold.
 void refuse_sets_of_one_value(const std::vector<Override>& sets) {
   for (std::size_t b = 1; b < sets.size(); ++b) {
     for (std::size_t a = 0; a < b; ++a) {
       const std::string &first = sets[a].path, &second = sets[b].path;
-      if (!covers(first, second) && !covers(second, first)) continue;
-      const std::string what = first == second         ? second
-                               : covers(first, second) ? second + ", inside " + first
-                                                       : second + ", which holds " + first;
+      if (!covers(second, first)) continue;  // second neither is first nor holds it
+      const std::string what = first == second ? second : second + ", which holds " + first;
       throw InputError(sets[b].origin + ": expected a value no other --set gives, got " + what +
                        ", which " + sets[a].origin + " sets too");
     }

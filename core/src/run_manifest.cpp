@@ -1,6 +1,7 @@
 #include "run_manifest.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -62,6 +63,9 @@ std::optional<std::set<std::string>> read_manifest(const fs::path& dir) {
 
 // The first `bytes` bytes of a file (fewer when it is shorter or unreadable).
 std::string head_of(const fs::path& file, std::size_t bytes) {
+  std::error_code ec;
+  const std::uintmax_t size = fs::file_size(file, ec);
+  if (!ec) bytes = static_cast<std::size_t>(std::min<std::uintmax_t>(bytes, size));
   std::ifstream in(file, std::ios::binary);
   std::string head(bytes, '\0');
   in.read(head.data(), static_cast<std::streamsize>(head.size()));
@@ -69,8 +73,14 @@ std::string head_of(const fs::path& file, std::size_t bytes) {
   return head;
 }
 
+// A regular file, not through a symlink: a FIFO named run.log hung --overwrite's reading.
+bool regular_file(const fs::path& file) {
+  std::error_code ec;
+  return fs::is_regular_file(fs::symlink_status(file, ec));
+}
+
 bool is_report(const fs::path& file) {
-  return head_of(file, 4096).find(kReportMark) != std::string::npos;
+  return regular_file(file) && head_of(file, 4096).find(kReportMark) != std::string::npos;
 }
 
 // Whether the file starts as `start` does, or with a piece of it (a disk that filled up
@@ -83,8 +93,15 @@ bool starts_as(const fs::path& file, std::string_view start) {
 // there: without a manifest (a run killed) the name alone let --overwrite remove a user's
 // notes saved as point_001/run.log, or a folder point_007 of their own holding one.
 bool holds_what_a_run_writes(const fs::path& file) {
+  if (!regular_file(file)) return false;
   const std::string name = file.filename().string();
-  if (name == "run.log") return starts_as(file, "granpipe ");  // its provenance line
+  // Its provenance line; or what a run stopped or failed before writing it says, or an
+  // older granpipe's first warning.
+  if (name == "run.log") {
+    for (const char* first : {"granpipe ", "interrupted by ", "failed: ", "warning: "})
+      if (starts_as(file, first)) return true;
+    return false;
+  }
   if (name == "frames.partial.h5" || name == "results.partial.h5")
     return starts_as(file, std::string_view("\x89HDF\r\n\x1a\n", 8));
   if (name == "pipeline.json") {
@@ -115,23 +132,27 @@ bool where_a_run_writes(const Entry& e) {
   return parent.empty() || std::regex_match(parent, point_folder());
 }
 
-// For a run without a manifest: what any run writes before it ends, where it writes it,
-// holding what it writes.
-bool written_before_the_end(const Entry& e) {
+// What any run writes before it ends, where it writes it, by name (a report by its mark).
+bool named_as_written_before_the_end(const Entry& e) {
   static const std::set<std::string> files{kRunMarkerName, "pipeline.json", "run.log",
                                            "frames.partial.h5", "results.partial.h5"};
   if (!where_a_run_writes(e)) return false;
   if (e.directory) return true;
   const fs::path name = bare_name(e);
-  const bool named = files.count(name.filename().string()) > 0 || name == "report.html";
-  return named && holds_what_a_run_writes(e.path);
+  return files.count(name.filename().string()) > 0 || (name == "report.html" && is_report(e.path));
+}
+
+// For a run without a manifest: those, holding what a run writes there.
+bool written_before_the_end(const Entry& e) {
+  return named_as_written_before_the_end(e) && (e.directory || holds_what_a_run_writes(e.path));
 }
 
 // The core's own files, the point folders, and what the run's plugins recorded
-// (output_files.hpp): never a file merely named like them.
+// (output_files.hpp): never a file merely named like them. The run knows what it wrote:
+// its own run.log may start with its interruption (a signal before the provenance line).
 bool written_by_this_run(const Entry& e, const fs::path& dir, const FileRecord& recorded) {
   static const std::set<std::string> files{"results.h5", "frames.h5"};
-  if (written_before_the_end(e)) return true;
+  if (named_as_written_before_the_end(e)) return true;
   if (!where_a_run_writes(e)) return false;
   return files.count(bare_name(e).filename().string()) > 0 || recorded.has(dir / e.name);
 }

@@ -1,10 +1,10 @@
 // A signal asks a run to stop once: the same signal sent again at once is the same request,
 // one sent again later ends the run at once (interruption_record.hpp).
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <chrono>
 #include <csignal>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>

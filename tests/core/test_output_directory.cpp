@@ -2,6 +2,7 @@
 // recorded in run.log and the marker, and a replacing run that fails leaving the earlier
 // run whole. Runs use the real lattice and h5md plugins plus small failing ones.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <filesystem>
 #include <fstream>
@@ -401,6 +402,10 @@ TEST(OutputDirectory, AKilledRunsFilesAreKnownByWhatTheyHoldNotByTheirNames) {
   std::ofstream(out / "point_007" / "pipeline.json") << "{}";
   EXPECT_NE(run(kLattice, out, true).find("also holds point_007/pipeline.json"), std::string::npos);
   fs::remove(out / "point_007" / "pipeline.json");
+  // A FIFO of that name was read, and --overwrite hung on it.
+  ASSERT_EQ(::mkfifo((out / "point_007" / "run.log").c_str(), 0600), 0);
+  EXPECT_NE(run(kLattice, out, true).find("also holds point_007/run.log"), std::string::npos);
+  fs::remove(out / "point_007" / "run.log");
   EXPECT_EQ(run(kLattice, out, true), "");  // the run's own, and an empty point folder
   fs::remove_all(out);
 }

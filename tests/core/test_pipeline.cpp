@@ -366,6 +366,8 @@ TEST(PipelineErrors, SetOverridesAreValidatedToo) {
   EXPECT_EQ(error_of(kGood, {"source.params.n=5", R"(source.params={"n": 6})"}),
             R"(--set source.params={"n": 6}: expected a value no other --set gives, got )"
             "source.params, which holds source.params.n, which --set source.params.n=5 sets too");
+  // A value set inside what a --set before it made is both's.
+  EXPECT_EQ(error_of(kGood, {R"(source.params={"n": 6})", "source.params.frames=2"}), "no error");
 }
 
 // A --set that put a non-object where a sweep assigns into it was blamed on the sweep
