@@ -336,12 +336,17 @@ std::vector<InputFile> input_files(const Pipeline::Impl& p) {
     for (const ParamSpec& s : schema.specs()) {
       if (!params.has(s.name)) continue;
       // A --set of the path is named, not the file that no longer says it.
-      const std::string where = JsonLocation{p.origin, at + "." + s.name, &p.overrides}.str();
-      if (s.type == ParamType::Path) files.push_back({where, params.string(s.name)});
+      const auto where = [&](const std::string& path) {
+        return JsonLocation{p.origin, path, &p.overrides}.str();
+      };
+      const std::string path = at + "." + s.name;
+      if (s.type == ParamType::Path) files.push_back({where(path), params.string(s.name)});
       if (s.type != ParamType::PathList) continue;
       const std::vector<std::string>& list = params.paths(s.name);
-      for (std::size_t k = 0; k < list.size(); ++k)
-        files.push_back({where + "[" + std::to_string(k) + "]", list[k]});
+      for (std::size_t k = 0; k < list.size(); ++k) {
+        const std::string entry = path + "[" + std::to_string(k) + "]";
+        files.push_back({where(entry), list[k]});
+      }
     }
   };
   for (const PointSpec& point : p.points) {

@@ -66,6 +66,13 @@ JSON
 "$expect" 2 "^granpipe: --set source\.params\.file=[^:]*: expected a file outside the output directory $work/earlier, " \
   -- "$exe" "$work/reprocess.json" --quiet --out "$work/earlier" --overwrite \
   --set "source.params.file=$work/earlier/point_000/frames.h5"
+# An entry of a list of files, given by --set, is named by the --set and its index (it was
+# "--set x=[...][0]").
+cp "$work/earlier/point_000/frames.h5" "$work/outside.h5"
+"$expect" 2 "^granpipe: --set source\.params\.continued_in=[^:]*: source\.params\.continued_in\[0\]: expected a file outside the output directory $work/earlier, " \
+  -- "$exe" "$work/reprocess.json" --quiet --out "$work/earlier" --overwrite \
+  --set "source.params.file=$work/outside.h5" \
+  --set "source.params.continued_in=[\"$work/earlier/point_000/frames.h5\"]"
 cp "$work/reprocess.json" "$work/earlier/reprocess.json"
 "$expect" 2 "earlier/reprocess\.json: expected a file outside the output directory $work/earlier, got \"$work/earlier/reprocess\.json\" inside it" \
   -- "$exe" "$work/earlier/reprocess.json" --quiet --out "$work/earlier" --overwrite
