@@ -63,6 +63,8 @@ void expect_recovered(const Law& law, const std::vector<double>& truth, double s
     EXPECT_NEAR(fit.scatter, sigma, 0.2 * sigma);
     // The covariance is of the parameters reported, tau's too (the results stored none).
     ASSERT_EQ(fit.covariance.rows(), static_cast<Eigen::Index>(truth.size()));
+    EXPECT_TRUE(
+        fit.covariance.isApprox(fit.covariance.transpose(), 1e-12));  // tau's row and column
     for (std::size_t q = 0; q < truth.size(); ++q) {
       const auto k = static_cast<Eigen::Index>(q);
       EXPECT_NEAR(std::sqrt(fit.covariance(k, k)), fit.error[q], 1e-9 * fit.error[q]);
