@@ -1,6 +1,7 @@
 #include "granpipe/container_check.hpp"
 
 #include <cmath>
+#include <sstream>
 
 #include "granpipe/errors.hpp"
 #include "granpipe/format_number.hpp"
@@ -64,6 +65,25 @@ bool has_wall(const Container& c, int dim, Wall w) {
   const int axis = static_cast<int>(w) / 2, side = static_cast<int>(w) % 2;
   if (axis >= dim || (cylinder && axis < 2)) return false;
   return c.boundary[axis][side] == Boundary::Wall;
+}
+
+namespace {
+std::string vector_text(const Eigen::Vector3d& v, int dim) {
+  std::ostringstream s;
+  s.precision(17);
+  s << "(";
+  for (int a = 0; a < dim; ++a) s << (a ? ", " : "") << v[a];
+  s << ")";
+  return s.str();
+}
+}  // namespace
+
+std::string walls_not_at_rest(const Container& c, int dim) {
+  if (c.wall_offset.head(dim).norm() != 0.0)
+    return "its walls displaced by " + vector_text(c.wall_offset, dim);
+  if (c.wall_velocity.head(dim).norm() != 0.0)
+    return "its walls moving at " + vector_text(c.wall_velocity, dim);
+  return "";
 }
 
 }  // namespace granpipe

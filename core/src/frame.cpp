@@ -94,17 +94,31 @@ bool rows_strictly_increasing(const IndexArray& i, const IndexArray& j) {
   return true;
 }
 
+// A contact row by its partners, then its index in the table.
+using RowKey = std::tuple<std::int64_t, std::int64_t, Eigen::Index>;
+
+// The particle pairs' rows as (smaller, larger, row), or the wall contacts' as (particle,
+// wall, row), sorted: rows naming one contact come together.
+std::vector<RowKey> sorted_rows(const Frame& f, bool walls) {
+  const IndexArray &i = f.contact_i(), &j = f.contact_j();
+  std::vector<RowKey> rows;
+  for (Eigen::Index k = 0; k < i.size(); ++k) {
+    if (partner::is_particle(j[k]) == walls) continue;
+    if (walls) {
+      rows.emplace_back(i[k], j[k], k);
+    } else {
+      rows.emplace_back(std::min(i[k], j[k]), std::max(i[k], j[k]), k);
+    }
+  }
+  std::sort(rows.begin(), rows.end());
+  return rows;
+}
+
 // Each pair of particles in one row: a pair in two, as (i, j) and (j, i) or repeated, counted
 // twice in every coordination, network and force statistic (an H5MD file's table listing
 // each pair both ways doubled z).
 void check_each_pair_once(const Frame& f, const std::string& where) {
-  const IndexArray &i = f.contact_i(), &j = f.contact_j();
-  std::vector<std::tuple<std::int64_t, std::int64_t, Eigen::Index>> pairs;
-  for (Eigen::Index k = 0; k < i.size(); ++k) {
-    if (partner::is_particle(j[k]))
-      pairs.emplace_back(std::min(i[k], j[k]), std::max(i[k], j[k]), k);
-  }
-  std::sort(pairs.begin(), pairs.end());
+  const std::vector<RowKey> pairs = sorted_rows(f, false);
   for (std::size_t n = 1; n < pairs.size(); ++n) {
     const auto [a, b, row] = pairs[n];
     const auto [a0, b0, row0] = pairs[n - 1];
@@ -137,12 +151,7 @@ bool same_row(const PropertyTable& table, Eigen::Index a, Eigen::Index b) {
 // 0). A table of i and j alone cannot tell two facets from a repeated row.
 void check_each_wall_contact_once(const Frame& f, const std::string& where) {
   if (f.contacts->size() <= 2) return;
-  const IndexArray &i = f.contact_i(), &j = f.contact_j();
-  std::vector<std::tuple<std::int64_t, std::int64_t, Eigen::Index>> rows;
-  for (Eigen::Index k = 0; k < i.size(); ++k) {
-    if (!partner::is_particle(j[k])) rows.emplace_back(i[k], j[k], k);
-  }
-  std::sort(rows.begin(), rows.end());
+  const std::vector<RowKey> rows = sorted_rows(f, true);
   std::size_t group = 0;  // the first row of this (particle, wall)
   for (std::size_t n = 1; n < rows.size(); ++n) {
     const auto [a, w, row] = rows[n];

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "granpipe/cell_list.hpp"
+#include "granpipe/container_check.hpp"
 #include "granpipe/errors.hpp"
 
 namespace granpipe::disks2d_tap {
@@ -146,17 +147,15 @@ DiskPacking DiskPacking::from_frame(const Frame& frame, const std::string& where
   // The engine's box has its left wall at x = 0 and its base at y = 0, at rest: a base
   // raised by 1.5 (lo or wall_offset) was read as one at 0, the disks on it left floating.
   const Container& c = frame.container;
-  const Eigen::Vector2d offset = c.wall_offset.head<2>(), velocity = c.wall_velocity.head<2>();
-  if (c.lo.x() != 0.0 || c.lo.y() != 0.0 || offset.norm() != 0.0 || velocity.norm() != 0.0) {
+  const std::string moving = walls_not_at_rest(c, 2);
+  if (c.lo.x() != 0.0 || c.lo.y() != 0.0 || !moving.empty()) {
     std::ostringstream s;
     s.precision(17);
     s << where << ": expected a box whose left wall is at x = 0 and base at y = 0, at rest, got ";
-    if (offset.norm() != 0.0) {
-      s << "its walls displaced by (" << offset.x() << ", " << offset.y() << ")";
-    } else if (velocity.norm() != 0.0) {
-      s << "its walls moving at (" << velocity.x() << ", " << velocity.y() << ")";
-    } else {
+    if (moving.empty()) {
       s << "x = " << c.lo.x() << " and y = " << c.lo.y();
+    } else {
+      s << moving;
     }
     throw InputError(s.str());
   }

@@ -258,11 +258,7 @@ void H5mdSource::check_wall_contact_touches(const Frame& frame, Eigen::Index c,
   const Column* point = frame.contacts->find("point");
   double gap;
   if (point) {
-    const auto& p = point->as<Coordinates>();
-    Eigen::Vector3d d = Eigen::Vector3d::Zero();
-    for (int a = 0; a < frame.dim; ++a)
-      d[a] = frame.container.minimum_image(a, p(c, a) - frame.position()(k, a));
-    gap = d.norm() - radius;
+    gap = separation_to(frame, k, point->as<Coordinates>().row(c)).norm() - radius;
   } else {
     gap = surface_gap(frame, k, wall);
   }

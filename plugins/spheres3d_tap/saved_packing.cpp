@@ -5,6 +5,7 @@
 #include <string>
 
 #include "granpipe/container.hpp"
+#include "granpipe/container_check.hpp"
 #include "granpipe/errors.hpp"
 #include "sphere_grid.hpp"
 
@@ -46,15 +47,7 @@ std::string container_difference(const Container& c, const TapBox& box) {
              to_string(static_cast<Wall>(2 * axis + side));
     }
   }
-  if (c.wall_offset.norm() != 0.0) {
-    return "its walls displaced by (" + number(c.wall_offset.x()) + ", " +
-           number(c.wall_offset.y()) + ", " + number(c.wall_offset.z()) + ")";
-  }
-  if (c.wall_velocity.norm() != 0.0) {
-    return "its walls moving at (" + number(c.wall_velocity.x()) + ", " +
-           number(c.wall_velocity.y()) + ", " + number(c.wall_velocity.z()) + ")";
-  }
-  return "";
+  return walls_not_at_rest(c, 3);
 }
 
 void check_box(const std::string& where, const Frame& f, const TapBox& box) {

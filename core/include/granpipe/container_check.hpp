@@ -21,4 +21,10 @@ void check_container_values(const Container& container, int dim, const std::stri
 // cell grid).
 bool has_wall(const Container& container, int dim, Wall w);
 
+// "" when the container's walls are at rest along its first `dim` axes (no wall offset, no
+// wall velocity), else what is not: "its walls displaced by (0, 1.5)", "its walls moving at
+// (0, 0, 0.5)", to 17 digits. For a source whose model has fixed walls and starts from a
+// saved frame (a driven base read as one at rest left the spheres floating).
+std::string walls_not_at_rest(const Container& container, int dim);
+
 }  // namespace granpipe
