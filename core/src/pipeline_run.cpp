@@ -410,7 +410,7 @@ RunSummary run_in_directory(const Pipeline::Impl& p, const RunOptions& options, 
   const auto t0 = std::chrono::steady_clock::now();
   const std::string started = utc_now();
   RunSummary summary;
-  OutputDirectory out(options.out.value_or(p.output_dir), options.overwrite, input_files(p));
+  OutputDirectory out(p.output_dir, options.overwrite, input_files(p));
   summary.output_dir = out.final_path();
   const fs::path dir = out.work_path();  // beside output_dir while replacing an earlier run
 
@@ -518,8 +518,23 @@ RunSummary run_in_directory(const Pipeline::Impl& p, const RunOptions& options, 
 
 }  // namespace
 
+namespace {
+
+// The pipeline as run in `dir`: an --out replaces output.dir in what the run records too
+// (pipeline.json, every file's provenance), which otherwise named a folder never written.
+Pipeline::Impl written_to(const Pipeline::Impl& p, const fs::path& dir) {
+  Pipeline::Impl as_run = p;
+  as_run.output_dir = dir;
+  as_run.resolved["output"]["dir"] = dir.string();
+  for (PointSpec& point : as_run.points) point.resolved["output"]["dir"] = dir.string();
+  return as_run;
+}
+
+}  // namespace
+
 RunSummary Pipeline::run(const RunOptions& options, Log& log) const {
   try {
+    if (options.out) return run_in_directory(written_to(*impl_, *options.out), options, log);
     return run_in_directory(*impl_, options, log);
   } catch (const StopRequested& stop) {
     // Every file of the run is closed by now (frames.partial.h5 opens without SWMR).

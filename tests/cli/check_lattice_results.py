@@ -1,6 +1,8 @@
 """Checks a run of pipelines/lattice_packing.json end to end, through an independent reader
 (h5py): every crystal's packing fraction and coordination number equal the analytic values,
-and results.h5 and the frames carry their provenance (pipeline, version, commit, seed)."""
+and results.h5, pipeline.json and the frames carry their provenance (pipeline, version, commit,
+seed), the pipeline naming the folder the run wrote (the --out given, not the file's
+output.dir)."""
 import json
 import math
 import sys
@@ -17,8 +19,18 @@ expected = {  # lattice: (phi, z)
     "hcp": (math.pi / (3 * math.sqrt(2)), 12),
 }
 failures = []
+
+
+def check_output_dir(pipeline, where):
+    if pipeline["output"]["dir"] != out:
+        failures.append(f"{where}: output.dir {pipeline['output']['dir']!r}, the run wrote {out!r}")
+
+
+with open(f"{out}/pipeline.json") as f:
+    check_output_dir(json.load(f), "pipeline.json")
 with h5py.File(f"{out}/results.h5", "r") as f:
     pipeline = json.loads(f.attrs["pipeline"])
+    check_output_dir(pipeline, "results.h5")
     for key in ("granpipe_version", "git_commit", "seed"):
         if key not in f.attrs:
             failures.append(f"results.h5 lacks the {key} attribute")
@@ -35,6 +47,7 @@ with h5py.File(f"{out}/results.h5", "r") as f:
             failures.append(f"{lattice}: z {z}, expected {z_exact}")
         with h5py.File(f"{out}/point_{k:03d}/frames.h5", "r") as frames:
             provenance = json.loads(frames["granpipe"].attrs["provenance"])
+            check_output_dir(provenance["pipeline"], f"point_{k:03d}/frames.h5")
             if provenance["pipeline"]["source"]["params"]["lattice"] != lattice:
                 failures.append(f"point_{k:03d}/frames.h5 provenance names the wrong lattice")
 if failures:
