@@ -34,12 +34,9 @@ std::optional<StartFrame> read_start_frame(const PluginContext& ctx, double defa
                      " frames), got " + std::to_string(wanted));
   }
   const long index = wanted < 0 ? frames - 1 : wanted;
-  const auto& columns = reader.info().columns;
-  const bool radii = std::any_of(columns.begin(), columns.end(),
-                                 [](const Property& c) { return c.name == "radius"; });
   return StartFrame{reader.read(index), index,
                     ctx.param("initial_file") + ": " + file + ": frame " + std::to_string(index),
-                    radii};
+                    reader.info().has("radius"), reader.info().has("species")};
 }
 
 }  // namespace granpipe

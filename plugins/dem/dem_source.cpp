@@ -255,8 +255,9 @@ Schema schema() {
       .min(0.0);
   s.reals("gravity", std::vector<double>{0.0, 0.0, -1.0}, "gravitational acceleration").length(3);
   s.real("relaxed_kinetic_energy", 0.0,
-         "once the container is at rest, the run ends with a frame at the first check (every "
-         "1000 steps) where the mean kinetic energy per particle (translational and rotational) "
+         "once the container is at rest, the run ends with a frame at the first check (at every "
+         "multiple of 1000 steps) where the mean kinetic energy per particle (translational and "
+         "rotational) "
          "is below this; 0: run the whole duration")
       .min(0.0)
       .unit("energy");
@@ -278,6 +279,7 @@ DemSource::DemSource(const PluginContext& ctx) : log_(ctx.log), progress_(ctx.pr
                                       settings.law, speed));
   read_schedule(ctx, drive);
   engine_ = std::make_unique<Engine>(model, walls, settings, start.state);
+  ids_ = start.id;
   // The start's overlaps may all spring apart: their energy (a bed pressed 1 % deep releases
   // far more than its speeds) was called a blow-up.
   kinetic_energy_bound_ =
@@ -341,7 +343,11 @@ std::int64_t DemSource::next_frame_step() const {
   const std::int64_t now = engine_->step();
   if (started_ && now >= end_step_) return -1;
   const std::int64_t due = std::max(started_ ? now + 1 : now, first_saved_step_);
-  return std::min((due + save_every_ - 1) / save_every_ * save_every_, end_step_);
+  // The next multiple of save_every, counted from `due` up: rounding `due` up through
+  // due + save_every - 1 overflowed for a save_every near 2^63 (frames of step 0 for ever).
+  const std::int64_t rest = due % save_every_;
+  if (rest == 0) return std::min(due, end_step_);
+  return save_every_ - rest >= end_step_ - due ? end_step_ : due + (save_every_ - rest);
 }
 
 bool DemSource::next(Frame& frame) {
@@ -356,6 +362,7 @@ bool DemSource::next(Frame& frame) {
   started_ = true;
   run_to(due);
   fill_frame(*engine_, frame);
+  frame.id() = ids_;
   return true;
 }
 
@@ -368,8 +375,10 @@ bool DemSource::at_rest() const {
 }
 
 void DemSource::run_to(std::int64_t step) {
-  // Chunks short enough for a live progress bar, long enough to cost nothing.
-  constexpr std::int64_t kProgressChunk = 1000;
+  // Chunks end at multiples of this: short enough for a live progress bar, long enough to
+  // cost nothing, and where relaxation is checked (also at a frame on such a step: runs
+  // whose frames came every 1000 steps or less never checked it).
+  constexpr std::int64_t kCheckEvery = 1000;
   using Clock = std::chrono::steady_clock;
   const StepProfile before = engine_->profile();
   const std::int64_t first = engine_->step();
@@ -377,7 +386,8 @@ void DemSource::run_to(std::int64_t step) {
   while (engine_->step() < step) {
     throw_if_stop_requested();  // frames far apart: a signal is not left waiting for one
     const auto chunk_start = Clock::now();
-    const std::int64_t steps = std::min(kProgressChunk, step - engine_->step());
+    const std::int64_t steps =
+        std::min(kCheckEvery - engine_->step() % kCheckEvery, step - engine_->step());
     // The wall forces a frame shows are kept only in the step before it: recording them
     // every step would store two vectors per particle and wall for nothing.
     const bool frame_follows = engine_->step() + steps == step;
@@ -388,13 +398,15 @@ void DemSource::run_to(std::int64_t step) {
       engine_->run(1);
     }
     check_health(*engine_, kinetic_energy_bound_);
-    if (!relaxed_ && engine_->step() < step && at_rest()) {
-      // One more step, so that the last frame shows the wall contacts too.
+    if (!relaxed_ && engine_->step() % kCheckEvery == 0 && at_rest()) {
+      // Between frames one more step, so that the last frame shows the wall contacts too.
       relaxed_ = true;
-      end_step_ = step = engine_->step() + 1;
+      const bool frame_now = engine_->step() == step;
+      end_step_ = step = frame_now ? step : engine_->step() + 1;
       std::ostringstream m;
       m << "dem: relaxed at t = " << engine_->time() << ": mean kinetic energy per particle below "
-        << relaxed_kinetic_energy_ << "; the run ends with the next step's frame";
+        << relaxed_kinetic_energy_ << "; the run ends with " << (frame_now ? "this" : "the next")
+        << " step's frame";
       log_.info(m.str());
     }
     report_progress(steps, std::chrono::duration<double>(Clock::now() - chunk_start).count());

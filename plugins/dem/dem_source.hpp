@@ -10,6 +10,7 @@
 #include "engine.hpp"
 #include "granpipe/params.hpp"
 #include "granpipe/plugin.hpp"
+#include "granpipe/property_table.hpp"
 #include "time_step.hpp"
 
 namespace granpipe::dem {
@@ -57,6 +58,7 @@ class DemSource : public Source {
   std::unique_ptr<Engine> engine_;
   std::int64_t total_steps_ = 0, save_every_ = 1, first_saved_step_ = 0;
   std::int64_t end_step_ = 0;  // total_steps_, or the step after relaxation was seen
+  IndexArray ids_;             // the start's particle ids, kept in every frame
   bool relaxed_ = false;
   double relaxed_kinetic_energy_ = 0.0;
   double kinetic_energy_bound_ = 0.0;  // above it the run has blown up

@@ -1,6 +1,7 @@
 #include "frame_output.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <vector>
 
@@ -141,13 +142,18 @@ void fill_particles(const Particles& p, Frame& frame) {
 // The drive's phase and the container's velocity, for analyses that cut a run into cycles.
 void add_drive_observables(const Drive& drive, double t, Frame& frame) {
   static const Property cycles{
-      "cycles", Scope::Frame, ValueType::Real,
-      1,        "1",          "drive periods since the drive started, (t - start) f"};
+      "cycles",
+      Scope::Frame,
+      ValueType::Real,
+      1,
+      "1",
+      "drive periods since the drive started, (t - start) f; NaN without a drive"};
   static const Property velocity{
       "container_velocity", Scope::Frame,
       ValueType::Real,      1,
       "length/time",        "vertical velocity of the vibrating container"};
-  frame.set_observable(cycles, drive.cycles(t));
+  // Without a drive there are no cycles: 0 put every frame of a run at cycle 0.
+  frame.set_observable(cycles, drive.angular_frequency > 0.0 ? drive.cycles(t) : std::nan(""));
   frame.set_observable(velocity, drive.velocity(t)[2]);
 }
 

@@ -16,10 +16,22 @@ namespace granpipe::dem {
 
 namespace {
 
+// A file without radii read as spheres of radius 0.5, and one without species as species
+// 0 in a table of several, without a word: the engine has no default for either.
+void refuse_missing_columns(const StartFrame& start, int species) {
+  if (!start.radii_stored)
+    throw InputError(start.where + ": expected radii (/particles/all/radius), got none");
+  if (!start.species_stored && species > 1) {
+    throw InputError(start.where + ": expected species (/particles/all/species) for a table of " +
+                     std::to_string(species) + " species, got none");
+  }
+}
+
 // The start file's frame, checked as a DEM start.
 Start start_from_file(const PluginContext& ctx, StartFrame start, int species) {
   Frame& f = start.frame;
   const std::string& where = start.where;
+  refuse_missing_columns(start, species);
   check_memory(where, static_cast<double>(f.size()));
   f.check(where);
   if (f.dim != 3) throw InputError(where + ": expected a 3D frame, got 2D");
@@ -45,7 +57,7 @@ Start start_from_file(const PluginContext& ctx, StartFrame start, int species) {
   if (f.has("angular_velocity")) {
     s.angular_velocity = f.table<double>("angular_velocity").matrix().transpose();
   }
-  return {std::move(s), f.container};
+  return {std::move(s), f.container, f.id()};
 }
 
 // The widest cylinder, in small diameters: the lattice's rows and columns are counted in int.
@@ -107,6 +119,7 @@ Start start_from_bed(const PluginContext& ctx, int species) {
   } catch (const InputError& e) {
     throw InputError(ctx.param("bed") + ": " + e.what());
   }
+  s.id = IndexArray::LinSpaced(s.state.radius.size(), 0, s.state.radius.size() - 1);
   Container& c = s.container;
   c.shape = ContainerShape::Cylinder;
   c.cylinder_radius = R;

@@ -11,11 +11,14 @@ namespace granpipe::dem {
 struct Start {
   InitialState state;
   Container container;
+  IndexArray id;  // the particles' ids, in the order of state
 };
 
 // The start the parameters name: initial_file (frame initial_frame) or bed, exactly one of
 // them. Throws InputError naming the parameter when neither or both are given, when the
-// frame is missing or not 3D, or when the species table lacks a species of the start.
+// frame is missing or not 3D, its container moving or displaced, its radii missing, its
+// species missing while the table has several, or when the species table lacks a species
+// of the start.
 Start start_of(const PluginContext& ctx, int species);
 
 }  // namespace granpipe::dem

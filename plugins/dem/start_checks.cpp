@@ -3,6 +3,7 @@
 #include <limits>
 #include <sstream>
 
+#include "granpipe/container_check.hpp"
 #include "granpipe/deepest_overlap.hpp"
 #include "granpipe/errors.hpp"
 #include "granpipe/format_number.hpp"
@@ -23,12 +24,20 @@ std::string particle(const Frame& f, Eigen::Index i) {
   return s.str();
 }
 
+// The engine starts its walls at their stated place, at rest, and its clock at 0: a frame
+// saved mid-cycle (bnp_t10.h5, its base 9.1 up and rising) was put back at rest without a
+// word, its bed then 9.1 above the base and falling.
+void refuse_moving_container(const Frame& f, const std::string& where) {
+  const std::string moving = walls_not_at_rest(f.container, 3);
+  if (moving.empty()) return;
+  throw InputError(where + ": expected a container at rest at its stated place (the run " +
+                   "starts its walls there, at rest), got " + moving);
+}
+
 void refuse_outside(const Frame& f, const std::string& where) {
-  // The run starts with the walls at rest, and an open side holds nothing back (a bed
-  // saved in flight may be above its container's top).
+  // An open side holds nothing back (a bed saved in flight may be above its container's top).
   Frame at_rest = f;
   Container& c = at_rest.container;
-  c.wall_offset.setZero();
   for (int axis = 0; axis < 3; ++axis) {
     if (c.boundary[axis][0] == Boundary::Open)
       c.lo[axis] = -std::numeric_limits<double>::infinity();
@@ -60,6 +69,7 @@ void refuse_deep_pairs(const Frame& f, const std::string& where) {
 
 void check_start_frame(const Frame& f, const std::string& where) {
   if (f.size() == 0) throw InputError(where + ": expected at least one particle, got none");
+  refuse_moving_container(f, where);
   refuse_outside(f, where);
   refuse_deep_pairs(f, where);
 }

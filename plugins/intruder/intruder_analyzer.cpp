@@ -12,7 +12,7 @@ namespace {
 
 // Mass-weighted mean of a per-particle value over the bed (every particle but `skip`).
 // Mass ∝ density r³; the frame carries no density, and the bed's particles share one
-// species in the scenes this serves, so r³ weights them. Summed over the bed itself: the
+// species (require_one_bed_species), so r³ weights them. Summed over the bed itself: the
 // sum over all less the intruder's term cancelled when the intruder outweighs the bed (a bed
 // of radius 1e-5 beside an intruder of 1 had the velocity 0 for 2.8e-5).
 double bed_mean(const Eigen::ArrayXd& weight, const Eigen::ArrayXd& value, Eigen::Index skip) {
@@ -20,6 +20,21 @@ double bed_mean(const Eigen::ArrayXd& weight, const Eigen::ArrayXd& value, Eigen
   const double weighted =
       (weight.head(skip) * value.head(skip)).sum() + (weight.tail(after) * value.tail(after)).sum();
   return weighted / (weight.head(skip).sum() + weight.tail(after).sum());
+}
+
+// The bed's centre of mass weights its particles by r^3, which is their mass only when they
+// share a density: a bed of two species (densities 1.91 and 20) gave a height 8 too low.
+void require_one_bed_species(const Frame& f, Eigen::Index intruder, const std::string& where) {
+  const Eigen::Index first = intruder == 0 ? 1 : 0;
+  const auto& species = f.species();
+  for (Eigen::Index i = first + 1; i < f.size(); ++i) {
+    if (i == intruder || species[i] == species[first]) continue;
+    throw InputError(where + ": expected a bed of one species (the frame carries no densities " +
+                     "to weight its centre of mass by), got species " +
+                     std::to_string(species[first]) + " (particle " + std::to_string(first) +
+                     ") and " + std::to_string(species[i]) + " (particle " + std::to_string(i) +
+                     ")");
+  }
 }
 
 }  // namespace
@@ -49,6 +64,7 @@ BedState measure_bed(const Frame& f, const std::string& where) {
                       where + ": expected a base (a wall at the bottom along z) to measure " +
                           "heights and the stage from");
   const Eigen::Index big = find_intruder(f, where);
+  require_one_bed_species(f, big, where);
   const double base = f.container.wall_at(2, 0);
   const Eigen::ArrayXd weight = f.radius().cube();
   BedState s;

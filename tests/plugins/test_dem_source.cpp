@@ -218,6 +218,54 @@ TEST(DemSource, FramesCarryTheDrivesCyclesAndTheContainersVelocity) {
   fs::remove(file);
 }
 
+// Without a drive a run has no cycles: 0 put every frame at cycle 0 (the intruder's
+// heights then plotted at one x).
+TEST(DemSource, FramesWithoutADriveHaveNoCycles) {
+  const fs::path file = start_file();
+  const auto ctx = test::make_context(
+      dem::schema(), {{"initial_file", file.string()}, {"duration", 0.2}, {"save_every", 500}});
+  dem::DemSource source(*ctx);
+  Frame f;
+  ASSERT_TRUE(source.next(f));
+  EXPECT_TRUE(std::isnan(*f.real_observable("cycles")));
+  EXPECT_EQ(*f.real_observable("container_velocity"), 0.0);
+  fs::remove(file);
+}
+
+// The next frame's step was rounded up through step + save_every - 1, which overflowed for
+// a save_every near 2^63: frames of step 0 without end, the file growing.
+TEST(DemSource, ASaveEveryOfTheLargestIntegerEmitsTheLastFrameOnly) {
+  const fs::path file = start_file();
+  const auto ctx = test::make_context(dem::schema(), {{"initial_file", file.string()},
+                                                      {"duration", 0.2},
+                                                      {"save_every", INT64_MAX},
+                                                      {"save_from", 0.01}});
+  dem::DemSource source(*ctx);
+  Frame f;
+  std::vector<std::int64_t> steps;
+  while (source.next(f) && steps.size() < 10) steps.push_back(f.step);
+  EXPECT_EQ(steps, std::vector<std::int64_t>{1000});
+  fs::remove(file);
+}
+
+// Relaxation was checked only between frames: with a frame every 1000 steps or less, never
+// (a threshold of 1e300 ran the whole duration, and the end said "not reached").
+TEST(DemSource, RelaxationIsCheckedAtFramesEvery1000StepsOrLess) {
+  for (const int save_every : {250, 1000}) {
+    const fs::path file = start_file();
+    const auto ctx = test::make_context(dem::schema(), {{"initial_file", file.string()},
+                                                        {"duration", 1.0},
+                                                        {"save_every", save_every},
+                                                        {"relaxed_kinetic_energy", 1e300}});
+    dem::DemSource source(*ctx);
+    Frame f;
+    std::vector<std::int64_t> steps;
+    while (source.next(f)) steps.push_back(f.step);
+    EXPECT_EQ(steps.back(), 1000) << save_every;  // the first check, on a frame's step
+    fs::remove(file);
+  }
+}
+
 // A duration of 1e300 wrapped the step count round to a negative one, refused as a
 // save_from past the duration.
 TEST(DemSource, ADurationOfMoreStepsThanCanBeCountedIsRefusedByName) {

@@ -97,6 +97,18 @@ TEST(Intruder, AContainerWithoutABaseIsRefused) {
             "the source allows it)");
 }
 
+// The bed's centre of mass weights by r^3, its mass only at one density: a bed of two
+// species was weighted as one (8 too low with densities 1.91 and 20).
+TEST(Intruder, ABedOfTwoSpeciesIsRefusedAnIntruderOfItsOwnIsNot) {
+  Frame f = bed();
+  f.species() << 0, 1, 0;  // the intruder its own species: the paper's scene
+  EXPECT_DOUBLE_EQ(intruder::measure_bed(f, "frame 0").bed_height, 1.0);
+  f.species() << 0, 1, 2;
+  EXPECT_EQ(granpipe::test::input_error_of([&] { analyze({f}); }),
+            "frame 0: expected a bed of one species (the frame carries no densities to weight "
+            "its centre of mass by), got species 0 (particle 0) and 2 (particle 2)");
+}
+
 // The intruder is the largest particle wherever it sits in the frame.
 TEST(Intruder, TheIntruderIsTheOneLargestParticle) {
   Frame f = bed();

@@ -14,9 +14,10 @@ namespace granpipe {
 
 struct StartFrame {
   Frame frame;
-  long index = 0;            // in the file
-  std::string where;         // "source.params.initial_file: <file>: frame <k>", to begin messages
-  bool radii_stored = true;  // false: the file has none, every radius is the default given
+  long index = 0;              // in the file
+  std::string where;           // "source.params.initial_file: <file>: frame <k>", to begin messages
+  bool radii_stored = true;    // false: the file has none, every radius is the default given
+  bool species_stored = true;  // false: the file has none, every species is 0
 };
 
 // Nothing when `initial_file` is empty. Throws InputError naming `initial_frame` when it
