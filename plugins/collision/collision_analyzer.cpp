@@ -25,6 +25,27 @@ std::optional<double> pair_normal_force(const Frame& f) {
   return {};
 }
 
+// The contact force on sphere 0 (normal and tangential), zero when the pair is not in the
+// contact table.
+Eigen::Vector3d pair_force_on_first(const Frame& f) {
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();
+  if (!f.contacts) return force;
+  for (Eigen::Index k = 0; k < f.contacts->rows(); ++k) {
+    if (!partner::is_particle(f.contact_j()[k])) continue;
+    for (const char* column : {"normal_force", "tangential_force"}) {
+      if (f.contacts->has(column))
+        force += f.contacts->get<Coordinates>(column).row(k).matrix().transpose();
+    }
+    return f.contact_i()[k] == 0 ? force : Eigen::Vector3d(-force);
+  }
+  return force;
+}
+
+Eigen::Vector3d relative_velocity(const Frame& f) {
+  const auto& v = f.table<double>("velocity");
+  return (v.row(0) - v.row(1)).matrix().transpose();
+}
+
 }  // namespace
 
 Schema schema() {
@@ -76,7 +97,12 @@ CollisionAnalyzer::CollisionAnalyzer(const PluginContext& ctx)
       gamma_n_param_(ctx.param("gamma_n")) {}
 
 FrameContent CollisionAnalyzer::needs() const {
-  return {.dim = 3, .contacts = true, .columns = {*find_standard("velocity", Scope::Particle)}};
+  // The contact forces check the stiffness, the damping and the masses: without them the
+  // errors were another pair's, unchecked (a k_n of half the source's: -0.30, exit 0).
+  return {.dim = 3,
+          .contacts = true,
+          .columns = {*find_standard("velocity", Scope::Particle),
+                      *find_standard("normal_force", Scope::Contact)}};
 }
 
 void CollisionAnalyzer::consume(const Frame& frame, FrameCache&) {
@@ -102,6 +128,13 @@ void CollisionAnalyzer::consume(const Frame& frame, FrameCache&) {
     m_eff_ = mass[0] * mass[1] / (mass[0] + mass[1]);
   }
   tracker_.add(s, where);
+  const Eigen::Vector3d v = relative_velocity(frame);
+  const double drift = impulse_.add(frame.time, v, s.touching, pair_force_on_first(frame));
+  if (drift > kImpulseTolerance * v.norm()) {
+    throw InputError(where + ": expected the spheres' relative velocity unchanged in free " +
+                     "flight (nothing but their contact acting between them), got a change of " +
+                     format_number(drift, 4) + " since the frame before (a drag?)");
+  }
   ++frames_;
 }
 
@@ -141,11 +174,25 @@ void CollisionAnalyzer::check_damping() const {
                    " (fitted over " + std::to_string(stiffness_.samples()) + " frames in contact)");
 }
 
+void CollisionAnalyzer::check_impulse() const {
+  if (impulse_.holds(m_eff_)) return;
+  const auto text = [](const Eigen::Vector3d& x) {
+    return "(" + format_number(x[0], 4) + ", " + format_number(x[1], 4) + ", " +
+           format_number(x[2], 4) + ")";
+  };
+  throw InputError(density_param_ + ": expected two free spheres of these densities, " +
+                   "touched by nothing but each other, got m_eff = " + format_number(m_eff_, 4) +
+                   " times their relative velocity's change " +
+                   text(impulse_.momentum_change(m_eff_)) + " against their contact's impulse " +
+                   text(impulse_.impulse()) + " (another density, a fixed sphere or a drag?)");
+}
+
 void CollisionAnalyzer::finish(Results& results) {
   // An overdamped law first: its forces, cut off where they would pull, fit no line.
   const LinearPrediction p = predict_linear(kn_, gamma_n_, m_eff_, "collision");
   check_stiffness();
   check_damping();
+  check_impulse();
   const CollisionMeasure m = tracker_.result("collision: " + std::to_string(frames_) + " frames");
   const double nan = std::nan("");
   results.add_scalar("contact_time", m.contact_time, nan, "time",

@@ -6,10 +6,11 @@
 // relative errors.
 //
 // The analytic values are only the source's when the analyzer's parameters are: frames
-// must come every time step (consecutive steps; a gap is refused), and when the contact
-// table carries normal_force, the stiffness and damping those forces show must be the given
-// k_n and gamma_n m_eff within kStiffnessTolerance and kDampingTolerance (stiffness_fit.hpp),
-// or the run is refused.
+// must come every time step (consecutive steps; a gap is refused), with the contact forces;
+// the stiffness and damping those forces show must be the given k_n and gamma_n m_eff within
+// kStiffnessTolerance and kDampingTolerance (stiffness_fit.hpp), and the pair's relative
+// momentum must change by its contact's impulse alone, with m_eff from the given densities
+// (impulse_balance.hpp), or the run is refused.
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -17,6 +18,7 @@
 
 #include "collision_tracker.hpp"
 #include "granpipe/plugin.hpp"
+#include "impulse_balance.hpp"
 #include "stiffness_fit.hpp"
 
 namespace granpipe::collision {
@@ -45,6 +47,7 @@ class CollisionAnalyzer : public Analyzer {
   void check_step(const Frame& frame, const std::string& where);
   void check_stiffness() const;
   void check_damping() const;
+  void check_impulse() const;
 
   double kn_, gamma_n_;
   std::vector<double> density_;
@@ -54,6 +57,7 @@ class CollisionAnalyzer : public Analyzer {
   std::int64_t last_step_ = 0;
   CollisionTracker tracker_;
   StiffnessFit stiffness_;
+  ImpulseBalance impulse_;
 };
 
 }  // namespace granpipe::collision

@@ -45,9 +45,9 @@ Frame pair_frame(double time, double gap, double closing, bool touching) {
 
 // The exact linear-law collision: free approach at kSpeed, contact from kStart for t_c,
 // free separation at e kSpeed; sampled every `step`.
-std::vector<Frame> exact_collision(double step, double until) {
-  const double m_eff = kMass / 2.0, omega = std::sqrt(kKn / m_eff - kGamma * kGamma / 4.0);
-  const double t_c = std::numbers::pi / omega, e = std::exp(-kGamma * t_c / 2.0);
+std::vector<Frame> exact_collision(double step, double until, double gamma = kGamma) {
+  const double m_eff = kMass / 2.0, omega = std::sqrt(kKn / m_eff - gamma * gamma / 4.0);
+  const double t_c = std::numbers::pi / omega, e = std::exp(-gamma * t_c / 2.0);
   std::vector<Frame> frames;
   for (double t = 0.0; t < until; t += step) {
     const double s = t - kStart;
@@ -56,9 +56,9 @@ std::vector<Frame> exact_collision(double step, double until) {
       overlap = kSpeed * s;
       rate = kSpeed;
     } else if (s < t_c) {
-      const double decay = std::exp(-kGamma * s / 2.0);
+      const double decay = std::exp(-gamma * s / 2.0);
       overlap = kSpeed / omega * decay * std::sin(omega * s);
-      rate = kSpeed * decay * (std::cos(omega * s) - kGamma / (2.0 * omega) * std::sin(omega * s));
+      rate = kSpeed * decay * (std::cos(omega * s) - gamma / (2.0 * omega) * std::sin(omega * s));
     } else {
       overlap = -e * kSpeed * (s - t_c);
       rate = -e * kSpeed;
@@ -68,22 +68,23 @@ std::vector<Frame> exact_collision(double step, double until) {
       auto& force =
           frames.back().contacts->add<Coordinates>(*find_standard("normal_force", Scope::Contact));
       force.setZero();
-      force(0, 0) = kKn * overlap + kGamma * m_eff * rate;
+      force(0, 0) = kKn * overlap + gamma * m_eff * rate;
     }
   }
   return frames;
 }
 
-std::unique_ptr<test::PluginHarness> context(double kn = kKn, double gamma = kGamma) {
+std::unique_ptr<test::PluginHarness> context(double kn = kKn, double gamma = kGamma,
+                                             double density = kDensity) {
   return test::make_context(collision::schema(),
-                            {{"k_n", kn}, {"gamma_n", gamma}, {"density", {kDensity}}});
+                            {{"k_n", kn}, {"gamma_n", gamma}, {"density", {density}}});
 }
 
 // The analyzer on `frames`, saved every `save_every` steps, told the stiffness `kn` and the
 // damping `gamma`.
 Results analyse(std::vector<Frame> frames, std::int64_t save_every = 1, double kn = kKn,
-                double gamma = kGamma) {
-  const auto ctx = context(kn, gamma);
+                double gamma = kGamma, double density = kDensity) {
+  const auto ctx = context(kn, gamma, density);
   collision::CollisionAnalyzer analyzer(*ctx);
   FrameCache cache;
   for (std::size_t k = 0; k < frames.size(); ++k) {
@@ -97,9 +98,9 @@ Results analyse(std::vector<Frame> frames, std::int64_t save_every = 1, double k
 
 // The InputError message of analysing `frames`, or "" when there is none.
 std::string refusal(const std::vector<Frame>& frames, std::int64_t save_every = 1, double kn = kKn,
-                    double gamma = kGamma) {
+                    double gamma = kGamma, double density = kDensity) {
   try {
-    analyse(frames, save_every, kn, gamma);
+    analyse(frames, save_every, kn, gamma, density);
   } catch (const InputError& e) {
     return e.what();
   }
@@ -224,4 +225,31 @@ TEST(Collision, ADampingOtherThanTheForcesShowIsRefused) {
             "params.gamma_n and params.density: expected the source's, got gamma_n m_eff = 0, "
             "while the frames' normal forces show " +
                 format_number(kGamma * kMass / 2.0, 4));
+}
+
+// Without damping the forces show no mass: an analyzer told twice the density (or a run
+// with one sphere fixed, which halves the relative velocity's change) compared with another
+// pair's contact time (-0.29, exit 0). The contact's impulse must be m_eff times that change.
+TEST(Collision, AMassOtherThanTheImpulseShowsIsRefused) {
+  const double t_c = collision::predict_linear(kKn, 0.0, kMass / 2.0, "test").contact_time;
+  const std::vector<Frame> frames = exact_collision(0.05 * t_c, 0.03, 0.0);
+  EXPECT_EQ(refusal(frames, 1, kKn, 0.0), "");
+  const std::string wrong = refusal(frames, 1, kKn, 0.0, 2.0 * kDensity);
+  EXPECT_EQ(wrong.substr(0, wrong.find(" times")),
+            "params.density: expected two free spheres of these densities, touched by nothing but "
+            "each other, got m_eff = " +
+                format_number(kMass, 4));
+  EXPECT_TRUE(wrong.ends_with("(another density, a fixed sphere or a drag?)")) << wrong;
+}
+
+// A drag slowed the spheres between the frames and was reported as the law's error in the
+// restitution (-0.014, exit 0): in free flight nothing may change their relative velocity.
+TEST(Collision, ARelativeVelocityChangingInFreeFlightIsRefused) {
+  const double t_c = collision::predict_linear(kKn, kGamma, kMass / 2.0, "test").contact_time;
+  std::vector<Frame> frames = exact_collision(0.02 * t_c, 0.03);
+  frames[1].table<double>("velocity")(0, 0) += 1e-6;
+  EXPECT_EQ(refusal(frames),
+            "frame 1: expected the spheres' relative velocity unchanged in free flight (nothing "
+            "but their contact acting between them), got a change of 1e-06 since the frame "
+            "before (a drag?)");
 }
