@@ -55,9 +55,11 @@ Schema schema() {
   s.real("gamma_n", 42.398, "normal damping rate (times m_eff) the source used")
       .min(0.0)
       .unit("1/time");
+  // The dem source's range: far outside it m_eff leaves the range of doubles (1e308 gave
+  // "k_n/m_eff = -nan", naming no parameter).
   s.reals("density", std::vector<double>{1.91},
           "density of each species, by index, as the source's species")
-      .min(0.0, true)
+      .range(1e-20, 1e20)
       .unit("mass/length^3");
   return s;
 }

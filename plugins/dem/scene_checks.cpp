@@ -75,7 +75,9 @@ std::string described(const Deepest& d, const std::string& how) {
 
 void check_steps_per_period(const PluginContext& ctx, const Drive& drive, double dt) {
   const double steps = 2.0 * std::numbers::pi / (drive.angular_frequency * dt);
-  if (steps >= kMinStepsPerPeriod) return;
+  // Rounding through 2 pi f: frequency 100 at dt 2e-4 gave 49.999... steps, refused as
+  // "50 steps ... expected at least 50".
+  if (steps >= kMinStepsPerPeriod * (1.0 - 1e-12)) return;
   const double f = drive.angular_frequency / (2.0 * std::numbers::pi);
   throw InputError(ctx.param("drive.frequency") + ": " + format_number(f) + " gives " +
                    format_number(steps, 3) + " steps of dt = " + format_number(dt) +
@@ -116,17 +118,21 @@ void check_drive(const PluginContext& ctx, const Scene& scene, const Drive& driv
 void check_gravity(const PluginContext& ctx, const Scene& scene, const Eigen::Vector3d& gravity) {
   const double g = gravity.stableNorm();
   if (g == 0.0) return;
-  // The overlap at which a sphere rests on a wall under its weight.
-  const auto [d, exponent] = with_contact_law(scene.law, [&](auto normal) {
-    using Normal = decltype(normal);
-    const auto rest = [&](const ContactMaterial& m, double mass, double a, double scale) {
-      return Normal::rest_overlap(m.kn, mass * g * scale, 2.0 * a);
-    };
-    return std::pair(deepest_against_walls(scene, gravity / g, rest),
-                     Normal::kWeightPerOverlapExponent);
-  });
+  // The deepest overlap at which a sphere rests on a wall under its weight at |g| = g_abs.
+  const auto deepest_at = [&](double g_abs) {
+    return with_contact_law(scene.law, [&](auto normal) {
+      using Normal = decltype(normal);
+      const auto rest = [&](const ContactMaterial& m, double mass, double a, double scale) {
+        return Normal::rest_overlap(m.kn, mass * g_abs * scale, 2.0 * a);
+      };
+      return std::pair(deepest_against_walls(scene, gravity / g, rest),
+                       Normal::kWeightPerOverlapExponent);
+    });
+  };
+  const auto [d, exponent] = deepest_at(g);
   if (d.fraction <= kMaxOverlapFraction) return;
-  const double g_max = g * std::pow(kMaxOverlapFraction / d.fraction, exponent);
+  // Scaled from a unit weight: from g itself, an infinite overlap (g = 1e308) gave |g| <= 0.
+  const double g_max = std::pow(kMaxOverlapFraction / deepest_at(1.0).first.fraction, exponent);
   throw InputError(ctx.param("gravity") + ": |g| = " + format_number(g, 3) + " would press " +
                    described(d, "resting on") + ": expected |g| <= " + format_number(g_max, 3));
 }

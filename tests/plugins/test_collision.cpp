@@ -253,3 +253,9 @@ TEST(Collision, ARelativeVelocityChangingInFreeFlightIsRefused) {
             "but their contact acting between them), got a change of 1e-06 since the frame "
             "before (a drag?)");
 }
+
+// A density of 1e308 gave m_eff = inf and "k_n/m_eff = -nan", naming no parameter.
+TEST(Collision, ADensityBeyondTheSourcesRangeIsRefusedByName) {
+  EXPECT_EQ(test::input_error_of([] { context(kKn, kGamma, 1e308); }),
+            "test: params.density: expected a list of numbers in [1e-20, 1e+20], got [1e+308]");
+}

@@ -464,6 +464,10 @@ TEST(DemSource, ADriveWithTooFewStepsPerPeriodIsRefused) {
   EXPECT_EQ(refusal({{"initial_file", file.string()},
                      {"drive", {{"amplitude", 1e6}, {"frequency", 1000.0}}}}),
             expected);
+  // The bound itself, 50 steps, rounded through 2 pi f to 49.999...: refused by its own words.
+  EXPECT_EQ(refusal({{"initial_file", file.string()},
+                     {"drive", {{"amplitude", 1e-5}, {"frequency", 100.0}}}}),
+            "no refusal");
   fs::remove(file);
 }
 
@@ -506,6 +510,11 @@ TEST(DemSource, AGravityThatWouldCrushASphereRestingOnTheBaseIsRefused) {
   EXPECT_EQ(refusal({{"initial_file", file.string()}, {"gravity", {0.0, 0.0, -1e300}}}),
             "params.gravity: |g| = 1e+300 would press a sphere of species 0 (radius 0.5) resting "
             "on wall z_low 5e+294 deep (1e+297 % of its radius; a sound run stays within 30 %): "
+            "expected |g| <= 3e+04");
+  // An overlap past the range of doubles gave the bound |g| <= 0.
+  EXPECT_EQ(refusal({{"initial_file", file.string()}, {"gravity", {1e308, 0.0, 0.0}}}),
+            "params.gravity: |g| = 1e+308 would press a sphere of species 0 (radius 0.5) resting "
+            "on wall x_low 5e+302 deep (1e+305 % of its radius; a sound run stays within 30 %): "
             "expected |g| <= 3e+04");
   fs::remove(file);
 }
