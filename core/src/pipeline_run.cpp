@@ -225,11 +225,15 @@ PointOutcome run_point(const Pipeline::Impl& p, std::size_t k, PointPlugins plug
   const std::size_t n_analyzers = plugins.analyzers.size(), n_writers = plugins.writers.size();
   const std::size_t first_writer = 1 + n_analyzers, frames_stage = first_writer + n_writers;
   StageClock clock(frames_stage + (frames_h5 ? 1 : 0));  // as many as stage_names(p)
-  for (;;) {
+  const auto fetch = [&](Frame& into) {
     throw_if_stop_requested();  // a SIGINT or SIGTERM: stop between frames, files whole
-    if (!clock.time(0,
-                    [&] { return located("source", [&] { return plugins.source->next(frame); }); }))
-      break;
+    return clock.time(
+        0, [&] { return located("source", [&] { return plugins.source->next(into); }); });
+  };
+  // With a stride, a frame between the saved ones is saved when it is the last: the next one
+  // is fetched before deciding (a run of 375 frames at stride 10 left out its final state).
+  Frame ahead;
+  for (bool more = fetch(frame); more;) {
     frame.check(where + " frame " + std::to_string(outcome.frames));
     cache.clear();
     for (std::size_t a = 0; a < n_analyzers; ++a) {
@@ -241,7 +245,9 @@ PointOutcome run_point(const Pipeline::Impl& p, std::size_t k, PointPlugins plug
         });
       });
     }
-    if (outcome.frames % p.frame_stride == 0) {
+    const bool looked_ahead = outcome.frames % p.frame_stride != 0;
+    if (looked_ahead) more = fetch(ahead);
+    if (!looked_ahead || !more) {
       for (std::size_t w = 0; w < n_writers; ++w) {
         clock.time(first_writer + w, [&] {
           located("writers[" + std::to_string(w) + "]", [&] { plugins.writers[w]->write(frame); });
@@ -254,6 +260,11 @@ PointOutcome run_point(const Pipeline::Impl& p, std::size_t k, PointPlugins plug
     stream.throw_if_failed();  // a full disk is the output's fault, not an analyzer's
     ++outcome.frames;
     if (!source_reports) progress.advance(1);
+    if (looked_ahead) {
+      std::swap(frame, ahead);
+    } else {
+      more = fetch(frame);
+    }
   }
 
   const std::string prefix = point_prefix(p, k);

@@ -854,6 +854,28 @@ TEST(Pipeline, SavedFramesReadBackAndCarryProvenance) {
   fs::remove_all(*o.out);
 }
 
+// Every frame_stride-th frame is saved, and the last: a run of 375 frames at stride 10 left
+// out its final state, the one a continuation starts from.
+TEST(Pipeline, AStrideSavesEveryKthFrameAndTheLast) {
+  const Registry r = test_registry();
+  Log log;
+  log.set_quiet(true);
+  RunOptions o = quiet_options();
+  for (const auto& [frames, saved] :
+       {std::pair{5, std::vector<std::int64_t>{0, 3, 4}}, {7, {0, 3, 6}}, {1, {0}}}) {
+    const Pipeline p = Pipeline::parse(
+        kGood, "p.json",
+        {"output.frame_stride=3", "source.params.frames=" + std::to_string(frames)}, r);
+    o.out = fresh_dir("stride_" + std::to_string(frames));
+    EXPECT_EQ(p.run(o, log).frames, frames);
+    FrameReader reader(*o.out / "frames.h5");
+    std::vector<std::int64_t> steps;
+    for (long k = 0; k < reader.frames(); ++k) steps.push_back(reader.read(k).step);
+    EXPECT_EQ(steps, saved) << frames << " frames";
+    fs::remove_all(*o.out);
+  }
+}
+
 // A negative species was read by some plugins (h5md, packing) and refused by others (dem).
 TEST(Frame, CheckRefusesANegativeSpecies) {
   Frame f;
