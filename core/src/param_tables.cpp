@@ -53,8 +53,10 @@ std::pair<std::size_t, std::size_t> pair_of(const std::string& key, const Specie
   if (!is_species_name(a) || !is_species_name(b)) {
     std::string list;
     for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
-    // A key from the file is shown quoted only: it may hold any character.
-    const std::string where = at.key_str() == at.str() ? table.str() : at.key_str();
+    // A key from the file is shown quoted only: it may hold any character. One a --set
+    // wrote (or made, setting a value inside it) is named with the --set.
+    const bool from_file = at.key_str() == at.str() && at.origin().empty();
+    const std::string where = from_file ? table.str() : at.key_str();
     throw InputError(where + ": expected keys \"a-b\" naming two species (of " + list +
                      ") or \"*\", got " + json_brief(key));
   }

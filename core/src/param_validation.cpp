@@ -55,7 +55,7 @@ std::string JsonLocation::str() const {
     for (auto o = overrides->rbegin(); o != overrides->rend(); ++o) {
       if (!covers(o->path, path)) continue;
       if (o->origin.empty()) break;
-      return path == o->path ? o->origin : o->origin + ": " + path;
+      return path == o->path && !o->made ? o->origin : o->origin + ": " + path;
     }
   }
   return file + ": " + path;

@@ -18,6 +18,9 @@ bool covers(const std::string& outer, const std::string& path);
 struct Override {
   std::string path;    // "source.params.radius", as JsonLocation paths read
   std::string origin;  // "--set source.params.radius=0", or "" for the file itself
+  // An object the --set made on its way to its value (the file lacked it): messages about
+  // it name the --set, but it is no value the --set gives.
+  bool made = false;
 };
 
 // Where a JSON value sits, for error messages: "pipelines/x.json: analyzers[1].params",

@@ -172,7 +172,10 @@ std::unique_ptr<Writer> frames_file(const Pipeline::Impl& p, std::size_t k, cons
                      {"git_commit", git_commit()},
                      {"seed", p.seed},
                      {"sweep_point", k},
-                     {"sweep_assignment", p.points[k].assignment}};
+                     {"sweep_assignment", p.points[k].assignment},
+                     // The point's pipeline has no sweep: its seeds (point k's, or point 0's
+                     // when shared) are told by these two.
+                     {"sweep_seeds", p.shared_seeds ? "shared" : "per_point"}};
   return std::make_unique<FramesFileWriter>(point_directory(p, k, out) / "frames.h5",
                                             provenance.dump());
 }

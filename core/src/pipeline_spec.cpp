@@ -1,5 +1,6 @@
 // Reading a pipeline: JSON parsing with line/column errors, --set overrides, the
 // top-level schema, the plugins' parameter schemas, and sweep expansion.
+#include <charconv>
 #include <cstdio>
 #include <fstream>
 #include <set>
@@ -63,8 +64,30 @@ SetTarget set_target(const std::vector<std::string>& parts) {
   return {{"sweep", "parameters", key}, JsonLocation{"", "sweep.parameters"}.quoted_key(key).path};
 }
 
-// Applies `--set path=value` and says where the value came from.
-Override apply_set(json& root, const std::string& assignment) {
+// How many of `parts` lead through values `root` already has.
+std::size_t existing_depth(const json& root, const std::vector<std::string>& parts) {
+  const json* node = &root;
+  std::size_t n = 0;
+  for (; n < parts.size(); ++n) {
+    const std::string& p = parts[n];
+    std::size_t k = 0;
+    if (node->is_object() && node->contains(p)) {
+      node = &(*node)[p];
+    } else if (node->is_array() &&
+               std::from_chars(p.data(), p.data() + p.size(), k).ec == std::errc{} &&
+               k < node->size()) {
+      node = &(*node)[k];
+    } else {
+      break;
+    }
+  }
+  return n;
+}
+
+// Applies `--set path=value` and says where the value came from, and where it made the
+// objects leading to it: a message about such an object (contacts made by --set
+// contacts.small-large.mu=0.1 lacking its other pairs) named the file, which has none.
+std::vector<Override> apply_set(json& root, const std::string& assignment) {
   check_utf8(assignment);
   const auto eq = assignment.find('=');
   const std::string where = set_origin(assignment);
@@ -74,8 +97,16 @@ Override apply_set(json& root, const std::string& assignment) {
   // A bare word is a string: --set source.params.lattice=fcc
   const json value =
       parse_strict_json_if_json(text, where, target.parts.size()).value_or(json(text));
+  const std::size_t depth = existing_depth(root, target.parts);
   locate(root, target.parts, where) = value;
-  return {target.path, where};
+  std::vector<Override> made;
+  if (depth + 1 < target.parts.size()) {
+    made.push_back({join_path({target.parts.begin(),
+                               target.parts.begin() + static_cast<std::ptrdiff_t>(depth) + 1}),
+                    where, true});
+  }
+  made.push_back({target.path, where});
+  return made;
 }
 
 // Two --set of one value ran with the last, without a word, where a sweep refuses the same
@@ -86,6 +117,7 @@ Override apply_set(json& root, const std::string& assignment) {
 void refuse_sets_of_one_value(const std::vector<Override>& sets) {
   for (std::size_t b = 1; b < sets.size(); ++b) {
     for (std::size_t a = 0; a < b; ++a) {
+      if (sets[a].made || sets[b].made) continue;
       const std::string &first = sets[a].path, &second = sets[b].path;
       if (!covers(second, first)) continue;  // second neither is first nor holds it
       const std::string what = first == second ? second : second + ", which holds " + first;
@@ -101,7 +133,7 @@ void refuse_sets_the_sweep_replaces(const std::vector<Override>& sets,
                                     const std::vector<std::string>& sweep_paths) {
   for (const Override& set : sets) {
     for (const std::string& swept : sweep_paths) {
-      if (set.origin.empty()) continue;
+      if (set.origin.empty() || set.made) continue;
       // A --set of the object holding a swept value (--set source.params={...}) is
       // replaced there too, in part.
       const bool holds = covers(set.path, swept) && set.path != swept;
@@ -234,7 +266,9 @@ Pipeline Pipeline::parse(const std::string& text, const std::string& origin,
     throw InputError(origin + ": expected a JSON object, got " + json_brief(root));
   auto impl = std::make_unique<Impl>();
   impl->origin = origin;
-  for (const auto& s : sets) impl->overrides.push_back(apply_set(root, s));
+  for (const auto& s : sets) {
+    for (Override& o : apply_set(root, s)) impl->overrides.push_back(std::move(o));
+  }
   refuse_sets_of_one_value(impl->overrides);
   const JsonLocation top = impl->top();
   check_keys(root,

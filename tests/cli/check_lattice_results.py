@@ -48,6 +48,9 @@ with h5py.File(f"{out}/results.h5", "r") as f:
         with h5py.File(f"{out}/point_{k:03d}/frames.h5", "r") as frames:
             provenance = json.loads(frames["granpipe"].attrs["provenance"])
             check_output_dir(provenance["pipeline"], f"point_{k:03d}/frames.h5")
+            if (provenance["sweep_point"], provenance["sweep_seeds"]) != (k, "per_point"):
+                failures.append(f"point_{k:03d}/frames.h5 provenance: point "
+                                f"{provenance['sweep_point']}, seeds {provenance['sweep_seeds']}")
             if provenance["pipeline"]["source"]["params"]["lattice"] != lattice:
                 failures.append(f"point_{k:03d}/frames.h5 provenance names the wrong lattice")
 if failures:
