@@ -462,6 +462,12 @@ void DemSource::finish(Results& results) {
   const double seconds = p.forces + p.integrate + p.neighbour;
   results.add_scalar("particle_steps_per_second", seconds > 0 ? particle_steps / seconds : 0.0,
                      std::nan(""), "1/s", "particle-steps per second of the time-stepping loops");
+  // The pipeline records instruction_set "auto": which path ran is told here (its last bits
+  // differ from another path's, so the same seed gives the same bits only on the same path).
+  results.add_scalar("force_loop_width", doubles_per_vector(engine_->instruction_set()),
+                     std::nan(""), "",
+                     "the force loops' instruction-set path that ran, in doubles per vector: 2 "
+                     "baseline, 4 AVX2, 8 AVX-512 (the paths differ in the last bits)");
 }
 
 }  // namespace granpipe::dem

@@ -99,6 +99,17 @@ const char* label_of(InstructionSet set) {
   }
 }
 
+int doubles_per_vector(InstructionSet set) {
+  switch (set) {
+    case InstructionSet::Avx2:
+      return 4;
+    case InstructionSet::Avx512:
+      return 8;
+    default:
+      return 2;  // SSE2, the x86-64 baseline
+  }
+}
+
 bool runs_here(InstructionSet set) { return compiled(set) && processor_runs(set); }
 
 InstructionSet resolve(InstructionSet requested, const std::string& what) {

@@ -16,6 +16,9 @@ const char* name_of(InstructionSet set);
 // "baseline", "AVX2", "AVX-512": how run.log and the benchmarks name the path that ran.
 const char* label_of(InstructionSet set);
 
+// The path's width, in doubles per vector of the force loops: 2 (baseline), 4, 8.
+int doubles_per_vector(InstructionSet set);
+
 // Whether this build has the path and this processor runs it.
 bool runs_here(InstructionSet set);
 

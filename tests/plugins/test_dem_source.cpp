@@ -394,6 +394,28 @@ TEST(DemSource, AnInstructionSetThisProcessorLacksIsRefusedNamingTheParameter) {
   fs::remove(file);
 }
 
+// The pipeline says "auto": the results say which path ran (its last bits are its own).
+TEST(DemSource, TheResultsNameThePathThatRanByItsWidth) {
+  const fs::path file = start_file();
+  const InstructionSetVariable unset(nullptr);
+  for (const auto& [path, width] : {std::pair{dem::InstructionSet::Baseline, 2},
+                                    {dem::InstructionSet::Avx2, 4},
+                                    {dem::InstructionSet::Avx512, 8}}) {
+    if (!dem::runs_here(path)) continue;
+    const auto ctx = test::make_context(dem::schema(), {{"initial_file", file.string()},
+                                                        {"duration", 0.01},
+                                                        {"instruction_set", dem::name_of(path)}});
+    dem::DemSource source(*ctx);
+    Frame f;
+    while (source.next(f)) {
+    }
+    Results results;
+    source.finish(results);
+    EXPECT_EQ(results.scalars().at("force_loop_width").value, width) << dem::name_of(path);
+  }
+  fs::remove(file);
+}
+
 TEST(DemSource, AMistypedInstructionSetVariableIsRefusedEvenBesideAnExplicitParameter) {
   const fs::path file = start_file();
   for (const char* value : {"AVX2", "garbage", "3"}) {
