@@ -17,13 +17,17 @@ has one, from the best point of a grid of B and tau. Writes, beside the input:
   pooled.<analyzer>.ageing_fits.csv  group, t_w, points, status, A_inf, B, tau with errors
 
 status: 0 fitted, 1 too few points, 2 no convergence, 3 not determined (an error larger than
-its parameter); the values are NaN unless fitted.
+its parameter); the values are NaN unless fitted. Runs given as parts of one set of
+realizations must run one pipeline: a part whose pipeline.json differs from the first's in
+anything but its sweep, the --over value, seed, output, name and description is refused; the
+pooled tables' first line names every part's run (its seed among them).
 
     scripts/pool_ageing.py out/tap3d_ageing
     scripts/pool_ageing.py out/ageing_part1 out/ageing_part2   (realizations run in parts)
     scripts/pool_ageing.py out/ageing_r0 out/ageing_r1 ...       (a run per realization)
 """
 import argparse
+import json
 import math
 import os
 
@@ -131,11 +135,56 @@ def run_realizations(out, analyzer, over):
                     for key, members in by_key.items()}
 
 
+# What may differ between the parts of one set of realizations: the sweep that numbers them,
+# the realization number itself, the seed, the output folder, the name and description.
+PART_KEYS = ("sweep", "seed", "output", "name", "description")
+
+
+def without_part_keys(pipeline, over):
+    """The pipeline as every part of one set of realizations must share it."""
+    kept = {k: v for k, v in pipeline.items() if k not in PART_KEYS}
+    *holder, last = over.split(".")
+    node = kept
+    for part in holder:
+        if not isinstance(node.get(part), dict):
+            return kept
+        node[part] = dict(node[part])
+        node = node[part]
+    node.pop(last, None)
+    return kept
+
+
+def first_difference(a, b, path=""):
+    """The first dotted path where two JSON values differ, or None."""
+    if isinstance(a, dict) and isinstance(b, dict):
+        for key in sorted(set(a) | set(b)):
+            found = first_difference(a.get(key), b.get(key), f"{path}.{key}" if path else key)
+            if found:
+                return found
+        return None
+    return None if a == b else path
+
+
+def refuse_other_pipelines(outs, over):
+    """Parts of other pipelines (another N, another epsilon) pooled as one set of realizations
+    gave one plausible A, exit 0: every part must run the first one's pipeline."""
+    first = without_part_keys(read_pipeline(outs[0]), over)
+    for out in outs[1:]:
+        other = without_part_keys(read_pipeline(out), over)
+        where = first_difference(first, other)
+        if where:
+            refuse(f"{os.path.join(out, 'pipeline.json')}: {where}: expected the value of "
+                   f"{outs[0]} (parts of one set of realizations), found "
+                   f"{json.dumps(value_at(other, where))} against "
+                   f"{json.dumps(value_at(first, where))}")
+
+
 def realization_tables(outs, analyzer, over):
     """The other swept columns and {their values: [(path, header, rows)]} of the ageing tables
     of every realization in the runs `outs` (one pipeline's realizations run in several
     parts, as sweeps or as runs of one realization each); a realization met twice is refused:
     pooled twice, it would weigh double."""
+    refuse_other_pipelines(outs, over)
     others, groups, seen = None, {}, {}
     for out in outs:
         run_others, by_key = run_realizations(out, analyzer, over)
@@ -164,10 +213,17 @@ def main():
     ap.add_argument("--over", default="source.params.replica", help="the swept parameter that numbers the realizations")
     args = ap.parse_args()
     others, groups = realization_tables(args.out, args.analyzer, args.over)
-    provenance, pooled_rows, fit_rows = "", [], []
+    pooled_rows, fit_rows = [], []
+    # Every part's run (its seed among them), not the last table's alone.
+    runs = []
+    for found in groups.values():
+        for _, line, _, _ in found:
+            run = line.lstrip("# ")
+            if run not in runs:
+                runs.append(run)
+    provenance = "# " + " + ".join(runs)
     for gkey, found in sorted(groups.items()):
         group = ", ".join(f"{s.split('.')[-1]}={v:g}" for s, v in zip(others, gkey)) or "all"
-        provenance = found[-1][1]
         rows = pool([(path, header, table) for path, _, header, table in found])
         pooled_rows += [[group, *r] for r in rows]
         for t_w in sorted({r[0] for r in rows}):

@@ -85,6 +85,30 @@ with tempfile.TemporaryDirectory() as out:
     if r.returncode != 2 or r.stderr != (f"{parts[2]}: source.params.replica = 1: expected each "
                                          f"realization once, found it in {parts[1]} too\n"):
         failures.append(f"a realization twice: exit {r.returncode}, {r.stderr!r}")
+    # A part of another pipeline (another N: the helper's N = 100 and 200, epsilon 0.05 and
+    # 0.5, pooled as four realizations, exit 0) is refused; one of another seed is pooled,
+    # and the pooled tables name every part's run.
+    other = os.path.join(out, "part_other")
+    os.makedirs(other)
+    with open(os.path.join(other, "pipeline.json"), "w") as f:
+        json.dump({"source": {"params": {"replica": 2, "N": 200}}}, f)
+    with open(os.path.join(parts[1], "compaction.ageing.csv")) as f:
+        table = f.read().splitlines()[1:]
+    write(other, "compaction.ageing.csv", table)
+    r = subprocess.run([sys.executable, script, parts[0], other], capture_output=True, text=True)
+    if r.returncode != 2 or r.stderr != (f"{other}/pipeline.json: source.params.N: expected the "
+                                         f"value of {parts[0]} (parts of one set of "
+                                         f"realizations), found 200 against null\n"):
+        failures.append(f"a part of another pipeline: exit {r.returncode}, {r.stderr!r}")
+    with open(os.path.join(other, "pipeline.json"), "w") as f:
+        json.dump({"seed": 99, "source": {"params": {"replica": 2}}}, f)
+    with open(os.path.join(other, "compaction.ageing.csv"), "w") as f:
+        f.write("# granpipe seed 99\n" + "\n".join(table) + "\n")
+    r = subprocess.run([sys.executable, script, parts[0], other], capture_output=True, text=True)
+    with open(os.path.join(parts[0], "pooled.compaction.ageing.csv")) as f:
+        first_line = f.readline()
+    if r.returncode != 0 or "granpipe test + granpipe seed 99" not in first_line:
+        failures.append(f"parts of two seeds: exit {r.returncode}, {r.stderr!r}, {first_line!r}")
     os.remove(os.path.join(out, "point_001.compaction.ageing.csv"))
     r = subprocess.run([sys.executable, script, out], capture_output=True, text=True)
     if r.returncode != 2 or "expected the ageing table of source.params.replica = 1, found no file" not in r.stderr:
