@@ -1,5 +1,7 @@
 #include <cstdio>
 #include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "commands.hpp"
 #include "granpipe/frame_store.hpp"
@@ -32,6 +34,25 @@ std::string observable_text(const Frame& f, const Property& p) {
   return buf;
 }
 
+// "run: pipeline tap3d_hysteresis, granpipe 0.1.0, commit 9bf6e14..., seed 3005" (and
+// ", sweep point 2 (per_point seeds)" in a sweep): what a granpipe file says made it; ""
+// for other files.
+std::string run_line(const std::string& provenance) {
+  if (provenance.empty()) return "";
+  const auto p = nlohmann::json::parse(provenance, nullptr, false);
+  if (!p.is_object()) return "run: (provenance unreadable)\n";
+  std::ostringstream s;
+  s << "run: pipeline " << p.value("/pipeline/name"_json_pointer, std::string("?")) << ", granpipe "
+    << p.value("granpipe_version", std::string("?")) << ", commit "
+    << p.value("git_commit", std::string("?")) << ", seed " << p.value("seed", nlohmann::json());
+  if (!p.value("sweep_assignment", nlohmann::json()).empty()) {
+    s << ", sweep point " << p.value("sweep_point", nlohmann::json()) << " ("
+      << p.value("sweep_seeds", std::string("per_point")) << " seeds)";
+  }
+  s << "\n";
+  return s.str();
+}
+
 }  // namespace
 
 void inspect(const std::string& path, long max_rows) {
@@ -41,7 +62,8 @@ void inspect(const std::string& path, long max_rows) {
             << ", dim = " << info.dim << ", particles group \"" << info.group << "\""
             << (info.complete ? "" : ", INCOMPLETE (the writer did not finish)") << "\n"
             << "written by: " << (info.creator.empty() ? "unknown" : info.creator)
-            << (info.granpipe_file ? " (granpipe layout)" : " (plain H5MD)") << "\n";
+            << (info.granpipe_file ? " (granpipe layout)" : " (plain H5MD)") << "\n"
+            << run_line(info.provenance);
   std::vector<Property> particle{*find_standard("position", Scope::Particle)};
   particle.insert(particle.end(), info.columns.begin(), info.columns.end());
   list_columns("particle columns", particle);

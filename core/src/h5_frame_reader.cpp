@@ -580,7 +580,14 @@ void FrameReader::Impl::open(const std::string& group) {
   }
   check_h5md_version();
   const bool extension = h5::is_group(file.id(), L::kExtension);
-  if (extension) check_version();
+  if (extension) {
+    check_version();
+    const h5::Object ext = h5::open_group(file.id(), L::kExtension);
+    if (h5::has_attribute(ext.id(), L::kProvenanceAttr)) {
+      const auto text = h5::read_string_attribute(ext.id(), L::kExtension, L::kProvenanceAttr);
+      if (!text.empty()) info.provenance = text[0];
+    }
+  }
   if (extension && !h5::is_group(file.id(), L::kParticles) && group.empty()) {
     return;  // a granpipe file closed before its first frame
   }

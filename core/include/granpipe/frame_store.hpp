@@ -29,7 +29,8 @@ struct FrameFileInfo {
   int position_bytes = 8;
   int radius_bytes = 8;  // the same for stored radii (contact distances are their sums)
   bool has(std::string_view column) const;
-  std::string creator;  // /h5md/creator name and version
+  std::string creator;     // /h5md/creator name and version
+  std::string provenance;  // a granpipe file's run (JSON: pipeline, commit, seed, ...), else ""
 };
 
 class FrameWriter {
