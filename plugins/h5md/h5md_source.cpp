@@ -178,7 +178,7 @@ bool H5mdSource::next(Frame& frame) {
 // (a file of another tool whose times ran down gave the intruder's lift-offs backwards).
 void H5mdSource::check_step_rises(const Frame& frame, long index) {
   const bool steps_back = last_step_ && frame.step <= *last_step_;
-  if (steps_back || frame.time < last_time_) {
+  if (steps_back || time_order_.runs_back(frame.time)) {
     const bool parts = parts_.parts().size() > 1;
     const std::string place = (parts ? continued_param_ : file_param_) + ": " +
                               parts_.where(index) + ": expected a ",
@@ -188,11 +188,11 @@ void H5mdSource::check_step_rises(const Frame& frame, long index) {
                        (parts ? "the parts are one run, steps rising" : "a run's steps rise") +
                        "), got " + std::to_string(frame.step));
     }
-    throw InputError(place + "time at or after " + format_number(last_time_) + before + "), got " +
-                     format_number(frame.time));
+    throw InputError(place + "time at or after " + format_number(time_order_.last()) + before +
+                     "), got " + format_number(frame.time));
   }
   last_step_ = frame.step;
-  if (!std::isnan(frame.time)) last_time_ = frame.time;
+  time_order_.pass(frame.time);
   last_index_ = index;
 }
 

@@ -4,13 +4,13 @@
 // files (positions and the box; radii from the `radius` parameter). A run split over
 // sessions is read from its parts as one.
 #include <cstdint>
-#include <limits>
 #include <optional>
 #include <string>
 
 #include "granpipe/frame_selection.hpp"
 #include "granpipe/frame_store.hpp"
 #include "granpipe/plugin.hpp"
+#include "granpipe/time_order.hpp"
 #include "run_parts.hpp"
 
 namespace granpipe::h5md {
@@ -45,7 +45,7 @@ class H5mdSource : public Source {
   // Steps rise from frame to frame (one file, or the parts of a run): the last frame read.
   std::string file_param_, continued_param_;
   std::optional<std::int64_t> last_step_;
-  double last_time_ = std::numeric_limits<double>::quiet_NaN();
+  TimeOrder time_order_;
   long last_index_ = -1;
 };
 

@@ -250,12 +250,12 @@ Frame LammpsDumpSource::frame_of(const SnapshotHeader& h) {
 // (a dump whose times ran down gave the intruder's lift-offs backwards, exit 0). An undefined
 // time (NaN) is compared with nothing.
 void LammpsDumpSource::check_time_follows(const Frame& f, const SnapshotHeader& h) {
-  if (f.time < last_time_) {
+  if (time_order_.runs_back(f.time)) {
     throw InputError(h.place.at(h.place.first_line) + "expected a time at or after " +
-                     format_number(last_time_) + " (the snapshot read before it), got " +
+                     format_number(time_order_.last()) + " (the snapshot read before it), got " +
                      format_number(f.time));
   }
-  if (!std::isnan(f.time)) last_time_ = f.time;
+  time_order_.pass(f.time);
 }
 
 bool LammpsDumpSource::next(Frame& frame) {

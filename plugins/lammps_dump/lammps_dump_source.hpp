@@ -8,7 +8,6 @@
 // snapshots before it, with a warning. Contacts with their forces come from dumps local of
 // the same run (pair_file, wall_file; contact_dump.hpp); without them, a warning says when
 // the positions are printed too coarsely for contacts found from them.
-#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -19,6 +18,7 @@
 #include "granpipe/frame_selection.hpp"
 #include "granpipe/plugin.hpp"
 #include "granpipe/stated_container.hpp"
+#include "granpipe/time_order.hpp"
 #include "position_precision.hpp"
 #include "snapshot_header.hpp"
 #include "text_lines.hpp"
@@ -73,7 +73,7 @@ class LammpsDumpSource : public Source {
   // Read when the source is made, so that bad atoms stop the pipeline before it runs.
   std::optional<Frame> first_frame_;
   // The last defined time read (NaN: none yet).
-  double last_time_ = std::numeric_limits<double>::quiet_NaN();
+  TimeOrder time_order_;
 };
 
 }  // namespace granpipe::lammps_dump
