@@ -1,7 +1,12 @@
 #include "memory_check.hpp"
 
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "granpipe/errors.hpp"
@@ -9,7 +14,10 @@
 
 namespace granpipe::dem {
 
-double available_memory() {
+namespace {
+
+// MemAvailable of /proc/meminfo, in bytes; 0 when unknown.
+double machine_available() {
   std::ifstream meminfo("/proc/meminfo");
   std::string line;
   while (std::getline(meminfo, line)) {
@@ -21,6 +29,41 @@ double available_memory() {
   return 0.0;
 }
 
+// What the process's address-space limit (ulimit -v, prlimit --as) leaves of it, in bytes;
+// infinity without a limit.
+double address_space_left() {
+  rlimit limit{};
+  if (getrlimit(RLIMIT_AS, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY)
+    return std::numeric_limits<double>::infinity();
+  std::ifstream statm("/proc/self/statm");
+  double pages = 0.0;
+  statm >> pages;  // the process's size now
+  return std::max(0.0, static_cast<double>(limit.rlim_cur) -
+                           pages * static_cast<double>(sysconf(_SC_PAGESIZE)));
+}
+
+// What the process's cgroup (v2) memory limit leaves, in bytes; infinity without one.
+double cgroup_left() {
+  std::ifstream membership("/proc/self/cgroup");
+  std::string line, group;
+  while (std::getline(membership, line))
+    if (line.rfind("0::", 0) == 0) group = line.substr(3);
+  const std::string dir = "/sys/fs/cgroup" + group;
+  std::ifstream max_file(dir + "/memory.max"), current_file(dir + "/memory.current");
+  double max = 0.0, current = 0.0;
+  if (!(max_file >> max) || !(current_file >> current))  // "max": no limit
+    return std::numeric_limits<double>::infinity();
+  return std::max(0.0, max - current);
+}
+
+}  // namespace
+
+double available_memory() {
+  // A limit below the machine's free memory (a batch job's cgroup, prlimit --as 8 GB)
+  // failed the run with std::bad_alloc after the check had passed it.
+  return std::min({machine_available(), address_space_left(), cgroup_left()});
+}
+
 void check_memory(const std::string& what, double particles) {
   const double available = available_memory();
   const double needed = particles * kBytesPerParticle;
@@ -28,7 +71,8 @@ void check_memory(const std::string& what, double particles) {
   constexpr double kGB = 1e9;
   throw InputError(what + ": " + format_number(particles) + " spheres need about " +
                    format_number(needed / kGB, 3) + " GB (" +
-                   format_number(kBytesPerParticle / 1e3, 2) + " kB each), this machine has " +
+                   format_number(kBytesPerParticle / 1e3, 2) +
+                   " kB each), this machine (or the process's memory limit) has " +
                    format_number(available / kGB, 3) + " GB available: expected at most " +
                    format_number(std::floor(available / kBytesPerParticle), 3) + " spheres");
 }

@@ -15,7 +15,8 @@ namespace granpipe::dem {
 
 inline constexpr double kBytesPerParticle = 2000.0;
 
-// The memory available now (MemAvailable of /proc/meminfo), in bytes; 0 when unknown.
+// The memory available now, in bytes: MemAvailable of /proc/meminfo, or less where the
+// process's address-space limit or its cgroup's memory limit leaves less; 0 when unknown.
 double available_memory();
 
 // Throws InputError starting with `what` (the parameter that sets the count) when

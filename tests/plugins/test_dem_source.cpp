@@ -2,12 +2,14 @@
 // overlap m g / k_n with the base's contact in its frames, and a time step above the
 // shortest contact time is refused before anything runs.
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <limits>
 #include <numbers>
@@ -617,11 +619,29 @@ TEST(DemSource, AScenePastTheAvailableMemoryIsRefusedBeforeAnythingIsAllocated) 
   } catch (const InputError& e) {
     const std::string m = e.what();
     EXPECT_EQ(m.rfind("params.bed.small: 1e+15 spheres need about 2e+09 GB (2 kB each), this "
-                      "machine has ",
+                      "machine (or the process's memory limit) has ",
                       0),
               0u)
         << m;
     EXPECT_NE(m.find(" GB available: expected at most "), std::string::npos) << m;
   }
   EXPECT_NO_THROW(dem::check_memory("params.bed.small", 1000.0));
+}
+
+// Under prlimit --as 8 GB a start of 8e6 spheres passed the check against the machine's
+// 24 GB and failed 22 s later with std::bad_alloc, exit 1.
+TEST(DemSource, TheMemoryCheckHeedsTheProcesssAddressSpaceLimit) {
+  rlimit before{};
+  ASSERT_EQ(getrlimit(RLIMIT_AS, &before), 0);
+  std::ifstream statm("/proc/self/statm");
+  double pages = 0.0;
+  statm >> pages;
+  const double size = pages * static_cast<double>(sysconf(_SC_PAGESIZE)), room = 1e9;
+  rlimit lowered = before;
+  lowered.rlim_cur = static_cast<rlim_t>(size + room);
+  ASSERT_EQ(setrlimit(RLIMIT_AS, &lowered), 0);
+  const double available = dem::available_memory();
+  ASSERT_EQ(setrlimit(RLIMIT_AS, &before), 0);
+  EXPECT_LE(available, room);
+  EXPECT_GT(available, 0.5 * room);
 }
