@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstring>
 #include <iostream>
+#include <new>
 
 #include "commands.hpp"
 #include "granpipe/errors.hpp"
@@ -192,6 +193,13 @@ int main(int argc, char** argv) {
     return kOk;
   } catch (const InputError& e) {
     std::cerr << "granpipe: " << one_line(e.what()) << "\n";
+    return kBadInput;
+  } catch (const std::bad_alloc&) {
+    // A size the input asked for (a file declaring 4e8 particles in 9 MB, a sweep's points,
+    // --threads) past the machine's memory or the process's limit: exit 1 called it ours.
+    std::cerr << "granpipe: out of memory: the input asks for more than this machine (or the "
+                 "process's memory limit) gives: particles, frames, bins, sweep points or "
+                 "--threads\n";
     return kBadInput;
   } catch (const std::exception& e) {
     std::cerr << "granpipe: internal error: " << one_line(e.what()) << "\n";

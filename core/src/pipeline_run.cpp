@@ -8,6 +8,7 @@
 #include <fstream>
 #include <mutex>
 #include <set>
+#include <system_error>
 #include <thread>
 #include <utility>
 #include <vector>
@@ -487,7 +488,15 @@ RunSummary run_in_directory(const Pipeline::Impl& p, const RunOptions& options, 
       }
     };
     std::vector<std::thread> pool;
-    for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(worker);
+    try {
+      for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(worker);
+    } catch (const std::system_error& e) {
+      // Past the process's limits (its memory under prlimit, --threads 128) the pool's
+      // threads joined nothing and the run aborted; the points run on the threads it has.
+      log.warn("--threads " + std::to_string(threads) + ": started " +
+               std::to_string(pool.size() + 1) + " of " + std::to_string(workers) +
+               " threads for the points (" + e.what() + "); the points run on those");
+    }
     worker();
     for (auto& t : pool) t.join();
     progress.finish(std::none_of(errors.begin(), errors.end(),

@@ -68,6 +68,7 @@ void ResultStream::open(const std::filesystem::path& path, const Provenance& pro
 
 void ResultStream::append(std::size_t id, const std::vector<double>& row) {
   std::lock_guard lock(mutex_);
+  h5::silence_error_stack();  // rows come from the points' threads
   if (!impl_->file.valid() || !failure_.empty()) return;
   Declared& t = impl_->tables.at(id);
   if (row.size() != t.columns.size()) return;  // Table::add_row has refused it already
