@@ -213,7 +213,9 @@ ParamValue convert(const nlohmann::json& v, const ParamSpec& s, const JsonLocati
     }
     case ParamType::IntList:
     case ParamType::RealList: {
-      if (!v.is_array() || (s.list_length && v.size() != *s.list_length)) fail(at, s, v);
+      if (!v.is_array() || (s.list_length && v.size() != *s.list_length) ||
+          (s.max_list_length && v.size() > *s.max_list_length))
+        fail(at, s, v);
       std::vector<std::int64_t> ints;
       std::vector<double> reals;
       for (const auto& e : v) {

@@ -302,7 +302,9 @@ std::string describe_expected(const ParamSpec& spec) {
     case ParamType::IntList:
     case ParamType::RealList:
       what = spec.list_length ? "a list of " + std::to_string(*spec.list_length) + " "
-                              : std::string("a list of ");
+             : spec.max_list_length
+                 ? "a list of at most " + std::to_string(*spec.max_list_length) + " "
+                 : std::string("a list of ");
       what += spec.type == ParamType::IntList ? "integers" : "numbers";
       break;
   }

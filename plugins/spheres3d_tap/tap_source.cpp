@@ -194,13 +194,15 @@ Schema schema() {
          "a tap's redeposition stops when <Z> changes by less than this fraction between two "
          "checks")
       .range(0.0, 1.0);
+  // Bounded as the taps are: 2^63 trials a check never ended the first tap.
   s.integer("check_moves", 0,
-            "trial moves between two checks of <Z> (0: N, one sweep, and at least 64)")
-      .min(0);
+            "trial moves between two checks of <Z> (0: N, one sweep, and at least 64); at most "
+            "1e10 (minutes a check)")
+      .range(0, 1e10);
   s.integer("max_checks", 100000,
             "a tap's redeposition stops after this many checks even if <Z> still moves (such taps "
-            "are counted in unconverged_taps)")
-      .min(1);
+            "are counted in unconverged_taps); at most 1e9")
+      .range(1, 1e9);
   s.integer("replica", 0, "independent copy of the run (sweep it to average over realizations)")
       .min(0);
   return s;

@@ -117,11 +117,11 @@ cat >"$work/wide.json" <<'JSON'
  "protocol": "constant", "A": 1.1, "equilibration_taps": 1, "production_taps": 1, "save_every": 1}}}
 JSON
 stopped_inside wide "the source"
-# One check of a tap's redeposition can hold any number of trials: check_moves 1e15 ended
+# One check of a tap's redeposition can hold 1e10 trials (minutes): check_moves 1e15 ended
 # none, and the first SIGTERM waited for ever.
 cat >"$work/endless.json" <<'JSON'
 {"name": "endless", "source": {"plugin": "spheres3d_tap", "params": {"N": 60, "side": 6,
- "taps": 1, "check_moves": 1000000000000000}}}
+ "taps": 1, "check_moves": 10000000000}}}
 JSON
 stopped_inside endless "the tap"
 echo "interruptions recorded in run.log and the marker; the earlier run kept whole; a long frame stopped"

@@ -317,7 +317,21 @@ TEST(Compaction, ANegativeWaitingTimeIsRefused) {
       granpipe::test::input_error_of([] {
         granpipe::test::make_context(granpipe::compaction::schema(), {{"waiting_times", {10, -1}}});
       }),
-      "test: params.waiting_times: expected a list of integers >= 0, got [10,-1]");
+      "test: params.waiting_times: expected a list of at most 1000 integers >= 0, got [10,-1]");
+}
+
+// A list of 1e6 was taken: a warning per missing tap, 70 MB of run.log, past a SIGTERM.
+TEST(Compaction, MoreThanAThousandWaitingTimesAreRefused) {
+  std::vector<std::int64_t> many(1001);
+  for (std::size_t k = 0; k < many.size(); ++k) many[k] = static_cast<std::int64_t>(k);
+  const std::string m = granpipe::test::input_error_of([&] {
+    granpipe::test::make_context(granpipe::compaction::schema(), {{"waiting_times", many}});
+  });
+  EXPECT_EQ(m.substr(0, m.find(", got")),
+            "test: params.waiting_times: expected a list of at most 1000 integers >= 0");
+  many.pop_back();
+  EXPECT_NO_THROW(
+      granpipe::test::make_context(granpipe::compaction::schema(), {{"waiting_times", many}}));
 }
 
 // A t_w given twice entered the ageing table and its fit twice.

@@ -198,3 +198,11 @@ TEST(Lattice, SameSeedSameFramesOtherSeedOtherFrames) {
 }
 
 }  // namespace
+
+// 1e12 frames ran on, writing 10 MB/s, with an ETA of 300 000 hours.
+TEST(Lattice, MoreThan1e8FramesAreRefused) {
+  EXPECT_EQ(granpipe::test::input_error_of([] {
+              run({{"frames", std::int64_t{1000000000000}}});
+            }),
+            "test: params.frames: expected an integer in [1, 100000000], got 1000000000000");
+}

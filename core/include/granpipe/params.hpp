@@ -48,13 +48,14 @@ struct ParamSpec {
   std::optional<ParamValue> default_value;  // none: the parameter is required
   std::optional<double> min, max;           // inclusive bounds on numbers and list elements
   bool min_exclusive = false, max_exclusive = false;
-  std::vector<std::string> choices;         // for Choice
-  std::optional<std::size_t> list_length;   // exact length of a list, if fixed
-  std::string unit;                         // "" for dimensionless
-  std::string doc;                          // one line
-  std::shared_ptr<const Schema> fields;     // Object, Species, Pairs: the schema of each object
-  std::string species;                      // Pairs: the Species parameter its keys name
-  std::optional<std::string> default_json;  // Species, Pairs: the default, as JSON text
+  std::vector<std::string> choices;            // for Choice
+  std::optional<std::size_t> list_length;      // exact length of a list, if fixed
+  std::optional<std::size_t> max_list_length;  // the longest a list may be, if bounded
+  std::string unit;                            // "" for dimensionless
+  std::string doc;                             // one line
+  std::shared_ptr<const Schema> fields;        // Object, Species, Pairs: the schema of each object
+  std::string species;                         // Pairs: the Species parameter its keys name
+  std::optional<std::string> default_json;     // Species, Pairs: the default, as JSON text
   // Where the parameter has an effect (empty: everywhere) and that place in words
   // ("region inner"): elsewhere a value other than the default is refused, as a mistyped
   // parameter is, rather than ignored.
@@ -102,6 +103,10 @@ class Schema {
     }
     Entry& unit(std::string u) {
       s_.unit = std::move(u);
+      return *this;
+    }
+    Entry& max_length(std::size_t n) {
+      s_.max_list_length = n;
       return *this;
     }
     Entry& length(std::size_t n) {
