@@ -135,22 +135,47 @@ def run_realizations(out, analyzer, over):
                     for key, members in by_key.items()}
 
 
-# What may differ between the parts of one set of realizations: the sweep that numbers them,
-# the realization number itself, the seed, the output folder, the name and description.
+# What may differ between the parts of one set of realizations: the sweep that numbers them
+# (and groups them by its other parameters, whose values each part's pipeline.json gives as
+# its point 0's), the realization number, the seed, the output folder, name and description.
 PART_KEYS = ("sweep", "seed", "output", "name", "description")
 
 
-def without_part_keys(pipeline, over):
-    """The pipeline as every part of one set of realizations must share it."""
+def path_parts(path):
+    """"analyzers[0].params.eta" -> ["analyzers", 0, "params", "eta"]."""
+    parts = []
+    for name in path.split("."):
+        key, *indices = name.replace("]", "").split("[")
+        parts.append(key)
+        parts += [int(i) for i in indices if i.isdigit()]
+    return parts
+
+
+def without(value, parts):
+    """A copy of the JSON value without the entry at `parts` (where it has one)."""
+    if not parts:
+        return None
+    head, rest = parts[0], parts[1:]
+    if isinstance(value, dict) and head in value:
+        copy = dict(value)
+        if rest:
+            copy[head] = without(value[head], rest)
+        else:
+            del copy[head]
+        return copy
+    if isinstance(value, list) and isinstance(head, int) and head < len(value):
+        copy = list(value)
+        copy[head] = without(value[head], rest) if rest else None
+        return copy
+    return value
+
+
+def without_part_keys(pipeline, swept):
+    """The pipeline as every part of one set of realizations must share it: without the
+    PART_KEYS and the parameters the realizations are numbered and grouped by (`swept`)."""
     kept = {k: v for k, v in pipeline.items() if k not in PART_KEYS}
-    *holder, last = over.split(".")
-    node = kept
-    for part in holder:
-        if not isinstance(node.get(part), dict):
-            return kept
-        node[part] = dict(node[part])
-        node = node[part]
-    node.pop(last, None)
+    for path in swept:
+        kept = without(kept, path_parts(path))
     return kept
 
 
@@ -165,12 +190,14 @@ def first_difference(a, b, path=""):
     return None if a == b else path
 
 
-def refuse_other_pipelines(outs, over):
+def refuse_other_pipelines(outs, swept):
     """Parts of other pipelines (another N, another epsilon) pooled as one set of realizations
-    gave one plausible A, exit 0: every part must run the first one's pipeline."""
-    first = without_part_keys(read_pipeline(outs[0]), over)
-    for out in outs[1:]:
-        other = without_part_keys(read_pipeline(out), over)
+    gave one plausible A, exit 0: every part must run the first one's pipeline but for the
+    `swept` parameters the realizations are numbered and grouped by."""
+    pipelines = [read_pipeline(out) for out in outs]
+    first = without_part_keys(pipelines[0], swept)
+    for out, pipeline in zip(outs[1:], pipelines[1:]):
+        other = without_part_keys(pipeline, swept)
         where = first_difference(first, other)
         if where:
             refuse(f"{os.path.join(out, 'pipeline.json')}: {where}: expected the value of "
@@ -184,7 +211,6 @@ def realization_tables(outs, analyzer, over):
     of every realization in the runs `outs` (one pipeline's realizations run in several
     parts, as sweeps or as runs of one realization each); a realization met twice is refused:
     pooled twice, it would weigh double."""
-    refuse_other_pipelines(outs, over)
     others, groups, seen = None, {}, {}
     for out in outs:
         run_others, by_key = run_realizations(out, analyzer, over)
@@ -201,6 +227,8 @@ def realization_tables(outs, analyzer, over):
                 if not os.path.exists(path):
                     refuse(f"{path}: expected the ageing table of {over} = {value:g}, found no file")
                 groups.setdefault(key, []).append((path, *read_table(path)))
+    # A run of one point groups by nothing: its swept values are compared as any other.
+    refuse_other_pipelines(outs, {over, *others})
     return others, groups
 
 

@@ -46,8 +46,11 @@ std::string run_line(const std::string& provenance) {
     << p.value("granpipe_version", std::string("?")) << ", commit "
     << p.value("git_commit", std::string("?")) << ", seed " << p.value("seed", nlohmann::json());
   if (!p.value("sweep_assignment", nlohmann::json()).empty()) {
-    s << ", sweep point " << p.value("sweep_point", nlohmann::json()) << " ("
-      << p.value("sweep_seeds", std::string("per_point")) << " seeds)";
+    // Files written before the mode was recorded do not say it (shared seeds are older).
+    const std::string seeds = p.contains("sweep_seeds")
+                                  ? p["sweep_seeds"].get<std::string>() + " seeds"
+                                  : "seed mode not recorded";
+    s << ", sweep point " << p.value("sweep_point", nlohmann::json()) << " (" << seeds << ")";
   }
   s << "\n";
   return s.str();

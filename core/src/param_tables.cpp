@@ -53,10 +53,11 @@ std::pair<std::size_t, std::size_t> pair_of(const std::string& key, const Specie
   if (!is_species_name(a) || !is_species_name(b)) {
     std::string list;
     for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
-    // A key from the file is shown quoted only: it may hold any character. One a --set
-    // wrote (or made, setting a value inside it) is named with the --set.
-    const bool from_file = at.key_str() == at.str() && at.origin().empty();
-    const std::string where = from_file ? table.str() : at.key_str();
+    // A key from where the table came from (the file, or a --set of the whole table) is
+    // shown quoted only: it may hold any character. One a --set of its own made (setting a
+    // value inside it; a --set path holds names only) is named with that --set.
+    const bool own_set = at.origin() != table.origin();
+    const std::string where = own_set ? at.key_str() : table.str();
     throw InputError(where + ": expected keys \"a-b\" naming two species (of " + list +
                      ") or \"*\", got " + json_brief(key));
   }

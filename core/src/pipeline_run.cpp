@@ -539,10 +539,6 @@ RunSummary run_in_directory(const Pipeline::Impl& p, const RunOptions& options, 
   return summary;
 }
 
-}  // namespace
-
-namespace {
-
 // The pipeline as run in `dir`: an --out replaces output.dir in what the run records too
 // (pipeline.json, every file's provenance), which otherwise named a folder never written.
 Pipeline::Impl written_to(const Pipeline::Impl& p, const fs::path& dir) {

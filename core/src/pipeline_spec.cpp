@@ -99,14 +99,14 @@ std::vector<Override> apply_set(json& root, const std::string& assignment) {
       parse_strict_json_if_json(text, where, target.parts.size()).value_or(json(text));
   const std::size_t depth = existing_depth(root, target.parts);
   locate(root, target.parts, where) = value;
-  std::vector<Override> made;
+  std::vector<Override> overrides;
   if (depth + 1 < target.parts.size()) {
-    made.push_back({join_path({target.parts.begin(),
-                               target.parts.begin() + static_cast<std::ptrdiff_t>(depth) + 1}),
-                    where, true});
+    overrides.push_back({join_path({target.parts.begin(),
+                                    target.parts.begin() + static_cast<std::ptrdiff_t>(depth) + 1}),
+                         where, true});
   }
-  made.push_back({target.path, where});
-  return made;
+  overrides.push_back({target.path, where});
+  return overrides;
 }
 
 // Two --set of one value ran with the last, without a word, where a sweep refuses the same

@@ -1,7 +1,5 @@
 #include "granpipe/start_frame.hpp"
 
-#include <algorithm>
-
 #include "granpipe/errors.hpp"
 #include "granpipe/frame_store.hpp"
 

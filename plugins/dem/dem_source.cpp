@@ -17,6 +17,7 @@
 #include "kernels.hpp"
 #include "scene_checks.hpp"
 #include "start.hpp"
+#include "start_checks.hpp"
 #include "time_step.hpp"
 
 namespace granpipe::dem {
@@ -273,6 +274,10 @@ DemSource::DemSource(const PluginContext& ctx) : log_(ctx.log), progress_(ctx.pr
   const Scene scene{model, walls, start.state, settings.law};
   check_gravity(ctx, scene, settings.gravity);
   check_drive(ctx, scene, drive, settings.dt);
+  if (!start.where.empty()) {
+    check_start_motion(start.container, drive, settings.dt, start.state.radius.minCoeff(),
+                       start.where);
+  }
   check_damping(ctx, scene, settings.background_damping, settings.air_damping, settings.dt);
   const double speed = impact_speed(start, drive, settings);
   check_dt(ctx, smallest_contact_time(model, walls, start.state.radius, start.state.species,

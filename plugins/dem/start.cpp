@@ -20,9 +20,11 @@ namespace {
 // 0 in a table of several, without a word: the engine has no default for either.
 void refuse_missing_columns(const StartFrame& start, int species) {
   if (!start.radii_stored)
-    throw InputError(start.where + ": expected radii (/particles/all/radius), got none");
+    throw InputError(start.where +
+                     ": expected radii (a radius element of its particles), got none");
   if (!start.species_stored && species > 1) {
-    throw InputError(start.where + ": expected species (/particles/all/species) for a table of " +
+    throw InputError(start.where +
+                     ": expected species (a species element of its particles) for a table of " +
                      std::to_string(species) + " species, got none");
   }
 }
@@ -57,7 +59,7 @@ Start start_from_file(const PluginContext& ctx, StartFrame start, int species) {
   if (f.has("angular_velocity")) {
     s.angular_velocity = f.table<double>("angular_velocity").matrix().transpose();
   }
-  return {std::move(s), f.container, f.id()};
+  return {std::move(s), f.container, f.id(), where};
 }
 
 // The widest cylinder, in small diameters: the lattice's rows and columns are counted in int.

@@ -3,7 +3,6 @@
 #include <limits>
 #include <sstream>
 
-#include "granpipe/container_check.hpp"
 #include "granpipe/deepest_overlap.hpp"
 #include "granpipe/errors.hpp"
 #include "granpipe/format_number.hpp"
@@ -24,26 +23,17 @@ std::string particle(const Frame& f, Eigen::Index i) {
   return s.str();
 }
 
-// The engine starts its walls at their stated place, at rest, and its clock at 0: a frame
-// saved mid-cycle (bnp_t10.h5, its base 9.1 up and rising) was put back at rest without a
-// word, its bed then 9.1 above the base and falling.
-void refuse_moving_container(const Frame& f, const std::string& where) {
-  const std::string moving = walls_not_at_rest(f.container, 3);
-  if (moving.empty()) return;
-  throw InputError(where + ": expected a container at rest at its stated place (the run " +
-                   "starts its walls there, at rest), got " + moving);
-}
-
 void refuse_outside(const Frame& f, const std::string& where) {
   // An open side holds nothing back (a bed saved in flight may be above its container's top).
-  Frame at_rest = f;
-  Container& c = at_rest.container;
+  Frame stated = f;
+  Container& c = stated.container;
+  c.wall_offset.setZero();  // the start's walls go where the drive puts them at t = 0
   for (int axis = 0; axis < 3; ++axis) {
     if (c.boundary[axis][0] == Boundary::Open)
       c.lo[axis] = -std::numeric_limits<double>::infinity();
     if (c.boundary[axis][1] == Boundary::Open) c.hi[axis] = std::numeric_limits<double>::infinity();
   }
-  const auto out = first_particle_outside(at_rest, kMaxOverlapFraction);
+  const auto out = first_particle_outside(stated, kMaxOverlapFraction);
   if (!out) return;
   throw InputError(
       where + ": " + particle(f, out->particle) + " reaches " + format_number(out->depth) +
@@ -69,9 +59,30 @@ void refuse_deep_pairs(const Frame& f, const std::string& where) {
 
 void check_start_frame(const Frame& f, const std::string& where) {
   if (f.size() == 0) throw InputError(where + ": expected at least one particle, got none");
-  refuse_moving_container(f, where);
   refuse_outside(f, where);
   refuse_deep_pairs(f, where);
+}
+
+// A frame saved mid-cycle (bnp_t10.h5, its base 9.1 up and rising) was put back at rest
+// without a word, its bed then 9.1 above the base and falling. A stopped sine drive leaves
+// A sin(2 pi n), 1e-18 and not 0, which is rounding: within 1e-9 of the smallest radius, and
+// of that length a step for the velocity.
+void check_start_motion(const Container& c, const Drive& drive, double dt, double radius,
+                        const std::string& where) {
+  constexpr double kRounding = 1e-9;
+  const Eigen::Vector3d offset = drive.offset(0.0), velocity = drive.velocity(0.0);
+  const bool placed = (c.wall_offset - offset).norm() <= kRounding * radius;
+  const bool moving =
+      (c.wall_velocity - velocity).norm() <= kRounding * (velocity.norm() + radius / dt);
+  if (placed && moving) return;
+  const auto text = [](const Eigen::Vector3d& v) {
+    return "(" + format_number(v[0]) + ", " + format_number(v[1]) + ", " + format_number(v[2]) +
+           ")";
+  };
+  throw InputError(where + ": expected its walls where the drive puts them at t = 0 (offset " +
+                   text(offset) + ", velocity " + text(velocity) +
+                   "; the run starts them there and its clock at 0), got offset " +
+                   text(c.wall_offset) + " and velocity " + text(c.wall_velocity));
 }
 
 }  // namespace granpipe::dem

@@ -4,15 +4,23 @@
 // apart, and end with exit 0.
 #include <string>
 
+#include "drive.hpp"
 #include "granpipe/frame.hpp"
 
 namespace granpipe::dem {
 
 // Throws InputError, its message starting with `where`, when the frame holds no particle,
-// a sphere reaching past a wall of its container (the walls where the run starts them, at
-// rest) by more than kMaxOverlapFraction of its radius (overlap_limit.hpp), or two spheres
-// overlapping by more than that fraction of the smaller radius. Contacts within it, as a
-// saved frame of a run holds them, pass.
+// a sphere reaching past a wall of its container (the walls at their stated place) by more
+// than kMaxOverlapFraction of its radius (overlap_limit.hpp), or two spheres overlapping by
+// more than that fraction of the smaller radius. Contacts within it, as a saved frame of a
+// run holds them, pass.
 void check_start_frame(const Frame& frame, const std::string& where);
+
+// Throws InputError starting with `where` when the start's container is not where the drive
+// puts it at t = 0 (displaced, or moving at another velocity), within rounding: the run
+// starts its walls there and its clock at 0. `dt` and `radius` (the smallest) scale what
+// rounding is.
+void check_start_motion(const Container& container, const Drive& drive, double dt, double radius,
+                        const std::string& where);
 
 }  // namespace granpipe::dem

@@ -109,6 +109,24 @@ with tempfile.TemporaryDirectory() as out:
         first_line = f.readline()
     if r.returncode != 0 or "granpipe test + granpipe seed 99" not in first_line:
         failures.append(f"parts of two seeds: exit {r.returncode}, {r.stderr!r}, {first_line!r}")
+    # Parts grouped by another swept parameter list its values in another order: their
+    # pipeline.json give point 0's eta, which differs, and is no difference of pipelines.
+    grouped = []
+    for name, replica, etas in (("eta_a", 0, [1e-6, 1e-5]), ("eta_b", 1, [1e-5, 1e-6])):
+        part = os.path.join(out, name)
+        os.makedirs(part)
+        with open(os.path.join(part, "pipeline.json"), "w") as f:
+            json.dump({"source": {"params": {"replica": replica, "eta": etas[0]}},
+                       "sweep": {"parameters": {"source.params.eta": etas,
+                                                "source.params.replica": [replica]}}}, f)
+        write(part, "sweep.points.csv", ["point,source.params.eta,source.params.replica"] +
+              [f"{k},{eta!r},{replica}" for k, eta in enumerate(etas)])
+        for k in range(2):
+            write(part, f"point_00{k}.compaction.ageing.csv", table)
+        grouped.append(part)
+    r = subprocess.run([sys.executable, script, *grouped], capture_output=True, text=True)
+    if r.returncode != 0:
+        failures.append(f"parts grouped by eta in another order: exit {r.returncode}, {r.stderr!r}")
     os.remove(os.path.join(out, "point_001.compaction.ageing.csv"))
     r = subprocess.run([sys.executable, script, out], capture_output=True, text=True)
     if r.returncode != 2 or "expected the ageing table of source.params.replica = 1, found no file" not in r.stderr:

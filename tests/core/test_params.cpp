@@ -254,6 +254,10 @@ TEST(PairParams, KeysNameDeclaredSpecies) {
             "--set source.params.contacts.small_large.mu=1: source.params.contacts.small_large: "
             "expected keys "
             "\"a-b\" naming two species (of small, large) or \"*\", got \"small_large\"");
+  // A table a --set gave whole: its keys are shown quoted only, as the file's.
+  EXPECT_EQ(error_of(with(kAllPairs), {R"(source.params.contacts={"*": {"k_n": 1}, "b d!": {}})"}),
+            R"(--set source.params.contacts={"*": {"k_n": 1}, "b d!": {}}: expected keys "a-b" )"
+            R"(naming two species (of small, large) or "*", got "b d!")");
   EXPECT_EQ(error_of(with(R"({"*": {"k_n": 1}, "small-large": {"mu": -1}})")),
             "p.json: source.params.contacts.small-large.mu: expected a number >= 0, got -1");
   EXPECT_EQ(error_of(with(R"({"*": {"k_n": 1, "m": 0}})")),

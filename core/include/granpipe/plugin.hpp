@@ -120,9 +120,9 @@ class Analyzer {
 };
 
 // Saves frames: the H5MD frame store (frames.h5) is one; VTK or extended XYZ others.
-// Sees every frame (every output.frame_stride-th) after the analyzers, with the columns
-// they published. It names the files it writes with ctx.output_files(); it creates
-// them at the first write (plugins are also made to check a pipeline, which writes nothing).
+// Sees every frame (every output.frame_stride-th and the last) after the analyzers, with the
+// columns they published. It names the files it writes with ctx.output_files(); it creates them at
+// the first write (plugins are also made to check a pipeline, which writes nothing).
 class Writer {
  public:
   virtual ~Writer() = default;
