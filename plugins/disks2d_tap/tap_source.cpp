@@ -7,6 +7,7 @@
 #include <numbers>
 #include <optional>
 #include <sstream>
+#include <utility>
 
 #include "granpipe/errors.hpp"
 #include "granpipe/format_number.hpp"
@@ -153,6 +154,8 @@ Schema schema() {
 namespace {
 
 constexpr double kMaxWidthInDiameters = 1e6;
+// A cooling from A + 1e6 down is absurd whatever its step; below that a step too fine is.
+constexpr double kWidestCoolingSpan = 1e6;
 
 DepositOptions deposit_options(const Params& p) {
   DepositOptions o;
@@ -175,16 +178,24 @@ void check_tap_counts(const PluginContext& ctx) {
         "2 anneal_cycles x anneal_steps x anneal_taps_per_step");
     return;
   }
+  // The message names the parameter that made the count absurd (production_taps was blamed
+  // for an equilibration_taps of 2^63, cool_step for a cool_from of 1e300).
   double cooling = 0.0;
   if (p.real("cool_from") > p.real("A")) {
+    const double span = p.real("cool_from") - p.real("A");
     const double levels =
         TapSchedule::cooling_levels(p.real("cool_from"), p.real("cool_step"), p.real("A"));
-    check_step_count(levels, ctx.param("cool_step"), "cooling levels",
-                     "(cool_from - A) / cool_step");
+    check_step_count(levels, ctx.param(span > kWidestCoolingSpan ? "cool_from" : "cool_step"),
+                     "cooling levels", "(cool_from - A) / cool_step");
     cooling = levels * count("cool_taps_per_step");
   }
+  const std::pair<double, const char*> terms[] = {
+      {cooling, "cool_taps_per_step"},
+      {count("equilibration_taps"), "equilibration_taps"},
+      {count("production_taps"), "production_taps"}};
+  const auto largest = *std::max_element(std::begin(terms), std::end(terms));
   check_step_count(cooling + count("equilibration_taps") + count("production_taps"),
-                   ctx.param("production_taps"), "taps",
+                   ctx.param(largest.second), "taps",
                    "cooling levels x cool_taps_per_step + equilibration_taps + production_taps");
 }
 

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "frame_report.hpp"
+#include "granpipe/format_number.hpp"
 
 namespace granpipe::force_network {
 
@@ -22,7 +23,7 @@ Settings read_settings(const PluginContext& ctx) {
     throw InputError(
         ctx.param("f_max") + ": expected at most " +
         std::to_string(static_cast<long>(kMaxPdfBins)) +
-        " bins of bin_width, got f_max / bin_width = " + std::to_string(s.f_max / s.bin_width));
+        " bins of bin_width, got f_max / bin_width = " + format_number(s.f_max / s.bin_width));
   }
   if (!s.by_pass.empty() && !is_valid_column_name(s.by_pass)) {
     throw InputError(ctx.param("by_pass") +

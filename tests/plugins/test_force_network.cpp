@@ -318,7 +318,7 @@ TEST(ForceNetwork, BadParametersAreRefusedWithTheirPath) {
             "starting with a digit) or \"\", got \"2nd pass\"");
   EXPECT_EQ(refusal(frame_of(kTable), {{"f_max", 1e9}}),
             "params.f_max: expected at most 10000 bins of bin_width, got f_max / bin_width = "
-            "5000000000.000000");
+            "5e+09");
   EXPECT_THROW(test::make_context("force_network", {{"bin_width", 0}}), InputError);
   // f_max 0 with a bin too narrow for the frame's largest f, 2.4: the PDF stopped at its
   // most bins and left the larger forces out of it and its fit, exit 0.

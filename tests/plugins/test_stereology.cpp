@@ -209,14 +209,20 @@ TEST(ProfileMeasure, AStepTooSmallForTheBedIsRefused) {
 }
 
 // The analyzer names the step where the pipeline has it ("analyzers[2].params.step"; the
-// harness's "params.step"), not "stereology.step" whatever its name and place.
+// harness's "params.step"), not "stereology.step" whatever its name and place. A step
+// below 1e-3 R is refused up front: the bins are counted per frame, and 3.6e-6 passed the
+// first frame of a run to be refused at a taller one.
 TEST(StereologyAnalyzer, AStepTooSmallIsNamedWhereThePipelineHasIt) {
-  const auto ctx = granpipe::test::make_context(schema(), {{"step", 1e-12}});
+  EXPECT_EQ(granpipe::test::input_error_of([] {
+              granpipe::test::make_context(schema(), {{"step", 1e-12}});
+            }),
+            "test: params.step: expected a number >= 0.001, got 1e-12");
+  const auto ctx = granpipe::test::make_context(schema(), {{"step", 1e-3}});
   StereologyAnalyzer a(*ctx);
   FrameCache cache;
-  EXPECT_EQ(granpipe::test::input_error_of([&] { a.consume(cubic_layers(8, 10), cache); }),
+  EXPECT_EQ(granpipe::test::input_error_of([&] { a.consume(cubic_layers(1, 5001), cache); }),
             "params.step: expected at most 10000000 bins of the vertical profile, got "
-            "2e+13 (20 in steps of 1e-12)");
+            "1.0002e+07 (10002 in steps of 0.001)");
 }
 
 // A bed lower than bulk_top and a box no wider than two lateral bands: phi_b was the
