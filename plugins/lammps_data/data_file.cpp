@@ -26,12 +26,27 @@ struct Atom {
   Eigen::Vector3d x;
 };
 
+// Far longer than any line of a data file (an atom's is under 200 characters).
+constexpr std::size_t kLongestLine = std::size_t{1} << 20;
+
 // The file's lines, numbered from 1 as an editor shows them.
 class Lines {
  public:
-  explicit Lines(std::istream& in) : in_(in) {}
+  Lines(std::istream& in, const std::string& where) : in_(in), where_(where) {}
   bool next(std::string& line) {
-    if (!std::getline(in_, line)) return false;
+    line.clear();
+    // A file without line ends (5 GB of zeros) was read whole into one line before it was
+    // refused for its missing "N atoms".
+    int c = 0;
+    while ((c = in_.get()) != EOF && c != '\n') {
+      if (line.size() == kLongestLine) {
+        throw InputError(where_ + ": line " + std::to_string(number_ + 1) +
+                         ": expected a line of a LAMMPS data file, got one longer than " +
+                         std::to_string(kLongestLine) + " characters");
+      }
+      line.push_back(static_cast<char>(c));
+    }
+    if (c == EOF && line.empty()) return false;
     if (!line.empty() && line.back() == '\r') line.pop_back();  // written on Windows
     ++number_;
     return true;
@@ -40,6 +55,7 @@ class Lines {
 
  private:
   std::istream& in_;
+  std::string where_;
   long number_ = 0;
 };
 
@@ -76,6 +92,13 @@ void read_box_line(const std::vector<std::string_view>& w, const std::string& li
   }
   for (int k = 0; k < 3 && w.size() == 4; ++k) {
     if (w[2] != kBoxWords[k][0] || w[3] != kBoxWords[k][1]) continue;
+    // Two lines for one axis: the last was taken without a word (a packing fraction of
+    // another box).
+    if (a.box_line[k] != 0) {
+      throw InputError(at + ": expected one \"lo hi " + kBoxWords[k][0] + " " + kBoxWords[k][1] +
+                       "\" line, got a second (the first on line " + std::to_string(a.box_line[k]) +
+                       ")");
+    }
     const auto lo = real_number(w[0]), hi = real_number(w[1]);
     if (!lo || !hi || !std::isfinite(*lo) || !std::isfinite(*hi) || !(*lo < *hi)) {
       throw InputError(at + ": expected \"lo hi " + kBoxWords[k][0] + " " + kBoxWords[k][1] +
@@ -126,6 +149,11 @@ AtomsSection find_atoms_section(Lines& lines, const std::string& where) {
     header = header && !is_section(line);
     if (header) read_box_line(w, line, lines.number(), where, a);
     if (header && w.size() == 2 && w[1] == "atoms") {
+      if (a.count_line != 0) {
+        throw InputError(where + ": line " + std::to_string(lines.number()) +
+                         ": expected one \"N atoms\" line, got a second (the first on line " +
+                         std::to_string(a.count_line) + ")");
+      }
       const auto count = whole_number(w[0]);
       a.count = count ? *count : -1;
       if (a.count < 0) {
@@ -270,7 +298,7 @@ void check_count(const std::vector<Atom>& atoms, const AtomsSection& section,
 }  // namespace
 
 Frame read_atoms(std::istream& in, const std::string& where) {
-  Lines lines(in);
+  Lines lines(in, where);
   const AtomsSection section = find_atoms_section(lines, where);
   std::string next_section;
   std::vector<Atom> list = read_section(lines, section, where, next_section);

@@ -100,6 +100,22 @@ TEST(LammpsData, TheBoxIsReadAndRequired) {
             "yz\": granpipe's containers have right angles");
 }
 
+// A second line for one axis, or a second "N atoms", was taken over the first without a
+// word (a packing fraction of another box: 0.00042 for 0.0066); a file without line ends
+// was read whole into memory before it was refused.
+TEST(LammpsData, HeaderLinesGivenTwiceAndEndlessLinesAreRefused) {
+  const std::string box = "0 4 xlo xhi\n0 4 ylo yhi\n0 4 zlo zhi\n";
+  const std::string atoms = "\nAtoms # sphere\n\n1 1 1 1 0.5 0.5 0.5\n";
+  EXPECT_EQ(refusal("title\n1 atoms\n" + box + "-100 100 xlo xhi\n" + atoms),
+            "x.data: line 6: expected one \"lo hi xlo xhi\" line, got a second (the first on "
+            "line 3)");
+  EXPECT_EQ(refusal("title\n1 atoms\n" + box + "2 atoms\n" + atoms),
+            "x.data: line 6: expected one \"N atoms\" line, got a second (the first on line 2)");
+  EXPECT_EQ(refusal("title\n" + std::string((std::size_t{1} << 20) + 1, '0')),
+            "x.data: line 2: expected a line of a LAMMPS data file, got one longer than 1048576 "
+            "characters");
+}
+
 TEST(LammpsData, AMalformedLineIsNamed) {
   EXPECT_EQ(refusal("title\n1 atoms\n\nAtoms # sphere\n\n1 1 one 1.91 0 0 0\n"),
             "x.data: line 6: expected \"id type diameter density x y z\" (atom_style sphere), "
