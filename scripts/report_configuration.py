@@ -5,7 +5,7 @@ import io
 import os
 
 from report_h5 import (HDF5_ERRORS, Damaged, damaged, member, not_a_file, numbers_dataset,
-                       unreadable)
+                       unreadable, within_reach)
 
 MAX_DRAWN_PARTICLES = 20000  # a configuration picture of more would be pages of SVG
 
@@ -34,6 +34,7 @@ def frame_rows(particles, name, t, n=None):
         raise damaged(ds, f"{n} particles (as many as position)", ds.shape[1])
     if name == "position" and ds.shape[2] not in (2, 3):
         raise damaged(ds, "2 or 3 coordinates", ds.shape[2])
+    within_reach(ds, ds.size // max(ds.shape[0], 1))
     rows = ds[t]
     if name in ("position", "radius"):
         bad = ~np.isfinite(rows) | ((rows < 0) if name == "radius" else False)

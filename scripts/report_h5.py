@@ -196,6 +196,17 @@ def numbers_dataset(parent, name, ndim, integer=False):
     return ds
 
 
+# The most values the report reads from one dataset at once (800 MB): a 24 kB results.h5
+# whose compressed column declared 1e9 rows ended in a numpy MemoryError, exit 1.
+MOST_VALUES = 10**8
+
+
+def within_reach(ds, values):
+    """Refuses to read `values` values of ds beyond MOST_VALUES."""
+    if values > MOST_VALUES:
+        raise damaged(ds, f"at most {MOST_VALUES:.0e} values to read for the report", values)
+
+
 def scalar(parent, name):
     """A scalar result, a 0-D dataset of a number."""
     return float(numbers_dataset(parent, name, 0)[()])
@@ -203,7 +214,9 @@ def scalar(parent, name):
 
 def column(group, name, length=None, why=""):
     """A 1-D dataset of numbers as floats; of `length` values (`why` says why) when given."""
-    values = numbers_dataset(group, name, 1)[()].astype(float)
+    ds = numbers_dataset(group, name, 1)
+    within_reach(ds, ds.size)
+    values = ds[()].astype(float)
     if length is not None and len(values) != length:
         raise damaged(group[name], f"{length} value{'s' * (length != 1)} ({why})", len(values))
     return values

@@ -148,6 +148,17 @@ def no_particles(f):
             g.create_dataset("value", shape=shape, dtype=dtype).attrs.update(attrs)
 
 
+def declared_huge(path):
+    """The dataset at `path` replaced by one declaring 1e9 values and storing none (a 24 kB
+    file ended in a numpy MemoryError, exit 1, under a memory limit)."""
+    def change(f):
+        attrs = dict(f[path].attrs)
+        del f[path]
+        f.create_dataset(path, shape=(10**9,), dtype="f8", chunks=(10**6,),
+                         compression="gzip").attrs.update(attrs)
+    return in_h5("results.h5", change)
+
+
 def garbage(name):
     def damage(run_dir):
         with open(os.path.join(run_dir, name), "wb") as f:
@@ -157,6 +168,9 @@ def garbage(name):
 
 # (name, base run, damage, the message after "<run>/<file>: " as a regex[, the file])
 DAMAGES = [
+    ("column declaring 1e9 values", "arches", declared_huge("arches/per_frame/tap"),
+     r"/arches/per_frame/tap: expected at most 1e\+08 values to read for the report, found "
+     r"1000000000"),
     ("short column", "arches", rewrite("arches/per_frame/tap", lambda v: v[:-1]),
      r"/arches/per_frame/tap: expected 2 values \(as many as frame\), found 1"),
     ("scalar stored as text", "arches", rewrite("arches/arches_per_particle", lambda v: "0.5"),
