@@ -198,7 +198,7 @@ std::vector<std::string> stage_names(const Pipeline::Impl& p) {
 }
 
 PointOutcome run_point(const Pipeline::Impl& p, std::size_t k, PointPlugins plugins,
-                       const ResultStream& stream, Progress& progress, const fs::path& out) {
+                       ResultStream& stream, Progress& progress, const fs::path& out) {
   const bool source_reports = plugins.source->work().reported_by_source;
   const auto frames_h5 = frames_file(p, k, out);  // none when frames are not saved
 
@@ -261,6 +261,7 @@ PointOutcome run_point(const Pipeline::Impl& p, std::size_t k, PointPlugins plug
       if (frames_h5) clock.time(frames_stage, [&] { frames_h5->write(frame); });
     }
     for (const auto& columns : published) remove_published(columns, frame);
+    stream.flush();
     stream.throw_if_failed();  // a full disk is the output's fault, not an analyzer's
     ++outcome.frames;
     if (!source_reports) progress.advance(1);

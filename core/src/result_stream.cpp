@@ -77,10 +77,22 @@ void ResultStream::append(std::size_t id, const std::vector<double>& row) {
       for (std::size_t c = 0; c < row.size(); ++c) {
         h5::append_rows(t.columns[c].id(), t.paths[c], H5T_NATIVE_DOUBLE, &row[c], 1);
       }
-      h5::check(H5Fflush(impl_->file.id(), H5F_SCOPE_GLOBAL), "cannot flush (is the disk full?)");
     });
   } catch (const InputError& e) {
     // Reported by the runner (throw_if_failed), not as the error of the plugin adding the row.
+    failure_ = e.what();
+  }
+}
+
+void ResultStream::flush() {
+  std::lock_guard lock(mutex_);
+  h5::silence_error_stack();  // flushed from the points' threads
+  if (!impl_->file.valid() || !failure_.empty()) return;
+  try {
+    h5::input_errors_of(impl_->name, [&] {
+      h5::check(H5Fflush(impl_->file.id(), H5F_SCOPE_GLOBAL), "cannot flush (is the disk full?)");
+    });
+  } catch (const InputError& e) {
     failure_ = e.what();
   }
 }

@@ -2,7 +2,8 @@
 // results.partial.h5 while a run goes. Streamed tables are declared while the plugins are
 // made; open() creates the file with every one of them (as extendable datasets, in the
 // layout of the final results.h5) and starts HDF5's SWMR mode, in which the file is
-// consistent on disk after every flush; append() adds one row and flushes. The file is
+// consistent on disk after every flush; append() adds one row, and flush() (after each
+// frame) writes the rows out. The file is
 // marked incomplete; a run that finishes writes results.h5 whole and removes it.
 #include <hdf5.h>
 
@@ -33,6 +34,10 @@ class ResultStream : public ResultStreams {
   // Creates `path` (results.h5 of the output directory) with every declared table;
   // `provenance.complete` should be false.
   void open(const std::filesystem::path& path, const Provenance& provenance);
+  // Puts the rows appended so far on disk, for readers and for a run killed after it.
+  // Once a frame, not once a row: a flush goes through every open table, so a row's flush
+  // made a sweep of n points cost n^2 and a frame of 1e7 histogram rows ten minutes.
+  void flush();
   // Closes the file, which stays marked incomplete.
   void close();
   // A write that failed (a full disk) stops the streaming; this throws its InputError.
