@@ -80,6 +80,7 @@ def last_contacts(f, t, n):
         if not 0 <= rows.start <= rows.stop <= len(ds):
             raise damaged(ds, f"rows {rows.start} to {rows.stop} (offset and count of frame {t})",
                           f"{len(ds)} rows")
+    within_reach(force, 3 * (rows.stop - rows.start))
     first, second = i[rows], j[rows]
     for ds, values, bad in ((i, first, (first < 0) | (first >= n)),
                             (j, second, second >= n)):  # j < 0: a wall

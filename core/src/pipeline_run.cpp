@@ -8,7 +8,6 @@
 #include <fstream>
 #include <mutex>
 #include <set>
-#include <system_error>
 #include <thread>
 #include <utility>
 #include <vector>
@@ -491,12 +490,16 @@ RunSummary run_in_directory(const Pipeline::Impl& p, const RunOptions& options, 
     std::vector<std::thread> pool;
     try {
       for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(worker);
-    } catch (const std::system_error& e) {
+    } catch (const std::exception& e) {
       // Past the process's limits (its memory under prlimit, --threads 128) the pool's
       // threads joined nothing and the run aborted; the points run on the threads it has.
-      log.warn("--threads " + std::to_string(threads) + ": started " +
-               std::to_string(pool.size() + 1) + " of " + std::to_string(workers) +
-               " threads for the points (" + e.what() + "); the points run on those");
+      // (std::thread throws system_error, or bad_alloc for its state; so may the warning.)
+      try {
+        log.warn("--threads " + std::to_string(threads) + ": started " +
+                 std::to_string(pool.size() + 1) + " of " + std::to_string(workers) +
+                 " threads for the points (" + e.what() + "); the points run on those");
+      } catch (...) {
+      }
     }
     worker();
     for (auto& t : pool) t.join();

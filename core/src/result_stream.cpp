@@ -82,11 +82,18 @@ void ResultStream::append(std::size_t id, const std::vector<double>& row) {
     // Reported by the runner (throw_if_failed), not as the error of the plugin adding the row.
     failure_ = e.what();
   }
+  // A source adds rows between its frames (a tap's row, frames thousands of taps apart).
+  if (std::chrono::steady_clock::now() - last_flush_ > std::chrono::seconds(1)) flush_locked();
 }
 
 void ResultStream::flush() {
   std::lock_guard lock(mutex_);
   h5::silence_error_stack();  // flushed from the points' threads
+  flush_locked();
+}
+
+void ResultStream::flush_locked() {
+  last_flush_ = std::chrono::steady_clock::now();
   if (!impl_->file.valid() || !failure_.empty()) return;
   try {
     h5::input_errors_of(impl_->name, [&] {

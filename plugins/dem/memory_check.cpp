@@ -16,7 +16,7 @@ namespace granpipe::dem {
 
 namespace {
 
-// MemAvailable of /proc/meminfo, in bytes; 0 when unknown.
+// MemAvailable of /proc/meminfo, in bytes; infinity when unknown (the limits then decide).
 double machine_available() {
   std::ifstream meminfo("/proc/meminfo");
   std::string line;
@@ -26,7 +26,7 @@ double machine_available() {
     double kilobytes = 0.0;
     if (fields >> key >> kilobytes && key == "MemAvailable:") return kilobytes * 1024.0;
   }
-  return 0.0;
+  return std::numeric_limits<double>::infinity();
 }
 
 // What the process's address-space limit (ulimit -v, prlimit --as) leaves of it, in bytes;
@@ -42,6 +42,16 @@ double address_space_left() {
                            pages * static_cast<double>(sysconf(_SC_PAGESIZE)));
 }
 
+// The cgroup's page cache it can drop (a job that wrote large files sits near its limit).
+double reclaimable(const std::string& dir) {
+  std::ifstream stat(dir + "/memory.stat");
+  std::string key;
+  double bytes = 0.0;
+  while (stat >> key >> bytes)
+    if (key == "inactive_file") return bytes;
+  return 0.0;
+}
+
 // What the process's cgroup (v2) memory limit leaves, in bytes; infinity without one.
 double cgroup_left() {
   std::ifstream membership("/proc/self/cgroup");
@@ -53,7 +63,7 @@ double cgroup_left() {
   double max = 0.0, current = 0.0;
   if (!(max_file >> max) || !(current_file >> current))  // "max": no limit
     return std::numeric_limits<double>::infinity();
-  return std::max(0.0, max - current);
+  return std::max(0.0, max - current + reclaimable(dir));
 }
 
 }  // namespace
@@ -61,13 +71,15 @@ double cgroup_left() {
 double available_memory() {
   // A limit below the machine's free memory (a batch job's cgroup, prlimit --as 8 GB)
   // failed the run with std::bad_alloc after the check had passed it.
-  return std::min({machine_available(), address_space_left(), cgroup_left()});
+  const double least = std::min({machine_available(), address_space_left(), cgroup_left()});
+  return std::isinf(least) ? std::numeric_limits<double>::quiet_NaN() : least;
 }
 
 void check_memory(const std::string& what, double particles) {
   const double available = available_memory();
   const double needed = particles * kBytesPerParticle;
-  if (available <= 0.0 || needed <= available) return;
+  // 0 is a limit reached, not an unknown: refused.
+  if (std::isnan(available) || needed <= available) return;
   constexpr double kGB = 1e9;
   throw InputError(what + ": " + format_number(particles) + " spheres need about " +
                    format_number(needed / kGB, 3) + " GB (" +

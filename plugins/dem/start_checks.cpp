@@ -64,16 +64,19 @@ void check_start_frame(const Frame& f, const std::string& where) {
 }
 
 // A frame saved mid-cycle (bnp_t10.h5, its base 9.1 up and rising) was put back at rest
-// without a word, its bed then 9.1 above the base and falling. A stopped sine drive leaves
-// A sin(2 pi n), 1e-18 and not 0, which is rounding: within 1e-9 of the smallest radius, and
-// of that length a step for the velocity.
+// without a word, its bed then 9.1 above the base and falling. A container at rest starts
+// any drive (a sine drive's walls then set off at A w); one moving must move as the drive
+// does at t = 0 (a sine run's first frame). A stopped sine drive leaves A sin(2 pi n),
+// 1e-18 and not 0, which is rounding: within 1e-9 of the smallest radius, and of that
+// length a step for the velocity.
 void check_start_motion(const Container& c, const Drive& drive, double dt, double radius,
                         const std::string& where) {
   constexpr double kRounding = 1e-9;
   const Eigen::Vector3d offset = drive.offset(0.0), velocity = drive.velocity(0.0);
+  const double speed_rounding = kRounding * (velocity.norm() + radius / dt);
   const bool placed = (c.wall_offset - offset).norm() <= kRounding * radius;
-  const bool moving =
-      (c.wall_velocity - velocity).norm() <= kRounding * (velocity.norm() + radius / dt);
+  const bool moving = c.wall_velocity.norm() <= speed_rounding ||
+                      (c.wall_velocity - velocity).norm() <= speed_rounding;
   if (placed && moving) return;
   const auto text = [](const Eigen::Vector3d& v) {
     return "(" + format_number(v[0]) + ", " + format_number(v[1]) + ", " + format_number(v[2]) +

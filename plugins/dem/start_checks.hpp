@@ -17,9 +17,9 @@ namespace granpipe::dem {
 void check_start_frame(const Frame& frame, const std::string& where);
 
 // Throws InputError starting with `where` when the start's container is not where the drive
-// puts it at t = 0 (displaced, or moving at another velocity), within rounding: the run
-// starts its walls there and its clock at 0. `dt` and `radius` (the smallest) scale what
-// rounding is.
+// puts it at t = 0 (displaced, or moving at another velocity than the drive's then; at rest
+// starts any drive), within rounding: the run starts its walls there and its clock at 0. `dt` and
+// `radius` (the smallest) scale what rounding is.
 void check_start_motion(const Container& container, const Drive& drive, double dt, double radius,
                         const std::string& where);
 

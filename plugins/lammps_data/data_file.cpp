@@ -39,7 +39,7 @@ class Lines {
     // refused for its missing "N atoms".
     int c = 0;
     while ((c = in_.get()) != EOF && c != '\n') {
-      if (line.size() == kLongestLine) {
+      if (line.size() == kLongestLine + 1) {  // + 1: a Windows line end's carriage return
         throw InputError(where_ + ": line " + std::to_string(number_ + 1) +
                          ": expected a line of a LAMMPS data file, got one longer than " +
                          std::to_string(kLongestLine) + " characters");
@@ -48,6 +48,11 @@ class Lines {
     }
     if (c == EOF && line.empty()) return false;
     if (!line.empty() && line.back() == '\r') line.pop_back();  // written on Windows
+    if (line.size() > kLongestLine) {
+      throw InputError(where_ + ": line " + std::to_string(number_ + 1) +
+                       ": expected a line of a LAMMPS data file, got one longer than " +
+                       std::to_string(kLongestLine) + " characters");
+    }
     ++number_;
     return true;
   }

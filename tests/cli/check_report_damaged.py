@@ -159,6 +159,20 @@ def declared_huge(path):
     return in_h5("results.h5", change)
 
 
+def contacts_declared_huge(f):
+    """A contact table whose last frame declares 1e9 contacts, stored nowhere (read whole, it
+    ended in a numpy MemoryError under a memory limit)."""
+    frames = len(f["particles/all/position/step"])
+    c = f.require_group("granpipe/contacts")
+    count = np.zeros(frames, dtype="i8")
+    count[-1] = 10**9
+    c.create_dataset("offset", data=np.zeros(frames, dtype="i8"))
+    c.create_dataset("count", data=count)
+    for name, shape in (("i", (10**9,)), ("j", (10**9,)), ("normal_force", (10**9, 3))):
+        c.create_dataset(name, shape=shape, dtype="f8" if name == "normal_force" else "i8",
+                         chunks=(10**5,) + shape[1:], compression="gzip")
+
+
 def garbage(name):
     def damage(run_dir):
         with open(os.path.join(run_dir, name), "wb") as f:
@@ -168,6 +182,9 @@ def garbage(name):
 
 # (name, base run, damage, the message after "<run>/<file>: " as a regex[, the file])
 DAMAGES = [
+    ("contacts declaring 1e9 rows", "arches", in_h5("frames.h5", contacts_declared_huge),
+     r"/granpipe/contacts/normal_force: expected at most 1e\+08 values to read for the report, "
+     r"found 3000000000", "frames.h5"),
     ("column declaring 1e9 values", "arches", declared_huge("arches/per_frame/tap"),
      r"/arches/per_frame/tap: expected at most 1e\+08 values to read for the report, found "
      r"1000000000"),

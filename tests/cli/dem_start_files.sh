@@ -45,6 +45,9 @@ cat >"$work/sine.json" <<JSON
 JSON
 "$exe" "$work/sine.json" --quiet --no-report
 "${run[@]}" after_sine "$work/sine/frames.h5"
+# A container at rest starts any drive, a sine drive's too (its walls set off at A w).
+"${run[@]}" rest_then_sine "$work/no_species.h5" \
+  --set 'source.params.drive={"form": "sine", "amplitude": 0.001, "frequency": 5}'
 "${run[@]}" ids "$work/no_species.h5"
 "$python" - "$work/ids/frames.h5" <<'PY'
 import sys

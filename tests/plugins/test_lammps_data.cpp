@@ -114,6 +114,9 @@ TEST(LammpsData, HeaderLinesGivenTwiceAndEndlessLinesAreRefused) {
   EXPECT_EQ(refusal("title\n" + std::string((std::size_t{1} << 20) + 1, '0')),
             "x.data: line 2: expected a line of a LAMMPS data file, got one longer than 1048576 "
             "characters");
+  // The longest line, written on Windows: its carriage return is no character of it.
+  EXPECT_EQ(refusal(std::string(std::size_t{1} << 20, 't') + "\r\n1 atoms\n" + box + atoms),
+            "no refusal");
 }
 
 TEST(LammpsData, AMalformedLineIsNamed) {
