@@ -79,8 +79,10 @@ void check_start_motion(const Container& c, const Drive& drive, double dt, doubl
                       (c.wall_velocity - velocity).norm() <= speed_rounding;
   if (placed && moving) return;
   const auto text = [](const Eigen::Vector3d& v) {
-    return "(" + format_number(v[0]) + ", " + format_number(v[1]) + ", " + format_number(v[2]) +
-           ")";
+    std::ostringstream s;  // "(" + ... gave GCC 12 a false -Wrestrict
+    s << "(" << format_number(v[0]) << ", " << format_number(v[1]) << ", " << format_number(v[2])
+      << ")";
+    return s.str();
   };
   throw InputError(where + ": expected its walls where the drive puts them at t = 0 (offset " +
                    text(offset) + ", velocity " + text(velocity) +
