@@ -66,6 +66,16 @@ std::string refusal(const nlohmann::json& params) {
   });
 }
 
+// The steps of the frames the source emits with these parameters, at most `most` of them.
+std::vector<std::int64_t> emitted_steps(const nlohmann::json& params, std::size_t most = 1000) {
+  const auto ctx = test::make_context(dem::schema(), params);
+  dem::DemSource source(*ctx);
+  Frame f;
+  std::vector<std::int64_t> steps;
+  while (steps.size() < most && source.next(f)) steps.push_back(f.step);
+  return steps;
+}
+
 // The message of the blow-up that running the source to its end throws, after the frames
 // it emitted (counted in `frames`).
 std::string blow_up(const nlohmann::json& params, int& frames) {
@@ -238,15 +248,12 @@ TEST(DemSource, FramesWithoutADriveHaveNoCycles) {
 // a save_every near 2^63: frames of step 0 without end, the file growing.
 TEST(DemSource, ASaveEveryOfTheLargestIntegerEmitsTheLastFrameOnly) {
   const fs::path file = start_file();
-  const auto ctx = test::make_context(dem::schema(), {{"initial_file", file.string()},
-                                                      {"duration", 0.2},
-                                                      {"save_every", INT64_MAX},
-                                                      {"save_from", 0.01}});
-  dem::DemSource source(*ctx);
-  Frame f;
-  std::vector<std::int64_t> steps;
-  while (source.next(f) && steps.size() < 10) steps.push_back(f.step);
-  EXPECT_EQ(steps, std::vector<std::int64_t>{1000});
+  EXPECT_EQ(emitted_steps({{"initial_file", file.string()},
+                           {"duration", 0.2},
+                           {"save_every", INT64_MAX},
+                           {"save_from", 0.01}},
+                          10),
+            std::vector<std::int64_t>{1000});
   fs::remove(file);
 }
 
@@ -255,14 +262,10 @@ TEST(DemSource, ASaveEveryOfTheLargestIntegerEmitsTheLastFrameOnly) {
 TEST(DemSource, RelaxationIsCheckedAtFramesEvery1000StepsOrLess) {
   for (const int save_every : {250, 1000}) {
     const fs::path file = start_file();
-    const auto ctx = test::make_context(dem::schema(), {{"initial_file", file.string()},
-                                                        {"duration", 1.0},
-                                                        {"save_every", save_every},
-                                                        {"relaxed_kinetic_energy", 1e300}});
-    dem::DemSource source(*ctx);
-    Frame f;
-    std::vector<std::int64_t> steps;
-    while (source.next(f)) steps.push_back(f.step);
+    const std::vector<std::int64_t> steps = emitted_steps({{"initial_file", file.string()},
+                                                           {"duration", 1.0},
+                                                           {"save_every", save_every},
+                                                           {"relaxed_kinetic_energy", 1e300}});
     EXPECT_EQ(steps.back(), 1000) << save_every;  // the first check, on a frame's step
     fs::remove(file);
   }
