@@ -90,4 +90,21 @@ void check_start_motion(const Container& c, const Drive& drive, double dt, doubl
                    text(c.wall_offset) + " and velocity " + text(c.wall_velocity));
 }
 
+void check_start_speeds(const InitialState& start, const IndexArray& id, double dt,
+                        const std::string& where) {
+  for (Eigen::Index i = 0; i < start.velocity.cols(); ++i) {
+    const double speed = start.velocity.col(i).stableNorm();  // norm() squared 1e200 to inf
+    const double most = kMaxOverlapFraction * start.radius[i] / dt;
+    if (speed <= most) continue;  // NaN was refused by the reader
+    std::ostringstream s;
+    s << where << ": particle " << i << " (id " << id[i] << ") moves at " << format_number(speed, 3)
+      << ", " << format_number(speed * dt, 3) << " a step of dt = " << format_number(dt) << " ("
+      << percent(speed * dt / start.radius[i])
+      << " of its radius): expected speeds <= " << format_number(most, 3) << " ("
+      << percent(kMaxOverlapFraction) << " of the radius a step; a longer step cannot resolve "
+      << "its contacts)";
+    throw InputError(s.str());
+  }
+}
+
 }  // namespace granpipe::dem

@@ -6,6 +6,8 @@
 
 #include "drive.hpp"
 #include "granpipe/frame.hpp"
+#include "granpipe/property_table.hpp"
+#include "particles.hpp"
 
 namespace granpipe::dem {
 
@@ -21,6 +23,13 @@ void check_start_frame(const Frame& frame, const std::string& where);
 // starts any drive), within rounding: the run starts its walls there and its clock at 0. `dt` and
 // `radius` (the smallest) scale what rounding is.
 void check_start_motion(const Container& container, const Drive& drive, double dt, double radius,
+                        const std::string& where);
+
+// Throws InputError starting with `where` when a sphere of the start moves farther in one
+// step of `dt` than kMaxOverlapFraction of its radius (10^200 gave "overlaps wall ... by
+// inf %" at step 1, naming neither the file nor the speed): a step that long cannot resolve
+// its contacts. `id` names the particles in the message.
+void check_start_speeds(const InitialState& start, const IndexArray& id, double dt,
                         const std::string& where);
 
 }  // namespace granpipe::dem

@@ -463,6 +463,22 @@ TEST(DemSource, AStartWithASphereOutsideItsContainerIsRefusedNamingItAndTheWall)
   fs::remove(touching);
 }
 
+TEST(DemSource, AStartSpeedASingleStepCannotResolveIsRefusedNamingTheParticle) {
+  // At dt = 2e-4 a sphere of radius 0.5 may move 0.15 a step: up to 750.
+  const std::vector<Eigen::Vector3d> centres{{0.0, 0.0, 0.5}, {0.0, 0.0, 5.0}};
+  const fs::path file = start_file(centres, {{0.0, 0.0, 0.0}, {0.0, 0.0, -1e200}});
+  const std::string m = refusal({{"initial_file", file.string()}});
+  EXPECT_EQ(m.rfind("params.initial_file: ", 0), 0u) << m;
+  EXPECT_EQ(m.substr(m.find(": frame 0: ")),
+            ": frame 0: particle 1 (id 1) moves at 1e+200, 2e+196 a step of dt = 0.0002 "
+            "(4e+198 % of its radius): expected speeds <= 750 (30 % of the radius a step; a "
+            "longer step cannot resolve its contacts)");
+  fs::remove(file);
+  const fs::path fast = start_file(centres, {{0.0, 0.0, 0.0}, {0.0, 0.0, -749.0}});
+  EXPECT_EQ(refusal({{"initial_file", fast.string()}}), "no refusal");
+  fs::remove(fast);
+}
+
 TEST(DemSource, AnEmptyStartIsRefused) {
   const fs::path file = start_file({});
   const std::string m = refusal({{"initial_file", file.string()}});
