@@ -1,7 +1,6 @@
 #include "granpipe/container_check.hpp"
 
 #include <cmath>
-#include <sstream>
 
 #include "granpipe/errors.hpp"
 #include "granpipe/format_number.hpp"
@@ -67,22 +66,11 @@ bool has_wall(const Container& c, int dim, Wall w) {
   return c.boundary[axis][side] == Boundary::Wall;
 }
 
-namespace {
-std::string vector_text(const Eigen::Vector3d& v, int dim) {
-  std::ostringstream s;
-  s.precision(17);
-  s << "(";
-  for (int a = 0; a < dim; ++a) s << (a ? ", " : "") << v[a];
-  s << ")";
-  return s.str();
-}
-}  // namespace
-
 std::string walls_not_at_rest(const Container& c, int dim) {
   if (c.wall_offset.head(dim).norm() != 0.0)
-    return "its walls displaced by " + vector_text(c.wall_offset, dim);
+    return "its walls displaced by " + format_point(c.wall_offset.head(dim), 17);
   if (c.wall_velocity.head(dim).norm() != 0.0)
-    return "its walls moving at " + vector_text(c.wall_velocity, dim);
+    return "its walls moving at " + format_point(c.wall_velocity.head(dim), 17);
   return "";
 }
 

@@ -178,15 +178,12 @@ void CollisionAnalyzer::check_damping() const {
 
 void CollisionAnalyzer::check_impulse() const {
   if (impulse_.holds(m_eff_)) return;
-  const auto text = [](const Eigen::Vector3d& x) {
-    return "(" + format_number(x[0], 4) + ", " + format_number(x[1], 4) + ", " +
-           format_number(x[2], 4) + ")";
-  };
   throw InputError(density_param_ + ": expected two free spheres of these densities, " +
                    "touched by nothing but each other, got m_eff = " + format_number(m_eff_, 4) +
                    " times their relative velocity's change " +
-                   text(impulse_.momentum_change(m_eff_)) + " against their contact's impulse " +
-                   text(impulse_.impulse()) + " (another density, a fixed sphere or a drag?)");
+                   format_point(impulse_.momentum_change(m_eff_), 4) +
+                   " against their contact's impulse " + format_point(impulse_.impulse(), 4) +
+                   " (another density, a fixed sphere or a drag?)");
 }
 
 void CollisionAnalyzer::finish(Results& results) {

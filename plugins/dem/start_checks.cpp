@@ -16,10 +16,8 @@ namespace {
 std::string percent(double fraction) { return format_number(100.0 * fraction, 3) + " %"; }
 
 std::string particle(const Frame& f, Eigen::Index i) {
-  std::ostringstream s;
-  s << "particle " << i << " (id " << f.id()[i] << ") at (" << format_number(f.position()(i, 0))
-    << ", " << format_number(f.position()(i, 1)) << ", " << format_number(f.position()(i, 2))
-    << ")";
+  std::ostringstream s;  // "particle " + ... gave GCC 12 a false -Wrestrict
+  s << "particle " << i << " (id " << f.id()[i] << ") at " << format_point(f.position().row(i));
   return s.str();
 }
 
@@ -78,16 +76,10 @@ void check_start_motion(const Container& c, const Drive& drive, double dt, doubl
   const bool moving = c.wall_velocity.norm() <= speed_rounding ||
                       (c.wall_velocity - velocity).norm() <= speed_rounding;
   if (placed && moving) return;
-  const auto text = [](const Eigen::Vector3d& v) {
-    std::ostringstream s;  // "(" + ... gave GCC 12 a false -Wrestrict
-    s << "(" << format_number(v[0]) << ", " << format_number(v[1]) << ", " << format_number(v[2])
-      << ")";
-    return s.str();
-  };
   throw InputError(where + ": expected its walls where the drive puts them at t = 0 (offset " +
-                   text(offset) + ", velocity " + text(velocity) +
+                   format_point(offset) + ", velocity " + format_point(velocity) +
                    "; the run starts them there and its clock at 0), got offset " +
-                   text(c.wall_offset) + " and velocity " + text(c.wall_velocity));
+                   format_point(c.wall_offset) + " and velocity " + format_point(c.wall_velocity));
 }
 
 void check_start_speeds(const InitialState& start, const IndexArray& id, double dt,

@@ -7,6 +7,7 @@
 #include "granpipe/container.hpp"
 #include "granpipe/container_check.hpp"
 #include "granpipe/errors.hpp"
+#include "granpipe/format_number.hpp"
 #include "sphere_grid.hpp"
 
 namespace granpipe::spheres3d_tap {
@@ -67,9 +68,8 @@ void check_inside(const std::string& where, const std::vector<Eigen::Vector3d>& 
       for (int a = 0; a < 2; ++a)
         out = out || x[i][a] < r - slack || x[i][a] > box.side - r + slack;
     if (out) {
-      throw InputError(where + ": sphere " + std::to_string(i) + " at (" + number(x[i].x()) + ", " +
-                       number(x[i].y()) + ", " + number(x[i].z()) +
-                       ") reaches through the bottom or a wall (radius " + number(r) + ")");
+      throw InputError(where + ": sphere " + std::to_string(i) + " at " + format_point(x[i], 17) +
+                       " reaches through the bottom or a wall (radius " + number(r) + ")");
     }
   }
 }

@@ -1,7 +1,9 @@
-// Numbers in messages: %g with the digits asked for.
+// Numbers and points in messages: %g with the digits asked for.
 #include <gtest/gtest.h>
 
+#include <Eigen/Core>
 #include <cmath>
+#include <vector>
 
 #include "granpipe/format_number.hpp"
 
@@ -15,4 +17,13 @@ TEST(FormatNumber, IsPercentGWithTheDigitsAskedFor) {
   EXPECT_EQ(format_number(0.1, 17), "0.10000000000000001");
   EXPECT_EQ(format_number(std::nan("")), "nan");
   EXPECT_EQ(format_number(-INFINITY), "-inf");
+}
+
+TEST(FormatPoint, WritesEveryCoordinateAsFormatNumberDoes) {
+  EXPECT_EQ(format_point(Eigen::Vector3d(0.1, -2.0, 1e-9)), "(0.1, -2, 1e-09)");
+  EXPECT_EQ(format_point(Eigen::Vector3d(1.0 / 3.0, 0.0, 0.0).head(2), 4), "(0.3333, 0)");
+  Eigen::ArrayXXd rows(2, 3);
+  rows << 1, 2, 3, 4.5, std::nan(""), INFINITY;
+  EXPECT_EQ(format_point(rows.row(1)), "(4.5, nan, inf)");
+  EXPECT_EQ(format_point(std::vector<double>{}), "()");
 }
