@@ -2,8 +2,10 @@
 
 #include <filesystem>
 #include <optional>
+#include <string>
 #include <system_error>
 
+#include "granpipe/container.hpp"
 #include "granpipe/errors.hpp"
 
 namespace granpipe::h5md {
@@ -43,6 +45,26 @@ void require_other_file(const std::vector<std::string>& files,
                        ", the file " + names[j] + " names");
     }
   }
+}
+
+bool same_container(const Container& a, const Container& b) {
+  return a.shape == b.shape && a.lo == b.lo && a.hi == b.hi && a.boundary == b.boundary &&
+         a.cylinder_radius == b.cylinder_radius && a.cylinder_center == b.cylinder_center &&
+         a.wall_offset == b.wall_offset && a.wall_velocity == b.wall_velocity;
+}
+
+// How a later part's first frame differs from the saved frame it says it started from, or
+// "" where it does not: the same positions with other ids, species, walls or clock were
+// read as one run (ids renumbered mid-run, a periodic side turned into a wall).
+std::string what_differs(const Frame& saved, const Frame& start) {
+  if ((saved.position().array() != start.position().array()).any() ||
+      (saved.radius() != start.radius()).any())
+    return "another packing";
+  if ((saved.id() != start.id()).any()) return "other particle ids";
+  if ((saved.species() != start.species()).any()) return "other species";
+  if (!same_container(saved.container, start.container)) return "another container";
+  if (saved.time != start.time) return "another time";
+  return "";
 }
 
 }  // namespace
@@ -98,9 +120,9 @@ void RunParts::append(std::size_t part, const std::string& name) {
                      "the parts before it hold (not a continuation of them; a part holds first "
                      "the frame it started from, which a run saved without its start lacks)");
   }
-  if ((saved->position().array() != start.position().array()).any() ||
-      (saved->radius() != start.radius()).any()) {
-    throw InputError(not_continued + "the parts before it hold, got another packing at " +
+  const std::string difference = what_differs(*saved, start);
+  if (!difference.empty()) {
+    throw InputError(not_continued + "the parts before it hold, got " + difference + " than " +
                      where(frames() - 1) + " (not a continuation of it)");
   }
   for (long i = 1; i < reader.frames(); ++i) order_.push_back({part, i});

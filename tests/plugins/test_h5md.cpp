@@ -4,8 +4,10 @@
 
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <optional>
+#include <string>
 
 #include "granpipe/frame_store.hpp"
 #include "granpipe/property.hpp"
@@ -446,8 +448,39 @@ TEST_F(RunPartsTest, AnotherPackingAtTheJoinIsRefused) {
   EXPECT_EQ(error_of([&] { return joined(a, {moved}); }),
             "params.continued_in[0]: " + moved.string() +
                 " starts at step 20, expected a frame that the parts before it hold, got another "
-                "packing at " +
+                "packing than " +
                 a.string() + ": frame 2 (not a continuation of it)");
+}
+
+TEST_F(RunPartsTest, TheSamePositionsWithOtherIdsSpeciesContainerOrTimeAreRefused) {
+  const fs::path a = write_part("a.h5", 0, 2, 1);
+  // Part a's frame 2 (step 20) with one thing changed.
+  const auto join = [&](const std::string& name, const std::function<void(Frame&)>& change) {
+    const fs::path p = write_part(name, 2, 2, 2);
+    Frame f = FrameReader(p.string()).read(0);
+    change(f);
+    fs::remove(p);
+    FrameWriter w(p, "{}");
+    w.append(f);
+    w.close();
+    return error_of([&] { return joined(a, {p}); });
+  };
+  const auto refused = [&](const std::string& name, const std::string& difference) {
+    return "params.continued_in[0]: " + (dir_ / name).string() +
+           " starts at step 20, expected a frame that the parts before it hold, got " + difference +
+           " than " + a.string() + ": frame 2 (not a continuation of it)";
+  };
+  EXPECT_EQ(join("ids.h5", [](Frame& f) { f.id() += 100; }),
+            refused("ids.h5", "other particle ids"));
+  EXPECT_EQ(join("species.h5", [](Frame& f) { f.species()[1] = 1; }),
+            refused("species.h5", "other species"));
+  EXPECT_EQ(join("walls.h5",
+                 [](Frame& f) {
+                   f.container.boundary[0] = {Boundary::Wall, Boundary::Wall};
+                 }),
+            refused("walls.h5", "another container"));
+  EXPECT_EQ(join("time.h5", [](Frame& f) { f.time = 50.0; }), refused("time.h5", "another time"));
+  EXPECT_EQ(join("same.h5", [](Frame&) {}), "(no InputError)");
 }
 
 TEST_F(RunPartsTest, OtherParticlesAreRefused) {
