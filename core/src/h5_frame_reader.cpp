@@ -8,6 +8,7 @@
 #include <fstream>
 #include <functional>
 #include <limits>
+#include <mutex>
 #include <optional>
 #include <unordered_map>
 
@@ -191,6 +192,10 @@ struct FrameReader::Impl {
   std::vector<std::int64_t> steps;
   std::vector<double> times;
   std::array<bool, 3> periodic{};
+  // Along walled axes of another tool's box: walls at [-L/2, L/2] (else [0, L]), as the
+  // first frame's centres decide (centred_axes).
+  mutable std::array<bool, 3> centred{};
+  mutable std::once_flag centred_decided;
   std::optional<ContainerSeries> container_series;
   std::vector<ContactColumn> contact_columns;
   std::vector<std::int64_t> contact_offset, contact_count;
@@ -204,6 +209,7 @@ struct FrameReader::Impl {
   std::optional<ElementColumn> open_column(const std::string& base, const std::string& name);
   void open_observables();
   void open_box(const std::string& base);
+  void check_length_units() const;
   hsize_t rows(const std::string& path, const h5::Shape& item, h5::Object& out);
   void open_container(hsize_t& frames);
   hsize_t open_contacts(hsize_t& frames);
@@ -213,10 +219,13 @@ struct FrameReader::Impl {
   void keep_frames_held(hsize_t& frames, hsize_t rows, const std::string& path) const;
   void check_contacts_in_order(hsize_t frames, hsize_t contact_rows) const;
   void map_foreign_elements();
+  Frame read_particles(long k) const;
   Frame read(long k) const;
   std::vector<double> edge_lengths(long k) const;
   void check_edges_agree(long k, const Container& c) const;
   Container box_container(long k, const Frame& f) const;
+  const std::array<bool, 3>& centred_axes() const;
+  void place_walls(Container& c, int axis, const Frame& f, long k) const;
   Container container_at(long k) const;
   void read_contacts(long k, Frame& f) const;
 };
@@ -600,6 +609,7 @@ void FrameReader::Impl::open(const std::string& group) {
   open_position(base);
   open_box(base);
   open_columns(base);
+  check_length_units();
   if (ours) {
     open_observables();
     settle_frames();
@@ -614,24 +624,44 @@ void FrameReader::Impl::open(const std::string& group) {
   for (const ContactColumn& c : contact_columns) info.contact_columns.push_back(c.property);
 }
 
+// H5MD states a unit per element, and granpipe computes with the numbers as stored:
+// positions in nm beside box edges in angstrom gave a packing fraction 1000 times off with
+// exit 0. The lengths the frame is built from must state one unit, or none.
+void FrameReader::Impl::check_length_units() const {
+  std::string unit, stated_by;
+  const auto consider = [&](const h5::Element& e) {
+    if (!h5::has_attribute(e.dataset(), "unit")) return;
+    const std::string u = h5::read_string_attribute(e.dataset(), e.path(), "unit").at(0);
+    if (stated_by.empty()) {
+      unit = u;
+      stated_by = e.path();
+    } else if (u != unit) {
+      throw h5::Error(e.path() + "@unit: expected \"" + unit + "\", the unit of " + stated_by +
+                      " (granpipe reads lengths as stored, in one unit), got \"" + u + "\"");
+    }
+  };
+  consider(*position);
+  if (edges) consider(*edges);
+  for (const ElementColumn& c : columns)
+    if (c.property.name == "radius") consider(c.element);
+}
+
 // H5MD stores a box's edge lengths but not its origin. Periodic sides need none (positions
 // are wrapped where used); walls do: they go at [0, L] or, as some codes centre their
-// boxes, [-L/2, L/2], whichever holds every particle centre. Anything else is refused
-// rather than measured against walls in the wrong place.
+// boxes, [-L/2, L/2], whichever holds every particle centre of the first frame ([0, L]
+// where both do), and there in every frame: placed frame by frame, the walls of one file
+// jumped by L/2 between two frames. Centres outside are refused rather than measured
+// against walls in the wrong place.
 namespace {
-void place_walls(Container& c, int a, const Frame& f, const std::string& file,
-                 const std::string& dataset, long k) {
+// Whether the walls along `a` go at [-L/2, L/2] for these centres; throws where neither
+// placement holds them.
+bool centred_walls(double length, int a, const Frame& f, const std::string& file,
+                   const std::string& dataset, long k) {
   // The frame check names the particle, where min and max of a NaN depend on its place.
   if (!f.position().col(a).allFinite()) f.check(file + ": frame " + std::to_string(k));
   const double lo = f.position().col(a).minCoeff(), hi = f.position().col(a).maxCoeff();
-  const double length = c.hi[a];
-  for (double origin : {0.0, -0.5 * length}) {
-    if (lo >= origin && hi <= origin + length) {
-      c.lo[a] = origin;
-      c.hi[a] = origin + length;
-      return;
-    }
-  }
+  if (lo >= 0.0 && hi <= length) return false;
+  if (lo >= -0.5 * length && hi <= 0.5 * length) return true;
   // Digits enough to tell the centres from the nearer placement's bounds.
   const double bottom = lo < 0.0 ? -0.5 * length : 0.0, top = lo < 0.0 ? 0.5 * length : length;
   throw h5::Error(dataset + ": frame " + std::to_string(k) +
@@ -640,6 +670,38 @@ void place_walls(Container& c, int a, const Frame& f, const std::string& file,
                   format_apart(lo, bottom) + " to " + format_apart(hi, top));
 }
 }  // namespace
+
+// The first frame's placement along each walled axis, decided once.
+const std::array<bool, 3>& FrameReader::Impl::centred_axes() const {
+  std::call_once(centred_decided, [&] {
+    const Frame first = read_particles(0);
+    const std::vector<double> length = edge_lengths(0);
+    for (int a = 0; a < info.dim; ++a) {
+      if (!periodic[a] && first.size() > 0)
+        centred[a] = centred_walls(length[a], a, first, name, edges->path(), 0);
+    }
+  });
+  return centred;
+}
+
+void FrameReader::Impl::place_walls(Container& c, int a, const Frame& f, long k) const {
+  const double length = c.hi[a];
+  const bool centred_here = centred_walls(length, a, f, name, edges->path(), k);
+  const bool centred_first = centred_axes()[a];
+  c.lo[a] = centred_first ? -0.5 * length : 0.0;
+  c.hi[a] = c.lo[a] + length;
+  if (centred_here == centred_first) return;
+  const Eigen::ArrayXd x = f.position().col(a);
+  // Frame k fits the other placement only: its centres may still fit this one.
+  if (x.minCoeff() >= c.lo[a] && x.maxCoeff() <= c.hi[a]) return;
+  throw h5::Error(edges->path() + ": frame " + std::to_string(k) +
+                  ": expected particle centres inside the box of edge " + format_number(length) +
+                  " along " + "xyz"[a] + " where frame 0 puts its walls, [" +
+                  format_number(c.lo[a]) + ", " + format_number(c.hi[a]) + "], got " +
+                  format_apart(x.minCoeff(), c.lo[a]) + " to " +
+                  format_apart(x.maxCoeff(), c.hi[a]) +
+                  " (H5MD stores no origin: walls that move by L/2 between frames are refused)");
+}
 
 std::vector<double> FrameReader::Impl::edge_lengths(long k) const {
   const int d = info.dim;
@@ -697,7 +759,7 @@ Container FrameReader::Impl::box_container(long k, const Frame& f) const {
     c.hi[a] = length[a];
     const Boundary b = periodic[a] ? Boundary::Periodic : Boundary::Wall;
     c.boundary[a] = {b, b};
-    if (!periodic[a] && f.size() > 0) place_walls(c, a, f, name, edges->path(), k);
+    if (!periodic[a] && f.size() > 0) place_walls(c, a, f, k);
   }
   return c;
 }
@@ -770,7 +832,8 @@ void FrameReader::Impl::read_contacts(long k, Frame& f) const {
   check_partners(f, contact_columns[0].path, contact_columns[1].path, contact_offset[k], k);
 }
 
-Frame FrameReader::Impl::read(long k) const {
+// Frame k without its container.
+Frame FrameReader::Impl::read_particles(long k) const {
   Frame f;
   f.resize(info.particles, info.dim);
   read_element(*position, k, f.particles.column(0));
@@ -783,6 +846,11 @@ Frame FrameReader::Impl::read(long k) const {
     read_element(o.element, k, f.observables.add(o.property));
   f.step = steps[k];
   if (!times.empty()) f.time = times[k];
+  return f;
+}
+
+Frame FrameReader::Impl::read(long k) const {
+  Frame f = read_particles(k);
   if (!ours) {
     f.container = box_container(k, f);
     return f;

@@ -616,6 +616,28 @@ TEST_F(FrameStore, AnotherToolsClockShorterThanItsValuesIsRefused) {
   }
 }
 
+// Lengths are read as stored: positions and box edges in different units gave a packing
+// fraction 1000 times off.
+TEST_F(FrameStore, LengthsInDifferentUnitsAreRefusedNamingBoth) {
+  const auto with_units = [&](const std::string& name, const std::string& position,
+                              const std::string& edges) {
+    const fs::path p = file(name);
+    write_foreign(p, false);
+    Id f(H5Fopen(p.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
+    Id value(H5Dopen2(f, "particles/atoms/position/value", H5P_DEFAULT));
+    put_string_attribute(value, "unit", {position});
+    Id box_edges(H5Dopen2(f, "particles/atoms/box/edges", H5P_DEFAULT));
+    if (!edges.empty()) put_string_attribute(box_edges, "unit", {edges});
+    return p;
+  };
+  EXPECT_EQ(reader_error(with_units("mixed.h5", "nm", "angstrom")),
+            "/particles/atoms/box/edges@unit: expected \"nm\", the unit of "
+            "/particles/atoms/position/value (granpipe reads lengths as stored, in one unit), got "
+            "\"angstrom\"");
+  EXPECT_EQ(reader_error(with_units("same.h5", "nm", "nm")), "no error");
+  EXPECT_EQ(reader_error(with_units("one_stated.h5", "nm", "")), "no error");
+}
+
 // H5MD boxes have no origin: walls go where the particles are, at [0, L] or [-L/2, L/2].
 TEST_F(FrameStore, WallsOfAnotherToolsCentredBoxHoldItsParticles) {
   const fs::path centred = file("centred.h5");
@@ -640,8 +662,10 @@ TEST_F(FrameStore, WallsOfAnotherToolsCentredBoxHoldItsParticles) {
 }
 
 namespace {
-// A plain H5MD file of one frame: two particles at `x` in a walled box of edge 10.
-void write_two_in_a_walled_box(const fs::path& p, const double (&x)[1][2][3]) {
+// A plain H5MD file of T frames (steps 0, 1, ...): two particles at `x` in a walled box of
+// edge 10.
+template <std::size_t T>
+void write_two_in_a_walled_box(const fs::path& p, const double (&x)[T][2][3]) {
   Id f(H5Fcreate(p.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT));
   Id particles(make_group(f, "particles"));
   Id all(make_group(particles, "all"));
@@ -650,11 +674,32 @@ void write_two_in_a_walled_box(const fs::path& p, const double (&x)[1][2][3]) {
   const double edges[3] = {10.0, 10.0, 10.0};
   put_dataset(box, "edges", H5T_NATIVE_DOUBLE, {3}, edges);
   Id position(make_group(all, "position"));
-  put_dataset(position, "value", H5T_NATIVE_DOUBLE, {1, 2, 3}, x);
-  const std::int64_t step = 0;
-  put_dataset(position, "step", H5T_NATIVE_INT64, {1}, &step);
+  put_dataset(position, "value", H5T_NATIVE_DOUBLE, {T, 2, 3}, x);
+  std::int64_t steps[T];
+  for (std::size_t k = 0; k < T; ++k) steps[k] = static_cast<std::int64_t>(k);
+  put_dataset(position, "step", H5T_NATIVE_INT64, {T}, steps);
 }
 }  // namespace
+
+// The walls go where the first frame's centres put them, in every frame: placed frame by
+// frame, the same walls went at [0, 10] in frame 0 and [-5, 5] in frame 1.
+TEST_F(FrameStore, WallsOfAnotherToolsBoxStayWhereTheFirstFramePutsThem) {
+  const auto two_frames = [&](const std::string& name, double second_x) {
+    const fs::path p = file(name);
+    const double x[2][2][3] = {{{6.0, 2.0, 2.0}, {8.0, 5.0, 5.0}},
+                               {{second_x, 2.0, 2.0}, {4.0, 5.0, 5.0}}};
+    write_two_in_a_walled_box(p, x);
+    return p;
+  };
+  const fs::path jump = two_frames("jump.h5", -0.5);  // fits [-5, 5] only
+  EXPECT_EQ(reader_error(jump),
+            "/particles/all/box/edges: frame 1: expected particle centres inside the box of "
+            "edge 10 along x where frame 0 puts its walls, [0, 10], got -0.5 to 4 (H5MD stores "
+            "no origin: walls that move by L/2 between frames are refused)");
+  const FrameReader r(two_frames("stays.h5", 0.5));
+  EXPECT_EQ(r.read(1).container.lo[0], 0.0);
+  EXPECT_EQ(r.read(1).container.hi[0], 10.0);
+}
 
 // Walls are placed from the particle centres: a NaN among them is reported by the frame
 // check, on its own axis, not as a box of range nan to nan (or on another axis).
