@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <cstdlib>
 #include <optional>
+#include <sstream>
+#include <string>
 
 #include "granpipe/errors.hpp"
 #include "granpipe/version.hpp"
@@ -327,6 +329,14 @@ void FrameWriter::append(const Frame& frame) {
       w.create_datasets(frame);
       h5::check(H5Fstart_swmr_write(w.file.id()), "cannot start SWMR writing (is the disk full?)");
     });
+  } else if (l.particles != w.layout->particles) {
+    // An input's count may change (a dump of a pouring run); frames.h5 holds one.
+    std::ostringstream s;
+    s << w.name << ": frame " << w.frames << " (step " << frame.step << ") has " << l.particles
+      << " particles, the first frame " << w.layout->particles
+      << ": expected one particle count in a frames file (with output.save_frames false, "
+         "frames whose count changes are analysed unsaved)";
+    throw InputError(s.str());
   } else if (!(l == *w.layout)) {
     throw InternalError(w.name + ": frame " + std::to_string(w.frames) + " has " + describe(l) +
                         ", but every frame of one file must match the first (" +

@@ -252,6 +252,20 @@ TEST_F(FrameStore, NonFinitePositionsAreStoredAsGiven) {
   expect_same_frame(f, FrameReader(p).read(0));
 }
 
+// A dump of a pouring run changes its count: an input's doing, refused as such (it was an
+// internal error, exit 1).
+TEST_F(FrameStore, AFrameOfAnotherParticleCountIsRefusedAsInput) {
+  const fs::path p = file("count.h5");
+  FrameWriter w(p, "{}");
+  w.append(make_frame(0, 3, 5));
+  const Frame fewer = make_frame(1, 3, 4);
+  EXPECT_EQ(test::input_error_of([&] { w.append(fewer); }),
+            p.string() + ": frame 1 (step " + std::to_string(fewer.step) +
+                ") has 4 particles, the first frame 5: expected one particle count in a frames "
+                "file (with output.save_frames false, frames whose count changes are analysed "
+                "unsaved)");
+}
+
 TEST_F(FrameStore, WriterThatNeverClosedLeavesAnIncompleteButReadableFile) {
   const fs::path p = file("open.h5");
   {
@@ -284,7 +298,7 @@ TEST_F(FrameStore, WriterRefusesAnExistingFile) {
 TEST_F(FrameStore, FramesOfOneFileMustMatchTheFirst) {
   FrameWriter w(file("mixed.h5"), "{}");
   w.append(make_frame(0, 3, 5));
-  EXPECT_THROW(w.append(make_frame(1, 3, 6)), InternalError);
+  EXPECT_THROW(w.append(make_frame(1, 3, 6)), InputError);  // the count: the input's doing
   EXPECT_THROW(w.append(make_frame(1, 2, 5)), InternalError);
   EXPECT_THROW(w.append(make_frame(1, 3, 5, {false, true, true, true})), InternalError);
   w.append(make_frame(1, 3, 5));
