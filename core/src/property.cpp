@@ -94,4 +94,15 @@ bool is_valid_column_name(std::string_view name) {
   });
 }
 
+bool is_reserved_column_name(std::string_view name, Scope scope) {
+  switch (scope) {
+    case Scope::Particle:
+      return name == "box";
+    case Scope::Contact:
+      return name == "offset" || name == "count";
+    default:
+      return false;
+  }
+}
+
 }  // namespace granpipe

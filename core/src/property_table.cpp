@@ -91,10 +91,11 @@ Column& PropertyTable::add(const Property& property) {
     c->handed_out_ = true;
     return *c;
   }
-  if (!is_valid_column_name(property.name)) {
-    throw InternalError(
-        "\"" + property.name +
-        "\" is not a column name (letters, digits and _, not starting with a digit)");
+  if (!is_valid_column_name(property.name) ||
+      is_reserved_column_name(property.name, property.scope)) {
+    throw InternalError("\"" + property.name +
+                        "\" is not a column name (letters, digits and _, not starting with a "
+                        "digit, and not a name the frames file keeps for itself)");
   }
   columns_.push_back(std::make_unique<Column>(property, rows_, dim_));
   return *columns_.back();

@@ -114,10 +114,12 @@ void keep_the_others(const ColumnFinder& find, AtomColumns& c, const std::string
     const std::string name = kept_name(c.names[k]);
     const bool standard = find_standard(name, Scope::Particle) != nullptr;
     const auto [other, fresh] = kept.emplace(name, c.names[k]);
-    if (!is_valid_column_name(name) || standard || !fresh) {
-      const std::string why = standard ? "a standard column's name"
-                              : !fresh ? "the name of column \"" + other->second + "\""
-                                       : "not a column name";
+    const bool reserved = is_reserved_column_name(name, Scope::Particle);
+    if (!is_valid_column_name(name) || standard || !fresh || reserved) {
+      const std::string why = standard   ? "a standard column's name"
+                              : !fresh   ? "the name of column \"" + other->second + "\""
+                              : reserved ? "the name of the frames file's box"
+                                         : "not a column name";
       throw InputError(at + "expected a column name granpipe can keep, got \"" + c.names[k] +
                        "\" (kept as \"" + name + "\": " + why + ")");
     }

@@ -437,6 +437,14 @@ TEST_F(LammpsDump, OtherColumnsAreKeptUnderTheirNames) {
   EXPECT_EQ(f.get<double>("c_coord_1")[1], 6.0);           // id 7
 }
 
+// A column "box" passed the header and failed at the first frame's save, naming the frames
+// file and not the dump.
+TEST_F(LammpsDump, AColumnNamedAsTheFramesFilesBoxIsRefusedAtItsHeader) {
+  EXPECT_EQ(refusal(snapshot(0, atoms(), {"id", "type", "x", "y", "z", "radius", "box"})),
+            "atoms.dump: timestep 0, line 9: expected a column name granpipe can keep, got "
+            "\"box\" (kept as \"box\": the name of the frames file's box)");
+}
+
 TEST_F(LammpsDump, ATriclinicBoxIsRefused) {
   std::string text = snapshot(0, atoms(), kPlain);
   text.replace(text.find("pp pp ff"), 8, "xy xz yz pp pp ff");

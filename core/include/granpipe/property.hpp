@@ -64,4 +64,9 @@ const Property* find_standard(std::string_view name, Scope scope);
 // with a digit.
 bool is_valid_column_name(std::string_view name);
 
+// A name the frames file gives a dataset of its own beside the columns of this scope
+// ("box" beside the particles' columns, "offset" and "count" beside the contacts'): a
+// column of that name cannot be stored.
+bool is_reserved_column_name(std::string_view name, Scope scope);
+
 }  // namespace granpipe
