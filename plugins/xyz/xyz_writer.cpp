@@ -10,6 +10,9 @@ namespace {
 std::string xyz_name(const std::string& column) {
   if (column == "position") return "pos";
   if (column == "velocity") return "velo";
+  // Readers key the properties by name: a dump's column "pos" or "velo" written as such
+  // would be taken for the positions or velocities.
+  if (column == "pos" || column == "velo") return column + "_column";
   return column;
 }
 

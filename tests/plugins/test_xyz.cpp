@@ -42,6 +42,17 @@ TEST(Xyz, CommentLineListsTheBoxItsOriginThePeriodicSidesAndEveryColumn) {
             "supports:I:2 pbc=\"T T F\" Time=1.5 Step=7");
 }
 
+TEST(Xyz, AColumnOfTheNameOfPositionsOrVelocitiesIsWrittenApart) {
+  Frame f = two_disks();
+  for (const char* name : {"pos", "velo"})
+    f.particles.add({name, Scope::Particle, ValueType::Real, 1, "", ""});
+  const std::string line = xyz::comment_line(f);
+  EXPECT_NE(line.find("Properties=pos:R:3:radius:R:1:id:I:1:species:I:1:supports:I:2:"
+                      "pos_column:R:1:velo_column:R:1 "),
+            std::string::npos)
+      << line;
+}
+
 // A vibrated container's walls move by wall_offset; a periodic side does not.
 TEST(Xyz, TheOriginIsWhereTheWallsAreAtTheFrame) {
   Frame f = two_disks();
