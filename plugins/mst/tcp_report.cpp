@@ -67,13 +67,19 @@ std::int64_t unproven(const MstOptions& o, const TcpReport& r) {
 // coordinate (or box side), above the rounding of a centre distance computed from such
 // coordinates (a few units) and below any difference of lengths that is not rounding near
 // the origin. Without it an SC lattice moved by 0.1 selected 248 contacts in pass 2 instead
-// of 239.
-double tie_length(const Frame& f) {
+// of 239. Far enough out it reaches the lengths themselves (a whole diameter at 1e14, every
+// length tied, pass 2 selecting nothing): refused there.
+double tie_length(const Frame& f, const std::string& where) {
+  constexpr double kTieSpacings = 64.0;
   double largest = largest_coordinate(f);
   for (int a = 0; a < f.dim; ++a) {
     largest = std::max({largest, std::abs(f.container.lo[a]), std::abs(f.container.hi[a])});
   }
-  return 64.0 * double_spacing(largest);
+  if (f.size() > 0) {
+    require_fine_positions(largest, kTieSpacings, 2.0 * f.radius().minCoeff(),
+                           "smallest contact distance", where);
+  }
+  return kTieSpacings * double_spacing(largest);
 }
 
 }  // namespace
@@ -96,7 +102,7 @@ TcpReport tcp_report(const Frame& frame, FrameCache& cache, const MstOptions& op
   std::vector<std::uint32_t> number_of_row(row_of.size());
   for (std::uint32_t k = 0; k < n; ++k) number_of_row[row_of[k]] = k;
   Multipass mst(n, renumbered(std::move(edges), number_of_row), options.elongation,
-                tie_length(frame));
+                tie_length(frame, where));
 
   std::vector<ContactPairs::Pair> selected;  // contacting edges selected so far, as rows
   for (int p = 1; p <= options.passes; ++p) {

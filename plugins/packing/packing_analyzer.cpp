@@ -93,8 +93,11 @@ double mean_over(const IntArray& z, const std::vector<char>& in, long count) {
 // more, to count them. Before, number_density and z_mean of one lattice jumped with its
 // radius (x (2R)^3: 1, 1.728 or 0.512). A region spanning a whole period stays: the centres
 // are wrapped into it, and moved it would lose those wrapped just below its top.
+constexpr double kFaceRounding = 64.0;  // spacings of doubles a face is moved by at least
+
 Region moved_down(const Frame& frame, Region r, double diameter) {
-  const double shift = std::max(1e-9 * diameter, 64.0 * double_spacing(largest_coordinate(frame)));
+  const double shift =
+      std::max(1e-9 * diameter, kFaceRounding * double_spacing(largest_coordinate(frame)));
   for (int a = 0; a < frame.dim; ++a) {
     const Container& c = frame.container;
     if (c.periodic(a) && r.hi[a] - r.lo[a] >= c.length(a)) continue;
@@ -145,6 +148,9 @@ PackingMeasurement measure_packing(const Frame& frame, FrameCache& cache,
   }
   PackingMeasurement m;
   m.diameter = mean_diameter(frame);
+  // Moved by more, the region's faces miscount centres (4 of 16 at 1e14 from the origin).
+  require_fine_positions(largest_coordinate(frame), kFaceRounding, m.diameter, "mean diameter",
+                         "packing: " + frame_name(frame));
   m.region = packing_region(frame, s);
   const Region& region = m.region;
   const double volume = region.volume();
@@ -167,8 +173,9 @@ PackingMeasurement measure_packing(const Frame& frame, FrameCache& cache,
     check_bin_count((h.top - h.base) / m.diameter, s.profile_step, s.params + ".profile_step",
                     "cuts of the profile");
     const int count = static_cast<int>(std::ceil((h.top - h.base) / step - 1e-9));
-    // A step beyond the bed left the profile empty, exit 0.
-    if (count < 1) {
+    // A step beyond the bed left the profile empty, exit 0; one past its height, a single
+    // cut above it (phi 0 at half the step).
+    if (step > (h.top - h.base) * (1.0 + 1e-9)) {
       throw InputError(s.params + ".profile_step: expected at most the bed's height (" +
                        format_number((h.top - h.base) / m.diameter) + " diameters), got " +
                        format_number(s.profile_step) + ": the profile would hold no cut");

@@ -204,6 +204,21 @@ TEST(Mst, LatticeTiesDoNotDependOnWhereTheFrameLies) {
   EXPECT_EQ(selections_by_id(image, r), selections_by_id(f, reference));
 }
 
+// At 1e14 from the origin the tie (64 spacings) is a whole diameter: every length tied, and
+// pass 2 selected nothing, exit 0.
+TEST(Mst, PositionsRoundedToAFractionOfAContactAreRefused) {
+  Frame f = cubic_lattice(3);
+  f.position().array() += 1e14;
+  f.container = Container::open_top_box(3, Eigen::Vector3d::Constant(1e14),
+                                        Eigen::Vector3d::Constant(1e14 + 3.0));
+  FrameCache cache;
+  EXPECT_EQ(granpipe::test::input_error_of(
+                [&] { tcp_report(f, cache, options(Candidates::Cutoff), "frame 0"); }),
+            "frame 0: positions up to 1e+14 from the origin are rounded to 0.015625: expected a "
+            "rounding allowance (64 x that, 1) within 0.001 of the smallest contact distance "
+            "(1); move the origin into the packing");
+}
+
 TEST(Mst, PassOneTcpsAreTreesOnTheContactNetworksParticles) {
   // A jittered cubic lattice of touching spheres: contacts by distance, every contact
   // shorter than every other pair, so pass 1 finds each network's particles exactly.

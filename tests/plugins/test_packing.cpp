@@ -479,6 +479,10 @@ TEST(Packing, StepsThatDoNotFitTheBedAreRefused) {
   EXPECT_EQ(granpipe::test::input_error_of([&] { measure(f, huge); }),
             "packing.profile_step: expected at most the bed's height (4 diameters), got 1e+308: "
             "the profile would hold no cut");
+  huge.profile_step = 5.0;
+  EXPECT_EQ(granpipe::test::input_error_of([&] { measure(f, huge); }),
+            "packing.profile_step: expected at most the bed's height (4 diameters), got 5: "
+            "the profile would hold no cut");
   // Just past the limit the count read as the limit itself ("got 1e+07").
   PackingSettings barely;
   barely.cuts_step = 4.0 / 10000001.0;
@@ -498,6 +502,28 @@ TEST(Packing, StepsThatDoNotFitTheBedAreRefused) {
   PackingSettings fine;
   fine.profile_step = fine.cuts_step = 1e-3;
   EXPECT_NEAR(measure(f, fine).phi_cuts, measure(f).phi, 1e-3);
+}
+
+// At 1e14 from the origin a double's spacing is 1/64 of a diameter, and the 64 of them that
+// move the region's faces down counted 9 centres of 16.
+TEST(Packing, PositionsRoundedToAFractionOfADiameterAreRefused) {
+  Frame far = stacks({4, 4, 4, 4}, 3, 2);
+  for (const double offset : {1e14, 1e6}) {
+    Frame f = far;
+    f.position().leftCols(2) += offset;
+    f.container.lo.head(2).array() += offset;
+    f.container.hi.head(2).array() += offset;
+    PackingSettings s;
+    s.tolerance = 0.05;
+    if (offset == 1e6) {
+      EXPECT_EQ(measure(f, s).centres, 16);
+      continue;
+    }
+    EXPECT_EQ(granpipe::test::input_error_of([&] { measure(f, s); }),
+              "packing: frame at step 0: positions up to 1e+14 from the origin are rounded to "
+              "0.015625: expected a rounding allowance (64 x that, 1) within 0.001 of the mean "
+              "diameter (1); move the origin into the packing");
+  }
 }
 
 // A region between particle centres (the gap at the middle of four touching columns of a
