@@ -15,4 +15,11 @@ void check_bin_count(double extent, double step, const std::string& what, const 
                    format_number(step, 15) + ")");
 }
 
+void check_step_fits(double extent, double step, const std::string& what,
+                     const std::string& extent_name) {
+  if (step <= extent * (1.0 + 1e-9)) return;
+  throw InputError(what + ": expected at most " + extent_name + " (" + format_number(extent) +
+                   "), got " + format_number(step) + ": a single bin would reach past it");
+}
+
 }  // namespace granpipe

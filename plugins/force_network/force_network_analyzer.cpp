@@ -4,6 +4,7 @@
 #include <string>
 
 #include "frame_report.hpp"
+#include "granpipe/bin_count.hpp"
 #include "granpipe/format_number.hpp"
 
 namespace granpipe::force_network {
@@ -25,6 +26,7 @@ Settings read_settings(const PluginContext& ctx) {
         std::to_string(static_cast<long>(kMaxPdfBins)) +
         " bins of bin_width, got f_max / bin_width = " + format_number(s.f_max / s.bin_width));
   }
+  if (s.f_max > 0.0) check_step_fits(s.f_max, s.bin_width, ctx.param("bin_width"), "f_max");
   if (!s.by_pass.empty() && !is_valid_column_name(s.by_pass)) {
     throw InputError(ctx.param("by_pass") +
                      ": expected a contact column name (letters, digits "

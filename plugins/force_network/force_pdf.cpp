@@ -21,10 +21,11 @@ std::vector<double> pdf_edges(const std::vector<double>& f, double f_max, double
     if (bins * width < largest) bins += 1.0;  // the quotient rounded down to a whole number
     f_max = std::clamp(bins, 1.0, kMaxPdfBins) * width;
   }
-  const auto bins = static_cast<std::size_t>(std::max(1.0, std::round(f_max / width)));
+  // f_max rounded up to whole bins: bins of f_max / round(f_max / width) were not the
+  // bin_width asked for (0.1667 for 0.2).
+  const auto bins = static_cast<std::size_t>(std::max(1.0, std::ceil(f_max / width - 1e-9)));
   std::vector<double> edges(bins + 1);
-  for (std::size_t k = 0; k <= bins; ++k)
-    edges[k] = f_max * static_cast<double>(k) / static_cast<double>(bins);
+  for (std::size_t k = 0; k <= bins; ++k) edges[k] = width * static_cast<double>(k);
   return edges;
 }
 

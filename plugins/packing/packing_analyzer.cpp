@@ -172,14 +172,10 @@ PackingMeasurement measure_packing(const Frame& frame, FrameCache& cache,
                                      region, s.params + ".top");
     check_bin_count((h.top - h.base) / m.diameter, s.profile_step, s.params + ".profile_step",
                     "cuts of the profile");
+    // A step past the bed's height left a single cut above it (phi 0 at half the step).
+    check_step_fits((h.top - h.base) / m.diameter, s.profile_step, s.params + ".profile_step",
+                    "the bed's height in diameters");
     const int count = static_cast<int>(std::ceil((h.top - h.base) / step - 1e-9));
-    // A step beyond the bed left the profile empty, exit 0; one past its height, a single
-    // cut above it (phi 0 at half the step).
-    if (step > (h.top - h.base) * (1.0 + 1e-9)) {
-      throw InputError(s.params + ".profile_step: expected at most the bed's height (" +
-                       format_number((h.top - h.base) / m.diameter) + " diameters), got " +
-                       format_number(s.profile_step) + ": the profile would hold no cut");
-    }
     m.profile = cut_fractions(frame, region, frame.dim - 1, h.base, step, count);
   }
   m.phi_cuts = std::nan("");

@@ -110,6 +110,7 @@ double checked_bin_width(const PluginContext& ctx, const std::string& width,
                          const std::string& top) {
   const double w = ctx.params.real(width);
   check_bin_count(ctx.params.real(top), w, ctx.param(width), "bins up to " + top);
+  check_step_fits(ctx.params.real(top), w, ctx.param(width), top);
   return w;
 }
 

@@ -43,6 +43,8 @@ ProfileMeasurement measure_profiles(const Frame& frame, const ProfileSettings& s
   const double step = s.step * r;
   check_bin_count((highest_top(frame) - base) / r, s.step, s.params + ".step",
                   "bins of the vertical profile");
+  check_step_fits((highest_top(frame) - base) / r, s.step, s.params + ".step",
+                  "the bed's height in radii");
   const int count = std::max(1, static_cast<int>(std::ceil((highest_top(frame) - base) / step)));
   m.vertical = bin_fractions(frame, box, v, base, step, count);
 
@@ -50,6 +52,7 @@ ProfileMeasurement measure_profiles(const Frame& frame, const ProfileSettings& s
   zone.hi[v] = base + m.global.height_c;
   const double width = box.hi[0] - box.lo[0];
   check_bin_count(width / r, s.step, s.params + ".step", "bins of the transversal profile");
+  check_step_fits(width / r, s.step, s.params + ".step", "the box's width in radii");
   const int across = std::max(1, static_cast<int>(std::lround(width / step)));
   m.transversal_step = width / across / r;
   m.transversal = bin_fractions(frame, zone, 0, box.lo[0], width / across, across);

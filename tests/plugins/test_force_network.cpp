@@ -262,6 +262,19 @@ TEST(ForceNetwork, WithoutLoadedContactsTheStatisticsAreUndefinedNotZero) {
 // last one full), which Eq. (11) cannot follow: the minimiser fails, and that is a status,
 // with finite (zero) values.
 // Not fitted is undefined: NaN values and errors, never a 0 that reads as a result.
+// Bins of f_max / round(f_max / bin_width) were 0.1667 wide for 0.2 asked.
+TEST(ForceNetwork, PdfBinsAreBinWidthWideUpToFMaxRoundedUp) {
+  const std::vector<double> f{0.1, 0.3};
+  EXPECT_EQ(pdf_edges(f, 0.5, 0.25), (std::vector<double>{0.0, 0.25, 0.5}));
+  const std::vector<double> edges = pdf_edges(f, 0.5, 0.2);
+  ASSERT_EQ(edges.size(), 4u);
+  for (std::size_t k = 0; k < edges.size(); ++k) EXPECT_DOUBLE_EQ(edges[k], 0.2 * k);
+  // A bin wider than f_max would be one past it.
+  EXPECT_EQ(refusal(frame_of(kTable), {{"f_max", 0.1}, {"bin_width", 1.0}}),
+            "params.bin_width: expected at most f_max (0.1), got 1: a single bin would reach "
+            "past it");
+}
+
 TEST(ForceNetwork, ASpikeOfEqualForcesIsNotFittedAndReportedUndefined) {
   std::vector<double> f(500, 1.0);
   const PdfFit fit = fit_pdf(force_pdf(f, pdf_edges(f, 0.0, 0.2)), eq11_request(100));

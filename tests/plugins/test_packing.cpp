@@ -477,12 +477,12 @@ TEST(Packing, StepsThatDoNotFitTheBedAreRefused) {
   PackingSettings huge;
   huge.profile_step = 1e308;
   EXPECT_EQ(granpipe::test::input_error_of([&] { measure(f, huge); }),
-            "packing.profile_step: expected at most the bed's height (4 diameters), got 1e+308: "
-            "the profile would hold no cut");
+            "packing.profile_step: expected at most the bed's height in diameters (4), got "
+            "1e+308: a single bin would reach past it");
   huge.profile_step = 5.0;
   EXPECT_EQ(granpipe::test::input_error_of([&] { measure(f, huge); }),
-            "packing.profile_step: expected at most the bed's height (4 diameters), got 5: "
-            "the profile would hold no cut");
+            "packing.profile_step: expected at most the bed's height in diameters (4), got 5: "
+            "a single bin would reach past it");
   // Just past the limit the count read as the limit itself ("got 1e+07").
   PackingSettings barely;
   barely.cuts_step = 4.0 / 10000001.0;

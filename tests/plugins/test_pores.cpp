@@ -565,6 +565,13 @@ TEST(Pores, HistogramsOfMoreBinsThanMemoryHoldsAreRefused) {
   EXPECT_EQ(message({{"probes", std::int64_t{1000000000000}}}),
             "test: params.probes: expected an integer in [0, 100000000], got 1000000000000");
   EXPECT_EQ(message({{"bin_width", 1e-4}, {"xi_max", 1000}}), "accepted");
+  // One bin past xi_max widened the histogram to it: every pore counted below 0.001.
+  EXPECT_EQ(message({{"bin_width", 1}, {"xi_max", 0.001}}),
+            "params.bin_width: expected at most xi_max (0.001), got 1: a single bin would reach "
+            "past it");
+  EXPECT_EQ(message({{"v_bin_width", 1}, {"v_max", 0.001}}),
+            "params.v_bin_width: expected at most v_max (0.001), got 1: a single bin would reach "
+            "past it");
 }
 
 namespace {

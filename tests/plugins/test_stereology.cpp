@@ -208,6 +208,20 @@ TEST(ProfileMeasure, AStepTooSmallForTheBedIsRefused) {
             "2e+13 (20 in steps of 1e-12)");
 }
 
+// A step of 1000 R made one bin from the base to 1000 R, its centre far above the bed.
+TEST(ProfileMeasure, AStepPastTheBedOrTheBoxIsRefused) {
+  ProfileSettings s;
+  s.step = 1000.0;
+  EXPECT_EQ(granpipe::test::input_error_of([&] { measure_profiles(cubic_layers(8, 10), s); }),
+            "stereology.step: expected at most the bed's height in radii (20), got 1000: a "
+            "single bin would reach past it");
+  s.step = 19.0;
+  const std::string wide =
+      granpipe::test::input_error_of([&] { measure_profiles(cubic_layers(8, 10), s); });
+  EXPECT_EQ(wide.rfind("stereology.step: expected at most the box's width in radii (", 0), 0u)
+      << wide;
+}
+
 // The analyzer names the step where the pipeline has it ("analyzers[2].params.step"; the
 // harness's "params.step"), not "stereology.step" whatever its name and place. A step
 // below 1e-3 R is refused up front: the bins are counted per frame, and 3.6e-6 passed the

@@ -16,4 +16,11 @@ inline constexpr double kMaxBins = 1e7;
 void check_bin_count(double extent, double step, const std::string& what,
                      const std::string& noun = "bins", double most = kMaxBins);
 
+// Throws InputError when `step` is longer than `extent` (beyond rounding, a relative 1e-9),
+// where a single bin would reach past what it measures (pores' histogram widened to its
+// one bin past xi_max, a profile's one bin mostly above the bed, exit 0):
+// "<what>: expected at most <extent_name> (<extent>), got <step>: ...".
+void check_step_fits(double extent, double step, const std::string& what,
+                     const std::string& extent_name);
+
 }  // namespace granpipe
