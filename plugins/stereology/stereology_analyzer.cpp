@@ -17,10 +17,12 @@ Schema schema() {
       .min(1e-3)
       .unit("mean radii");
   declare_stereology_settings(s);
+  // A band's fraction is the difference of two caps' volumes over the band's: at 1e-9 R
+  // rounding made it negative.
   s.real("lateral_band", 7.0,
          "the lateral fraction is that within this distance of either side across x, the "
-         "central fraction that of the rest")
-      .min(0.0, true)
+         "central fraction that of the rest; at least 0.001")
+      .min(1e-3)
       .unit("mean radii");
   s.real("fit_from", 5.0, "Eq. (7) is fitted to the vertical profile from this height up")
       .min(0.0)

@@ -231,6 +231,10 @@ TEST(StereologyAnalyzer, AStepTooSmallIsNamedWhereThePipelineHasIt) {
               granpipe::test::make_context(schema(), {{"step", 1e-12}});
             }),
             "test: params.step: expected a number >= 0.001, got 1e-12");
+  EXPECT_EQ(granpipe::test::input_error_of([] {
+              granpipe::test::make_context(schema(), {{"lateral_band", 1e-9}});
+            }),
+            "test: params.lateral_band: expected a number >= 0.001, got 1e-09");
   const auto ctx = granpipe::test::make_context(schema(), {{"step", 1e-3}});
   StereologyAnalyzer a(*ctx);
   FrameCache cache;
