@@ -90,6 +90,7 @@ void ArchesAnalyzer::consume(const Frame& frame, FrameCache& cache) {
   const std::string where = frame_name(frames_, frame);
   ++frames_;
   check_supports(frame, where);
+  check_supports_touch(frame, where);
   const Eigen::Index n = frame.size();
   arch_of_.resize(0);
   if (n == 0) {

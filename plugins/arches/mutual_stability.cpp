@@ -4,6 +4,9 @@
 
 #include "granpipe/container_check.hpp"
 #include "granpipe/errors.hpp"
+#include "granpipe/format_number.hpp"
+#include "granpipe/particles_outside.hpp"
+#include "granpipe/separation.hpp"
 
 namespace granpipe::arches {
 
@@ -70,6 +73,38 @@ void check_supports(const Frame& frame, const std::string& where) {
       throw InputError(where + ": supports[" + std::to_string(i) +
                        "]: expected two different supporting disks, got disk " +
                        std::to_string(s.left(i)) + " as both left and right support");
+    }
+  }
+}
+
+namespace {
+
+// How far disk i's surface is from support p, and the most the rule allows.
+std::pair<double, double> support_gap(const Frame& f, Eigen::Index i, std::int64_t p) {
+  const double r = f.radius()[i];
+  if (partner::is_wall(p)) return {surface_gap(f, i, partner::wall_of(p)), r};
+  const double rp = f.radius()[p];
+  return {separation(f, i, p).norm() - r - rp, std::min(r, rp)};
+}
+
+}  // namespace
+
+void check_supports_touch(const Frame& frame, const std::string& where) {
+  const Supports s = Supports::of(frame);
+  for (const auto& [side, name] : {std::pair{&s.left, "left"}, {&s.right, "right"}}) {
+    for (Eigen::Index i = 0; i < frame.size(); ++i) {
+      const std::int64_t p = (*side)(i);
+      if (p == partner::none) continue;
+      const auto [gap, most] = support_gap(frame, i, p);
+      if (!(gap > most)) continue;
+      const bool wall = partner::is_wall(p);
+      const std::string support = wall ? "wall " + std::string(to_string(partner::wall_of(p)))
+                                       : "disk " + std::to_string(p);
+      throw InputError(where + ": supports." + name + "[" + std::to_string(i) +
+                       "]: expected a support touching disk " + std::to_string(i) + ", got " +
+                       support + ", its surface " + format_number(gap) + " away (more than " +
+                       (wall ? "its radius, " : "the smaller radius, ") + format_number(most) +
+                       ")");
     }
   }
 }

@@ -34,6 +34,13 @@ struct Arch {
 // `where` otherwise.
 void check_supports(const Frame& frame, const std::string& where);
 
+// Checks that each support touches its disk, by the rule the h5md source applies to a
+// contact: a supporting disk (or wall) whose surface is more than the smaller radius away
+// is no contact under any rounding (a label naming a disk 6 diameters off passed, a 1 %
+// "detached support fraction" its only trace). Throws InputError naming `where`, the label
+// and the gap. For labels that passed check_supports.
+void check_supports_touch(const Frame& frame, const std::string& where);
+
 // The disk mutually stable with disk i on its right: j = right[i] with left[j] == i,
 // or partner::none.
 std::int64_t right_mutual_partner(const Supports& supports, Eigen::Index i);

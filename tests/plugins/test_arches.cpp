@@ -449,6 +449,21 @@ TEST(Arches, BadSupportLabelsAreInputErrors) {
             "a side it has none on");
 }
 
+// A label naming a disk far off passed, a 1 % detached_support_fraction its only trace.
+TEST(Arches, SupportsThatDoNotTouchTheirDiskAreInputErrors) {
+  Frame f = two_disk_arch();
+  ga::check_supports_touch(f, "test");  // touching, and walls a radius off
+  supports(f)(2, 0) = 1;                // base disk 1, 1.73 from disk 2's centre
+  EXPECT_EQ(granpipe::test::input_error_of([&] { ga::check_supports_touch(f, "test"); }),
+            "test: supports.left[2]: expected a support touching disk 2, got disk 1, its surface "
+            "0.732051 away (more than the smaller radius, 0.5)");
+  f = two_disk_arch();
+  supports(f)(3, 1) = kBase;  // disk 3 is in layer 1
+  EXPECT_EQ(granpipe::test::input_error_of([&] { ga::check_supports_touch(f, "test"); }),
+            "test: supports.right[3]: expected a support touching disk 3, got wall y_low, its "
+            "surface 0.866025 away (more than its radius, 0.5)");
+}
+
 TEST(Arches, RingOfMutualSupportsIsAnInputError) {
   const Frame f = make_frame({{1.0, 1.0, 2, 1}, {2.0, 1.0, 0, 2}, {3.0, 1.0, 1, 0}}, 4.0);
   ga::check_supports(f, "test");
