@@ -283,6 +283,17 @@ TEST_F(LammpsDataSource, AbsurdSizesAndPlacesAreRefused) {
             "coordinate z");
 }
 
+// write_data of a 2D run: disks at z = 0 in a box one atom thick, read as spheres (exit 0).
+TEST_F(LammpsDataSource, AFlatLayerOfA2dRunIsRefusedAsSuch) {
+  const std::string flat =
+      "title\n\n2 atoms\n\n-2 2 xlo xhi\n-2 2 ylo yhi\n-0.5 0.5 zlo zhi\n\n"
+      "Atoms # sphere\n\n1 1 1 1.91 0 0 0\n7 1 1 1.91 1 0 0\n";
+  EXPECT_EQ(refusal(flat),
+            "spheres.data: expected a 3D packing (granpipe's LAMMPS readers read 3D runs), got "
+            "every atom at z = 0 in a box 1 thick (zlo zhi), no more than an atom's diameter (1): "
+            "a 2D run's data file");
+}
+
 TEST_F(LammpsDataSource, ASphereThroughTheCylinderIsRefusedByAtomId) {
   EXPECT_EQ(refusal(two_spheres("0 0 0.5", "1.9 0 1")),
             "spheres.data: atom 7 at (1.9, 0, 1), radius 0.5: expected an overlap with the wall "
