@@ -237,6 +237,12 @@ Atom parse_atom(const std::string& line, long number, const std::string& where) 
     throw InputError(at + ": expected whole-number image flags in columns 8 to 10, got " +
                      quoted(line));
   }
+  // LAMMPS refuses "nan" where it reads a number; named here with its line, not later by
+  // the atom's id alone.
+  if (!std::isfinite(*diameter) || !std::isfinite(*x[0]) || !std::isfinite(*x[1]) ||
+      !std::isfinite(*x[2])) {
+    throw InputError(at + ": expected a finite diameter and position, got " + quoted(line));
+  }
   a.diameter = *diameter;
   a.x = {*x[0], *x[1], *x[2]};
   return a;

@@ -119,6 +119,16 @@ TEST(LammpsData, HeaderLinesGivenTwiceAndEndlessLinesAreRefused) {
             "no refusal");
 }
 
+// A NaN was named later by the atom's id alone.
+TEST(LammpsData, ANanOrInfinitePositionIsNamedWithItsLine) {
+  EXPECT_EQ(refusal(two_spheres("0 0 0.5", "1.5 0 nan")),
+            "x.data: line 13: expected a finite diameter and position, got \"7 1 1 1.91 1.5 0 nan "
+            "0 0 0\"");
+  EXPECT_EQ(refusal(two_spheres("inf 0 0.5", "1.5 0 1")),
+            "x.data: line 12: expected a finite diameter and position, got \"1 1 1 1.91 inf 0 0.5 "
+            "0 0 0\"");
+}
+
 TEST(LammpsData, AMalformedLineIsNamed) {
   EXPECT_EQ(refusal("title\n1 atoms\n\nAtoms # sphere\n\n1 1 one 1.91 0 0 0\n"),
             "x.data: line 6: expected \"id type diameter density x y z\" (atom_style sphere), "
