@@ -23,6 +23,7 @@
 #include "published_columns.hpp"
 #include "result_stream.hpp"
 #include "stage_clock.hpp"
+#include "thread_probe.hpp"
 
 namespace granpipe {
 namespace fs = std::filesystem;
@@ -430,7 +431,17 @@ RunSummary run_in_directory(const Pipeline::Impl& p, const RunOptions& options, 
   const fs::path dir = out.work_path();  // beside output_dir while replacing an earlier run
 
   const int hw = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  const int threads = options.threads > 0 ? options.threads : hw;
+  const int asked = options.threads > 0 ? options.threads : hw;
+  const int startable = startable_threads(asked);
+  // Short of the threads asked, the stacks filled what the limit left, and the run's own
+  // memory came after them (175 started under prlimit --as 1.5 GB; OpenMP's team then
+  // failed): half of them leaves the other half's room to the run.
+  const int threads = startable < asked ? std::max(1, startable / 2) : asked;
+  if (threads < asked) {
+    log.warn("--threads " + std::to_string(asked) + ": this process could start only " +
+             std::to_string(startable) + " threads at once (its limits: ulimit -v, prlimit); " +
+             "the run uses " + std::to_string(threads) + ", leaving memory for its data");
+  }
   const std::size_t workers = std::min<std::size_t>(threads, p.points.size());
   // Points share the thread budget; a single point gets all of it.
   const int per_point = std::max(1, threads / static_cast<int>(workers));
