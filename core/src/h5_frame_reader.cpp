@@ -12,6 +12,7 @@
 #include <optional>
 #include <unordered_map>
 
+#include "granpipe/available_memory.hpp"
 #include "granpipe/errors.hpp"
 #include "granpipe/file_kind.hpp"
 #include "granpipe/format_number.hpp"
@@ -181,6 +182,20 @@ bool FrameFileInfo::has(std::string_view column) const {
                      [&](const Property& p) { return p.name == column; });
 }
 
+namespace {
+// A compressed file may declare far more than it stores (4e8 particles in 9 MB): what it
+// declares is refused, naming the dataset, where it would not fit in memory (it ran out of
+// memory reading it, a line naming no file).
+void check_fits(const std::string& path, double bytes, const std::string& what) {
+  const double available = available_memory();
+  if (std::isnan(available) || bytes <= available) return;
+  constexpr double kGB = 1e9;
+  throw h5::Error(path + ": " + what + ": " + format_number(bytes / kGB, 3) +
+                  " GB needed, this machine (or the process's memory limit) has " +
+                  format_number(available / kGB, 3) + " GB available");
+}
+}  // namespace
+
 struct FrameReader::Impl {
   std::string name;
   h5::Object file;
@@ -210,6 +225,7 @@ struct FrameReader::Impl {
   void open_observables();
   void open_box(const std::string& base);
   void check_length_units() const;
+  void check_frame_fits() const;
   hsize_t rows(const std::string& path, const h5::Shape& item, h5::Object& out);
   void open_container(hsize_t& frames);
   hsize_t open_contacts(hsize_t& frames);
@@ -258,7 +274,10 @@ void FrameReader::Impl::check_h5md_version() {
   const auto version = h5::read_integer_attribute(h5md.id(), "/h5md", "version");
   if (!version.empty() && version[0] == 1) return;
   std::string found = version.empty() ? "none" : std::to_string(version[0]);
-  if (version.size() > 1) found += "." + std::to_string(version[1]);
+  if (version.size() > 1) {
+    found += '.';  // "." + to_string(...) gave GCC 12 a false -Wrestrict
+    found += std::to_string(version[1]);
+  }
   throw h5::Error("/h5md@version: expected H5MD 1.x, got " + found);
 }
 
@@ -302,6 +321,9 @@ void FrameReader::Impl::open_position(const std::string& base) {
   info.dim = static_cast<int>(item[1]);
   info.frames = static_cast<long>(position->samples());
   info.position_bytes = float_bytes(*position);
+  // A step and a time per frame are read now.
+  check_fits(position->path(), static_cast<double>(info.frames) * 16.0,
+             std::to_string(info.frames) + " frames' steps and times");
   if (position->timed()) {
     steps = position->steps();
     times = position->times();
@@ -610,6 +632,7 @@ void FrameReader::Impl::open(const std::string& group) {
   open_box(base);
   open_columns(base);
   check_length_units();
+  check_frame_fits();
   if (ours) {
     open_observables();
     settle_frames();
@@ -622,6 +645,15 @@ void FrameReader::Impl::open(const std::string& group) {
   for (const ElementColumn& c : columns) info.columns.push_back(c.property);
   for (const ElementColumn& o : observables) info.observables.push_back(o.property);
   for (const ContactColumn& c : contact_columns) info.contact_columns.push_back(c.property);
+}
+
+// One frame of every column read.
+void FrameReader::Impl::check_frame_fits() const {
+  double per_particle = 8.0 * info.dim;
+  for (const ElementColumn& c : columns) per_particle += 8.0 * c.property.components_in(info.dim);
+  check_fits(position->path(), static_cast<double>(info.particles) * per_particle,
+             "a frame of " + std::to_string(info.particles) + " particles (" +
+                 format_number(per_particle) + " bytes each)");
 }
 
 // H5MD states a unit per element, and granpipe computes with the numbers as stored:

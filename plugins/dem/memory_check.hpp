@@ -15,11 +15,6 @@ namespace granpipe::dem {
 
 inline constexpr double kBytesPerParticle = 2000.0;
 
-// The memory available now, in bytes: MemAvailable of /proc/meminfo, or less where the
-// process's address-space limit or its cgroup's memory limit (less the page cache it may
-// drop) leaves less; NaN when none of them is known.
-double available_memory();
-
 // Throws InputError starting with `what` (the parameter that sets the count) when
 // `particles` spheres need more than the available memory. No check when it is unknown.
 void check_memory(const std::string& what, double particles);

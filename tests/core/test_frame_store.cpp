@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <hdf5.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -15,6 +16,7 @@
 #include <fstream>
 #include <limits>
 #include <tuple>
+#include <vector>
 
 #include "granpipe/errors.hpp"
 #include "granpipe/frame_store.hpp"
@@ -1022,6 +1024,51 @@ void write_positions(const fs::path& p, F position) {
   const std::int64_t step = 1;
   put_dataset(group, "step", H5T_NATIVE_INT64, {}, &step);
   position(group);
+}
+
+// A compressed file may declare far more than it stores: 4e6 particles in a few hundred kB
+// of zeros. Under a memory limit below one frame, reading it ran out of memory (a line
+// naming no file); it is refused naming the dataset.
+TEST_F(FrameStore, AFrameLargerThanTheMemoryLeftIsRefusedNamingTheDataset) {
+  const fs::path p = file("declares_much.h5");
+  write_positions(p, [](hid_t group) {
+    constexpr hsize_t kParticles = 4000000;
+    const hsize_t dims[3] = {1, kParticles, 3}, chunk[3] = {1, kParticles / 8, 3};
+    Id space(H5Screate_simple(3, dims, nullptr));
+    Id dcpl(H5Pcreate(H5P_DATASET_CREATE));
+    H5Pset_chunk(dcpl, 3, chunk);
+    H5Pset_deflate(dcpl, 9);
+    Id value(H5Dcreate2(group, "value", H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, dcpl, H5P_DEFAULT));
+    const std::vector<double> zeros(kParticles * 3, 0.0);
+    H5Dwrite(value, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, zeros.data());
+  });
+  int pipe_ends[2];
+  ASSERT_EQ(pipe(pipe_ends), 0);
+  const pid_t child = fork();
+  if (child == 0) {  // 50 MB more than it holds: less than the frame's 96 MB
+    std::ifstream statm("/proc/self/statm");
+    long pages = 0;
+    statm >> pages;
+    const rlim_t size = static_cast<rlim_t>(pages) * static_cast<rlim_t>(sysconf(_SC_PAGESIZE));
+    const rlimit limit{size + 50000000, size + 50000000};
+    if (setrlimit(RLIMIT_AS, &limit) != 0) _exit(3);
+    const std::string m = test::input_error_of([&] { FrameReader r(p); });
+    const ssize_t written = ::write(pipe_ends[1], m.data(), m.size());
+    _exit(written == static_cast<ssize_t>(m.size()) ? 0 : 4);
+  }
+  close(pipe_ends[1]);
+  std::string message;
+  char buf[512];
+  for (ssize_t n; (n = read(pipe_ends[0], buf, sizeof buf)) > 0;) message.append(buf, n);
+  close(pipe_ends[0]);
+  int status = 0;
+  waitpid(child, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << status;
+  const std::string expected = p.string() +
+                               ": /particles/all/position/value: a frame of 4000000 particles "
+                               "(24 bytes each): 0.096 GB needed, this machine (or the process's "
+                               "memory limit) has ";
+  EXPECT_EQ(message.substr(0, expected.size()), expected) << message;
 }
 
 // HDF5 reads what was never written as the fill value: an 8 KB file declaring 5e7

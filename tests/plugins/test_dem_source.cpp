@@ -19,6 +19,7 @@
 
 #include "blow_up.hpp"
 #include "dem_source.hpp"
+#include "granpipe/available_memory.hpp"
 #include "granpipe/format_number.hpp"
 #include "granpipe/frame_store.hpp"
 #include "memory_check.hpp"
@@ -630,7 +631,7 @@ TEST(DemSource, ASphereDroppedFromFarTooHighIsStoppedAtTheBase) {
 }
 
 TEST(DemSource, AScenePastTheAvailableMemoryIsRefusedBeforeAnythingIsAllocated) {
-  const double available = dem::available_memory();
+  const double available = granpipe::available_memory();
   ASSERT_GT(available, 0.0);  // /proc/meminfo
   try {
     dem::check_memory("params.bed.small", 1e15);
@@ -659,7 +660,7 @@ TEST(DemSource, TheMemoryCheckHeedsTheProcesssAddressSpaceLimit) {
   rlimit lowered = before;
   lowered.rlim_cur = static_cast<rlim_t>(size + room);
   ASSERT_EQ(setrlimit(RLIMIT_AS, &lowered), 0);
-  const double available = dem::available_memory();
+  const double available = granpipe::available_memory();
   ASSERT_EQ(setrlimit(RLIMIT_AS, &before), 0);
   EXPECT_LE(available, room);
   EXPECT_GT(available, 0.5 * room);
