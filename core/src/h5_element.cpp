@@ -13,12 +13,14 @@
 namespace granpipe::h5 {
 namespace {
 
-// A frame's time orders and labels it: NaN or infinity would label every frame after it so.
+// A frame's time orders and labels it: infinity would label every frame after it so. NaN is
+// an undefined time (granpipe writes it for a dump without ITEM: TIME or dt, and then
+// refused its own file), ordered against nothing (TimeOrder).
 void check_finite(const std::vector<double>& times, const std::string& path) {
   for (std::size_t k = 0; k < times.size(); ++k) {
-    if (std::isfinite(times[k])) continue;
-    throw Error(path + ": sample " + std::to_string(k) + ": expected a finite time, got " +
-                format_number(times[k]));
+    if (!std::isinf(times[k])) continue;
+    throw Error(path + ": sample " + std::to_string(k) +
+                ": expected a finite time (or NaN, undefined), got " + format_number(times[k]));
   }
 }
 

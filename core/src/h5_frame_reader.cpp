@@ -8,7 +8,6 @@
 #include <fstream>
 #include <functional>
 #include <limits>
-#include <mutex>
 #include <optional>
 #include <unordered_map>
 
@@ -208,9 +207,8 @@ struct FrameReader::Impl {
   std::vector<double> times;
   std::array<bool, 3> periodic{};
   // Along walled axes of another tool's box: walls at [-L/2, L/2] (else [0, L]), as the
-  // first frame's centres decide (centred_axes).
-  mutable std::array<bool, 3> centred{};
-  mutable std::once_flag centred_decided;
+  // file's centres decide (place_walls_of_file).
+  std::array<bool, 3> centred{};
   std::optional<ContainerSeries> container_series;
   std::vector<ContactColumn> contact_columns;
   std::vector<std::int64_t> contact_offset, contact_count;
@@ -240,8 +238,10 @@ struct FrameReader::Impl {
   std::vector<double> edge_lengths(long k) const;
   void check_edges_agree(long k, const Container& c) const;
   Container box_container(long k, const Frame& f) const;
-  const std::array<bool, 3>& centred_axes() const;
+  void place_walls_of_file();
   void place_walls(Container& c, int axis, const Frame& f, long k) const;
+  [[noreturn]] void refuse_outside(const Frame& f, int axis, double length, long k,
+                                   const std::string& placed) const;
   Container container_at(long k) const;
   void read_contacts(long k, Frame& f) const;
 };
@@ -641,6 +641,7 @@ void FrameReader::Impl::open(const std::string& group) {
   } else {
     if (info.complete) check_clocks();
     map_foreign_elements();
+    place_walls_of_file();
   }
   for (const ElementColumn& c : columns) info.columns.push_back(c.property);
   for (const ElementColumn& o : observables) info.observables.push_back(o.property);
@@ -680,59 +681,73 @@ void FrameReader::Impl::check_length_units() const {
 
 // H5MD stores a box's edge lengths but not its origin. Periodic sides need none (positions
 // are wrapped where used); walls do: they go at [0, L] or, as some codes centre their
-// boxes, [-L/2, L/2], whichever holds every particle centre of the first frame ([0, L]
-// where both do), and there in every frame: placed frame by frame, the walls of one file
+// boxes, [-L/2, L/2], whichever holds every particle centre of the file's frames ([0, L]
+// where both do), the same in every frame: placed frame by frame, the walls of one file
 // jumped by L/2 between two frames. Centres outside are refused rather than measured
 // against walls in the wrong place.
 namespace {
-// Whether the walls along `a` go at [-L/2, L/2] for these centres; throws where neither
-// placement holds them.
-bool centred_walls(double length, int a, const Frame& f, const std::string& file,
-                   const std::string& dataset, long k) {
+// Which placements along `a` hold frame k's centres (edge `length`).
+struct Placements {
+  bool at_zero = true, centred = true;
+};
+
+Placements placements(const Frame& f, int a, double length, const std::string& file, long k) {
   // The frame check names the particle, where min and max of a NaN depend on its place.
   if (!f.position().col(a).allFinite()) f.check(file + ": frame " + std::to_string(k));
   const double lo = f.position().col(a).minCoeff(), hi = f.position().col(a).maxCoeff();
-  if (lo >= 0.0 && hi <= length) return false;
-  if (lo >= -0.5 * length && hi <= 0.5 * length) return true;
-  // Digits enough to tell the centres from the nearer placement's bounds.
-  const double bottom = lo < 0.0 ? -0.5 * length : 0.0, top = lo < 0.0 ? 0.5 * length : length;
-  throw h5::Error(dataset + ": frame " + std::to_string(k) +
-                  ": expected particle centres inside a box of edge " + format_number(length) +
-                  " along " + "xyz"[a] + " (at [0, L] or [-L/2, L/2]), got " +
-                  format_apart(lo, bottom) + " to " + format_apart(hi, top));
+  return {lo >= 0.0 && hi <= length, lo >= -0.5 * length && hi <= 0.5 * length};
 }
 }  // namespace
 
-// The first frame's placement along each walled axis, decided once.
-const std::array<bool, 3>& FrameReader::Impl::centred_axes() const {
-  std::call_once(centred_decided, [&] {
-    const Frame first = read_particles(0);
-    const std::vector<double> length = edge_lengths(0);
+// Frame 0 decides each walled axis it fits one way only; where it fits both (centres in
+// [0, L/2]: a centred box's grains poured into its upper half), the other frames do.
+void FrameReader::Impl::place_walls_of_file() {
+  if (ours || !edges || info.frames == 0 || info.particles == 0) return;
+  std::array<Placements, 3> fit;
+  for (long k = 0; k < info.frames; ++k) {
+    const Frame f = read_particles(k);
+    const std::vector<double> length = edge_lengths(k);
+    bool undecided = false;
     for (int a = 0; a < info.dim; ++a) {
-      if (!periodic[a] && first.size() > 0)
-        centred[a] = centred_walls(length[a], a, first, name, edges->path(), 0);
+      if (periodic[a]) continue;
+      const Placements p = placements(f, a, length[a], name, k);
+      if (k == 0 && !p.at_zero && !p.centred) refuse_outside(f, a, length[a], k, "");
+      fit[a] = {fit[a].at_zero && p.at_zero, fit[a].centred && p.centred};
+      undecided = undecided || (fit[a].at_zero && fit[a].centred);
     }
-  });
-  return centred;
+    if (!undecided) break;
+  }
+  for (int a = 0; a < info.dim; ++a) centred[a] = !fit[a].at_zero && fit[a].centred;
 }
 
 void FrameReader::Impl::place_walls(Container& c, int a, const Frame& f, long k) const {
   const double length = c.hi[a];
-  const bool centred_here = centred_walls(length, a, f, name, edges->path(), k);
-  const bool centred_first = centred_axes()[a];
-  c.lo[a] = centred_first ? -0.5 * length : 0.0;
+  c.lo[a] = centred[a] ? -0.5 * length : 0.0;
   c.hi[a] = c.lo[a] + length;
-  if (centred_here == centred_first) return;
-  const Eigen::ArrayXd x = f.position().col(a);
-  // Frame k fits the other placement only: its centres may still fit this one.
-  if (x.minCoeff() >= c.lo[a] && x.maxCoeff() <= c.hi[a]) return;
-  throw h5::Error(edges->path() + ": frame " + std::to_string(k) +
-                  ": expected particle centres inside the box of edge " + format_number(length) +
-                  " along " + "xyz"[a] + " where frame 0 puts its walls, [" +
-                  format_number(c.lo[a]) + ", " + format_number(c.hi[a]) + "], got " +
-                  format_apart(x.minCoeff(), c.lo[a]) + " to " +
-                  format_apart(x.maxCoeff(), c.hi[a]) +
-                  " (H5MD stores no origin: walls that move by L/2 between frames are refused)");
+  const Placements p = placements(f, a, length, name, k);
+  if (centred[a] ? p.centred : p.at_zero) return;
+  refuse_outside(f, a, length, k,
+                 p.at_zero || p.centred ? (centred[a] ? "[-L/2, L/2]" : "[0, L]") : "");
+}
+
+// `placed`: where the file's walls are, for centres that fit the other placement only.
+void FrameReader::Impl::refuse_outside(const Frame& f, int a, double length, long k,
+                                       const std::string& placed) const {
+  const double lo = f.position().col(a).minCoeff(), hi = f.position().col(a).maxCoeff();
+  const std::string at = edges->path() + ": frame " + std::to_string(k) +
+                         ": expected particle centres inside a box of edge " +
+                         format_number(length) + " along " + "xyz"[a];
+  if (!placed.empty()) {
+    const double bottom = placed == "[0, L]" ? 0.0 : -0.5 * length;
+    throw h5::Error(at + " at " + placed + ", where the file's frames put its walls, got " +
+                    format_apart(lo, bottom) + " to " + format_apart(hi, bottom + length) +
+                    " (H5MD stores no origin: walls that move by L/2 between frames are "
+                    "refused)");
+  }
+  // Digits enough to tell the centres from the nearer placement's bounds.
+  const double bottom = lo < 0.0 ? -0.5 * length : 0.0, top = lo < 0.0 ? 0.5 * length : length;
+  throw h5::Error(at + " (at [0, L] or [-L/2, L/2]), got " + format_apart(lo, bottom) + " to " +
+                  format_apart(hi, top));
 }
 
 std::vector<double> FrameReader::Impl::edge_lengths(long k) const {

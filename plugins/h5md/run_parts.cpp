@@ -1,12 +1,15 @@
 #include "run_parts.hpp"
 
+#include <cmath>
 #include <filesystem>
 #include <optional>
 #include <string>
 #include <system_error>
+#include <utility>
 
 #include "granpipe/container.hpp"
 #include "granpipe/errors.hpp"
+#include "granpipe/format_number.hpp"
 
 namespace granpipe::h5md {
 namespace {
@@ -47,24 +50,76 @@ void require_other_file(const std::vector<std::string>& files,
   }
 }
 
-bool same_container(const Container& a, const Container& b) {
-  return a.shape == b.shape && a.lo == b.lo && a.hi == b.hi && a.boundary == b.boundary &&
-         a.cylinder_radius == b.cylinder_radius && a.cylinder_center == b.cylinder_center &&
-         a.wall_offset == b.wall_offset && a.wall_velocity == b.wall_velocity;
+// How `here` differs from `there` ("" where it does not), one field with both values. The
+// box's place is compared only where both files store it: another tool's H5MD box has no
+// origin, and each part's reader places its walls from its own frames.
+std::string container_difference(const Container& here, const Container& there, bool placed) {
+  const auto differ = [](const std::string& field, const std::string& a, const std::string& b) {
+    return field + " " + a + ", there " + b;
+  };
+  if (here.shape != there.shape)
+    return differ("shape", to_string(here.shape), to_string(there.shape));
+  for (int a = 0; a < 3; ++a) {
+    const std::string axis(1, "xyz"[a]);
+    for (int side = 0; side < 2; ++side) {
+      const Boundary h = here.boundary[a][side], t = there.boundary[a][side];
+      if (h != t) return differ("boundary along " + axis, to_string(h), to_string(t));
+    }
+    const bool moved = here.lo[a] != there.lo[a] || here.hi[a] != there.hi[a];
+    if (placed ? moved : here.length(a) != there.length(a)) {
+      return differ("extent along " + axis,
+                    format_number(here.lo[a], 17) + " to " + format_number(here.hi[a], 17),
+                    format_number(there.lo[a], 17) + " to " + format_number(there.hi[a], 17));
+    }
+  }
+  if (here.cylinder_radius != there.cylinder_radius ||
+      here.cylinder_center != there.cylinder_center)
+    return differ("cylinder radius", format_number(here.cylinder_radius, 17),
+                  format_number(there.cylinder_radius, 17) + " (or its axis)");
+  if (here.wall_offset != there.wall_offset)
+    return differ("wall offset", format_point(here.wall_offset, 17),
+                  format_point(there.wall_offset, 17));
+  if (here.wall_velocity != there.wall_velocity)
+    return differ("wall velocity", format_point(here.wall_velocity, 17),
+                  format_point(there.wall_velocity, 17));
+  return "";
 }
 
-// How a later part's first frame differs from the saved frame it says it started from, or
-// "" where it does not: the same positions with other ids, species, walls or clock were
-// read as one run (ids renumbered mid-run, a periodic side turned into a wall).
-std::string what_differs(const Frame& saved, const Frame& start) {
+// The first row where two columns differ, or -1.
+template <class Column>
+Eigen::Index first_difference(const Column& a, const Column& b) {
+  for (Eigen::Index i = 0; i < a.size(); ++i)
+    if (a[i] != b[i]) return i;
+  return -1;
+}
+
+// How a later part's first frame (`start`) differs from the saved frame it says it started
+// from, as what and its detail; empty where it does not: the same positions with other ids,
+// species, walls or clock were read as one run (ids renumbered mid-run, a periodic side
+// turned into a wall). `placed`: both files store their container's place.
+std::pair<std::string, std::string> what_differs(const Frame& saved, const Frame& start,
+                                                 bool placed) {
   if ((saved.position().array() != start.position().array()).any() ||
       (saved.radius() != start.radius()).any())
-    return "another packing";
-  if ((saved.id() != start.id()).any()) return "other particle ids";
-  if ((saved.species() != start.species()).any()) return "other species";
-  if (!same_container(saved.container, start.container)) return "another container";
-  if (saved.time != start.time) return "another time";
-  return "";
+    return {"another packing", ""};
+  const auto row = [](Eigen::Index i, auto here, auto there) {
+    return "row " + std::to_string(i) + ": " + std::to_string(here) + ", there " +
+           std::to_string(there);
+  };
+  if (const Eigen::Index i = first_difference(start.id(), saved.id()); i >= 0)
+    return {"other particle ids", row(i, start.id()[i], saved.id()[i])};
+  if (const Eigen::Index i = first_difference(start.species(), saved.species()); i >= 0)
+    return {"other species", row(i, start.species()[i], saved.species()[i])};
+  const std::string container = container_difference(start.container, saved.container, placed);
+  if (!container.empty()) return {"another container", container};
+  // NaN is an undefined time (a dump read without dt): the same in both.
+  const bool undefined = std::isnan(saved.time) && std::isnan(start.time);
+  if (saved.time != start.time && !undefined) {
+    return {"another time", "time " + format_number(start.time, 17) + ", there " +
+                                format_number(saved.time, 17) +
+                                " (a converter run with another dt?)"};
+  }
+  return {};
 }
 
 }  // namespace
@@ -120,10 +175,12 @@ void RunParts::append(std::size_t part, const std::string& name) {
                      "the parts before it hold (not a continuation of them; a part holds first "
                      "the frame it started from, which a run saved without its start lacks)");
   }
-  const std::string difference = what_differs(*saved, start);
+  const bool placed = first_info().granpipe_file && reader.info().granpipe_file;
+  const auto [difference, detail] = what_differs(*saved, start, placed);
   if (!difference.empty()) {
     throw InputError(not_continued + "the parts before it hold, got " + difference + " than " +
-                     where(frames() - 1) + " (not a continuation of it)");
+                     where(frames() - 1) + " (" + (detail.empty() ? "" : detail + "; ") +
+                     "not a continuation of it)");
   }
   for (long i = 1; i < reader.frames(); ++i) order_.push_back({part, i});
 }

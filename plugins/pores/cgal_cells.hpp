@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "dual_cell.hpp"
+#include "granpipe/parallel_errors.hpp"
 
 namespace granpipe::pores::cgal {
 
@@ -27,8 +28,9 @@ inline Eigen::Vector3d vector_of(const Point& p) { return {p.x(), p.y(), p.z()};
 template <class Item, class Make>
 std::vector<Item> made_in_runs(std::size_t n, int threads, Make make) {
   std::vector<std::vector<Item>> runs(static_cast<std::size_t>(threads));
+  ParallelErrors errors;
 #pragma omp parallel num_threads(threads)
-  {
+  errors.run([&] {
     const auto part = static_cast<std::size_t>(omp_get_thread_num());
     const auto parts = static_cast<std::size_t>(omp_get_num_threads());
     const std::size_t first = n * part / parts, end = n * (part + 1) / parts;
@@ -36,7 +38,8 @@ std::vector<Item> made_in_runs(std::size_t n, int threads, Make make) {
     // only theirs (the whole array once more, and its pages, when the first reallocated).
     runs[part].reserve(part == 0 ? n : end - first);
     for (std::size_t k = first; k < end; ++k) runs[part].push_back(make(k));
-  }
+  });
+  errors.rethrow();
   std::vector<Item> items = std::move(runs.front());
   for (std::size_t r = 1; r < runs.size(); ++r)
     items.insert(items.end(), runs[r].begin(), runs[r].end());

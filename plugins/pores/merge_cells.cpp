@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "granpipe/connected_components.hpp"
+#include "granpipe/parallel_errors.hpp"
 
 namespace granpipe::pores {
 
@@ -56,8 +57,9 @@ void prefetch_neighbours(const std::vector<DelaunayCell>& cells, std::size_t i) 
 std::vector<ParticlePair> same_sphere_pairs(const std::vector<DelaunayCell>& cells, double length,
                                             int threads) {
   std::vector<std::vector<ParticlePair>> runs(static_cast<std::size_t>(threads));
+  ParallelErrors errors;
 #pragma omp parallel num_threads(threads)
-  {
+  errors.run([&] {
     const auto part = static_cast<std::size_t>(omp_get_thread_num());
     const auto parts = static_cast<std::size_t>(omp_get_num_threads());
     SameSphere same{cells, length, {}};
@@ -66,7 +68,8 @@ std::vector<ParticlePair> same_sphere_pairs(const std::vector<DelaunayCell>& cel
       same.compare_around(static_cast<std::uint32_t>(i));
     }
     runs[part] = std::move(same.pairs);
-  }
+  });
+  errors.rethrow();
   std::vector<ParticlePair> pairs;
   for (const auto& run : runs) pairs.insert(pairs.end(), run.begin(), run.end());
   return pairs;

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "delaunay_cells.hpp"
+#include "granpipe/parallel_errors.hpp"
 
 namespace granpipe::pores {
 
@@ -123,14 +124,16 @@ struct Share {
 template <class Add>
 void by_shares(const WeightedPoints& points, PowerVolumes& out, int threads, Add add) {
   const std::size_t n = points.position.size();
+  ParallelErrors errors;
 #pragma omp parallel num_threads(threads)
-  {
+  errors.run([&] {
     const auto part = static_cast<std::size_t>(omp_get_thread_num());
     const auto parts = static_cast<std::size_t>(omp_get_num_threads());
     Share share{points, out, static_cast<std::uint32_t>(n * part / parts),
                 static_cast<std::uint32_t>(n * (part + 1) / parts)};
     add(share);
-  }
+  });
+  errors.rethrow();
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "granpipe/parallel_errors.hpp"
 #include "sphere_grid.hpp"
 #include "tangent_sphere.hpp"
 #include "vertex_neighbours.hpp"
@@ -76,29 +77,33 @@ NonPoreCells tangent_cells(std::vector<DelaunayCell>& cells, const Centres& cent
   std::vector<Kind> kind(cells.size(), kPore);
   std::vector<Eigen::Vector3d> circumcentre(cells.size());
   const auto n = static_cast<std::ptrdiff_t>(cells.size());
+  ParallelErrors errors;
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
-    DelaunayCell& cell = cells[i];
-    circumcentre[i] = cell.centre;
-    if (cell.flat) continue;
-    std::array<Eigen::Vector3d, 4> x;
-    std::array<double, 4> r{};
-    for (int k = 0; k < 4; ++k) {
-      x[k] = centres.points[cell.vertices[k]];
-      r[k] = frame.radius()[centres.particle[cell.vertices[k]]];
-    }
-    const std::optional<TangentSphere> sphere = tangent_sphere(x, r);
-    if (!sphere) {
-      kind[i] = kUntangent;
-    } else if (overlaps_a_neighbour(cell, *sphere, neighbours, centres, frame, length) ||
-               wide.overlap(*sphere, cell, length)) {
-      kind[i] = kFifthSphere;
-    } else {
-      cell.centre = sphere->centre;
-      cell.radius = sphere->radius + mean_radius;
-    }
-    cell.pore = kind[i] == kPore;
+    errors.run([&] {
+      DelaunayCell& cell = cells[i];
+      circumcentre[i] = cell.centre;
+      if (cell.flat) return;
+      std::array<Eigen::Vector3d, 4> x;
+      std::array<double, 4> r{};
+      for (int k = 0; k < 4; ++k) {
+        x[k] = centres.points[cell.vertices[k]];
+        r[k] = frame.radius()[centres.particle[cell.vertices[k]]];
+      }
+      const std::optional<TangentSphere> sphere = tangent_sphere(x, r);
+      if (!sphere) {
+        kind[i] = kUntangent;
+      } else if (overlaps_a_neighbour(cell, *sphere, neighbours, centres, frame, length) ||
+                 wide.overlap(*sphere, cell, length)) {
+        kind[i] = kFifthSphere;
+      } else {
+        cell.centre = sphere->centre;
+        cell.radius = sphere->radius + mean_radius;
+      }
+      cell.pore = kind[i] == kPore;
+    });
   }
+  errors.rethrow();
   NonPoreCells left_out;
   for (std::size_t i = 0; i < cells.size(); ++i) {
     if (kind[i] == kUntangent) left_out.untangent.push_back(circumcentre[i]);

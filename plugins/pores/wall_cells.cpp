@@ -5,6 +5,7 @@
 
 #include "convex_cell.hpp"
 #include "delaunay_cells.hpp"
+#include "granpipe/parallel_errors.hpp"
 
 namespace granpipe::pores {
 
@@ -94,15 +95,19 @@ void cut_at_walls(PowerVolumes& v, const std::vector<std::uint32_t>& rows,
                   const CellBounds& bounds, int threads) {
   const RowNeighbours neighbours = neighbours_of(rows, points, cells);
   const auto n = static_cast<std::ptrdiff_t>(rows.size());
+  ParallelErrors errors;
 #pragma omp parallel num_threads(threads)
   {
     ConvexCell cell;
 #pragma omp for schedule(dynamic, 16)
     for (std::ptrdiff_t i = 0; i < n; ++i) {
-      cut_cell(cell, static_cast<std::size_t>(i), rows[i], neighbours, points, bounds);
-      measure_cell(v, rows[i], cell, points, bounds);
+      errors.run([&] {
+        cut_cell(cell, static_cast<std::size_t>(i), rows[i], neighbours, points, bounds);
+        measure_cell(v, rows[i], cell, points, bounds);
+      });
     }
   }
+  errors.rethrow();
 }
 
 template void cut_at_walls<DualCell>(PowerVolumes&, const std::vector<std::uint32_t>&,

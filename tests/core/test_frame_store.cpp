@@ -268,6 +268,21 @@ TEST_F(FrameStore, AFrameOfAnotherParticleCountIsRefusedAsInput) {
                 "unsaved)");
 }
 
+// The lammps_dump source gives frames of a dump without ITEM: TIME or dt an undefined time:
+// their frames file was refused by its own reader ("expected a finite time, got nan").
+TEST_F(FrameStore, AnUndefinedTimeIsStoredAndReadAsSuch) {
+  const fs::path p = file("undefined_time.h5");
+  FrameWriter w(p, "{}");
+  for (long k = 0; k < 2; ++k) {
+    Frame f = make_frame(k, 3, 4);
+    f.time = std::nan("");
+    w.append(f);
+  }
+  w.close();
+  const FrameReader r(p);
+  EXPECT_TRUE(std::isnan(r.read(0).time) && std::isnan(r.read(1).time));
+}
+
 TEST_F(FrameStore, WriterThatNeverClosedLeavesAnIncompleteButReadableFile) {
   const fs::path p = file("open.h5");
   {
@@ -576,12 +591,16 @@ TEST_F(FrameStore, ClocksBeyondTheirNumbersAreRefused) {
   EXPECT_EQ(reader_error(with_clock("wrap.h5", "step", H5T_NATIVE_INT64, {}, &increment)),
             "/particles/atoms/position/step: sample 2: expected a step within 64-bit integers, "
             "got 2 x 4611686018427387904 + 0");
+  // NaN is an undefined time (a dump without ITEM: TIME or dt; granpipe refused its own
+  // frames of one), read as such.
   const double nan_time[3] = {0.5, std::nan(""), 1.5};
-  EXPECT_EQ(reader_error(with_clock("nan.h5", "time", H5T_NATIVE_DOUBLE, {3}, nan_time)),
-            "/particles/atoms/position/time: sample 1: expected a finite time, got nan");
+  const FrameReader undefined(with_clock("nan.h5", "time", H5T_NATIVE_DOUBLE, {3}, nan_time));
+  EXPECT_TRUE(std::isnan(undefined.read(1).time));
+  EXPECT_EQ(undefined.read(2).time, 1.5);
   const double vast = 1e308;  // sample 2 at 2e308
   EXPECT_EQ(reader_error(with_clock("inf.h5", "time", H5T_NATIVE_DOUBLE, {}, &vast)),
-            "/particles/atoms/position/time: sample 2: expected a finite time, got inf");
+            "/particles/atoms/position/time: sample 2: expected a finite time (or NaN, "
+            "undefined), got inf");
 }
 
 // HDF5 converts without a word: a species of 2^40 was read as 2147483647 and an id of
@@ -699,22 +718,29 @@ void write_two_in_a_walled_box(const fs::path& p, const double (&x)[T][2][3]) {
 
 // The walls go where the first frame's centres put them, in every frame: placed frame by
 // frame, the same walls went at [0, 10] in frame 0 and [-5, 5] in frame 1.
-TEST_F(FrameStore, WallsOfAnotherToolsBoxStayWhereTheFirstFramePutsThem) {
-  const auto two_frames = [&](const std::string& name, double second_x) {
+TEST_F(FrameStore, WallsOfAnotherToolsBoxStayWhereTheFilesFramesPutThem) {
+  // Two frames along x: the first's centres, then the second's.
+  const auto two_frames = [&](const std::string& name, double first_x, double second_x) {
     const fs::path p = file(name);
-    const double x[2][2][3] = {{{6.0, 2.0, 2.0}, {8.0, 5.0, 5.0}},
+    const double x[2][2][3] = {{{first_x, 2.0, 2.0}, {4.0, 5.0, 5.0}},
                                {{second_x, 2.0, 2.0}, {4.0, 5.0, 5.0}}};
     write_two_in_a_walled_box(p, x);
     return p;
   };
-  const fs::path jump = two_frames("jump.h5", -0.5);  // fits [-5, 5] only
-  EXPECT_EQ(reader_error(jump),
-            "/particles/all/box/edges: frame 1: expected particle centres inside the box of "
-            "edge 10 along x where frame 0 puts its walls, [0, 10], got -0.5 to 4 (H5MD stores "
-            "no origin: walls that move by L/2 between frames are refused)");
-  const FrameReader r(two_frames("stays.h5", 0.5));
-  EXPECT_EQ(r.read(1).container.lo[0], 0.0);
-  EXPECT_EQ(r.read(1).container.hi[0], 10.0);
+  // Frame 0 fits [0, 10] only (x up to 6), frame 1 [-5, 5] only.
+  EXPECT_EQ(reader_error(two_frames("jump.h5", 6.0, -0.5)),
+            "/particles/all/box/edges: frame 1: expected particle centres inside a box of edge "
+            "10 along x at [0, L], where the file's frames put its walls, got -0.5 to 4 (H5MD "
+            "stores no origin: walls that move by L/2 between frames are refused)");
+  // Frame 0 fits both (a centred box's grains in its upper half), frame 1 [-5, 5] only: the
+  // walls are at [-5, 5] in both frames.
+  const FrameReader poured(two_frames("poured.h5", 0.5, -0.5));
+  for (long k = 0; k < 2; ++k) {
+    EXPECT_EQ(poured.read(k).container.lo[0], -5.0);
+    EXPECT_EQ(poured.read(k).container.hi[0], 5.0);
+  }
+  // Both frames fit both: [0, 10].
+  EXPECT_EQ(FrameReader(two_frames("either.h5", 0.5, 1.0)).read(1).container.lo[0], 0.0);
 }
 
 // Walls are placed from the particle centres: a NaN among them is reported by the frame

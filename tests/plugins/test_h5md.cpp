@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -465,22 +466,30 @@ TEST_F(RunPartsTest, TheSamePositionsWithOtherIdsSpeciesContainerOrTimeAreRefuse
     w.close();
     return error_of([&] { return joined(a, {p}); });
   };
-  const auto refused = [&](const std::string& name, const std::string& difference) {
+  const auto refused = [&](const std::string& name, const std::string& difference,
+                           const std::string& detail) {
     return "params.continued_in[0]: " + (dir_ / name).string() +
            " starts at step 20, expected a frame that the parts before it hold, got " + difference +
-           " than " + a.string() + ": frame 2 (not a continuation of it)";
+           " than " + a.string() + ": frame 2 (" + detail + "; not a continuation of it)";
   };
   EXPECT_EQ(join("ids.h5", [](Frame& f) { f.id() += 100; }),
-            refused("ids.h5", "other particle ids"));
+            refused("ids.h5", "other particle ids", "row 0: 100, there 0"));
   EXPECT_EQ(join("species.h5", [](Frame& f) { f.species()[1] = 1; }),
-            refused("species.h5", "other species"));
+            refused("species.h5", "other species", "row 1: 1, there 0"));
   EXPECT_EQ(join("walls.h5",
                  [](Frame& f) {
                    f.container.boundary[0] = {Boundary::Wall, Boundary::Wall};
                  }),
-            refused("walls.h5", "another container"));
-  EXPECT_EQ(join("time.h5", [](Frame& f) { f.time = 50.0; }), refused("time.h5", "another time"));
+            refused("walls.h5", "another container", "boundary along x wall, there periodic"));
+  EXPECT_EQ(
+      join("time.h5", [](Frame& f) { f.time = 50.0; }),
+      refused("time.h5", "another time", "time 50, there 0 (a converter run with another dt?)"));
   EXPECT_EQ(join("same.h5", [](Frame&) {}), "(no InputError)");
+  // An undefined time (NaN: frames of a dump read without dt) is the same in both parts.
+  const double nan = std::nan("");
+  const fs::path undefined_a = write_frames("undefined_a.h5", {0, 1, 2}, 1, 3, {nan, nan, nan});
+  const fs::path undefined_b = write_frames("undefined_b.h5", {2, 3}, 2, 3, {nan, nan});
+  EXPECT_EQ(steps_of(*joined(undefined_a, {undefined_b})), (Steps{0, 10, 20, 30}));
 }
 
 TEST_F(RunPartsTest, OtherParticlesAreRefused) {
