@@ -127,8 +127,12 @@ SavedPacking read_saved_packing(const StartFrame& start, const TapBox& box, long
                      number(f.radius().maxCoeff()));
   }
   check_box(at, f, box);
+  // Along periodic sides any image is the sphere (another tool's file may hold any): the
+  // checks searched around the image as given and filed it wrapped, passing an overlap
+  // through the sides (exit 0) or finding two spheres in one cell (exit 1).
   std::vector<Eigen::Vector3d> x(static_cast<std::size_t>(n));
-  for (long k = 0; k < n; ++k) x[static_cast<std::size_t>(k)] = f.position().row(k).transpose();
+  for (long k = 0; k < n; ++k)
+    x[static_cast<std::size_t>(k)] = box.wrap(f.position().row(k).transpose());
   check_inside(at, x, box);
   check_resting(at, x, box);
   check_overlaps(at, x, box);

@@ -541,5 +541,31 @@ TEST(Spheres3dTapSavedStart, AContainerOtherThanTheModelsIsRefused) {
             expected + "[0, 6] x [0, 6] over a bottom at z = -1");
 }
 
+// Along periodic sides a saved sphere may be any image of itself: one 10 out along x,
+// overlapping another once wrapped, passed (exit 0); one a whole period out ended in the
+// grid ("two spheres in one cell", exit 1).
+TEST(Spheres3dTapSavedStart, ImagesAlongPeriodicSidesAreCheckedWhereTheyWrap) {
+  const TapBox periodic = box(6.0, Sides::Periodic);
+  StartFrame start;
+  start.where = "f";
+  Frame& f = start.frame;
+  f.resize(2, 3);
+  f.radius().setConstant(kR);
+  f.container = periodic.container(10.0);
+  f.position() << 1, 1, kR, 1 + 6 + 0.5 * kR, 1 + 12, kR;  // wraps to 0.5 R from the first
+  EXPECT_EQ(test::input_error_of([&] {
+              read_saved_packing(start, periodic, 2);
+            }).rfind("f: spheres 0 and 1 overlap (centres ", 0),
+            0u);
+  f.position() << 1, 1, kR, 1 + 6, 1 - 6, kR;  // the first, one period out
+  EXPECT_EQ(test::input_error_of([&] {
+              read_saved_packing(start, periodic, 2);
+            }).rfind("f: spheres 0 and 1 overlap (centres 0 apart", 0),
+            0u);
+  f.position() << 1, 1, kR, 4 + 60, 1, kR;
+  const SavedPacking kept = read_saved_packing(start, periodic, 2);
+  EXPECT_EQ(kept.centres[1].x(), 4.0);
+}
+
 }  // namespace
 }  // namespace granpipe::spheres3d_tap
