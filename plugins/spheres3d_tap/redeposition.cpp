@@ -111,6 +111,10 @@ TapStats Redeposition::tap(std::vector<Eigen::Vector3d>& centres, double epsilon
 
 std::int64_t Redeposition::trials_per_check(std::size_t spheres) const {
   if (options_.check_moves > 0) return options_.check_moves;
+  return fewest_trials_per_check(spheres);
+}
+
+std::int64_t Redeposition::fewest_trials_per_check(std::size_t spheres) {
   return std::max(static_cast<std::int64_t>(spheres), kFewestTrialsPerCheck);
 }
 

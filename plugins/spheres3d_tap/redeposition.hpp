@@ -41,6 +41,10 @@ class Redeposition {
   // sphere by d_max at most. When it is below eta <Z>, every tap stops at its first check
   // whether the packing settled or not.
   double largest_height_change(std::size_t spheres) const;
+  // The fewest trials between two checks, and the default: one sweep (N), at least 64. A
+  // check of a few trials sees a few spheres' moves, and a run of refused ones passed for
+  // settled (check_moves 10 of 500 spheres: every tap "converged", <Z> rising 18 to 24 R).
+  static std::int64_t fewest_trials_per_check(std::size_t spheres);
   double eta() const { return options_.eta; }
   // Neighbour lists renewed one sphere at a time since the object was made.
   std::size_t list_renewals() const { return lists_.renewals(); }

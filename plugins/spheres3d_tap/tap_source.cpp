@@ -230,6 +230,15 @@ TapSource::TapSource(const PluginContext& ctx)
                      ": expected true for a run of no tap (taps 0), got false: the run would "
                      "save no frame");
   }
+  const std::int64_t check_moves = ctx.params.integer("check_moves");
+  const std::int64_t fewest = Redeposition::fewest_trials_per_check(static_cast<std::size_t>(n_));
+  if (check_moves > 0 && check_moves < fewest) {
+    throw InputError(ctx.param("check_moves") + ": expected 0 (one sweep) or at least " +
+                     std::to_string(fewest) + " trials (N, and at least 64), got " +
+                     std::to_string(check_moves) +
+                     ": a shorter check sees a few spheres' moves, and a run of refused ones "
+                     "passes for settled");
+  }
   const std::optional<StartFrame> start = read_start_frame(ctx, box_.radius);
   // Without a file it would change nothing: a start meant to continue a run would
   // silently begin a new one.
