@@ -355,6 +355,9 @@ bool TapSource::next(Frame& frame) {
       start();
       check_stopping_rule();
       started_ = true;
+      // A continuation starts at the saved tap: its epsilon and leg, not a deposition's
+      // (0, -1), which a part read alone grouped with the deposition. No trial ran here.
+      if (tap_ > 0) e = protocol_.at(tap_);
     } else {
       ++tap_;
       e = protocol_.at(tap_);

@@ -35,6 +35,9 @@ steps = list(later["step"][:])
 assert steps == [2, 3, 4, 6], f"expected the taps 2 (the saved one), 3, 4, 6 (the log schedule), found {steps}"
 assert np.array_equal(first["value"][-1], later["value"][0]), "the start is not the saved packing"
 assert not np.array_equal(later["value"][1], later["value"][0]), "tap 3 moved nothing"
+# The start is the saved tap 2, with its epsilon (it was labelled a deposition's 0).
+epsilon = h5py.File(sys.argv[2], "r")["observables/epsilon/value"][0]
+assert epsilon == 0.05, f"the continued start's epsilon is {epsilon}, not tap 2's 0.05"
 print("continued count: taps 2 to 6 on the log schedule")
 PY
 cp "$work/first/frames.h5" "$work/overlap.h5"
