@@ -13,11 +13,10 @@ void require_fine_positions(double farthest, double allowance, double length,
   if (!(allowance * rounding > kFinestResolved * length)) return;
   std::ostringstream s;
   s << where << ": positions up to " << format_number(farthest)
-    << " from the origin are rounded to " << format_number(rounding)
-    << ": expected a rounding allowance (" << format_number(allowance) << " x that, "
-    << format_number(allowance * rounding) << ") within " << format_number(kFinestResolved)
-    << " of the " << length_name << " (" << format_number(length)
-    << "); move the origin into the packing";
+    << " from the origin are rounded to " << format_number(rounding) << ": expected "
+    << format_number(allowance) << " times that (" << format_number(allowance * rounding)
+    << ") to be at most " << format_number(kFinestResolved) << " of the " << length_name << " ("
+    << format_number(kFinestResolved * length) << "); move the origin into the packing";
   throw InputError(s.str());
 }
 

@@ -1,6 +1,7 @@
 #include "mutual_stability.hpp"
 
 #include <cmath>
+#include <utility>
 
 #include "granpipe/container_check.hpp"
 #include "granpipe/errors.hpp"

@@ -12,17 +12,17 @@ namespace granpipe::lammps_data {
 
 namespace {
 
-// write_data of a 2D run puts every atom at z = 0 in a box about an atom thick along z: disks,
-// which 3D analyzers would measure as spheres (exit 0). No 3D packing fits in a box no thicker
-// than an atom's diameter; the lammps_dump source refuses such dumps alike.
-void refuse_a_2d_run(const Frame& f, const std::string& file) {
+// write_data of a 2D run puts every atom at z = 0, in a box whose z bounds straddle it
+// (LAMMPS requires so of a 2D run): disks, which 3D analyzers would measure as spheres
+// (exit 0). A data file states no periodic flags, so the dump's test (a box periodic along
+// z, no thicker than an atom) is not the data's: a granular bed sits on a base at z = R,
+// no 3D packing has every centre at exactly 0.
+void refuse_a_2d_run(const Frame& f, const Container& box, const std::string& file) {
   const auto z = f.position().col(2);
-  const double diameter = 2.0 * f.radius().maxCoeff(), thick = f.container.length(2);
-  if (thick > diameter || (z != z[0]).any()) return;
+  if ((z != 0.0).any() || !(box.lo[2] < 0.0 && box.hi[2] > 0.0)) return;
   throw InputError(file + ": expected a 3D packing (granpipe's LAMMPS readers read 3D runs), got " +
-                   "every atom at z = " + format_number(z[0]) + " in a box " +
-                   format_number(thick) + " thick (zlo zhi), no more than an atom's diameter (" +
-                   format_number(diameter) + "): a 2D run's data file");
+                   "every atom at z = 0 in a box from zlo " + format_number(box.lo[2]) +
+                   " to zhi " + format_number(box.hi[2]) + ": a 2D run's data file");
 }
 
 }  // namespace
@@ -45,7 +45,7 @@ LammpsDataSource::LammpsDataSource(const PluginContext& ctx) {
   frame_ = read_atoms(in, file);
   if (frame_.size() == 0) throw InputError(file + ": expected atoms, got none");
   frame_.check(file);
-  refuse_a_2d_run(frame_, file);
+  refuse_a_2d_run(frame_, frame_.container, file);
   // Without a cylinder or side walls, the x and y sides are the file's box, open.
   const Container file_box = frame_.container;
   frame_.container = stated.place(file_box, file);

@@ -64,7 +64,7 @@ std::int64_t unproven(const MstOptions& o, const TcpReport& r) {
 }
 
 // How far apart two lengths may be and still tie: 64 units in the last place of the largest
-// coordinate (or box side), above the rounding of a centre distance computed from such
+// coordinate (or periodic box side), above the rounding of a centre distance computed from such
 // coordinates (a few units) and below any difference of lengths that is not rounding near
 // the origin. Without it an SC lattice moved by 0.1 selected 248 contacts in pass 2 instead
 // of 239. Far enough out it reaches the lengths themselves (a whole diameter at 1e14, every
@@ -72,7 +72,9 @@ std::int64_t unproven(const MstOptions& o, const TcpReport& r) {
 double tie_length(const Frame& f, const std::string& where) {
   constexpr double kTieSpacings = 64.0;
   double largest = largest_coordinate(f);
+  // A periodic side's bounds enter the images' lengths; a wall's enter none.
   for (int a = 0; a < f.dim; ++a) {
+    if (!f.container.periodic(a)) continue;
     largest = std::max({largest, std::abs(f.container.lo[a]), std::abs(f.container.hi[a])});
   }
   if (f.size() > 0) {

@@ -7,13 +7,16 @@ namespace granpipe::xyz {
 namespace {
 
 // Extended XYZ names for the columns OVITO and ASE know; others keep their own name.
-std::string xyz_name(const std::string& column) {
+// Readers key the properties by name: a dump's column "pos" or "velo" written as such would
+// be taken for the positions or velocities, so it gets "_column" added, as often as it takes
+// to differ from the frame's other columns.
+std::string xyz_name(const std::string& column, const PropertyTable& columns) {
   if (column == "position") return "pos";
   if (column == "velocity") return "velo";
-  // Readers key the properties by name: a dump's column "pos" or "velo" written as such
-  // would be taken for the positions or velocities.
-  if (column == "pos" || column == "velo") return column + "_column";
-  return column;
+  if (column != "pos" && column != "velo") return column;
+  std::string name = column + "_column";
+  while (columns.has(name)) name += "_column";
+  return name;
 }
 
 char xyz_type(ValueType t) { return t == ValueType::Real ? 'R' : 'I'; }
@@ -65,7 +68,7 @@ std::string comment_line(const Frame& f) {
   for (std::size_t k = 0; k < f.particles.size(); ++k) {
     const Column& col = f.particles.column(k);
     if (k) properties += ':';
-    properties += xyz_name(col.name());
+    properties += xyz_name(col.name(), f.particles);
     properties += ':';
     properties += xyz_type(col.property().type);
     properties += ':';

@@ -258,10 +258,6 @@ TEST(ForceNetwork, WithoutLoadedContactsTheStatisticsAreUndefinedNotZero) {
   }
 }
 
-// All forces equal: f = 1 for every contact, a PDF that is one spike (five bins of 0.2, the
-// last one full), which Eq. (11) cannot follow: the minimiser fails, and that is a status,
-// with finite (zero) values.
-// Not fitted is undefined: NaN values and errors, never a 0 that reads as a result.
 // Bins of f_max / round(f_max / bin_width) were 0.1667 wide for 0.2 asked.
 TEST(ForceNetwork, PdfBinsAreBinWidthWideUpToFMaxRoundedUp) {
   const std::vector<double> f{0.1, 0.3};
@@ -275,6 +271,10 @@ TEST(ForceNetwork, PdfBinsAreBinWidthWideUpToFMaxRoundedUp) {
             "past it");
 }
 
+// All forces equal: f = 1 for every contact, a PDF that is one spike (five bins of 0.2, the
+// last one full), which Eq. (11) cannot follow: the minimiser fails, and that is a status,
+// with finite (zero) values.
+// Not fitted is undefined: NaN values and errors, never a 0 that reads as a result.
 TEST(ForceNetwork, ASpikeOfEqualForcesIsNotFittedAndReportedUndefined) {
   std::vector<double> f(500, 1.0);
   const PdfFit fit = fit_pdf(force_pdf(f, pdf_edges(f, 0.0, 0.2)), eq11_request(100));

@@ -300,8 +300,11 @@ TEST_F(LammpsDataSource, AFlatLayerOfA2dRunIsRefusedAsSuch) {
       "Atoms # sphere\n\n1 1 1 1.91 0 0 0\n7 1 1 1.91 1 0 0\n";
   EXPECT_EQ(refusal(flat),
             "spheres.data: expected a 3D packing (granpipe's LAMMPS readers read 3D runs), got "
-            "every atom at z = 0 in a box 1 thick (zlo zhi), no more than an atom's diameter (1): "
-            "a 2D run's data file");
+            "every atom at z = 0 in a box from zlo -0.5 to zhi 0.5: a 2D run's data file");
+  // A 3D monolayer on a base, in a box one diameter thick, is no 2D run.
+  EXPECT_EQ(refusal("title\n\n2 atoms\n\n-2 2 xlo xhi\n-2 2 ylo yhi\n0 1 zlo zhi\n\n"
+                    "Atoms # sphere\n\n1 1 1 1.91 0 0 0.5\n7 1 1 1.91 1 0 0.5\n"),
+            "accepted");
 }
 
 TEST_F(LammpsDataSource, ASphereThroughTheCylinderIsRefusedByAtomId) {

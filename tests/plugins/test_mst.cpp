@@ -214,9 +214,9 @@ TEST(Mst, PositionsRoundedToAFractionOfAContactAreRefused) {
   FrameCache cache;
   EXPECT_EQ(granpipe::test::input_error_of(
                 [&] { tcp_report(f, cache, options(Candidates::Cutoff), "frame 0"); }),
-            "frame 0: positions up to 1e+14 from the origin are rounded to 0.015625: expected a "
-            "rounding allowance (64 x that, 1) within 0.001 of the smallest contact distance "
-            "(1); move the origin into the packing");
+            "frame 0: positions up to 1e+14 from the origin are rounded to 0.015625: expected 64 "
+            "times that (1) to be at most 0.001 of the smallest contact distance (0.001); move "
+            "the origin into the packing");
 }
 
 TEST(Mst, PassOneTcpsAreTreesOnTheContactNetworksParticles) {

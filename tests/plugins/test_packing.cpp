@@ -521,8 +521,8 @@ TEST(Packing, PositionsRoundedToAFractionOfADiameterAreRefused) {
     }
     EXPECT_EQ(granpipe::test::input_error_of([&] { measure(f, s); }),
               "packing: frame at step 0: positions up to 1e+14 from the origin are rounded to "
-              "0.015625: expected a rounding allowance (64 x that, 1) within 0.001 of the mean "
-              "diameter (1); move the origin into the packing");
+              "0.015625: expected 64 times that (1) to be at most 0.001 of the mean diameter "
+              "(0.001); move the origin into the packing");
   }
 }
 

@@ -44,11 +44,11 @@ TEST(Xyz, CommentLineListsTheBoxItsOriginThePeriodicSidesAndEveryColumn) {
 
 TEST(Xyz, AColumnOfTheNameOfPositionsOrVelocitiesIsWrittenApart) {
   Frame f = two_disks();
-  for (const char* name : {"pos", "velo"})
+  for (const char* name : {"pos", "velo", "pos_column"})
     f.particles.add({name, Scope::Particle, ValueType::Real, 1, "", ""});
   const std::string line = xyz::comment_line(f);
   EXPECT_NE(line.find("Properties=pos:R:3:radius:R:1:id:I:1:species:I:1:supports:I:2:"
-                      "pos_column:R:1:velo_column:R:1 "),
+                      "pos_column_column:R:1:velo_column:R:1:pos_column:R:1 "),
             std::string::npos)
       << line;
 }
