@@ -21,6 +21,7 @@
 #include "h5_dataset.hpp"
 #include "h5_element.hpp"
 #include "h5_frame_layout.hpp"
+#include "length_unit.hpp"
 
 namespace granpipe {
 namespace L = frame_layout;
@@ -659,7 +660,8 @@ void FrameReader::Impl::check_frame_fits() const {
 
 // H5MD states a unit per element, and granpipe computes with the numbers as stored:
 // positions in nm beside box edges in angstrom gave a packing fraction 1000 times off with
-// exit 0. The lengths the frame is built from must state one unit, or none.
+// exit 0. The lengths the frame is built from must state one unit (however written: A and
+// Angstrom, 0.1 nm), or none.
 void FrameReader::Impl::check_length_units() const {
   std::string unit, stated_by;
   const auto consider = [&](const h5::Element& e) {
@@ -668,7 +670,7 @@ void FrameReader::Impl::check_length_units() const {
     if (stated_by.empty()) {
       unit = u;
       stated_by = e.path();
-    } else if (u != unit) {
+    } else if (!same_length_unit(u, unit)) {
       throw h5::Error(e.path() + "@unit: expected \"" + unit + "\", the unit of " + stated_by +
                       " (granpipe reads lengths as stored, in one unit), got \"" + u + "\"");
     }

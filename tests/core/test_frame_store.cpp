@@ -670,6 +670,14 @@ TEST_F(FrameStore, LengthsInDifferentUnitsAreRefusedNamingBoth) {
             "/particles/atoms/position/value (granpipe reads lengths as stored, in one unit), got "
             "\"angstrom\"");
   EXPECT_EQ(reader_error(with_units("same.h5", "nm", "nm")), "no error");
+  // One length written two ways (MDAnalysis reads A, Angstrom and angstrom alike; H5MD
+  // allows a leading factor).
+  EXPECT_EQ(reader_error(with_units("spelt.h5", "A", "Angstrom")), "no error");
+  EXPECT_EQ(reader_error(with_units("factor.h5", "0.1 nm", "angstrom")), "no error");
+  EXPECT_EQ(reader_error(with_units("ten.h5", "10 nm", "nm")),
+            "/particles/atoms/box/edges@unit: expected \"10 nm\", the unit of "
+            "/particles/atoms/position/value (granpipe reads lengths as stored, in one unit), got "
+            "\"nm\"");
   EXPECT_EQ(reader_error(with_units("one_stated.h5", "nm", "")), "no error");
 }
 
