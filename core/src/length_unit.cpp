@@ -1,19 +1,15 @@
 #include "length_unit.hpp"
 
 #include <array>
-#include <charconv>
 #include <cmath>
 #include <utility>
+#include <vector>
+
+#include "granpipe/text_words.hpp"
 
 namespace granpipe {
 
 namespace {
-
-std::string_view trimmed(std::string_view s) {
-  while (!s.empty() && s.front() == ' ') s.remove_prefix(1);
-  while (!s.empty() && s.back() == ' ') s.remove_suffix(1);
-  return s;
-}
 
 std::optional<double> symbol_metres(std::string_view symbol) {
   for (std::string_view angstrom : {"A", "\u00c5", "angstrom", "Angstrom"})
@@ -37,18 +33,12 @@ std::optional<double> symbol_metres(std::string_view symbol) {
 }  // namespace
 
 std::optional<double> metres_of(std::string_view unit) {
-  unit = trimmed(unit);
-  double factor = 1.0;
-  const auto [end, error] = std::from_chars(unit.data(), unit.data() + unit.size(), factor);
-  if (error == std::errc{}) {
-    if (!(factor > 0.0) || !std::isfinite(factor)) return std::nullopt;
-    unit.remove_prefix(static_cast<std::size_t>(end - unit.data()));
-  } else {
-    factor = 1.0;
-  }
-  const std::optional<double> metres = symbol_metres(trimmed(unit));
-  if (!metres) return std::nullopt;
-  return factor * *metres;
+  const std::vector<std::string_view> w = words(unit);
+  if (w.empty() || w.size() > 2) return std::nullopt;
+  const std::optional<double> factor = w.size() == 2 ? real_number(w[0]) : 1.0;
+  const std::optional<double> metres = symbol_metres(w.back());
+  if (!factor || !(*factor > 0.0) || !std::isfinite(*factor) || !metres) return std::nullopt;
+  return *factor * *metres;
 }
 
 bool same_length_unit(std::string_view a, std::string_view b) {
