@@ -185,6 +185,7 @@ void OutputDirectory::claim_beside() {
 void OutputDirectory::complete(Log& log) {
   interruption_.reset();
   throw_if_stop_requested();  // a signal that came before the handlers were given back
+  remove_report_of_results_so_far(work_);
   write_run_manifest(work_, files_);
   manifest_written_ = true;
   marker_.status = RunStatus::Complete;

@@ -83,6 +83,16 @@ bool is_report(const fs::path& file) {
   return regular_file(file) && head_of(file, 4096).find(kReportMark) != std::string::npos;
 }
 
+}  // namespace
+
+void remove_report_of_results_so_far(const fs::path& dir) {
+  const fs::path report = dir / "report.html";
+  std::error_code ignored;  // gone already: nothing to do
+  if (is_report(report)) fs::remove(report, ignored);
+}
+
+namespace {
+
 // Whether the file starts as `start` does, or with a piece of it (a disk that filled up
 // left a log empty).
 bool starts_as(const fs::path& file, std::string_view start) {

@@ -22,6 +22,12 @@ inline constexpr const char* kRunManifestName = ".granpipe-manifest";
 // tables: scripts/run_manifest.py). Throws InputError.
 void write_run_manifest(const std::filesystem::path& dir, const FileRecord& recorded);
 
+// Removes granpipe's report.html from `dir` (a user's file of that name is left): one drawn
+// while the run went (`granpipe report DIR`) shows the results so far, and stayed in the
+// finished run, listed as its own, after a run with --no-report. Call when the run is
+// complete, before its manifest is written; the final report is drawn after it.
+void remove_report_of_results_so_far(const std::filesystem::path& dir);
+
 // The entries below `dir`, sorted, that its run did not write: those missing from its
 // manifest, or, for a run without one (killed outright, or made before manifests), those
 // that are not among the files a run writes before it ends (the marker, pipeline.json,

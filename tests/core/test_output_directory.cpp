@@ -46,13 +46,14 @@ class PickyAnalyzer : public Analyzer {
 // Where ScribblingAnalyzer writes a user's notes while a run goes on, and their names.
 fs::path scribble_into;
 std::vector<std::string> scribbled{"notes.txt"};
+std::string scribbled_text = "mine";
 
 // A user writing notes into a folder while a run goes on.
 class ScribblingAnalyzer : public Analyzer {
  public:
   explicit ScribblingAnalyzer(const PluginContext&) {}
   void consume(const Frame&, FrameCache&) override {
-    for (const std::string& name : scribbled) std::ofstream(scribble_into / name) << "mine";
+    for (const std::string& name : scribbled) std::ofstream(scribble_into / name) << scribbled_text;
   }
   void finish(Results&) override {}
 };
@@ -443,6 +444,25 @@ TEST(OutputDirectory, WhatAUserAddsToAFreshRunsFolderIsNotTheRuns) {
                 "notes.txt, scribbling_notes.txt, source.todo; move them out or remove the folder "
                 "yourself; nothing was changed");
   EXPECT_EQ(snapshot(out), before);
+  fs::remove_all(out);
+}
+
+// `granpipe report DIR` while a run goes draws the results so far; after a run with
+// --no-report that page stayed, listed as the run's. A user's report.html is theirs.
+TEST(OutputDirectory, AReportOfTheResultsSoFarIsGoneWhenTheRunIsComplete) {
+  const fs::path out = fresh_dir("report_so_far");
+  scribble_into = out;
+  scribbled = {"report.html"};
+  scribbled_text = "<html><meta name=generator content=\"granpipe report\"> so far";
+  ASSERT_EQ(run(kScribbling, out), "");
+  EXPECT_FALSE(fs::exists(out / "report.html"));
+  EXPECT_EQ(read_file(out / ".granpipe-manifest").find("report.html"), std::string::npos);
+  fs::remove_all(out);
+  scribbled_text = "mine";  // a user's page of that name
+  ASSERT_EQ(run(kScribbling, out), "");
+  EXPECT_EQ(read_file(out / "report.html"), "mine");
+  EXPECT_EQ(read_file(out / ".granpipe-manifest").find("report.html"), std::string::npos);
+  scribbled = {"notes.txt"};
   fs::remove_all(out);
 }
 
