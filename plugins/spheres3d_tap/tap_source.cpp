@@ -239,6 +239,9 @@ TapSource::TapSource(const PluginContext& ctx)
                      ": a shorter check sees a few spheres' moves, and a run of refused ones "
                      "passes for settled");
   }
+  // <Z> is at least R: a rule that fails there fails every packing, and is refused when the
+  // pipeline is checked (eta 1 was refused at the first tap, its folder made and marked).
+  check_stopping_rule(box_.radius);
   const std::optional<StartFrame> start = read_start_frame(ctx, box_.radius);
   // Without a file it would change nothing: a start meant to continue a run would
   // silently begin a new one.
@@ -279,9 +282,9 @@ void TapSource::start() {
 // A tap that stops before its packing could move would lift the packing by 1 + epsilon
 // and leave it there, counted as settled (d_max 1e-6 or eta 1 did, exit 0). Heights only
 // grow on dilation, so what holds for the start holds for every tap.
-void TapSource::check_stopping_rule() const {
-  const double change = redeposition_.largest_height_change(centres_.size());
-  const double threshold = redeposition_.eta() * mean_height(centres_);
+void TapSource::check_stopping_rule(double height) const {
+  const double change = redeposition_.largest_height_change(static_cast<std::size_t>(n_));
+  const double threshold = redeposition_.eta() * height;
   if (change > threshold) return;
   throw InputError(eta_param_ + ": expected a stopping rule a settling packing can pass, got " +
                    "one every tap meets at its first check: between two checks <Z> moves by " +
@@ -353,7 +356,7 @@ bool TapSource::next(Frame& frame) {
     if (starting) {
       tap_ = 0;
       start();
-      check_stopping_rule();
+      check_stopping_rule(mean_height(centres_));
       started_ = true;
       // A continuation starts at the saved tap: its epsilon and leg, not a deposition's
       // (0, -1), which a part read alone grouped with the deposition. No trial ran here.
