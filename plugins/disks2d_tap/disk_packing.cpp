@@ -7,6 +7,7 @@
 #include "granpipe/cell_list.hpp"
 #include "granpipe/container_check.hpp"
 #include "granpipe/errors.hpp"
+#include "granpipe/format_number.hpp"
 
 namespace granpipe::disks2d_tap {
 
@@ -140,6 +141,27 @@ void DiskPacking::to_frame(Frame& frame) const {
       Container::open_top_box(2, Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(width, top(), 0));
 }
 
+namespace {
+
+// Disks at rest stand at most a column of all of them high. One far above (a typo, another
+// run's frame) was refused by the neighbour search in its own terms, naming neither the
+// file nor the disk ("expected a box at most 1e+09 contact ranges ...").
+void refuse_a_disk_far_above(const Frame& f, const std::string& where) {
+  if (f.size() == 0 || !f.position().allFinite()) return;  // the frame check names those
+  const double column = 2.0 * f.radius().sum();
+  Eigen::Index i = 0;
+  const double highest = (f.position().col(1) - f.radius()).maxCoeff(&i);
+  if (highest <= column) return;
+  std::ostringstream s;
+  s << where << ": disk " << i << " (id " << f.id()[i]
+    << ") at y = " << format_number(f.position()(i, 1))
+    << ": expected a packing at rest on the base, no disk higher than a column of all " << f.size()
+    << " disks (" << format_number(column) << ")";
+  throw InputError(s.str());
+}
+
+}  // namespace
+
 DiskPacking DiskPacking::from_frame(const Frame& frame, const std::string& where) {
   if (frame.dim != 2) {
     throw InputError(where + ": expected a 2D frame, got " + std::to_string(frame.dim) + "D");
@@ -177,6 +199,7 @@ DiskPacking DiskPacking::from_frame(const Frame& frame, const std::string& where
   for (Eigen::Index k = 0; k < frame.size(); ++k) {
     p.add(frame.position()(k, 0), frame.position()(k, 1), frame.radius()[k]);
   }
+  refuse_a_disk_far_above(frame, where);
   p.check(where, 1e-9);
   return p;
 }

@@ -589,6 +589,18 @@ TEST(Disks2dTapPacking, FromFrameRejectsWhatIsNotABedOfDisks) {
   Frame overlapping = f;
   overlapping.position().row(1) = overlapping.position().row(0);
   EXPECT_THROW(dt::DiskPacking::from_frame(overlapping, "f"), InputError);
+  // A disk far above the bed was refused by the neighbour search, naming neither the file nor
+  // the disk.
+  Frame far = f;
+  far.position()(3, 1) = 1e12;
+  const std::string m =
+      granpipe::test::input_error_of([&] { dt::DiskPacking::from_frame(far, "f"); });
+  EXPECT_EQ(
+      m.rfind("f: disk 3 (id 3) at y = 1e+12: expected a packing at rest on the base, no disk "
+              "higher than a column of all 40 disks (",
+              0),
+      0u)
+      << m;
   EXPECT_NO_THROW(dt::DiskPacking::from_frame(f, "f"));
 }
 
