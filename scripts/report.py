@@ -12,6 +12,7 @@ a reader never sees half a page and nothing else in RUN_DIR is touched."""
 import html
 import json
 import os
+import re
 import sys
 import warnings
 
@@ -61,11 +62,33 @@ def histogram_section(name, group):
               else [float("nan")] * len(values))
     rows = [[f"{number(edges[k])} – {number(edges[k + 1])}", with_error(values[k], errors[k])]
             for k in range(len(values))]
-    return (f"<h4>histogram {html.escape(name)}</h4><p>{html.escape(attr_text(group, 'doc'))}</p>"
-            + html_table([attr_text(group, "xlabel"), "value"], rows[:TABLE_ROWS_SHOWN]))
+    # A cut histogram said nothing of the bins left out (arches' spans: every arch in bins 22
+    # to 38 of 39, the 12 shown all 0).
+    shown = [k for k in range(len(values)) if values[k] != 0] if len(rows) > TABLE_ROWS_SHOWN else []
+    more = ""
+    if len(rows) > TABLE_ROWS_SHOWN:
+        rows = [rows[k] for k in shown[:TABLE_ROWS_SHOWN]]
+        more = (f" — {len(rows)} of the {len(values)} bins shown (those holding a value, from "
+                f"the lowest); every bin in results.h5")
+    return (f"<h4>histogram {html.escape(name)}</h4><p>{html.escape(attr_text(group, 'doc'))}"
+            f"{more}</p>" + html_table([attr_text(group, "xlabel"), "value"], rows))
 
 
 SECTIONS = {"fit": fit_section, "histogram": histogram_section}
+
+POINT_GROUP = re.compile(r"point_[0-9]+")
+
+
+def producers(results):
+    """(path, group) of every producer: at the top, or in the point_NNN groups of a sweep
+    whose sweep group is not written yet (a sweep stopped: its points showed as headings
+    over nothing)."""
+    for name in results:
+        group = producer(results, name)
+        if POINT_GROUP.fullmatch(name):
+            yield from ((f"{name}/{inner}", producer(group, inner)) for inner in group)
+        else:
+            yield name, group
 
 
 def producer_section(plt, path, group, paper, partial):
@@ -85,15 +108,61 @@ PROVENANCE = [("pipeline_name", attr_text), ("granpipe_version", attr_text),
               ("started", attr_text), ("wall_seconds", attr_number)]
 
 
-def provenance_section(results, partial):
+def provenance_section(results, partial, state):
     rows = [[k, str(read(results, k))] for k, read in PROVENANCE if k in results.attrs]
+    if partial:  # the partial file holds 0, which read as a run of no time
+        rows = [[k, "not measured (the run has not finished)" if k == "wall_seconds" else v]
+                for k, v in rows]
     if "stage_names" in results.attrs:  # where the time went (summed over a sweep's points)
         names = attr_texts(results, "stage_names")
         seconds = attr_numbers(results, "stage_seconds", len(names), "one per stage")
         rows += [[f"seconds in {name}", number(s)] for name, s in zip(names, seconds)]
-    state = ("<p class=note>this run has not finished (or was stopped): the results so far, "
-             "from results.partial.h5</p>" if partial else "")
-    return "<h2>Provenance</h2>" + state + html_table(None, rows)
+    note = (f"<p class=note>this run {html.escape(state)}: the results so far, from "
+            "results.partial.h5</p>" if partial else "")
+    return "<h2>Provenance</h2>" + note + html_table(None, rows)
+
+
+def run_state(run):
+    """What became of an unfinished run, as its marker and run.log say: "is still going",
+    "was interrupted (interrupted by SIGTERM ...)", "failed (...)"; a page of each read "has
+    not finished (or was stopped)" alike."""
+    try:
+        with open(os.path.join(run, ".granpipe-run"), errors="replace") as f:
+            status = json.loads(f.read(4096).strip() or "{}").get("status", "")
+    except (OSError, ValueError, AttributeError):
+        status = ""
+    said = [line.strip() for line in log_lines(run)
+            if line.startswith(("interrupted by ", "failed: "))]
+    detail = f" ({said[-1]})" if said else ""
+    if status == "running":
+        return "is still going (or was killed)"
+    if status in ("interrupted", "failed"):
+        return f"{'was interrupted' if status == 'interrupted' else 'failed'}{detail}"
+    return "has not finished (or was stopped)"
+
+
+def log_lines(run):
+    """run.log's lines (none where there is no log)."""
+    try:
+        with open(os.path.join(run, "run.log"), errors="replace") as f:
+            return f.read().splitlines()
+    except OSError:
+        return []
+
+
+MOST_WARNINGS_SHOWN = 20
+
+
+def warnings_section(run):
+    """run.log's warnings (undefined results, left-out inputs), which the page left out."""
+    said = [line for line in log_lines(run) if line.startswith("warning: ")]
+    if not said:
+        return ""
+    more = (f"<p>the first {MOST_WARNINGS_SHOWN} of {len(said)}; every one in run.log</p>"
+            if len(said) > MOST_WARNINGS_SHOWN else "")
+    items = "".join(f"<li>{html.escape(line[len('warning: '):])}</li>"
+                    for line in said[:MOST_WARNINGS_SHOWN])
+    return f"<h2>Warnings</h2>{more}<ul>{items}</ul>"
 
 
 STYLE = """body{font-family:sans-serif;max-width:60em;margin:1em auto;padding:0 1em}
@@ -195,15 +264,16 @@ def report_body(run, pipeline_text, pipeline, results, partial, note, plt):
     paper = PaperValues(pipeline)
     parts = [f"<p class=note>{html.escape(note)}</p>" if note else ""]
     if results is not None:
-        parts.append(provenance_section(results, partial))
+        parts.append(provenance_section(results, partial, run_state(run) if partial else ""))
+        parts.append(warnings_section(run))
         parts.append("<h2>Results</h2>")
         if plt is None:
             parts.append("<p class=note>plots not drawn: matplotlib is not installed</p>")
         if "sweep" in results:
             parts.append(sweep_section(plt, results, pipeline, paper))
         else:
-            parts += [producer_section(plt, name, producer(results, name), paper, partial)
-                      for name in results]
+            parts += [producer_section(plt, path, group, paper, partial)
+                      for path, group in producers(results)]
         if plt is not None:
             parts.append(paper.notes())
         parts.append(configuration_section(plt, run))

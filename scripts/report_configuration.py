@@ -144,7 +144,8 @@ def configuration_svg(plt, frame):
 
 def configuration_section(plt, run):
     """A picture of the last saved frame, when the run saved frames (a sweep: its first point)."""
-    for name in ("frames.h5", "frames.partial.h5", "point_000/frames.h5"):
+    for name in ("frames.h5", "frames.partial.h5", "point_000/frames.h5",
+                 "point_000/frames.partial.h5"):
         path = os.path.join(run, name)
         if os.path.exists(path):
             break

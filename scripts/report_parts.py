@@ -3,6 +3,7 @@ tables (results.h5's read by report_h5), and matplotlib figures inlined as SVG."
 import html
 import io
 import math
+import numbers
 
 from report_h5 import attr_text, damaged, read_table
 
@@ -11,9 +12,16 @@ MARKED_POINTS = 60  # a line of more points is drawn without a marker at each (p
 MAX_LEGEND_LINES = 12  # more lines than this make a legend that hides the plot
 
 
+# Whole numbers below this are shown whole: a count of 1412032 trials read "1.41203e+06".
+WHOLE_SHOWN_BELOW = 1e15
+
+
 def number(x):
     if isinstance(x, float) and math.isnan(x):
         return "undefined"
+    if isinstance(x, numbers.Integral) or (isinstance(x, float) and x.is_integer()
+                                           and abs(x) < WHOLE_SHOWN_BELOW):
+        return str(int(x))
     return f"{x:.6g}"
 
 

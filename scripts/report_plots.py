@@ -47,7 +47,11 @@ def plot_svg(plt, declared, tables, plot, paper):
         return None
     paper.draw(ax, plot, lambda x, y, e: drawable(x, y, e, logx, logy))
     ax.set_xlabel(plain(axis_label(attr_text(declared, "xlabel"), unit_of[x_name])))
-    ax.set_ylabel(plain(attr_text(declared, "ylabel")))
+    # The y columns' unit where they share one (only x had its unit: compaction's <Z> in R
+    # read as a bare number).
+    y_units = {unit_of[y] for y in attr_texts(declared, "y")}
+    y_unit = y_units.pop() if len(y_units) == 1 else ""
+    ax.set_ylabel(plain(axis_label(attr_text(declared, "ylabel"), y_unit)))
     ax.set_title(plain(attr_text(declared, "title")))
     return inline_svg(plt, fig, ax, logx, logy)
 

@@ -57,18 +57,19 @@ def report_problem(report):
     return next((p for p in problems if p), "")
 
 
-def point_labels(results, points):
+def point_labels(results, points, pipeline):
     """{point group name: "point k: swept values"} from the sweep's summary table, whose
-    points each have their group."""
+    points each have their group; a string parameter by its string (it read "lattice = 3")."""
     columns, _, data = read_table(points)
     if "point" not in data:
         raise damaged(points, 'a column "point"', "none", "columns")
     indices(points, "point", data["point"])
     swept = [c for c in columns[1:] if ".params." in c]  # the swept paths, then scalars
+    name_of = value_namer(pipeline)
     labels = {}
     for row, k in enumerate(data["point"].astype(int)):
         member(results, f"point_{k:03d}", "group")
-        values = ", ".join(f"{c.split('.')[-1]} = {number(data[c][row])}" for c in swept)
+        values = ", ".join(f"{c.split('.')[-1]} = {name_of(c, data[c][row])}" for c in swept)
         labels[f"point_{k:03d}"] = f"{k}: {values}" if values else str(k)
     return labels
 
@@ -79,7 +80,7 @@ def sweep_section(plt, results, pipeline, paper):
     parts = ["<h3 id=sweep>sweep</h3>",
              table_section("sweep", "points", points, SWEEP_ROWS_SHOWN),
              declared_sweep_section(plt, results, pipeline, paper)]
-    labels = point_labels(results, points)
+    labels = point_labels(results, points, pipeline)
     drawn = sorted(labels)
     if len(drawn) > MAX_SWEEP_LINES:  # evenly spaced points, the first and the last among them
         step = (len(drawn) - 1) / (MAX_SWEEP_LINES - 1)

@@ -6,11 +6,14 @@ error); `granpipe report` on demand; --no-report; without matplotlib the tables 
 and the page says why; a folder that is no run refused in one line with exit 2, and so is a
 damaged pipeline.json (truncated, a list, not UTF-8, a sweep that is no object, paper values
 whose x and y differ in length), by granpipe report and by the script."""
+import html
 import json
 import os
+import signal
 import subprocess
 import sys
 import tempfile
+import time
 from html.parser import HTMLParser
 
 exe, pipeline, python = sys.argv[1], sys.argv[2], sys.argv[3]
@@ -138,6 +141,42 @@ with tempfile.TemporaryDirectory() as work:
     page = Page(os.path.join(single, "report.html"))
     check(any("matplotlib is not installed" in n for n in page.notes), f"notes: {page.notes}")
     check(not page.figures and "X_inf" in page.cells, "without matplotlib: tables missing")
+
+    # The warnings of run.log (undefined results) are on the page too.
+    with open(os.path.join(single, "run.log")) as f:
+        said = [line[len("warning: "):].strip() for line in f if line.startswith("warning: ")]
+    with open(os.path.join(single, "report.html")) as f:
+        text = f.read()
+    check(bool(said) and all(html.escape(s)[:60] in text for s in said),
+          f"run.log's warnings not on the page: {said[:3]}")
+
+    # A sweep stopped with SIGTERM: the page says so and why, shows each point's results so
+    # far (its point groups were headings over nothing), and no wall time of 0.
+    stopped = os.path.join(work, "stopped")
+    endless = [a if a != "source.params.taps=3" else "source.params.taps=100000" for a in toy]
+    run = subprocess.Popen([exe, pipeline, *endless, "--no-report", "--out", stopped])
+    partial = os.path.join(stopped, "results.partial.h5")
+    for _ in range(600):
+        if run.poll() is not None or (os.path.exists(partial) and os.path.getsize(partial) > 0):
+            break
+        time.sleep(0.05)
+    time.sleep(1.0)
+    run.send_signal(signal.SIGTERM)
+    run.wait()
+    subprocess.run([exe, "report", stopped], check=True)
+    page = Page(os.path.join(stopped, "report.html"))
+    check(any("this run was interrupted (interrupted by SIGTERM" in n for n in page.notes),
+          f"a stopped run's state: {page.notes}")
+    check("not measured (the run has not finished)" in page.cells and "0.0" not in page.cells,
+          f"a stopped run's wall time: {page.cells[:16]}")
+    with open(os.path.join(stopped, "report.html")) as f:
+        check('id="point_000/compaction"' in f.read(), "a stopped sweep's points: no results")
+
+    # Counts are shown whole (1412032 trials read "1.41203e+06").
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(exe)), "share", "granpipe"))
+    from report_parts import number
+    check(number(1412032.0) == "1412032" and number(0.5) == "0.5" and number(2.5e20) == "2.5e+20",
+          f"numbers: {number(1412032.0)} {number(0.5)} {number(2.5e20)}")
 
     # A report.html that granpipe did not write is the user's: refused, left as it was.
     with open(os.path.join(sweep, "report.html"), "w") as f:
