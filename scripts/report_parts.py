@@ -9,7 +9,8 @@ from report_h5 import attr_text, damaged, read_table
 
 TABLE_ROWS_SHOWN = 12  # a long table is cut on the page; its CSV file has every row
 MARKED_POINTS = 60  # a line of more points is drawn without a marker at each (page size)
-MAX_LEGEND_LINES = 12  # more lines than this make a legend that hides the plot
+MAX_LEGEND_LINES = 12  # more lines than this go in a legend beside the plot, not over it
+LEGEND_ROWS = 24  # a column of the legend beside the plot
 
 
 # Whole numbers below this are shown whole: a count of 1412032 trials read "1.41203e+06".
@@ -105,11 +106,16 @@ def inline_svg(plt, fig, ax, logx, logy):
     if logy:
         ax.set_yscale("log")
     labelled = ax.get_legend_handles_labels()[0]  # none in a plot of no point
-    if labelled and len(ax.get_lines()) <= MAX_LEGEND_LINES:
+    beside = len(labelled) > MAX_LEGEND_LINES
+    if beside:  # a sweep's 16 lines and more had no legend at all: which line was which?
+        ax.legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1.0),
+                  ncol=math.ceil(len(labelled) / LEGEND_ROWS))
+    elif labelled:
         ax.legend(fontsize="small")
     fig.tight_layout()
     out = io.StringIO()
-    fig.savefig(out, format="svg", metadata={"Date": None})  # the same run, the same page
+    fig.savefig(out, format="svg", metadata={"Date": None},  # the same run, the same page
+                bbox_inches="tight" if beside else None)
     plt.close(fig)
     svg = out.getvalue()
     return svg[svg.index("<svg"):]  # inline: without the XML prolog

@@ -128,7 +128,10 @@ with tempfile.TemporaryDirectory() as work:
                     long_sweep], check=True)
     subprocess.run([exe, "report", long_sweep], check=True)
     with open(os.path.join(long_sweep, "report.html")) as f:
-        check("compaction, 24 of 30 points" in f.read(), "a long sweep's plots: no bound said")
+        text = f.read()
+    check("compaction, 24 of 30 points" in text, "a long sweep's plots: no bound said")
+    # Their lines named in a legend beside the plot (past 12 lines there was none).
+    check("epsilon = 0.3" in text, "a long sweep's plots: no legend naming the points")
 
     # No matplotlib: a module of that name that fails to import stands for its absence.
     hidden = os.path.join(work, "hidden")
