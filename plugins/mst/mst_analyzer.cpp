@@ -152,8 +152,9 @@ void MstAnalyzer::consume(const Frame& frame, FrameCache& cache) {
 void MstAnalyzer::keep_table_ii(const Frame& frame, const TcpReport& report) {
   chosen_time_ = frame.time;
   table_ii_ = Table(kTableColumns,
-                    "the paper's Table II for the frame with the most particle-particle "
-                    "contacts of non-zero normal force (frame table_ii_frame)");
+                    "this run's Table II (as Sun, Battaglia & Subramaniam 2006 lay it out) for "
+                    "the frame with the most particle-particle contacts of non-zero normal "
+                    "force (frame table_ii_frame)");
   for (const PassRow& p : report.passes) table_ii_.add_row(table_row(report, p));
 }
 

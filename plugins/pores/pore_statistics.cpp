@@ -58,8 +58,8 @@ Table PoreStatistics::bernal_table() const {
   Table t({"hole", "xi_hole", "count", "number_percent", "volume_percent", "paper_number_percent",
            "paper_volume_percent"},
           "pores nearest each Bernal canonical hole (0 tetrahedron, 1 tetragonal dodecahedron, 2 "
-          "octahedron, 3 trigonal prism, 4 archimedean antiprism, 5 near none), beside the "
-          "paper's Table I");
+          "octahedron, 3 trigonal prism, 4 archimedean antiprism, 5 near none), beside Table I "
+          "of Philippe & Bideau's tapping paper (paper_ columns)");
   const auto& holes = bernal_holes();
   const double nan = std::nan("");
   for (std::size_t k = 0; k < hole_counts_.size(); ++k) {
