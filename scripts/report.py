@@ -43,7 +43,7 @@ def scalars_section(group):
     return html_table(["scalar", "value", "unit", "what"], rows) if rows else ""
 
 
-def fit_section(name, group):
+def fit_section(name, group, producer_group):
     names = attr_texts(group, "names")
     values = column(group, "values", len(names), "one per name in attribute names")
     errors = column(group, "errors", len(names), "one per name in attribute names")
@@ -51,7 +51,18 @@ def fit_section(name, group):
     chi2, dof = float(attr_number(group, "chi2")), attr_number(group, "dof", integer=True)
     return (f"<h4>fit {html.escape(name)}</h4><p><code>{html.escape(attr_text(group, 'model'))}"
             f"</code> (χ² = {number(chi2)}, {dof} degrees of freedom)</p>"
-            + html_table(["parameter", "value"], rows))
+            + fit_status(name, producer_group) + html_table(["parameter", "value"], rows))
+
+
+def fit_status(name, producer_group):
+    """The fit's status where its producer records one (`<name>_status`): a fit not made
+    showed every parameter undefined and said nothing of why, the reason elsewhere."""
+    status = f"{name}_status"
+    if status not in producer_group or attr_text(producer_group[status], "kind", "") != "scalar":
+        return ""
+    code = scalar(producer_group, status)
+    return (f"<p>status {number(code)}: {html.escape(attr_text(producer_group[status], 'doc'))}"
+            "</p>")
 
 
 def histogram_section(name, group):
@@ -73,8 +84,6 @@ def histogram_section(name, group):
     return (f"<h4>histogram {html.escape(name)}</h4><p>{html.escape(attr_text(group, 'doc'))}"
             f"{more}</p>" + html_table([attr_text(group, "xlabel"), "value"], rows))
 
-
-SECTIONS = {"fit": fit_section, "histogram": histogram_section}
 
 POINT_GROUP = re.compile(r"point_[0-9]+")
 
@@ -98,8 +107,10 @@ def producer_section(plt, path, group, paper, partial):
         kind = attr_text(item, "kind", "")
         if kind == "table":
             parts.append(table_section(path, name, item, partial=partial))
-        elif kind in SECTIONS:
-            parts.append(SECTIONS[kind](name, member(group, name, "group")))
+        elif kind == "fit":
+            parts.append(fit_section(name, member(group, name, "group"), group))
+        elif kind == "histogram":
+            parts.append(histogram_section(name, member(group, name, "group")))
     return "".join(parts)
 
 

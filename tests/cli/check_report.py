@@ -152,6 +152,9 @@ with tempfile.TemporaryDirectory() as work:
         text = f.read()
     check(bool(said) and all(html.escape(s)[:60] in text for s in said),
           f"run.log's warnings not on the page: {said[:3]}")
+    # A fit says its status (why it is undefined), recorded beside it by its producer.
+    fit_block = text[text.find("<h4>fit eq3"):][:2000]
+    check("<p>status " in fit_block, f"the Eq. (3) fit's status is not shown: {fit_block[:300]}")
 
     # A sweep stopped with SIGTERM: the page says so and why, shows each point's results so
     # far (its point groups were headings over nothing), and no wall time of 0.
