@@ -143,20 +143,20 @@ void DiskPacking::to_frame(Frame& frame) const {
 
 namespace {
 
-// Disks at rest stand at most a column of all of them high. One far above (a typo, another
-// run's frame) was refused by the neighbour search in its own terms, naming neither the
-// file nor the disk ("expected a box at most 1e+09 contact ranges ...").
-void refuse_a_disk_far_above(const Frame& f, const std::string& where) {
+// The disks of a start frame are deposited, so they may start anywhere above the base, but
+// not beyond the neighbour search's reach: one at 1e12 was refused in the search's terms,
+// naming neither the file nor the disk ("expected a box at most 1e+09 contact ranges ...").
+void refuse_a_disk_out_of_reach(const Frame& f, const std::string& where) {
   if (f.size() == 0 || !f.position().allFinite()) return;  // the frame check names those
-  const double column = 2.0 * f.radius().sum();
+  const double range = 2.0 * f.radius().maxCoeff();
   Eigen::Index i = 0;
-  const double highest = (f.position().col(1) - f.radius()).maxCoeff(&i);
-  if (highest <= column) return;
+  const double top = (f.position().col(1) + f.radius()).maxCoeff(&i);
+  if (top <= kMaxBoxInContactRanges * range) return;
   std::ostringstream s;
   s << where << ": disk " << i << " (id " << f.id()[i]
-    << ") at y = " << format_number(f.position()(i, 1))
-    << ": expected a packing at rest on the base, no disk higher than a column of all " << f.size()
-    << " disks (" << format_number(column) << ")";
+    << ") at y = " << format_number(f.position()(i, 1)) << ": expected every disk within "
+    << format_number(kMaxBoxInContactRanges) << " contact ranges (" << format_number(range)
+    << ", the largest diameter) of the base, as far as the neighbour search reaches";
   throw InputError(s.str());
 }
 
@@ -199,7 +199,7 @@ DiskPacking DiskPacking::from_frame(const Frame& frame, const std::string& where
   for (Eigen::Index k = 0; k < frame.size(); ++k) {
     p.add(frame.position()(k, 0), frame.position()(k, 1), frame.radius()[k]);
   }
-  refuse_a_disk_far_above(frame, where);
+  refuse_a_disk_out_of_reach(frame, where);
   p.check(where, 1e-9);
   return p;
 }
