@@ -75,12 +75,13 @@ def histogram_section(name, group):
             for k in range(len(values))]
     # A cut histogram said nothing of the bins left out (arches' spans: every arch in bins 22
     # to 38 of 39, the 12 shown all 0).
-    shown = [k for k in range(len(values)) if values[k] != 0] if len(rows) > TABLE_ROWS_SHOWN else []
     more = ""
     if len(rows) > TABLE_ROWS_SHOWN:
-        rows = [rows[k] for k in shown[:TABLE_ROWS_SHOWN]]
-        more = (f" — {len(rows)} of the {len(values)} bins shown (those holding a value, from "
-                f"the lowest); every bin in results.h5")
+        held = [k for k in range(len(values)) if values[k] != 0]  # NaN too: undefined, not 0
+        rows = [rows[k] for k in held[:TABLE_ROWS_SHOWN]]
+        more = (f" — every one of the {len(values)} bins is 0" if not held else
+                f" — {len(rows)} of the {len(values)} bins shown, from the lowest of those not "
+                f"0 (the other {len(values) - len(held)} are 0); every bin in results.h5")
     return (f"<h4>histogram {html.escape(name)}</h4><p>{html.escape(attr_text(group, 'doc'))}"
             f"{more}</p>" + html_table([attr_text(group, "xlabel"), "value"], rows))
 
@@ -144,11 +145,12 @@ def run_state(run):
         status = ""
     said = [line.strip() for line in log_lines(run)
             if line.startswith(("interrupted by ", "failed: "))]
-    detail = f" ({said[-1]})" if said else ""
     if status == "running":
         return "is still going (or was killed)"
-    if status in ("interrupted", "failed"):
-        return f"{'was interrupted' if status == 'interrupted' else 'failed'}{detail}"
+    if status == "interrupted":
+        return f"was {said[-1]}" if said else "was interrupted"
+    if status == "failed":
+        return said[-1] if said else "failed"
     return "has not finished (or was stopped)"
 
 
@@ -296,7 +298,9 @@ def report_body(run, pipeline_text, pipeline, results, partial, note, plt):
 
 
 def is_our_page(path):
-    if not os.path.isfile(path):  # a FIFO would block the read; a directory is not ours
+    # A FIFO would block the read, a directory is not ours, and a symlink is the user's
+    # (it was replaced by a file, and listed as the run's).
+    if os.path.islink(path) or not os.path.isfile(path):
         return False
     try:
         with open(path, errors="replace") as f:
@@ -309,10 +313,11 @@ def main(run):
     if not os.path.isfile(os.path.join(run, "pipeline.json")):
         refuse(f"{run}/pipeline.json: expected the pipeline of a granpipe run, found none")
     pipeline_text, pipeline = read_run_pipeline(run)
-    results, partial, note = read_results(run)
+    results, drawn_from_partial, note = read_results(run)
     try:
         name = attr_text(results, "pipeline_name") if results is not None else os.path.basename(run)
-        body = report_body(run, pipeline_text, pipeline, results, partial, note, pyplot())
+        body = report_body(run, pipeline_text, pipeline, results, drawn_from_partial, note,
+                           pyplot())
     except Damaged as e:  # results.h5 or frames.h5 not as granpipe writes them
         refuse(str(e))
     except HDF5_ERRORS as e:  # an object of results.h5 HDF5 cannot read (frames.h5: Damaged)
@@ -328,6 +333,11 @@ def main(run):
         with open(partial, "w") as f:
             f.write(html_text)
         os.replace(partial, target)
+        if drawn_from_partial and os.path.exists(os.path.join(run, "results.h5")):
+            # The run completed while the page was drawn, and removed the page of the
+            # results so far before this one landed: this one is as stale.
+            os.remove(target)
+            return
         note_written(target)
     except OSError as e:  # a full disk, a folder not ours to write: the run's files stay
         if os.path.exists(partial):

@@ -18,10 +18,12 @@ WHOLE_SHOWN_BELOW = 1e15
 
 
 def number(x):
-    if isinstance(x, float) and math.isnan(x):
+    if isinstance(x, numbers.Integral):
+        return str(int(x))
+    x = float(x)  # numpy's float32 too
+    if math.isnan(x):
         return "undefined"
-    if isinstance(x, numbers.Integral) or (isinstance(x, float) and x.is_integer()
-                                           and abs(x) < WHOLE_SHOWN_BELOW):
+    if x.is_integer() and abs(x) < WHOLE_SHOWN_BELOW:
         return str(int(x))
     return f"{x:.6g}"
 

@@ -8,6 +8,8 @@ point with the smallest knob); `name_of(column, value)` renders a swept value.""
 import math
 import statistics
 
+from report_parts import number
+
 
 def other_swept(header, knob):
     """The swept columns of a sweep's summary header other than the knob."""
@@ -18,7 +20,8 @@ def value_namer(pipeline):
     """name_of(column, value) for the pipeline as run: a string-valued sweep parameter is
     recorded as its index in the sweep's list, and named by its string."""
     lists = pipeline.get("sweep", {}).get("parameters", {})
-    return lambda s, v: lists[s][int(v)] if s in lists and isinstance(lists[s][0], str) else f"{v:g}"
+    # A number as the report writes one: seeds 12345678 and 12345679 both read 1.23457e+07.
+    return lambda s, v: lists[s][int(v)] if s in lists and isinstance(lists[s][0], str) else number(v)
 
 
 def deviation_table(points, swept, knob, time, quantities, name_of):

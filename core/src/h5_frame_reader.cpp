@@ -17,6 +17,7 @@
 #include "granpipe/format_number.hpp"
 #include "granpipe/frame.hpp"
 #include "granpipe/frame_store.hpp"
+#include "granpipe/text_words.hpp"
 #include "h5_column.hpp"
 #include "h5_dataset.hpp"
 #include "h5_element.hpp"
@@ -671,8 +672,9 @@ void FrameReader::Impl::check_length_units() const {
       unit = u;
       stated_by = e.path();
     } else if (!same_length_unit(u, unit)) {
-      throw h5::Error(e.path() + "@unit: expected \"" + unit + "\", the unit of " + stated_by +
-                      " (granpipe reads lengths as stored, in one unit), got \"" + u + "\"");
+      throw h5::Error(e.path() + "@unit: expected " + granpipe::quoted(unit) + ", the unit of " +
+                      stated_by + " (granpipe reads lengths as stored, in one unit), got " +
+                      granpipe::quoted(u));
     }
   };
   consider(*position);

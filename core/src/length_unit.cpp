@@ -1,6 +1,7 @@
 #include "length_unit.hpp"
 
 #include <array>
+#include <charconv>
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -16,15 +17,16 @@ std::optional<double> symbol_metres(std::string_view symbol) {
     if (symbol == angstrom) return 1e-10;
   if (symbol.empty() || symbol.back() != 'm') return std::nullopt;
   symbol.remove_suffix(1);
-  constexpr std::array<std::pair<std::string_view, double>, 9> kPrefixes{{{"", 1.0},
-                                                                          {"k", 1e3},
-                                                                          {"c", 1e-2},
-                                                                          {"m", 1e-3},
-                                                                          {"u", 1e-6},
-                                                                          {"\u00b5", 1e-6},
-                                                                          {"n", 1e-9},
-                                                                          {"p", 1e-12},
-                                                                          {"f", 1e-15}}};
+  constexpr std::array<std::pair<std::string_view, double>, 10> kPrefixes{{{"", 1.0},
+                                                                           {"k", 1e3},
+                                                                           {"c", 1e-2},
+                                                                           {"m", 1e-3},
+                                                                           {"u", 1e-6},
+                                                                           {"\u00b5", 1e-6},
+                                                                           {"\u03bc", 1e-6},
+                                                                           {"n", 1e-9},
+                                                                           {"p", 1e-12},
+                                                                           {"f", 1e-15}}};
   for (const auto& [prefix, factor] : kPrefixes)
     if (symbol == prefix) return factor;
   return std::nullopt;
@@ -35,8 +37,19 @@ std::optional<double> symbol_metres(std::string_view symbol) {
 std::optional<double> metres_of(std::string_view unit) {
   const std::vector<std::string_view> w = words(unit);
   if (w.empty() || w.size() > 2) return std::nullopt;
-  const std::optional<double> factor = w.size() == 2 ? real_number(w[0]) : 1.0;
-  const std::optional<double> metres = symbol_metres(w.back());
+  std::string_view symbol = w.back();
+  std::optional<double> factor = 1.0;
+  if (w.size() == 2) {
+    factor = real_number(w[0]);
+  } else {  // a factor glued to the symbol: "10nm", "1e-9m"
+    double glued = 1.0;
+    const auto [end, error] = std::from_chars(symbol.data(), symbol.data() + symbol.size(), glued);
+    if (error == std::errc{} && end != symbol.data() + symbol.size()) {
+      factor = glued;
+      symbol.remove_prefix(static_cast<std::size_t>(end - symbol.data()));
+    }
+  }
+  const std::optional<double> metres = symbol_metres(symbol);
   if (!factor || !(*factor > 0.0) || !std::isfinite(*factor) || !metres) return std::nullopt;
   return *factor * *metres;
 }

@@ -7,8 +7,8 @@
 namespace granpipe {
 
 // The length in metres that `unit` names, or nullopt where it is not a length this reader
-// knows: an optional leading number, then m with an SI prefix (k, c, m, u or µ, n, p, f) or
-// an angstrom (A, Å, angstrom, Angstrom).
+// knows: an optional leading number ("10 nm", "10nm", "+2 nm"), then m with an SI prefix
+// (k, c, m, u, µ or μ, n, p, f) or an angstrom (A, Å, angstrom, Angstrom), in UTF-8.
 std::optional<double> metres_of(std::string_view unit);
 
 // Whether two unit strings name one length: equal as text, or as metres within rounding.

@@ -294,8 +294,9 @@ void TapSource::check_stopping_rule(double height) const {
   throw InputError(eta_param_ + ": expected a stopping rule a settling packing can pass, got " +
                    "one every tap meets at its first check: between two checks <Z> moves by " +
                    format_number(change / box_.radius) + " R at most (check_moves trials of " +
-                   "d_max), not above eta <Z> = " + format_number(threshold / box_.radius) +
-                   " R; lower eta, or raise d_max or check_moves");
+                   "d_max), not above eta <Z> = " + format_number(threshold / box_.radius) + " R" +
+                   (height == box_.radius ? " at the least (<Z> >= R)" : "") +
+                   "; lower eta, or raise d_max or check_moves");
 }
 
 // The tap to count on from: a frame this source saved, whose tap is its step, before the

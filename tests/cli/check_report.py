@@ -60,6 +60,16 @@ class Page(HTMLParser):
             self.notes.append(data)
 
 
+def holds(path, group):
+    """Whether the HDF5 file a run writes holds `group` yet."""
+    import h5py
+    try:
+        with h5py.File(path, "r", swmr=True, locking=False) as f:
+            return group in f
+    except OSError:  # not there yet, or not yet flushed
+        return False
+
+
 def check(condition, message):
     if not condition:
         failures.append(message)
@@ -162,16 +172,16 @@ with tempfile.TemporaryDirectory() as work:
     endless = [a if a != "source.params.taps=3" else "source.params.taps=100000" for a in toy]
     run = subprocess.Popen([exe, pipeline, *endless, "--no-report", "--out", stopped])
     partial = os.path.join(stopped, "results.partial.h5")
-    for _ in range(600):
-        if run.poll() is not None or (os.path.exists(partial) and os.path.getsize(partial) > 0):
+    for _ in range(1200):  # until point 0 has results to show
+        if run.poll() is not None or holds(partial, "point_000/compaction"):
             break
         time.sleep(0.05)
-    time.sleep(1.0)
     run.send_signal(signal.SIGTERM)
-    run.wait()
+    check(run.wait() in (-signal.SIGTERM, 128 + signal.SIGTERM),
+          f"the endless sweep ended by itself: {run.returncode}")
     subprocess.run([exe, "report", stopped], check=True)
     page = Page(os.path.join(stopped, "report.html"))
-    check(any("this run was interrupted (interrupted by SIGTERM" in n for n in page.notes),
+    check(any("this run was interrupted by SIGTERM" in n for n in page.notes),
           f"a stopped run's state: {page.notes}")
     check("not measured (the run has not finished)" in page.cells and "0.0" not in page.cells,
           f"a stopped run's wall time: {page.cells[:16]}")
@@ -183,6 +193,9 @@ with tempfile.TemporaryDirectory() as work:
     from report_parts import number
     check(number(1412032.0) == "1412032" and number(0.5) == "0.5" and number(2.5e20) == "2.5e+20",
           f"numbers: {number(1412032.0)} {number(0.5)} {number(2.5e20)}")
+    import numpy as np  # numpy's float32 read 1.41203e+06 and its NaN "nan"
+    check(number(np.float32(1412032)) == "1412032" and number(np.float32("nan")) == "undefined",
+          f"float32: {number(np.float32(1412032))} {number(np.float32('nan'))}")
 
     # A report.html that granpipe did not write is the user's: refused, left as it was.
     with open(os.path.join(sweep, "report.html"), "w") as f:
@@ -202,6 +215,13 @@ with tempfile.TemporaryDirectory() as work:
           and os.path.isdir(os.path.join(sweep, "report.html")),
           f"a directory report.html: {r.returncode} {r.stderr!r}")
     os.rmdir(os.path.join(sweep, "report.html"))
+
+    # A symlink named report.html is the user's: it was replaced by a file, listed as the run's.
+    os.symlink(os.path.join(single, "report.html"), os.path.join(sweep, "report.html"))
+    r = subprocess.run([exe, "report", sweep], capture_output=True, text=True)
+    check(r.returncode == 2 and os.path.islink(os.path.join(sweep, "report.html")),
+          f"a symlink report.html: {r.returncode} {r.stderr!r}")
+    os.remove(os.path.join(sweep, "report.html"))
 
     empty = os.path.join(work, "empty")
     os.makedirs(empty)
