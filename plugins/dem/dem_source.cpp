@@ -278,6 +278,8 @@ DemSource::DemSource(const PluginContext& ctx) : log_(ctx.log), progress_(ctx.pr
     check_start_motion(start.container, drive, settings.dt, start.state.radius.minCoeff(),
                        start.where);
     check_start_speeds(start.state, start.id, settings.dt, start.where);
+    check_fixed_held(start.state, start.id, model, start.container.wall_velocity, settings.dt,
+                     start.where);
   }
   check_damping(ctx, scene, settings.background_damping, settings.air_damping, settings.dt);
   const double speed = impact_speed(start, drive, settings);

@@ -28,10 +28,16 @@ struct Deepest {
 };
 
 // How squarely wall `slot` faces a push along the unit vector `along`: the component of
-// `along` on its normal (a drive along z hits the base and a lid, not the cylinder).
-double facing(const WallSet& walls, int slot, const Eigen::Vector3d& along) {
+// `along` on its normal (a drive along z hits the base and a lid, not the cylinder). A
+// drive pushes both ways; gravity one way, onto the walls it points at (gravity up was
+// checked against the base, and refused where the top is open).
+enum class Push { BothWays, OneWay };
+
+double facing(const WallSet& walls, int slot, const Eigen::Vector3d& along, Push push) {
   if (slot < static_cast<int>(walls.planes().size())) {
-    return std::abs(along[walls.planes()[static_cast<std::size_t>(slot)].axis]);
+    const PlaneWall& w = walls.planes()[static_cast<std::size_t>(slot)];
+    const double onto = -along[w.axis] * w.sign;  // > 0: towards the wall
+    return push == Push::BothWays ? std::abs(onto) : std::max(0.0, onto);
   }
   return std::hypot(along[0], along[1]);
 }
@@ -41,7 +47,7 @@ double facing(const WallSet& walls, int slot, const Eigen::Vector3d& along) {
 // faster than the radius does, so the largest sphere of each species decides. Fixed
 // species are held by the container and skipped.
 Deepest deepest_against_walls(
-    const Scene& s, const Eigen::Vector3d& along,
+    const Scene& s, const Eigen::Vector3d& along, Push push,
     const std::function<double(const ContactMaterial&, double, double, double)>& overlap) {
   std::vector<double> largest(static_cast<std::size_t>(s.model.species()), 0.0);
   for (Eigen::Index i = 0; i < s.start.radius.size(); ++i) {
@@ -53,7 +59,7 @@ Deepest deepest_against_walls(
     const double r = largest[static_cast<std::size_t>(a)];
     if (r == 0.0 || s.model.is_fixed(a)) continue;
     for (int slot = 0; slot < s.walls.count(); ++slot) {
-      const double scale = facing(s.walls, slot, along);
+      const double scale = facing(s.walls, slot, along, push);
       if (scale == 0.0) continue;
       const Wall w = s.walls.wall_of_slot(slot);
       const double depth = overlap(s.model.with_wall(w, a), s.model.sphere_mass(a, r), r, scale);
@@ -103,7 +109,7 @@ void check_drive(const PluginContext& ctx, const Scene& scene, const Drive& driv
     const auto hit = [&](const ContactMaterial& m, double mass, double a, double scale) {
       return Normal::impact_overlap(m.kn, mass, peak * scale, 2.0 * a);
     };
-    return std::pair(deepest_against_walls(scene, drive.direction, hit),
+    return std::pair(deepest_against_walls(scene, drive.direction, Push::BothWays, hit),
                      Normal::kSpeedPerOverlapExponent);
   });
   if (d.fraction <= kMaxOverlapFraction) return;
@@ -125,7 +131,7 @@ void check_gravity(const PluginContext& ctx, const Scene& scene, const Eigen::Ve
       const auto rest = [&](const ContactMaterial& m, double mass, double a, double scale) {
         return Normal::rest_overlap(m.kn, mass * g_abs * scale, 2.0 * a);
       };
-      return std::pair(deepest_against_walls(scene, gravity / g, rest),
+      return std::pair(deepest_against_walls(scene, gravity / g, Push::OneWay, rest),
                        Normal::kWeightPerOverlapExponent);
     });
   };

@@ -7,6 +7,7 @@
 #include "drive.hpp"
 #include "granpipe/frame.hpp"
 #include "granpipe/property_table.hpp"
+#include "model.hpp"
 #include "particles.hpp"
 
 namespace granpipe::dem {
@@ -31,5 +32,13 @@ void check_start_motion(const Container& container, const Drive& drive, double d
 // its contacts. `id` names the particles in the message.
 void check_start_speeds(const InitialState& start, const IndexArray& id, double dt,
                         const std::string& where);
+
+// Throws InputError starting with `where` when a particle of a fixed species (held by the
+// container) starts moving otherwise than the container (`container_velocity`) or spinning:
+// the run sets it moving with the container, dropping what the start said (exit 0). Within
+// rounding, 1e-9 of the container's speed and of a radius a step.
+void check_fixed_held(const InitialState& start, const IndexArray& id, const Model& model,
+                      const Eigen::Vector3d& container_velocity, double dt,
+                      const std::string& where);
 
 }  // namespace granpipe::dem

@@ -480,6 +480,22 @@ TEST(DemSource, AStartSpeedASingleStepCannotResolveIsRefusedNamingTheParticle) {
   fs::remove(fast);
 }
 
+// The run holds a fixed species' particles with the container: a start moving one had its
+// velocity dropped without a word.
+TEST(DemSource, AFixedParticleStartingToMoveIsRefused) {
+  const nlohmann::json held = {{{"name", "held"}, {"density", 1.91}, {"fixed", true}}};
+  const fs::path file = start_file({{0.0, 0.0, 0.5}}, {{-0.5, 0.0, 0.0}});
+  const std::string m = refusal({{"initial_file", file.string()}, {"species", held}});
+  EXPECT_EQ(m.substr(m.find(": frame 0: ")),
+            ": frame 0: particle 0 (id 0) of fixed species 0 moves at (-0.5, 0, 0), spinning at "
+            "(0, 0, 0): expected it held by the container, moving as the container does, at (0, "
+            "0, 0), without spin");
+  fs::remove(file);
+  const fs::path resting = start_file({{0.0, 0.0, 0.5}}, {{0.0, 0.0, 0.0}});
+  EXPECT_EQ(refusal({{"initial_file", resting.string()}, {"species", held}}), "no refusal");
+  fs::remove(resting);
+}
+
 TEST(DemSource, AnEmptyStartIsRefused) {
   const fs::path file = start_file({});
   const std::string m = refusal({{"initial_file", file.string()}});
@@ -558,8 +574,11 @@ TEST(DemSource, AGravityThatWouldCrushASphereRestingOnTheBaseIsRefused) {
   // An overlap past the range of doubles gave the bound |g| <= 0.
   EXPECT_EQ(refusal({{"initial_file", file.string()}, {"gravity", {1e308, 0.0, 0.0}}}),
             "params.gravity: |g| = 1e+308 would press a sphere of species 0 (radius 0.5) resting "
-            "on wall x_low 5e+302 deep (1e+305 % of its radius; a sound run stays within 30 %): "
+            "on wall x_high 5e+302 deep (1e+305 % of its radius; a sound run stays within 30 %): "
             "expected |g| <= 3e+04");
+  // Gravity presses onto the walls it points at: up, onto an open top, nothing (it was
+  // checked against the base, and refused).
+  EXPECT_EQ(refusal({{"initial_file", file.string()}, {"gravity", {0.0, 0.0, 1e5}}}), "no refusal");
   fs::remove(file);
 }
 
