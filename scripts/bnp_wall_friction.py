@@ -12,7 +12,9 @@ sits on the base: docs/bnp_mst.md); prints a markdown table of it every 5 cycles
 the once-per-cycle curves as CSV and as a figure."""
 import argparse
 import json
+import math
 import os
+import statistics
 
 import h5py
 
@@ -31,23 +33,30 @@ def read_curves(path):
         else:
             pipeline = read_pipeline(os.path.dirname(path))
         values = pipeline["sweep"]["parameters"][SWEPT]
-        frequency = pipeline["source"]["params"]["drive"]["frequency"]
         curves = {}
         for k, mu in enumerate(values):
             table = f[f"point_{k:03d}/intruder/per_frame"]
-            cycles = table["time"][()] * frequency
-            curves[mu] = list(zip(cycles, table["intruder_height"][()]))
+            # The source's own count of drive periods (time x frequency ignored a drive's start).
+            curves[mu] = list(zip(table["cycles"][()], table["intruder_height"][()]))
     return curves
 
 
-def height_at(points, cycle):
-    """The height in the frame nearest to `cycle` + the compression phase."""
-    return min(points, key=lambda p: abs(p[0] - cycle - COMPRESSION_PHASE))[1]
+def height_at(points, cycle, reach):
+    """The height in the frame nearest to `cycle` + the compression phase, or None where no
+    frame lies within `reach` of it (a run short of its first: the last frame's height was
+    given as cycle 0's)."""
+    nearest = min(points, key=lambda p: abs(p[0] - cycle - COMPRESSION_PHASE))
+    return nearest[1] if abs(nearest[0] - cycle - COMPRESSION_PHASE) <= reach else None
 
 
 def per_cycle(points):
-    last = int(points[-1][0] - COMPRESSION_PHASE)
-    return [(c, height_at(points, c)) for c in range(0, last + 1)]
+    """[(cycle, height at its compression phase)] of the cycles a frame reaches, within half
+    the frames' spacing."""
+    cycles = [p[0] for p in points]
+    reach = 0.5 * statistics.median(b - a for a, b in zip(cycles, cycles[1:])) if len(cycles) > 1 else 0.0
+    heights = [(c, height_at(points, c, reach))
+               for c in range(0, math.floor(cycles[-1] - COMPRESSION_PHASE) + 1)]
+    return [(c, h) for c, h in heights if h is not None]
 
 
 def main():
@@ -66,12 +75,19 @@ def main():
     except (OSError, KeyError, TypeError) as e:
         refuse(f"{path}: expected the results of a run of pipelines/bnp_wall_friction.json, "
                f"could not read them ({type(e).__name__}: {e})")
+    if any(not points or not all(math.isfinite(c) for c, _ in points) for points in curves.values()):
+        refuse(f"{path}: expected frames counting the drive's cycles, found a point without")
     cycles = {mu: per_cycle(points) for mu, points in curves.items()}
+    if any(not c for c in cycles.values()):
+        reached = min(points[-1][0] for points in curves.values())
+        refuse(f"{path}: expected a run reaching the compression phase ({COMPRESSION_PHASE}) of a "
+               f"cycle, found frames up to cycle {reached:.3g}")
     last = min(len(c) for c in cycles.values())
     print("| cycle | " + " | ".join(f"μ_wall = {mu}" for mu in cycles) + " |")
     print("|---|" + "---|" * len(cycles))
-    for c in range(0, last, 5):
-        print(f"| {c} | " + " | ".join(f"{points[c][1]:.1f}" for points in cycles.values()) + " |")
+    for k in range(0, last, 5):
+        cycle = next(iter(cycles.values()))[k][0]
+        print(f"| {cycle} | " + " | ".join(f"{points[k][1]:.1f}" for points in cycles.values()) + " |")
     if args.csv:
         with open(args.csv, "w") as out:
             # Relative to where the script runs, so no machine's absolute path lands in a kept table.

@@ -233,8 +233,9 @@ Schema schema() {
   s.real("duration", 1.0, "simulated time").min(0.0, true).unit("time");
   s.integer("save_every", 5000, "steps between emitted frames").min(1);
   s.real("save_from", 0.0,
-         "time of the first emitted frame (frames before it are not built); 0 emits the "
-         "initial state too")
+         "frames are emitted at the multiples of save_every from this time on (none is built "
+         "before it; 0 emits the initial state too); a run that relaxes earlier "
+         "(relaxed_kinetic_energy) still ends with its relaxed frame")
       .min(0.0)
       .unit("time");
   // Beyond a couple of diameters the lists hold hundreds of pairs a sphere, which the
