@@ -5,6 +5,7 @@
 #include "granpipe/bottom_wall.hpp"
 #include "granpipe/errors.hpp"
 #include "granpipe/format_number.hpp"
+#include "granpipe/loaded_pair_contacts.hpp"
 
 namespace granpipe::intruder {
 
@@ -53,6 +54,20 @@ Eigen::Index find_intruder(const Frame& f, const std::string& where) {
   return big;
 }
 
+// The rows joining a particle to the base with a non-zero normal force (every base row when
+// the table has none).
+long loaded_base_contacts(const Frame& f) {
+  const IndexArray& j = f.contact_j();
+  const Coordinates* force =
+      f.contacts->has("normal_force") ? &f.contacts->get<Coordinates>("normal_force") : nullptr;
+  long count = 0;
+  for (Eigen::Index c = 0; c < j.size(); ++c) {
+    if (j[c] != partner::wall(Wall::ZLow)) continue;
+    if (!force || force->row(c).matrix().norm() > 0.0) ++count;
+  }
+  return count;
+}
+
 BedState measure_bed(const Frame& f, const std::string& where) {
   const Eigen::Index n = f.size();
   if (n < 2) {
@@ -76,9 +91,11 @@ BedState measure_bed(const Frame& f, const std::string& where) {
     s.bed_velocity = bed_mean(weight, v.col(2), big);
   }
   if (f.contacts) {  // without a contact table: no contacts, the expansion stage
-    const Eigen::Index pairs = (f.contact_j() >= 0).count();
-    s.coordination = 2.0 * static_cast<double>(pairs) / static_cast<double>(n);
-    s.base_contacts = static_cast<long>((f.contact_j() == partner::wall(Wall::ZLow)).count());
+    // Rows of zero normal force (another code's neighbour pairs) touch nothing: counted,
+    // the coordination read 3.31 where force_network's read 0.
+    const auto pairs = static_cast<double>(loaded_pair_contacts(f, where).size());
+    s.coordination = 2.0 * pairs / static_cast<double>(n);
+    s.base_contacts = loaded_base_contacts(f);
   }
   s.stage = s.base_contacts > 0 ? Stage::Compression : Stage::Expansion;
   return s;

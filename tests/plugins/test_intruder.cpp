@@ -45,6 +45,22 @@ TEST(Intruder, HeightsAreAboveTheMovingBaseAndCoordinationCountsPairsOnly) {
   EXPECT_DOUBLE_EQ(s.coordination, 2.0 / 3.0);  // one pair contact, three particles
 }
 
+// Rows of zero normal force (another code's neighbour pairs) touch nothing: the coordination
+// counted them (3.31 where force_network's z_mean was 0), and a base row of none made the
+// stage compression.
+TEST(Intruder, ContactsWithoutANormalForceAreNotCounted) {
+  Frame f = bed();
+  f.contacts->add(*find_standard("normal_force", Scope::Contact));
+  auto& force = f.contacts->get<Coordinates>("normal_force");
+  force.row(0) << 0.0, 0.0, 1.0;  // the pair loaded
+  force.row(1).setZero();         // the base row not
+  const intruder::BedState s = intruder::measure_bed(f, "test");
+  EXPECT_DOUBLE_EQ(s.coordination, 2.0 / 3.0);
+  EXPECT_EQ(s.base_contacts, 0);
+  force.row(0).setZero();
+  EXPECT_DOUBLE_EQ(intruder::measure_bed(f, "test").coordination, 0.0);
+}
+
 TEST(Intruder, TheAnalyzerStreamsOneRowPerFrame) {
   Frame later = bed();
   later.time = 1.5;
