@@ -12,6 +12,10 @@ namespace {
 // Enough cells to be fast, few enough that a sparse, tall system does not allocate
 // a huge grid: cells beyond this are merged (each cell gets larger than the cutoff).
 constexpr double kMaxCells = 1 << 22;
+// Beyond this many contact ranges per box length, positions carry fewer than 7
+// significant digits at the particles' scale (doubles have 16): an infinite box or a
+// radius of 1e-200 is nonsense to measure, not a packing.
+constexpr double kMaxLengthInRanges = 1e9;
 // Squared distances must stay normal doubles (from about 1e-308 to 1e308).
 constexpr double kMinRange = 1e-100, kMaxRange = 1e100;
 
@@ -46,8 +50,8 @@ CellList::CellList(const Coordinates& position, const Container& container, int 
       lo_[a] = mn;
       length_[a] = std::max(mx - mn, cutoff);
     }
-    if (!(length_[a] <= kMaxBoxInContactRanges * cutoff)) {
-      throw InputError(at + "expected a box at most " + format_number(kMaxBoxInContactRanges) +
+    if (!(length_[a] <= kMaxLengthInRanges * cutoff)) {
+      throw InputError(at + "expected a box at most " + format_number(kMaxLengthInRanges) +
                        " contact ranges (" + format_number(cutoff) + ") long along " +
                        axis_name(a) + ", got " +
                        (periodic_[a] ? "a periodic box of length " : "particles spread over ") +

@@ -7,7 +7,6 @@
 #include "granpipe/cell_list.hpp"
 #include "granpipe/container_check.hpp"
 #include "granpipe/errors.hpp"
-#include "granpipe/format_number.hpp"
 
 namespace granpipe::disks2d_tap {
 
@@ -141,27 +140,6 @@ void DiskPacking::to_frame(Frame& frame) const {
       Container::open_top_box(2, Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(width, top(), 0));
 }
 
-namespace {
-
-// The disks of a start frame are deposited, so they may start anywhere above the base, but
-// not beyond the neighbour search's reach: one at 1e12 was refused in the search's terms,
-// naming neither the file nor the disk ("expected a box at most 1e+09 contact ranges ...").
-void refuse_a_disk_out_of_reach(const Frame& f, const std::string& where) {
-  if (f.size() == 0 || !f.position().allFinite()) return;  // the frame check names those
-  const double range = 2.0 * f.radius().maxCoeff();
-  Eigen::Index i = 0;
-  const double top = (f.position().col(1) + f.radius()).maxCoeff(&i);
-  if (top <= kMaxBoxInContactRanges * range) return;
-  std::ostringstream s;
-  s << where << ": disk " << i << " (id " << f.id()[i]
-    << ") at y = " << format_number(f.position()(i, 1)) << ": expected every disk within "
-    << format_number(kMaxBoxInContactRanges) << " contact ranges (" << format_number(range)
-    << ", the largest diameter) of the base, as far as the neighbour search reaches";
-  throw InputError(s.str());
-}
-
-}  // namespace
-
 DiskPacking DiskPacking::from_frame(const Frame& frame, const std::string& where) {
   if (frame.dim != 2) {
     throw InputError(where + ": expected a 2D frame, got " + std::to_string(frame.dim) + "D");
@@ -199,7 +177,6 @@ DiskPacking DiskPacking::from_frame(const Frame& frame, const std::string& where
   for (Eigen::Index k = 0; k < frame.size(); ++k) {
     p.add(frame.position()(k, 0), frame.position()(k, 1), frame.radius()[k]);
   }
-  refuse_a_disk_out_of_reach(frame, where);
   p.check(where, 1e-9);
   return p;
 }

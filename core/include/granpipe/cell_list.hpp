@@ -13,11 +13,6 @@
 
 namespace granpipe {
 
-// Beyond this many contact ranges per box length, positions carry fewer than 7 significant
-// digits at the particles' scale (doubles have 16): an infinite box or a radius of 1e-200
-// is nonsense to measure, not a packing. The neighbour search refuses such boxes.
-inline constexpr double kMaxBoxInContactRanges = 1e9;
-
 class CellList {
  public:
   // `cutoff` is the largest centre distance any query will ask for. Along a periodic
