@@ -23,6 +23,10 @@ from input_error import read_pipeline, refuse, require_outputs
 
 SWEPT = "source.params.walls.mu"
 COMPRESSION_PHASE = 0.28
+# How far from the compression phase a frame may lie and still give its height (the kept
+# runs' frames lie 0.0535 of a cycle apart; a bed in flight half a cycle off read as one at
+# rest).
+PHASE_TOLERANCE = 0.06
 
 
 def read_curves(path):
@@ -49,13 +53,18 @@ def height_at(points, cycle, reach):
     return nearest[1] if abs(nearest[0] - cycle - COMPRESSION_PHASE) <= reach else None
 
 
+def frame_spacing(points):
+    """The frames' usual distance in cycles (frames before a drive's start, all at cycle 0,
+    left out: their spacing of 0 made every reach 0)."""
+    steps = [b[0] - a[0] for a, b in zip(points, points[1:]) if b[0] > a[0]]
+    return statistics.median(steps) if steps else float("inf")
+
+
 def per_cycle(points):
-    """[(cycle, height at its compression phase)] of the cycles a frame reaches, within half
-    the frames' spacing."""
-    cycles = [p[0] for p in points]
-    reach = 0.5 * statistics.median(b - a for a, b in zip(cycles, cycles[1:])) if len(cycles) > 1 else 0.0
-    heights = [(c, height_at(points, c, reach))
-               for c in range(0, math.floor(cycles[-1] - COMPRESSION_PHASE) + 1)]
+    """[(cycle, height at its compression phase)] of the cycles a frame reaches within
+    PHASE_TOLERANCE."""
+    last = math.floor(points[-1][0] - COMPRESSION_PHASE)
+    heights = [(c, height_at(points, c, PHASE_TOLERANCE)) for c in range(0, last + 1)]
     return [(c, h) for c, h in heights if h is not None]
 
 
@@ -75,19 +84,26 @@ def main():
     except (OSError, KeyError, TypeError) as e:
         refuse(f"{path}: expected the results of a run of pipelines/bnp_wall_friction.json, "
                f"could not read them ({type(e).__name__}: {e})")
-    if any(not points or not all(math.isfinite(c) for c, _ in points) for points in curves.values()):
-        refuse(f"{path}: expected frames counting the drive's cycles, found a point without")
+    for mu, points in curves.items():
+        if not points or not all(math.isfinite(c) for c, _ in points):
+            refuse(f"{path}: the point of {SWEPT} = {mu}: expected frames counting the drive's "
+                   "cycles (the intruder's cycles column), found frames without")
+        spacing = frame_spacing(points)
+        if spacing > 2.0 * PHASE_TOLERANCE and len(points) > 1:
+            refuse(f"{path}: the point of {SWEPT} = {mu}: expected frames at most "
+                   f"{2.0 * PHASE_TOLERANCE:g} of a cycle apart to read the compression phase, "
+                   f"found {spacing:.3g} (lower source.params.save_every)")
     cycles = {mu: per_cycle(points) for mu, points in curves.items()}
     if any(not c for c in cycles.values()):
         reached = min(points[-1][0] for points in curves.values())
         refuse(f"{path}: expected a run reaching the compression phase ({COMPRESSION_PHASE}) of a "
                f"cycle, found frames up to cycle {reached:.3g}")
-    last = min(len(c) for c in cycles.values())
     print("| cycle | " + " | ".join(f"μ_wall = {mu}" for mu in cycles) + " |")
     print("|---|" + "---|" * len(cycles))
-    for k in range(0, last, 5):
-        cycle = next(iter(cycles.values()))[k][0]
-        print(f"| {cycle} | " + " | ".join(f"{points[k][1]:.1f}" for points in cycles.values()) + " |")
+    # Rows by cycle: each curve's height at that cycle (undefined where it has none).
+    heights = {mu: dict(points) for mu, points in cycles.items()}
+    for c in sorted(set.intersection(*(set(h) for h in heights.values())))[::5]:
+        print(f"| {c} | " + " | ".join(f"{h[c]:.1f}" for h in heights.values()) + " |")
     if args.csv:
         with open(args.csv, "w") as out:
             # Relative to where the script runs, so no machine's absolute path lands in a kept table.
