@@ -135,8 +135,8 @@ def provenance_section(results, partial, state):
 
 
 def run_state(run):
-    """What became of an unfinished run, as its marker and run.log say: "is still going",
-    "was interrupted (interrupted by SIGTERM ...)", "failed (...)"; a page of each read "has
+    """What became of an unfinished run, as its marker and run.log say: "is still going (or
+    was killed)", "was interrupted by SIGTERM ...", "failed: ..."; a page of each read "has
     not finished (or was stopped)" alike."""
     try:
         with open(os.path.join(run, ".granpipe-run"), errors="replace") as f:
@@ -325,19 +325,24 @@ def main(run):
     html_text = page(f"granpipe run {name}", body)
     target = os.path.join(run, "report.html")
     if os.path.lexists(target) and not is_our_page(target):
-        found = "a directory" if os.path.isdir(target) else "another file"
+        found = ("a symbolic link" if os.path.islink(target) else
+                 "a directory" if os.path.isdir(target) else "another file")
         refuse(f"{target}: expected a report granpipe wrote, found {found}; it is left as it is "
                "(move it away to have the report)")
     partial = f"{target}.{os.getpid()}.tmp"  # two reports of one run at once: one wins whole
+    completed = os.path.join(run, "results.h5")
     try:
         with open(partial, "w") as f:
             f.write(html_text)
+        # The run completed while the page was drawn from the results so far: it removed
+        # the page of those, and this one would land as stale (or over the final one).
+        if drawn_from_partial and os.path.exists(completed):
+            os.remove(partial)
+            return main(run)  # drawn again, from the results now complete
+        landed = os.stat(partial).st_ino
         os.replace(partial, target)
-        if drawn_from_partial and os.path.exists(os.path.join(run, "results.h5")):
-            # The run completed while the page was drawn, and removed the page of the
-            # results so far before this one landed: this one is as stale.
-            os.remove(target)
-            return
+        if drawn_from_partial and os.path.exists(completed) and os.stat(target).st_ino == landed:
+            return main(run)  # it completed just as this page landed
         note_written(target)
     except OSError as e:  # a full disk, a folder not ours to write: the run's files stay
         if os.path.exists(partial):

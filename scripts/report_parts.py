@@ -110,8 +110,11 @@ def inline_svg(plt, fig, ax, logx, logy):
     labelled = ax.get_legend_handles_labels()[0]  # none in a plot of no point
     beside = len(labelled) > MAX_LEGEND_LINES
     if beside:  # a sweep's 16 lines and more had no legend at all: which line was which?
-        ax.legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1.0),
-                  ncol=math.ceil(len(labelled) / LEGEND_ROWS))
+        legend = ax.legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1.0),
+                           ncol=math.ceil(len(labelled) / LEGEND_ROWS))
+        # Out of the layout, which shrank the plot to a quarter of the figure to make room:
+        # the saved canvas grows around it instead (bbox_inches "tight").
+        legend.set_in_layout(False)
     elif labelled:
         ax.legend(fontsize="small")
     fig.tight_layout()

@@ -41,7 +41,8 @@ std::optional<double> metres_of(std::string_view unit) {
   std::optional<double> factor = 1.0;
   if (w.size() == 2) {
     factor = real_number(w[0]);
-  } else {  // a factor glued to the symbol: "10nm", "1e-9m"
+  } else {  // a factor glued to the symbol: "10nm", "1e-9m", "+2nm"
+    if (symbol.starts_with('+')) symbol.remove_prefix(1);  // from_chars reads no '+'
     double glued = 1.0;
     const auto [end, error] = std::from_chars(symbol.data(), symbol.data() + symbol.size(), glued);
     if (error == std::errc{} && end != symbol.data() + symbol.size()) {

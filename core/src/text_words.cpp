@@ -56,13 +56,36 @@ std::optional<double> real_number(std::string_view word) {
   return value;
 }
 
+namespace {
+
+// The length of the UTF-8 character at the start of `s` (2 to 4 bytes), or 0 where it is
+// none (a byte of a binary file).
+std::size_t utf8_length(std::string_view s) {
+  const auto lead = static_cast<unsigned char>(s[0]);
+  const std::size_t n = lead >= 0xF0 && lead <= 0xF4 ? 4 : lead >= 0xE0 ? 3 : lead >= 0xC2 ? 2 : 0;
+  if (lead >= 0xF5 || n == 0 || n > s.size()) return 0;
+  for (std::size_t k = 1; k < n; ++k)
+    if ((static_cast<unsigned char>(s[k]) & 0xC0) != 0x80) return 0;
+  return n;
+}
+
+}  // namespace
+
 std::string quoted(std::string_view line) {
-  std::string shown(line.substr(0, kQuotedLength));
-  // A binary file's bytes would garble the terminal.
-  for (char& c : shown) {
-    if (!std::isprint(static_cast<unsigned char>(c))) c = '?';
+  const std::string_view kept = line.substr(0, kQuotedLength);
+  // A binary file's bytes would garble the terminal; UTF-8 text is shown as it is (a unit
+  // "µm" read "??m").
+  std::string shown = "\"";
+  for (std::size_t k = 0; k < kept.size();) {
+    const auto c = static_cast<unsigned char>(kept[k]);
+    const std::size_t n = c < 0x80 ? 1 : utf8_length(kept.substr(k));
+    if (n == 1 && std::isprint(c)) shown += kept[k];
+    if (n > 1) shown += kept.substr(k, n);
+    if (n <= 1 && !std::isprint(c)) shown += '?';
+    k += n == 0 ? 1 : n;
   }
-  return "\"" + shown + (line.size() > kQuotedLength ? "...\"" : "\"");
+  shown += line.size() > kQuotedLength ? "...\"" : "\"";
+  return shown;
 }
 
 }  // namespace granpipe

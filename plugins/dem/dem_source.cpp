@@ -233,9 +233,9 @@ Schema schema() {
   s.real("duration", 1.0, "simulated time").min(0.0, true).unit("time");
   s.integer("save_every", 5000, "steps between emitted frames").min(1);
   s.real("save_from", 0.0,
-         "frames are emitted at the multiples of save_every from this time on (none is built "
-         "before it; 0 emits the initial state too); a run that relaxes earlier "
-         "(relaxed_kinetic_energy) still ends with its relaxed frame")
+         "frames are emitted at the multiples of save_every from this time on, and at the end "
+         "of the duration (none is built before it; 0 emits the initial state too); a run "
+         "that relaxes earlier (relaxed_kinetic_energy) still ends with its relaxed frame")
       .min(0.0)
       .unit("time");
   // Beyond a couple of diameters the lists hold hundreds of pairs a sphere, which the
@@ -279,7 +279,8 @@ DemSource::DemSource(const PluginContext& ctx) : log_(ctx.log), progress_(ctx.pr
     check_start_motion(start.container, drive, settings.dt, start.state.radius.minCoeff(),
                        start.where);
     check_start_speeds(start.state, start.id, settings.dt, start.where);
-    check_fixed_held(start.state, start.id, model, start.container.wall_velocity, settings.dt,
+    check_fixed_held(start.state, start.id, model,
+                     {start.container.wall_velocity, drive.velocity(0.0)}, settings.dt,
                      start.where);
   }
   check_damping(ctx, scene, settings.background_damping, settings.air_damping, settings.dt);

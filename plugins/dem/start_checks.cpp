@@ -100,25 +100,27 @@ void check_start_speeds(const InitialState& start, const IndexArray& id, double 
 }
 
 void check_fixed_held(const InitialState& start, const IndexArray& id, const Model& model,
-                      const Eigen::Vector3d& container_velocity, double dt,
+                      const std::array<Eigen::Vector3d, 2>& held_velocities, double dt,
                       const std::string& where) {
   constexpr double kRounding = 1e-9;
-  for (Eigen::Index i = 0; i < start.velocity.cols(); ++i) {
+  // A start without velocities or angular velocities (a file of another code) has none.
+  const auto column = [](const Vectors& v, Eigen::Index i) {
+    return i < v.cols() ? Eigen::Vector3d(v.col(i)) : Eigen::Vector3d::Zero();
+  };
+  for (Eigen::Index i = 0; i < start.radius.size(); ++i) {
     if (!model.is_fixed(start.species[i])) continue;
     const double r = start.radius[i];
-    const double rounding = kRounding * (container_velocity.norm() + r / dt);
-    const Eigen::Vector3d v = start.velocity.col(i);
-    // A start without angular velocities (a file of another code) has none, not zeros.
-    const Eigen::Vector3d w = i < start.angular_velocity.cols()
-                                  ? Eigen::Vector3d(start.angular_velocity.col(i))
-                                  : Eigen::Vector3d::Zero();
-    const double spin = w.norm() * r;
-    if ((v - container_velocity).norm() <= rounding && spin <= rounding) continue;
+    const Eigen::Vector3d v = column(start.velocity, i), w = column(start.angular_velocity, i);
+    const auto held = [&](const Eigen::Vector3d& u) {
+      return (v - u).norm() <= kRounding * (u.norm() + r / dt);
+    };
+    const bool still = w.norm() * r <= kRounding * r / dt;
+    if (still && (held(held_velocities[0]) || held(held_velocities[1]))) continue;
     std::ostringstream s;
     s << where << ": particle " << i << " (id " << id[i] << ") of fixed species "
       << start.species[i] << " moves at " << format_point(v) << ", spinning at " << format_point(w)
       << ": expected it held by the container, moving as the container does, at "
-      << format_point(container_velocity) << ", without spin";
+      << format_point(held_velocities[0]) << ", without spin";
     throw InputError(s.str());
   }
 }

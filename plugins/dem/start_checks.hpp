@@ -2,6 +2,7 @@
 // Is a saved start sound? A run from it would otherwise fire a sphere that sits outside its
 // container back in at a speed no scene produces, or blow two deeply overlapping spheres
 // apart, and end with exit 0.
+#include <array>
 #include <string>
 
 #include "drive.hpp"
@@ -34,11 +35,13 @@ void check_start_speeds(const InitialState& start, const IndexArray& id, double 
                         const std::string& where);
 
 // Throws InputError starting with `where` when a particle of a fixed species (held by the
-// container) starts moving otherwise than the container (`container_velocity`) or spinning:
-// the run sets it moving with the container, dropping what the start said (exit 0). Within
-// rounding, 1e-9 of the container's speed and of a radius a step.
+// container) starts moving otherwise than the container or spinning: the run sets it moving
+// with the container, dropping what the start said (exit 0). `held_velocities`: the start
+// container's velocity, and the drive's at t = 0 (a container stated at rest starts any
+// drive, its held particles then set off with it). Within rounding, 1e-9 of that speed and
+// of a radius a step.
 void check_fixed_held(const InitialState& start, const IndexArray& id, const Model& model,
-                      const Eigen::Vector3d& container_velocity, double dt,
+                      const std::array<Eigen::Vector3d, 2>& held_velocities, double dt,
                       const std::string& where);
 
 }  // namespace granpipe::dem

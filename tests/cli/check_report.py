@@ -9,6 +9,7 @@ whose x and y differ in length), by granpipe report and by the script."""
 import html
 import json
 import os
+import shutil
 import signal
 import subprocess
 import sys
@@ -188,7 +189,24 @@ with tempfile.TemporaryDirectory() as work:
     with open(os.path.join(stopped, "report.html")) as f:
         check('id="point_000/compaction"' in f.read(), "a stopped sweep's points: no results")
 
-    # Counts are shown whole (1412032 trials read "1.41203e+06").
+    # The run completing while its page of the results so far is drawn: that page landed
+    # after the run had removed it, stale. Drawn again from the complete results instead.
+    racing = os.path.join(work, "racing")
+    shutil.copytree(stopped, racing)
+    os.remove(os.path.join(racing, "report.html"))
+    share = os.path.join(os.path.dirname(os.path.dirname(exe)), "share", "granpipe")
+    completes = ("import shutil, sys; sys.path.insert(0, sys.argv[1]); import report\n"
+                 "draw = report.report_body\n"
+                 "def completing(*args):\n"
+                 "    page = draw(*args)\n"
+                 "    shutil.copy(sys.argv[2] + '/results.partial.h5', sys.argv[2] + '/results.h5')\n"
+                 "    return page\n"
+                 "report.report_body = completing\n"
+                 "report.main(sys.argv[2])\n")
+    subprocess.run([python, "-c", completes, share, racing], check=True)
+    page = Page(os.path.join(racing, "report.html"))
+    check(not any("the results so far" in n for n in page.notes),
+          f"a page drawn as the run completed: {page.notes}")
     sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(exe)), "share", "granpipe"))
     from report_parts import number
     check(number(1412032.0) == "1412032" and number(0.5) == "0.5" and number(2.5e20) == "2.5e+20",
@@ -219,7 +237,8 @@ with tempfile.TemporaryDirectory() as work:
     # A symlink named report.html is the user's: it was replaced by a file, listed as the run's.
     os.symlink(os.path.join(single, "report.html"), os.path.join(sweep, "report.html"))
     r = subprocess.run([exe, "report", sweep], capture_output=True, text=True)
-    check(r.returncode == 2 and os.path.islink(os.path.join(sweep, "report.html")),
+    check(r.returncode == 2 and os.path.islink(os.path.join(sweep, "report.html")) and
+          "expected a report granpipe wrote, found a symbolic link" in r.stderr,
           f"a symlink report.html: {r.returncode} {r.stderr!r}")
     os.remove(os.path.join(sweep, "report.html"))
 

@@ -1,4 +1,4 @@
-// Numbers and points in messages: %g with the digits asked for.
+// Numbers, points and quoted text in messages: %g with the digits asked for.
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "granpipe/format_number.hpp"
+#include "granpipe/text_words.hpp"
 
 using namespace granpipe;
 
@@ -26,4 +27,12 @@ TEST(FormatPoint, WritesEveryCoordinateAsFormatNumberDoes) {
   rows << 1, 2, 3, 4.5, std::nan(""), INFINITY;
   EXPECT_EQ(format_point(rows.row(1)), "(4.5, nan, inf)");
   EXPECT_EQ(format_point(std::vector<double>{}), "()");
+}
+
+// UTF-8 text is quoted as it is (a unit "µm" read "??m"); a binary file's bytes are not.
+TEST(Quoted, KeepsUtf8AndHidesOtherBytes) {
+  EXPECT_EQ(granpipe::quoted("\u00b5m"), "\"\u00b5m\"");
+  EXPECT_EQ(granpipe::quoted("\u00c5 and \u03bcm"), "\"\u00c5 and \u03bcm\"");
+  EXPECT_EQ(granpipe::quoted(std::string("a\xff\x01z")), "\"a??z\"");
+  EXPECT_EQ(granpipe::quoted(std::string("\xc3")), "\"?\"");  // a character cut short
 }

@@ -491,9 +491,17 @@ TEST(DemSource, AFixedParticleStartingToMoveIsRefused) {
             "(0, 0, 0): expected it held by the container, moving as the container does, at (0, "
             "0, 0), without spin");
   fs::remove(file);
-  const fs::path resting = start_file({{0.0, 0.0, 0.5}}, {{0.0, 0.0, 0.0}});
+  const fs::path resting = start_file({{0.0, 0.0, 0.5}});  // no velocities at all
   EXPECT_EQ(refusal({{"initial_file", resting.string()}, {"species", held}}), "no refusal");
   fs::remove(resting);
+  // A container at rest starts any drive, a held particle setting off with it at A w.
+  const double speed = 0.01 * 2.0 * std::numbers::pi;
+  const fs::path setting_off = start_file({{0.0, 0.0, 0.5}}, {{0.0, 0.0, speed}});
+  EXPECT_EQ(refusal({{"initial_file", setting_off.string()},
+                     {"species", held},
+                     {"drive", {{"form", "sine"}, {"amplitude", 0.01}, {"frequency", 1.0}}}}),
+            "no refusal");
+  fs::remove(setting_off);
 }
 
 TEST(DemSource, AnEmptyStartIsRefused) {
