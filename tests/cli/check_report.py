@@ -67,7 +67,7 @@ def holds(path, group):
     try:
         with h5py.File(path, "r", swmr=True, locking=False) as f:
             return group in f
-    except OSError:  # not there yet, or not yet flushed
+    except Exception:  # not there yet, not yet flushed, or caught mid-write: try again
         return False
 
 
