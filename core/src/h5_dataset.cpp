@@ -277,6 +277,32 @@ std::int64_t widen(const unsigned char* p, std::size_t size, bool is_signed,
 }
 }  // namespace
 
+namespace {
+// What a dataset holds, for a message (species written as strings read "another data type").
+std::string type_class_name(H5T_class_t cls) {
+  switch (cls) {
+    case H5T_FLOAT:
+      return "real numbers";
+    case H5T_STRING:
+      return "strings";
+    case H5T_COMPOUND:
+      return "compound records";
+    case H5T_ARRAY:
+      return "arrays";
+    case H5T_VLEN:
+      return "variable-length sequences";
+    case H5T_BITFIELD:
+      return "bit fields";
+    case H5T_OPAQUE:
+      return "opaque bytes";
+    case H5T_REFERENCE:
+      return "references";
+    default:
+      return "another data type";
+  }
+}
+}  // namespace
+
 std::vector<std::int64_t> read_integer_rows(hid_t dataset, const std::string& path, hsize_t first,
                                             hsize_t count) {
   Shape dims = shape_of(dataset, path);
@@ -294,7 +320,9 @@ std::vector<std::int64_t> read_integer_rows(hid_t dataset, const std::string& pa
     read_rows(dataset, path, H5T_NATIVE_INT64, first, count, values.data());
     return values;
   }
-  if (cls != H5T_ENUM) throw Error(path + ": expected integers, got another data type");
+  if (cls != H5T_ENUM) {
+    throw Error(path + ": expected integers (or an enumeration), got " + type_class_name(cls));
+  }
   // HDF5 converts an enumeration only to another enumeration: read the native form of
   // the enumeration and widen its integer base type by hand.
   Object native =

@@ -625,6 +625,12 @@ TEST_F(FrameStore, IntegersBeyondTheirColumnOrNotWholeAreRefused) {
   const double whole[4] = {2, 0, 1, 2};
   const fs::path p = with_species("whole.h5", H5T_NATIVE_DOUBLE, whole);
   EXPECT_EQ(FrameReader(p).read(0).species()[2], 1);
+  // Species written as element names: it said "another data type".
+  Id text(H5Tcopy(H5T_C_S1));
+  H5Tset_size(text, 2);
+  const char names[4][2] = {{'C', 'u'}, {'F', 'e'}, {'C', 'u'}, {'N', 'i'}};
+  EXPECT_EQ(reader_error(with_species("names.h5", text, names)),
+            "/particles/atoms/species: expected integers (or an enumeration), got strings");
 }
 
 // A clock shorter than its values read as fewer frames (3 positions, 2 times: 2 frames),
