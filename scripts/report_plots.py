@@ -8,6 +8,9 @@ from report_parts import (MARKED_POINTS, axis_label, drawable, inline_svg, plain
                           uncertainties)
 
 
+DISTINCT_COLOURS = 10  # matplotlib's default colour cycle
+
+
 def declared_columns(declared, group):
     """{column: values} and {column: unit} of the plot's table `group`, which has the columns
     the plot `declared` names (both come from one plugin: a column missing is damage)."""
@@ -27,6 +30,10 @@ def plot_svg(plt, declared, tables, plot, paper):
     logx = bool(attr_number(declared, "logx", integer=True))
     logy = bool(attr_number(declared, "logy", integer=True))
     fig, ax = plt.subplots(figsize=(6.4, 4.0))
+    lines = len(tables) * len(attr_texts(declared, "y"))
+    if lines > DISTINCT_COLOURS:  # the default cycle repeats every 10: lines of one colour
+        import numpy as np
+        ax.set_prop_cycle(color=plt.cm.viridis(np.linspace(0.0, 0.95, lines)))
     drawn = 0
     for label, group in tables:
         data, unit_of = declared_columns(declared, group)

@@ -9,6 +9,7 @@ whose x and y differ in length), by granpipe report and by the script."""
 import html
 import json
 import os
+import re
 import shutil
 import signal
 import subprocess
@@ -143,6 +144,9 @@ with tempfile.TemporaryDirectory() as work:
     check("compaction, 24 of 30 points" in text, "a long sweep's plots: no bound said")
     # Their lines named in a legend beside the plot (past 12 lines there was none).
     check("epsilon = 0.3" in text, "a long sweep's plots: no legend naming the points")
+    # Each of its lines in a colour of its own (the default cycle repeats every 10).
+    colours = set(re.findall(r"stroke: ?(#[0-9a-f]{6})", text))
+    check(len(colours) >= 24, f"a long sweep's plots: {len(colours)} colours for 24 lines")
 
     # No matplotlib: a module of that name that fails to import stands for its absence.
     hidden = os.path.join(work, "hidden")
