@@ -24,9 +24,15 @@ void Log::close_file() {
   file_.close();
 }
 
-void Log::info(const std::string& message) { write(message); }
+void Log::info(const std::string& message) {
+  if (parent_) return parent_->info(prefix_ + message);
+  write(message);
+}
 
-void Log::warn(const std::string& message) { write("warning: " + message); }
+void Log::warn(const std::string& message) {
+  if (parent_) return parent_->warn(prefix_ + message);
+  write("warning: " + message);
+}
 
 void FirstFrameWarning::warn(Log& log, const std::string& message) {
   if (said_) return;

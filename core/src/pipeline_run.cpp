@@ -32,6 +32,8 @@ using json = nlohmann::json;
 namespace {
 
 struct PointPlugins {
+  // First, so that it outlives the plugins that hold it.
+  std::unique_ptr<Log> log;  // a sweep point's, naming it in each line; else none
   std::unique_ptr<Source> source;
   std::vector<std::unique_ptr<Analyzer>> analyzers;
   std::vector<std::unique_ptr<Writer>> writers;  // the pipeline's
@@ -94,12 +96,15 @@ PointPlugins make_plugins(const Pipeline::Impl& p, std::size_t k, int threads, L
   const PointSpec& point = p.points[k];
   const Seeds seeds = Seeds(p.seed).derive("point", p.shared_seeds ? 0 : k);
   PointPlugins made;
+  if (p.points.size() > 1)
+    made.log = std::make_unique<Log>(log, "point " + std::to_string(k) + ": ");
+  Log& point_log = made.log ? *made.log : log;
   const std::string provenance = point_label(p, k);
   // Plugins check what the schema cannot (one parameter against another, a file's
   // content); their messages name the parameter (ctx.param) and get the file in front.
   auto context = [&](const Params& params, Seeds s, const std::string& name,
                      const std::string& params_path) {
-    PluginContext c{params, s, threads, log, progress, dir, name, params_path};
+    PluginContext c{params, s, threads, point_log, progress, dir, name, params_path};
     c.provenance = provenance;
     c.streams = streams;
     c.file_record = files;

@@ -7,6 +7,8 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <vector>
 
 #include "granpipe/frame_store.hpp"
 #include "granpipe/pipeline.hpp"
@@ -87,6 +89,19 @@ class ExtraWhenFlagged : public Analyzer {
   bool flag_;
 };
 
+// Warns of the points of each frame it sees, as analyzers warn of undefined results.
+class SaysItsPoints : public Analyzer {
+ public:
+  explicit SaysItsPoints(const PluginContext& c) : log_(c.log) {}
+  void consume(const Frame& f, FrameCache&) override {
+    log_.warn("says: " + std::to_string(f.size()) + " points");
+  }
+  void finish(Results&) override {}
+
+ private:
+  Log& log_;
+};
+
 Registry test_registry() {
   Registry r;
   Schema s;
@@ -101,6 +116,7 @@ Registry test_registry() {
   Schema f;
   f.boolean("flag", false, "give the extra result");
   r.add_analyzer<ExtraWhenFlagged>("extra_when_flagged", "a result only when flagged", f);
+  r.add_analyzer<SaysItsPoints>("says", "warns of each frame's points", Schema{});
   return r;
 }
 
@@ -428,6 +444,34 @@ TEST(Pipeline, SweepSummaryHoldsBooleansAsOneAndZeroAndEveryPointsResults) {
   EXPECT_TRUE(std::isnan(extra[0]));
   EXPECT_EQ(extra[1], 7.0);
   fs::remove_all(*o.out);
+}
+
+// A sweep's points warned alike and interleaved: which point spoke? Each line names it; a
+// run of one point is no sweep, its lines as they are.
+TEST(Pipeline, ASweepPointsWarningsNameThePoint) {
+  const Registry r = test_registry();
+  const auto warnings_of = [&](const std::string& sweep) {
+    const std::string text =
+        R"({"source": {"plugin": "random", "params": {"frames": 1}}, "analyzers": [{"plugin": "says"}],
+          "output": {"save_frames": false})" +
+        sweep + "}";
+    Log log;
+    log.set_quiet(true);
+    RunOptions o = quiet_options();
+    o.out = fresh_dir("warnings");
+    o.threads = 1;
+    Pipeline::parse(text, "p.json", {}, r).run(o, log);
+    std::ifstream in(*o.out / "run.log");
+    std::vector<std::string> said;
+    for (std::string line; std::getline(in, line);)
+      if (line.starts_with("warning: ")) said.push_back(line);
+    fs::remove_all(*o.out);
+    return said;
+  };
+  EXPECT_EQ(warnings_of(R"(, "sweep": {"parameters": {"source.params.n": [3, 5]}})"),
+            (std::vector<std::string>{"warning: point 0: says: 3 points",
+                                      "warning: point 1: says: 5 points"}));
+  EXPECT_EQ(warnings_of(""), (std::vector<std::string>{"warning: says: 10 points"}));
 }
 
 // A --set of one entry of a list was blamed on the file ("p.json: ...: got [1,0]").

@@ -2,6 +2,7 @@
 #include <fstream>
 #include <mutex>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace granpipe {
@@ -12,6 +13,13 @@ namespace granpipe {
 // terminal only.
 class Log {
  public:
+  Log() = default;
+  // A log whose lines go to `parent` after `prefix`: a sweep point's plugins say which point
+  // they speak of ("point 3: "), where the lines of all points came interleaved and alike.
+  Log(Log& parent, std::string prefix) : parent_(&parent), prefix_(std::move(prefix)) {}
+  Log(const Log&) = delete;
+  Log& operator=(const Log&) = delete;
+
   void info(const std::string& message);
   void warn(const std::string& message);
   // `first`, when given, is the log's first line, before those kept until it opened (the
@@ -27,6 +35,8 @@ class Log {
   std::ofstream file_;
   std::vector<std::string> pending_;  // written while no log was open
   bool quiet_ = false;
+  Log* parent_ = nullptr;
+  std::string prefix_;
 };
 
 // A warning an analyzer would otherwise repeat for every frame of a long run (a value
