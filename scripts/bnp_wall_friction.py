@@ -24,8 +24,8 @@ from input_error import read_pipeline, refuse, require_outputs
 SWEPT = "source.params.walls.mu"
 COMPRESSION_PHASE = 0.28
 # How far from the compression phase a frame may lie and still give its height (the kept
-# runs' frames lie 0.0535 of a cycle apart; a bed in flight half a cycle off read as one at
-# rest).
+# runs' frames lie 0.107 of a cycle apart, none farther than 0.0535 from the phase; a bed in
+# flight half a cycle off read as one at rest).
 PHASE_TOLERANCE = 0.06
 
 
@@ -89,7 +89,9 @@ def main():
             refuse(f"{path}: the point of {SWEPT} = {mu}: expected frames counting the drive's "
                    "cycles (the intruder's cycles column), found frames without")
         spacing = frame_spacing(points)
-        if spacing > 2.0 * PHASE_TOLERANCE and len(points) > 1:
+        # (No step at all, every frame before the drive's start: refused below, as reaching
+        # no compression.)
+        if 2.0 * PHASE_TOLERANCE < spacing < float("inf"):
             refuse(f"{path}: the point of {SWEPT} = {mu}: expected frames at most "
                    f"{2.0 * PHASE_TOLERANCE:g} of a cycle apart to read the compression phase, "
                    f"found {spacing:.3g} (lower source.params.save_every)")

@@ -336,18 +336,30 @@ def main(run):
             f.write(html_text)
         # The run completed while the page was drawn from the results so far: it removed
         # the page of those, and this one would land as stale (or over the final one).
-        if drawn_from_partial and os.path.exists(completed):
+        stale = drawn_from_partial and os.path.exists(completed)
+        if stale:
             os.remove(partial)
-            return main(run)  # drawn again, from the results now complete
-        landed = os.stat(partial).st_ino
-        os.replace(partial, target)
-        if drawn_from_partial and os.path.exists(completed) and os.stat(target).st_ino == landed:
-            return main(run)  # it completed just as this page landed
-        note_written(target)
+        else:
+            landed = os.stat(partial).st_ino
+            os.replace(partial, target)
+            stale = drawn_from_partial and os.path.exists(completed) and ours(target, landed)
+        if not stale:
+            note_written(target)
     except OSError as e:  # a full disk, a folder not ours to write: the run's files stay
         if os.path.exists(partial):
             os.remove(partial)
         refuse(f"{target}: cannot write the report: {e.strerror}")
+    if stale:  # drawn again, from the results now complete (once: results.h5 is read first)
+        main(run)
+
+
+def ours(target, inode):
+    """Whether `target` is still the page this process wrote (the run, completing, may have
+    removed it since, or the final page replaced it)."""
+    try:
+        return os.stat(target).st_ino == inode
+    except FileNotFoundError:
+        return True  # removed as stale: this page was, so draw the complete one
 
 
 if __name__ == "__main__":

@@ -101,6 +101,17 @@ def drawable(x, y, e, logx, logy):
     return x[keep], y[keep], None if e is None else e[keep]
 
 
+DISTINCT_COLOURS = 10  # matplotlib's default colour cycle
+
+
+def colour_lines(plt, ax, lines):
+    """Colours for `lines` lines to come, each its own: the default cycle repeats every 10
+    (a sweep's lines shared colours)."""
+    if lines > DISTINCT_COLOURS:
+        import numpy as np
+        ax.set_prop_cycle(color=plt.cm.viridis(np.linspace(0.0, 0.95, lines)))
+
+
 def inline_svg(plt, fig, ax, logx, logy):
     """The figure as an SVG element to inline (log axes and a legend as asked), closed."""
     if logx:
@@ -112,12 +123,15 @@ def inline_svg(plt, fig, ax, logx, logy):
     if beside:  # a sweep's 16 lines and more had no legend at all: which line was which?
         legend = ax.legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1.0),
                            ncol=math.ceil(len(labelled) / LEGEND_ROWS))
-        # Out of the layout, which shrank the plot to a quarter of the figure to make room:
-        # the saved canvas grows around it instead (bbox_inches "tight").
+        # Out of tight_layout, which shrank the plot to a quarter of the figure to make room,
+        # and back in for the saving, whose canvas grows around it (bbox_inches "tight"),
+        # else it was cut off.
         legend.set_in_layout(False)
     elif labelled:
         ax.legend(fontsize="small")
     fig.tight_layout()
+    if beside:
+        legend.set_in_layout(True)
     out = io.StringIO()
     fig.savefig(out, format="svg", metadata={"Date": None},  # the same run, the same page
                 bbox_inches="tight" if beside else None)

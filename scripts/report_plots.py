@@ -4,11 +4,8 @@ y column (per sweep point in a sweep), axis units from the table, error bars or 
 import html
 
 from report_h5 import attr_number, attr_text, attr_texts, damaged, linked, member, read_table
-from report_parts import (MARKED_POINTS, axis_label, drawable, inline_svg, plain,
+from report_parts import (MARKED_POINTS, axis_label, colour_lines, drawable, inline_svg, plain,
                           uncertainties)
-
-
-DISTINCT_COLOURS = 10  # matplotlib's default colour cycle
 
 
 def declared_columns(declared, group):
@@ -30,10 +27,7 @@ def plot_svg(plt, declared, tables, plot, paper):
     logx = bool(attr_number(declared, "logx", integer=True))
     logy = bool(attr_number(declared, "logy", integer=True))
     fig, ax = plt.subplots(figsize=(6.4, 4.0))
-    lines = len(tables) * len(attr_texts(declared, "y"))
-    if lines > DISTINCT_COLOURS:  # the default cycle repeats every 10: lines of one colour
-        import numpy as np
-        ax.set_prop_cycle(color=plt.cm.viridis(np.linspace(0.0, 0.95, lines)))
+    colour_lines(plt, ax, len(tables) * len(attr_texts(declared, "y")))
     drawn = 0
     for label, group in tables:
         data, unit_of = declared_columns(declared, group)

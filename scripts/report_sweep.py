@@ -5,8 +5,8 @@ import html
 import json
 
 from report_h5 import damaged, indices, member, producer, read_table
-from report_parts import (drawable, html_table, inline_svg, number, plain, table_section,
-                          uncertainties)
+from report_parts import (colour_lines, drawable, html_table, inline_svg, number, plain,
+                          table_section, uncertainties)
 from report_plots import plots_section
 from speed_error import deviation_table, other_swept, pooled, value_namer
 
@@ -130,6 +130,7 @@ def sweep_plot(plt, spec, rows, columns, name_of, paper, points):
         lines.setdefault(tuple(row[c] for c in others), []).append(row)
     logx, logy = spec.get("logx", False), spec.get("logy", False)
     fig, ax = plt.subplots(figsize=(6.4, 4.0))
+    colour_lines(plt, ax, len(lines) * len(spec["y"]))
     for key, members in sorted(lines.items()):
         members.sort(key=lambda r: r[spec["x"]])
         tag = ", ".join(f"{c.split('.')[-1]} = {name_of(c, v)}" for c, v in zip(others, key))

@@ -1,6 +1,7 @@
 #include "length_unit.hpp"
 
 #include <array>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <utility>
@@ -42,7 +43,10 @@ std::optional<double> metres_of(std::string_view unit) {
   if (w.size() == 2) {
     factor = real_number(w[0]);
   } else {  // a factor glued to the symbol: "10nm", "1e-9m", "+2nm"
-    if (symbol.starts_with('+')) symbol.remove_prefix(1);  // from_chars reads no '+'
+    // from_chars reads no '+'; one before no number ("+m") is no factor.
+    if (symbol.size() > 1 && symbol[0] == '+' &&
+        (std::isdigit(static_cast<unsigned char>(symbol[1])) || symbol[1] == '.'))
+      symbol.remove_prefix(1);
     double glued = 1.0;
     const auto [end, error] = std::from_chars(symbol.data(), symbol.data() + symbol.size(), glued);
     if (error == std::errc{} && end != symbol.data() + symbol.size()) {

@@ -58,15 +58,21 @@ std::optional<double> real_number(std::string_view word) {
 
 namespace {
 
-// The length of the UTF-8 character at the start of `s` (2 to 4 bytes), or 0 where it is
-// none (a byte of a binary file).
+// The length of the printable UTF-8 character at the start of `s` (2 to 4 bytes, as RFC 3629
+// allows them: no overlong form, surrogate or code point past U+10FFFF), or 0 where it is
+// none (a byte of a binary file, or a C1 control such as U+009B, which terminals obey).
 std::size_t utf8_length(std::string_view s) {
-  const auto lead = static_cast<unsigned char>(s[0]);
+  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(s[k]); };
+  const unsigned char lead = byte(0);
   const std::size_t n = lead >= 0xF0 && lead <= 0xF4 ? 4 : lead >= 0xE0 ? 3 : lead >= 0xC2 ? 2 : 0;
   if (lead >= 0xF5 || n == 0 || n > s.size()) return 0;
   for (std::size_t k = 1; k < n; ++k)
-    if ((static_cast<unsigned char>(s[k]) & 0xC0) != 0x80) return 0;
-  return n;
+    if ((byte(k) & 0xC0) != 0x80) return 0;
+  const unsigned char second = byte(1);
+  const bool valid = !(lead == 0xC2 && second < 0xA0) && !(lead == 0xE0 && second < 0xA0) &&
+                     !(lead == 0xED && second >= 0xA0) && !(lead == 0xF0 && second < 0x90) &&
+                     !(lead == 0xF4 && second >= 0x90);
+  return valid ? n : 0;
 }
 
 }  // namespace

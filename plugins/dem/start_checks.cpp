@@ -120,7 +120,10 @@ void check_fixed_held(const InitialState& start, const IndexArray& id, const Mod
     s << where << ": particle " << i << " (id " << id[i] << ") of fixed species "
       << start.species[i] << " moves at " << format_point(v) << ", spinning at " << format_point(w)
       << ": expected it held by the container, moving as the container does, at "
-      << format_point(held_velocities[0]) << ", without spin";
+      << format_point(held_velocities[0]);
+    if (held_velocities[1] != held_velocities[0])
+      s << " (or setting off with the drive at " << format_point(held_velocities[1]) << ")";
+    s << ", without spin";
     throw InputError(s.str());
   }
 }

@@ -68,7 +68,7 @@ def holds(path, group):
     try:
         with h5py.File(path, "r", swmr=True, locking=False) as f:
             return group in f
-    except Exception:  # not there yet, not yet flushed, or caught mid-write: try again
+    except (OSError, KeyError, RuntimeError):  # not there yet, or caught mid-write: again
         return False
 
 
@@ -144,6 +144,9 @@ with tempfile.TemporaryDirectory() as work:
     check("compaction, 24 of 30 points" in text, "a long sweep's plots: no bound said")
     # Their lines named in a legend beside the plot (past 12 lines there was none).
     check("epsilon = 0.3" in text, "a long sweep's plots: no legend naming the points")
+    # The legend inside the picture: its canvas wider than the plot's 6.4 in (460.8 pt).
+    widths = [float(w) for w in re.findall(r'viewBox="0 0 ([0-9.]+) ', text)]
+    check(widths and max(widths) > 470, f"a long sweep's legend cut off: widths {widths[:6]}")
     # Each of its lines in a colour of its own (the default cycle repeats every 10).
     colours = set(re.findall(r"stroke: ?(#[0-9a-f]{6})", text))
     check(len(colours) >= 24, f"a long sweep's plots: {len(colours)} colours for 24 lines")

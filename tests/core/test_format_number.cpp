@@ -35,4 +35,8 @@ TEST(Quoted, KeepsUtf8AndHidesOtherBytes) {
   EXPECT_EQ(granpipe::quoted("\u00c5 and \u03bcm"), "\"\u00c5 and \u03bcm\"");
   EXPECT_EQ(granpipe::quoted(std::string("a\xff\x01z")), "\"a??z\"");
   EXPECT_EQ(granpipe::quoted(std::string("\xc3")), "\"?\"");  // a character cut short
+  // A C1 control (CSI, which terminals obey), an overlong form and a surrogate are not text.
+  EXPECT_EQ(granpipe::quoted(std::string("\xc2\x9b")), "\"??\"");
+  EXPECT_EQ(granpipe::quoted(std::string("\xe0\x80\xaf")), "\"???\"");
+  EXPECT_EQ(granpipe::quoted(std::string("\xed\xa0\x80")), "\"???\"");
 }

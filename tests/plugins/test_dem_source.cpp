@@ -491,6 +491,24 @@ TEST(DemSource, AFixedParticleStartingToMoveIsRefused) {
             "(0, 0, 0): expected it held by the container, moving as the container does, at (0, "
             "0, 0), without spin");
   fs::remove(file);
+  // Spinning, in a file without velocities (the check looked only where velocities were).
+  {
+    const fs::path spinning = start_file({{0.0, 0.0, 0.5}});
+    FrameReader read(spinning);
+    Frame f = read.read(0);
+    f.add("angular_velocity");
+    f.table<double>("angular_velocity").row(0) << 0.0, 0.0, 2.0;
+    fs::remove(spinning);
+    FrameWriter w(spinning, "{}");
+    w.append(f);
+    w.close();
+    const std::string spun = refusal({{"initial_file", spinning.string()}, {"species", held}});
+    EXPECT_EQ(spun.substr(spun.find(": frame 0: ")),
+              ": frame 0: particle 0 (id 0) of fixed species 0 moves at (0, 0, 0), spinning at "
+              "(0, 0, 2): expected it held by the container, moving as the container does, at "
+              "(0, 0, 0), without spin");
+    fs::remove(spinning);
+  }
   const fs::path resting = start_file({{0.0, 0.0, 0.5}});  // no velocities at all
   EXPECT_EQ(refusal({{"initial_file", resting.string()}, {"species", held}}), "no refusal");
   fs::remove(resting);

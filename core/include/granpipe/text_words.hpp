@@ -20,8 +20,8 @@ std::optional<std::int64_t> whole_number(std::string_view word);
 // The whole word as a number, or nothing: "0.5", "-1e-3", "+2"; "nan" and "inf" are numbers
 // here (callers decide whether they accept them).
 std::optional<double> real_number(std::string_view word);
-// The start of a line, in quotes, for a message: "\"1 1 0.5 0 0\"" (bytes that are not
-// printable characters as '?').
+// The start of a line, in quotes, for a message: "\"1 1 0.5 0 0\"" (printable ASCII and
+// UTF-8 characters as they are, other bytes as '?').
 std::string quoted(std::string_view line);
 
 }  // namespace granpipe
