@@ -134,7 +134,7 @@ def provenance_section(results, partial, state):
     return "<h2>Provenance</h2>" + note + html_table(None, rows)
 
 
-def run_state(run):
+def run_state(run, log):
     """What became of an unfinished run, as its marker and run.log say: "is still going (or
     was killed)", "was interrupted by SIGTERM ...", "failed: ..."; a page of each read "has
     not finished (or was stopped)" alike."""
@@ -143,8 +143,7 @@ def run_state(run):
             status = json.loads(f.read(4096).strip() or "{}").get("status", "")
     except (OSError, ValueError, AttributeError):
         status = ""
-    said = [line.strip() for line in log_lines(run)
-            if line.startswith(("interrupted by ", "failed: "))]
+    said = [line.strip() for line in log if line.startswith(("interrupted by ", "failed: "))]
     if status == "running":
         return "is still going (or was killed)"
     if status == "interrupted":
@@ -166,9 +165,9 @@ def log_lines(run):
 MOST_WARNINGS_SHOWN = 20
 
 
-def warnings_section(run):
+def warnings_section(log):
     """run.log's warnings (undefined results, left-out inputs), which the page left out."""
-    said = [line for line in log_lines(run) if line.startswith("warning: ")]
+    said = [line for line in log if line.startswith("warning: ")]
     if not said:
         return ""
     more = (f"<p>the first {MOST_WARNINGS_SHOWN} of {len(said)}; every one in run.log</p>"
@@ -277,8 +276,9 @@ def report_body(run, pipeline_text, pipeline, results, partial, note, plt):
     paper = PaperValues(pipeline)
     parts = [f"<p class=note>{html.escape(note)}</p>" if note else ""]
     if results is not None:
-        parts.append(provenance_section(results, partial, run_state(run) if partial else ""))
-        parts.append(warnings_section(run))
+        log = log_lines(run)
+        parts.append(provenance_section(results, partial, run_state(run, log) if partial else ""))
+        parts.append(warnings_section(log))
         parts.append("<h2>Results</h2>")
         if plt is None:
             parts.append("<p class=note>plots not drawn: matplotlib is not installed</p>")

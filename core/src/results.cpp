@@ -12,6 +12,16 @@ Table::Table(std::vector<std::string> cols, std::string doc_line)
       data(columns.size()),
       doc(std::move(doc_line)) {}
 
+Table::Table(std::vector<std::string> cols, std::string doc_line,
+             std::vector<std::string> col_units)
+    : Table(std::move(cols), std::move(doc_line)) {
+  if (col_units.size() != columns.size()) {
+    throw InternalError("table of " + std::to_string(columns.size()) + " columns given " +
+                        std::to_string(col_units.size()) + " units");
+  }
+  units = std::move(col_units);
+}
+
 void Table::add_row(const std::vector<double>& row) {
   if (row.size() != columns.size()) {
     throw InternalError("table row has " + std::to_string(row.size()) + " values for " +

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "granpipe/errors.hpp"
+#include "granpipe/text_words.hpp"
 
 namespace granpipe {
 using json = nlohmann::json;
@@ -140,45 +141,13 @@ json parse_or_throw(const std::string& text, const std::string& origin, std::siz
   }
 }
 
-// How a lead byte of UTF-8 goes on: its continuation bytes, and the range of the first
-// (narrower than 0x80..0xbf where that would allow overlong forms, surrogates or code
-// points beyond U+10FFFF). No continuation bytes: not a lead byte.
-struct Utf8Lead {
-  int continuation;
-  unsigned char first_min, first_max;
-};
-
-Utf8Lead utf8_lead(unsigned char c) {
-  if (c >= 0xc2 && c <= 0xdf) return {1, 0x80, 0xbf};
-  if (c == 0xe0) return {2, 0xa0, 0xbf};
-  if (c == 0xed) return {2, 0x80, 0x9f};
-  if (c >= 0xe1 && c <= 0xef) return {2, 0x80, 0xbf};
-  if (c == 0xf0) return {3, 0x90, 0xbf};
-  if (c >= 0xf1 && c <= 0xf3) return {3, 0x80, 0xbf};
-  if (c == 0xf4) return {3, 0x80, 0x8f};
-  return {0, 0, 0};
-}
-
 }  // namespace
 
 std::size_t first_invalid_utf8(const std::string& text) {
-  std::size_t i = 0;
-  while (i < text.size()) {
-    const auto c = static_cast<unsigned char>(text[i]);
-    if (c < 0x80) {
-      ++i;
-      continue;
-    }
-    const Utf8Lead lead = utf8_lead(c);
-    if (lead.continuation == 0 || i + static_cast<std::size_t>(lead.continuation) >= text.size())
-      return i;
-    for (int k = 1; k <= lead.continuation; ++k) {
-      const auto b = static_cast<unsigned char>(text[i + static_cast<std::size_t>(k)]);
-      const unsigned char min = k == 1 ? lead.first_min : 0x80,
-                          max = k == 1 ? lead.first_max : 0xbf;
-      if (b < min || b > max) return i;
-    }
-    i += static_cast<std::size_t>(lead.continuation) + 1;
+  for (std::size_t i = 0; i < text.size();) {
+    const std::size_t n = utf8_length(std::string_view(text).substr(i));
+    if (n == 0) return i;
+    i += n;
   }
   return std::string::npos;
 }

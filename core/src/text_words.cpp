@@ -58,24 +58,41 @@ std::optional<double> real_number(std::string_view word) {
 
 namespace {
 
-// The length of the printable UTF-8 character at the start of `s` (2 to 4 bytes, as RFC 3629
-// allows them: no overlong form, surrogate or code point past U+10FFFF), or 0 where it is
-// none (a byte of a binary file, or a C1 control such as U+009B, which terminals obey).
-std::size_t utf8_length(std::string_view s) {
-  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(s[k]); };
-  const unsigned char lead = byte(0);
-  const std::size_t n = lead >= 0xF0 && lead <= 0xF4 ? 4 : lead >= 0xE0 ? 3 : lead >= 0xC2 ? 2 : 0;
-  if (lead >= 0xF5 || n == 0 || n > s.size()) return 0;
-  for (std::size_t k = 1; k < n; ++k)
-    if ((byte(k) & 0xC0) != 0x80) return 0;
-  const unsigned char second = byte(1);
-  const bool valid = !(lead == 0xC2 && second < 0xA0) && !(lead == 0xE0 && second < 0xA0) &&
-                     !(lead == 0xED && second >= 0xA0) && !(lead == 0xF0 && second < 0x90) &&
-                     !(lead == 0xF4 && second >= 0x90);
-  return valid ? n : 0;
+// How a lead byte of UTF-8 goes on: its continuation bytes, and the range of the first
+// (narrower than 0x80..0xbf where that would allow overlong forms, surrogates or code
+// points beyond U+10FFFF). No continuation bytes: not a lead byte.
+struct Utf8Lead {
+  int continuation;
+  unsigned char first_min, first_max;
+};
+
+Utf8Lead utf8_lead(unsigned char c) {
+  if (c >= 0xc2 && c <= 0xdf) return {1, 0x80, 0xbf};
+  if (c == 0xe0) return {2, 0xa0, 0xbf};
+  if (c == 0xed) return {2, 0x80, 0x9f};
+  if (c >= 0xe1 && c <= 0xef) return {2, 0x80, 0xbf};
+  if (c == 0xf0) return {3, 0x90, 0xbf};
+  if (c >= 0xf1 && c <= 0xf3) return {3, 0x80, 0xbf};
+  if (c == 0xf4) return {3, 0x80, 0x8f};
+  return {0, 0, 0};
 }
 
 }  // namespace
+
+std::size_t utf8_length(std::string_view s) {
+  if (s.empty()) return 0;
+  const auto c = static_cast<unsigned char>(s[0]);
+  if (c < 0x80) return 1;
+  const Utf8Lead lead = utf8_lead(c);
+  const auto n = static_cast<std::size_t>(lead.continuation) + 1;
+  if (lead.continuation == 0 || n > s.size()) return 0;
+  for (std::size_t k = 1; k < n; ++k) {
+    const auto b = static_cast<unsigned char>(s[k]);
+    const unsigned char min = k == 1 ? lead.first_min : 0x80, max = k == 1 ? lead.first_max : 0xbf;
+    if (b < min || b > max) return 0;
+  }
+  return n;
+}
 
 std::string quoted(std::string_view line) {
   const std::string_view kept = line.substr(0, kQuotedLength);
@@ -84,10 +101,15 @@ std::string quoted(std::string_view line) {
   std::string shown = "\"";
   for (std::size_t k = 0; k < kept.size();) {
     const auto c = static_cast<unsigned char>(kept[k]);
-    const std::size_t n = c < 0x80 ? 1 : utf8_length(kept.substr(k));
-    if (n == 1 && std::isprint(c)) shown += kept[k];
-    if (n > 1) shown += kept.substr(k, n);
-    if (n <= 1 && !std::isprint(c)) shown += '?';
+    // A C1 control (U+0080..U+009F: CSI is one) is well-formed but terminals obey it.
+    const bool c1 =
+        c == 0xC2 && k + 1 < kept.size() && static_cast<unsigned char>(kept[k + 1]) < 0xA0;
+    const std::size_t n = c1 ? 0 : utf8_length(kept.substr(k));
+    if (n > 1 || (n == 1 && std::isprint(c))) {
+      shown += kept.substr(k, n);
+    } else {
+      shown += '?';
+    }
     k += n == 0 ? 1 : n;
   }
   shown += line.size() > kQuotedLength ? "...\"" : "\"";

@@ -62,21 +62,13 @@ void refuse_repeated(std::vector<std::int64_t> taps, const std::string& param) {
 
 }  // namespace
 
-namespace {
-
-// Lengths in mean radii, as the report's axes say (they had no unit).
-Table per_frame_table() {
-  Table t({"frame", "tap", "z_mean", "phi_b", "phi_c", "height_c"},
-          "per-frame <Z> (mean centre height above the bottom), phi_b, <phi^c> and the top of "
-          "<phi^c>'s zone, in mean radii R");
-  t.units = {"", "", "R", "", "", "R"};
-  return t;
-}
-
-}  // namespace
-
 CompactionAnalyzer::CompactionAnalyzer(const PluginContext& ctx)
-    : log_(ctx.log), per_frame_(ctx.stream_table("per_frame", per_frame_table())) {
+    : log_(ctx.log),
+      per_frame_(ctx.stream_table(
+          "per_frame", Table({"frame", "tap", "z_mean", "phi_b", "phi_c", "height_c"},
+                             "per-frame <Z> (mean centre height above the bottom), phi_b, "
+                             "<phi^c> and the top of <phi^c>'s zone, in mean radii R",
+                             {"", "", "R", "", "", "R"}))) {
   const Params& p = ctx.params;
   stereology_ = stereology_settings(p);
   report_.fit_from = p.real("fit_from");

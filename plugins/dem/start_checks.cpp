@@ -13,6 +13,10 @@ namespace granpipe::dem {
 
 namespace {
 
+// What a saved start's walls and held particles may differ by from where the run puts them:
+// rounding, 1e-9 of a length (the smallest radius) or of a speed (that length a step).
+constexpr double kRounding = 1e-9;
+
 std::string percent(double fraction) { return format_number(100.0 * fraction, 3) + " %"; }
 
 std::string particle(const Frame& f, Eigen::Index i) {
@@ -69,7 +73,6 @@ void check_start_frame(const Frame& f, const std::string& where) {
 // length a step for the velocity.
 void check_start_motion(const Container& c, const Drive& drive, double dt, double radius,
                         const std::string& where) {
-  constexpr double kRounding = 1e-9;
   const Eigen::Vector3d offset = drive.offset(0.0), velocity = drive.velocity(0.0);
   const double speed_rounding = kRounding * (velocity.norm() + radius / dt);
   const bool placed = (c.wall_offset - offset).norm() <= kRounding * radius;
@@ -102,7 +105,6 @@ void check_start_speeds(const InitialState& start, const IndexArray& id, double 
 void check_fixed_held(const InitialState& start, const IndexArray& id, const Model& model,
                       const std::array<Eigen::Vector3d, 2>& held_velocities, double dt,
                       const std::string& where) {
-  constexpr double kRounding = 1e-9;
   // A start without velocities or angular velocities (a file of another code) has none.
   const auto column = [](const Vectors& v, Eigen::Index i) {
     return i < v.cols() ? Eigen::Vector3d(v.col(i)) : Eigen::Vector3d::Zero();

@@ -101,23 +101,15 @@ BedState measure_bed(const Frame& f, const std::string& where) {
   return s;
 }
 
-namespace {
-
-// In the source's units (the report's axes had none).
-Table per_frame_table() {
-  Table t({"frame", "time", "cycles", "intruder_height", "bed_height", "intruder_velocity",
-           "bed_velocity", "coordination", "base_contacts", "stage"},
-          "intruder and bed centre-of-mass heights above the base and vertical velocities, mean "
-          "coordination number, particles touching the base, stage (1 compression, 0 "
-          "expansion), per frame; cycles = drive periods when the source counts them");
-  t.units = {"", "time", "", "length", "length", "length/time", "length/time", "", "", ""};
-  return t;
-}
-
-}  // namespace
-
 IntruderAnalyzer::IntruderAnalyzer(const PluginContext& ctx)
-    : per_frame_(ctx.stream_table("per_frame", per_frame_table())),
+    : per_frame_(ctx.stream_table(
+          "per_frame",
+          Table({"frame", "time", "cycles", "intruder_height", "bed_height", "intruder_velocity",
+                 "bed_velocity", "coordination", "base_contacts", "stage"},
+                "intruder and bed centre-of-mass heights above the base and vertical velocities, "
+                "mean coordination number, particles touching the base, stage (1 compression, "
+                "0 expansion), per frame; cycles = drive periods when the source counts them",
+                {"", "time", "", "length", "length", "length/time", "length/time", "", "", ""}))),
       transitions_({"time", "cycles", "stage"},
                    "moments the stage changes (midpoint of the two frames): stage 0 = lift-off "
                    "(expansion begins), 1 = impact (compression begins)") {}

@@ -45,14 +45,6 @@ Property acceptance_property() {
           "accepted fraction of the tap's trial moves"};
 }
 
-Table per_tap_table() {
-  Table t({"tap", "epsilon", "leg", "mean_height", "mc_trials", "mc_acceptance"},
-          "every tap: its epsilon and ramp leg, <Z> after redeposition, trial moves, accepted "
-          "fraction");
-  t.units = {"", "", "", "length", "", ""};
-  return t;
-}
-
 RedepositionOptions redeposition_options(const Params& p) {
   RedepositionOptions o;
   o.move = TrialMove(p.real("d_max") * p.real("radius"), p.real("theta0"));
@@ -229,7 +221,11 @@ TapSource::TapSource(const PluginContext& ctx)
       seeds_(replica_seeds(ctx)),
       n_(ctx.params.integer("N")),
       eta_param_(ctx.param("eta")),
-      per_tap_(ctx.stream_table("per_tap", per_tap_table())) {
+      per_tap_(ctx.stream_table(
+          "per_tap", Table({"tap", "epsilon", "leg", "mean_height", "mc_trials", "mc_acceptance"},
+                           "every tap: its epsilon and ramp leg, <Z> after redeposition, trial "
+                           "moves, accepted fraction",
+                           {"", "", "", "length", "", ""}))) {
   if (!schedule_.start && protocol_.taps() == 0) {
     throw InputError(ctx.param("save_start") +
                      ": expected true for a run of no tap (taps 0), got false: the run would "

@@ -32,9 +32,11 @@ namespace fs = std::filesystem;
 namespace {
 
 // Spheres of radius 0.5 at these centres (by default one just touching the base) in an
-// open-top box (4 wide, or `width`), moving with `velocities` if given.
+// open-top box (4 wide, or `width`), moving with `velocities` and spinning with `spins` if
+// given.
 fs::path start_file(const std::vector<Eigen::Vector3d>& centres = {{0.0, 0.0, 0.5}},
-                    const std::vector<Eigen::Vector3d>& velocities = {}, double width = 4.0) {
+                    const std::vector<Eigen::Vector3d>& velocities = {}, double width = 4.0,
+                    const std::vector<Eigen::Vector3d>& spins = {}) {
   const fs::path p =
       fs::temp_directory_path() / ("granpipe_dem_start_" + std::to_string(::getpid()) + ".h5");
   fs::remove(p);
@@ -49,6 +51,13 @@ fs::path start_file(const std::vector<Eigen::Vector3d>& centres = {{0.0, 0.0, 0.
     for (std::size_t k = 0; k < velocities.size(); ++k) {
       f.table<double>("velocity").row(static_cast<Eigen::Index>(k)) =
           velocities[k].transpose().array();
+    }
+  }
+  if (!spins.empty()) {
+    f.add("angular_velocity");
+    for (std::size_t k = 0; k < spins.size(); ++k) {
+      f.table<double>("angular_velocity").row(static_cast<Eigen::Index>(k)) =
+          spins[k].transpose().array();
     }
   }
   const double h = 0.5 * width;
@@ -493,15 +502,7 @@ TEST(DemSource, AFixedParticleStartingToMoveIsRefused) {
   fs::remove(file);
   // Spinning, in a file without velocities (the check looked only where velocities were).
   {
-    const fs::path spinning = start_file({{0.0, 0.0, 0.5}});
-    FrameReader read(spinning);
-    Frame f = read.read(0);
-    f.add("angular_velocity");
-    f.table<double>("angular_velocity").row(0) << 0.0, 0.0, 2.0;
-    fs::remove(spinning);
-    FrameWriter w(spinning, "{}");
-    w.append(f);
-    w.close();
+    const fs::path spinning = start_file({{0.0, 0.0, 0.5}}, {}, 4.0, {{0.0, 0.0, 2.0}});
     const std::string spun = refusal({{"initial_file", spinning.string()}, {"species", held}});
     EXPECT_EQ(spun.substr(spun.find(": frame 0: ")),
               ": frame 0: particle 0 (id 0) of fixed species 0 moves at (0, 0, 0), spinning at "

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "deposit.hpp"
@@ -496,18 +497,28 @@ TEST(EpsilonProtocol, RampsStepTheRootUpDownAndUpAgainEndingEachStep) {
   EXPECT_EQ(constant.at(3).leg, -1);
 }
 
+// A saved start "f" of two spheres of radius kR in `b`'s container, at `centres` (a row
+// each).
+StartFrame two_spheres_in(const TapBox& b, const Eigen::Matrix<double, 2, 3>& centres) {
+  Frame f;
+  f.resize(2, 3);
+  f.position() = centres.array();
+  f.radius().setConstant(kR);
+  f.container = b.container(10.0);
+  StartFrame start;
+  start.frame = std::move(f);
+  start.where.assign(1, 'f');  // = "f" gave GCC 12 a false -Wrestrict
+  return start;
+}
+
 // A start frame's own container was not compared with the model's box: a cylinder was run
 // as the square around it, a base raised by a wall offset as one at z = 0 (the spheres
 // left floating), a box periodic along x alone as a walled one; all with exit 0.
 TEST(Spheres3dTapSavedStart, AContainerOtherThanTheModelsIsRefused) {
   const TapBox walled = box(6.0, Sides::Walls);
-  StartFrame start;
-  start.where = "f";
+  StartFrame start =
+      two_spheres_in(walled, (Eigen::Matrix<double, 2, 3>() << 1, 1, 1, 3, 1, 1).finished());
   Frame& f = start.frame;
-  f.resize(2, 3);
-  f.position() << 1, 1, 1, 3, 1, 1;
-  f.radius().setConstant(kR);
-  f.container = walled.container(10.0);
   const auto refusal = [&](const auto& change) {
     const Frame kept = f;
     change(f.container);
@@ -546,13 +557,11 @@ TEST(Spheres3dTapSavedStart, AContainerOtherThanTheModelsIsRefused) {
 // grid ("two spheres in one cell", exit 1).
 TEST(Spheres3dTapSavedStart, ImagesAlongPeriodicSidesAreCheckedWhereTheyWrap) {
   const TapBox periodic = box(6.0, Sides::Periodic);
-  StartFrame start;
-  start.where = "f";
+  // The second wraps to 0.5 R from the first.
+  StartFrame start = two_spheres_in(
+      periodic,
+      (Eigen::Matrix<double, 2, 3>() << 1, 1, kR, 1 + 6 + 0.5 * kR, 1 + 12, kR).finished());
   Frame& f = start.frame;
-  f.resize(2, 3);
-  f.radius().setConstant(kR);
-  f.container = periodic.container(10.0);
-  f.position() << 1, 1, kR, 1 + 6 + 0.5 * kR, 1 + 12, kR;  // wraps to 0.5 R from the first
   EXPECT_EQ(test::input_error_of([&] {
               read_saved_packing(start, periodic, 2);
             }).rfind("f: spheres 0 and 1 overlap (centres ", 0),

@@ -26,6 +26,8 @@ struct Table {
 
   Table() = default;
   Table(std::vector<std::string> cols, std::string doc_line = "");
+  // With the columns' units, one per column.
+  Table(std::vector<std::string> cols, std::string doc_line, std::vector<std::string> col_units);
   void add_row(const std::vector<double>& row);
   std::size_t rows() const { return data.empty() ? 0 : data.front().size(); }
   const std::vector<double>& column(const std::string& name) const;
