@@ -1,5 +1,6 @@
 #include "h5_column.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -111,6 +112,32 @@ Shape item_shape(const Column& c) {
   return {static_cast<hsize_t>(c.components())};
 }
 
+namespace {
+
+// A column of several components is held component by component (Eigen's order) and
+// stored row by row (HDF5's, C order), so it is written through a copy. Where each of its
+// rows is a row of the series (a contact table), the copy is made in blocks of rows: a
+// table of millions of contacts is then not held twice, nor are HDF5's selections of
+// every chunk it touches. Where the whole column is one row of the series (a frame's
+// particles, one chunk), it is written at once: a block would read that chunk back.
+template <class A>
+void append_components(hid_t dataset, const std::string& path, const A& a, hsize_t rows) {
+  using T = typename A::Scalar;
+  constexpr Eigen::Index kBlockRows = Eigen::Index{1} << 16;
+  if (rows != static_cast<hsize_t>(a.rows())) {
+    const RowMajor<T> rows_first = a;
+    append_rows(dataset, path, memory_type<T>(), rows_first.data(), rows);
+    return;
+  }
+  for (Eigen::Index first = 0; first < a.rows(); first += kBlockRows) {
+    const Eigen::Index count = std::min(kBlockRows, a.rows() - first);
+    const RowMajor<T> block = a.middleRows(first, count);
+    append_rows(dataset, path, memory_type<T>(), block.data(), static_cast<hsize_t>(count));
+  }
+}
+
+}  // namespace
+
 void append_column(hid_t dataset, const std::string& path, const Column& c, hsize_t rows) {
   std::visit(
       [&](const auto& a) {
@@ -119,8 +146,7 @@ void append_column(hid_t dataset, const std::string& path, const Column& c, hsiz
         if constexpr (A::ColsAtCompileTime == 1) {
           append_rows(dataset, path, memory_type<T>(), a.data(), rows);
         } else {
-          const RowMajor<T> rows_first = a;  // HDF5 stores C order, Eigen column by column
-          append_rows(dataset, path, memory_type<T>(), rows_first.data(), rows);
+          append_components(dataset, path, a, rows);
         }
       },
       c.storage());

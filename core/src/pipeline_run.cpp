@@ -236,6 +236,9 @@ PointOutcome run_point(const Pipeline::Impl& p, std::size_t k, PointPlugins plug
   StageClock clock(frames_stage + (frames_h5 ? 1 : 0));  // as many as stage_names(p)
   const auto fetch = [&](Frame& into) {
     throw_if_stop_requested();  // a SIGINT or SIGTERM: stop between frames, files whole
+    // The frame before goes first: a source that computes between frames (a DEM run) then
+    // holds one frame beside its own state, not two.
+    into = Frame();
     return clock.time(
         0, [&] { return located("source", [&] { return plugins.source->next(into); }); });
   };

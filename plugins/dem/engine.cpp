@@ -369,12 +369,17 @@ void Engine::run(std::int64_t steps) {
   }
 }
 
+void Engine::release_contact_records() {
+  for (Vectors& record : wall_normal_) record.resize(3, 0);
+  for (Vectors& record : wall_tangential_) record.resize(3, 0);
+  recorded_step_ = -1;
+}
+
 void Engine::record_contacts(bool on) {
   recording_ = on;
   if (!on) {
     // The records are as large as the particle arrays, and kept only for a frame.
-    for (Vectors& record : wall_normal_) record.resize(3, 0);
-    for (Vectors& record : wall_tangential_) record.resize(3, 0);
+    release_contact_records();
     return;
   }
   wall_normal_.resize(static_cast<std::size_t>(walls_.count()));

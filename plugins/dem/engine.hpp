@@ -90,6 +90,9 @@ class Engine {
   void record_contacts(bool on);
   // True when the forces of the current state were evaluated while recording.
   bool contacts_recorded() const { return recorded_step_ == step_; }
+  // Frees the recorded wall forces once a frame has read them (they are as large as the
+  // particle arrays); recording, if on, goes on from the next force evaluation.
+  void release_contact_records();
   // Changes the container's motion from now on (the drive's own start time applies).
   void set_drive(const Drive& drive);
 

@@ -29,10 +29,10 @@ bool touches_wall(const Engine& e, const Eigen::Vector3d& offset, int slot, int 
 
 // A contact of the frame before its values: its rows (by tag, the smaller first, or the
 // particle and its wall) and where the values come from: listed pair k, or particle a
-// against the wall of `slot`. A quarter of a row's size, so that a frame of 10^6 spheres
+// against the wall of `slot`. A sixth of a row's size, so that a frame of 10^6 spheres
 // holds its contacts once as values (in the table) and once as keys, not twice as values.
 struct ContactKey {
-  std::int64_t i, j;
+  std::int32_t i, j;  // tags, or a tag and its wall's code (partner::wall)
   std::int32_t from;  // k, or a
   std::int32_t slot;  // -1 for a pair
 };
@@ -50,7 +50,7 @@ void for_each_contact(const Engine& e, const Eigen::Vector3d& offset, Visit visi
     }
   }
   for (int slot = 0; slot < e.walls().count(); ++slot) {
-    const std::int64_t wall = partner::wall(e.walls().wall_of_slot(slot));
+    const auto wall = static_cast<std::int32_t>(partner::wall(e.walls().wall_of_slot(slot)));
     for (int a = 0; a < p.size(); ++a) {
       double overlap;
       Vec3 n;
@@ -113,14 +113,28 @@ ContactRow wall_row(const Engine& e, const Eigen::Vector3d& offset, std::int32_t
           point};
 }
 
-void fill_contacts(const Engine& e, Frame& frame) {
+// The wall contacts' rows, in the keys' order: walls are touched by few particles, and
+// read out first they let the engine's records (two vectors per particle and wall) go
+// before the table takes its room.
+std::vector<ContactRow> wall_rows(const Engine& e, const Eigen::Vector3d& offset,
+                                  const std::vector<ContactKey>& keys) {
+  std::vector<ContactRow> rows;
+  for (const ContactKey& key : keys) {
+    if (key.slot >= 0) rows.push_back(wall_row(e, offset, key.from, key.slot));
+  }
+  return rows;
+}
+
+void fill_contacts(Engine& e, Frame& frame) {
   const Eigen::Vector3d offset = e.wall_offset();  // the drive's, once for every wall test
   const std::vector<ContactKey> keys = contact_keys(e, offset);
+  const std::vector<ContactRow> walls = wall_rows(e, offset, keys);
+  e.release_contact_records();
   ContactTableWriter table(frame, static_cast<Eigen::Index>(keys.size()), true);
+  std::size_t w = 0;
   for (std::size_t r = 0; r < keys.size(); ++r) {
     const ContactKey& key = keys[r];
-    table.set(static_cast<Eigen::Index>(r),
-              key.slot < 0 ? pair_row(e, key.from) : wall_row(e, offset, key.from, key.slot));
+    table.set(static_cast<Eigen::Index>(r), key.slot < 0 ? pair_row(e, key.from) : walls[w++]);
   }
 }
 
@@ -159,14 +173,20 @@ void add_drive_observables(const Drive& drive, double t, Frame& frame) {
 
 }  // namespace
 
-void fill_frame(const Engine& engine, Frame& frame) {
+void fill_frame(Engine& engine, Frame& frame) {
   if (engine.walls().count() > 0 && !engine.contacts_recorded()) {
     throw InternalError("dem: fill_frame at step " + std::to_string(engine.step()) +
                         ": the wall contacts of this step were not recorded "
                         "(Engine::record_contacts(true) before the last step)");
   }
+  // A large run holds at once its engine and no more than one frame: the previous frame's
+  // columns go first, and the contacts (which free the engine's wall-force records) are
+  // made before the particles' columns.
+  frame.resize(0, 3);
+  Frame contacts;
+  fill_contacts(engine, contacts);
   fill_particles(engine.particles(), frame);
-  fill_contacts(engine, frame);
+  frame.contacts = std::move(contacts.contacts);
   frame.container = engine.walls().at(engine.time());
   add_drive_observables(engine.walls().drive(), engine.time(), frame);
   frame.time = engine.time();

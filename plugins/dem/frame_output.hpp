@@ -12,7 +12,9 @@ namespace granpipe::dem {
 // overlap, normal_force and tangential_force on i, and the contact point (middle of the
 // overlap). The forces are those of the engine's last force evaluation, the ones the
 // particles felt. Throws InternalError when the engine has walls and did not record that
-// evaluation (call Engine::record_contacts(true) before the last step).
-void fill_frame(const Engine& engine, Frame& frame);
+// evaluation (call Engine::record_contacts(true) before the last step), and frees those
+// records once read (Engine::release_contact_records): a second frame of the same step
+// throws too.
+void fill_frame(Engine& engine, Frame& frame);
 
 }  // namespace granpipe::dem

@@ -62,9 +62,7 @@ void fill_columns(Coordinates& c, Fill value) {
     for (int a = 0; a < c.cols(); ++a) c(i, a) = value(i, a);
 }
 
-void add_contacts(Frame& f, long k, Eigen::Index n) {
-  // A different number of contacts every frame, none at all in frame 2.
-  const Eigen::Index m = k == 2 ? 0 : 1 + (k * 5) % 7;
+void add_contacts(Frame& f, long k, Eigen::Index n, Eigen::Index m) {
   PropertyTable& c = f.add_contacts(m);
   for (Eigen::Index q = 0; q < m; ++q) {
     f.contact_i()[q] = q % n;
@@ -80,6 +78,11 @@ void add_contacts(Frame& f, long k, Eigen::Index n) {
   }
   fill_columns(c.add<Coordinates>(kHistory),
                [&](Eigen::Index q, int a) { return value(k, q, a, 11); });
+}
+
+void add_contacts(Frame& f, long k, Eigen::Index n) {
+  // A different number of contacts every frame, none at all in frame 2.
+  add_contacts(f, k, n, k == 2 ? 0 : 1 + (k * 5) % 7);
 }
 
 // Frame k of a synthetic run: every value a function of k, every optional column present
@@ -227,6 +230,23 @@ TEST_F(FrameStore, RoundTripIsBitIdenticalWithNoOptionalArray) {
   for (long k = 0; k < 4; ++k) expect_same_frame(make_frame(k, 3, 9, none), r.read(k));
   EXPECT_FALSE(r.info().has("velocity") || r.info().has("angular_velocity") ||
                r.info().has_contacts || r.info().has("supports"));
+}
+
+TEST_F(FrameStore, ContactTablesLargerThanOneWrittenBlockRoundTrip) {
+  // The writer copies a contact column into HDF5's row order in blocks of 2^16 rows.
+  const Optional none{false, false, false, false};
+  const fs::path p = file("blocks.h5");
+  std::vector<Frame> frames;
+  FrameWriter w(p, R"({"name": "test"})");
+  for (const Eigen::Index m : {Eigen::Index{2} * 65536 + 5, Eigen::Index{65536}}) {
+    frames.push_back(make_frame(static_cast<long>(frames.size()), 3, 50, none));
+    add_contacts(frames.back(), static_cast<long>(frames.size()), 50, m);
+    w.append(frames.back());
+  }
+  w.close();
+  FrameReader r(p);
+  ASSERT_EQ(r.frames(), 2);
+  for (long k = 0; k < 2; ++k) expect_same_frame(frames[static_cast<std::size_t>(k)], r.read(k));
 }
 
 TEST_F(FrameStore, EmptyAndOneParticleFramesRoundTrip) {

@@ -45,6 +45,28 @@ class RandomSource : public Source {
   RandomStream rng_;
 };
 
+// Emits `frames` frames of one point, each into a frame it finds empty: the runner frees a
+// frame before the source makes the next (a DEM run then holds one frame beside its engine,
+// not two).
+class WantsAnEmptyFrame : public Source {
+ public:
+  explicit WantsAnEmptyFrame(const PluginContext& c) : frames_(c.params.integer("frames")) {}
+  FrameContent content() const override { return {.dim = 2}; }
+  bool next(Frame& f) override {
+    if (f.size() != 0 || f.contacts) throw InputError("was handed a frame that is not empty");
+    if (emitted_ == frames_) return false;
+    f.resize(1, 2);
+    f.container = Container::periodic_box(2, Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones());
+    f.radius().setConstant(0.01);
+    f.add_contacts(0);
+    f.step = emitted_++;
+    return true;
+  }
+
+ private:
+  std::int64_t frames_, emitted_ = 0;
+};
+
 class MeanXAnalyzer : public Analyzer {
  public:
   explicit MeanXAnalyzer(const PluginContext& c) : scale_(c.params.real("scale")) {}
@@ -917,6 +939,19 @@ TEST(Pipeline, AStrideSavesEveryKthFrameAndTheLast) {
     for (long k = 0; k < reader.frames(); ++k) steps.push_back(reader.read(k).step);
     EXPECT_EQ(steps, saved) << frames << " frames";
     fs::remove_all(*o.out);
+  }
+}
+
+TEST(Pipeline, TheSourceIsHandedAnEmptyFrameEveryTime) {
+  Registry r = test_registry();
+  Schema s;
+  s.integer("frames", 3, "frames to emit").min(1);
+  r.add_source<WantsAnEmptyFrame>("wants_an_empty_frame", "refuses a frame not emptied", s);
+  for (const char* stride : {"output.frame_stride=1", "output.frame_stride=2"}) {
+    const Pipeline p = Pipeline::parse(
+        R"({"name": "t", "source": {"plugin": "wants_an_empty_frame", "params": {"frames": 5}}})",
+        "p.json", {stride}, r);
+    EXPECT_EQ(refusal_of_run(p, "empty_frame"), "no error") << stride;
   }
 }
 

@@ -1062,6 +1062,29 @@ TEST(DemFrame, RowsFollowTheCallersOrderWithContactsOfPairsAndWalls) {
               1e-12);
 }
 
+TEST(DemFrame, TheWallRecordsAreReadOnceAndFreed) {
+  // The records hold two vectors per particle and wall: a frame reads them and lets them go,
+  // and the next recorded step records again.
+  dem::Engine e(one_species(material(kKn, 40.0, 0.5)), dem::WallSet(base_only(), {}),
+                settings(1e-4, -Vector3d::UnitZ()), spheres({{0, 0, 0.5 - 1e-4}}, {{0, 0, 0}}));
+  e.record_contacts(true);
+  e.run(3);
+  Frame f;
+  dem::fill_frame(e, f);
+  ASSERT_EQ(f.contacts->rows(), 1);
+  const Vector3d first = contact_vector(f, "normal_force", 0);
+  EXPECT_GT(first.z(), 0.0);
+  EXPECT_EQ(e.recorded_wall_normal()[0].cols(), 0);
+  EXPECT_EQ(e.recorded_wall_tangential()[0].cols(), 0);
+  EXPECT_FALSE(e.contacts_recorded());
+  EXPECT_THROW(dem::fill_frame(e, f), granpipe::InternalError);
+  e.run(1);
+  dem::fill_frame(e, f);
+  ASSERT_EQ(f.contacts->rows(), 1);
+  EXPECT_EQ(f.contact_j()[0], partner::wall(Wall::ZLow));
+  EXPECT_GT(contact_vector(f, "normal_force", 0).z(), 0.0);
+}
+
 TEST(DemMemory, TimeStepsWithoutARebuildAllocateNothing) {
   dem::Drive drive;
   drive.amplitude = 1.0;
