@@ -25,6 +25,19 @@ grep -q "^particles,27," "$csv" || { echo "FAIL: expected 27 particles:"; cat "$
 # 27 particles x 1 frame of scaled radius 0.5: all in the third of 4 bins of [0, 1).
 grep -q "^0.5,0.75,27," "$work/out/radius_stats.radii.csv" ||
   { echo "FAIL: the histogram of radii:"; cat "$work/out/radius_stats.radii.csv"; exit 1; }
+# A radius a rounding below r_max is counted in the last bin (r / width rounds up to the bin
+# count there: the example wrote past its histogram and the run died in free()).
+cat >"$work/edge.json" <<JSON
+{"source": {"plugin": "lattice", "params": {"lattice": "sc", "cells": [3, 3, 3], "radius": 0.49999999999999994}},
+ "analyzers": [{"plugin": "radius_stats", "params": {"scale": 2.0, "r_max": 1.0, "bins": 3}}],
+ "output": {"dir": "$work/edge", "save_frames": false}}
+JSON
+"$work/prefix/bin/granpipe" "$work/edge.json" --quiet
+python3 - "$work/edge/radius_stats.radii.csv" <<'PY' || { echo "FAIL: the radius just below r_max"; exit 1; }
+import csv, sys
+rows = [r for r in csv.reader(l for l in open(sys.argv[1]) if not l.startswith("#"))][1:]
+assert [float(r[2]) for r in rows] == [0, 0, 27], rows
+PY
 # The core's curve fitter, linked by DEPENDS GSL: equal radii are a line of slope 0.
 python3 - "$work/out/height_fit.radius_line.csv" <<'PY' || { echo "FAIL: the fit of height_fit"; exit 1; }
 import csv, sys

@@ -1,5 +1,6 @@
 // radius_stats.cpp: mean radius, a histogram of radii, and each particle's scaled radius
 // published as a column. The README shows this file; the out-of-tree test builds it.
+#include <algorithm>
 #include <granpipe/plugin.hpp>
 #include <vector>
 
@@ -23,8 +24,10 @@ class RadiusStats : public granpipe::Analyzer {
     if (frame.size() > 0) radius_.add(scaled_.mean());
     count_.add(static_cast<double>(frame.size()));
     const double width = r_max_ / static_cast<double>(counts_.size());
+    const std::size_t last = counts_.size() - 1;
     for (double r : scaled_) {
-      if (r < r_max_) counts_[static_cast<std::size_t>(r / width)] += 1.0;
+      // r / width rounds up to the bin count for an r a rounding below r_max: the last bin.
+      if (r < r_max_) counts_[std::min(static_cast<std::size_t>(r / width), last)] += 1.0;
     }
   }
 
