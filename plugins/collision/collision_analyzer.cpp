@@ -152,6 +152,18 @@ void CollisionAnalyzer::check_step(const Frame& frame, const std::string& where)
   last_step_ = frame.step;
 }
 
+// Frames of another law (Hertz's) gave a k_n the analyzer's parameter was then blamed for.
+void CollisionAnalyzer::check_linear_law() const {
+  const std::optional<double> left = stiffness_.relative_residual();
+  if (!left || *left <= kLinearLawTolerance) return;
+  throw InputError(
+      "expected the frames of a linear law, F_n = k_n delta - gamma_n m_eff v_n "
+      "(the analytic values are that law's), got normal forces no such line fits: "
+      "it leaves " +
+      format_number(100.0 * *left, 3) + " % of them (fitted over " +
+      std::to_string(stiffness_.samples()) + " frames in contact; a Hertz run?)");
+}
+
 void CollisionAnalyzer::check_stiffness() const {
   const std::optional<double> measured = stiffness_.stiffness();
   if (!measured || std::abs(*measured / kn_ - 1.0) <= kStiffnessTolerance) return;
@@ -189,6 +201,7 @@ void CollisionAnalyzer::check_impulse() const {
 void CollisionAnalyzer::finish(Results& results) {
   // An overdamped law first: its forces, cut off where they would pull, fit no line.
   const LinearPrediction p = predict_linear(kn_, gamma_n_, m_eff_, "collision");
+  check_linear_law();
   check_stiffness();
   check_damping();
   check_impulse();

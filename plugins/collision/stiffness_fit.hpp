@@ -21,11 +21,15 @@ class StiffnessFit {
   std::optional<double> stiffness() const;
   // c = gamma_n m_eff, likewise.
   std::optional<double> damping() const;
+  // The root mean square of what the fitted line leaves of the forces, over the root mean
+  // square force: rounding for frames of the linear law, a few hundredths for Hertz's
+  // F ~ delta^(3/2). Nothing where the fit is.
+  std::optional<double> relative_residual() const;
 
  private:
   std::optional<double> determinant() const;
   // Sums of the normal equations for (k_n, c) with regressors delta and -v_n.
-  double dd_ = 0.0, dv_ = 0.0, vv_ = 0.0, df_ = 0.0, vf_ = 0.0;
+  double dd_ = 0.0, dv_ = 0.0, vv_ = 0.0, df_ = 0.0, vf_ = 0.0, ff_ = 0.0;
   std::size_t samples_ = 0;
 };
 

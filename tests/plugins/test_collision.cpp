@@ -213,6 +213,31 @@ TEST(Collision, AStiffnessOtherThanTheForcesShowIsRefused) {
           std::to_string(touching) + " frames in contact)");
 }
 
+// Frames of Hertz's law (F ~ delta^(3/2)) were refused blaming the analyzer's k_n, which no
+// value could satisfy: the law is named. The same frames with the linear law's forces pass.
+TEST(Collision, FramesOfAnotherLawAreRefusedAsSuch) {
+  const double t_c = collision::predict_linear(kKn, kGamma, kMass / 2.0, "test").contact_time;
+  std::vector<Frame> frames = exact_collision(0.02 * t_c, 0.03);
+  EXPECT_EQ(refusal(frames), "");
+  long touching = 0;
+  for (Frame& f : frames) {
+    if (f.contacts->rows() == 0) continue;
+    ++touching;
+    const double overlap = 1.0 - (f.position()(0, 0) - f.position()(1, 0));
+    auto& force = f.contacts->get<Coordinates>("normal_force");
+    force(0, 0) = 1e7 * overlap * std::sqrt(overlap);  // Hertz, undamped
+  }
+  const std::string message = refusal(frames);
+  EXPECT_EQ(message.substr(0, message.find(" %")),
+            "expected the frames of a linear law, F_n = k_n delta - gamma_n m_eff v_n (the "
+            "analytic values are that law's), got normal forces no such line fits: it leaves 11.4")
+      << message;
+  EXPECT_NE(message.find("(fitted over " + std::to_string(touching) +
+                         " frames in contact; a Hertz run?)"),
+            std::string::npos)
+      << message;
+}
+
 // The frames' damping is kGamma m_eff: an analyzer told another gamma_n (or another density,
 // which gives another m_eff) compared with another law's restitution (11 % off for gamma_n
 // 0 in the source, exit 0).
