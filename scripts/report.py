@@ -331,8 +331,11 @@ def main(run):
                "(move it away to have the report)")
     partial = f"{target}.{os.getpid()}.tmp"  # two reports of one run at once: one wins whole
     completed = os.path.join(run, "results.h5")
+    made = False
     try:
-        with open(partial, "w") as f:
+        # Created exclusively: a symlink planted at this name is refused, not written through.
+        with open(partial, "x") as f:
+            made = True
             f.write(html_text)
         # The run completed while the page was drawn from the results so far: it removed
         # the page of those, and this one would land as stale (or over the final one).
@@ -346,7 +349,7 @@ def main(run):
         if not stale:
             note_written(target)
     except OSError as e:  # a full disk, a folder not ours to write: the run's files stay
-        if os.path.exists(partial):
+        if made and os.path.lexists(partial):
             os.remove(partial)
         refuse(f"{target}: cannot write the report: {e.strerror}")
     if stale:  # drawn again, from the results now complete (once: results.h5 is read first)

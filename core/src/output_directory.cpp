@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <cstdio>
@@ -42,6 +43,23 @@ bool is_empty_directory(const fs::path& dir) {
   const bool empty = fs::is_empty(dir, ec);
   if (ec) throw InputError(dir.string() + ": cannot read the output directory: " + ec.message());
   return empty;
+}
+
+// A directory itself, not a symbolic link to one.
+bool is_real_directory(const fs::path& path) {
+  std::error_code ec;
+  return fs::symlink_status(path, ec).type() == fs::file_type::directory;
+}
+
+// The new run's folder takes the earlier one's permissions and owner: a folder the user had
+// made private (0700) came back world-readable after --overwrite. An owner this process may
+// not give (it is not root) stays the process's.
+void keep_access_of(const fs::path& from, const fs::path& to) {
+  struct stat earlier;
+  if (stat(from.c_str(), &earlier) != 0) return;
+  const int owner_given = chown(to.c_str(), earlier.st_uid, earlier.st_gid);
+  chmod(to.c_str(), earlier.st_mode & 07777);  // after chown, which may clear set-id bits
+  (void)owner_given;
 }
 
 void append_line(const fs::path& file, const std::string& line) {
@@ -171,6 +189,7 @@ void OutputDirectory::claim_beside() {
     throw InputError(final_.string() + ": cannot create the new run's directory " + work_.string() +
                      ": " + std::strerror(errno) + "; nothing was changed");
   }
+  keep_access_of(final_, work_);
   own_lock_ = DirectoryLock::try_lock(work_);
   try {
     write_run_marker(work_, marker_);
@@ -201,6 +220,16 @@ fs::path OutputDirectory::swap_in() {
                      "); the earlier run is untouched and this one is in " + built.string());
   };
   if (renameat2(AT_FDCWD, built.c_str(), AT_FDCWD, final_.c_str(), RENAME_EXCHANGE) == 0) {
+    // <out> made a symlink while the run went: the earlier run's files would be removed
+    // through it, wherever it points. The exchange is undone and the link left to the user.
+    if (!is_real_directory(built)) {
+      renameat2(AT_FDCWD, built.c_str(), AT_FDCWD, final_.c_str(), RENAME_EXCHANGE);
+      throw InputError(final_.string() +
+                       ": expected the earlier run's folder, got something else put there "
+                       "while this run went (a symbolic link?); it is left as it is and this "
+                       "run is in " +
+                       built.string());
+    }
     work_ = final_;
     // What was in <out> now bears the new run's temporary name, which the docs say may be
     // deleted: what is left of it (a user's note, or a folder put there during the run)
@@ -216,6 +245,7 @@ fs::path OutputDirectory::swap_in() {
   }
   if (errno != EINVAL && errno != ENOSYS) refuse(errno);
   // A file system without atomic exchange: two renames, the first undone if the second fails.
+  if (!is_real_directory(final_)) refuse(ENOTDIR);
   const fs::path aside = beside(final_, "old", marker_);
   if (std::rename(final_.c_str(), aside.c_str()) != 0) refuse(errno);
   if (std::rename(built.c_str(), final_.c_str()) != 0) {

@@ -96,8 +96,10 @@ PointPlugins make_plugins(const Pipeline::Impl& p, std::size_t k, int threads, L
   const PointSpec& point = p.points[k];
   const Seeds seeds = Seeds(p.seed).derive("point", p.shared_seeds ? 0 : k);
   PointPlugins made;
-  if (p.points.size() > 1)
+  if (p.points.size() > 1) {
     made.log = std::make_unique<Log>(log, "point " + std::to_string(k) + ": ");
+    if (files) files->add(dir);  // the run's, not any point_NNN found in the folder
+  }
   Log& point_log = made.log ? *made.log : log;
   const std::string provenance = point_label(p, k);
   // Plugins check what the schema cannot (one parameter against another, a file's

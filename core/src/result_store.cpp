@@ -5,11 +5,11 @@
 #include <hdf5.h>
 
 #include <cmath>
-#include <fstream>
 #include <sstream>
 #include <utility>
 #include <vector>
 
+#include "granpipe/atomic_file.hpp"
 #include "granpipe/errors.hpp"
 #include "h5_dataset.hpp"
 #include "h5_file.hpp"
@@ -166,27 +166,31 @@ void collect_csvs(const fs::path& dir, const std::string& group, const Results& 
   }
 }
 
+// Created exclusively, like write_new_file: what is at the temporary name already (a
+// planted symlink) is refused, not followed, and left; what this made is removed on failure.
 void write_h5(const fs::path& tmp, const fs::path& final_path, const ResultSet& results,
               const Provenance& provenance) {
   h5::silence_error_stack();
   h5::input_errors_of(final_path.string(), [&] {
-    Object file_object = h5::create_file(tmp.string(), H5F_ACC_TRUNC, H5P_DEFAULT);
-    const hid_t file = file_object.id();
-    write_provenance(file, provenance);
-    for (const auto& [group, r] : results) write_group(file, group, r);
-    h5::check(H5Fflush(file, H5F_SCOPE_GLOBAL), "cannot flush (is the disk full?)");
-    h5::check(H5Fclose(file_object.release()), "cannot close (is the disk full?)");
+    std::error_code ec;
+    if (fs::symlink_status(tmp, ec).type() != fs::file_type::not_found) {
+      throw InputError(tmp.string() +
+                       ": expected no file at this temporary name, got one (not granpipe's "
+                       "now: left as it is)");
+    }
+    Object file_object = h5::create_file(tmp.string(), H5F_ACC_EXCL, H5P_DEFAULT);
+    try {
+      const hid_t file = file_object.id();
+      write_provenance(file, provenance);
+      for (const auto& [group, r] : results) write_group(file, group, r);
+      h5::check(H5Fflush(file, H5F_SCOPE_GLOBAL), "cannot flush (is the disk full?)");
+      h5::check(H5Fclose(file_object.release()), "cannot close (is the disk full?)");
+    } catch (...) {
+      file_object.reset();
+      fs::remove(tmp, ec);
+      throw;
+    }
   });
-}
-
-void write_text(const fs::path& tmp, const fs::path& final_path, const std::string& text) {
-  std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-  out << text;
-  out.close();
-  if (!out) {
-    throw InputError(final_path.string() +
-                     ": expected a writable file, got a write error (is the disk full?)");
-  }
 }
 
 fs::path temporary(const fs::path& path) { return path.string() + ".tmp"; }
@@ -225,17 +229,17 @@ void write_results(const fs::path& dir, const ResultSet& results, const Provenan
   TextFiles csvs;
   for (const auto& [group, r] : results) collect_csvs(dir, group, r, provenance, csvs);
   std::vector<fs::path> written;
-  const auto made = [&](const fs::path& file) {
+  const auto recorded = [&](const fs::path& file) {
     record.add(temporary(file));
     record.add(file);
-    written.push_back(temporary(file));
+    return temporary(file);
   };
   try {
-    made(final_path);
-    write_h5(written.back(), final_path, results, provenance);
+    write_h5(recorded(final_path), final_path, results, provenance);
+    written.push_back(temporary(final_path));
     for (const auto& [path, text] : csvs) {
-      made(path);
-      write_text(written.back(), path, text);
+      write_new_file(recorded(path), text);
+      written.push_back(temporary(path));
     }
   } catch (...) {
     std::error_code ignored;

@@ -162,19 +162,34 @@ bool written_before_the_end(const Entry& e) {
 // its own run.log may start with its interruption (a signal before the provenance line).
 bool written_by_this_run(const Entry& e, const fs::path& dir, const FileRecord& recorded) {
   static const std::set<std::string> files{"results.h5", "frames.h5"};
-  if (named_as_written_before_the_end(e)) return true;
   if (!where_a_run_writes(e)) return false;
-  return files.count(bare_name(e).filename().string()) > 0 || recorded.has(dir / e.name);
+  // A point folder is the run's only when the run made it: point_007 put there while a run
+  // of three points (or of none) went was listed, and --overwrite removed what it held.
+  const fs::path name = bare_name(e);
+  const fs::path folder = e.directory ? name : name.parent_path();
+  if (!folder.empty() && !recorded.has(dir / folder)) return false;
+  if (named_as_written_before_the_end(e)) return true;
+  return files.count(name.filename().string()) > 0 || recorded.has(dir / e.name);
+}
+
+// The files whose content says whether granpipe wrote them (holds_what_a_run_writes).
+bool content_tells(const Entry& e) {
+  static const std::set<std::string> files{
+      kRunMarkerName,      "pipeline.json",      "run.log",
+      "frames.partial.h5", "results.partial.h5", "report.html"};
+  return !e.directory && files.count(bare_name(e).filename().string()) > 0;
 }
 
 class RunEntries {
  public:
   explicit RunEntries(const fs::path& dir) : manifest_(read_manifest(dir)) {}
   // A manifest names only places a run writes: one edited by hand (keep/, keep/k.txt) is
-  // not believed beyond them.
+  // not believed beyond them; nor is a listed name whose file is now another's (a user's
+  // own report.html put where the run's was).
   bool written_by_the_run(const Entry& e) const {
-    return manifest_ ? manifest_->count(e.name) > 0 && where_a_run_writes(e)
-                     : written_before_the_end(e);
+    if (!manifest_) return written_before_the_end(e);
+    return manifest_->count(e.name) > 0 && where_a_run_writes(e) &&
+           (!content_tells(e) || holds_what_a_run_writes(e.path));
   }
 
  private:

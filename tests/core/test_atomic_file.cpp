@@ -43,3 +43,25 @@ TEST(AtomicFile, AFailedRenameLeavesNoTemporary) {
   EXPECT_TRUE(fs::is_directory(dir / "b.pvd" / "inside"));
   fs::remove_all(dir);
 }
+
+// A symlink planted at the temporary name while a run went had the run's file written over
+// what it pointed to, outside the run's folder (exit 0): refused, the link and its target
+// left as they were.
+TEST(AtomicFile, ASymlinkAtTheTemporaryNameIsNotWrittenThrough) {
+  const fs::path dir = fresh_dir("symlink");
+  granpipe::write_file_atomically(dir / "user.txt", "the user's");
+  fs::create_symlink(dir / "user.txt", dir / "a.txt.tmp");
+  try {
+    granpipe::write_file_atomically(dir / "a.txt", "the run's");
+    FAIL() << "expected an InputError";
+  } catch (const granpipe::InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              (dir / "a.txt.tmp").string() +
+                  ": expected no file at this temporary name, got one (not granpipe's now: left "
+                  "as it is)");
+  }
+  EXPECT_EQ(read_file(dir / "user.txt"), "the user's");
+  EXPECT_TRUE(fs::is_symlink(dir / "a.txt.tmp"));
+  EXPECT_FALSE(fs::exists(dir / "a.txt"));
+  fs::remove_all(dir);
+}

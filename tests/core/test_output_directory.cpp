@@ -53,7 +53,10 @@ class ScribblingAnalyzer : public Analyzer {
  public:
   explicit ScribblingAnalyzer(const PluginContext&) {}
   void consume(const Frame&, FrameCache&) override {
-    for (const std::string& name : scribbled) std::ofstream(scribble_into / name) << scribbled_text;
+    for (const std::string& name : scribbled) {
+      fs::create_directories((scribble_into / name).parent_path());
+      std::ofstream(scribble_into / name) << scribbled_text;
+    }
   }
   void finish(Results&) override {}
 };
@@ -63,6 +66,22 @@ class RemovingAnalyzer : public Analyzer {
  public:
   explicit RemovingAnalyzer(const PluginContext&) {}
   void consume(const Frame&, FrameCache&) override { fs::remove_all(scribble_into); }
+  void finish(Results&) override {}
+};
+
+// Where SwappingAnalyzer moves the earlier run while a replacing run goes on.
+fs::path archive;
+
+// A user who moves the earlier run's folder away while the run that replaces it goes on,
+// leaving a symbolic link to it in its place.
+class SwappingAnalyzer : public Analyzer {
+ public:
+  explicit SwappingAnalyzer(const PluginContext&) {}
+  void consume(const Frame&, FrameCache&) override {
+    if (fs::is_symlink(scribble_into)) return;
+    fs::rename(scribble_into, archive);
+    fs::create_directory_symlink(archive, scribble_into);
+  }
   void finish(Results&) override {}
 };
 
@@ -87,6 +106,7 @@ Registry registry() {
   r.add_analyzer<ScribblingAnalyzer>("scribbling", "writes a note", Schema{});
   r.add_analyzer<DrawingAnalyzer>("drawing", "draws each frame", Schema{});
   r.add_analyzer<RemovingAnalyzer>("removing", "removes the earlier run", Schema{});
+  r.add_analyzer<SwappingAnalyzer>("swapping", "links the earlier run from elsewhere", Schema{});
   return r;
 }
 
@@ -155,6 +175,17 @@ void leave_as_killed(const fs::path& dir) {
     if (name != ".granpipe-run" && name != "pipeline.json" && name != "run.log")
       fs::remove(e.path());
   }
+}
+
+// --overwrite of the run in `out` refused for what it holds besides, the folder left as it was.
+void expect_overwrite_refused_for(const fs::path& out, const std::string& foreign) {
+  const auto before = snapshot(out);
+  EXPECT_EQ(
+      run(kLattice, out, true),
+      out.string() +
+          ": --overwrite removes only what granpipe wrote, and this run's folder also holds " +
+          foreign + "; move them out or remove the folder yourself; nothing was changed");
+  EXPECT_EQ(snapshot(out), before);
 }
 
 bool marked(const fs::path& dir, const std::string& status) {
@@ -529,5 +560,69 @@ TEST(OutputDirectory, AManifestIsNotBelievedBeyondWhereARunWrites) {
                 ": --overwrite removes only what granpipe wrote, and this run's folder also holds "
                 "keep/; move them out or remove the folder yourself; nothing was changed");
   EXPECT_EQ(read_file(out / "keep" / "k.txt"), "mine");
+  fs::remove_all(out);
+}
+
+// A report.html of the user's put where the run's had been was removed by --overwrite: the
+// manifest listed the name, and the file was not looked at.
+TEST(OutputDirectory, AListedNameIsNotTheRunsWhenItsFileIsAnothers) {
+  const fs::path out = fresh_dir("report_replaced");
+  ASSERT_EQ(run(kLattice, out), "");
+  std::ofstream(out / "report.html") << "my own annotated report";
+  std::ofstream(out / ".granpipe-manifest", std::ios::app) << "report.html\n";
+  expect_overwrite_refused_for(out, "report.html");
+  fs::remove_all(out);
+}
+
+// A point_007 folder put into the folder of a run without a sweep while it went was listed
+// as the run's, and --overwrite removed it with what it held.
+TEST(OutputDirectory, APointFolderTheRunDidNotMakeIsNotTheRuns) {
+  const fs::path out = fresh_dir("point_added");
+  scribble_into = out;
+  scribbled = {"point_007/frames.h5", "point_007/results.h5"};
+  ASSERT_EQ(run(kScribbling, out), "");
+  scribbled = {"notes.txt"};
+  EXPECT_EQ(read_file(out / ".granpipe-manifest").find("point_007"), std::string::npos);
+  expect_overwrite_refused_for(out, "point_007/");
+  fs::remove_all(out);
+}
+
+// The earlier run moved away and linked back into its place while the new run went: the
+// swap followed the link and removed the earlier run's files where they now were (exit 0).
+TEST(ReplacingRun, AnEarlierRunLinkedFromElsewhereIsLeftWhereItIs) {
+  const fs::path out = fresh_dir("linked");
+  archive = fresh_dir("linked_archive");
+  ASSERT_EQ(run(kLattice, out), "");
+  const auto before = snapshot(out);
+  scribble_into = out;
+  const std::string swapping = R"({"source": {"plugin": "lattice",
+    "params": {"lattice": "sc", "cells": [2, 2, 2], "frames": 2}},
+    "analyzers": [{"plugin": "swapping"}]})";
+  const std::string message = run(swapping, out, true);
+  EXPECT_EQ(message.rfind(out.string() + ": expected the earlier run's folder, got something "
+                                         "else put there while this run went (a symbolic "
+                                         "link?); it is left as it is and this run is in ",
+                          0),
+            0u)
+      << message;
+  EXPECT_TRUE(fs::is_symlink(out));
+  EXPECT_EQ(snapshot(archive), before);
+  const fs::path built = only_sibling(out);
+  EXPECT_TRUE(fs::exists(built / "results.h5"));
+  fs::remove_all(built);
+  fs::remove(out);
+  fs::remove_all(archive);
+}
+
+// --overwrite of a run made in a folder of the user's, private (0700): the new folder came
+// back world-readable.
+TEST(ReplacingRun, TheNewFolderKeepsTheEarlierOnesPermissions) {
+  const fs::path out = fresh_dir("private");
+  ASSERT_EQ(mkdir(out.c_str(), 0700), 0);
+  ASSERT_EQ(run(kLattice, out), "");
+  ASSERT_EQ(run(kLattice, out, true), "");
+  struct stat s;
+  ASSERT_EQ(stat(out.c_str(), &s), 0);
+  EXPECT_EQ(s.st_mode & 0777, 0700u);
   fs::remove_all(out);
 }
