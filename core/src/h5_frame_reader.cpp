@@ -650,10 +650,14 @@ void FrameReader::Impl::open(const std::string& group) {
   for (const ContactColumn& c : contact_columns) info.contact_columns.push_back(c.property);
 }
 
-// One frame of every column read.
+// One frame of every column read, as reading holds it: the frame's radius, id and species
+// whether the file has them or not, and each column of several components twice (read in
+// the file's row order, then copied into the frame's): counting the file's columns alone,
+// a frame of 10^7 particles passed the check and ran out of memory naming no file.
 void FrameReader::Impl::check_frame_fits() const {
-  double per_particle = 8.0 * info.dim;
-  for (const ElementColumn& c : columns) per_particle += 8.0 * c.property.components_in(info.dim);
+  const auto bytes = [&](int components) { return 8.0 * components * (components > 1 ? 2 : 1); };
+  double per_particle = bytes(info.dim) + 8.0 + 8.0 + 4.0;
+  for (const ElementColumn& c : columns) per_particle += bytes(c.property.components_in(info.dim));
   check_fits(position->path(), static_cast<double>(info.particles) * per_particle,
              "a frame of " + std::to_string(info.particles) + " particles (" +
                  format_number(per_particle) + " bytes each)");
@@ -667,7 +671,13 @@ void FrameReader::Impl::check_length_units() const {
   std::string unit, stated_by;
   const auto consider = [&](const h5::Element& e) {
     if (!h5::has_attribute(e.dataset(), "unit")) return;
-    const std::string u = h5::read_string_attribute(e.dataset(), e.path(), "unit").at(0);
+    const std::vector<std::string> units = h5::read_string_attribute(e.dataset(), e.path(), "unit");
+    if (units.size() != 1) {
+      throw h5::Error(e.path() + "@unit: expected one unit, got " + std::to_string(units.size()) +
+                      " strings");
+    }
+    const std::string& u = units[0];
+    if (u.empty()) return;  // stated as none: read in the others' unit
     if (stated_by.empty()) {
       unit = u;
       stated_by = e.path();
@@ -704,22 +714,27 @@ Placements placements(const Frame& f, int a, double length, const std::string& f
 }  // namespace
 
 // Frame 0 decides each walled axis it fits one way only; where it fits both (centres in
-// [0, L/2]: a centred box's grains poured into its upper half), the other frames do.
+// [0, L/2]: a centred box's grains poured into its upper half), the next frames do, each
+// axis until one placement is left: a later frame narrowed an axis frame 0 had decided,
+// and frame 0 was refused. Frames are read only while an axis is undecided, and one whose
+// centres are not all numbers ends it (refused when it is read, not when the file opens).
 void FrameReader::Impl::place_walls_of_file() {
   if (ours || !edges || info.frames == 0 || info.particles == 0) return;
   std::array<Placements, 3> fit;
+  const auto undecided = [&](int a) { return !periodic[a] && fit[a].at_zero && fit[a].centred; };
   for (long k = 0; k < info.frames; ++k) {
+    bool open = false;
+    for (int a = 0; a < info.dim; ++a) open = open || undecided(a);
+    if (!open) break;
     const Frame f = read_particles(k);
+    if (k > 0 && !f.position().allFinite()) break;
     const std::vector<double> length = edge_lengths(k);
-    bool undecided = false;
     for (int a = 0; a < info.dim; ++a) {
-      if (periodic[a]) continue;
+      if (!undecided(a)) continue;
       const Placements p = placements(f, a, length[a], name, k);
       if (k == 0 && !p.at_zero && !p.centred) refuse_outside(f, a, length[a], k, "");
-      fit[a] = {fit[a].at_zero && p.at_zero, fit[a].centred && p.centred};
-      undecided = undecided || (fit[a].at_zero && fit[a].centred);
+      fit[a] = {p.at_zero, p.centred};
     }
-    if (!undecided) break;
   }
   for (int a = 0; a < info.dim; ++a) centred[a] = !fit[a].at_zero && fit[a].centred;
 }

@@ -13,9 +13,33 @@ namespace granpipe {
 
 namespace {
 
+// A unit's name written out ("nanometer", "micrometres", as MDAnalysis and others write
+// them), or nothing.
+std::optional<double> named_metres(std::string_view name) {
+  constexpr std::array<std::pair<std::string_view, double>, 7> kPrefixes{{{"", 1.0},
+                                                                          {"kilo", 1e3},
+                                                                          {"centi", 1e-2},
+                                                                          {"milli", 1e-3},
+                                                                          {"micro", 1e-6},
+                                                                          {"nano", 1e-9},
+                                                                          {"pico", 1e-12}}};
+  if (name.size() > 1 && name.back() == 's') name.remove_suffix(1);  // plural
+  for (std::string_view metre : {"meter", "metre"}) {
+    if (!name.ends_with(metre)) continue;
+    const std::string_view prefix = name.substr(0, name.size() - metre.size());
+    for (const auto& [written, factor] : kPrefixes)
+      if (prefix == written) return factor;
+  }
+  return std::nullopt;
+}
+
 std::optional<double> symbol_metres(std::string_view symbol) {
-  for (std::string_view angstrom : {"A", "\u00c5", "angstrom", "Angstrom"})
+  // H5MD writes a unit's power after it ("nm+2" an area): a length's is 1.
+  if (symbol.size() > 2 && symbol.substr(symbol.size() - 2) == "+1") symbol.remove_suffix(2);
+  for (std::string_view angstrom :
+       {"A", "\u00c5", "angstrom", "Angstrom", "angstroms", "Angstroms"})
     if (symbol == angstrom) return 1e-10;
+  if (const std::optional<double> named = named_metres(symbol)) return named;
   if (symbol.empty() || symbol.back() != 'm') return std::nullopt;
   symbol.remove_suffix(1);
   constexpr std::array<std::pair<std::string_view, double>, 10> kPrefixes{{{"", 1.0},
@@ -47,9 +71,12 @@ std::optional<double> metres_of(std::string_view unit) {
     if (symbol.size() > 1 && symbol[0] == '+' &&
         (std::isdigit(static_cast<unsigned char>(symbol[1])) || symbol[1] == '.'))
       symbol.remove_prefix(1);
+    // from_chars reads "nan" and "inf" too: "nanometer" is no factor of "ometer".
+    const bool number = !symbol.empty() && (std::isdigit(static_cast<unsigned char>(symbol[0])) ||
+                                            symbol[0] == '.' || symbol[0] == '-');
     double glued = 1.0;
     const auto [end, error] = std::from_chars(symbol.data(), symbol.data() + symbol.size(), glued);
-    if (error == std::errc{} && end != symbol.data() + symbol.size()) {
+    if (number && error == std::errc{} && end != symbol.data() + symbol.size()) {
       factor = glued;
       symbol.remove_prefix(static_cast<std::size_t>(end - symbol.data()));
     }

@@ -110,6 +110,12 @@ FrameContent CollisionAnalyzer::needs() const {
 void CollisionAnalyzer::consume(const Frame& frame, FrameCache&) {
   const std::string where = "frame " + std::to_string(frames_);
   check_step(frame, where);
+  // An undefined time (a dump read without dt) reached the impulse sums as NaN, and the
+  // density was blamed.
+  if (!std::isfinite(frame.time)) {
+    throw InputError(where + ": expected the frame's time (the contact time is measured in " +
+                     "it), got " + format_number(frame.time) + " (undefined)");
+  }
   const PairState s = pair_state(frame, where);
   if (s.touching && s.overlap > 0.0) {
     if (const auto force = pair_normal_force(frame))

@@ -175,8 +175,13 @@ void RunParts::append(std::size_t part, const std::string& name) {
                      "the parts before it hold (not a continuation of them; a part holds first "
                      "the frame it started from, which a run saved without its start lacks)");
   }
-  const bool placed = first_info().granpipe_file && reader.info().granpipe_file;
-  const auto [difference, detail] = what_differs(*saved, start, placed);
+  // Another tool's parts store no origin: each reader places its walls where its own
+  // frames fit, and two parts placed apart (walls that jump by L/2) are not one run.
+  const bool granpipe = first_info().granpipe_file, also = reader.info().granpipe_file;
+  const bool foreign = !granpipe && !also;
+  auto [difference, detail] = what_differs(*saved, start, granpipe == also);
+  if (foreign && difference == "another container")
+    detail += "; H5MD stores no origin: each part's walls go where its own frames fit";
   if (!difference.empty()) {
     throw InputError(not_continued + "the parts before it hold, got " + difference + " than " +
                      where(frames() - 1) + " (" + (detail.empty() ? "" : detail + "; ") +

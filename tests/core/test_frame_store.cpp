@@ -375,7 +375,8 @@ void put_int_attribute(hid_t loc, const char* name, std::vector<int> values, boo
 
 // Fixed-length, space-padded strings, as a Fortran writer would leave them.
 void put_string_attribute(hid_t loc, const char* name, const std::vector<std::string>& values) {
-  const std::size_t width = 8;
+  std::size_t width = 8;
+  for (const auto& v : values) width = std::max(width, v.size());
   std::string buffer;
   for (const auto& v : values) buffer += v + std::string(width - v.size(), ' ');
   Id type(H5Tcopy(H5T_C_S1));
@@ -707,6 +708,21 @@ TEST_F(FrameStore, LengthsInDifferentUnitsAreRefusedNamingBoth) {
             "/particles/atoms/position/value (granpipe reads lengths as stored, in one unit), got "
             "\"nm\"");
   EXPECT_EQ(reader_error(with_units("one_stated.h5", "nm", "")), "no error");
+  // Names written out (MDAnalysis' "nanometer"), H5MD's power 1, and a unit stated as none.
+  EXPECT_EQ(reader_error(with_units("named.h5", "nm", "nanometer")), "no error");
+  EXPECT_EQ(reader_error(with_units("plural.h5", "metres", "m")), "no error");
+  EXPECT_EQ(reader_error(with_units("power.h5", "nm+1", "nm")), "no error");
+  EXPECT_EQ(reader_error(with_units("none.h5", "", "nm")), "no error");
+  // An empty list of units was an internal error (exit 1).
+  const fs::path empty = file("empty_list.h5");
+  write_foreign(empty, false);
+  {
+    Id f(H5Fopen(empty.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
+    Id value(H5Dopen2(f, "particles/atoms/position/value", H5P_DEFAULT));
+    put_string_attribute(value, "unit", {});
+  }
+  EXPECT_EQ(reader_error(empty),
+            "/particles/atoms/position/value@unit: expected one unit, got 0 strings");
 }
 
 // H5MD boxes have no origin: walls go where the particles are, at [0, L] or [-L/2, L/2].
@@ -777,6 +793,36 @@ TEST_F(FrameStore, WallsOfAnotherToolsBoxStayWhereTheFilesFramesPutThem) {
   }
   // Both frames fit both: [0, 10].
   EXPECT_EQ(FrameReader(two_frames("either.h5", 0.5, 1.0)).read(1).container.lo[0], 0.0);
+}
+
+// Frame 0 decides an axis it fits one way only, whatever the later frames (which went on
+// being read for the axes still open, and narrowed the decided one too): a grain escaped in
+// frame 1 had frame 0 refused. A later frame whose centres are no numbers ends the
+// placing: it is refused when read, not when the file is opened.
+TEST_F(FrameStore, FrameZeroDecidesTheAxesItFitsOneWayOnly) {
+  const fs::path escaped = file("escaped.h5");
+  // x: frame 0 fits [-5, 5] only; y and z fit both in frame 0, so frame 1 is read.
+  const double x[2][2][3] = {{{-1.0, 2.0, 2.0}, {1.0, 3.0, 3.0}},
+                             {{100.0, 2.0, 2.0}, {1.0, 3.0, 3.0}}};
+  write_two_in_a_walled_box(escaped, x);
+  const FrameReader reader(escaped);
+  const Frame first = reader.read(0);
+  EXPECT_EQ(first.container.lo[0], -5.0);
+  EXPECT_EQ(first.container.lo[2], 0.0);
+  const std::string escape = test::input_error_of([&] { reader.read(1); });
+  EXPECT_NE(escape.find("frame 1: expected particle centres inside a box of edge 10 along x"),
+            std::string::npos)
+      << escape;
+  const fs::path late = file("late_nan.h5");
+  const double y[2][2][3] = {{{2.0, 2.0, 2.0}, {4.0, 5.0, 5.0}},
+                             {{std::nan(""), 2.0, 2.0}, {4.0, 5.0, 5.0}}};
+  write_two_in_a_walled_box(late, y);
+  const FrameReader opened(late);
+  EXPECT_EQ(opened.read(0).container.lo[0], 0.0);
+  EXPECT_EQ(test::input_error_of([&] { opened.read(1); }),
+            late.string() +
+                ": frame 1: particle 0 (id 0): expected a finite position, got nan in "
+                "coordinate x");
 }
 
 // Walls are placed from the particle centres: a NaN among them is reported by the frame
@@ -1107,7 +1153,7 @@ TEST_F(FrameStore, AFrameLargerThanTheMemoryLeftIsRefusedNamingTheDataset) {
   int pipe_ends[2];
   ASSERT_EQ(pipe(pipe_ends), 0);
   const pid_t child = fork();
-  if (child == 0) {  // 50 MB more than it holds: less than the frame's 96 MB
+  if (child == 0) {  // 50 MB more than it holds: less than the frame's 272 MB
     std::ifstream statm("/proc/self/statm");
     long pages = 0;
     statm >> pages;
@@ -1128,7 +1174,7 @@ TEST_F(FrameStore, AFrameLargerThanTheMemoryLeftIsRefusedNamingTheDataset) {
   ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << status;
   const std::string expected = p.string() +
                                ": /particles/all/position/value: a frame of 4000000 particles "
-                               "(24 bytes each): 0.096 GB needed, this machine (or the process's "
+                               "(68 bytes each): 0.272 GB needed, this machine (or the process's "
                                "memory limit) has ";
   EXPECT_EQ(message.substr(0, expected.size()), expected) << message;
 }

@@ -213,6 +213,16 @@ TEST(Collision, AStiffnessOtherThanTheForcesShowIsRefused) {
           std::to_string(touching) + " frames in contact)");
 }
 
+// A frame without a time (NaN: a dump read without dt) blamed the densities.
+TEST(Collision, AFrameWithoutATimeIsRefused) {
+  const double t_c = collision::predict_linear(kKn, kGamma, kMass / 2.0, "test").contact_time;
+  std::vector<Frame> frames = exact_collision(0.02 * t_c, 0.03);
+  frames[5].time = std::nan("");
+  EXPECT_EQ(refusal(frames),
+            "frame 5: expected the frame's time (the contact time is measured in it), got nan "
+            "(undefined)");
+}
+
 // Frames of Hertz's law (F ~ delta^(3/2)) were refused blaming the analyzer's k_n, which no
 // value could satisfy: the law is named. The same frames with the linear law's forces pass.
 TEST(Collision, FramesOfAnotherLawAreRefusedAsSuch) {

@@ -1,0 +1,62 @@
+"""Another tool's H5MD run in two parts (continued_in), walls of edge 10 along every axis:
+the first part's frames fit walls at [0, 10] and at [-5, 5], the second part's last frame
+[-5, 5] only. Each part placed its own walls, so the base jumped by 5 between the parts
+(exit 0); the parts are refused, naming why. Frame 0 of a file decides an axis it fits one
+way only: a grain escaped in a later frame does not move the walls of frame 0."""
+import os
+import subprocess
+import sys
+import tempfile
+
+import h5py
+import numpy as np
+
+granpipe = sys.argv[1]
+
+
+def plain_h5md(path, positions, first_step=0):
+    """Frames of positions [T][N][3] in a walled box of edge 10, no granpipe group."""
+    positions = np.asarray(positions, dtype=float)
+    with h5py.File(path, "w") as f:
+        h5md = f.create_group("h5md")
+        h5md.attrs["version"] = np.array([1, 1], dtype="i4")
+        h5md.create_group("author").attrs["name"] = "test"
+        creator = h5md.create_group("creator")
+        creator.attrs["name"] = "othermd"
+        creator.attrs["version"] = "1"
+        particles = f.create_group("particles/all")
+        position = particles.create_group("position")
+        position["step"] = np.arange(first_step, first_step + len(positions), dtype="i8")
+        position["time"] = position["step"][()].astype(float)
+        position["value"] = positions
+        box = particles.create_group("box")
+        box.attrs["dimension"] = np.int32(3)
+        box.attrs["boundary"] = np.array([b"none"] * 3, dtype="S8")
+        box["edges"] = np.full(3, 10.0)
+
+
+def run(work, name, params):
+    pipeline = os.path.join(work, name + ".json")
+    with open(pipeline, "w") as f:
+        f.write('{"name": "%s", "source": {"plugin": "h5md", "params": %s}, '
+                '"output": {"save_frames": false}}' % (name, params))
+    return subprocess.run([granpipe, pipeline, "--quiet", "--no-report", "--out", os.path.join(work, name)],
+                          capture_output=True, text=True)
+
+
+with tempfile.TemporaryDirectory() as work:
+    two = [[1.0, 1.0, 1.0], [3.0, 3.0, 3.0]]
+    first, second = os.path.join(work, "q1.h5"), os.path.join(work, "q2.h5")
+    plain_h5md(first, [two, two])
+    plain_h5md(second, [two, [[1.0, 1.0, -0.5], [3.0, 3.0, 3.0]]], first_step=1)
+    r = run(work, "parts", '{"file": "%s", "continued_in": ["%s"]}' % (first, second))
+    assert r.returncode == 2, (r.returncode, r.stderr)
+    expected = ("got another container than " + first + ": frame 1 (extent along z -5 to 5, there 0 to 10; "
+                "H5MD stores no origin: each part's walls go where its own frames fit; not a continuation of it)")
+    assert expected in r.stderr, r.stderr
+
+    escaped = os.path.join(work, "escaped.h5")
+    plain_h5md(escaped, [[[-1.0, 1.0, 1.0], [1.0, 3.0, 3.0]], [[100.0, 1.0, 1.0], [1.0, 3.0, 3.0]]])
+    r = run(work, "escaped", '{"file": "%s", "last": 0}' % escaped)
+    assert r.returncode == 0, (r.returncode, r.stderr)
+print("another tool's parts placed apart are refused; frame 0 decides its axes")
