@@ -77,6 +77,17 @@ Utf8Lead utf8_lead(unsigned char c) {
   return {0, 0, 0};
 }
 
+// A bidirectional control (U+061C, U+200E, U+200F, U+202A..U+202E, U+2066..U+2069): well
+// formed, but a terminal reorders the rest of the line by it.
+bool bidi_control(std::string_view c) {
+  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(c[k]); };
+  if (c.size() == 2) return byte(0) == 0xD8 && byte(1) == 0x9C;
+  if (c.size() != 3 || byte(0) != 0xE2) return false;
+  const unsigned char b = byte(1), last = byte(2);
+  return (b == 0x80 && (last == 0x8E || last == 0x8F || (last >= 0xAA && last <= 0xAE))) ||
+         (b == 0x81 && last >= 0xA6 && last <= 0xA9);
+}
+
 }  // namespace
 
 std::size_t utf8_length(std::string_view s) {
@@ -105,7 +116,7 @@ std::string quoted(std::string_view line) {
     const bool c1 =
         c == 0xC2 && k + 1 < kept.size() && static_cast<unsigned char>(kept[k + 1]) < 0xA0;
     const std::size_t n = c1 ? 0 : utf8_length(kept.substr(k));
-    if (n > 1 || (n == 1 && std::isprint(c))) {
+    if ((n > 1 && !bidi_control(kept.substr(k, n))) || (n == 1 && std::isprint(c))) {
       shown += kept.substr(k, n);
     } else {
       shown += '?';

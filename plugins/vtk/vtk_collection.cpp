@@ -1,5 +1,6 @@
 #include "vtk_collection.hpp"
 
+#include <cmath>
 #include <cstdio>
 
 namespace granpipe::vtk {
@@ -14,11 +15,19 @@ bool increasing(const std::vector<WrittenFrame>& frames, Value WrittenFrame::*va
   return true;
 }
 
+// Times that are numbers: an undefined one (NaN: a dump read without dt) made the timestep
+// of a single frame "nan", which ParaView cannot read.
+bool defined_times(const std::vector<WrittenFrame>& frames) {
+  for (const WrittenFrame& f : frames)
+    if (!std::isfinite(f.time)) return false;
+  return true;
+}
+
 }  // namespace
 
 std::vector<double> timesteps(const std::vector<WrittenFrame>& frames) {
   std::vector<double> t;
-  const bool by_time = increasing(frames, &WrittenFrame::time);
+  const bool by_time = defined_times(frames) && increasing(frames, &WrittenFrame::time);
   const bool by_step = increasing(frames, &WrittenFrame::step);
   for (std::size_t k = 0; k < frames.size(); ++k) {
     t.push_back(by_time   ? frames[k].time

@@ -39,4 +39,8 @@ TEST(Quoted, KeepsUtf8AndHidesOtherBytes) {
   EXPECT_EQ(granpipe::quoted(std::string("\xc2\x9b")), "\"??\"");
   EXPECT_EQ(granpipe::quoted(std::string("\xe0\x80\xaf")), "\"???\"");
   EXPECT_EQ(granpipe::quoted(std::string("\xed\xa0\x80")), "\"???\"");
+  // Bidirectional controls reorder the terminal's line (a unit "nm\u202e..."): one '?' each.
+  EXPECT_EQ(granpipe::quoted("nm\u202eabc"), "\"nm?abc\"");
+  EXPECT_EQ(granpipe::quoted("\u2066x\u2069\u200f\u061c"), "\"?x???\"");
+  EXPECT_EQ(granpipe::quoted("a\u2014b"), "\"a\u2014b\"");  // an em dash is text
 }

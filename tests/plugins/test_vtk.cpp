@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -98,6 +99,10 @@ TEST(Vtk, TimestepsAreTimesThenStepsThenIndices) {
   EXPECT_EQ(vtk::timesteps({W{0.5, 7, "a"}, W{0.75, 7, "b"}}), (std::vector<double>{0.5, 0.75}));
   EXPECT_EQ(vtk::timesteps({W{0, 100, "a"}, W{0, 150, "b"}}), (std::vector<double>{100, 150}));
   EXPECT_EQ(vtk::timesteps({W{0, 3, "a"}, W{0, 3, "b"}}), (std::vector<double>{0, 1}));
+  // An undefined time (a dump read without dt) is no timestep, even of a single frame.
+  const double nan = std::nan("");
+  EXPECT_EQ(vtk::timesteps({W{nan, 40, "a"}}), (std::vector<double>{40}));
+  EXPECT_EQ(vtk::timesteps({W{nan, 40, "a"}, W{nan, 80, "b"}}), (std::vector<double>{40, 80}));
 }
 
 TEST(Vtk, CollectionListsEveryFrameWithItsTimestep) {
