@@ -1,6 +1,7 @@
 #include "granpipe/atomic_file.hpp"
 
 #include <fcntl.h>
+#include <stdio.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -46,6 +47,25 @@ void write_new_file(const fs::path& path, const std::string& content) {
     throw InputError(path.string() +
                      ": expected a writable file, got a write error (is the disk full?)");
   }
+}
+
+void move_into_place(const fs::path& from, const fs::path& to) {
+  if (renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_NOREPLACE) == 0) return;
+  int why = errno;
+  // A file system without RENAME_NOREPLACE: a hard link fails where `to` exists too.
+  if ((why == EINVAL || why == ENOSYS) && ::link(from.c_str(), to.c_str()) == 0) {
+    ::unlink(from.c_str());
+    return;
+  }
+  if (why == EINVAL || why == ENOSYS) why = errno;
+  if (why == EEXIST) {
+    throw InputError(to.string() +
+                     ": expected no file of this name (the run writes it at its end), got one "
+                     "put there while the run went (not granpipe's: left as it is); the run's "
+                     "is " +
+                     from.string());
+  }
+  throw InputError(to.string() + ": expected a writable file, got " + std::strerror(why));
 }
 
 void write_file_atomically(const fs::path& path, const std::string& content) {

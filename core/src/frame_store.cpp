@@ -169,7 +169,7 @@ void FrameWriter::Impl::create_file(const std::string& provenance) {
                       std::vector<int>{L::kVersionMajor, L::kVersionMinor});
   h5::write_attribute(ext.id(), L::kCompleteAttr, 0);
   h5::write_text_attribute(ext.id(), L::kProvenanceAttr, provenance);
-  h5::check(H5Fflush(file.id(), H5F_SCOPE_GLOBAL), "cannot flush");
+  h5::check(H5Fflush(file.id(), H5F_SCOPE_GLOBAL), "cannot flush (is the disk full?)");
 }
 
 void FrameWriter::Impl::create_particles(const Frame& f, Datasets& s) {

@@ -1,5 +1,7 @@
 #include "frames_file_writer.hpp"
 
+#include "granpipe/atomic_file.hpp"
+
 namespace granpipe {
 
 FramesFileWriter::FramesFileWriter(std::filesystem::path path, std::string provenance_json)
@@ -17,7 +19,7 @@ void FramesFileWriter::close() {
   // A run of no frame still leaves a (frameless) frames.h5, as readers expect one.
   if (!file_) file_ = std::make_unique<FrameWriter>(partial_path_, provenance_);
   file_->close();
-  std::filesystem::rename(partial_path_, final_path_);
+  move_into_place(partial_path_, final_path_);
 }
 
 }  // namespace granpipe

@@ -195,11 +195,7 @@ void write_h5(const fs::path& tmp, const fs::path& final_path, const ResultSet& 
 
 fs::path temporary(const fs::path& path) { return path.string() + ".tmp"; }
 
-void rename_into_place(const fs::path& path) {
-  std::error_code ec;
-  fs::rename(temporary(path), path, ec);
-  if (ec) throw InputError(path.string() + ": expected a writable file, got " + ec.message());
-}
+void rename_into_place(const fs::path& path) { move_into_place(temporary(path), path); }
 
 }  // namespace
 

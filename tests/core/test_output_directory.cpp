@@ -626,3 +626,24 @@ TEST(ReplacingRun, TheNewFolderKeepsTheEarlierOnesPermissions) {
   EXPECT_EQ(s.st_mode & 0777, 0700u);
   fs::remove_all(out);
 }
+
+// A file the run writes at its end, put in the run's folder by the user while it went (their
+// own results.h5, frames.h5, a CSV of the run's name): renamed over, exit 0. Refused, left.
+TEST(OutputDirectory, AFileTheRunWritesAtItsEndIsNotRenamedOverAUsers) {
+  for (const char* name : {"results.h5", "frames.h5"}) {
+    const fs::path out = fresh_dir(std::string("end_") + name);
+    scribble_into = out;
+    scribbled = {name};
+    const std::string message = run(kScribbling, out);
+    scribbled = {"notes.txt"};
+    EXPECT_EQ(message.rfind((out / name).string() +
+                                ": expected no file of this name (the run writes it at its end), "
+                                "got one put there while the run went (not granpipe's: left as it "
+                                "is); the run's is ",
+                            0),
+              0u)
+        << message;
+    EXPECT_EQ(read_file(out / name), "mine") << name;
+    fs::remove_all(out);
+  }
+}

@@ -13,4 +13,9 @@ void write_file_atomically(const std::filesystem::path& path, const std::string&
 // on the file it pointed to, outside the run's folder. Removes what it made on failure.
 void write_new_file(const std::filesystem::path& path, const std::string& content);
 
+// Renames `from` (a file the run wrote under a temporary name) to `to`, which must not
+// exist: a file put at `to` while the run went (a user's results.h5) was renamed over.
+// InputError naming both when it exists, leaving it and `from` as they are.
+void move_into_place(const std::filesystem::path& from, const std::filesystem::path& to);
+
 }  // namespace granpipe
