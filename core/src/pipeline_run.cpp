@@ -38,6 +38,7 @@ struct PointPlugins {
   std::vector<std::unique_ptr<Analyzer>> analyzers;
   std::vector<std::unique_ptr<Writer>> writers;  // the pipeline's
   std::vector<std::string> warnings;             // for the run's log
+  FileRecord* files = nullptr;                   // what the run writes, as it writes it
 };
 
 // "analyzer \"packing\"", or "analyzer \"top\" (packing)" when named otherwise.
@@ -96,6 +97,7 @@ PointPlugins make_plugins(const Pipeline::Impl& p, std::size_t k, int threads, L
   const PointSpec& point = p.points[k];
   const Seeds seeds = Seeds(p.seed).derive("point", p.shared_seeds ? 0 : k);
   PointPlugins made;
+  made.files = files;
   if (p.points.size() > 1) {
     made.log = std::make_unique<Log>(log, "point " + std::to_string(k) + ": ");
     if (files) files->add(dir);  // the run's, not any point_NNN found in the folder
@@ -173,7 +175,8 @@ PointPlugins make_plugins(const Pipeline::Impl& p, std::size_t k, int threads, L
 }
 
 // frames.h5 of a point, when the pipeline saves frames.
-std::unique_ptr<Writer> frames_file(const Pipeline::Impl& p, std::size_t k, const fs::path& out) {
+std::unique_ptr<Writer> frames_file(const Pipeline::Impl& p, std::size_t k, const fs::path& out,
+                                    FileRecord* files) {
   if (!p.save_frames) return nullptr;
   json provenance = {{"pipeline", p.points[k].resolved},
                      {"granpipe_version", version()},
@@ -185,7 +188,7 @@ std::unique_ptr<Writer> frames_file(const Pipeline::Impl& p, std::size_t k, cons
                      // when shared) are told by these two.
                      {"sweep_seeds", p.shared_seeds ? "shared" : "per_point"}};
   return std::make_unique<FramesFileWriter>(point_directory(p, k, out) / "frames.h5",
-                                            provenance.dump());
+                                            provenance.dump(), files);
 }
 
 struct PointOutcome {
@@ -207,7 +210,7 @@ std::vector<std::string> stage_names(const Pipeline::Impl& p) {
 PointOutcome run_point(const Pipeline::Impl& p, std::size_t k, PointPlugins plugins,
                        ResultStream& stream, Progress& progress, const fs::path& out) {
   const bool source_reports = plugins.source->work().reported_by_source;
-  const auto frames_h5 = frames_file(p, k, out);  // none when frames are not saved
+  const auto frames_h5 = frames_file(p, k, out, plugins.files);  // none when not saved
 
   PointOutcome outcome;
   Frame frame;

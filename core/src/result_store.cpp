@@ -217,33 +217,37 @@ void write_provenance(hid_t file, const Provenance& provenance) {
 
 // Every file is written under a temporary name and renamed only once all are written,
 // so a run that fails here (a full disk) leaves no results file under its final name. Each
-// name is recorded before the file is made: what a failure leaves (a temporary, or CSVs
-// renamed before it) is the run's too.
+// name is recorded once the file is made under it, never before (a user's file found at
+// that name is not the run's, and --overwrite must not remove it): what a failure leaves (a
+// temporary, or CSVs renamed before it) is the run's too.
 void write_results(const fs::path& dir, const ResultSet& results, const Provenance& provenance,
                    FileRecord& record) {
   const fs::path final_path = dir / "results.h5";
   TextFiles csvs;
   for (const auto& [group, r] : results) collect_csvs(dir, group, r, provenance, csvs);
   std::vector<fs::path> written;
-  const auto recorded = [&](const fs::path& file) {
+  const auto made = [&](const fs::path& file) {
     record.add(temporary(file));
-    record.add(file);
-    return temporary(file);
+    written.push_back(temporary(file));
   };
   try {
-    write_h5(recorded(final_path), final_path, results, provenance);
-    written.push_back(temporary(final_path));
+    write_h5(temporary(final_path), final_path, results, provenance);
+    made(final_path);
     for (const auto& [path, text] : csvs) {
-      write_new_file(recorded(path), text);
-      written.push_back(temporary(path));
+      write_new_file(temporary(path), text);
+      made(path);
     }
   } catch (...) {
     std::error_code ignored;
     for (const fs::path& f : written) fs::remove(f, ignored);
     throw;
   }
-  for (const auto& csv : csvs) rename_into_place(csv.first);
-  rename_into_place(final_path);
+  const auto moved = [&](const fs::path& file) {
+    rename_into_place(file);
+    record.add(file);
+  };
+  for (const auto& csv : csvs) moved(csv.first);
+  moved(final_path);
 }
 
 std::string run_label(const Provenance& p) {

@@ -157,19 +157,18 @@ bool written_before_the_end(const Entry& e) {
   return named_as_written_before_the_end(e) && (e.directory || holds_what_a_run_writes(e.path));
 }
 
-// The core's own files, the point folders, and what the run's plugins recorded
-// (output_files.hpp): never a file merely named like them. The run knows what it wrote:
+// The core's own files, the point folders the run made, and what the run recorded as it
+// made it (its results and frames files, the plugins' files: output_files.hpp): never a
+// file merely named like them. The run knows what it wrote:
 // its own run.log may start with its interruption (a signal before the provenance line).
 bool written_by_this_run(const Entry& e, const fs::path& dir, const FileRecord& recorded) {
-  static const std::set<std::string> files{"results.h5", "frames.h5"};
   if (!where_a_run_writes(e)) return false;
   // A point folder is the run's only when the run made it: point_007 put there while a run
   // of three points (or of none) went was listed, and --overwrite removed what it held.
   const fs::path name = bare_name(e);
   const fs::path folder = e.directory ? name : name.parent_path();
   if (!folder.empty() && !recorded.has(dir / folder)) return false;
-  if (named_as_written_before_the_end(e)) return true;
-  return files.count(name.filename().string()) > 0 || recorded.has(dir / e.name);
+  return named_as_written_before_the_end(e) || recorded.has(dir / e.name);
 }
 
 // The files whose content says whether granpipe wrote them (holds_what_a_run_writes).

@@ -644,6 +644,25 @@ TEST(OutputDirectory, AFileTheRunWritesAtItsEndIsNotRenamedOverAUsers) {
               0u)
         << message;
     EXPECT_EQ(read_file(out / name), "mine") << name;
+    EXPECT_NE(run(kLattice, out, true).find(std::string("also holds ") + name), std::string::npos);
+    EXPECT_EQ(read_file(out / name), "mine") << name;
     fs::remove_all(out);
   }
+}
+
+// A file of the user's at a temporary name the run writes its results under: the run stops
+// leaving it, and it was still listed as the run's, so --overwrite removed it (exit 0).
+TEST(OutputDirectory, AFileTheRunRefusedToWriteThroughIsNotListedAsTheRuns) {
+  const fs::path out = fresh_dir("planted_tmp");
+  scribble_into = out;
+  scribbled = {"results.h5.tmp"};
+  const std::string message = run(kScribbling, out);
+  scribbled = {"notes.txt"};
+  EXPECT_NE(message.find("results.h5.tmp: expected no file at this temporary name"),
+            std::string::npos)
+      << message;
+  EXPECT_EQ(read_file(out / "results.h5.tmp"), "mine");
+  EXPECT_NE(run(kLattice, out, true).find("also holds results.h5.tmp"), std::string::npos);
+  EXPECT_EQ(read_file(out / "results.h5.tmp"), "mine");
+  fs::remove_all(out);
 }
