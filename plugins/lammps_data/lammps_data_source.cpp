@@ -13,18 +13,19 @@ namespace granpipe::lammps_data {
 namespace {
 
 // write_data of a 2D run puts every atom at z = 0, in a box whose z bounds straddle it
-// (LAMMPS requires so of a 2D run), thin (LAMMPS' 2D examples: -0.5 to 0.5 for atoms of
-// diameter 1): disks, which 3D analyzers would measure as spheres (exit 0). A data file
-// states no periodic flags, so the dump's test (a box periodic along z) is not the data's.
-// A 3D packing in the plane z = 0 of a box thicker than two of its largest atoms (two
-// spheres set for a head-on collision in a centred cube) is read.
+// (LAMMPS requires so of a 2D run, -0.5 to 0.5 whatever the atoms' size): disks, which 3D
+// analyzers would measure as spheres (exit 0). A data file states no periodic flags, so the
+// dump's test (a box periodic along z) is not the data's, and nothing tells such a file from
+// a 3D packing lying in the plane z = 0 (two spheres set for a head-on collision): the
+// message says how to have that one read.
 void refuse_a_2d_run(const Frame& f, const Container& box, const std::string& file) {
   const auto z = f.position().col(2);
   if ((z != 0.0).any() || !(box.lo[2] < 0.0 && box.hi[2] > 0.0)) return;
-  if (f.size() > 0 && box.hi[2] - box.lo[2] > 4.0 * f.radius().maxCoeff()) return;
   throw InputError(file + ": expected a 3D packing (granpipe's LAMMPS readers read 3D runs), got " +
                    "every atom at z = 0 in a box from zlo " + format_number(box.lo[2]) +
-                   " to zhi " + format_number(box.hi[2]) + ": a 2D run's data file");
+                   " to zhi " + format_number(box.hi[2]) +
+                   ": a 2D run's data file (a 3D packing in the plane z = 0 cannot be told from "
+                   "one: shift its atoms and box off z = 0 to have it read)");
 }
 
 }  // namespace
