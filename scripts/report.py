@@ -14,6 +14,7 @@ import json
 import os
 import re
 import sys
+import tempfile
 import warnings
 
 from paper_values import PaperValues, paper_problem
@@ -329,13 +330,15 @@ def main(run):
                  "a directory" if os.path.isdir(target) else "another file")
         refuse(f"{target}: expected a report granpipe wrote, found {found}; it is left as it is "
                "(move it away to have the report)")
-    partial = f"{target}.{os.getpid()}.tmp"  # two reports of one run at once: one wins whole
     completed = os.path.join(run, "results.h5")
-    made = False
+    partial = None
     try:
-        # Created exclusively: a symlink planted at this name is refused, not written through.
-        with open(partial, "x") as f:
-            made = True
+        # A name of its own, created exclusively (two reports of one run at once: one wins
+        # whole; a symlink planted at the name is not written through; a temporary left by a
+        # killed report, its pid used again, is not in the way).
+        descriptor, partial = tempfile.mkstemp(prefix="report.html.", suffix=".tmp", dir=run)
+        os.fchmod(descriptor, 0o666 & ~current_umask())  # mkstemp's 0600 would hide the page
+        with os.fdopen(descriptor, "w") as f:
             f.write(html_text)
         # The run completed while the page was drawn from the results so far: it removed
         # the page of those, and this one would land as stale (or over the final one).
@@ -349,11 +352,17 @@ def main(run):
         if not stale:
             note_written(target)
     except OSError as e:  # a full disk, a folder not ours to write: the run's files stay
-        if made and os.path.lexists(partial):
+        if partial is not None and os.path.lexists(partial):
             os.remove(partial)
-        refuse(f"{target}: cannot write the report: {e.strerror}")
+        refuse(f"{e.filename or target}: cannot write the report: {e.strerror}")
     if stale:  # drawn again, from the results now complete (once: results.h5 is read first)
         main(run)
+
+
+def current_umask():
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
 
 
 def ours(target, inode):

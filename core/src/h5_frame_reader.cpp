@@ -657,7 +657,11 @@ void FrameReader::Impl::open(const std::string& group) {
 void FrameReader::Impl::check_frame_fits() const {
   const auto bytes = [&](int components) { return 8.0 * components * (components > 1 ? 2 : 1); };
   double per_particle = bytes(info.dim) + 8.0 + 8.0 + 4.0;
-  for (const ElementColumn& c : columns) per_particle += bytes(c.property.components_in(info.dim));
+  for (const ElementColumn& c : columns) {
+    const std::string& n = c.property.name;
+    if (n != "radius" && n != "id" && n != "species")  // counted above
+      per_particle += bytes(c.property.components_in(info.dim));
+  }
   check_fits(position->path(), static_cast<double>(info.particles) * per_particle,
              "a frame of " + std::to_string(info.particles) + " particles (" +
                  format_number(per_particle) + " bytes each)");

@@ -82,6 +82,12 @@ with tempfile.TemporaryDirectory() as work:
     subprocess.run([exe, pipeline, *toy, "--set", 'sweep.parameters={"source.params.epsilon": '
                     '[0.05]}', "--set", "output.save_frames=true", "--out", single], check=True)
     page = Page(os.path.join(single, "report.html"))
+    # Written under a temporary name of its own, then readable as the run's other files are.
+    mask = os.umask(0)
+    os.umask(mask)
+    check(os.stat(os.path.join(single, "report.html")).st_mode & 0o777 == 0o666 & ~mask,
+          "the report's permissions are not the umask's")
+    check(not [n for n in os.listdir(single) if n.endswith(".tmp")], "a temporary was left")
     with open(os.path.join(single, "pipeline.json")) as f:
         seed = json.load(f)["seed"]
     check(str(seed) in page.cells and "git_commit" in page.cells, f"provenance: {page.cells[:14]}")
