@@ -209,8 +209,9 @@ struct FrameReader::Impl {
   std::vector<double> times;
   std::array<bool, 3> periodic{};
   // Along walled axes of another tool's box: walls at [-L/2, L/2] (else [0, L]), as the
-  // file's centres decide (place_walls_of_file).
+  // file's centres decide (place_walls_of_file), and which placements they allow.
   std::array<bool, 3> centred{};
+  FrameReader::WallPlacements allowed;
   std::optional<ContainerSeries> container_series;
   std::vector<ContactColumn> contact_columns;
   std::vector<std::int64_t> contact_offset, contact_count;
@@ -740,7 +741,11 @@ void FrameReader::Impl::place_walls_of_file() {
       fit[a] = {p.at_zero, p.centred};
     }
   }
-  for (int a = 0; a < info.dim; ++a) centred[a] = !fit[a].at_zero && fit[a].centred;
+  for (int a = 0; a < info.dim; ++a) {
+    centred[a] = !fit[a].at_zero && fit[a].centred;
+    allowed.at_zero[a] = fit[a].at_zero;
+    allowed.centred[a] = fit[a].centred;
+  }
 }
 
 void FrameReader::Impl::place_walls(Container& c, int a, const Frame& f, long k) const {
@@ -943,6 +948,14 @@ FrameReader::FrameReader(const std::filesystem::path& path, const std::string& g
 FrameReader::~FrameReader() = default;
 
 const FrameFileInfo& FrameReader::info() const { return impl_->info; }
+
+FrameReader::WallPlacements FrameReader::wall_placements() const { return impl_->allowed; }
+
+void FrameReader::place_walls_like(const std::array<bool, 3>& centred) {
+  for (int a = 0; a < 3; ++a) {
+    if (impl_->allowed.at_zero[a] && impl_->allowed.centred[a]) impl_->centred[a] = centred[a];
+  }
+}
 
 Frame FrameReader::read(long index) const {
   h5::silence_error_stack();

@@ -1,5 +1,6 @@
 #include "run_parts.hpp"
 
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <optional>
@@ -140,8 +141,29 @@ RunParts::RunParts(const std::vector<std::string>& files, const std::vector<std:
                        "none");
     }
     if (k) require_same_content(first_info(), parts_[k]->info(), names[k]);
-    append(k, names[k]);
   }
+  place_walls_alike();
+  for (std::size_t k = 0; k < files.size(); ++k) append(k, names[k]);
+}
+
+// Another tool's parts store no origin, and each placed its walls where its own frames fit:
+// a part whose frames fit both placements took [0, L] while the next one's frames fit
+// [-L/2, L/2] only, and a genuine continuation was refused. The placement every part's
+// frames allow is taken for all (where none is, the parts are refused at their join).
+void RunParts::place_walls_alike() {
+  for (const auto& part : parts_)
+    if (part->info().granpipe_file) return;
+  std::array<bool, 3> centred{};
+  for (int a = 0; a < 3; ++a) {
+    bool at_zero = true, centre = true;
+    for (const auto& part : parts_) {
+      at_zero = at_zero && part->wall_placements().at_zero[a];
+      centre = centre && part->wall_placements().centred[a];
+    }
+    if (!at_zero && !centre) return;
+    centred[a] = !at_zero;
+  }
+  for (const auto& part : parts_) part->place_walls_like(centred);
 }
 
 // The invariant kept: order_ lists every frame read so far once, steps rising. A later
@@ -175,13 +197,13 @@ void RunParts::append(std::size_t part, const std::string& name) {
                      "the parts before it hold (not a continuation of them; a part holds first "
                      "the frame it started from, which a run saved without its start lacks)");
   }
-  // Another tool's parts store no origin: each reader places its walls where its own
-  // frames fit, and two parts placed apart (walls that jump by L/2) are not one run.
+  // Another tool's parts store no origin: placed alike where a placement holds all their
+  // frames (place_walls_alike), else apart (walls that jump by L/2), which is not one run.
   const bool granpipe = first_info().granpipe_file, also = reader.info().granpipe_file;
   const bool foreign = !granpipe && !also;
   auto [difference, detail] = what_differs(*saved, start, granpipe == also);
   if (foreign && difference == "another container")
-    detail += "; H5MD stores no origin: each part's walls go where its own frames fit";
+    detail += "; H5MD stores no origin, and no place of the walls holds every part's frames";
   if (!difference.empty()) {
     throw InputError(not_continued + "the parts before it hold, got " + difference + " than " +
                      where(frames() - 1) + " (" + (detail.empty() ? "" : detail + "; ") +

@@ -34,6 +34,7 @@ class RunParts {
   std::string where(long index) const;
 
  private:
+  void place_walls_alike();
   void append(std::size_t part, const std::string& name);
   std::vector<std::unique_ptr<FrameReader>> parts_;
   std::vector<FrameAddress> order_;

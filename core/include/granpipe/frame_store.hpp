@@ -2,6 +2,7 @@
 // frames.h5: frames as H5MD 1.1 plus granpipe's documented extensions
 // (docs/file-format.md). The writer appends and flushes frame by frame in SWMR mode,
 // so a run killed mid-way leaves every completed frame readable.
+#include <array>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -67,6 +68,16 @@ class FrameReader {
   const FrameFileInfo& info() const;
   long frames() const { return info().frames; }
   Frame read(long index) const;
+
+  // Another tool's walled box (H5MD stores no origin): per axis, whether the frames read to
+  // place the walls allow them at [0, L] and at [-L/2, L/2] (both along a periodic axis).
+  struct WallPlacements {
+    std::array<bool, 3> at_zero{true, true, true}, centred{true, true, true};
+  };
+  WallPlacements wall_placements() const;
+  // Puts the walls centred (true) or at [0, L] along each walled axis the frames allow both
+  // on, the other parts of a run having decided: a run's parts placed alike.
+  void place_walls_like(const std::array<bool, 3>& centred);
 
  private:
   struct Impl;
