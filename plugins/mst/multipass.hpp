@@ -20,7 +20,7 @@ namespace granpipe::mst {
 class Multipass {
  public:
   // `vertices` particles 0..vertices-1; `edges` in any order, i < j < vertices. A run of
-  // weights each within `tie` of the one before is a tie, (i, j) then deciding: lengths of
+  // weights within `tie` of its first is a tie, (i, j) then deciding: lengths of
   // a lattice are equal but for the rounding of the coordinates they come from, which a
   // frame moved or stored at another periodic image changes. 0: equal weights only.
   Multipass(std::uint32_t vertices, std::vector<Edge> edges, double elongation, double tie = 0.0);

@@ -63,10 +63,18 @@ void shrink_to_cylinder(const Container& c, double margin, PoreRegion& region,
 
 std::optional<PoreRegion> pore_region(const Frame& frame, const RegionSettings& s, double radius,
                                       const std::string& where) {
-  if (s.kind == RegionKind::All) return std::nullopt;
+  const bool periodic =
+      frame.container.periodic(0) && frame.container.periodic(1) && frame.container.periodic(2);
+  if (s.kind == RegionKind::All) {
+    if (periodic) return std::nullopt;
+    // The container itself: the slivers of the convex hull along its walls and open sides
+    // have centres far outside (below the base, ξ up to 10^5), and counting them made ν
+    // 10^10 to 10^27 with exit 0.
+    return pore_region(frame, {RegionKind::Inner, 0.0, 0.0}, radius, where);
+  }
   // Periodic on every side, "inner" is "all" whatever its margin (a margin of 100 radii
   // changed nothing, exit 0), as a height is along a periodic z.
-  if (frame.container.periodic(0) && frame.container.periodic(1) && frame.container.periodic(2)) {
+  if (periodic) {
     throw InputError(where +
                      ": expected region \"all\" for a container periodic on every side (an "
                      "inner region keeps its margin from walls, and it has none), got \"inner\"");

@@ -1,7 +1,7 @@
 #pragma once
-// Which pores a measurement counts: all of them, or those whose centre lies inside the
-// container away from its walls (the paper: 2 R from the walls, 18 R high): a box, and in a
-// vertical cylinder also within its radius less the margin.
+// Which pores a measurement counts: all of them whose centre lies in the container, or those
+// away from its walls (the paper: 2 R from the walls, 18 R high): a box, and in a vertical
+// cylinder also within its radius less the margin.
 #include <Eigen/Core>
 #include <cstdint>
 #include <limits>
@@ -44,7 +44,8 @@ bool in_box(const Region& r, const Eigen::Vector3d& x);
 // surface at an open side.
 double packing_side(const Frame& frame, int axis, int high);
 
-// Nothing for kind All. For Inner, the container shrunk by `margin` radii from every wall
+// Nothing for kind All in a container periodic on every side, else the container itself
+// (Inner with margin 0). For Inner, the container shrunk by `margin` radii from every wall
 // (unbounded along periodic axes; a cylinder's radius too), its top the container's or, for
 // an open top, the highest particle top, and `height` radii high when height > 0. Throws
 // InputError after `where` for a region of no volume or reaching above that top, and for a

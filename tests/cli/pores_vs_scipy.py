@@ -1,5 +1,7 @@
 """The pores analyzer against an independent computation: scipy's Delaunay (Qhull) of the
-same centres, each simplex's circumradius minus R. A crystal jittered by a fifth of a radius
+same centres, each simplex's circumradius minus R, of the simplices whose circumcentre lies
+in the container (region "all": the hull's slivers along the walls have theirs far outside,
+and are no pores of the packing). A crystal jittered by a fifth of a radius
 (no two cells share a circumsphere, no four centres are coplanar, unlike a deposition's bottom
 layer, where the two codes may split the flat slivers differently) must give the same number
 of pores and the same xi histogram, bin by bin."""
@@ -33,6 +35,7 @@ out = os.path.join(work, "out")
 with h5py.File(os.path.join(out, "frames.h5"), "r") as f:
     centres = f["particles/all/position/value"][0]
     radius = float(f["particles/all/radius/value"][0][0])
+    lo, hi = f["granpipe/container/lo"][0], f["granpipe/container/hi"][0]
 
 tri = Delaunay(centres)
 def thinnest_height(p):
@@ -55,7 +58,8 @@ for simplex in tri.simplices:
     a = 2.0 * (p[1:] - p[0])
     b = (p[1:] ** 2).sum(axis=1) - (p[0] ** 2).sum()
     c = np.linalg.solve(a, b)
-    xi.append((np.linalg.norm(c - p[0]) - radius) / radius)
+    if (c >= lo).all() and (c < hi).all():
+        xi.append((np.linalg.norm(c - p[0]) - radius) / radius)
 xi = np.array(xi)
 
 def table(name):

@@ -297,6 +297,26 @@ TEST(Mst, ZeroForceContactsCountWhenAsked) {
   EXPECT_EQ(r.passes[0].tcp.largest_edges, 4);  // E(3,4) is now a contact
 }
 
+// A ring of 100 edges whose lengths rise by 0.9 of the tie window from E(99,0) down to
+// E(0,1), the longest: chained from one length to the next, the whole ring was one tie and
+// taken by (i, j), E(0,1) first, so the forest dropped E(98,99) instead of the longest edge:
+// 88 windows heavier than minimal. Within one window the ids decide (E(1,2) may go instead).
+TEST(Mst, ATieSpansOneWindowNotAChainOfThem) {
+  const double tie = 1e-6, step = 0.9 * tie;
+  std::vector<Edge> ring;
+  for (std::uint32_t k = 0; k < 100; ++k) {
+    const std::uint32_t a = k, b = (k + 1) % 100;
+    ring.push_back({1.0 + (99 - k) * step, std::min(a, b), std::max(a, b)});
+  }
+  Multipass mst(100, ring, 1.1, tie);
+  const Multipass::Pass first = mst.next();
+  double minimal = 0.0;
+  for (const Edge& e : ring) minimal += e.weight;
+  minimal -= ring[0].weight;  // E(0,1), the longest
+  EXPECT_GE(first.weight, minimal - 1e-12);
+  EXPECT_LE(first.weight, minimal + tie);
+}
+
 TEST(Mst, ASelectedEdgeIsLengthenedOnceNotOncePerPass) {
   // Triangle 0-1-2: E(0,1) = E(1,2) = 1, E(0,2) = 1.1. Lengthened once by 1.05 the two
   // stay shorter than 1.1 in every pass; compounding (1.05^2 > 1.1) would pick E(0,2) in

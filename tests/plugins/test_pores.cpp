@@ -231,6 +231,24 @@ TEST(Pores, AJitterBelowTheToleranceChangesNoCount) {
   }
 }
 
+// Region "all" in a walled container counted the slivers of the convex hull along the walls,
+// whose centres lie far outside (below the base): a jittered FCC block gave nu = 1.6e27
+// with exit 0. The pores of the container are those of the crystal and its faces.
+TEST(Pores, RegionAllCountsThePoresOfTheContainerOnly) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> shift(-1e-9, 1e-9);
+  Frame f = crystal_frame(fcc(), 4);
+  const auto all =
+      granpipe::pores::pore_region(f, {granpipe::pores::RegionKind::All, 2.0, 0.0}, 1.0, "test");
+  const PoreMeasurement perfect = measure_pores(f, all, 1e-9, "test");
+  for (Eigen::Index k = 0; k < f.size(); ++k)
+    for (int a = 0; a < 3; ++a) f.position()(k, a) += shift(rng);
+  const PoreMeasurement jittered = measure_pores(f, all, 1e-6, "test");
+  ASSERT_FALSE(perfect.xi.empty());
+  EXPECT_EQ(jittered.xi.size(), perfect.xi.size());
+  EXPECT_LE(*std::max_element(jittered.xi.begin(), jittered.xi.end()), std::sqrt(2.0) - 1.0 + 1e-6);
+}
+
 TEST(Pores, FccPoresAreTwoThirdsTetrahedraByNumber) {
   granpipe::pores::PoreStatistics stats(0.01, 1.0);
   stats.add(inner(fcc(), 6, crystal_frame(fcc(), 6)));
@@ -268,8 +286,13 @@ TEST(Pores, InnerRegionKeepsItsMarginFromTheWalls) {
   EXPECT_DOUBLE_EQ(r->box.hi[2], 4.0);
   s.height = 8.0;  // above the top of the packing
   EXPECT_THROW(granpipe::pores::pore_region(f, s, 1.0, "test"), InputError);
-  s.kind = granpipe::pores::RegionKind::All;
-  EXPECT_FALSE(granpipe::pores::pore_region(f, s, 1.0, "test"));
+  // "all": the container itself (the hull's slivers have their centres far outside it).
+  s = {granpipe::pores::RegionKind::All, 2.0, 0.0};
+  const auto all = granpipe::pores::pore_region(f, s, 1.0, "test");
+  ASSERT_TRUE(all);
+  EXPECT_DOUBLE_EQ(all->box.lo[0], -1.0);
+  EXPECT_DOUBLE_EQ(all->box.hi[1], 9.0);
+  EXPECT_DOUBLE_EQ(all->box.lo[2], -1.0);
 }
 
 // An SC lattice's pores lie on the inner region's faces at the default margin: counted on
