@@ -72,8 +72,8 @@ bool has_open_side(const Container& c) {
 }
 
 // Skin::wider; throws InputError after `where` when the skin spans the period already.
-// Counting every pore under an open top is the common cause: the hollows of a rough surface
-// have pore spheres as wide as the box, whatever its size.
+// Counting the pores under an open top up to the surface is the common cause: the hollows
+// of a rough surface have pore spheres as wide as the box, whatever its size.
 Skin wider_skin(const Skin& skin, double shortfall, double period, bool open_top_counted,
                 const std::string& where) {
   if (skin.bulk >= period) {
@@ -81,8 +81,8 @@ Skin wider_skin(const Skin& skin, double shortfall, double period, bool open_top
     m << where << ": expected periodic sides longer than the pores (" << period
       << "), got a pore sphere or a particle's cell wider than the box; ";
     if (open_top_counted) {
-      m << "with an open side, region all counts the pores of the surface's hollows too: set "
-           "region inner (the pores below the top)";
+      m << "with an open side, the pores of the surface's hollows are counted too: region "
+           "inner, a margin below the top, leaves them out";
     } else {
       m << "pores of boxes this small are not computed";
     }
@@ -194,7 +194,7 @@ struct Measure {
         if (shortfall <= 0.0) return found;
       }
       const Skin wider =
-          wider_skin(skin, shortfall, period, !region && has_open_side(frame.container), where);
+          wider_skin(skin, shortfall, period, has_open_side(frame.container), where);
       const Centres more = images_between(frame, skin, wider);
       t.insert(more.points);
       centres.points.insert(centres.points.end(), more.points.begin(), more.points.end());

@@ -1,5 +1,6 @@
 #include "pore_region.hpp"
 
+#include <cmath>
 #include <limits>
 #include <sstream>
 
@@ -69,8 +70,14 @@ std::optional<PoreRegion> pore_region(const Frame& frame, const RegionSettings& 
     if (periodic) return std::nullopt;
     // The container itself: the slivers of the convex hull along its walls and open sides
     // have centres far outside (below the base, ξ up to 10^5), and counting them made ν
-    // 10^10 to 10^27 with exit 0.
-    return pore_region(frame, {RegionKind::Inner, 0.0, 0.0}, radius, where);
+    // 10^10 to 10^27 with exit 0. Open at both ends along its bounded axes: a crystal's
+    // surface cells centred on two mirror walls were counted on the lower one only.
+    std::optional<PoreRegion> all =
+        pore_region(frame, {RegionKind::Inner, 0.0, 0.0}, radius, where);
+    for (int a = 0; a < 3; ++a)
+      if (!frame.container.periodic(a))
+        all->box.lo[a] = std::nextafter(all->box.lo[a], all->box.hi[a]);
+    return all;
   }
   // Periodic on every side, "inner" is "all" whatever its margin (a margin of 100 radii
   // changed nothing, exit 0), as a height is along a periodic z.

@@ -33,7 +33,7 @@ Schema schema() {
   declare_max_overlap(s, 0.05,
                       "soft-sphere data press a few percent; a frame with a deeper one is refused");
   s.choice<RegionKind>("region", RegionKind::All,
-                       "pores counted: all, or those whose centre lies in the box container "
+                       "pores counted: all whose centre lies in the container, or those in it "
                        "shrunk by margin (inner)");
   s.real("margin", 2.0,
          "region inner: distance kept from every wall and below the top (the container's, or "
