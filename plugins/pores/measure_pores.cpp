@@ -193,8 +193,7 @@ struct Measure {
         shortfall = periodic ? shortfall_of(found, bounds) : 0.0;
         if (shortfall <= 0.0) return found;
       }
-      const Skin wider =
-          wider_skin(skin, shortfall, period, has_open_side(frame.container), where);
+      const Skin wider = wider_skin(skin, shortfall, period, has_open_side(frame.container), where);
       const Centres more = images_between(frame, skin, wider);
       t.insert(more.points);
       centres.points.insert(centres.points.end(), more.points.begin(), more.points.end());

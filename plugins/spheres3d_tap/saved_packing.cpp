@@ -136,7 +136,12 @@ SavedPacking read_saved_packing(const StartFrame& start, const TapBox& box, long
   check_inside(at, x, box);
   check_resting(at, x, box);
   check_overlaps(at, x, box);
-  return {x, f.step, f.integer_observable("tap"), at};
+  return {x,
+          f.step,
+          f.integer_observable("tap"),
+          at,
+          f.real_observable("epsilon"),
+          f.integer_observable("leg")};
 }
 
 }  // namespace granpipe::spheres3d_tap

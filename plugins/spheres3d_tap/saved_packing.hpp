@@ -17,6 +17,8 @@ struct SavedPacking {
   std::int64_t step = 0;            // the frame's step: its tap, in a file of this source
   std::optional<std::int64_t> tap;  // its tap observable (a file of this source has one)
   std::string at;                   // "<where>: <file>: frame <k>", for messages
+  std::optional<double> epsilon;    // the dilation its tap was made with, where the file says
+  std::optional<std::int64_t> leg;  // its ramp leg (-1: a constant protocol), likewise
 };
 
 // The centres of a start frame. Throws InputError beginning with `start.where` when the

@@ -315,6 +315,26 @@ void TapSource::check_saved_tap(const SavedPacking& saved) const {
                      " for continue_count (the run counts to tap " + std::to_string(last) +
                      "), got tap " + std::to_string(saved.step));
   }
+  check_saved_protocol(saved);
+}
+
+// The continued run's protocol must be the one that made the saved tap: another epsilon
+// (or a ramp for a constant run) labelled the saved packing with the new protocol's values,
+// and parts read as one run joined two protocols into one series (exit 0). Tap 0, the
+// deposition, was made by none.
+void TapSource::check_saved_protocol(const SavedPacking& saved) const {
+  if (saved.step == 0) return;
+  const EpsilonAt here = protocol_.at(saved.step);
+  const bool same_epsilon =
+      !saved.epsilon || std::abs(*saved.epsilon - here.epsilon) <= 1e-12 * here.epsilon;
+  const bool same_leg = !saved.leg || *saved.leg == here.leg;
+  if (same_epsilon && same_leg) return;
+  throw InputError(saved.at + ": expected the tap continued to have been made by this run's " +
+                   "protocol (epsilon " + format_number(here.epsilon) + ", leg " +
+                   std::to_string(here.leg) + " at tap " + std::to_string(saved.step) +
+                   "), got epsilon " + (saved.epsilon ? format_number(*saved.epsilon) : "none") +
+                   ", leg " + (saved.leg ? std::to_string(*saved.leg) : "none") +
+                   " (continue_count continues a run: give it the parameters it ran with)");
 }
 
 void TapSource::to_frame(Frame& frame, const TapStats& stats, const EpsilonAt& e) const {

@@ -32,6 +32,7 @@ class TapSource : public Source {
  private:
   void start();
   void check_saved_tap(const SavedPacking& saved) const;
+  void check_saved_protocol(const SavedPacking& saved) const;
   void check_stopping_rule(double mean_height) const;
   void to_frame(Frame& frame, const TapStats& stats, const EpsilonAt& e) const;
   void record(const TapStats& stats, const EpsilonAt& e);

@@ -85,6 +85,12 @@ PY
 "$expect" 2 "source\\.params\\.initial_file(=[^ ]*)?: .*first/frames\\.h5: frame 2: expected a saved tap from 0 to 1 for continue_count \\(the run counts to tap 2\\), got tap 2$" \
   -- "$exe" "$pipeline" "${small[@]}" --set source.params.initial_file="$work/first/frames.h5" \
   --set source.params.continue_count=true --out "$work/sixth"
+# continue_count with another epsilon labelled the saved packing (made at 0.05) with 0.3, and
+# parts read as one joined two protocols into one series (exit 0): refused.
+"$expect" 2 "source\\.params\\.initial_file(=[^ ]*)?: .*first/frames\\.h5: frame 1: expected the tap continued to have been made by this run's protocol \\(epsilon 0\\.3, leg -1 at tap 1\\), got epsilon 0\\.05, leg -1 \\(continue_count continues a run: give it the parameters it ran with\\)$" \
+  -- "$exe" "$pipeline" "${small[@]}" --set source.params.initial_file="$work/first/frames.h5" \
+  --set source.params.initial_frame=1 --set source.params.continue_count=true \
+  --set source.params.taps=4 --set source.params.epsilon=0.3 --out "$work/other_epsilon"
 # A frame without a tap (another tool's), or whose step is not its tap, gives no tap to count on
 # from; a file that is not HDF5 is refused naming the parameter.
 cp "$work/first/frames.h5" "$work/no_tap.h5"
