@@ -80,6 +80,20 @@ void check_inside(const std::string& where, const std::vector<Eigen::Vector3d>& 
 // centre at 1e8 R took gigabytes).
 void check_resting(const std::string& where, const std::vector<Eigen::Vector3d>& x,
                    const TapBox& box) {
+  // A packing lifted off the bottom (every sphere 50 R up) was taken for a saved one, its
+  // tap 0 measured as a packing of no density near the bottom (exit 0). A redeposited
+  // packing's lowest sphere lies within a small step of the bottom; a whole diameter of
+  // nothing under every sphere is no packing at rest.
+  std::size_t lowest = 0;
+  for (std::size_t i = 1; i < x.size(); ++i)
+    if (x[i].z() < x[lowest].z()) lowest = i;
+  if (!x.empty() && x[lowest].z() > 3.0 * box.radius) {
+    throw InputError(where + ": sphere " + std::to_string(lowest) + " at z = " +
+                     number(x[lowest].z()) + ", the lowest: expected a packing at rest on the " +
+                     "bottom, its lowest centre within a diameter of R = " + number(box.radius) +
+                     " (the bottom's contact), got a gap of " +
+                     number((x[lowest].z() - box.radius) / box.radius) + " R under every sphere");
+  }
   const double highest = (2.0 * static_cast<double>(x.size()) - 1.0) * box.radius;
   for (std::size_t i = 0; i < x.size(); ++i) {
     if (x[i].z() > highest * (1.0 + kTolerance)) {

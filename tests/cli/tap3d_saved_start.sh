@@ -76,6 +76,19 @@ with h5py.File(sys.argv[1], "r+") as f:
 PY
 "$expect" 2 "source\\.params\\.initial_file(=[^ ]*)?: .*far\\.h5: frame [0-9]+: sphere 5 at z = 100000000: expected a packing at rest on the bottom, no centre higher than a column of all 60 spheres, \\(2N - 1\\) R = 119$" \
   -- "$exe" "$pipeline" "${small[@]}" --set source.params.initial_file="$work/far.h5" --out "$work/far_out"
+# The whole packing lifted 50 R off the bottom was read as a saved packing (its tap 0 of no
+# density near the bottom, exit 0).
+cp "$work/first/frames.h5" "$work/lifted.h5"
+"$python" - "$work/lifted.h5" <<'PY'
+import sys, h5py
+with h5py.File(sys.argv[1], "r+") as f:
+    x = f["particles/all/position/value"]
+    last = x[-1]
+    last[:, 2] += 50.0
+    x[-1] = last
+PY
+"$expect" 2 "source\\.params\\.initial_file(=[^ ]*)?: .*lifted\\.h5: frame [0-9]+: sphere [0-9]+ at z = [0-9.]+, the lowest: expected a packing at rest on the bottom, its lowest centre within a diameter of R = 1 \\(the bottom's contact\\), got a gap of [0-9.]+ R under every sphere$" \
+  -- "$exe" "$pipeline" "${small[@]}" --set source.params.initial_file="$work/lifted.h5" --out "$work/lifted_out"
 # initial_frame or continue_count without initial_file would change nothing: refused.
 "$expect" 2 "source\\.params\\.initial_frame=1: expected it only with initial_file \\(a frame of that file\\), got 1 without one$" \
   -- "$exe" "$pipeline" "${small[@]}" --set source.params.initial_frame=1 --out "$work/fourth"
