@@ -52,12 +52,20 @@ void write_new_file(const fs::path& path, const std::string& content) {
 void move_into_place(const fs::path& from, const fs::path& to) {
   if (renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_NOREPLACE) == 0) return;
   int why = errno;
-  // A file system without RENAME_NOREPLACE: a hard link fails where `to` exists too.
-  if ((why == EINVAL || why == ENOSYS) && ::link(from.c_str(), to.c_str()) == 0) {
-    ::unlink(from.c_str());
-    return;
+  if (why == EINVAL || why == ENOSYS) {
+    // A file system without RENAME_NOREPLACE: a hard link fails where `to` exists too; one
+    // without hard links either (FUSE mounts) gets a rename where nothing is found.
+    if (::link(from.c_str(), to.c_str()) == 0) {
+      ::unlink(from.c_str());
+      return;
+    }
+    why = errno;
+    std::error_code ec;
+    if (why != EEXIST && fs::symlink_status(to, ec).type() == fs::file_type::not_found) {
+      if (std::rename(from.c_str(), to.c_str()) == 0) return;
+      why = errno;
+    }
   }
-  if (why == EINVAL || why == ENOSYS) why = errno;
   if (why == EEXIST) {
     throw InputError(to.string() +
                      ": expected no file of this name (the run writes it at its end), got one "

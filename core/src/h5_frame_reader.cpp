@@ -951,9 +951,11 @@ const FrameFileInfo& FrameReader::info() const { return impl_->info; }
 
 FrameReader::WallPlacements FrameReader::wall_placements() const { return impl_->allowed; }
 
-void FrameReader::place_walls_like(const std::array<bool, 3>& centred) {
+void FrameReader::place_walls_like(const std::array<bool, 3>& settled,
+                                   const std::array<bool, 3>& centred) {
   for (int a = 0; a < 3; ++a) {
-    if (impl_->allowed.at_zero[a] && impl_->allowed.centred[a]) impl_->centred[a] = centred[a];
+    if (settled[a] && impl_->allowed.at_zero[a] && impl_->allowed.centred[a])
+      impl_->centred[a] = centred[a];
   }
 }
 

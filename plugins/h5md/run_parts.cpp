@@ -153,17 +153,17 @@ RunParts::RunParts(const std::vector<std::string>& files, const std::vector<std:
 void RunParts::place_walls_alike() {
   for (const auto& part : parts_)
     if (part->info().granpipe_file) return;
-  std::array<bool, 3> centred{};
+  std::array<bool, 3> settled{}, centred{};
   for (int a = 0; a < 3; ++a) {
     bool at_zero = true, centre = true;
     for (const auto& part : parts_) {
       at_zero = at_zero && part->wall_placements().at_zero[a];
       centre = centre && part->wall_placements().centred[a];
     }
-    if (!at_zero && !centre) return;
+    settled[a] = at_zero || centre;  // else each part keeps its own, refused at the join
     centred[a] = !at_zero;
   }
-  for (const auto& part : parts_) part->place_walls_like(centred);
+  for (const auto& part : parts_) part->place_walls_like(settled, centred);
 }
 
 // The invariant kept: order_ lists every frame read so far once, steps rising. A later
@@ -202,7 +202,10 @@ void RunParts::append(std::size_t part, const std::string& name) {
   const bool granpipe = first_info().granpipe_file, also = reader.info().granpipe_file;
   const bool foreign = !granpipe && !also;
   auto [difference, detail] = what_differs(*saved, start, granpipe == also);
-  if (foreign && difference == "another container")
+  bool same_edges = true;
+  for (int a = 0; a < 3; ++a)
+    same_edges = same_edges && saved->container.length(a) == start.container.length(a);
+  if (foreign && same_edges && difference == "another container")
     detail += "; H5MD stores no origin, and no place of the walls holds every part's frames";
   if (!difference.empty()) {
     throw InputError(not_continued + "the parts before it hold, got " + difference + " than " +

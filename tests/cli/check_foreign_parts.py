@@ -65,6 +65,13 @@ with tempfile.TemporaryDirectory() as work:
                 "H5MD stores no origin, and no place of the walls holds every part's frames; not a continuation of it)")
     assert expected in r.stderr, r.stderr
 
+    # x placed alike (centred: the first part's first frame), z placed apart: the refusal
+    # names z, the axis where no placement holds every part's frames.
+    mixed = os.path.join(work, "q3.h5")
+    plain_h5md(mixed, [[[-1.0, 1.0, 7.0], [1.0, 3.0, 3.0]], two])
+    r = run(work, "mixed", '{"file": "%s", "continued_in": ["%s"]}' % (mixed, second))
+    assert r.returncode == 2 and "(extent along z -5 to 5, there 0 to 10;" in r.stderr, r.stderr
+
     escaped = os.path.join(work, "escaped.h5")
     plain_h5md(escaped, [[[-1.0, 1.0, 1.0], [1.0, 3.0, 3.0]], [[100.0, 1.0, 1.0], [1.0, 3.0, 3.0]]])
     r = run(work, "escaped", '{"file": "%s", "last": 0}' % escaped)

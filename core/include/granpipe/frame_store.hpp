@@ -75,9 +75,9 @@ class FrameReader {
     std::array<bool, 3> at_zero{true, true, true}, centred{true, true, true};
   };
   WallPlacements wall_placements() const;
-  // Puts the walls centred (true) or at [0, L] along each walled axis the frames allow both
-  // on, the other parts of a run having decided: a run's parts placed alike.
-  void place_walls_like(const std::array<bool, 3>& centred);
+  // Puts the walls centred (true) or at [0, L] along each `settled` walled axis the frames
+  // allow both on, the other parts of a run having decided: a run's parts placed alike.
+  void place_walls_like(const std::array<bool, 3>& settled, const std::array<bool, 3>& centred);
 
  private:
   struct Impl;
