@@ -30,6 +30,9 @@ PY
   -- "$exe" validate "$pipeline" --set 'source.params.protocol="ramp"' --set source.params.ramp_root_min=0.1 \
      --set source.params.ramp_root_step=0.1 --set source.params.ramp_root_max=0.25
 # A ramp of 2^62 taps a step counted -2^63 taps in all and ran none, exit 0.
-"$expect" 2 '^granpipe: --set source\.params\.ramp_taps_per_step=4611686018427387904: expected at most 9007199254740992 taps, got 2\.12138e\+20 \(ramp_taps_per_step x the values of sqrt\(epsilon\) over ramp_legs legs\)$' \
+"$expect" 2 '^granpipe: --set source\.params\.ramp_taps_per_step=4611686018427387904: expected fewer than 9007199254740992 taps, got 2\.12138e\+20 \(ramp_taps_per_step x the values of sqrt\(epsilon\) over ramp_legs legs\)$' \
   -- "$exe" validate "$pipeline" --set 'source.params.protocol="ramp"' --set source.params.ramp_taps_per_step=4611686018427387904
+# 2^53 + 1 taps is 2^53 in a double, and was let through.
+"$expect" 2 '^granpipe: --set source\.params\.taps=9007199254740993: expected fewer than 9007199254740992 taps, got 9\.0072e\+15 \(taps\)$' \
+  -- "$exe" validate "$pipeline" --set source.params.taps=9007199254740993
 echo "spheres3d_tap: the last tap saved; empty schedules, other protocols' parameters, ramps between steps and uncountable ramps refused"

@@ -286,7 +286,7 @@ TEST(DemSource, RelaxationIsCheckedAtFramesEvery1000StepsOrLess) {
 TEST(DemSource, ADurationOfMoreStepsThanCanBeCountedIsRefusedByName) {
   const fs::path file = start_file();
   EXPECT_EQ(refusal({{"initial_file", file.string()}, {"duration", 1e300}}),
-            "params.duration: expected at most 9007199254740992 time steps, got 5e+303 "
+            "params.duration: expected fewer than 9007199254740992 time steps, got 5e+303 "
             "(duration / dt, dt 0.0002)");
   fs::remove(file);
 }

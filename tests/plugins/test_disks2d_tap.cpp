@@ -713,23 +713,23 @@ TEST(Disks2dTapSource, TapCountsPastWhatCanBeCountedAreRefused) {
   };
   const auto most = std::numeric_limits<std::int64_t>::max();
   EXPECT_EQ(refusal({{"production_taps", most}}),
-            "params.production_taps: expected at most 9007199254740992 taps, got "
+            "params.production_taps: expected fewer than 9007199254740992 taps, got "
             "9.22337e+18 (cooling levels x cool_taps_per_step + equilibration_taps + "
             "production_taps)");
   EXPECT_EQ(refusal({{"cool_from", 1.3}, {"cool_step", 1e-320}}),
-            "params.cool_step: expected at most 9007199254740992 cooling levels, got inf "
+            "params.cool_step: expected fewer than 9007199254740992 cooling levels, got inf "
             "((cool_from - A) / cool_step)");
   // Each names the parameter that made the count absurd (cool_step and production_taps
   // were named for these two).
   EXPECT_EQ(refusal({{"cool_from", 1e300}}),
-            "params.cool_from: expected at most 9007199254740992 cooling levels, got 5e+301 "
+            "params.cool_from: expected fewer than 9007199254740992 cooling levels, got 5e+301 "
             "((cool_from - A) / cool_step)");
   EXPECT_EQ(refusal({{"equilibration_taps", most}}),
-            "params.equilibration_taps: expected at most 9007199254740992 taps, got "
+            "params.equilibration_taps: expected fewer than 9007199254740992 taps, got "
             "9.22337e+18 (cooling levels x cool_taps_per_step + equilibration_taps + "
             "production_taps)");
   EXPECT_EQ(refusal({{"protocol", "annealed"}, {"anneal_cycles", most / 2}}),
-            "params.anneal_cycles: expected at most 9007199254740992 taps, got "
+            "params.anneal_cycles: expected fewer than 9007199254740992 taps, got "
             "1.84467e+22 (2 anneal_cycles x anneal_steps x anneal_taps_per_step)");
 }
 
