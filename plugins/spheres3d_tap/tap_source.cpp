@@ -321,9 +321,11 @@ void TapSource::check_saved_tap(const SavedPacking& saved) const {
 // The continued run's protocol must be the one that made the saved tap: another epsilon
 // (or a ramp for a constant run) labelled the saved packing with the new protocol's values,
 // and parts read as one run joined two protocols into one series (exit 0). Tap 0, the
-// deposition, was made by none.
+// deposition, was made by none; nor says a continued part's start frame written before
+// 2026-11-28 (labelled as a deposition, epsilon 0 and leg -1, at its saved tap) which.
 void TapSource::check_saved_protocol(const SavedPacking& saved) const {
   if (saved.step == 0) return;
+  if (saved.epsilon == 0.0 && saved.leg == -1) return;
   const EpsilonAt here = protocol_.at(saved.step);
   const bool same_epsilon =
       !saved.epsilon || std::abs(*saved.epsilon - here.epsilon) <= 1e-12 * here.epsilon;

@@ -104,6 +104,17 @@ PY
   -- "$exe" "$pipeline" "${small[@]}" --set source.params.initial_file="$work/first/frames.h5" \
   --set source.params.initial_frame=1 --set source.params.continue_count=true \
   --set source.params.taps=4 --set source.params.epsilon=0.3 --out "$work/other_epsilon"
+# A continued part's start frame of an older granpipe, labelled as a deposition (epsilon 0,
+# leg -1) at its saved tap, is continued (the chains kept in docs/data/ hold such frames).
+cp "$work/first/frames.h5" "$work/old_label.h5"
+"$python" - "$work/old_label.h5" <<'PY'
+import sys, h5py
+with h5py.File(sys.argv[1], "r+") as f:
+    f["observables/epsilon/value"][1] = 0.0
+    f["observables/leg/value"][1] = -1
+PY
+"$exe" validate "$pipeline" --set source.params.initial_file="$work/old_label.h5" \
+  --set source.params.initial_frame=1 --set source.params.continue_count=true --set source.params.taps=4 >/dev/null
 # A frame without a tap (another tool's), or whose step is not its tap, gives no tap to count on
 # from; a file that is not HDF5 is refused naming the parameter.
 cp "$work/first/frames.h5" "$work/no_tap.h5"
