@@ -23,7 +23,7 @@ class StiffnessFit {
   std::optional<double> damping() const;
   // The root mean square of what the fitted line leaves of the forces, over the root mean
   // square force: rounding for frames of the linear law, a few hundredths for Hertz's
-  // F ~ delta^(3/2). Nothing where the fit is.
+  // F ~ delta^(3/2). Nothing where stiffness() and damping() are nothing.
   std::optional<double> relative_residual() const;
 
  private:
