@@ -48,6 +48,22 @@ double height_of(const std::array<Eigen::Vector3d, 4>& p) {
   return six_volume / largest_double_area;
 }
 
+// How far the circumcentre c of corners p_i may move when each is moved by at most
+// d = eps |p_i| (its coordinates' rounding): solving (p_i - p_0) . c' = |p_i - p_0|^2 / 2,
+// c' = c - p_0, the right side and matrix move by 2dL and 2d (L the longest edge, r = |c'|),
+// and the inverse matrix is at most sqrt(3) L^2 / 6V, hence 6 d L^2 (L + r) / 6V; plus the
+// rounding of the formula in cell_of (its terms at most L^4, and 6V's L^3), a few eps L
+// in place of d. Nothing for a flat cell, which is no pore.
+float uncertainty_of(const std::array<Eigen::Vector3d, 4>& p, double longest_squared, double radius,
+                     double six_volume) {
+  double farthest = 0.0;
+  for (const Eigen::Vector3d& x : p) farthest = std::max(farthest, x.norm());
+  const double edge = std::sqrt(longest_squared);
+  const double bound = std::numeric_limits<double>::epsilon() * (6.0 * farthest + 64.0 * edge) *
+                       longest_squared * (edge + radius) / std::abs(six_volume);
+  return static_cast<float>(bound);
+}
+
 // The circumsphere from the corners relative to the first (as CGAL's circumcenter), and
 // whether the cell is lower than `length`. Its height is at least 6V over the longest edge
 // squared (a face's double area is at most that): only the cells this leaves in doubt have
@@ -71,6 +87,7 @@ DelaunayCell cell_of(const CellTopology& topology, const std::array<Point, 4>& c
                    (c - a).squaredNorm(), (c - b).squaredNorm()});
   cell.flat = std::abs(six_volume) < 1.001 * length * longest && height_of(p) < length;
   cell.close_corners = shortest < length * length;
+  if (!cell.flat) cell.uncertainty = uncertainty_of(p, longest, cell.radius, six_volume);
   return cell;
 }
 

@@ -16,6 +16,10 @@ namespace granpipe::pores {
 
 struct DelaunayCell : DualCell {
   double radius = 0.0;  // of the circumsphere
+  // A bound on how far the centre (and radius) may be from the circumsphere of the corners
+  // as they were before their coordinates were rounded to doubles, the computation's own
+  // rounding included: a thin cell's is large. (In the padding after the flags.)
+  float uncertainty = 0.0F;
   // Its smallest height (distance from a corner to the plane of the other three) is below
   // the length given: its four centres are in one plane at that precision.
   bool flat = false;

@@ -15,19 +15,26 @@ namespace granpipe::pores {
 
 namespace {
 
-bool same_sphere(const DelaunayCell& a, const DelaunayCell& b, double tolerance) {
-  return std::abs(a.radius - b.radius) <= tolerance &&
-         (a.centre - b.centre).squaredNorm() <= tolerance * tolerance;
-}
-
+// Cells of one pore are those whose circumspheres agree within `length` (tolerance R),
+// widened by what their rounded corners leave undetermined (DelaunayCell::uncertainty): a
+// site ringed by thousands of cospherical spheres has cells so thin that their centres,
+// even computed exactly from the rounded coordinates, scatter 1e-7 R. The widening stops
+// at `widest` (a thousandth of R): the cells of the hull, or of a flat bottom layer, are
+// known to no better than R and would join pores far apart.
 struct SameSphere {
   const std::vector<DelaunayCell>& cells;
   double length;
+  double widest;
   std::vector<ParticlePair> pairs;
 
   bool pore(std::uint32_t i) const { return i != kHull && cells[i].pore && !cells[i].flat; }
+  bool same_sphere(const DelaunayCell& a, const DelaunayCell& b) const {
+    const double within = length + std::min(double{a.uncertainty} + double{b.uncertainty}, widest);
+    return std::abs(a.radius - b.radius) <= within &&
+           (a.centre - b.centre).squaredNorm() <= within * within;
+  }
   void compare(std::uint32_t i, std::uint32_t j) {
-    if (pore(i) && pore(j) && same_sphere(cells[i], cells[j], length))
+    if (pore(i) && pore(j) && same_sphere(cells[i], cells[j]))
       pairs.emplace_back(std::int64_t{i}, std::int64_t{j});
   }
   // Cell i with its neighbours after it, or a flat cell's neighbours with each other.
@@ -54,15 +61,15 @@ void prefetch_neighbours(const std::vector<DelaunayCell>& cells, std::size_t i) 
 
 // The pairs of cells of one sphere, each thread comparing a run of cells: concatenated in
 // the runs' order, they come in the cells' order whatever the threads.
-std::vector<ParticlePair> same_sphere_pairs(const std::vector<DelaunayCell>& cells, double length,
-                                            int threads) {
+std::vector<ParticlePair> same_sphere_pairs(const SameSphere& rule, int threads) {
+  const std::vector<DelaunayCell>& cells = rule.cells;
   std::vector<std::vector<ParticlePair>> runs(static_cast<std::size_t>(threads));
   ParallelErrors errors;
 #pragma omp parallel num_threads(threads)
   errors.run([&] {
     const auto part = static_cast<std::size_t>(omp_get_thread_num());
     const auto parts = static_cast<std::size_t>(omp_get_num_threads());
-    SameSphere same{cells, length, {}};
+    SameSphere same{cells, rule.length, rule.widest, {}};
     for (std::size_t i = cells.size() * part / parts; i < cells.size() * (part + 1) / parts; ++i) {
       if (i + kPrefetchAhead < cells.size()) prefetch_neighbours(cells, i + kPrefetchAhead);
       same.compare_around(static_cast<std::uint32_t>(i));
@@ -79,11 +86,10 @@ std::vector<ParticlePair> same_sphere_pairs(const std::vector<DelaunayCell>& cel
 
 MergedPores merge_cells(const std::vector<DelaunayCell>& cells, double radius, double tolerance,
                         int threads) {
-  const double length = tolerance * radius;
-  const SameSphere same{cells, length, {}};
+  const SameSphere same{cells, tolerance * radius, 1e-3 * radius, {}};
   // The groups among the cells of some pair alone (a random packing has few), numbered
   // in the cells' order, so that the labels are those of all cells.
-  std::vector<ParticlePair> pairs = same_sphere_pairs(cells, length, threads);
+  std::vector<ParticlePair> pairs = same_sphere_pairs(same, threads);
   std::vector<std::int64_t> paired;
   for (const auto& [i, j] : pairs) paired.insert(paired.end(), {i, j});
   std::sort(paired.begin(), paired.end());

@@ -26,8 +26,9 @@ Schema schema() {
   const auto probing = [](const Params& p) { return p.integer("probes") > 0; };
   Schema s;
   s.real("tolerance", 1e-9,
-         "two Delaunay cells whose circumspheres agree within tolerance * R (centre and radius) "
-         "are one pore; a cell thinner than tolerance * R is flat and no pore")
+         "two Delaunay cells whose circumspheres agree within tolerance * R (centre and radius; "
+         "widened by what rounding leaves of a thin cell's sphere) are one pore; a cell thinner "
+         "than tolerance * R is flat and no pore")
       .range(1e-14, 1e-3)
       .unit("particle radii");
   declare_max_overlap(s, 0.05,

@@ -674,3 +674,28 @@ TEST(Pores, ARegionWithoutPoresIsSaid) {
             "warning: pores: 1 of 1 frame(s) have no particle centre in the region: their "
             "pores_per_sphere is undefined (NaN), and so is the pooled one");
 }
+
+// Spheres centred on one large sphere (a Fibonacci spiral, about 3 R apart): every cell
+// of the triangulation has that sphere as its circumsphere, so there is one pore. The
+// thinnest cells' circumcentres scattered 1e-7 R (exact arithmetic on the rounded
+// coordinates as well) and split it into 16 pores without a word.
+TEST(Pores, ManyCosphericalSpheresMakeOnePore) {
+  const int n = 5000;
+  const double ring = 32.0;
+  Frame f;
+  f.resize(n, 3);
+  f.radius().setConstant(0.5);
+  const double golden = M_PI * (3.0 - std::sqrt(5.0));
+  for (int k = 0; k < n; ++k) {
+    const double z = 1.0 - (2.0 * k + 1.0) / n;
+    const double r = std::sqrt(1.0 - z * z);
+    f.position().row(k) << ring * r * std::cos(golden * k), ring * r * std::sin(golden * k),
+        ring * z;
+  }
+  f.container.lo.setConstant(-40);
+  f.container.hi.setConstant(40);
+  const PoreMeasurement m = measure_pores(f, std::nullopt, 1e-9, "test");
+  ASSERT_EQ(m.xi.size(), 1u);
+  EXPECT_EQ(m.pores[0].cells, m.cells);
+  EXPECT_NEAR(m.xi[0], ring / 0.5 - 1.0, 1e-9);
+}
