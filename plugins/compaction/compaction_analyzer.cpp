@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "granpipe/errors.hpp"
+#include "granpipe/format_number.hpp"
 
 namespace granpipe::compaction {
 
@@ -84,10 +86,29 @@ CompactionAnalyzer::CompactionAnalyzer(const PluginContext& ctx)
   }
 }
 
+// The laws, the steady state and the ageing are of one epsilon: a ramp's frames made a
+// "steady state" of four epsilons and its spectrum, exit 0 (the deposition, tap 0, has none).
+void CompactionAnalyzer::check_one_epsilon(const Frame& frame, double tap,
+                                           const std::string& where) {
+  const std::optional<double> epsilon = frame.real_observable("epsilon");
+  if (!epsilon || tap == 0.0) return;
+  if (!epsilon_) {
+    epsilon_ = epsilon;
+    epsilon_frame_ = where;
+    return;
+  }
+  if (std::abs(*epsilon - *epsilon_) <= 1e-12 * std::abs(*epsilon_)) return;
+  throw InputError(where + ": expected the epsilon of " + epsilon_frame_ + ", " +
+                   format_number(*epsilon_) + ", got " + format_number(*epsilon) +
+                   " (compaction measures a run at one epsilon; a ramp's steps: stereology's "
+                   "by_leg table)");
+}
+
 void CompactionAnalyzer::consume(const Frame& frame, FrameCache&) {
   const std::string where = frame_name(frames_, frame);
   const FramePoint p = measure_frame(frame, stereology_, where);
   check_tap_follows(where, p.tap, series_);
+  check_one_epsilon(frame, p.tap, where);
   if (!p.undefined.empty()) undefined_.warn(log_, where + ": " + p.undefined);
   series_.add(p);
   per_frame_.add_row({static_cast<double>(frames_), p.tap, p.z_mean, p.phi_b, p.phi_c, p.height_c});

@@ -1,5 +1,6 @@
 #include "compaction_report.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
@@ -116,10 +117,17 @@ void report_fits(const Series& s, double from, double to, Results& results, Log&
   add_fitted_curves(range, fits, results);
 }
 
-void report_steady_state(const Series& ss, Results& results) {
+void report_steady_state(const Series& ss, Results& results, Log& log) {
   for (const Quantity& q : kQuantities) {
     const SteadyState st = steady_state(ss.*q.values);
     const std::string name = q.name;
+    // steady_frames counts every frame: say when a mean is of fewer.
+    const auto all = static_cast<long>(ss.tap.size());
+    if (st.frames > 0 && st.frames < all) {
+      log.warn("compaction: " + name + " is undefined in " + std::to_string(all - st.frames) +
+               " of the " + std::to_string(all) + " steady-state frames: " + name + "_ss and " +
+               name + "_sigma are of the " + std::to_string(st.frames) + " with a value");
+    }
     results.add_scalar(
         name + "_ss", st.mean, st.mean_error, q.unit,
         "steady-state mean of " + name + " (error as if the frames were independent)");
@@ -154,7 +162,14 @@ void report_spectrum(const Series& ss, Results& results, Log& log) {
     for (std::size_t k : even.index) values.push_back((ss.*kQuantities[q].values)[k]);
     if (enough) spectra[q] = power_spectrum(values, even.spacing);
     const Slope slope = log_log_slope(spectra[q]);
-    if (enough && std::isnan(slope.value)) {
+    const auto undefined =
+        std::count_if(values.begin(), values.end(), [](double v) { return !std::isfinite(v); });
+    if (enough && undefined > 0) {
+      log.warn(std::string("compaction: the power spectrum of ") + kQuantities[q].name +
+               " and its slope are undefined (NaN): " + kQuantities[q].name + " is undefined in " +
+               std::to_string(undefined) + " of the " + std::to_string(values.size()) +
+               " evenly spaced frames");
+    } else if (enough && std::isnan(slope.value)) {
       log.warn(std::string("compaction: the power spectrum of ") + kQuantities[q].name +
                " is zero at all but " + std::to_string(positive_powers(spectra[q])) +
                " frequencies (it hardly fluctuates); its slope is left undefined");
@@ -255,7 +270,7 @@ void report_compaction(const Series& series, const ReportSettings& settings, Res
   results.add_scalar("steady_from", steady_from, std::nan(""), "taps",
                      "first tap of the steady state");
   const Series ss = within(series, steady_from, last);
-  report_steady_state(ss, results);
+  report_steady_state(ss, results, log);
   report_spectrum(ss, results, log);
   report_ageing(series, settings.waiting_times, results, log);
 }

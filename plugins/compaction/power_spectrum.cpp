@@ -9,6 +9,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <unordered_map>
 
 #include "granpipe/errors.hpp"
 
@@ -46,19 +47,28 @@ EvenFrames evenly_spaced(const std::vector<double>& taps) {
   EvenFrames even;
   if (taps.empty()) return even;
   const std::int64_t gap = commonest_gap(taps);
-  std::size_t k = taps.size() - 1;
-  even.index.push_back(k);
-  if (gap <= 0) return even;
+  if (gap <= 0) {
+    even.index.push_back(taps.size() - 1);
+    return even;
+  }
   even.spacing = static_cast<double>(gap);
-  std::int64_t next = whole(taps[k]) - gap;
-  while (k-- > 0) {
+  // Each frame's place in the unbroken grid ending at it; the longest grid wins, the latest
+  // of equally long ones (a last frame off the grid, the run's end, took the grid with it).
+  std::unordered_map<std::int64_t, std::size_t> frame_at, grid_length;
+  std::size_t end = 0, longest = 0;
+  for (std::size_t k = 0; k < taps.size(); ++k) {
     const std::int64_t t = whole(taps[k]);
-    if (t < next) break;  // the grid tap `next` has no frame
-    if (t == next) {
-      even.index.insert(even.index.begin(), k);
-      next -= gap;
+    const auto before = grid_length.find(t - gap);
+    const std::size_t length = (before == grid_length.end() ? 0 : before->second) + 1;
+    frame_at[t] = k;
+    grid_length[t] = length;
+    if (length >= longest) {
+      longest = length;
+      end = k;
     }
   }
+  for (std::size_t i = longest; i-- > 0;)
+    even.index.push_back(frame_at[whole(taps[end]) - static_cast<std::int64_t>(i) * gap]);
   return even;
 }
 
@@ -66,6 +76,15 @@ Spectrum power_spectrum(const std::vector<double>& values, double spacing) {
   Spectrum s;
   const std::size_t n = values.size();
   if (n < 2) return s;
+  // A value undefined leaves the mean, and with it every power, undefined (its deviations
+  // passed as none, and the spectrum came out zero).
+  if (std::any_of(values.begin(), values.end(), [](double v) { return !std::isfinite(v); })) {
+    for (std::size_t k = 1; 2 * k <= n; ++k) {
+      s.frequency.push_back(static_cast<double>(k) / (static_cast<double>(n) * spacing));
+      s.power.push_back(std::nan(""));
+    }
+    return s;
+  }
   double mean = 0.0;
   for (double v : values) mean += v / static_cast<double>(n);
   std::vector<double> data;

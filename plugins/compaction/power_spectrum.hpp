@@ -5,8 +5,8 @@
 // A discrete spectrum needs frames evenly spaced in taps. A tapping run saves every
 // save_every-th tap and, with log_frames, taps ten per decade between them; the spectrum
 // uses only the frames on one grid: the spacing is the commonest gap between consecutive
-// frames (the larger of equally common ones), the grid ends at the last frame, and it runs
-// back as long as every grid tap has a frame (the longest unbroken stretch at the end).
+// frames (the larger of equally common ones), and the frames are the longest unbroken
+// stretch of a grid of that spacing (the latest of equally long ones).
 #include <cmath>
 #include <cstddef>
 #include <string>
@@ -28,7 +28,7 @@ struct Spectrum {
 };
 
 // The periodogram of `values` minus their mean, sampled every `spacing` taps (GSL's
-// mixed-radix real FFT, any length).
+// mixed-radix real FFT, any length); every power NaN if a value is.
 Spectrum power_spectrum(const std::vector<double>& values, double spacing);
 
 struct Slope {

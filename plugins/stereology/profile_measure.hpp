@@ -18,6 +18,10 @@
 
 namespace granpipe::stereology {
 
+// The narrowest zone measured, in mean radii: lateral_band's least value, and the least
+// width of the central zone (a narrower one leaves phi_central undefined).
+constexpr double kNarrowestZone = 1e-3;
+
 struct ProfileSettings {
   StereologySettings global;
   double step = 0.1;  // R
@@ -31,7 +35,7 @@ struct ProfileMeasurement {
   GlobalFractions global;
   double transversal_step = 0.0;  // R: the width over a whole number of bins
   std::vector<double> vertical, transversal;
-  double lateral = 0.0, central = 0.0;  // NaN: no central zone (width <= 2 bands)
+  double lateral = 0.0, central = 0.0;  // NaN: no central zone (narrower than kNarrowestZone)
   CurveFit fit;                         // Eq. (7)
 };
 

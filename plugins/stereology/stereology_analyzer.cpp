@@ -21,8 +21,9 @@ Schema schema() {
   // rounding made it negative.
   s.real("lateral_band", 7.0,
          "the lateral fraction is that within this distance of either side across x, the "
-         "central fraction that of the rest; at least 0.001")
-      .min(1e-3)
+         "central fraction that of the rest (undefined where narrower than 0.001); at least "
+         "0.001")
+      .min(kNarrowestZone)
       .unit("mean radii");
   s.real("fit_from", 5.0, "Eq. (7) is fitted to the vertical profile from this height up")
       .min(0.0)
@@ -119,7 +120,8 @@ void StereologyAnalyzer::warn_undefined(const Frame& frame, const ProfileMeasure
   std::string why = undefined_fractions(m.global, settings_.global);
   if (std::isnan(m.central)) {
     why += std::string(why.empty() ? "" : "; ") +
-           "phi_central is undefined (NaN): the box is no wider than two bands of lateral_band, " +
+           "phi_central is undefined (NaN): the box leaves less than " +
+           format_number(kNarrowestZone) + " R beside two bands of lateral_band, " +
            format_number(settings_.lateral_band) + " R";
   }
   if (why.empty()) return;

@@ -226,6 +226,31 @@ TEST(Compaction, TheSpectrumUsesTheLastUnbrokenGridOfFrames) {
   EXPECT_EQ(used, (std::vector<double>{70, 80, 90, 100, 110, 120}));
 }
 
+// A run of 65 taps saving every 2nd and its last: the grid was anchored at tap 65, whose
+// neighbour 63 has no frame, and the spectrum had 1 frame of 33.
+TEST(Compaction, ALastFrameOffTheGridLeavesTheGridBeforeIt) {
+  std::vector<double> taps;
+  for (int t = 0; t <= 64; t += 2) taps.push_back(t);
+  taps.push_back(65);
+  const EvenFrames even = evenly_spaced(taps);
+  EXPECT_EQ(even.spacing, 2.0);
+  ASSERT_EQ(even.index.size(), 33u);
+  EXPECT_EQ(taps[even.index.front()], 0.0);
+  EXPECT_EQ(taps[even.index.back()], 64.0);
+}
+
+// A NaN among the values made the mean NaN, every deviation was passed as none and the
+// spectrum came out zero at every frequency, exit 0.
+TEST(Compaction, AnUndefinedValueLeavesTheSpectrumUndefined) {
+  std::vector<double> x{1.0, 2.0, 1.5, 0.5, 1.0, 2.5, 1.0, 0.0};
+  x[3] = std::nan("");
+  const Spectrum s = power_spectrum(x, 1.0);
+  ASSERT_EQ(s.power.size(), 4u);
+  for (double p : s.power) EXPECT_TRUE(std::isnan(p));
+  EXPECT_EQ(s.frequency.back(), 0.5);
+  EXPECT_TRUE(std::isnan(log_log_slope(s).value));
+}
+
 // One frame shows no fluctuation and no spacing: sigma and the spectrum's spacing were 0.
 TEST(Compaction, OneFrameLeavesSigmaAndSpacingUndefined) {
   const SteadyState s = steady_state({2.0});
@@ -439,6 +464,58 @@ TEST(Compaction, AnEmptyFitRangeAndALastWaitingTimeAreSaid) {
   EXPECT_TRUE(
       said("warning: compaction: Eq. (6) not fitted at t_w = 1 (ageing_fits' status); its "
            "parameters there are left undefined"));
+}
+
+// phi_b undefined in every other frame (bulk_top above the two-layer stacks): its spectrum
+// was zero at every frequency with "it hardly fluctuates", and steady_frames said 10 where
+// phi_b_ss was of 5, without a word.
+TEST(Compaction, FramesWithoutAValueAreSaidInTheSteadyStateAndSpectrum) {
+  std::vector<Frame> frames;
+  for (int tap = 0; tap < 20; ++tap) {
+    const Frame stack = cubic_stack(tap);
+    if (tap % 2 == 0) {
+      frames.push_back(stack);
+      continue;
+    }
+    Frame f;  // the top layer taken off
+    f.resize(18, 3);
+    f.radius().setConstant(1.0);
+    f.position() = stack.position().topRows(18);
+    f.container = stack.container;
+    f.set_observable({"tap", Scope::Frame, ValueType::Integer, 1, "", "tap"}, std::int64_t{tap});
+    frames.push_back(f);
+  }
+  const Analysis a = analyze_logged(frames, {{"bulk_top", 5.0}});
+  EXPECT_EQ(a.results.scalar("steady_frames").value, 10.0);
+  // Two whole layers and the halves of the third below 5 R: the simple cubic pi / 6.
+  EXPECT_NEAR(a.results.scalar("phi_b_ss").value, M_PI / 6.0, 1e-12);
+  EXPECT_TRUE(std::isnan(a.results.scalar("spectrum_slope_phi_b").value));
+  for (double p : a.results.tables().at("spectrum").column("phi_b")) EXPECT_TRUE(std::isnan(p));
+  const auto said = [&](const std::string& line) {
+    return std::count(a.log.begin(), a.log.end(), line);
+  };
+  EXPECT_EQ(said("warning: compaction: phi_b is undefined in 5 of the 10 steady-state frames: "
+                 "phi_b_ss and phi_b_sigma are of the 5 with a value"),
+            1);
+  EXPECT_EQ(said("warning: compaction: the power spectrum of phi_b and its slope are undefined "
+                 "(NaN): phi_b is undefined in 5 of the 10 evenly spaced frames"),
+            1);
+}
+
+// A ramp's frames (epsilon 0.01, then 0.0225) made one "steady state" and spectrum, exit 0.
+TEST(Compaction, FramesOfAnotherEpsilonAreRefused) {
+  const Property epsilon{"epsilon", Scope::Frame, ValueType::Real, 1, "", "dilation"};
+  std::vector<Frame> frames = cubic_stacks({0, 1, 2, 3});
+  for (std::size_t k = 0; k < frames.size(); ++k)
+    frames[k].set_observable(epsilon, k == 0 ? 0.0 : k < 3 ? 0.01 : 0.0225);
+  const auto ctx = test::make_context("compaction", {});
+  CompactionAnalyzer analyzer(*ctx);
+  FrameCache cache;
+  for (std::size_t k = 0; k < 3; ++k) analyzer.consume(frames[k], cache);
+  EXPECT_EQ(granpipe::test::input_error_of([&] { analyzer.consume(frames[3], cache); }),
+            "compaction: frame 3 (step 0): expected the epsilon of compaction: frame 1 (step "
+            "0), 0.01, got 0.0225 (compaction measures a run at one epsilon; a ramp's steps: "
+            "stereology's by_leg table)");
 }
 
 // A few taps of the 3D source: <Z> is its own mean_height observable in radii.

@@ -113,6 +113,21 @@ TEST(ProfileMeasure, TheHeightOfAFractionOfTheCentresCountsWholeCentres) {
   }
 }
 
+// A central zone 2e-10 R wide (lateral_band a hair under half the width) had the fraction
+// of the rounding of the cuts around it: 0.05 where the plane holds pi / 4, exit 0. Under
+// 0.001 R it is none; at 0.002 R, through the spheres' centres, the plane's pi / 4 less the
+// thin slab's mean of x^2 (the disks' area pi (1 - x^2)).
+TEST(ProfileMeasure, ACentralZoneTooNarrowToMeasureIsUndefined) {
+  ProfileSettings s;
+  s.step = 0.5;
+  s.lateral_band = 4.9999999999;
+  EXPECT_TRUE(std::isnan(measure_profiles(cubic_layers(5, 10), s).central));
+  s.lateral_band = 4.999;
+  const ProfileMeasurement m = measure_profiles(cubic_layers(5, 10), s);
+  ASSERT_EQ(m.global.height_c, 17.0);  // eight whole layers of disks and half the ninth
+  EXPECT_NEAR(m.central, kPi / 4.0 * (1.0 - 1e-6 / 3.0), 1e-9);
+}
+
 // A vibrated base: the walls displaced by the wall offset. The bed moved down with its base
 // measures as it did at rest (phi_b was taken 0..4R above the rest place, exit 0).
 TEST(ProfileMeasure, HeightsAreAboveTheBaseWhereItIsAtTheFrame) {
@@ -261,7 +276,7 @@ TEST(StereologyAnalyzer, UndefinedFractionsAreNaNAndSaidOnce) {
       ctx->logged_lines(),
       "warning: stereology: frame 0 (step 0): phi_b is undefined (NaN): bulk_top, 40 R, "
       "reaches above the highest particle top, 20 R; phi_central is undefined (NaN): the "
-      "box is no wider than two bands of lateral_band, 7 R; said for the first such frame "
-      "only",
+      "box leaves less than 0.001 R beside two bands of lateral_band, 7 R; said for the first "
+      "such frame only",
       "undefined (NaN)");
 }
