@@ -60,10 +60,9 @@ constexpr double kSpheresOnAPlane = 16.0 / 11.0;
 double perturbed_factor(const Frame& frame, const StereologySettings& s) {
   if (s.perturbed_factor > 0.0) return s.perturbed_factor;
   if (frame.dim == 3) return kSpheresOnAPlane;
-  throw InputError(
-      "perturbed_factor: expected a factor for disks (the paper's 16/11 is for "
-      "spheres on a plane; 1: no correction), got 0 (the paper's value, which has none for "
-      "disks)");
+  throw InputError(s.factor_name +
+                   ": expected a factor for disks (the paper's 16/11 is for spheres on a plane; "
+                   "1: no correction), got 0 (the paper's value, which has none for disks)");
 }
 
 }  // namespace
@@ -81,16 +80,18 @@ void declare_stereology_settings(Schema& s) {
          "phi_c multiplies the bottom layer's fraction by this; 0: the perturbed-zone "
          "model's 16/11 for spheres on a plane (the paper gives none for disks: 2D frames "
          "need a factor given); 1: no correction")
-      .min(0.0);
+      .min(0.0)
+      .only_where("perturbed_top > 0",
+                  [](const Params& p) { return p.real("perturbed_top") > 0.0; });
   s.real("fraction", d.fraction,
          "phi_c's zone reaches the height below which this fraction of the centres lie")
       .min(0.0, true)
       .max(1.0);
 }
 
-StereologySettings stereology_settings(const Params& p) {
+StereologySettings stereology_settings(const Params& p, std::string factor_name) {
   return {p.real("bulk_top"), p.real("perturbed_top"), p.real("perturbed_factor"),
-          p.real("fraction")};
+          p.real("fraction"), std::move(factor_name)};
 }
 
 GlobalFractions global_fractions(const Frame& frame, const StereologySettings& s) {
@@ -123,10 +124,10 @@ GlobalFractions global_fractions(const Frame& frame, const StereologySettings& s
         layer > 0.0 ? factor * fraction_between(frame, cross, 0.0, layer) : 0.0;
     // A layer more than full is no packing (a factor of 1e300 gave phi_c 1.9e298, exit 0).
     if (corrected > 1.0) {
-      throw InputError(
-          "perturbed_factor: expected a correction that leaves the "
-          "bottom layer's fraction at most 1, got " +
-          format_number(factor) + ", which makes it " + format_number(corrected));
+      throw InputError(s.factor_name +
+                       ": expected a correction that leaves the bottom layer's fraction at most "
+                       "1, got " +
+                       format_number(factor) + ", which makes it " + format_number(corrected));
     }
     g.phi_c = (corrected * layer + fraction_between(frame, cross, layer, h) * (h - layer)) / h;
   }

@@ -72,7 +72,7 @@ CompactionAnalyzer::CompactionAnalyzer(const PluginContext& ctx)
                              "<phi^c> and the top of <phi^c>'s zone, in mean radii R",
                              {"", "", "R", "", "", "R"}))) {
   const Params& p = ctx.params;
-  stereology_ = stereology_settings(p);
+  stereology_ = stereology_settings(p, ctx.param("perturbed_factor"));
   report_.fit_from = p.real("fit_from");
   report_.fit_to = p.real("fit_to");
   report_.steady_from = p.real("steady_from");

@@ -70,7 +70,7 @@ StereologyAnalyzer::StereologyAnalyzer(const PluginContext& ctx)
   const Params& p = ctx.params;
   settings_.step = p.real("step");
   if (!ctx.params_path.empty()) settings_.params = ctx.params_path;
-  settings_.global = stereology_settings(p);
+  settings_.global = stereology_settings(p, ctx.param("perturbed_factor"));
   settings_.lateral_band = p.real("lateral_band");
   settings_.fit_from = p.real("fit_from");
 }

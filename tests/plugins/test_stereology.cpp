@@ -182,6 +182,30 @@ TEST(StereologyAnalyzer, ACorrectionThatOverfillsTheBottomLayerIsRefused) {
             "fraction at most 1, got 2, which makes it 1.0472");
 }
 
+// The factor's refusals named "perturbed_factor" without its path; a factor given with no
+// layer to correct (perturbed_top 0) was taken without a word.
+TEST(StereologyAnalyzer, ThePerturbedFactorIsNamedByItsPathAndNeedsALayer) {
+  EXPECT_EQ(
+      granpipe::test::input_error_of([] {
+        granpipe::test::make_context(schema(), {{"perturbed_top", 0.0}, {"perturbed_factor", 2}});
+      }),
+      "test: params.perturbed_factor: expected its default 0 (it acts only with "
+      "perturbed_top > 0; here perturbed_top is 0), got 2");
+  Frame disks;
+  disks.dim = 2;
+  disks.container.hi = Eigen::Vector3d(8.0, 10.0, 0.0);
+  disks.resize(4, 2);
+  disks.radius().setConstant(1.0);
+  disks.position() << 1, 1, 3, 1, 5, 1, 7, 1;
+  const auto ctx = granpipe::test::make_context(schema(), {});
+  StereologyAnalyzer a(*ctx);
+  FrameCache cache;
+  EXPECT_EQ(granpipe::test::input_error_of([&] { a.consume(disks, cache); }),
+            "params.perturbed_factor: expected a factor for disks (the paper's 16/11 is for "
+            "spheres on a plane; 1: no correction), got 0 (the paper's value, which has none "
+            "for disks)");
+}
+
 // A centre beyond an open side was left out of phi, and counted in H and <Z> (exit 0).
 TEST(StereologyAnalyzer, ACentreBeyondAnOpenSideIsRefused) {
   Frame f = cubic_layers(4, 3);

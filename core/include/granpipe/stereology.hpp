@@ -21,6 +21,8 @@ struct StereologySettings {
   double perturbed_top = 1.0;     // R
   double perturbed_factor = 0.0;  // the bottom layer's correction; 0: 16/11 for spheres
   double fraction = 0.9;          // of the centres, below the top of phi_c's zone
+  // How messages name perturbed_factor: its path in the pipeline (analyzers[0].params...).
+  std::string factor_name = "perturbed_factor";
 };
 
 struct GlobalFractions {
@@ -34,9 +36,10 @@ struct GlobalFractions {
 };
 
 // The four settings as parameters of an analyzer's schema (bulk_top, perturbed_top,
-// perturbed_factor, fraction), and read back from its validated parameters.
+// perturbed_factor, fraction), and read back from its validated parameters, the factor's
+// refusals naming it `factor_name` (ctx.param("perturbed_factor")).
 void declare_stereology_settings(Schema& schema);
-StereologySettings stereology_settings(const Params& params);
+StereologySettings stereology_settings(const Params& params, std::string factor_name);
 
 // Throws InputError for a container that is not a box (the cuts need a rectangular
 // cross-section) or is periodic along the vertical (no bottom to measure heights from),
