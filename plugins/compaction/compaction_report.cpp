@@ -113,6 +113,12 @@ void report_fits(const Series& s, double from, double to, Results& results, Log&
       log.warn(std::string("compaction: ") + kQuantities[q].fit_name + ": " +
                describe(fits[q].status) + "; its parameters are left undefined");
     }
+    const LeastDetermined least = least_determined(law, fits[q]);
+    if (least.ratio > 1.0) {
+      log.warn(std::string("compaction: ") + kQuantities[q].fit_name + ": fitted, but " +
+               least.name + "'s error is " + format_number(least.ratio) +
+               " times its value: the data barely determine the law");
+    }
   }
   add_fitted_curves(range, fits, results);
 }
@@ -214,7 +220,7 @@ void report_ageing(const Series& s, const std::vector<std::int64_t>& waiting_tim
              std::string("Eq. (6) fitted to this realization's squared differences, per t_w") +
                  kCurveFitStatusCodes);
   fits.units = {"taps", "", "", "R^2", "R^2", "", "", "taps", "taps"};
-  std::string unfitted;
+  std::string unfitted, undetermined;
   for (std::size_t k = 0; k < a.points.size();) {
     std::vector<double> t, y;
     const double t_w = a.points[k].t_w;
@@ -228,10 +234,16 @@ void report_ageing(const Series& s, const std::vector<std::int64_t>& waiting_tim
                   f.error[0], f.value[1], f.error[1], f.value[2], f.error[2]});
     if (f.status != CurveFitStatus::Fitted)
       unfitted += (unfitted.empty() ? "" : ", ") + format_number(t_w);
+    if (least_determined(eq6_law(), f).ratio > 1.0)
+      undetermined += (undetermined.empty() ? "" : ", ") + format_number(t_w);
   }
   if (!unfitted.empty()) {
     log.warn("compaction: Eq. (6) not fitted at t_w = " + unfitted +
              " (ageing_fits' status); its parameters there are left undefined");
+  }
+  if (!undetermined.empty()) {
+    log.warn("compaction: Eq. (6) fitted at t_w = " + undetermined +
+             " with an error above a parameter's value: the data barely determine it there");
   }
   results.add_table("ageing", std::move(points));
   results.add_table("ageing_fits", std::move(fits));

@@ -71,6 +71,16 @@ LawFit fit_law(const Law& law, const std::vector<double>& t, const std::vector<d
   return reported(fit_curve(law.model, p.t, p.y, {}, law.start(series_ends(p))));
 }
 
+LeastDetermined least_determined(const Law& law, const LawFit& fit) {
+  LeastDetermined least;
+  if (!fit.fitted()) return least;
+  for (std::size_t q = 0; q < fit.value.size(); ++q) {
+    const double ratio = fit.error[q] / std::abs(fit.value[q]);
+    if (ratio > least.ratio) least = {law.names[q], ratio};
+  }
+  return least;
+}
+
 double law_value(const Law& law, const LawFit& fit, double t) {
   if (!fit.fitted()) return std::nan("");
   Eigen::VectorXd p = Eigen::Map<const Eigen::VectorXd>(fit.value.data(), fit.value.size());

@@ -35,6 +35,16 @@ double law_value(const Law& law, const LawFit& fit, double t);
 // Points with a non-finite t or y are left out.
 LawFit fit_law(const Law& law, const std::vector<double>& t, const std::vector<double>& y);
 
+// The parameter of a fitted law its error leaves least determined, and that error over the
+// parameter's magnitude (ratio 0 and no name when not fitted): a fit can converge with
+// errors hundreds of times its values (the paper: (X_inf, B, tau) is not unique at small
+// epsilon), which a status of "fitted" alone does not say.
+struct LeastDetermined {
+  std::string name;
+  double ratio = 0.0;
+};
+LeastDetermined least_determined(const Law& law, const LawFit& fit);
+
 // The start values fit_law begins from (tau itself), from the ends of the finite points.
 std::vector<double> law_start(const Law& law, const std::vector<double>& t,
                               const std::vector<double>& y);

@@ -84,6 +84,25 @@ TEST(Compaction, Eq6FitRecoversTheAgeingLaw) {
   expect_recovered(eq6_law(), {0.05, 1.0, 20.0}, 5e-4);
 }
 
+// A compaction of 0.001 under noise of 0.001: the fit converges ("fitted") with errors far
+// above its values, which only the _err scalars said; the least determined parameter is
+// named for the log. A fit of clean data has none wider than its value.
+TEST(Compaction, AFitTheDataBarelyDetermineIsNamedWithItsWidestParameter) {
+  const std::vector<double> t = run_taps();
+  const LawFit wide = fit_law(eq3_law(), t, noisy(eq3_law(), {0.62, 0.001, 0.5, 5.0}, t, 1e-3, 3));
+  ASSERT_TRUE(wide.fitted()) << describe(wide.status);
+  const LeastDetermined least = least_determined(eq3_law(), wide);
+  std::size_t widest = 0;
+  for (std::size_t q = 0; q < wide.value.size(); ++q)
+    if (wide.error[q] / std::abs(wide.value[q]) > wide.error[widest] / std::abs(wide.value[widest]))
+      widest = q;
+  EXPECT_EQ(least.name, eq3_law().names[widest]);
+  EXPECT_GT(least.ratio, 1.0);
+  const LawFit clean = fit_law(eq3_law(), t, noisy(eq3_law(), {0.62, 0.04, 0.5, 5.0}, t, 5e-4, 1));
+  EXPECT_LT(least_determined(eq3_law(), clean).ratio, 1.0);
+  EXPECT_EQ(least_determined(eq3_law(), LawFit{}).ratio, 0.0);  // not fitted: nothing to name
+}
+
 // The curve drawn through the points is the fitted law itself: on exact Eq. (3) data it
 // passes through every point.
 TEST(Compaction, FittedLawValueReproducesExactData) {
