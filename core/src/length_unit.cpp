@@ -4,7 +4,6 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
-#include <utility>
 #include <vector>
 
 #include "granpipe/text_words.hpp"
@@ -13,22 +12,31 @@ namespace granpipe {
 
 namespace {
 
+// The metre's prefixes, as symbols ("nm") and written out ("nanometre").
+struct Prefix {
+  std::string_view symbol, name;
+  double factor;
+};
+constexpr std::array<Prefix, 10> kPrefixes{{{"", "", 1.0},
+                                            {"k", "kilo", 1e3},
+                                            {"c", "centi", 1e-2},
+                                            {"m", "milli", 1e-3},
+                                            {"u", "micro", 1e-6},
+                                            {"\u00b5", "micro", 1e-6},
+                                            {"\u03bc", "micro", 1e-6},
+                                            {"n", "nano", 1e-9},
+                                            {"p", "pico", 1e-12},
+                                            {"f", "femto", 1e-15}}};
+
 // A unit's name written out ("nanometer", "micrometres", as MDAnalysis and others write
 // them), or nothing.
 std::optional<double> named_metres(std::string_view name) {
-  constexpr std::array<std::pair<std::string_view, double>, 7> kPrefixes{{{"", 1.0},
-                                                                          {"kilo", 1e3},
-                                                                          {"centi", 1e-2},
-                                                                          {"milli", 1e-3},
-                                                                          {"micro", 1e-6},
-                                                                          {"nano", 1e-9},
-                                                                          {"pico", 1e-12}}};
   if (name.size() > 1 && name.back() == 's') name.remove_suffix(1);  // plural
   for (std::string_view metre : {"meter", "metre"}) {
     if (!name.ends_with(metre)) continue;
     const std::string_view prefix = name.substr(0, name.size() - metre.size());
-    for (const auto& [written, factor] : kPrefixes)
-      if (prefix == written) return factor;
+    for (const Prefix& p : kPrefixes)
+      if (prefix == p.name) return p.factor;
   }
   return std::nullopt;
 }
@@ -42,18 +50,8 @@ std::optional<double> symbol_metres(std::string_view symbol) {
   if (const std::optional<double> named = named_metres(symbol)) return named;
   if (symbol.empty() || symbol.back() != 'm') return std::nullopt;
   symbol.remove_suffix(1);
-  constexpr std::array<std::pair<std::string_view, double>, 10> kPrefixes{{{"", 1.0},
-                                                                           {"k", 1e3},
-                                                                           {"c", 1e-2},
-                                                                           {"m", 1e-3},
-                                                                           {"u", 1e-6},
-                                                                           {"\u00b5", 1e-6},
-                                                                           {"\u03bc", 1e-6},
-                                                                           {"n", 1e-9},
-                                                                           {"p", 1e-12},
-                                                                           {"f", 1e-15}}};
-  for (const auto& [prefix, factor] : kPrefixes)
-    if (symbol == prefix) return factor;
+  for (const Prefix& p : kPrefixes)
+    if (symbol == p.symbol) return p.factor;
   return std::nullopt;
 }
 
