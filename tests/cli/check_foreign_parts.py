@@ -12,29 +12,15 @@ import tempfile
 
 import h5py
 import numpy as np
+from foreign_h5md import write_h5md
 
 granpipe = sys.argv[1]
 
 
 def plain_h5md(path, positions, first_step=0):
-    """Frames of positions [T][N][3] in a walled box of edge 10, no granpipe group."""
-    positions = np.asarray(positions, dtype=float)
-    with h5py.File(path, "w") as f:
-        h5md = f.create_group("h5md")
-        h5md.attrs["version"] = np.array([1, 1], dtype="i4")
-        h5md.create_group("author").attrs["name"] = "test"
-        creator = h5md.create_group("creator")
-        creator.attrs["name"] = "othermd"
-        creator.attrs["version"] = "1"
-        particles = f.create_group("particles/all")
-        position = particles.create_group("position")
-        position["step"] = np.arange(first_step, first_step + len(positions), dtype="i8")
-        position["time"] = position["step"][()].astype(float)
-        position["value"] = positions
-        box = particles.create_group("box")
-        box.attrs["dimension"] = np.int32(3)
-        box.attrs["boundary"] = np.array([b"none"] * 3, dtype="S8")
-        box["edges"] = np.full(3, 10.0)
+    """Frames of positions [T][N][3] in a walled box of edge 10."""
+    write_h5md(path, np.asarray(positions, dtype=float), [10.0] * 3, "none", "othermd",
+               first_step=first_step)
 
 
 def run(work, name, params):
