@@ -237,13 +237,36 @@ void H5mdSource::check_contacts_touch(const Frame& frame, const std::string& whe
     const double ri = frame.radius()[i[c]], rj = frame.radius()[j[c]];
     const double gap = separation(frame, i[c], j[c]).norm() - ri - rj;
     const double smaller = std::min(ri, rj);
-    if (!(gap > smaller)) continue;
+    if (!(gap > smaller)) {
+      check_pair_point(frame, c, smaller, where);
+      continue;
+    }
     throw InputError(where + ": contact " + std::to_string(c) +
                      ": expected particles that touch, got " + std::to_string(i[c]) + " and " +
                      std::to_string(j[c]) + " (ids " + std::to_string(frame.id()[i[c]]) + ", " +
                      std::to_string(frame.id()[j[c]]) + "), whose surfaces are " +
                      format_number(gap) + " apart (more than the smaller radius, " +
                      format_number(smaller) + ")");
+  }
+}
+
+// A pair contact's point, where the table gives one, lies where the two touch: within the
+// smaller radius of either's surface, as the particles themselves must be. A point a million
+// radii away made the force network's F(r) bins of that contact NaN, exit 0.
+void H5mdSource::check_pair_point(const Frame& frame, Eigen::Index c, double smaller,
+                                  const std::string& where) {
+  const Column* point = frame.contacts->find("point");
+  if (!point) return;
+  for (const std::int64_t k : {frame.contact_i()[c], frame.contact_j()[c]}) {
+    const double gap =
+        separation_to(frame, k, point->as<Coordinates>().row(c)).norm() - frame.radius()[k];
+    if (!(gap > smaller)) continue;
+    throw InputError(
+        where + ": contact " + std::to_string(c) + ": expected its point where particles " +
+        std::to_string(frame.contact_i()[c]) + " and " + std::to_string(frame.contact_j()[c]) +
+        " touch, got it " + format_number(gap) + " from the surface of particle " +
+        std::to_string(k) + " (id " + std::to_string(frame.id()[k]) +
+        "; more than the smaller radius, " + format_number(smaller) + ")");
   }
 }
 

@@ -210,6 +210,34 @@ TEST_F(H5mdSourceTest, AContactBetweenParticlesApartIsRefused) {
                 "whose surfaces are 1 apart (more than the smaller radius, 0.5)");
 }
 
+// A pair contact's point a million radii from the pair made the force network's F(r) bins
+// of that contact NaN, exit 0. Particles 0 and 1 touch at (0, 0).
+TEST_F(H5mdSourceTest, APairContactsPointAwayFromThePairIsRefused) {
+  const auto with_point = [&](const Eigen::Vector2d& point) {
+    const fs::path p = dir_ / ("pair_point_" + std::to_string(point[0]) + ".h5");
+    FrameWriter w(p, "{}");
+    Frame f;
+    f.resize(2, 2);
+    f.position() << -0.5, 0.0, 0.5, 0.0;
+    f.radius().setConstant(0.5);
+    f.container = Container::open_top_box(2, Eigen::Vector3d(-5, -5, 0), Eigen::Vector3d(5, 5, 0));
+    f.add_contacts(1);
+    f.contact_i()[0] = 0;
+    f.contact_j()[0] = 1;
+    f.contacts->add(*find_standard("point", Scope::Contact)).as<Coordinates>().row(0) =
+        point.transpose();
+    w.append(f);
+    w.close();
+    return p;
+  };
+  EXPECT_EQ(error_of([&] { return source(with_point({0.0, 0.0}), 0, -1, 1); }), "(no InputError)");
+  const fs::path far = with_point({4.0, 0.0});
+  EXPECT_EQ(error_of([&] { return source(far, 0, -1, 1); }),
+            far.string() +
+                ": frame 0: contact 0: expected its point where particles 0 and 1 touch, got it "
+                "4 from the surface of particle 0 (id 0; more than the smaller radius, 0.5)");
+}
+
 // A "base contact" of a particle 86 above the base was counted among the intruder's base
 // contacts, exit 0. In a box with a floor at y = 0 and a wall at x = 10 (offset by 0.25),
 // particle 0 rests on the floor and particle 1 touches nothing.
