@@ -91,6 +91,7 @@ void ArchesAnalyzer::consume(const Frame& frame, FrameCache& cache) {
   ++frames_;
   check_supports(frame, where);
   check_supports_touch(frame, where);
+  check_support_sides(frame, where);
   const Eigen::Index n = frame.size();
   arch_of_.resize(0);
   if (n == 0) {

@@ -110,6 +110,37 @@ void check_supports_touch(const Frame& frame, const std::string& where) {
   }
 }
 
+namespace {
+
+// Whether support p of disk i is on the side `left` says.
+bool on_its_side(const Frame& f, Eigen::Index i, std::int64_t p, bool left) {
+  if (p == partner::none || p == partner::wall(Wall::YLow)) return true;
+  if (partner::is_wall(p)) return partner::wall_of(p) == (left ? Wall::XLow : Wall::XHigh);
+  const double to_support = separation(f, i, p).x();  // x of p minus x of i
+  return left ? to_support <= 0.0 : to_support >= 0.0;
+}
+
+}  // namespace
+
+void check_support_sides(const Frame& frame, const std::string& where) {
+  const Supports s = Supports::of(frame);
+  for (const auto& [side, left] : {std::pair{&s.left, true}, {&s.right, false}}) {
+    for (Eigen::Index i = 0; i < frame.size(); ++i) {
+      const std::int64_t p = (*side)(i);
+      if (on_its_side(frame, i, p, left)) continue;
+      const std::string name = left ? "left" : "right";
+      const std::string support = partner::is_wall(p)
+                                      ? "the wall " + std::string(to_string(partner::wall_of(p)))
+                                      : "disk " + std::to_string(p) + ", " +
+                                            format_number(std::abs(separation(frame, i, p).x())) +
+                                            " to its " + (left ? "right" : "left");
+      throw InputError(where + ": supports." + name + "[" + std::to_string(i) +
+                       "]: expected a support on disk " + std::to_string(i) + "'s " + name +
+                       " (the " + name + " wall, the base or a disk), got " + support);
+    }
+  }
+}
+
 Property supports_property() {
   return {"supports",
           Scope::Particle,

@@ -41,6 +41,14 @@ void check_supports(const Frame& frame, const std::string& where);
 // and the gap. For labels that passed check_supports.
 void check_supports_touch(const Frame& frame, const std::string& where);
 
+// Checks that each support is on its side: a left support is the left wall, the base or a
+// disk whose centre is not to the right of the disk's (along a periodic x, the nearest
+// image), and the mirror for a right one. A right wall labelled as a left support, or two
+// disks naming each other as right supports, counted one contact twice or made a
+// supported arch end look detached, exit 0. Throws InputError naming `where`, the label
+// and where the support is. For labels that passed check_supports.
+void check_support_sides(const Frame& frame, const std::string& where);
+
 // The disk mutually stable with disk i on its right: j = right[i] with left[j] == i,
 // or partner::none.
 std::int64_t right_mutual_partner(const Supports& supports, Eigen::Index i);

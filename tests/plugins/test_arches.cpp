@@ -464,6 +464,30 @@ TEST(Arches, SupportsThatDoNotTouchTheirDiskAreInputErrors) {
             "surface 0.866025 away (more than its radius, 0.5)");
 }
 
+// Two disks between the walls of a box 2 wide: the right wall labelled as disk 1's left
+// support gave 0 arches and a detached fraction of 0.25, and two disks naming each other as
+// right supports counted their one contact twice, exit 0.
+TEST(Arches, SupportsOnTheWrongSideAreInputErrors) {
+  const Frame ok = make_frame({{0.5, 0.5, kLeftWall, 1}, {1.5, 0.5, 0, kRightWall}}, 2.0);
+  ga::check_support_sides(ok, "test");
+  EXPECT_EQ(granpipe::test::input_error_of([] {
+              ga::check_support_sides(
+                  make_frame({{0.5, 0.5, kLeftWall, 1}, {1.5, 0.5, kRightWall, 0}}, 2.0), "test");
+            }),
+            "test: supports.left[1]: expected a support on disk 1's left (the left wall, the "
+            "base or a disk), got the wall x_high");
+  EXPECT_EQ(granpipe::test::input_error_of([] {
+              ga::check_support_sides(
+                  make_frame({{0.5, 0.5, kLeftWall, 1}, {1.5, 0.5, kBase, 0}}, 2.0), "test");
+            }),
+            "test: supports.right[1]: expected a support on disk 1's right (the right wall, the "
+            "base or a disk), got disk 0, 1 to its left");
+  // Along a periodic x the nearer image decides: disk 0 at x 9.5 is just left of disk 1.
+  Frame periodic = make_frame({{9.5, 0.5, kBase, 1}, {0.5, 0.5, 0, kBase}}, 10.0);
+  periodic.container.boundary[0] = {granpipe::Boundary::Periodic, granpipe::Boundary::Periodic};
+  ga::check_support_sides(periodic, "test");
+}
+
 TEST(Arches, RingOfMutualSupportsIsAnInputError) {
   const Frame f = make_frame({{1.0, 1.0, 2, 1}, {2.0, 1.0, 0, 2}, {3.0, 1.0, 1, 0}}, 4.0);
   ga::check_supports(f, "test");
