@@ -97,6 +97,19 @@ TEST(Intruder, ABedWithoutAnIntruderIsRefused) {
   EXPECT_THROW(intruder::measure_bed(f, "frame 0"), InputError);
 }
 
+// A polydisperse bed's largest grain was taken for the intruder (r = 0.5499 beside 0.5474
+// in a bed of 0.45 to 0.55), exit 0. An intruder stands apart by more than the bed's spread.
+TEST(Intruder, APolydisperseBedsLargestGrainIsNoIntruder) {
+  Frame f = bed();
+  f.radius() << 0.45, 0.56, 0.55;
+  EXPECT_EQ(granpipe::test::input_error_of([&] { analyze({f}); }),
+            "frame 0: expected an intruder (one particle larger than every other, by more than "
+            "the bed's own radii spread), got a largest radius 0.56 beside the bed's 0.45 to "
+            "0.55 (a polydisperse bed without an intruder?)");
+  f.radius() << 0.45, 1.5, 0.55;
+  EXPECT_EQ(intruder::find_intruder(f, "test"), 1);
+}
+
 // A bed periodic along z (a dump of a box "pp pp pp") has no base: its heights were taken
 // from the box's lower side and its stage was expansion forever, exit 0.
 TEST(Intruder, AContainerWithoutABaseIsRefused) {
