@@ -137,6 +137,12 @@ void ForceNetworkAnalyzer::finish(Results& results) {
                                 .ylabel = "particles",
                                 .title = "largest force network and its strong part"});
   results.add_scalar("frames", static_cast<double>(frames_), std::nan(""), "", "frames measured");
+  // With no pass among its contacts the pass tables were left out without a word.
+  if (!settings_.by_pass.empty() && paper_.index >= 0 && paper_.passes.empty()) {
+    log_.warn("force_network: by_pass: contact column " + settings_.by_pass + " of frame " +
+              std::to_string(paper_.index) +
+              " (the one analysed in full) names no pass (every row 0): no pass_* results");
+  }
   report_paper_frame(paper_, results);
 }
 

@@ -56,7 +56,15 @@ const IndexArray& pass_column(const Frame& frame, const Settings& settings,
     throw InputError(where + ": expected the contact column " + settings.by_pass +
                      " (parameter by_pass), got contacts without it");
   }
-  return frame.contacts->get<IndexArray>(settings.by_pass);
+  const IndexArray& pass = frame.contacts->get<IndexArray>(settings.by_pass);
+  // (A negative number counted as no pass, without a word.)
+  Eigen::Index row = 0;
+  if (pass.size() > 0 && pass.minCoeff(&row) < 0) {
+    throw InputError(where + ": contact " + std::to_string(row) + ": contact column " +
+                     settings.by_pass + " (by_pass): expected a pass number, 0 (none) or more, " +
+                     "got " + std::to_string(pass[row]));
+  }
+  return pass;
 }
 
 std::vector<PassSubset> pass_subsets(const Frame& frame, const ForceContacts& forces,

@@ -503,6 +503,30 @@ TEST(ForceNetwork, ByPassIsNeededOnlyWhenSetAndNamedWhenMissing) {
             "without it");
 }
 
+// A negative pass number counted as none, and a column of no pass (every row 0) left the
+// pass tables out without a word, exit 0.
+TEST(ForceNetwork, ByPassRefusesNegativePassesAndSaysWhenThereIsNone) {
+  Frame f = frame_of(kTable);
+  auto& pass = f.contacts->get<IndexArray>("mst_pass");
+  pass[2] = -5;
+  EXPECT_EQ(refusal(f, {{"by_pass", "mst_pass"}}),
+            "frame 0: contact 2: contact column mst_pass (by_pass): expected a pass number, 0 "
+            "(none) or more, got -5");
+  pass.setZero();
+  const auto ctx = test::make_context("force_network", {{"by_pass", "mst_pass"}});
+  ctx->keep_log();
+  ForceNetworkAnalyzer analyzer(*ctx);
+  FrameCache cache;
+  analyzer.consume(f, cache);
+  Results results;
+  analyzer.finish(results);
+  EXPECT_EQ(results.tables().count("pass_fits"), 0u);
+  EXPECT_EQ(ctx->logged_lines(),
+            (std::vector<std::string>{"warning: force_network: by_pass: contact column mst_pass "
+                                      "of frame 0 (the one analysed in full) names no pass "
+                                      "(every row 0): no pass_* results"}));
+}
+
 // Many contacts drawn from Eq. (11), each captured by pass 1 or 2 at random: each subset
 // has the full network's distribution, so the shift fit finds alpha, gamma ~ 0 and the
 // free fit alpha ~ 0 and the distribution's beta. The forces are scaled by their mean, so
