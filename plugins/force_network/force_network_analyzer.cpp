@@ -111,12 +111,16 @@ void ForceNetworkAnalyzer::consume(const Frame& frame, FrameCache&) {
   ++frames_;
 }
 
+// (With walls counted, wall contacts alone left z_largest NaN without a word.)
 void ForceNetworkAnalyzer::warn_undefined(const FrameAnalysis& a, const std::string& where) {
-  if (!a.forces.samples.empty()) return;
+  const bool no_samples = a.forces.samples.empty();
+  if (!no_samples && a.networks.largest().particles > 0) return;
   undefined_.warn(log_, "force_network: " + where +
-                            ": no contact with |F_n| > min_force: its mean_force, "
-                            "z_largest and force PDF are undefined (nan in the results, not 0; "
-                            "docs/force_network.md)");
+                            (no_samples ? ": no contact with |F_n| > min_force: its mean_force, "
+                                          "z_largest and force PDF are"
+                                        : ": no pair contact with |F_n| > min_force (wall "
+                                          "contacts only): no network, and z_largest is") +
+                            " undefined (nan in the results, not 0; docs/force_network.md)");
 }
 
 std::vector<Property> ForceNetworkAnalyzer::publishes() const {

@@ -162,6 +162,25 @@ TEST(ForceNetwork, WallContactsJoinTheStatisticsOnlyWhenAsked) {
   EXPECT_EQ(per_frame(r, "networks"), 4);         // walls never link particles
 }
 
+// Wall contacts only, counted: samples and a mean force, but no network, and z_largest was
+// NaN without a word.
+TEST(ForceNetwork, WallContactsAloneLeaveZLargestUndefinedAndSaid) {
+  const auto ctx = test::make_context("force_network", {{"walls", true}});
+  ctx->keep_log();
+  ForceNetworkAnalyzer analyzer(*ctx);
+  FrameCache cache;
+  analyzer.consume(frame_of({{4, kBase, 10, 0}, {0, kBase, 5, 0}}), cache);
+  Results results;
+  analyzer.finish(results);
+  EXPECT_EQ(results.tables().at("per_frame").column("mean_force")[0], 7.5);
+  EXPECT_TRUE(std::isnan(results.tables().at("per_frame").column("z_largest")[0]));
+  EXPECT_EQ(ctx->logged_lines(),
+            (std::vector<std::string>{
+                "warning: force_network: frame 0: no pair contact with |F_n| > min_force (wall "
+                "contacts only): no network, and z_largest is undefined (nan in the results, "
+                "not 0; docs/force_network.md); said for the first such frame only"}));
+}
+
 TEST(ForceNetwork, PdfIsANormalisedDensity) {
   const Outcome r = run(frame_of(kTable));
   const Table& pdf = r.results.tables().at("pdf");
