@@ -12,6 +12,7 @@
 #include <random>
 #include <vector>
 
+#include "crystals.hpp"
 #include "granpipe/frame.hpp"
 #include "granpipe/region.hpp"
 #include "lifted_vertices.hpp"
@@ -260,6 +261,32 @@ TEST(PoresUnequal, NoPoreOverlapsASphereFarInTheTriangulation) {
       EXPECT_GT(gap, -1e-9 * m.radius) << "pore at " << pore.centre.transpose() << ", sphere " << k;
     }
   }
+}
+
+// Rock salt: spheres of radius 1 on FCC, one of 0.05 in every octahedral hole, 3^3 cells,
+// periodic. Every octahedral cell of the big spheres has no tangent sphere or one the small
+// sphere overlaps; the diagram's vertices are the 216 tetrahedral holes and 864 spheres
+// touching a small sphere and three big ones (counted by brute force over quadruples). With
+// no cell overlapped by a fifth sphere, the lifted triangulation was not asked, and 864
+// were missing, exit 0.
+TEST(PoresUnequal, ARockSaltCrystalHasEveryVertex) {
+  const double a = 2.0 * std::sqrt(2.0);
+  granpipe::test::Crystal salt = granpipe::test::fcc();
+  for (const Eigen::Vector3d& big : granpipe::test::fcc().basis)
+    salt.basis.push_back(big + Eigen::Vector3d(a / 2, 0, 0));
+  Frame f = granpipe::test::crystal_frame(salt, 3);
+  for (Eigen::Index k = 0; k < f.size(); ++k)
+    if (k % 8 >= 4) f.radius()[k] = 0.05;
+  f.position() = f.position().unaryExpr([&](double x) { return std::fmod(x, 3 * a); });
+  f.container = granpipe::Container::periodic_box(3, Eigen::Vector3d::Zero(),
+                                                  Eigen::Vector3d::Constant(3 * a));
+  const PoreMeasurement m = measure_pores(f, std::nullopt, 1e-9, "test");
+  EXPECT_EQ(m.xi.size(), 1080u);
+  EXPECT_EQ(m.apollonius_vertices, 864);
+  const auto tetrahedral = std::count_if(m.xi.begin(), m.xi.end(), [&](double xi) {
+    return std::abs(xi * m.radius - (std::sqrt(1.5) - 1.0)) < 1e-9;
+  });
+  EXPECT_EQ(tetrahedral, 216);
 }
 
 // `n` spheres placed at random without overlap in a cube of side `side`, periodic or walled

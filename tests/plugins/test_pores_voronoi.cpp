@@ -113,6 +113,19 @@ TEST(PoresVoronoi, CubicCrystalInWallsHasCubicCellsAtTheWalls) {
   }
 }
 
+// The same crystal periodic along x and y, walled along z, in units from 1e-15 to 1e3: the
+// cells cut at the walls were cut with planes a container's length plus 1 (in the file's
+// unit) away, and at radius 1e-15 their volumes came out 11 % off.
+TEST(PoresVoronoi, VolumesDoNotDependOnTheLengthUnit) {
+  for (double radius : {1e-15, 1e-12, 1.0, 1e3}) {
+    Frame f = crystal_frame(granpipe::test::sc(), 5, radius);
+    for (int a = 0; a < 2; ++a)
+      f.container.boundary[a] = {granpipe::Boundary::Periodic, granpipe::Boundary::Periodic};
+    expect_every_volume(measure(f), 8.0 * radius * radius * radius,
+                        "radius " + std::to_string(radius));
+  }
+}
+
 // Layers of a simple cubic crystal (spacing a) alternate between radii r1 and r2 along z,
 // in a periodic box. The radical plane of two spheres at distance a, where their powers
 // |x - x_i|^2 - r_i^2 are equal, lies at t = (a^2 + r1^2 - r2^2) / (2a) from the r1 centre
