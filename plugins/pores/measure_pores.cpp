@@ -118,9 +118,12 @@ struct Measure {
     TriangulatedPores found;
     found.cells = static_cast<long>(cells.size());
     std::vector<Pore> missing;
+    const auto may_count = [&](const Eigen::Vector3d& c) {
+      return in_box(primary, c) && counted(c);
+    };
     if (!radii.equal) {
       const NonPoreCells left_out =
-          tangent_cells(cells, centres, frame, radii.mean, length(), threads);
+          tangent_cells(cells, centres, frame, radii.mean, may_count, length(), threads);
       found.untangent_cells = count_inside(primary, left_out.untangent);
       found.fifth_sphere_cells = count_inside(primary, left_out.fifth_sphere);
       // Cells with no tangent sphere hide vertices too: a rock-salt crystal, whose cells

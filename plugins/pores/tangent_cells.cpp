@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 
@@ -14,17 +15,21 @@ namespace granpipe::pores {
 
 namespace {
 
-// Spheres more than twice the mean radius wide: their surface reaches past the spheres
-// next to a cell in the triangulation (at radii 0.02 and 1, a sphere beyond them overlapped
-// the tangent sphere of four small ones by 0.32). Few in the packings that have them (an
-// intruder among beads), so a grid of their own answers for every cell at little cost.
-class WideSpheres {
+// Spheres of radii in (lo, hi] binned on a grid of their own. Those more than twice the
+// mean radius wide reach past the spheres next to a cell in the triangulation (at radii
+// 0.02 and 1, a sphere beyond them overlapped the tangent sphere of four small ones by
+// 0.32); few in the packings that have them (an intruder among beads), so their grid
+// answers for every cell at little cost. The others, on a grid of their own, answer
+// for the cells whose sphere may be counted: a sphere no neighbour of the four may overlap
+// it too where centres are nearly cospherical (a simple cubic block of radii 1 +- 1e-3
+// counted a pore overlapped by 9e-4).
+class SpheresOfRadii {
  public:
-  WideSpheres(const Centres& centres, const Frame& frame, double mean_radius) {
+  SpheresOfRadii(const Centres& centres, const Frame& frame, double lo, double hi) {
     std::vector<double> radius;
     for (std::uint32_t p = 0; p < centres.points.size(); ++p) {
       const double r = frame.radius()[centres.particle[p]];
-      if (r <= 2.0 * mean_radius) continue;
+      if (r <= lo || r > hi) continue;
       point_.push_back(p);
       centre_.push_back(centres.points[p]);
       radius.push_back(r);
@@ -69,9 +74,21 @@ bool overlaps_a_neighbour(const DelaunayCell& cell, const TangentSphere& sphere,
 }  // namespace
 
 NonPoreCells tangent_cells(std::vector<DelaunayCell>& cells, const Centres& centres,
-                           const Frame& frame, double mean_radius, double length, int threads) {
+                           const Frame& frame, double mean_radius, const MayCount& may_count,
+                           double length, int threads) {
   const VertexNeighbours neighbours(cells, centres.points.size());
-  const WideSpheres wide(centres, frame, mean_radius);
+  constexpr double kWide = 2.0;  // radii above kWide R are wide
+  const SpheresOfRadii wide(centres, frame, kWide * mean_radius, INFINITY);
+  const SpheresOfRadii narrow(centres, frame, -INFINITY, kWide * mean_radius);
+  // A sphere no cell's corners name may overlap the sphere of a cell that may be counted:
+  // those are checked against every sphere (the neighbours first, as most overlaps are
+  // theirs). The others against the neighbours and the wide spheres: the hull cells above
+  // a free surface or of the images, whose spheres are huge, would scan every sphere.
+  const auto overlapped = [&](const DelaunayCell& cell, const TangentSphere& sphere) {
+    return overlaps_a_neighbour(cell, sphere, neighbours, centres, frame, length) ||
+           wide.overlap(sphere, cell, length) ||
+           (may_count(sphere.centre) && narrow.overlap(sphere, cell, length));
+  };
   // Each cell's circumcentre before it becomes its tangent sphere's, and why it is left out.
   enum Kind : std::uint8_t { kPore, kUntangent, kFifthSphere };
   std::vector<Kind> kind(cells.size(), kPore);
@@ -93,8 +110,7 @@ NonPoreCells tangent_cells(std::vector<DelaunayCell>& cells, const Centres& cent
       const std::optional<TangentSphere> sphere = tangent_sphere(x, r);
       if (!sphere) {
         kind[i] = kUntangent;
-      } else if (overlaps_a_neighbour(cell, *sphere, neighbours, centres, frame, length) ||
-                 wide.overlap(*sphere, cell, length)) {
+      } else if (overlapped(cell, *sphere)) {
         kind[i] = kFifthSphere;
       } else {
         cell.centre = sphere->centre;
