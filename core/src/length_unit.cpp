@@ -4,6 +4,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <string_view>
 #include <vector>
 
 #include "granpipe/text_words.hpp"

@@ -107,7 +107,8 @@ GlobalFractions global_fractions(const Frame& frame, const StereologySettings& s
                       std::string("expected a container with a bottom wall along ") + "xyz"[v] +
                           " (heights are above it; phi_c corrects the layer it perturbs)");
   refuse_centres_beyond_open_sides(frame);
-  const double factor = perturbed_factor(frame, s);
+  // Without a layer there is nothing to correct, and disks need no factor.
+  const double factor = s.perturbed_top > 0.0 ? perturbed_factor(frame, s) : 1.0;
   GlobalFractions g;
   g.phi_b = g.phi_c = std::nan("");
   if (frame.size() == 0) return g;

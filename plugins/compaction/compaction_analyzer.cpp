@@ -87,14 +87,15 @@ CompactionAnalyzer::CompactionAnalyzer(const PluginContext& ctx)
 }
 
 // The laws, the steady state and the ageing are of one epsilon: a ramp's frames made a
-// "steady state" of four epsilons and its spectrum, exit 0 (the deposition, tap 0, has none).
+// "steady state" of four epsilons and its spectrum, exit 0. The deposition (tap 0, epsilon
+// 0) is no tap of the run.
 void CompactionAnalyzer::check_one_epsilon(const Frame& frame, double tap,
                                            const std::string& where) {
   const std::optional<double> epsilon = frame.real_observable("epsilon");
   if (!epsilon || tap == 0.0) return;
   if (!epsilon_) {
     epsilon_ = epsilon;
-    epsilon_frame_ = where;
+    epsilon_frame_ = "frame " + std::to_string(frames_) + " (tap " + format_number(tap) + ")";
     return;
   }
   if (std::abs(*epsilon - *epsilon_) <= 1e-12 * std::abs(*epsilon_)) return;

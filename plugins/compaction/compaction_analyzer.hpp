@@ -30,7 +30,8 @@ class CompactionAnalyzer : public Analyzer {
   Log& log_;
   long frames_ = 0;
   FirstFrameWarning undefined_;  // NaN is never a silent answer
-  // The first tapped frame's epsilon (and its name), which every later frame must share.
+  // The first tapped frame's epsilon (and that frame, "frame 1 (tap 1)"), which every later
+  // frame must share.
   std::optional<double> epsilon_;
   std::string epsilon_frame_;
   Series series_;

@@ -116,8 +116,10 @@ void report_fits(const Series& s, double from, double to, Results& results, Log&
     const LeastDetermined least = least_determined(law, fits[q]);
     if (least.ratio > 1.0) {
       log.warn(std::string("compaction: ") + kQuantities[q].fit_name + ": fitted, but " +
-               least.name + "'s error is " + format_number(least.ratio) +
-               " times its value: the data barely determine the law");
+               least.name + " = " + format_number(least.value) + " +- " +
+               format_number(least.error) +
+               ", an error above its value: the data barely "
+               "determine the law");
     }
   }
   add_fitted_curves(range, fits, results);

@@ -76,7 +76,7 @@ LeastDetermined least_determined(const Law& law, const LawFit& fit) {
   if (!fit.fitted()) return least;
   for (std::size_t q = 0; q < fit.value.size(); ++q) {
     const double ratio = fit.error[q] / std::abs(fit.value[q]);
-    if (ratio > least.ratio) least = {law.names[q], ratio};
+    if (ratio > least.ratio) least = {law.names[q], fit.value[q], fit.error[q], ratio};
   }
   return least;
 }

@@ -41,7 +41,8 @@ LawFit fit_law(const Law& law, const std::vector<double>& t, const std::vector<d
 // epsilon), which a status of "fitted" alone does not say.
 struct LeastDetermined {
   std::string name;
-  double ratio = 0.0;
+  double value = 0.0, error = 0.0;
+  double ratio = 0.0;  // error / |value|: infinite for a value of 0 with an error
 };
 LeastDetermined least_determined(const Law& law, const LawFit& fit);
 

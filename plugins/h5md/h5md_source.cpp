@@ -229,6 +229,7 @@ void H5mdSource::check_inside(const Frame& frame, const std::string& where) cons
 // counted as one).
 void H5mdSource::check_contacts_touch(const Frame& frame, const std::string& where) {
   const IndexArray &i = frame.contact_i(), &j = frame.contact_j();
+  const Column* point = frame.contacts->find("point");
   for (Eigen::Index c = 0; c < i.size(); ++c) {
     if (!partner::is_particle(j[c])) {
       check_wall_contact_touches(frame, c, where);
@@ -238,7 +239,7 @@ void H5mdSource::check_contacts_touch(const Frame& frame, const std::string& whe
     const double gap = separation(frame, i[c], j[c]).norm() - ri - rj;
     const double smaller = std::min(ri, rj);
     if (!(gap > smaller)) {
-      check_pair_point(frame, c, smaller, where);
+      if (point) check_pair_point(frame, c, point->as<Coordinates>().row(c), smaller, where);
       continue;
     }
     throw InputError(where + ": contact " + std::to_string(c) +
@@ -253,13 +254,11 @@ void H5mdSource::check_contacts_touch(const Frame& frame, const std::string& whe
 // A pair contact's point, where the table gives one, lies where the two touch: within the
 // smaller radius of either's surface, as the particles themselves must be. A point a million
 // radii away made the force network's F(r) bins of that contact NaN, exit 0.
-void H5mdSource::check_pair_point(const Frame& frame, Eigen::Index c, double smaller,
+void H5mdSource::check_pair_point(const Frame& frame, Eigen::Index c,
+                                  const Eigen::Ref<const Eigen::RowVectorXd>& point, double smaller,
                                   const std::string& where) {
-  const Column* point = frame.contacts->find("point");
-  if (!point) return;
   for (const std::int64_t k : {frame.contact_i()[c], frame.contact_j()[c]}) {
-    const double gap =
-        separation_to(frame, k, point->as<Coordinates>().row(c)).norm() - frame.radius()[k];
+    const double gap = separation_to(frame, k, point).norm() - frame.radius()[k];
     if (!(gap > smaller)) continue;
     throw InputError(
         where + ": contact " + std::to_string(c) + ": expected its point where particles " +

@@ -34,7 +34,8 @@ class H5mdSource : public Source {
   static void check_contacts_touch(const Frame& frame, const std::string& where);
   static void check_wall_contact_touches(const Frame& frame, Eigen::Index c,
                                          const std::string& where);
-  static void check_pair_point(const Frame& frame, Eigen::Index c, double smaller,
+  static void check_pair_point(const Frame& frame, Eigen::Index c,
+                               const Eigen::Ref<const Eigen::RowVectorXd>& point, double smaller,
                                const std::string& where);
   Frame read_checked(long index) const;
   void check_step_rises(const Frame& frame, long index);

@@ -52,17 +52,21 @@ Eigen::Index find_intruder(const Frame& f, const std::string& where) {
                      std::to_string(ties) + " particles of the largest radius " +
                      format_number(largest) + " (a bed without an intruder?)");
   }
-  // In a polydisperse bed the largest grain is one of the bed: its tail, not an intruder
-  // (radii 0.45 to 0.55 gave "the intruder" r = 0.5499 beside 0.5474, exit 0).
+  // A species of its own names the intruder, whatever the bed's radii. Else, in a
+  // polydisperse bed the largest grain is one of the bed, its tail (radii 0.45 to 0.55 gave
+  // "the intruder" r = 0.5499 beside 0.5474, exit 0), unless it stands apart.
+  const auto& species = f.species();
+  if ((species == species[big]).count() == 1) return big;
   double second = 0.0;
   for (Eigen::Index i = 0; i < f.size(); ++i)
     if (i != big) second = std::max(second, f.radius()[i]);
   const double smallest = f.radius().minCoeff();
   if (!(largest - second > second - smallest)) {
     throw InputError(where + ": expected an intruder (one particle larger than every other, " +
-                     "by more than the bed's own radii spread), got a largest radius " +
-                     format_number(largest) + " beside the bed's " + format_number(smallest) +
-                     " to " + format_number(second) + " (a polydisperse bed without an intruder?)");
+                     "of a species of its own or by more than the bed's own radii spread), got " +
+                     "a largest radius " + format_number(largest) + " beside the bed's " +
+                     format_number(smallest) + " to " + format_number(second) +
+                     " (a polydisperse bed without an intruder?)");
   }
   return big;
 }

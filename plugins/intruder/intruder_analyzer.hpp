@@ -34,8 +34,8 @@ struct BedState {
 // The intruder is the one particle larger than every other. A bed whose largest radius is
 // shared (a monodisperse bed, or two large spheres) has none: reporting one of them would
 // be an arbitrary choice, so such a frame is refused. Radii within a relative kSameRadius
-// of the largest count as equal to it. So is a largest particle that stands less apart
-// from the next than the bed's radii spread (the tail of a polydisperse bed).
+// of the largest count as equal to it. So is a largest particle of the bed's species that
+// stands no more apart from the next than the bed's radii spread (a polydisperse bed's tail).
 constexpr double kSameRadius = 1e-6;
 // The intruder's row; throws InputError naming `where` when there is none.
 Eigen::Index find_intruder(const Frame& frame, const std::string& where);

@@ -21,7 +21,7 @@ Schema schema() {
   // rounding made it negative.
   s.real("lateral_band", 7.0,
          "the lateral fraction is that within this distance of either side across x, the "
-         "central fraction that of the rest (undefined where narrower than 0.001); at least "
+         "central fraction that of the rest (undefined where narrower than 0.001 R); at least "
          "0.001")
       .min(kNarrowestZone)
       .unit("mean radii");

@@ -188,6 +188,10 @@ TEST(GlobalFractions, OfDisksNeedAPerturbedZoneFactorGiven) {
   StereologySettings plain;
   plain.perturbed_factor = 1.0;
   EXPECT_NEAR(global_fractions(f, plain).phi_c, kPi / 4.0, 1e-13);
+  // No layer, no factor needed (the only factor a layer of 0 takes, 0, was refused for disks).
+  StereologySettings no_layer;
+  no_layer.perturbed_top = 0.0;
+  EXPECT_NEAR(global_fractions(f, no_layer).phi_c, kPi / 4.0, 1e-13);
 }
 
 TEST(GlobalFractions, AreUndefinedWithoutParticlesOrAZoneAboveTheLayer) {

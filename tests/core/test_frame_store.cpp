@@ -711,6 +711,8 @@ TEST_F(FrameStore, LengthsInDifferentUnitsAreRefusedNamingBoth) {
   // Names written out (MDAnalysis' "nanometer"), H5MD's power 1, and a unit stated as none.
   EXPECT_EQ(reader_error(with_units("named.h5", "nm", "nanometer")), "no error");
   EXPECT_EQ(reader_error(with_units("plural.h5", "metres", "m")), "no error");
+  EXPECT_EQ(reader_error(with_units("femto.h5", "femtometre", "fm")), "no error");
+  EXPECT_EQ(reader_error(with_units("micro.h5", "micrometers", "\u00b5m")), "no error");
   EXPECT_EQ(reader_error(with_units("power.h5", "nm+1", "nm")), "no error");
   EXPECT_EQ(reader_error(with_units("none.h5", "", "nm")), "no error");
   // An empty list of units was an internal error (exit 1).

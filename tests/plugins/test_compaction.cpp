@@ -15,9 +15,11 @@
 #include "ageing.hpp"
 #include "compaction_analyzer.hpp"
 #include "compaction_laws.hpp"
+#include "compaction_report.hpp"
 #include "frame_measure.hpp"
 #include "granpipe/container.hpp"
 #include "granpipe/errors.hpp"
+#include "granpipe/format_number.hpp"
 #include "law_fit.hpp"
 #include "plugin_harness.hpp"
 #include "power_spectrum.hpp"
@@ -84,23 +86,50 @@ TEST(Compaction, Eq6FitRecoversTheAgeingLaw) {
   expect_recovered(eq6_law(), {0.05, 1.0, 20.0}, 5e-4);
 }
 
-// A compaction of 0.001 under noise of 0.001: the fit converges ("fitted") with errors far
-// above its values, which only the _err scalars said; the least determined parameter is
-// named for the log. A fit of clean data has none wider than its value.
-TEST(Compaction, AFitTheDataBarelyDetermineIsNamedWithItsWidestParameter) {
-  const std::vector<double> t = run_taps();
-  const LawFit wide = fit_law(eq3_law(), t, noisy(eq3_law(), {0.62, 0.001, 0.5, 5.0}, t, 1e-3, 3));
+// The least determined parameter is the one of the largest error over value; a value of
+// 0 with an error is the least determined of all.
+TEST(Compaction, TheLeastDeterminedParameterHasTheLargestRelativeError) {
+  LawFit fit;
+  fit.status = CurveFitStatus::Fitted;
+  fit.value = {0.6, 0.02, 0.4, 5.0};
+  fit.error = {0.001, 0.01, 0.3, 2.0};
+  LeastDetermined least = least_determined(eq3_law(), fit);
+  EXPECT_EQ(least.name, "B");
+  EXPECT_DOUBLE_EQ(least.ratio, 0.75);
+  EXPECT_EQ(least.value, 0.4);
+  EXPECT_EQ(least.error, 0.3);
+  fit.value[1] = 0.0;
+  EXPECT_EQ(least_determined(eq3_law(), fit).name, "dX_inf");
+  EXPECT_EQ(least_determined(eq3_law(), LawFit{}).ratio, 0.0);  // not fitted: nothing to name
+}
+
+// A compaction of 0.001 under noise of 0.001: the fit of Eq. (3) converges ("fitted") with
+// tau's error 12 times its value, which only the _err scalars said. The log says it now;
+// the clean Eq. (4) fit of <Z> beside it is not named.
+TEST(Compaction, AFitTheDataBarelyDetermineIsSaid) {
+  Series s;
+  s.tap = run_taps();
+  s.phi_b = s.phi_c = noisy(eq3_law(), {0.62, 0.001, 0.5, 5.0}, s.tap, 1e-3, 3);
+  s.z_mean = noisy(eq4_law(), {14.0, 15.0, 0.5, 3.0}, s.tap, 0.01, 1);
+  const LawFit wide = fit_law(eq3_law(), s.tap, s.phi_b);
   ASSERT_TRUE(wide.fitted()) << describe(wide.status);
   const LeastDetermined least = least_determined(eq3_law(), wide);
-  std::size_t widest = 0;
-  for (std::size_t q = 0; q < wide.value.size(); ++q)
-    if (wide.error[q] / std::abs(wide.value[q]) > wide.error[widest] / std::abs(wide.value[widest]))
-      widest = q;
-  EXPECT_EQ(least.name, eq3_law().names[widest]);
-  EXPECT_GT(least.ratio, 1.0);
-  const LawFit clean = fit_law(eq3_law(), t, noisy(eq3_law(), {0.62, 0.04, 0.5, 5.0}, t, 5e-4, 1));
-  EXPECT_LT(least_determined(eq3_law(), clean).ratio, 1.0);
-  EXPECT_EQ(least_determined(eq3_law(), LawFit{}).ratio, 0.0);  // not fitted: nothing to name
+  ASSERT_EQ(least.name, "tau");
+  ASSERT_GT(least.ratio, 10.0);
+  const auto ctx = test::make_context("compaction", {});
+  ctx->keep_log();
+  Results results;
+  report_compaction(s, ReportSettings{}, results, ctx->log());
+  const std::vector<std::string> lines = ctx->logged_lines();
+  for (const char* fit : {"eq3_phi_b", "eq3_phi_c"}) {
+    const std::string line = std::string("warning: compaction: ") + fit +
+                             ": fitted, but tau = " + granpipe::format_number(least.value) +
+                             " +- " + granpipe::format_number(least.error) +
+                             ", an error above its value: the data barely determine the law";
+    EXPECT_EQ(std::count(lines.begin(), lines.end(), line), 1) << line;
+  }
+  for (const std::string& line : lines)
+    EXPECT_EQ(line.find("eq4_z_mean"), std::string::npos) << line;
 }
 
 // The curve drawn through the points is the fitted law itself: on exact Eq. (3) data it
@@ -532,9 +561,9 @@ TEST(Compaction, FramesOfAnotherEpsilonAreRefused) {
   FrameCache cache;
   for (std::size_t k = 0; k < 3; ++k) analyzer.consume(frames[k], cache);
   EXPECT_EQ(granpipe::test::input_error_of([&] { analyzer.consume(frames[3], cache); }),
-            "compaction: frame 3 (step 0): expected the epsilon of compaction: frame 1 (step "
-            "0), 0.01, got 0.0225 (compaction measures a run at one epsilon; a ramp's steps: "
-            "stereology's by_leg table)");
+            "compaction: frame 3 (step 0): expected the epsilon of frame 1 (tap 1), 0.01, got "
+            "0.0225 (compaction measures a run at one epsilon; a ramp's steps: stereology's "
+            "by_leg table)");
 }
 
 // A few taps of the 3D source: <Z> is its own mean_height observable in radii.

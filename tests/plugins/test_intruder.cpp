@@ -103,10 +103,15 @@ TEST(Intruder, APolydisperseBedsLargestGrainIsNoIntruder) {
   Frame f = bed();
   f.radius() << 0.45, 0.56, 0.55;
   EXPECT_EQ(granpipe::test::input_error_of([&] { analyze({f}); }),
-            "frame 0: expected an intruder (one particle larger than every other, by more than "
-            "the bed's own radii spread), got a largest radius 0.56 beside the bed's 0.45 to "
-            "0.55 (a polydisperse bed without an intruder?)");
+            "frame 0: expected an intruder (one particle larger than every other, of a species "
+            "of its own or by more than the bed's own radii spread), got a largest radius 0.56 "
+            "beside the bed's 0.45 to 0.55 (a polydisperse bed without an intruder?)");
   f.radius() << 0.45, 1.5, 0.55;
+  EXPECT_EQ(intruder::find_intruder(f, "test"), 1);
+  // Its own species names it, however close: a bed of radii 1.05 to 1.5 with an intruder
+  // of 1.9 was refused.
+  f.radius() << 1.05, 1.9, 1.5;
+  f.species() << 0, 1, 0;
   EXPECT_EQ(intruder::find_intruder(f, "test"), 1);
 }
 
