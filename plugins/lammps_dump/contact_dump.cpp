@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <limits>
 #include <map>
+#include <numbers>
 #include <utility>
 
 #include "granpipe/errors.hpp"
@@ -192,6 +193,26 @@ double wall_overlap(const Entry& e, const ContactColumns& c, const Frame& f, std
   return stated;
 }
 
+// A point on another wall than those stated went to the nearest stated one (a side wall's
+// contact in a bed stated with its base only counted as a base contact, exit 0). The point
+// lies off the atom's centre towards its wall: along the wall's normal, whatever the wall's
+// motion (a shaken base is stated where it is lowest), to within a coarse mesh's facets.
+void check_point_faces_wall(const Entry& e, const ContactColumns& c, const Frame& f, std::int64_t i,
+                            const WallTouch& touch) {
+  if (c.point[0] < 0) return;
+  Eigen::Vector3d d = e.vector(c.point) - centre(f, i);
+  for (int a = 0; a < 3; ++a) d[a] = f.container.minimum_image(a, d[a]);
+  constexpr double kLeastCosine = 0.9;  // 26 degrees
+  if (!(d.norm() > 0.0) || d.dot(touch.normal) >= kLeastCosine * d.norm()) return;
+  const double degrees =
+      std::acos(std::clamp(d.dot(touch.normal) / d.norm(), -1.0, 1.0)) * 180.0 / std::numbers::pi;
+  throw InputError(e.at() + "expected the point of atom " + std::to_string(f.id()[i]) +
+                   "'s wall contact towards the stated wall nearest it, " +
+                   std::string(to_string(touch.wall)) + ", got it " + format_number(degrees) +
+                   " degrees off that wall's normal: a wall the container does not state? "
+                   "(state its base, cylinder_radius or side_walls)");
+}
+
 ContactRow wall_row(const Entry& e, const ContactColumns& c, const Frame& f,
                     const std::string& frame_place, double rounding) {
   ContactRow r;
@@ -207,6 +228,7 @@ ContactRow wall_row(const Entry& e, const ContactColumns& c, const Frame& f,
                      ", got a container without walls "
                      "(state its base, cylinder_radius or side_walls)");
   }
+  check_point_faces_wall(e, c, f, r.i, *touch);
   r.j = partner::wall(touch->wall);
   r.overlap = wall_overlap(e, c, f, r.i, wall_gap(e, c, f, r.i, *touch), rounding);
   r.normal = e.vector(c.normal);

@@ -198,6 +198,13 @@ TEST_F(LammpsDumpContacts, AWallContactMustBeWhereItsAtomIs) {
   EXPECT_NEAR(
       overlap(one_wall("pos id force_normal", "6.000000 5.000000 0.1000000 6 5 0.5 0 0 10 0 0 4")),
       0.1, 1e-15);
+  // A point beside atom 1 (a side wall the container does not state) went to the base, the
+  // stated wall nearest to it, and counted as a base contact (exit 0).
+  EXPECT_EQ(
+      refusal(one_wall("pos id force_normal", "0.5000000 5.000000 2.000000 1 5 2 0 0 1 4 0 0")),
+      "walls.dump: timestep 0, line 10: expected the point of atom 1's wall contact towards "
+      "the stated wall nearest it, z_low, got it 90 degrees off that wall's normal: a wall "
+      "the container does not state? (state its base, cylinder_radius or side_walls)");
 }
 
 TEST_F(LammpsDumpContacts, BadPairFilesAreRefusedWithTheirLine) {
