@@ -120,6 +120,25 @@ double pair_overlap(const Entry& e, const ContactColumns& c, const Frame& f, std
   return is_overlap ? stated : reach - stated;
 }
 
+// The normal force lies on the line of the centres: columns of another quantity (the
+// tangential or the total force named as the normal one) were read as it, exit 0, and
+// gave a mean force of a fifth. The direction is known to far better than the 8 degrees
+// allowed; a total force whose tangential part is under a seventh of it passes.
+void check_along_centres(const Entry& e, const ContactColumns& c, const Frame& f,
+                         const ContactRow& r, const Eigen::Vector3d& d) {
+  const double force = r.normal.norm();
+  constexpr double kLeastCosine = 0.99;
+  if (!(force > 0.0) || std::abs(r.normal.dot(d)) >= kLeastCosine * force * d.norm()) return;
+  const double degrees =
+      std::acos(std::clamp(std::abs(r.normal.dot(d)) / (force * d.norm()), 0.0, 1.0)) * 180.0 /
+      std::numbers::pi;
+  throw InputError(e.at() + "expected the normal force (columns " +
+                   std::to_string(c.normal[0] + 1) + " to " + std::to_string(c.normal[2] + 1) +
+                   ") along the line of atoms " + std::to_string(f.id()[r.i]) + " and " +
+                   std::to_string(f.id()[r.j]) + "'s centres, got it " + format_number(degrees) +
+                   " degrees off it: are the columns named as the file has them?");
+}
+
 ContactRow pair_row(const Entry& e, const ContactColumns& c, const Frame& f,
                     const std::string& frame_place, double rounding) {
   ContactRow r;
@@ -134,6 +153,7 @@ ContactRow pair_row(const Entry& e, const ContactColumns& c, const Frame& f,
   check_touching(e, f, r.i, r.j, distance, rounding);
   r.overlap = pair_overlap(e, c, f, r.i, r.j, distance, rounding);
   r.normal = e.vector(c.normal);
+  check_along_centres(e, c, f, r, d);
   r.tangential = tangential_of(e, c, r.normal);
   // The middle of the overlap, on the line of the centres, as the dem source places it.
   r.point = wrapped(f.container, centre(f, r.i) + (ri - 0.5 * r.overlap) / distance * d);
@@ -306,6 +326,28 @@ void ContactDump::check_timesteps(const DumpIndex& atoms, const std::string& ato
   }
 }
 
+// The force on a pair's first atom points away from the second: a dashpot pulls a few pairs
+// together as they part, but the pairs of a packing push. Ids swapped against the force
+// (patom2 before patom1) saved every normal force pointing the wrong way, exit 0. Judged on
+// ten loaded pairs or more (a snapshot of a few colliding pairs may catch most of them
+// parting), refused where nine in ten or more attract.
+void ContactDump::check_mostly_repulsive(const SnapshotPlace& place, const Frame& frame,
+                                         const std::vector<ContactRow>& rows,
+                                         std::size_t first) const {
+  std::size_t loaded = 0, attractive = 0;
+  for (std::size_t k = first; k < rows.size(); ++k) {
+    const double push = -rows[k].normal.dot(separation(frame, rows[k].i, rows[k].j));
+    loaded += push != 0.0;
+    attractive += push < 0.0;
+  }
+  if (loaded < 10 || 10 * attractive < 9 * loaded) return;
+  throw InputError(place.file + ": " + place.name() +
+                   ": expected repulsive normal forces (the force on a pair's first atom "
+                   "pointing away from the second), got " +
+                   std::to_string(attractive) + " of " + std::to_string(loaded) +
+                   " attractive: are the ids' columns in the order the force belongs to?");
+}
+
 void ContactDump::read(const Frame& frame, const std::string& frame_place, double rounding,
                        std::vector<ContactRow>& rows) {
   const auto found = by_timestep_.find(frame.step);
@@ -322,6 +364,7 @@ void ContactDump::read(const Frame& frame, const std::string& frame_place, doubl
     const SnapshotHeader h = read_header(path(), lines_, line, kLocalDump);
     PairLines pairs;
     WallLines walls;
+    const std::size_t first = rows.size();
     for (std::int64_t k = 0; k < h.atoms; ++k) {
       next_line_of(h.place, lines_, line);
       split_words(line, words);
@@ -339,6 +382,7 @@ void ContactDump::read(const Frame& frame, const std::string& frame_place, doubl
         pairs.add(e, frame, rows.back());
       }
     }
+    if (!wall_) check_mostly_repulsive(h.place, frame, rows, first);
   } catch (const SnapshotCut& cut) {
     throw InputError(path() + ": expected " + cut.place.name() +
                      " to be complete, as it was when the source started, got a shorter file");

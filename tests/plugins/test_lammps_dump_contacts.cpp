@@ -150,6 +150,41 @@ TEST_F(LammpsDumpContacts, WallEntriesGoToTheNearestStatedWall) {
             "again (first on line 10)");
 }
 
+// The tangential force named as the normal one (90 degrees off the line of the centres) was
+// read as it, and ids swapped against the force saved every normal force pointing the
+// wrong way, both exit 0. A few attractive pairs (a dashpot as they part) are accepted.
+TEST_F(LammpsDumpContacts, NormalForcesOffTheCentresOrNearlyAllAttractiveAreRefused) {
+  const std::string empty_100 = pair_snapshot(100, "", 0);
+  EXPECT_EQ(refusal(with_pairs(pair_snapshot(0, "1 2 0 0 -1.5 0 0.001\n", 1) + empty_100)),
+            "pairs.dump: timestep 0, line 10: expected the normal force (columns 4 to 6) along "
+            "the line of atoms 1 and 2's centres, got it 90 degrees off it: are the columns "
+            "named as the file has them?");
+  // A chain of twelve atoms 0.999 apart along x, each pair's force on the first atom.
+  std::string atoms =
+      "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n12\nITEM: BOX BOUNDS pp pp ff\n"
+      "0 20\n0 10\n0 10\nITEM: ATOMS id type x y z radius\n";
+  for (int k = 1; k <= 12; ++k)
+    atoms += std::to_string(k) + " 1 " + std::to_string(0.999 * k) + " 5 5 0.5\n";
+  const auto chain = [&](int attracting) {
+    std::string pairs;
+    for (int k = 1; k < 12; ++k)
+      pairs += std::to_string(k) + " " + std::to_string(k + 1) +
+               (k <= attracting ? " 0 1 0 0 0.001\n" : " 0 -1 0 0 0.001\n");
+    return refusal({{"file", write(atoms, "chain.dump")},
+                    {"pair_file", write(pair_snapshot(0, pairs, 11), "chain_pairs.dump")},
+                    {"pair_columns", "id force_normal delta"}});
+  };
+  EXPECT_EQ(chain(11),
+            "chain_pairs.dump: the snapshot of timestep 0 (from line 1): expected repulsive "
+            "normal forces (the force on a pair's first atom pointing away from the second), got "
+            "11 of 11 attractive: are the ids' columns in the order the force belongs to?");
+  EXPECT_EQ(chain(3), "accepted");
+  // Two pairs both attracting: too few to judge.
+  EXPECT_EQ(refusal(with_pairs(pair_snapshot(0, "1 2 0 1.5 0 0 0.001\n10 3 0 -2.5 0 0 0.002\n", 2) +
+                               empty_100)),
+            "accepted");
+}
+
 // A wall file of another snapshot or run: an atom away from the wall the entry names, or an
 // overlap (delta) its position contradicts, is refused, not stored as a contact.
 TEST_F(LammpsDumpContacts, AWallContactMustBeWhereItsAtomIs) {
@@ -430,7 +465,7 @@ TEST_F(LammpsDumpContacts, APairAcrossAPeriodicSideMeetsThroughTheNearestImage) 
       "10\nITEM: ATOMS id type x y z radius\n1 1 0.25 5 2 0.5\n2 1 9.375 5 2 0.5\n";
   const std::string pairs =
       "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ENTRIES\n1\nITEM: BOX BOUNDS pp pp ff\n0 10\n0 10\n0 "
-      "10\nITEM: ENTRIES c_p[1] c_p[2] c_p[3] c_p[4] c_p[5] c_p[6]\n1 2 1 -3 0 0\n";
+      "10\nITEM: ENTRIES c_p[1] c_p[2] c_p[3] c_p[4] c_p[5] c_p[6]\n1 2 1 3 0 0\n";
   const auto f = frames({{"file", write(atoms, "atoms.dump")},
                          {"pair_file", write(pairs, "pairs.dump")},
                          {"pair_columns", "id force_normal"}});
