@@ -21,17 +21,27 @@ std::vector<std::string> keywords(const std::string& text) {
   return out;
 }
 
-// LAMMPS writes a 2D run's atoms at z = 0 in a box periodic along z. No 3D packing has a
-// period along z of at most an atom's diameter (the atom would touch its own image), so such
-// a flat layer is a 2D dump, whose disks 3D analyzers would measure as spheres.
+// LAMMPS writes a 2D run's atoms at z = 0 in a box periodic along z, whose z bounds
+// straddle 0 (any thickness: a run with disks of 1 mm in z bounds of -5 to 5 mm was read as
+// spheres, exit 0). No 3D packing has a period along z of at most an atom's diameter (the
+// atom would touch its own image); one lying exactly in the plane z = 0 of a straddling
+// periodic box cannot be told from a 2D run, as in lammps_data: the message says how to
+// have it read.
 void refuse_a_2d_run(const Frame& f, const Container& box, const std::string& at) {
   const auto z = f.position().col(2);
   const double diameter = 2.0 * f.radius().maxCoeff();
-  if (!box.periodic(2) || box.length(2) > diameter || (z != z[0]).any()) return;
-  throw InputError(at + kReads3d + "every atom at z = " + format_number(z[0]) +
-                   " in a box periodic along z and " + format_number(box.length(2)) +
-                   " thick, no more than an atom's diameter (" + format_number(diameter) +
-                   "): a 2D run's dump");
+  if (!box.periodic(2) || (z != z[0]).any()) return;
+  if (box.length(2) <= diameter) {
+    throw InputError(at + kReads3d + "every atom at z = " + format_number(z[0]) +
+                     " in a box periodic along z and " + format_number(box.length(2)) +
+                     " thick, no more than an atom's diameter (" + format_number(diameter) +
+                     "): a 2D run's dump");
+  }
+  if (z[0] != 0.0 || !(box.lo[2] < 0.0 && box.hi[2] > 0.0)) return;
+  throw InputError(at + kReads3d + "every atom at z = 0 in a box periodic along z from " +
+                   format_number(box.lo[2]) + " to " + format_number(box.hi[2]) +
+                   ": a 2D run's dump (a 3D packing in the plane z = 0 cannot be told from one: "
+                   "shift its atoms and box off z = 0 to have it read)");
 }
 
 }  // namespace

@@ -607,6 +607,15 @@ TEST_F(LammpsDump, TwoDimensionalDumpsAreRefusedAsSuch) {
   EXPECT_EQ(refusal(text), "atoms.dump: timestep 0, line 5: " + reads_3d +
                                "every atom at z = 0 in a box periodic along z and 1 thick, no "
                                "more than an atom's diameter (1): a 2D run's dump");
+  // A 2D run's box may be thicker than the disks (z bounds -5 to 5 for disks of 1): read as
+  // spheres, exit 0. The same atoms off z = 0 are a 3D layer, read.
+  text.replace(text.find("\n-0.5 0.5\n"), 10, "\n-5 5\n");
+  EXPECT_EQ(refusal(text), "atoms.dump: timestep 0, line 5: " + reads_3d +
+                               "every atom at z = 0 in a box periodic along z from -5 to 5: a 2D "
+                               "run's dump (a 3D packing in the plane z = 0 cannot be told from "
+                               "one: shift its atoms and box off z = 0 to have it read)");
+  for (Atom& t : list) t.x[2] = 5.0;
+  EXPECT_EQ(refusal(snapshot(0, list, kPlain, 0, "pp pp pp")), "accepted");
 }
 
 TEST_F(LammpsDump, FilesThatAreNotDumpsAreNamed) {
