@@ -223,6 +223,12 @@ TEST(LammpsData, DensitiesAndImageFlagsAreChecked) {
               "1 0 0 0 " +
                   flags + "\"");
   }
+  // An atom that crossed a periodic side: the run was periodic along y, and its sides, read
+  // as open, lost the pairs across it (a packing fraction of 0.458 for 0.485, exit 0).
+  EXPECT_EQ(refusal(head + "1 1 1 1 0 0 0 0 -1 0\n"),
+            "x.data: line 4: expected image flags 0 (a data file's sides are read as open), got -1 "
+            "along y in \"1 1 1 1 0 0 0 0 -1 0\": the run was periodic along y; read its dump with "
+            "the lammps_dump source, which reads periodic sides");
 }
 
 // A dump's first line would pass for a title: the dump is named as such.
