@@ -55,6 +55,7 @@ class LammpsDumpSource : public Source {
   // container, every atom checked to be inside.
   Frame frame_of(const SnapshotHeader& header);
   void check_time_follows(const Frame& f, const SnapshotHeader& header);
+  void check_dt_agrees(const Frame& f, const SnapshotHeader& header) const;
 
   std::string file_;
   StatedContainer stated_;
