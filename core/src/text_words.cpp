@@ -77,15 +77,19 @@ Utf8Lead utf8_lead(unsigned char c) {
   return {0, 0, 0};
 }
 
-// A bidirectional control (U+061C, U+200E, U+200F, U+202A..U+202E, U+2066..U+2069): well
-// formed, but a terminal reorders the rest of the line by it.
-bool bidi_control(std::string_view c) {
+// A character well formed but not to be shown as it is: a bidirectional control (U+061C,
+// U+200E, U+200F, U+202A..U+202E, U+2066..U+2069), by which a terminal reorders the rest of
+// the line, or one of no width (U+200B..U+200D, U+2060, and U+FEFF, the byte-order mark an
+// editor puts before a file's first line: "expected ITEM: TIMESTEP, got ITEM: TIMESTEP").
+bool hidden_or_reordering(std::string_view c) {
   const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(c[k]); };
   if (c.size() == 2) return byte(0) == 0xD8 && byte(1) == 0x9C;
-  if (c.size() != 3 || byte(0) != 0xE2) return false;
+  if (c.size() != 3) return false;
+  if (byte(0) == 0xEF) return byte(1) == 0xBB && byte(2) == 0xBF;
+  if (byte(0) != 0xE2) return false;
   const unsigned char b = byte(1), last = byte(2);
-  return (b == 0x80 && (last == 0x8E || last == 0x8F || (last >= 0xAA && last <= 0xAE))) ||
-         (b == 0x81 && last >= 0xA6 && last <= 0xA9);
+  return (b == 0x80 && ((last >= 0x8B && last <= 0x8F) || (last >= 0xAA && last <= 0xAE))) ||
+         (b == 0x81 && (last == 0xA0 || (last >= 0xA6 && last <= 0xA9)));
 }
 
 }  // namespace
@@ -116,7 +120,7 @@ std::string quoted(std::string_view line) {
     const bool c1 =
         c == 0xC2 && k + 1 < kept.size() && static_cast<unsigned char>(kept[k + 1]) < 0xA0;
     const std::size_t n = c1 ? 0 : utf8_length(kept.substr(k));
-    if ((n > 1 && !bidi_control(kept.substr(k, n))) || (n == 1 && std::isprint(c))) {
+    if ((n > 1 && !hidden_or_reordering(kept.substr(k, n))) || (n == 1 && std::isprint(c))) {
       shown += kept.substr(k, n);
     } else {
       shown += '?';

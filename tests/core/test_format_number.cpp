@@ -41,6 +41,11 @@ TEST(Quoted, KeepsUtf8AndHidesOtherBytes) {
   EXPECT_EQ(granpipe::quoted(std::string("\xed\xa0\x80")), "\"???\"");
   // Bidirectional controls reorder the terminal's line (a unit "nm\u202e..."): one '?' each.
   EXPECT_EQ(granpipe::quoted("nm\u202eabc"), "\"nm?abc\"");
+  // Characters of no width: a byte-order mark before a dump's first line read "expected
+  // ITEM: TIMESTEP, got ITEM: TIMESTEP".
+  EXPECT_EQ(granpipe::quoted("\ufeffITEM: TIMESTEP"), "\"?ITEM: TIMESTEP\"");
+  EXPECT_EQ(granpipe::quoted("a\u200bb\u2060c"), "\"a?b?c\"");
+  EXPECT_EQ(granpipe::quoted("\u2010"), "\"\u2010\"");  // a hyphen is shown
   EXPECT_EQ(granpipe::quoted("\u2066x\u2069\u200f\u061c"), "\"?x???\"");
   EXPECT_EQ(granpipe::quoted("a\u2014b"), "\"a\u2014b\"");  // an em dash is text
 }
