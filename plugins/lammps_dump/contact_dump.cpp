@@ -122,21 +122,25 @@ double pair_overlap(const Entry& e, const ContactColumns& c, const Frame& f, std
 
 // The normal force lies on the line of the centres: columns of another quantity (the
 // tangential or the total force named as the normal one) were read as it, exit 0, and
-// gave a mean force of a fifth. The direction is known to far better than the 8 degrees
-// allowed; a total force whose tangential part is under a seventh of it passes.
+// gave a mean force of a fifth. 8 degrees are allowed, and what the printed positions leave
+// of the line's direction (`rounding` over the distance): a total force whose tangential
+// part is under a seventh of it passes.
 void check_along_centres(const Entry& e, const ContactColumns& c, const Frame& f,
-                         const ContactRow& r, const Eigen::Vector3d& d) {
-  const double force = r.normal.norm();
-  constexpr double kLeastCosine = 0.99;
-  if (!(force > 0.0) || std::abs(r.normal.dot(d)) >= kLeastCosine * force * d.norm()) return;
+                         const ContactRow& r, const Eigen::Vector3d& d, double rounding) {
+  const double force = r.normal.norm(), distance = d.norm();
+  const double allowed = std::min(std::acos(0.99) + rounding / distance, std::numbers::pi / 2);
+  if (!(force > 0.0) || allowed >= std::numbers::pi / 2 ||
+      std::abs(r.normal.dot(d)) >= std::cos(allowed) * force * distance)
+    return;
   const double degrees =
-      std::acos(std::clamp(std::abs(r.normal.dot(d)) / (force * d.norm()), 0.0, 1.0)) * 180.0 /
+      std::acos(std::clamp(std::abs(r.normal.dot(d)) / (force * distance), 0.0, 1.0)) * 180.0 /
       std::numbers::pi;
   throw InputError(e.at() + "expected the normal force (columns " +
                    std::to_string(c.normal[0] + 1) + " to " + std::to_string(c.normal[2] + 1) +
                    ") along the line of atoms " + std::to_string(f.id()[r.i]) + " and " +
                    std::to_string(f.id()[r.j]) + "'s centres, got it " + format_number(degrees) +
-                   " degrees off it: are the columns named as the file has them?");
+                   " degrees off it (" + format_number(allowed * 180.0 / std::numbers::pi) +
+                   " allowed): are the columns named as the file has them?");
 }
 
 ContactRow pair_row(const Entry& e, const ContactColumns& c, const Frame& f,
@@ -153,11 +157,19 @@ ContactRow pair_row(const Entry& e, const ContactColumns& c, const Frame& f,
   check_touching(e, f, r.i, r.j, distance, rounding);
   r.overlap = pair_overlap(e, c, f, r.i, r.j, distance, rounding);
   r.normal = e.vector(c.normal);
-  check_along_centres(e, c, f, r, d);
+  check_along_centres(e, c, f, r, d, rounding);
   r.tangential = tangential_of(e, c, r.normal);
   // The middle of the overlap, on the line of the centres, as the dem source places it.
   r.point = wrapped(f.container, centre(f, r.i) + (ri - 0.5 * r.overlap) / distance * d);
   return r;
+}
+
+// The way from the atom's centre to its wall contact's point, across periodic sides by the
+// nearest image.
+Eigen::Vector3d to_point(const Entry& e, const ContactColumns& c, const Frame& f, std::int64_t i) {
+  Eigen::Vector3d d = e.vector(c.point) - centre(f, i);
+  for (int a = 0; a < 3; ++a) d[a] = f.container.minimum_image(a, d[a]);
+  return d;
 }
 
 // How far a wall contact's atom is from the wall, and to what rounding: from the entry's own
@@ -170,18 +182,14 @@ struct WallGap {
   bool from_point;
 };
 
-// `nearest`: the stated wall nearest to the point, or without one to the atom.
+// `nearest`: the stated wall the point faces, or without one the wall nearest the atom.
 WallGap wall_gap(const Entry& e, const ContactColumns& c, const Frame& f, std::int64_t i,
                  const WallTouch& nearest) {
   if (c.point[0] < 0) return {nearest.distance, 0.0, false};
-  const Eigen::Vector3d x = centre(f, i);
-  Eigen::Vector3d d = e.vector(c.point) - x;
   double rounding = 0.0;
-  for (int a = 0; a < 3; ++a) {
-    d[a] = f.container.minimum_image(a, d[a]);
+  for (int a = 0; a < 3; ++a)
     rounding += printed_rounding(e.words[static_cast<std::size_t>(c.point[a])]);
-  }
-  return {d.norm(), rounding, true};
+  return {to_point(e, c, f, i).norm(), rounding, true};
 }
 
 // A wall contact's atom must touch its wall, and the overlap its column states (LIGGGHTS'
@@ -217,20 +225,17 @@ double wall_overlap(const Entry& e, const ContactColumns& c, const Frame& f, std
 // contact in a bed stated with its base only counted as a base contact, exit 0). The point
 // lies off the atom's centre towards its wall: along the wall's normal, whatever the wall's
 // motion (a shaken base is stated where it is lowest), to within a coarse mesh's facets.
-void check_point_faces_wall(const Entry& e, const ContactColumns& c, const Frame& f, std::int64_t i,
+void check_point_faces_wall(const Entry& e, const Frame& f, std::int64_t i,
                             const WallTouch& touch) {
-  if (c.point[0] < 0) return;
-  Eigen::Vector3d d = e.vector(c.point) - centre(f, i);
-  for (int a = 0; a < 3; ++a) d[a] = f.container.minimum_image(a, d[a]);
   constexpr double kLeastCosine = 0.9;  // 26 degrees
-  if (!(d.norm() > 0.0) || d.dot(touch.normal) >= kLeastCosine * d.norm()) return;
-  const double degrees =
-      std::acos(std::clamp(d.dot(touch.normal) / d.norm(), -1.0, 1.0)) * 180.0 / std::numbers::pi;
+  if (touch.facing >= kLeastCosine) return;
+  const double degrees = std::acos(std::clamp(touch.facing, -1.0, 1.0)) * 180.0 / std::numbers::pi;
   throw InputError(e.at() + "expected the point of atom " + std::to_string(f.id()[i]) +
-                   "'s wall contact towards the stated wall nearest it, " +
-                   std::string(to_string(touch.wall)) + ", got it " + format_number(degrees) +
-                   " degrees off that wall's normal: a wall the container does not state? "
-                   "(state its base, cylinder_radius or side_walls)");
+                   "'s wall contact along the normal of a stated wall, got it " +
+                   format_number(degrees) + " degrees off the nearest in direction, " +
+                   std::string(to_string(touch.wall)) +
+                   ": a wall the container does not state? (state its base, cylinder_radius or "
+                   "side_walls)");
 }
 
 ContactRow wall_row(const Entry& e, const ContactColumns& c, const Frame& f,
@@ -239,7 +244,8 @@ ContactRow wall_row(const Entry& e, const ContactColumns& c, const Frame& f,
   r.i = row_of(e, c.id1, f, frame_place);
   const Eigen::Vector3d x = centre(f, r.i);
   const double radius = f.radius()[r.i];
-  const auto touch = nearest_wall(f.container, c.point[0] >= 0 ? e.vector(c.point) : x);
+  const auto touch = c.point[0] >= 0 ? facing_wall(f.container, x, to_point(e, c, f, r.i))
+                                     : nearest_wall(f.container, x);
   if (!touch) {
     throw InputError(e.at() +
                      "expected a wall of the stated container for the wall contact of "
@@ -248,7 +254,7 @@ ContactRow wall_row(const Entry& e, const ContactColumns& c, const Frame& f,
                      ", got a container without walls "
                      "(state its base, cylinder_radius or side_walls)");
   }
-  check_point_faces_wall(e, c, f, r.i, *touch);
+  check_point_faces_wall(e, f, r.i, *touch);
   r.j = partner::wall(touch->wall);
   r.overlap = wall_overlap(e, c, f, r.i, wall_gap(e, c, f, r.i, *touch), rounding);
   r.normal = e.vector(c.normal);
@@ -326,28 +332,6 @@ void ContactDump::check_timesteps(const DumpIndex& atoms, const std::string& ato
   }
 }
 
-// The force on a pair's first atom points away from the second: a dashpot pulls a few pairs
-// together as they part, but the pairs of a packing push. Ids swapped against the force
-// (patom2 before patom1) saved every normal force pointing the wrong way, exit 0. Judged on
-// ten loaded pairs or more (a snapshot of a few colliding pairs may catch most of them
-// parting), refused where nine in ten or more attract.
-void ContactDump::check_mostly_repulsive(const SnapshotPlace& place, const Frame& frame,
-                                         const std::vector<ContactRow>& rows,
-                                         std::size_t first) const {
-  std::size_t loaded = 0, attractive = 0;
-  for (std::size_t k = first; k < rows.size(); ++k) {
-    const double push = -rows[k].normal.dot(separation(frame, rows[k].i, rows[k].j));
-    loaded += push != 0.0;
-    attractive += push < 0.0;
-  }
-  if (loaded < 10 || 10 * attractive < 9 * loaded) return;
-  throw InputError(place.file + ": " + place.name() +
-                   ": expected repulsive normal forces (the force on a pair's first atom "
-                   "pointing away from the second), got " +
-                   std::to_string(attractive) + " of " + std::to_string(loaded) +
-                   " attractive: are the ids' columns in the order the force belongs to?");
-}
-
 void ContactDump::read(const Frame& frame, const std::string& frame_place, double rounding,
                        std::vector<ContactRow>& rows) {
   const auto found = by_timestep_.find(frame.step);
@@ -364,7 +348,6 @@ void ContactDump::read(const Frame& frame, const std::string& frame_place, doubl
     const SnapshotHeader h = read_header(path(), lines_, line, kLocalDump);
     PairLines pairs;
     WallLines walls;
-    const std::size_t first = rows.size();
     for (std::int64_t k = 0; k < h.atoms; ++k) {
       next_line_of(h.place, lines_, line);
       split_words(line, words);
@@ -382,7 +365,6 @@ void ContactDump::read(const Frame& frame, const std::string& frame_place, doubl
         pairs.add(e, frame, rows.back());
       }
     }
-    if (!wall_) check_mostly_repulsive(h.place, frame, rows, first);
   } catch (const SnapshotCut& cut) {
     throw InputError(path() + ": expected " + cut.place.name() +
                      " to be complete, as it was when the source started, got a shorter file");

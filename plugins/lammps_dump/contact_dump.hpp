@@ -32,17 +32,14 @@ class ContactDump {
   // `rounding` (how far off the frame's centre distances may be) or an atom apart from its
   // wall (at the entry's point where given: the base of a vibrated bed moves, and only the
   // entry says where it was; a point off the wall's normal, of a wall not stated), an
-  // overlap column the positions contradict, a pair's normal force off the line of its
-  // centres, or a snapshot of pairs whose forces nearly all attract.
+  // overlap column the positions contradict, or a pair's normal force off the line of its
+  // centres.
   void read(const Frame& frame, const std::string& frame_place, double rounding,
             std::vector<ContactRow>& rows);
   bool has_tangential() const { return columns_.tangential[0] >= 0 || columns_.force[0] >= 0; }
   const std::string& path() const { return lines_.path(); }
 
  private:
-  void check_mostly_repulsive(const SnapshotPlace& place, const Frame& frame,
-                              const std::vector<ContactRow>& rows, std::size_t first) const;
-
   TextLines lines_;
   DumpIndex index_;
   ContactColumns columns_;

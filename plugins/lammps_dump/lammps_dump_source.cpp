@@ -108,6 +108,11 @@ LammpsDumpSource::LammpsDumpSource(const PluginContext& ctx)
   next_ = selection_.first;
   first_frame_ = read_snapshot(selection_.first);
   if (!pairs_) warn_if_coarse(ctx, *first_frame_);
+  // A dt beside the dump's own times (which LAMMPS counts from the run's start, through
+  // reset_timestep and changes of dt) was dropped without a word.
+  if (times_stated_ && dt_ > 0) {
+    ctx.log.warn(file_ + ": " + dt_param_ + " is not used: the dump states its times (ITEM: TIME)");
+  }
   // Undefined times are NaN in every table with a time column: said once, with the cure.
   if (std::isnan(first_frame_->time)) {
     ctx.log.warn(file_ + ": the dump has no ITEM: TIME and " + dt_param_ +
@@ -242,7 +247,7 @@ Frame LammpsDumpSource::frame_of(const SnapshotHeader& h) {
     throw InputError(dt_param_ + ": expected a time step whose product with the dump's TIMESTEP " +
                      std::to_string(f.step) + " is finite, got " + format_number(dt_));
   }
-  check_dt_agrees(f, h);
+  times_stated_ = h.time.has_value();
   f.container = stated_.place(h.box.container, h.place.where(h.box.line));
   const std::string box = "the dump's BOX BOUNDS, line " + std::to_string(h.box.line);
   if (const auto out = stated_.first_outside(f, h.box.container, box)) {
@@ -255,18 +260,6 @@ Frame LammpsDumpSource::frame_of(const SnapshotHeader& h) {
   f.check(h.place.where(h.place.first_line));
   check_time_follows(f, h);
   return std::move(f);
-}
-
-// A dump that states its times has them from LAMMPS; a dt given beside them was dropped
-// without a word where it disagreed (a mistyped dt, or a run whose step changed).
-void LammpsDumpSource::check_dt_agrees(const Frame& f, const SnapshotHeader& h) const {
-  if (!h.time || !(dt_ > 0)) return;
-  const double product = dt_ * static_cast<double>(f.step);
-  if (std::abs(product - *h.time) <= 1e-6 * std::max(std::abs(*h.time), std::abs(product))) return;
-  throw InputError(dt_param_ + ": expected 0 or the run's time step, got " + format_number(dt_) +
-                   ": TIMESTEP " + std::to_string(f.step) + " x dt is " + format_number(product) +
-                   ", where " + h.place.where(h.place.first_line) + " states ITEM: TIME " +
-                   format_number(*h.time));
 }
 
 // Snapshots come in rising timesteps (the index checks them); their ITEM: TIME values follow

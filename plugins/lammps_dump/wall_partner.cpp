@@ -4,11 +4,11 @@
 
 namespace granpipe::lammps_dump {
 
-std::optional<WallTouch> nearest_wall(const Container& c, const Eigen::Vector3d& point) {
-  std::optional<WallTouch> best;
-  auto offer = [&](Wall w, const Eigen::Vector3d& normal, double distance) {
-    if (!best || std::abs(distance) < std::abs(best->distance)) best = {w, normal, distance};
-  };
+namespace {
+
+// Calls offer(wall, normal, distance of `point` from it) for each solid wall of `c`.
+template <class Offer>
+void for_each_wall(const Container& c, const Eigen::Vector3d& point, Offer&& offer) {
   const bool cylinder = c.shape == ContainerShape::Cylinder;
   for (int a = 0; a < 3; ++a) {
     if (cylinder && a < 2) continue;  // the side of a cylinder is one round wall
@@ -28,6 +28,27 @@ std::optional<WallTouch> nearest_wall(const Container& c, const Eigen::Vector3d&
         r > 0 ? Eigen::Vector3d(out[0] / r, out[1] / r, 0.0) : Eigen::Vector3d::UnitX();
     offer(Wall::CylinderSide, normal, c.cylinder_radius - r);
   }
+}
+
+}  // namespace
+
+std::optional<WallTouch> nearest_wall(const Container& c, const Eigen::Vector3d& point) {
+  std::optional<WallTouch> best;
+  for_each_wall(c, point, [&](Wall w, const Eigen::Vector3d& normal, double distance) {
+    if (!best || std::abs(distance) < std::abs(best->distance)) best = {w, normal, distance, 1.0};
+  });
+  return best;
+}
+
+std::optional<WallTouch> facing_wall(const Container& c, const Eigen::Vector3d& centre,
+                                     const Eigen::Vector3d& to_point) {
+  const double length = to_point.norm();
+  if (!(length > 0.0)) return nearest_wall(c, centre + to_point);
+  std::optional<WallTouch> best;
+  for_each_wall(c, centre + to_point, [&](Wall w, const Eigen::Vector3d& normal, double distance) {
+    const double facing = to_point.dot(normal) / length;
+    if (!best || facing > best->facing) best = {w, normal, distance, facing};
+  });
   return best;
 }
 
