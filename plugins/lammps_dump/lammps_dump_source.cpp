@@ -80,9 +80,10 @@ Schema schema() {
            "LIGGGHTS \"pos id force force_normal contactArea delta\" (any order), LAMMPS "
            "one per column \"patom1 patom2 dist fx fy fz p1 p2 p3\"")
       .only_where("a pair_file", [](const Params& p) { return !p.string("pair_file").empty(); });
-  s.path("wall_file", std::string(""),
-         "dump local of LIGGGHTS compute wall/gran/local at the atom dump's timesteps (\"\": "
-         "none); each contact goes to the stated wall nearest to it");
+  s.path(
+      "wall_file", std::string(""),
+      "dump local of LIGGGHTS compute wall/gran/local at the atom dump's timesteps (\"\": "
+      "none); each contact goes to the stated wall its pos faces (without pos: nearest its atom)");
   s.string("wall_columns", "", "the keywords of compute wall/gran/local, as pair_columns")
       .only_where("a wall_file", [](const Params& p) { return !p.string("wall_file").empty(); });
   return s;
