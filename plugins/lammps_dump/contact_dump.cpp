@@ -182,10 +182,10 @@ struct WallGap {
   bool from_point;
 };
 
-// `nearest`: the stated wall the point faces, or without one the wall nearest the atom.
+// `wall`: the stated wall the point faces, or without one the wall nearest the atom.
 WallGap wall_gap(const Entry& e, const ContactColumns& c, const Frame& f, std::int64_t i,
-                 const WallTouch& nearest) {
-  if (c.point[0] < 0) return {nearest.distance, 0.0, false};
+                 const WallTouch& wall) {
+  if (c.point[0] < 0) return {wall.distance, 0.0, false};
   double rounding = 0.0;
   for (int a = 0; a < 3; ++a)
     rounding += printed_rounding(e.words[static_cast<std::size_t>(c.point[a])]);
@@ -225,16 +225,17 @@ double wall_overlap(const Entry& e, const ContactColumns& c, const Frame& f, std
 // contact in a bed stated with its base only counted as a base contact, exit 0). The point
 // lies off the atom's centre towards its wall: along the wall's normal, whatever the wall's
 // motion (a shaken base is stated where it is lowest), to within a coarse mesh's facets.
+// (Without a point, the wall nearest the atom is taken, facing it by construction.)
 void check_point_faces_wall(const Entry& e, const Frame& f, std::int64_t i,
                             const WallTouch& touch) {
   constexpr double kLeastCosine = 0.9;  // 26 degrees
   if (touch.facing >= kLeastCosine) return;
   const double degrees = std::acos(std::clamp(touch.facing, -1.0, 1.0)) * 180.0 / std::numbers::pi;
   throw InputError(e.at() + "expected the point of atom " + std::to_string(f.id()[i]) +
-                   "'s wall contact along the normal of a stated wall, got it " +
-                   format_number(degrees) + " degrees off the nearest in direction, " +
+                   "'s wall contact within 25.8 degrees of a stated wall's normal, got it " +
+                   format_number(degrees) + " degrees off the closest, " +
                    std::string(to_string(touch.wall)) +
-                   ": a wall the container does not state? (state its base, cylinder_radius or "
+                   "'s: a wall the container does not state? (state its base, cylinder_radius or "
                    "side_walls)");
 }
 

@@ -111,7 +111,7 @@ LammpsDumpSource::LammpsDumpSource(const PluginContext& ctx)
   if (!pairs_) warn_if_coarse(ctx, *first_frame_);
   // A dt beside the dump's own times (which LAMMPS counts from the run's start, through
   // reset_timestep and changes of dt) was dropped without a word.
-  if (times_stated_ && dt_ > 0) {
+  if (*times_stated_ && dt_ > 0) {
     ctx.log.warn(file_ + ": " + dt_param_ + " is not used: the dump states its times (ITEM: TIME)");
   }
   // Undefined times are NaN in every table with a time column: said once, with the cure.
@@ -248,7 +248,7 @@ Frame LammpsDumpSource::frame_of(const SnapshotHeader& h) {
     throw InputError(dt_param_ + ": expected a time step whose product with the dump's TIMESTEP " +
                      std::to_string(f.step) + " is finite, got " + format_number(dt_));
   }
-  times_stated_ = h.time.has_value();
+  check_times_stated_alike(h);
   f.container = stated_.place(h.box.container, h.place.where(h.box.line));
   const std::string box = "the dump's BOX BOUNDS, line " + std::to_string(h.box.line);
   if (const auto out = stated_.first_outside(f, h.box.container, box)) {
@@ -261,6 +261,16 @@ Frame LammpsDumpSource::frame_of(const SnapshotHeader& h) {
   f.check(h.place.where(h.place.first_line));
   check_time_follows(f, h);
   return std::move(f);
+}
+
+// A dump states ITEM: TIME in every snapshot or in none (dump_modify time): snapshots of
+// two dumps joined had their times from the file and from dt x TIMESTEP mixed, exit 0.
+void LammpsDumpSource::check_times_stated_alike(const SnapshotHeader& h) {
+  if (!times_stated_) times_stated_ = h.time.has_value();
+  if (*times_stated_ == h.time.has_value()) return;
+  throw InputError(h.place.at(h.place.first_line) + "expected " +
+                   (*times_stated_ ? "ITEM: TIME, as" : "no ITEM: TIME, as none of") +
+                   " the snapshots read before it, got " + (*times_stated_ ? "none" : "one"));
 }
 
 // Snapshots come in rising timesteps (the index checks them); their ITEM: TIME values follow

@@ -55,14 +55,15 @@ class LammpsDumpSource : public Source {
   // container, every atom checked to be inside.
   Frame frame_of(const SnapshotHeader& header);
   void check_time_follows(const Frame& f, const SnapshotHeader& header);
+  void check_times_stated_alike(const SnapshotHeader& header);
 
   std::string file_;
   StatedContainer stated_;
   double radius_;  // every atom's when the dump has no radius or diameter column; else 0
   double dt_;      // the run's timestep, for the time of dumps without ITEM: TIME; else 0
   std::string dt_param_;
-  bool times_stated_ = false;  // the last snapshot read gave ITEM: TIME
-  double max_overlap_;         // of two atoms, over the smaller radius
+  std::optional<bool> times_stated_;  // whether the snapshots give ITEM: TIME, once one is read
+  double max_overlap_;                // of two atoms, over the smaller radius
   std::string max_overlap_param_;
   TextLines lines_;
   DumpIndex index_;

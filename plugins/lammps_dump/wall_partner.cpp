@@ -43,11 +43,13 @@ std::optional<WallTouch> nearest_wall(const Container& c, const Eigen::Vector3d&
 std::optional<WallTouch> facing_wall(const Container& c, const Eigen::Vector3d& centre,
                                      const Eigen::Vector3d& to_point) {
   const double length = to_point.norm();
-  if (!(length > 0.0)) return nearest_wall(c, centre + to_point);
   std::optional<WallTouch> best;
-  for_each_wall(c, centre + to_point, [&](Wall w, const Eigen::Vector3d& normal, double distance) {
-    const double facing = to_point.dot(normal) / length;
-    if (!best || facing > best->facing) best = {w, normal, distance, facing};
+  // The normals at the centre (a point across the cylinder's axis faces the far side), the
+  // point's distance along them.
+  for_each_wall(c, centre, [&](Wall w, const Eigen::Vector3d& normal, double distance) {
+    const double along = to_point.dot(normal);
+    const double facing = length > 0.0 ? along / length : 0.0;
+    if (!best || facing > best->facing) best = {w, normal, distance - along, facing};
   });
   return best;
 }

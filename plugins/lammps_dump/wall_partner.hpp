@@ -21,10 +21,11 @@ struct WallTouch {
 // container has none.
 std::optional<WallTouch> nearest_wall(const Container& c, const Eigen::Vector3d& point);
 
-// The solid wall whose normal the contact point lies along, seen from the particle's centre
-// (`to_point`: from the centre to the point): a point on a vibrated base raised above where
-// it is stated is nearer the cylinder than the base for a bead touching both, but lies
-// below the bead. Nothing when the container has none.
+// The solid wall whose normal at the particle's centre the contact point lies along
+// (`to_point`: from the centre to the point; `facing` 0 for a point at the centre): a point
+// on a vibrated base raised above where it is stated is nearer the cylinder than the base
+// for a bead touching both, but lies below the bead. How far the point is from that wall
+// is not judged (a wall moves; docs/lammps_dump.md). Nothing when the container has none.
 std::optional<WallTouch> facing_wall(const Container& c, const Eigen::Vector3d& centre,
                                      const Eigen::Vector3d& to_point);
 

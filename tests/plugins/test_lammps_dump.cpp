@@ -298,11 +298,15 @@ TEST_F(LammpsDump, TheTimeIsItemTimeOrTheStepTimesDt) {
   EXPECT_EQ(refusal("ITEM: TIME\n2.75\n" + text + "ITEM: TIME\n2.5\n" + later),
             "atoms.dump: timestep 400, line 16: expected a time at or after 2.75 (the snapshot "
             "read before it), got 2.5");
-  // A snapshot without a time (NaN) between them changes nothing.
+  // A snapshot without a time between them (two dumps joined) had its time from dt, its
+  // neighbours from the file, exit 0.
   EXPECT_EQ(refusal("ITEM: TIME\n2.75\n" + text + snapshot(350, atoms(), kPlain) +
                     "ITEM: TIME\n2.5\n" + later),
-            "atoms.dump: timestep 400, line 29: expected a time at or after 2.75 (the snapshot "
-            "read before it), got 2.5");
+            "atoms.dump: timestep 350, line 16: expected ITEM: TIME, as the snapshots read before "
+            "it, got none");
+  EXPECT_EQ(refusal(text + "ITEM: TIME\n2.5\n" + later, {{"dt", 0.01}}),
+            "atoms.dump: timestep 400, line 14: expected no ITEM: TIME, as none of the snapshots "
+            "read before it, got one");
 }
 
 TEST_F(LammpsDump, AGzipFileReadsAsThePlainOne) {

@@ -230,10 +230,9 @@ TEST_F(LammpsDumpContacts, AWallContactMustBeWhereItsAtomIs) {
   // stated wall nearest to it, and counted as a base contact (exit 0).
   EXPECT_EQ(
       refusal(one_wall("pos id force_normal", "0.5000000 5.000000 2.000000 1 5 2 0 0 1 4 0 0")),
-      "walls.dump: timestep 0, line 10: expected the point of atom 1's wall contact along "
-      "the normal of a stated wall, got it 90 degrees off the nearest in direction, z_low: "
-      "a wall the container does not state? (state its base, cylinder_radius or "
-      "side_walls)");
+      "walls.dump: timestep 0, line 10: expected the point of atom 1's wall contact within "
+      "25.8 degrees of a stated wall's normal, got it 90 degrees off the closest, z_low's: a "
+      "wall the container does not state? (state its base, cylinder_radius or side_walls)");
 }
 
 // A shaken base is stated where it is lowest: a bead touching the base, raised by more than
@@ -254,6 +253,34 @@ TEST_F(LammpsDumpContacts, AWallContactGoesToTheWallItsPointFaces) {
   ASSERT_EQ(f.at(0).contacts->rows(), 1);
   EXPECT_EQ(f[0].contact_j()[0], partner::wall(Wall::ZLow));
   EXPECT_EQ(f[0].contacts->get<Eigen::ArrayXd>("overlap")[0], 0.0);  // from the point
+}
+
+// In a cylinder of radius 5 about (5, 5): a contact whose point lies outward of atom 1 is
+// the cylinder's; one whose point lay across the axis from the atom's centre took the
+// cylinder's normal at the point, faced it, and was read as a cylinder contact (exit 0).
+TEST_F(LammpsDumpContacts, ACylinderContactFacesTheCylinderFromTheAtomsCentre) {
+  const std::string box = "ITEM: BOX BOUNDS ff ff ff\n0 10\n0 10\n0 10\n";
+  const auto contact_of = [&](const std::string& centre, const std::string& point) {
+    const std::string atoms = "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n1\n" + box +
+                              "ITEM: ATOMS id type x y z radius\n1 1 " + centre + " 0.5\n";
+    const std::string walls =
+        "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ENTRIES\n1\n" + box +
+        "ITEM: ENTRIES c_w[1] c_w[2] c_w[3] c_w[4] c_w[5] c_w[6] c_w[7] c_w[8] c_w[9] c_w[10] "
+        "c_w[11] c_w[12]\n" +
+        point + " " + centre + " 0 0 1 1 0 0\n";
+    const nlohmann::json params = {
+        {"file", write(atoms, "atoms.dump")},    {"wall_file", write(walls, "walls.dump")},
+        {"wall_columns", "pos id force_normal"}, {"cylinder_radius", 5.0},
+        {"cylinder_axis", {5.0, 5.0}},           {"top", 10.0}};
+    return params;
+  };
+  const auto f = frames(contact_of("9.5 5 2", "10 5 2"));
+  ASSERT_EQ(f.at(0).contacts->rows(), 1);
+  EXPECT_EQ(f[0].contact_j()[0], partner::wall(Wall::CylinderSide));
+  EXPECT_EQ(refusal(contact_of("5.2 5 2", "4.7 5 2")),
+            "walls.dump: timestep 0, line 10: expected the point of atom 1's wall contact within "
+            "25.8 degrees of a stated wall's normal, got it 90 degrees off the closest, z_low's: a "
+            "wall the container does not state? (state its base, cylinder_radius or side_walls)");
 }
 
 TEST_F(LammpsDumpContacts, BadPairFilesAreRefusedWithTheirLine) {
