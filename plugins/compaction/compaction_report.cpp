@@ -114,7 +114,7 @@ void report_fits(const Series& s, double from, double to, Results& results, Log&
                describe(fits[q].status) + "; its parameters are left undefined");
     }
     const LeastDetermined least = least_determined(law, fits[q]);
-    if (least.ratio > 1.0) {
+    if (least.barely_determined()) {
       log.warn(std::string("compaction: ") + kQuantities[q].fit_name + ": fitted, but " +
                least.name + " = " + format_number(least.value) + " +- " +
                format_number(least.error) +
@@ -236,7 +236,7 @@ void report_ageing(const Series& s, const std::vector<std::int64_t>& waiting_tim
                   f.error[0], f.value[1], f.error[1], f.value[2], f.error[2]});
     if (f.status != CurveFitStatus::Fitted)
       unfitted += (unfitted.empty() ? "" : ", ") + format_number(t_w);
-    if (least_determined(eq6_law(), f).ratio > 1.0)
+    if (least_determined(eq6_law(), f).barely_determined())
       undetermined += (undetermined.empty() ? "" : ", ") + format_number(t_w);
   }
   if (!unfitted.empty()) {

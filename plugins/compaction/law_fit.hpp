@@ -43,6 +43,8 @@ struct LeastDetermined {
   std::string name;
   double value = 0.0, error = 0.0;
   double ratio = 0.0;  // error / |value|: infinite for a value of 0 with an error
+  // An error above the value: the data barely determine the law (said in the log).
+  bool barely_determined() const { return ratio > 1.0; }
 };
 LeastDetermined least_determined(const Law& law, const LawFit& fit);
 

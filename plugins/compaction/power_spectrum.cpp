@@ -52,23 +52,28 @@ EvenFrames evenly_spaced(const std::vector<double>& taps) {
     return even;
   }
   even.spacing = static_cast<double>(gap);
-  // Each frame's place in the unbroken grid ending at it; the longest grid wins, the latest
+  // The length of the unbroken grid ending at each frame; the longest grid wins, the latest
   // of equally long ones (a last frame off the grid, the run's end, took the grid with it).
-  std::unordered_map<std::int64_t, std::size_t> frame_at, grid_length;
+  std::unordered_map<std::int64_t, std::size_t> grid_length;
   std::size_t end = 0, longest = 0;
   for (std::size_t k = 0; k < taps.size(); ++k) {
     const std::int64_t t = whole(taps[k]);
     const auto before = grid_length.find(t - gap);
     const std::size_t length = (before == grid_length.end() ? 0 : before->second) + 1;
-    frame_at[t] = k;
     grid_length[t] = length;
     if (length >= longest) {
       longest = length;
       end = k;
     }
   }
-  for (std::size_t i = longest; i-- > 0;)
-    even.index.push_back(frame_at[whole(taps[end]) - static_cast<std::int64_t>(i) * gap]);
+  // Back from its end over the frames between the grid's taps.
+  std::int64_t next = whole(taps[end]);
+  for (std::size_t k = end + 1; k-- > 0 && even.index.size() < longest;) {
+    if (whole(taps[k]) != next) continue;
+    even.index.push_back(k);
+    next -= gap;
+  }
+  std::reverse(even.index.begin(), even.index.end());
   return even;
 }
 
@@ -76,13 +81,12 @@ Spectrum power_spectrum(const std::vector<double>& values, double spacing) {
   Spectrum s;
   const std::size_t n = values.size();
   if (n < 2) return s;
+  for (std::size_t k = 1; 2 * k <= n; ++k)
+    s.frequency.push_back(static_cast<double>(k) / (static_cast<double>(n) * spacing));
   // A value undefined leaves the mean, and with it every power, undefined (its deviations
   // passed as none, and the spectrum came out zero).
   if (std::any_of(values.begin(), values.end(), [](double v) { return !std::isfinite(v); })) {
-    for (std::size_t k = 1; 2 * k <= n; ++k) {
-      s.frequency.push_back(static_cast<double>(k) / (static_cast<double>(n) * spacing));
-      s.power.push_back(std::nan(""));
-    }
+    s.power.assign(s.frequency.size(), std::nan(""));
     return s;
   }
   double mean = 0.0;
@@ -111,7 +115,6 @@ Spectrum power_spectrum(const std::vector<double>& values, double spacing) {
   for (std::size_t k = 1; 2 * k <= n; ++k) {
     const bool nyquist = 2 * k == n;
     const double re = data[2 * k - 1], im = nyquist ? 0.0 : data[2 * k];
-    s.frequency.push_back(static_cast<double>(k) / (static_cast<double>(n) * spacing));
     s.power.push_back((nyquist ? 1.0 : 2.0) * scale * (re * re + im * im));
   }
   return s;

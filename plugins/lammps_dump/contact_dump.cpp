@@ -6,6 +6,7 @@
 #include <limits>
 #include <map>
 #include <numbers>
+#include <optional>
 #include <utility>
 
 #include "granpipe/errors.hpp"
@@ -120,6 +121,13 @@ double pair_overlap(const Entry& e, const ContactColumns& c, const Frame& f, std
   return is_overlap ? stated : reach - stated;
 }
 
+constexpr double kDegreesPerRadian = 180.0 / std::numbers::pi;
+
+// The angle whose cosine is given, in degrees (for messages).
+double degrees_of_cosine(double cosine) {
+  return std::acos(std::clamp(cosine, -1.0, 1.0)) * kDegreesPerRadian;
+}
+
 // The normal force lies on the line of the centres: columns of another quantity (the
 // tangential or the total force named as the normal one) were read as it, exit 0, and
 // gave a mean force of a fifth. 8 degrees are allowed, and what the printed positions leave
@@ -132,14 +140,12 @@ void check_along_centres(const Entry& e, const ContactColumns& c, const Frame& f
   if (!(force > 0.0) || allowed >= std::numbers::pi / 2 ||
       std::abs(r.normal.dot(d)) >= std::cos(allowed) * force * distance)
     return;
-  const double degrees =
-      std::acos(std::clamp(std::abs(r.normal.dot(d)) / (force * distance), 0.0, 1.0)) * 180.0 /
-      std::numbers::pi;
+  const double degrees = degrees_of_cosine(std::abs(r.normal.dot(d)) / (force * distance));
   throw InputError(e.at() + "expected the normal force (columns " +
                    std::to_string(c.normal[0] + 1) + " to " + std::to_string(c.normal[2] + 1) +
                    ") along the line of atoms " + std::to_string(f.id()[r.i]) + " and " +
                    std::to_string(f.id()[r.j]) + "'s centres, got it " + format_number(degrees) +
-                   " degrees off it (" + format_number(allowed * 180.0 / std::numbers::pi) +
+                   " degrees off it (" + format_number(allowed * kDegreesPerRadian) +
                    " allowed): are the columns named as the file has them?");
 }
 
@@ -164,14 +170,6 @@ ContactRow pair_row(const Entry& e, const ContactColumns& c, const Frame& f,
   return r;
 }
 
-// The way from the atom's centre to its wall contact's point, across periodic sides by the
-// nearest image.
-Eigen::Vector3d to_point(const Entry& e, const ContactColumns& c, const Frame& f, std::int64_t i) {
-  Eigen::Vector3d d = e.vector(c.point) - centre(f, i);
-  for (int a = 0; a < 3; ++a) d[a] = f.container.minimum_image(a, d[a]);
-  return d;
-}
-
 // How far a wall contact's atom is from the wall, and to what rounding: from the entry's own
 // point of contact where the file gives one (LIGGGHTS' pos, on the surface of a wall that
 // may move or be a mesh the stated container only approximates), else from the stated wall
@@ -182,14 +180,15 @@ struct WallGap {
   bool from_point;
 };
 
-// `wall`: the stated wall the point faces, or without one the wall nearest the atom.
-WallGap wall_gap(const Entry& e, const ContactColumns& c, const Frame& f, std::int64_t i,
-                 const WallTouch& wall) {
-  if (c.point[0] < 0) return {wall.distance, 0.0, false};
+// `wall`: the stated wall the point faces, or without one the wall nearest the atom;
+// `to_point`: from the atom's centre to the entry's point, where it gives one.
+WallGap wall_gap(const Entry& e, const ContactColumns& c, const WallTouch& wall,
+                 const std::optional<Eigen::Vector3d>& to_point) {
+  if (!to_point) return {wall.distance, 0.0, false};
   double rounding = 0.0;
   for (int a = 0; a < 3; ++a)
     rounding += printed_rounding(e.words[static_cast<std::size_t>(c.point[a])]);
-  return {to_point(e, c, f, i).norm(), rounding, true};
+  return {to_point->norm(), rounding, true};
 }
 
 // A wall contact's atom must touch its wall, and the overlap its column states (LIGGGHTS'
@@ -230,7 +229,7 @@ void check_point_faces_wall(const Entry& e, const Frame& f, std::int64_t i,
                             const WallTouch& touch) {
   constexpr double kLeastCosine = 0.9;  // 26 degrees
   if (touch.facing >= kLeastCosine) return;
-  const double degrees = std::acos(std::clamp(touch.facing, -1.0, 1.0)) * 180.0 / std::numbers::pi;
+  const double degrees = degrees_of_cosine(touch.facing);
   throw InputError(e.at() + "expected the point of atom " + std::to_string(f.id()[i]) +
                    "'s wall contact within 25.8 degrees of a stated wall's normal, got it " +
                    format_number(degrees) + " degrees off the closest, " +
@@ -245,8 +244,11 @@ ContactRow wall_row(const Entry& e, const ContactColumns& c, const Frame& f,
   r.i = row_of(e, c.id1, f, frame_place);
   const Eigen::Vector3d x = centre(f, r.i);
   const double radius = f.radius()[r.i];
-  const auto touch = c.point[0] >= 0 ? facing_wall(f.container, x, to_point(e, c, f, r.i))
-                                     : nearest_wall(f.container, x);
+  // Across periodic sides by the nearest image.
+  const std::optional<Eigen::Vector3d> to_point =
+      c.point[0] >= 0 ? std::optional(separation_to(f, r.i, e.vector(c.point))) : std::nullopt;
+  const auto touch =
+      to_point ? facing_wall(f.container, x, *to_point) : nearest_wall(f.container, x);
   if (!touch) {
     throw InputError(e.at() +
                      "expected a wall of the stated container for the wall contact of "
@@ -257,11 +259,11 @@ ContactRow wall_row(const Entry& e, const ContactColumns& c, const Frame& f,
   }
   check_point_faces_wall(e, f, r.i, *touch);
   r.j = partner::wall(touch->wall);
-  r.overlap = wall_overlap(e, c, f, r.i, wall_gap(e, c, f, r.i, *touch), rounding);
+  r.overlap = wall_overlap(e, c, f, r.i, wall_gap(e, c, *touch, to_point), rounding);
   r.normal = e.vector(c.normal);
   r.tangential = tangential_of(e, c, r.normal);
-  r.point = c.point[0] >= 0 ? e.vector(c.point)
-                            : Eigen::Vector3d(x + (radius - 0.5 * r.overlap) * touch->normal);
+  r.point = to_point ? e.vector(c.point)
+                     : Eigen::Vector3d(x + (radius - 0.5 * r.overlap) * touch->normal);
   return r;
 }
 

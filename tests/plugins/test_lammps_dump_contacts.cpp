@@ -42,6 +42,20 @@ std::string pair_snapshot(int step, const std::string& entries, int count) {
 
 const std::string kPairs0 = "1 2 0 -1.5 0 0 0.001\n10 3 0 2.5 0 0 0.002\n";
 
+// The atoms of atom_snapshot at steps 0 and 100 printed to 7 digits, as %g would not: their
+// positions known to 1e-6 (as whole numbers, a line's direction is unknown).
+std::string precise_atoms() {
+  std::string atoms;
+  for (const int step : {0, 100}) {
+    atoms += "ITEM: TIMESTEP\n" + std::to_string(step) +
+             "\nITEM: NUMBER OF ATOMS\n4\nITEM: BOX BOUNDS pp pp ff\n0 10\n0 10\n0 10\n"
+             "ITEM: ATOMS id type x y z radius\n3 1 5.000000 5.000000 0.5000000 0.5\n"
+             "1 1 1.000000 5.000000 2.000000 0.5\n2 1 2.000000 5.000000 2.000000 0.5\n"
+             "10 1 6.000000 5.000000 0.5000000 0.5\n";
+  }
+  return atoms;
+}
+
 class LammpsDumpContacts : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -155,18 +169,9 @@ TEST_F(LammpsDumpContacts, WallEntriesGoToTheNearestStatedWall) {
 // read (a damped bed may have nine in ten of its few loaded pairs parting).
 TEST_F(LammpsDumpContacts, NormalForcesOffTheLineOfTheCentresAreRefused) {
   const std::string empty_100 = pair_snapshot(100, "", 0);
-  // The atoms to six decimals (printed as whole numbers, the line's direction is unknown).
-  std::string precise;
-  for (const int step : {0, 100}) {
-    precise += "ITEM: TIMESTEP\n" + std::to_string(step) +
-               "\nITEM: NUMBER OF ATOMS\n4\nITEM: BOX BOUNDS pp pp ff\n0 10\n0 10\n0 10\n"
-               "ITEM: ATOMS id type x y z radius\n3 1 5.000000 5.000000 0.500000 0.5\n"
-               "1 1 1.000000 5.000000 2.000000 0.5\n2 1 2.000000 5.000000 2.000000 0.5\n"
-               "10 1 6.000000 5.000000 0.500000 0.5\n";
-  }
   const auto with_precise_pairs = [&](const std::string& pairs) {
     nlohmann::json params = with_pairs(pairs);
-    params["file"] = write(precise, "precise.dump");
+    params["file"] = write(precise_atoms(), "precise.dump");
     return params;
   };
   EXPECT_EQ(refusal(with_precise_pairs(pair_snapshot(0, "1 2 0 0 -1.5 0 0\n", 1) + empty_100)),
@@ -189,16 +194,7 @@ TEST_F(LammpsDumpContacts, AWallContactMustBeWhereItsAtomIs) {
     int count = 0;
     for (std::string w; words >> w;) header += " c_w[" + std::to_string(++count) + "]";
     header += "\n";
-    // The atoms of atom_snapshot printed to 7 digits, as %g would not: known to 1e-6.
-    std::string atoms;
-    for (const int step : {0, 100}) {
-      atoms += "ITEM: TIMESTEP\n" + std::to_string(step) +
-               "\nITEM: NUMBER OF ATOMS\n4\nITEM: BOX BOUNDS pp pp ff\n0 10\n0 10\n0 10\n"
-               "ITEM: ATOMS id type x y z radius\n3 1 5.000000 5.000000 0.5000000 0.5\n"
-               "1 1 1.000000 5.000000 2.000000 0.5\n2 1 2.000000 5.000000 2.000000 0.5\n"
-               "10 1 6.000000 5.000000 0.5000000 0.5\n";
-    }
-    params["file"] = write(atoms, "atoms.dump");
+    params["file"] = write(precise_atoms(), "atoms.dump");
     params["wall_file"] = write(
         "ITEM: TIMESTEP\n0\n" + header + entry + "\nITEM: TIMESTEP\n100\n" + header + entry + "\n",
         "walls.dump");
